@@ -1,0 +1,104 @@
+"""Escaping of user text (titles, statements, sources) for each output format.
+
+Text from a problem file is data: nothing in it may become a LaTeX command
+(``\\input``, ``\\write18``, ``\\def``, ``\\catcode``), Markdown markup or HTML.
+"""
+
+from __future__ import annotations
+
+import html
+
+_TEX_SPECIAL = {
+    "\\": r"\textbackslash{}",
+    "{": r"\{",
+    "}": r"\}",
+    "$": r"\$",
+    "&": r"\&",
+    "%": r"\%",
+    "#": r"\#",
+    "_": r"\_",
+    "^": r"\textasciicircum{}",
+    "~": r"\textasciitilde{}",
+    "<": r"\textless{}",
+    ">": r"\textgreater{}",
+    "|": r"\textbar{}",
+    "\n": " ",
+    "\r": " ",
+    "\t": " ",
+}
+_GREEK = "alpha beta gamma delta epsilon zeta eta theta iota kappa lambda mu nu xi omicron pi rho sigma tau upsilon phi chi psi omega".split()
+_TEX_UNICODE = {
+    "°": r"\textdegree{}",
+    "±": r"$\pm$",
+    "×": r"$\times$",
+    "·": r"$\cdot$",
+    "−": "-",
+    "–": "--",
+    "—": "---",
+    "“": "``",
+    "”": "''",
+    "‘": "`",
+    "’": "'",
+    "…": r"\dots{}",
+    "→": r"$\rightarrow$",
+    "⇒": r"$\Rightarrow$",
+    "≈": r"$\approx$",
+    "≤": r"$\leq$",
+    "≥": r"$\geq$",
+    "√": r"$\surd$",
+    "²": r"\textsuperscript{2}",
+    "³": r"\textsuperscript{3}",
+    "\u00a0": "~",
+}
+for _i, _name in enumerate(_GREEK):
+    if _name == "omicron":
+        continue
+    _TEX_UNICODE[chr(0x03B1 + _i)] = rf"$\{_name}$"
+    if _name not in ("epsilon",):
+        cap = _name.capitalize()
+        if cap in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"):
+            _TEX_UNICODE[chr(0x0391 + _i)] = rf"$\{cap}$"
+
+
+def tex(text: str) -> str:
+    """``text`` as LaTeX that prints it literally and runs nothing."""
+    out = []
+    for ch in text:
+        if ch in _TEX_SPECIAL:
+            out.append(_TEX_SPECIAL[ch])
+        elif ch in _TEX_UNICODE:
+            out.append(_TEX_UNICODE[ch])
+        elif ord(ch) < 32 or ord(ch) == 127:
+            out.append(" ")
+        elif ord(ch) < 128 or 0xC0 <= ord(ch) <= 0xFF:
+            out.append(ch)  # ASCII and Latin-1 letters: T1 fonts have them
+        else:
+            out.append("?")
+    return "".join(out)
+
+
+_MD_SPECIAL = set("\\`*_[]|$~#")
+
+
+def markdown(text: str) -> str:
+    """``text`` as Markdown that shows it literally (no markup, no math, no HTML)."""
+    out = []
+    for ch in text.replace("\r", " ").replace("\n", " "):
+        if ch == "<":
+            out.append("&lt;")
+        elif ch == ">":
+            out.append("&gt;")
+        elif ch == "&":
+            out.append("&amp;")
+        elif ch in _MD_SPECIAL:
+            out.append("\\" + ch)
+        elif ord(ch) < 32:
+            out.append(" ")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def html_text(text: str) -> str:
+    """``text`` as HTML text content."""
+    return html.escape(text, quote=True)

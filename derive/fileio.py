@@ -1,0 +1,45 @@
+"""Writing outputs so that nothing is lost: a temporary file, then an atomic rename."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+from derive.errors import InputError, RenderError
+
+
+def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...] = ()) -> None:
+    """Write ``data`` to ``path`` atomically; refuse to overwrite any of ``inputs``.
+
+    A reader sees the old file or the new one, never half of either.
+    """
+    path = Path(path)
+    for src in inputs:
+        try:
+            if path.exists() and src.exists() and path.resolve() == src.resolve():
+                raise InputError("refusing to overwrite the input file with the output", where=str(path), field="-o")
+        except OSError:
+            continue
+    if path.is_dir():
+        raise InputError("is a folder; give a file name for the output", where=str(path), field="-o")
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.is_dir():
+        raise InputError("the folder for the output does not exist", where=str(path), field="-o")
+    payload = data.encode("utf-8") if isinstance(data, str) else data
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(payload)
+            fh.flush()
+            os.fsync(fh.fileno())
+        if path.exists():
+            os.chmod(tmp, path.stat().st_mode & 0o777)
+        else:
+            os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError as exc:
+        raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)

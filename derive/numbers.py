@@ -1,0 +1,103 @@
+"""Numbers as a textbook prints them: significant figures, rounded half up.
+
+The default is the textbook rule: three significant figures, four when the
+leading digit is 1 (1.109 but 8.40). A problem or a run may set a fixed number
+of figures instead. Trailing zeros are kept (8.40, not 8.4).
+"""
+
+from __future__ import annotations
+
+from decimal import ROUND_HALF_UP, Decimal, localcontext
+
+import sympy
+
+#: Digits carried when an exact SymPy number is turned into a Decimal.
+WORKING_PRECISION = 40
+
+
+def to_decimal(value: sympy.Expr | int | float | str | Decimal) -> Decimal:
+    """The exact or numeric ``value`` as a Decimal carrying 40 significant digits."""
+    if isinstance(value, Decimal):
+        return value
+    if isinstance(value, (int, str)):
+        return Decimal(value)
+    expr = sympy.sympify(value)
+    if not expr.is_number:
+        raise ValueError(f"{expr} is not a number")
+    num = expr.evalf(WORKING_PRECISION)
+    if not num.is_real:
+        raise ValueError(f"{expr} is not a real number")
+    text = sympy.Float(num, WORKING_PRECISION).__format__(".39e") if num != 0 else "0"
+    return Decimal(text)
+
+
+def _round_sig(d: Decimal, figures: int) -> Decimal:
+    """``d`` rounded half up to ``figures`` significant figures."""
+    if d == 0:
+        return Decimal(0).quantize(Decimal(1).scaleb(-(figures - 1)))
+    with localcontext() as ctx:
+        ctx.prec = WORKING_PRECISION + 10
+        exp = d.adjusted() - figures + 1
+        r = d.quantize(Decimal(1).scaleb(exp), rounding=ROUND_HALF_UP)
+        if r.adjusted() != d.adjusted():  # 9.995 -> 10.0: one figure fewer after the point
+            r = r.quantize(Decimal(1).scaleb(exp + 1), rounding=ROUND_HALF_UP)
+        return r
+
+
+def figures_for(value: Decimal, digits: int | None) -> int:
+    """How many significant figures ``value`` is shown with.
+
+    ``digits`` None means the textbook rule (3, or 4 when the leading digit is 1).
+    """
+    if digits is not None:
+        return digits
+    if value == 0:
+        return 3
+    four = _round_sig(abs(value), 4)
+    leading = int(str(four.scaleb(-four.adjusted()))[0])
+    return 4 if leading == 1 else 3
+
+
+def round_value(value: sympy.Expr | Decimal | int | str, digits: int | None = None) -> Decimal:
+    """``value`` rounded to the figures :func:`figures_for` gives it."""
+    d = to_decimal(value)
+    return _round_sig(d, figures_for(d, digits))
+
+
+def format_number(
+    value: sympy.Expr | Decimal | int | str, digits: int | None = None, *, extra: int = 0
+) -> str:
+    """``value`` as text at ``digits`` (+``extra`` for intermediates) significant figures.
+
+    Plain notation between 1e-4 and 1e6, else ``1.23e+7``; never ``-0``.
+
+    >>> format_number(8.4, 3)
+    '8.40'
+    >>> format_number(-1.1094)
+    '-1.109'
+    """
+    d = to_decimal(value)
+    figures = figures_for(d, digits) + extra
+    if d == 0:
+        return "0"
+    r = _round_sig(d, figures)
+    if -4 <= r.adjusted() < 6:
+        text = format(r, "f")
+    else:
+        mantissa = r.scaleb(-r.adjusted())
+        text = f"{format(mantissa, 'f')}e{r.adjusted():+d}"
+    return text
+
+
+def format_fixed(value: sympy.Expr | Decimal, decimals: int) -> str:
+    """``value`` rounded half up to ``decimals`` places after the point."""
+    d = to_decimal(value)
+    r = d.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    if r == 0:
+        r = abs(r)
+    return format(r, "f")
+
+
+def decimals_of(text: str) -> int:
+    """Places after the point in a plain-notation number string."""
+    return len(text.split(".")[1]) if "." in text else 0

@@ -1,0 +1,51 @@
+"""PDF output: the LaTeX document compiled by latexmk, safely.
+
+latexmk runs in a private temporary folder, with shell escape off, TeX's file
+access restricted to that folder (``openin_any=p``/``openout_any=p``) and a time
+limit; a missing TeX installation or a TeX error is a one-line error.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+from derive.errors import RenderError
+
+TIME_LIMIT = 120  # seconds for one compilation
+
+
+def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
+    """Compile ``tex_source`` (a whole document) and return the PDF's bytes."""
+    latexmk = shutil.which("latexmk")
+    if latexmk is None or shutil.which("pdflatex") is None:
+        raise RenderError(
+            "--format pdf needs TeX Live with latexmk (Debian: apt-get install latexmk "
+            "texlive-latex-extra texlive-science); --format tex writes the LaTeX instead"
+        )
+    with tempfile.TemporaryDirectory(prefix="derive-tex-") as tmp:
+        doc = Path(tmp) / "solution.tex"
+        doc.write_text(tex_source, encoding="utf-8")
+        env = dict(os.environ, openin_any="p", openout_any="p", shell_escape="f", TEXMFOUTPUT=tmp)
+        cmd = [
+            latexmk,
+            "-pdf",
+            "-interaction=nonstopmode",
+            "-halt-on-error",
+            "-file-line-error",
+            "-pdflatex=pdflatex -no-shell-escape %O %S",
+            doc.name,
+        ]
+        try:
+            proc = subprocess.run(cmd, cwd=tmp, env=env, capture_output=True, text=True, timeout=time_limit, stdin=subprocess.DEVNULL)
+        except subprocess.TimeoutExpired:
+            raise RenderError(f"LaTeX did not finish within {time_limit:g} s") from None
+        pdf = Path(tmp) / "solution.pdf"
+        if proc.returncode != 0 or not pdf.exists():
+            log = (Path(tmp) / "solution.log").read_text(errors="replace") if (Path(tmp) / "solution.log").exists() else proc.stdout
+            first = next((ln for ln in log.splitlines() if ln.startswith("!") or ":" in ln and "error" in ln.lower()), "see the LaTeX log")
+            raise RenderError(f"LaTeX failed: {first.strip()}")
+        return pdf.read_bytes()

@@ -1,0 +1,360 @@
+"""LaTeX for the mathematics of a solution: SymPy's printer, set up for the notes.
+
+A :class:`StepPrinter` prints symbols with the notes' names, numbers at the
+problem's significant figures, a given's number in place of its symbol on a
+substitution line, struck-out (cancelled) masses, and sums in the order the
+equations were written. Renderers call :func:`latex_eqn` and
+:func:`latex_inline`; no LaTeX string is patched afterwards.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from decimal import Decimal
+
+import sympy
+from sympy.printing.latex import LatexPrinter
+
+from derive.numbers import format_number, to_decimal
+from derive.solution import Block, Eqn, Side
+from derive.symbols import latex_name, vector_latex
+from derive.units import latex_unit
+
+PRECISION = 30
+
+
+@dataclass(frozen=True)
+class Style:
+    """How numbers print: the answer's figures (None: textbook rule) and the extra
+    figures intermediates carry; ``values`` and ``angles`` feed substitution lines."""
+
+    digits: int | None
+    extra: int = 1
+    values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    angles: frozenset[sympy.Symbol] = frozenset()
+
+
+def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
+    """A number at ``digits`` (+``extra``) significant figures, in LaTeX."""
+    text = format_number(value, digits, extra=extra)
+    if "e" in text:
+        mant, exp = text.split("e")
+        return rf"{mant} \times 10^{{{int(exp)}}}"
+    return text
+
+
+def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
+    """A given's number as the file wrote it when short and exact (0.6, 20), else rounded."""
+    if value.is_Integer and abs(value) < 10**9:
+        return str(value)
+    if value.is_Rational:
+        d = to_decimal(value)
+        q = value.q
+        while q % 2 == 0:
+            q //= 2
+        while q % 5 == 0:
+            q //= 5
+        if q == 1 and len(d.normalize().as_tuple().digits) <= 6:
+            return format(d.normalize(), "f")
+    return number_latex(value, digits, extra)
+
+
+def _structural(expr: sympy.Expr) -> bool:
+    """True for a sum, product, power or function of numbers that was built unevaluated
+    to be shown as it stands (19.81 - 5 · 9.507), not an exact value such as sqrt(2)/2."""
+    if not expr.is_number or expr.is_Number or expr.is_NumberSymbol:
+        return False
+    parts = expr.args
+
+    def ok(a: sympy.Expr) -> bool:
+        return isinstance(a, sympy.Float) or a.is_Integer or _structural(a)
+
+    if isinstance(expr, sympy.Pow):
+        return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
+    if isinstance(expr, (sympy.Add, sympy.Mul)) or isinstance(expr, sympy.Function):
+        return all(ok(a) for a in parts) and any(isinstance(a, sympy.Float) or _structural(a) for a in parts) or (
+            isinstance(expr, sympy.Add) and all(a.is_Integer for a in parts)
+        )
+    return False
+
+
+def is_negative_term(expr: sympy.Expr) -> bool:
+    """True for a term written with a leading minus: -3, -v_B1 cos(theta), -5 · 9.507."""
+    if expr.is_Number:
+        return bool(expr < 0)
+    return isinstance(expr, sympy.Mul) and bool(expr.args) and expr.args[0].is_Number and bool(expr.args[0] < 0)
+
+
+def negate(expr: sympy.Expr) -> sympy.Expr:
+    """``-expr``, keeping an unevaluated product unevaluated: -(-5 · 9.507) is 5 · 9.507."""
+    if isinstance(expr, sympy.Mul) and expr.args and expr.args[0].is_Number and expr.args[0] < 0:
+        first = -expr.args[0]
+        rest = expr.args[1:]
+        if first == 1:
+            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
+        return sympy.Mul(first, *rest, evaluate=False)
+    return -expr
+
+
+def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
+    """``expr`` with every numeric part evaluated: one Float coefficient per product.
+
+    Structure (the order of terms, unexpanded products) is kept.
+    """
+    if expr.is_Integer and keep_integers:
+        return expr
+    if expr.is_Number:
+        return sympy.Float(expr, PRECISION)
+    if _structural(expr):
+        # built unevaluated on purpose, as in (20 + 5) v_A2n: keep it so
+        if isinstance(expr, sympy.Pow):
+            return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
+        return expr.func(*(floatify(a, keep_integers) for a in expr.args), evaluate=False)
+    if expr.is_number:
+        exact = expr.doit()
+        if exact.is_Integer and keep_integers:
+            return exact
+        return sympy.Float(expr.evalf(PRECISION), PRECISION)
+    if expr.is_Atom:
+        return expr
+    args = [floatify(a, keep_integers) for a in expr.args]
+    if isinstance(expr, sympy.Mul):
+        nums = [a for a in args if a.is_Number]
+        rest = [a for a in args if not a.is_Number]
+        coeff: sympy.Expr = sympy.Integer(1)
+        for n in nums:
+            coeff = coeff * n
+        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer:
+            coeff = sympy.Float(coeff, PRECISION)
+        if not rest:
+            return coeff
+        if coeff == 1:
+            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
+        return sympy.Mul(coeff, *rest, evaluate=False)
+    return expr.func(*args, evaluate=False)
+
+
+def _factor_key(a: sympy.Expr) -> int:
+    """Order of factors in a printed product: number, mass, symbol, function, sum, unit vector."""
+    if a.is_Number:
+        return 0
+    if isinstance(a, sympy.Symbol):
+        if a.name.startswith("vec:"):
+            return 5
+        return 1 if a.name.startswith(("m", "M")) else 2
+    if isinstance(a, sympy.Pow) and isinstance(a.base, sympy.Symbol):
+        return 2
+    if isinstance(a, sympy.Add):
+        return 4
+    return 3
+
+
+class StepPrinter(LatexPrinter):
+    """SymPy's LaTeX printer with the notes' conventions (see module docstring)."""
+
+    def __init__(
+        self,
+        values: Mapping[sympy.Symbol, str] | None = None,
+        cancel: frozenset[sympy.Symbol] = frozenset(),
+        digits: int | None = None,
+        extra: int = 1,
+        round_integers: bool = False,
+    ) -> None:
+        super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._values = dict(values or {})
+        self._cancel = cancel
+        self._digits = digits
+        self._extra = extra
+        self._round_integers = round_integers
+
+    def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
+        if expr in self._values:
+            return self._values[expr]
+        name = expr.name
+        tex = vector_latex(name) or (name if name.startswith("\\") else latex_name(name))
+        if expr in self._cancel:
+            return r"\cancel{" + tex + "}"
+        return tex
+
+    def _print_Float(self, expr: sympy.Float) -> str:
+        return number_latex(expr, self._digits, self._extra)
+
+    def _print_Integer(self, expr: sympy.Integer) -> str:
+        if self._round_integers and expr != 0:
+            return number_latex(expr, self._digits, self._extra)
+        return str(expr.p)
+
+    def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
+        out = ""
+        terms = expr.args
+        if len(terms) > 1 and terms[0].is_Number and not any(isinstance(t, sympy.Float) for t in terms):
+            terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
+        for i, term in enumerate(terms):
+            if is_negative_term(term):
+                s = self._print(negate(term))
+                s = self._paren_if_sum(negate(term), s)
+                out += ("-" if i == 0 else " - ") + s
+            else:
+                s = self._print(term)
+                if i and s.startswith("-"):
+                    s = r"\left(" + s + r"\right)"
+                out += ("" if i == 0 else " + ") + s
+        return out
+
+    def _paren_if_sum(self, expr: sympy.Expr, s: str) -> str:
+        return r"\left(" + s + r"\right)" if isinstance(expr, sympy.Add) else s
+
+    def _print_Mul(self, expr: sympy.Mul) -> str:
+        """A product as the notes write it: numbers, masses, other symbols, functions;
+        ``\\cdot`` between two numbers; negative powers as a fraction."""
+        if is_negative_term(expr):
+            inner = negate(expr)
+            if inner != expr:
+                s = self._print(inner)
+                return "-" + (r"\left(" + s + r"\right)" if isinstance(inner, sympy.Add) else s)
+        num, den = [], []
+        for a in sorted(expr.args, key=_factor_key):
+            if isinstance(a, sympy.Rational) and not a.is_Integer:
+                if a.p != 1:
+                    num.insert(0, sympy.Integer(a.p))
+                den.insert(0, sympy.Integer(a.q))
+                continue
+            if isinstance(a, sympy.Pow) and a.exp.is_Number and a.exp < 0:
+                den.append(a.base if a.exp == -1 else sympy.Pow(a.base, -a.exp, evaluate=False))
+            else:
+                num.append(a)
+        if den:
+            top = self._join(num, bare=True) if num else "1"
+            bottom = self._join(den, bare=True)
+            return r"\frac{" + top + "}{" + bottom + "}"
+        return self._join(num)
+
+    def _numberish(self, a: sympy.Expr) -> bool:
+        return a.is_Number or a in self._values or (isinstance(a, sympy.Pow) and a.base in self._values)
+
+    def _join(self, factors: list[sympy.Expr], bare: bool = False) -> str:
+        if bare and len(factors) == 1:
+            return self._print(factors[0])
+        out = ""
+        prev = None
+        for a in factors:
+            s = self._print(a)
+            if isinstance(a, sympy.Add) or (prev is not None and s.startswith("-")):
+                s = r"\left(" + s + r"\right)"
+            if prev is None:
+                out = s
+            elif self._numberish(prev) and (self._numberish(a) or s[:1].isdigit() or s.startswith(r"\left(")):
+                out += r" \cdot " + s if not s.startswith(r"\left(") else s
+            else:
+                out += " " + s
+            prev = a
+        return out
+
+    def _print_Pow(self, expr: sympy.Pow) -> str:
+        if expr.base in self._values and expr.exp.is_Integer and expr.exp > 0:
+            base = self._values[expr.base]
+            if base.startswith("-") or " " in base:
+                base = r"\left(" + base + r"\right)"
+            return f"{base}^{{{expr.exp}}}"
+        if isinstance(expr.base, sympy.Float) and expr.exp.is_Integer:
+            base = self._print(expr.base)
+            base = r"\left(" + base + r"\right)" if base.startswith("-") else base
+            return f"{base}^{{{expr.exp}}}"
+        saved, self._round_integers = self._round_integers, False
+        try:
+            return super()._print_Pow(expr)
+        finally:
+            self._round_integers = saved
+
+
+def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.Symbol]) -> dict[sympy.Symbol, str]:
+    """The substitution line's numbers: each symbol's value, angles in degrees."""
+    out = {}
+    for s in symbols:
+        if s not in style.values:
+            continue
+        v = style.values[s]
+        if s in style.angles:
+            deg = sympy.nsimplify(v * 180 / sympy.pi)
+            out[s] = exact_latex(deg, digits, extra) + r"^\circ"
+        else:
+            out[s] = exact_latex(v, digits, extra)
+    return out
+
+
+def latex_expr(expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()) -> str:
+    """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
+    if mode == "symbolic":
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
+    if mode == "values":
+        vals = values_map(style, style.digits, extra, expr.free_symbols)
+        return StepPrinter(vals, cancel, style.digits, extra).doprint(expr)
+    if mode == "numeric":
+        expr = expr.xreplace(dict(style.values))
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(floatify(expr))
+    if mode == "result":
+        expr = expr.xreplace(dict(style.values))
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True).doprint(floatify(expr))
+    raise ValueError(mode)
+
+
+def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
+    """A side of an equation: its terms joined with their signs, in order."""
+    out = ""
+    for i, term in enumerate(side.terms):
+        neg = is_negative_term(term)
+        body = negate(term) if neg else term
+        s = latex_expr(body, side.mode, style, extra, cancel)
+        if neg and s.startswith("-"):
+            neg, s = False, s[1:].lstrip()
+        if isinstance(body, sympy.Add) and len(side.terms) > 1:
+            s = r"\left(" + s + r"\right)"
+        if i == 0:
+            out = ("-" if neg else "") + s
+        else:
+            if not neg and s.startswith("-"):
+                s = s[1:].lstrip()
+                neg = True
+            out += (" - " if neg else " + ") + s
+    return out
+
+
+_UNITLESS = {sympy.Symbol("vec:e_t", commutative=True), sympy.Symbol("vec:e_n", commutative=True)}
+
+
+def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
+    """The line's LaTeX (without delimiters) and its tag."""
+    body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
+    last = eqn.sides[-1]
+    symbolic = last.mode == "symbolic" or any(
+        t.xreplace(dict(style.values)).free_symbols - _UNITLESS for t in last.terms
+    )
+    if eqn.unit and not symbolic:
+        body += r"\ \%" if eqn.unit == "%" else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
+    if eqn.boxed:
+        body = r"\boxed{" + body + "}"
+    if eqn.implies:
+        body = r"\Rightarrow\quad " + body
+    return body, eqn.tag
+
+
+def block_extra(block: Block, style: Style) -> int:
+    """Extra figures for a block's intermediates so that its shown sums add up."""
+    for extra in range(style.extra, style.extra + 5):
+        ok = True
+        for terms, total in block.sums:
+            shown = [Decimal(format_number(floatify(t), style.digits, extra=extra)) for t in terms]
+            if sum(shown) != Decimal(format_number(floatify(total), style.digits, extra=extra)):
+                ok = False
+                break
+        if ok:
+            return extra
+    return style.extra + 4
+
+
+def latex_inline(expr: sympy.Basic, style: Style) -> str:
+    """Inline mathematics in a sentence."""
+    if isinstance(expr, sympy.Eq):
+        return StepPrinter(digits=style.digits).doprint(expr.lhs) + " = " + StepPrinter(digits=style.digits).doprint(expr.rhs)
+    return StepPrinter(digits=style.digits).doprint(expr)

@@ -1,0 +1,592 @@
+"""Problem files: read a TOML problem, check every field, and build a :class:`Problem`.
+
+The format is documented in ``docs/problem-format.md``. Every error names the
+file, the line where it can be found, the field and what was expected.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import sympy
+
+from derive import units
+from derive.errors import ExpressionError, InputError, PhysicsError, UnitError
+from derive.expr import NAME_RE, ParseError, parse
+from derive.symbols import kind_of, symbol
+from derive.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
+
+KINDS = ("direct", "oblique")
+TOP_FIELDS = ("title", "kind", "source", "statement", "question", "find", "digits", "units", "given", "A", "B")
+BODY_FIELDS = ("angle", "from", "toward")
+AXES = ("+n", "-n", "+t", "-t")
+MAX_TEXT = 5000
+MAX_GIVENS = 60
+
+#: Names whose meaning (and so dimension) the notes fix.
+RESERVED: dict[str, Dim] = {
+    "m_A": MASS,
+    "m_B": MASS,
+    "e": DIMENSIONLESS,
+    "v_A1": VELOCITY,
+    "v_B1": VELOCITY,
+    "v_A1n": VELOCITY,
+    "v_A1t": VELOCITY,
+    "v_B1n": VELOCITY,
+    "v_B1t": VELOCITY,
+}
+#: Results a problem may ask for by name.
+RESULT_NAMES = (
+    "v_A2",
+    "v_B2",
+    "v_A2n",
+    "v_A2t",
+    "v_B2n",
+    "v_B2t",
+    "theta_A2",
+    "theta_B2",
+    "T_1",
+    "T_2",
+    "T_lost",
+)
+#: Names a file may not give: the unknowns and results derive computes.
+COMPUTED = {"v_A2n", "v_A2t", "v_B2n", "v_B2t", "v_A2", "v_B2", "theta_A2", "theta_B2", "T_1", "T_2", "T_lost"}
+
+_QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,2})?)\s*(.*?)\s*$")
+
+
+@dataclass(frozen=True)
+class Given:
+    """One given: its symbol, dimension and exact value in the problem's working unit.
+
+    ``value`` is None for a symbolic given. Angles are held in radians (shown in
+    degrees); ``written`` is the text as the file gave it when it was converted.
+    """
+
+    name: str
+    symbol: sympy.Symbol
+    dim: Dim
+    value: sympy.Expr | None
+    unit: str
+    written: str | None = None
+    definition: sympy.Expr | None = None
+
+
+@dataclass(frozen=True)
+class Motion:
+    """How a body moves before the impact: its n and t components in the givens.
+
+    ``speed``/``angle``/``axis_from``/``toward`` are set when the file gave a
+    speed and a direction (the geometry stage resolves them).
+    """
+
+    body: str
+    n: sympy.Expr
+    t: sympy.Expr
+    speed: sympy.Symbol | None = None
+    angle: sympy.Symbol | None = None
+    axis_from: str | None = None
+    toward: str | None = None
+
+
+@dataclass(frozen=True)
+class Problem:
+    """A central-impact problem, checked and ready for the equations."""
+
+    path: str
+    title: str
+    kind: str
+    givens: tuple[Given, ...]
+    motion_A: Motion
+    motion_B: Motion
+    find: tuple[str, ...]
+    system: str = "SI"
+    digits: int | None = None
+    source: str | None = None
+    statement: str | None = None
+    question: str | None = None
+    name: str = ""
+    extra: Mapping[str, Any] = field(default_factory=dict)
+
+    @property
+    def oblique(self) -> bool:
+        """True for an oblique impact (velocities with n and t components)."""
+        return self.kind == "oblique"
+
+    def given(self, name: str) -> Given:
+        """The given called ``name``."""
+        for g in self.givens:
+            if g.name == name:
+                return g
+        raise KeyError(name)
+
+    def numeric(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """Symbol -> exact value for every given that has a number."""
+        return {g.symbol: g.value for g in self.givens if g.value is not None}
+
+    def symbols(self) -> dict[str, sympy.Symbol]:
+        """Name -> symbol for every given."""
+        return {g.name: g.symbol for g in self.givens}
+
+
+class _Ctx:
+    """Where we are in a file, to put in messages."""
+
+    def __init__(self, path: str, text: str) -> None:
+        self.path = path
+        self.lines = text.splitlines()
+
+    def line_of(self, section: str | None, key: str | None) -> int | None:
+        current: str | None = None
+        for i, raw in enumerate(self.lines, 1):
+            line = raw.strip()
+            m = re.match(r"^\[\s*([^\]]+?)\s*\]", line)
+            if m:
+                current = m.group(1)
+                continue
+            if key is None and current == section and m is None and section is not None:
+                continue
+            if current == section and re.match(rf"^[\"']?{re.escape(key or '')}[\"']?\s*=", line):
+                return i
+        if key is None and section is not None:
+            for i, raw in enumerate(self.lines, 1):
+                if re.match(rf"^\s*\[\s*{re.escape(section)}\s*\]", raw):
+                    return i
+        return None
+
+    def error(self, what: str, section: str | None = None, key: str | None = None, value: Any = None, cls: type[InputError] = InputError) -> InputError:
+        line = self.line_of(section, key)
+        where = f"{self.path}:{line}" if line else self.path
+        fld = None
+        if key is not None:
+            shown = _show(value) if value is not None else None
+            fld = (f"[{section}] " if section else "") + key + (f" = {shown}" if shown is not None else "")
+        elif section is not None:
+            fld = f"[{section}]"
+        return cls(what, where=where, field=fld)
+
+
+def _show(value: Any) -> str:
+    text = repr(value) if isinstance(value, str) else str(value)
+    if len(text) > 60:
+        text = text[:57] + "…"
+    return text.replace("\n", " ")
+
+
+def load(path: str | Path, *, name: str | None = None) -> Problem:
+    """Read and check the problem file at ``path``.
+
+    Raises :class:`~derive.errors.InputError` (one line: file, field, what was
+    expected) on anything that is not a well-posed central-impact problem.
+
+    >>> p = load(bundled_path("notes-4c11-two-spheres"))  # doctest: +SKIP
+    """
+    path = Path(path)
+    shown = str(path)
+    try:
+        raw = path.read_bytes()
+    except FileNotFoundError:
+        raise InputError("no such file", where=shown) from None
+    except IsADirectoryError:
+        raise InputError("is a folder, not a problem file", where=shown) from None
+    except OSError as exc:
+        raise InputError(f"cannot be read ({exc.strerror})", where=shown) from exc
+    if len(raw) > 1_000_000:
+        raise InputError("is too large for a problem file (over 1 MB)", where=shown)
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"is not UTF-8 text (byte {exc.start + 1})", where=shown) from exc
+    return loads(text, path=shown, name=name or path.stem)
+
+
+def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
+    """Check a problem given as TOML text (``path`` only names it in messages)."""
+    ctx = _Ctx(path, text)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        msg = str(exc)
+        m = re.search(r"\(at line (\d+), column \d+\)", msg)
+        where = f"{path}:{m.group(1)}" if m else path
+        what = re.sub(r"\s*\(at line \d+, column \d+\)", "", msg) or "invalid TOML"
+        raise InputError(f"not valid TOML: {what[0].lower() + what[1:]}", where=where) from None
+    return _build(data, ctx, name)
+
+
+def _text(data: Mapping[str, Any], key: str, ctx: _Ctx, required: bool = False) -> str | None:
+    value = data.get(key)
+    if value is None:
+        if required:
+            raise ctx.error("is missing: give the problem a title (a line of text)", key=key)
+        return None
+    if not isinstance(value, str):
+        raise ctx.error(f"expected text, not {_type(value)}", key=key, value=value)
+    if len(value) > MAX_TEXT:
+        raise ctx.error(f"is too long ({len(value)} characters, at most {MAX_TEXT})", key=key)
+    if "\x00" in value:
+        raise ctx.error("contains a NUL character", key=key)
+    return value
+
+
+def _type(value: Any) -> str:
+    return {bool: "true/false", int: "a number", float: "a number", str: "text", list: "a list", dict: "a table"}.get(
+        type(value), type(value).__name__
+    )
+
+
+def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
+    for key in data:
+        if key not in TOP_FIELDS:
+            raise ctx.error(f"unknown field (expected one of: {', '.join(TOP_FIELDS)})", key=key)
+    title = _text(data, "title", ctx, required=True)
+    assert title is not None
+    kind = data.get("kind")
+    if kind not in KINDS:
+        what = "is missing" if kind is None else "is not a kind of impact"
+        raise ctx.error(f"{what}: expected \"direct\" or \"oblique\"", key="kind", value=kind)
+    oblique = kind == "oblique"
+    digits = data.get("digits")
+    if digits is not None and (isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 10):
+        raise ctx.error("expected a whole number of significant figures from 1 to 10", key="digits", value=digits)
+    system = data.get("units")
+    if system is not None and system not in units.SYSTEMS:
+        raise ctx.error("expected \"SI\" or \"US\"", key="units", value=system)
+
+    given_tbl = data.get("given")
+    if given_tbl is None:
+        raise ctx.error("is missing: give the masses, e and the velocities before the impact", section="given")
+    if not isinstance(given_tbl, dict):
+        raise ctx.error(f"expected a table, not {_type(given_tbl)}", key="given")
+    if len(given_tbl) > MAX_GIVENS:
+        raise ctx.error(f"has too many entries ({len(given_tbl)}, at most {MAX_GIVENS})", section="given")
+    if system is None:
+        system = _infer_system(given_tbl)
+    givens = _givens(given_tbl, ctx, oblique, system)
+    by_name = {g.name: g for g in givens}
+
+    for need in ("m_A", "m_B", "e"):
+        if need not in by_name:
+            what = {"e": "the coefficient of restitution e"}.get(need, f"the mass of {need[-1]}")
+            raise ctx.error(f"is missing: give {what}", section="given", key=need)
+    _check_ranges(by_name, ctx)
+
+    body_tbls = {}
+    for b in "AB":
+        tbl = data.get(b, {})
+        if not isinstance(tbl, dict):
+            raise ctx.error(f"expected a table, not {_type(tbl)}", key=b)
+        for k in tbl:
+            if k not in BODY_FIELDS:
+                raise ctx.error(f"unknown field (expected one of: {', '.join(BODY_FIELDS)})", section=b, key=k)
+        body_tbls[b] = tbl
+
+    motions = []
+    for b in "AB":
+        motion, extra = _motion(b, body_tbls[b], by_name, ctx, oblique)
+        if extra is not None:
+            givens.append(extra)
+            by_name[extra.name] = extra
+        motions.append(motion)
+
+    find = _find(data.get("find"), ctx, oblique)
+    problem = Problem(
+        path=ctx.path,
+        title=title,
+        kind=kind,
+        givens=tuple(givens),
+        motion_A=motions[0],
+        motion_B=motions[1],
+        find=find,
+        system=system,
+        digits=digits,
+        source=_text(data, "source", ctx),
+        statement=_text(data, "statement", ctx),
+        question=_text(data, "question", ctx),
+        name=name,
+    )
+    _check_approach(problem, ctx)
+    return problem
+
+
+def _infer_system(tbl: Mapping[str, Any]) -> str:
+    votes = {"SI": 0, "US": 0}
+    for value in tbl.values():
+        if isinstance(value, str):
+            m = _QUANTITY.match(value)
+            unit_text = m.group(2) if m else value
+            try:
+                sys_ = units.parse_unit(unit_text).system
+            except ValueError:
+                continue
+            if sys_:
+                votes[sys_] += 1
+    return "US" if votes["US"] > votes["SI"] else "SI"
+
+
+def _givens(tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str) -> list[Given]:
+    """Build the givens in dependency order (a given may be defined from others)."""
+    for key in tbl:
+        if not NAME_RE.match(key):
+            raise ctx.error("is not a usable name: start with a letter; letters, digits and _ only", section="given", key=key)
+        if key in COMPUTED:
+            raise ctx.error("is what derive computes, so it cannot be given", section="given", key=key)
+        if key in ("pi",) or key in ("sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log"):
+            raise ctx.error("is the name of a constant or function; choose another name", section="given", key=key)
+    done: dict[str, Given] = {}
+    pending = dict(tbl)
+    while pending:
+        progressed = False
+        for key in list(pending):
+            raw = pending[key]
+            deps = _names_in(raw) & set(tbl)
+            if deps - set(done):
+                continue
+            done[key] = _given(key, raw, done, ctx, oblique, system)
+            del pending[key]
+            progressed = True
+        if not progressed:
+            key = sorted(pending)[0]
+            raise ctx.error(
+                "is defined in a circle (it depends on itself through other givens)",
+                section="given",
+                key=key,
+                value=pending[key],
+            )
+    return [done[k] for k in tbl]
+
+
+def _names_in(raw: Any) -> set[str]:
+    if not isinstance(raw, str):
+        return set()
+    return set(re.findall(r"[A-Za-z][A-Za-z0-9_]*", raw))
+
+
+def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bool, system: str) -> Given:
+    expected = RESERVED.get(key)
+    sym = symbol(key, kind_of(key, oblique))
+    err = lambda what, cls=InputError: ctx.error(what, section="given", key=key, value=raw, cls=cls)  # noqa: E731
+    if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
+        raise err(f'expected a number or text such as "5 m/s", not {_type(raw)}')
+    if isinstance(raw, float) and not math.isfinite(raw):
+        raise err("expected a finite number")
+    if isinstance(raw, (int, float)):
+        if abs(raw) > 1e30 or (raw != 0 and abs(raw) < 1e-30):
+            raise err("is out of range (expected a magnitude between 1e-30 and 1e30)")
+        value = sympy.Rational(str(raw)) if isinstance(raw, float) else sympy.Integer(raw)
+        dim = expected if expected is not None else DIMENSIONLESS
+        unit = units.working_unit(dim, system) if dim != ANGLE else units.parse_unit("deg")
+        if dim == ANGLE:
+            value = value * unit.factor
+        return Given(key, sym, dim, value, unit.text)
+    text = raw.strip()
+    if text == "":
+        raise err('is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression')
+    unit_problem: str | None = None
+    m = _QUANTITY.match(text)
+    if m and text not in done:
+        number, unit_text = m.groups()
+        try:
+            unit = units.parse_unit(unit_text)
+        except ValueError as exc:
+            unit_problem = str(exc) if re.fullmatch(r"[A-Za-z°][A-Za-z°/*^·\d\s]*", unit_text) else None
+        else:
+            return _quantity(key, sym, sympy.Rational(number), unit, expected, system, err)
+    elif re.fullmatch(r"[A-Za-z°][A-Za-z°/*^·\d\s]*", text) and not _names_in(text) <= set(done):
+        # a unit alone: a symbolic given of that kind
+        try:
+            unit = units.parse_unit(text)
+        except ValueError:
+            unit = None
+        if unit is not None:
+            if expected is not None and unit.dim != expected:
+                raise err(f"expected {describe(expected)}, but {text} is {describe(unit.dim)}", UnitError)
+            work = units.working_unit(unit.dim, system) if unit.dim != ANGLE else units.parse_unit("deg")
+            return Given(key, sym, unit.dim, None, work.text)
+    names = {g.name: (g.symbol, g.dim) for g in done.values()}
+    try:
+        parsed = parse(text, names)
+    except ParseError as exc:
+        if unit_problem:
+            raise err(unit_problem, UnitError) from None
+        if re.fullmatch(r"[A-Za-z°][A-Za-z°/*^·\d\s]*", text) and not _names_in(text) <= set(done):
+            raise err(f"{exc}; or, for a symbol, a known unit alone such as \"m/s\"", ExpressionError) from None
+        raise err(str(exc), ExpressionError) from None
+    if expected is not None and parsed.dim != expected:
+        raise err(f"expected {describe(expected)}, but the expression is {describe(parsed.dim)}", UnitError)
+    values = {g.symbol: g.value for g in done.values() if g.value is not None}
+    value = parsed.expr.xreplace(values) if values else parsed.expr
+    if value.free_symbols:
+        value = None
+    else:
+        try:
+            num = complex(value.evalf(30))
+        except (TypeError, ValueError):
+            raise err("does not evaluate to a number") from None
+        if not math.isfinite(num.real) or abs(num.imag) > 1e-12 * max(1.0, abs(num.real)):
+            raise err("does not evaluate to a finite real number")
+        value = sympy.nsimplify(value, rational=False) if not value.is_Rational else value
+    work = units.working_unit(parsed.dim, system) if parsed.dim in units.SYSTEMS[system] else units.Unit("", sympy.Integer(1), parsed.dim)
+    return Given(key, sym, parsed.dim, value, work.text, definition=parsed.expr)
+
+
+def _quantity(key: str, sym: sympy.Symbol, number: sympy.Expr, unit: units.Unit, expected: Dim | None, system: str, err) -> Given:  # noqa: ANN001
+    if expected is not None and unit.dim != expected:
+        raise err(f"expected {describe(expected)}, but {unit.text or 'a bare number'} is {describe(unit.dim)}", UnitError)
+    if abs(number) > 10**30 or (number != 0 and abs(number) < sympy.Rational(1, 10**30)):
+        raise err("is out of range (expected a magnitude between 1e-30 and 1e30)")
+    if unit.dim == ANGLE:
+        return Given(key, sym, ANGLE, number * unit.factor, "deg", written=None if unit.text in ("deg", "°") else f"{number} {unit.text}")
+    if unit.dim not in units.SYSTEMS[system]:
+        raise err(f"{unit.text} is {describe(unit.dim)}, which derive does not use in a given", UnitError)
+    work = units.working_unit(unit.dim, system)
+    if unit.dim == units.FORCE and expected == MASS:
+        raise err("a weight is not a mass", UnitError)
+    if unit.text == work.text or unit.dim == DIMENSIONLESS:
+        return Given(key, sym, unit.dim, number, work.text)
+    value = units.convert(number, unit, work)
+    return Given(key, sym, unit.dim, value, work.text, written=f"{number} {unit.text}")
+
+
+def _check_ranges(by_name: Mapping[str, Given], ctx: _Ctx) -> None:
+    e = by_name["e"].value
+    if e is not None and not (0 <= e <= 1):
+        raise ctx.error("the coefficient of restitution must lie between 0 and 1", section="given", key="e", value=_num(e), cls=PhysicsError)
+    for m in ("m_A", "m_B"):
+        v = by_name[m].value
+        if v is not None and not v > 0:
+            raise ctx.error("a mass must be positive", section="given", key=m, value=_num(v), cls=PhysicsError)
+    for s in ("v_A1", "v_B1"):
+        g = by_name.get(s)
+        if g is not None and g.value is not None and g.symbol.is_nonnegative and not g.value >= 0:
+            raise ctx.error(
+                "a speed cannot be negative (its direction is set by [A]/[B] angle, from and toward)",
+                section="given",
+                key=s,
+                value=_num(g.value),
+                cls=PhysicsError,
+            )
+
+
+def _num(value: sympy.Expr) -> str:
+    from derive.numbers import format_number
+
+    return format_number(value, 4)
+
+
+def _motion(b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool) -> tuple[Motion, Given | None]:
+    speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
+    if not oblique:
+        if n_name in by_name or t_name in by_name or tbl:
+            key = n_name if n_name in by_name else t_name if t_name in by_name else None
+            raise ctx.error(
+                f"a direct impact has one velocity component: give {speed_name}, signed along +n (from A toward B)",
+                section="given" if key else b,
+                key=key,
+            )
+        if speed_name not in by_name:
+            raise ctx.error(f"is missing: give the velocity of {b} before the impact, signed along +n", section="given", key=speed_name)
+        return Motion(b, by_name[speed_name].symbol, sympy.Integer(0)), None
+    has_comp = n_name in by_name or t_name in by_name
+    if has_comp and speed_name in by_name:
+        raise ctx.error(f"give either {speed_name} (speed, with a direction) or {n_name} and {t_name}, not both", section="given", key=speed_name)
+    if has_comp:
+        if tbl:
+            raise ctx.error(f"the velocity of {b} is given by components, so [{b}] is not needed", section=b)
+        missing = [k for k in (n_name, t_name) if k not in by_name]
+        if missing:
+            raise ctx.error(f"is missing: with components give both {n_name} and {t_name}", section="given", key=missing[0])
+        return Motion(b, by_name[n_name].symbol, by_name[t_name].symbol), None
+    if speed_name not in by_name:
+        raise ctx.error(
+            f"is missing: give the speed {speed_name} with [{b}] angle, from and toward, or the components {n_name} and {t_name}",
+            section="given",
+            key=speed_name,
+        )
+    speed = by_name[speed_name]
+    if not tbl:
+        if speed.value == 0:
+            return Motion(b, sympy.Integer(0), sympy.Integer(0), speed=speed.symbol), None
+        raise ctx.error(f"is missing: give the direction of {b}'s velocity (angle, from, toward)", section=b)
+    for k in BODY_FIELDS:
+        if k not in tbl:
+            raise ctx.error(f"is missing: the direction of {b} needs angle, from and toward", section=b, key=k)
+    axis_from, toward = tbl["from"], tbl["toward"]
+    for k, ax in (("from", axis_from), ("toward", toward)):
+        if ax not in AXES:
+            raise ctx.error(f"expected one of {', '.join(AXES)}", section=b, key=k, value=ax)
+    if axis_from[1] == toward[1]:
+        raise ctx.error(f"the angle is measured from {axis_from} toward an axis at right angles to it (±n or ±t), not {toward}", section=b, key="toward", value=toward)
+    extra = None
+    angle_raw = tbl["angle"]
+    if isinstance(angle_raw, str) and angle_raw.strip() in by_name:
+        angle = by_name[angle_raw.strip()]
+        if angle.dim != ANGLE:
+            raise ctx.error(f"{angle.name} is {describe(angle.dim)}, not an angle", section=b, key="angle", value=angle_raw, cls=UnitError)
+    else:
+        name = f"theta_{b}1"
+        if name in by_name:
+            raise ctx.error(f"{name} is already given: write angle = \"{name}\"", section=b, key="angle", value=angle_raw)
+        err = lambda what, cls=InputError: ctx.error(what, section=b, key="angle", value=angle_raw, cls=cls)  # noqa: E731
+        if isinstance(angle_raw, bool) or not isinstance(angle_raw, (int, float, str)):
+            raise err('expected an angle such as "30 deg" or the name of a given angle')
+        if isinstance(angle_raw, (int, float)):
+            if not math.isfinite(angle_raw):
+                raise err("expected a finite angle")
+            angle_raw = f"{angle_raw} deg"
+        m = _QUANTITY.match(angle_raw)
+        if not m:
+            raise err('expected an angle such as "30 deg" or the name of a given angle')
+        try:
+            unit = units.parse_unit(m.group(2) or "deg")
+        except ValueError as exc:
+            raise err(str(exc), UnitError) from None
+        if unit.dim != ANGLE:
+            raise err(f"expected an angle, but {unit.text} is {describe(unit.dim)}", UnitError)
+        angle = _quantity(name, symbol(name), sympy.Rational(m.group(1)), unit, ANGLE, "SI", err)
+        extra = angle
+    v, th = speed.symbol, angle.symbol
+    comps = {axis_from: v * sympy.cos(th), toward: v * sympy.sin(th)}
+    n = sum((c if ax == "+n" else -c) for ax, c in comps.items() if ax[1] == "n")
+    t = sum((c if ax == "+t" else -c) for ax, c in comps.items() if ax[1] == "t")
+    return Motion(b, sympy.sympify(n), sympy.sympify(t), speed=v, angle=th, axis_from=axis_from, toward=toward), extra
+
+
+def _find(raw: Any, ctx: _Ctx, oblique: bool) -> tuple[str, ...]:
+    default = ("v_A2", "v_B2")
+    if raw is None:
+        return default
+    if isinstance(raw, str):
+        raw = [raw]
+    if not isinstance(raw, list) or not raw or not all(isinstance(x, str) for x in raw):
+        raise ctx.error("expected a list of result names", key="find", value=raw)
+    allowed = RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")
+    for x in raw:
+        if x not in allowed:
+            raise ctx.error(f"unknown result {x!r} (expected some of: {', '.join(allowed)})", key="find", value=raw)
+    return tuple(dict.fromkeys(raw))
+
+
+def _check_approach(problem: Problem, ctx: _Ctx) -> None:
+    approach = problem.motion_A.n - problem.motion_B.n
+    value = approach.xreplace(problem.numeric())
+    if value.free_symbols:
+        if value.is_positive is False or (value.is_zero is True):
+            raise ctx.error("the bodies do not approach along n: v_A1n - v_B1n must be positive", section="given", cls=PhysicsError)
+        return
+    if not value > 0:
+        from derive.numbers import format_number
+
+        shown = format_number(value, 4)
+        raise ctx.error(
+            f"the bodies do not approach: v_A1n - v_B1n = {shown}, but it must be positive "
+            "(n points from A's centre toward B's, so A must close on B along n)",
+            section="given",
+            cls=PhysicsError,
+        )

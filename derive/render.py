@@ -1,0 +1,213 @@
+"""Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+
+Layout lives in the Jinja2 templates (``templates/``); the mathematics is
+printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
+A renderer never does physics.
+"""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from typing import Any
+
+import jinja2
+import sympy
+
+from derive import escape
+from derive.errors import InputError
+from derive.numbers import format_number
+from derive.printing import Style, block_extra, exact_latex, latex_eqn, latex_inline, StepPrinter
+from derive.problem import Given
+from derive.resources import templates_dir
+from derive.solution import Math, Solution
+from derive.symbols import latex_name
+from derive.units import latex_unit, plain_unit
+
+FORMATS = ("md", "tex", "tex-fragment", "html", "json")
+ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
+
+
+@cache
+def _env(kind: str) -> jinja2.Environment:
+    """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
+    options: dict[str, Any] = {}
+    if kind == "tex":
+        options = dict(
+            block_start_string=r"\BLOCK{",
+            block_end_string="}",
+            variable_start_string=r"\VAR{",
+            variable_end_string="}",
+            comment_start_string=r"\#{",
+            comment_end_string="}",
+            line_statement_prefix=None,
+            line_comment_prefix=None,
+        )
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(templates_dir())),
+        undefined=jinja2.StrictUndefined,
+        autoescape=False,
+        keep_trailing_newline=True,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        **options,
+    )
+    env.filters["md"] = escape.markdown
+    env.filters["tex"] = escape.tex
+    env.filters["html"] = escape.html_text
+    return env
+
+
+def _given_latex(g: Given, style: Style) -> tuple[str, str]:
+    """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
+    name = latex_name(g.name)
+    if g.value is None:
+        if g.definition is not None:
+            return f"{name} = {StepPrinter().doprint(g.definition)}", ""
+        unit = plain_unit(g.unit) if g.unit else "a pure number"
+        return name, f"kept as a symbol ({unit})"
+    if g.unit == "deg":
+        deg = sympy.nsimplify(g.value * 180 / sympy.pi)
+        value = exact_latex(deg, style.digits, 1) + r"^\circ"
+    else:
+        value = exact_latex(g.value, style.digits, 1)
+        if g.unit:
+            value += r"\ " + latex_unit(g.unit)
+    parts = [name]
+    if g.definition is not None:
+        parts.append(StepPrinter().doprint(g.definition))
+    if g.written is not None:
+        number, _, unit = g.written.partition(" ")
+        parts.append(exact_latex(sympy.Rational(number), style.digits, 1) + (latex_unit(unit) if unit in ("deg", "°") else r"\ " + latex_unit(unit)))
+    parts.append(value)
+    return " = ".join(parts), ""
+
+
+_FIND_WORDS = {
+    "v_A2": "the speed of A",
+    "v_B2": "the speed of B",
+    "theta_A2": "the direction of A",
+    "theta_B2": "the direction of B",
+    "T_1": "the kinetic energy before the impact",
+    "T_2": "the kinetic energy after the impact",
+    "T_lost": "the kinetic energy lost",
+}
+
+
+def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
+    """The data a template needs: every formula already printed as LaTeX."""
+    p = solution.problem
+    style = Style(digits if digits is not None else p.digits, 1, solution.values, solution.angles)
+    stages = []
+    for stage in solution.stages:
+        blocks = []
+        for block in stage.blocks:
+            extra = block_extra(block, style)
+            lines = []
+            last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+            for i, eqn in enumerate(block.lines):
+                body, tag = latex_eqn(eqn, style, extra)
+                if i == last_boxed:
+                    body += ANSWER_MARK
+                lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
+            text = None
+            if block.text is not None:
+                text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
+            blocks.append({"text": text, "lines": lines})
+        stages.append({"number": stage.number, "title": stage.title, "blocks": blocks})
+    givens = [dict(zip(("latex", "note"), _given_latex(g, style))) for g in p.givens]
+    if p.question:
+        find = [("text", p.question)]
+    else:
+        words = "the velocities of A and B immediately after the impact"
+        extra_words = [_FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)]
+        if extra_words:
+            words += "; " + ", ".join(extra_words)
+        find = [("text", words[0].upper() + words[1:] + ".")]
+    return {
+        "title": p.title,
+        "kind": p.kind,
+        "source": p.source,
+        "statement": p.statement,
+        "find": find,
+        "givens": givens,
+        "stages": stages,
+        "system": p.system,
+    }
+
+
+def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
+    if not parts:
+        return ""
+    return "".join(f"${s}$" if kind == "math" else s for kind, s in parts)
+
+
+def to_json(solution: Solution, digits: int | None = None) -> str:
+    """The JSON contract of DESIGN.md: title, kind, results (+ givens and steps)."""
+    p = solution.problem
+    d = digits if digits is not None else p.digits
+    results = {}
+    printer = StepPrinter()
+    for name, r in solution.results.items():
+        value = None if r.value is None else float(sympy.N(r.value, 17))
+        entry: dict[str, Any] = {
+            "value": value,
+            "unit": plain_unit(r.unit) if r.unit != "deg" else "deg",
+            "expr": str(r.closed),
+            "latex": printer.doprint(r.closed),
+            "description": r.description,
+        }
+        if r.value is not None:
+            entry["shown"] = format_number(r.value, d)
+        else:
+            entry["value_expr"] = str(r.partial)
+        results[name] = entry
+    v = view(solution, digits)
+    doc = {
+        "title": p.title,
+        "kind": p.kind,
+        "source": p.source,
+        "units": p.system,
+        "find": list(p.find),
+        "results": results,
+        "givens": {
+            g.name: {
+                "value": None if g.value is None else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
+                "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
+            }
+            for g in p.givens
+        },
+        "stages": [
+            {
+                "number": s["number"],
+                "title": s["title"],
+                "blocks": [
+                    {"text": _text_with_math(b["text"]), "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]]}
+                    for b in s["blocks"]
+                ],
+            }
+            for s in v["stages"]
+        ],
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
+def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+
+    ``digits`` overrides the significant figures (default: the problem's, else
+    the textbook rule). For a PDF see :func:`derive.pdf.build_pdf`.
+    """
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    if fmt == "json":
+        return to_json(solution, digits)
+    if fmt not in FORMATS:
+        raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join(FORMATS + ('pdf',))})", field="--format")
+    data = view(solution, digits)
+    if fmt == "md":
+        return _env("md").get_template("solution.md.j2").render(**data)
+    if fmt == "html":
+        return _env("md").get_template("solution.html.j2").render(**data)
+    template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
+    return _env("tex").get_template(template).render(**data)

@@ -1,0 +1,525 @@
+"""From a Problem to a Solution: equations (1)-(4), solved, then written out as steps.
+
+The steps follow the notes' layout: 1) geometry (the n-t axes and the
+pre-impact components), 2) kinetics (equations (1)-(4), each symbolic, then
+with numbers, then collected), 3) the elimination written out, 4) the answer.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.errors import SolveError
+from derive.impact import Impact, evaluate, independent_map, setup
+from derive.problem import Problem
+from derive.solution import Block, Eqn, Math, Result, Side, Solution, Stage, Text
+from derive.symbols import symbol, vector
+
+HALF = sympy.Rational(1, 2)
+
+
+def solve(problem: Problem) -> Solution:
+    """Solve ``problem`` in closed form and write its worked solution as data.
+
+    >>> from derive import load, solve  # doctest: +SKIP
+    >>> solve(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
+    -7*cos(47*pi/225)/5
+    """
+    imp = setup(problem)
+    results = _results(imp)
+    values: dict[sympy.Symbol, sympy.Expr] = dict(problem.numeric())
+    angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
+    writer = _Writer(imp, results)
+    stages = writer.stages()
+    answers = _answer_names(problem)
+    return Solution(problem, results, stages, answers, values, angles, tuple(writer.notes))
+
+
+def _answer_names(problem: Problem) -> tuple[str, ...]:
+    return problem.find
+
+
+# ---------------------------------------------------------------- results
+
+
+def _results(imp: Impact) -> dict[str, Result]:
+    p, nm = imp.problem, imp.names
+    out: dict[str, Result] = {}
+    unit_v = _unit(p, "velocity")
+
+    def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
+        partial = evaluate(closed, p)
+        partial = sympy.simplify(partial) if partial.free_symbols else partial
+        if degrees and partial.free_symbols and isinstance(partial, sympy.atan2):
+            partial = _atan2_number(*partial.args)
+        value: sympy.Expr | None = None
+        if not partial.free_symbols:
+            value = partial * 180 / sympy.pi if degrees else partial
+            value = sympy.nsimplify(value) if value.is_Rational is False and value.is_algebraic else value
+        elif degrees:
+            partial = partial * 180 / sympy.pi
+        out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
+
+    if p.oblique:
+        comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
+        for name, s in comps.items():
+            body, axis = name[2], name[-1]
+            add(name, imp.closed[s], unit_v, f"velocity of {body} after the impact, {axis} component")
+        for b in "AB":
+            n, t = imp.closed[comps[f"v_{b}2n"]], imp.closed[comps[f"v_{b}2t"]]
+            add(f"v_{b}2", _tidy(sympy.sqrt(n**2 + t**2)), unit_v, f"speed of {b} after the impact")
+            ang = _angle(n, t, p)
+            if ang is not None:
+                add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
+    else:
+        add("v_A2", imp.closed[nm.A2n], unit_v, "velocity of A after the impact, along +n")
+        add("v_B2", imp.closed[nm.B2n], unit_v, "velocity of B after the impact, along +n")
+    ind = independent_map(p)
+    sym = p.symbols()
+    m_A, m_B = sym["m_A"].xreplace(ind), sym["m_B"].xreplace(ind)
+    pre = {k: v.xreplace(ind) for k, v in imp.pre.items()} if p.oblique else {}
+    sq1A = (nm.A1n**2 + (nm.A1t**2 if p.oblique else 0)) if True else 0
+    sq1B = nm.B1n**2 + (nm.B1t**2 if p.oblique else 0)
+    T1 = HALF * m_A * sq1A.xreplace(pre) + HALF * m_B * sq1B.xreplace(pre)
+    if not p.oblique:
+        T1 = T1.xreplace({nm.A1n: sym["v_A1"], nm.B1n: sym["v_B1"]})
+    post = imp.closed
+    sq2A = (nm.A2n**2 + (nm.A2t**2 if p.oblique else 0)).xreplace(post)
+    sq2B = (nm.B2n**2 + (nm.B2t**2 if p.oblique else 0)).xreplace(post)
+    T2 = HALF * m_A * sq2A + HALF * m_B * sq2B
+    unit_T = _unit(p, "energy")
+    add("T_1", _tidy(sympy.trigsimp(T1)), unit_T, "kinetic energy before the impact")
+    add("T_2", _tidy(T2), unit_T, "kinetic energy after the impact")
+    add("T_lost", _tidy(sympy.factor(sympy.simplify(T1 - T2))), unit_T, "kinetic energy lost in the impact")
+    return out
+
+
+def _f(x: sympy.Expr) -> sympy.Expr:
+    """A pure number as a Float (kept apart in printed sums); other expressions as they are."""
+    if x.is_number and not x.is_Integer:
+        return sympy.Float(x.evalf(30), 30)
+    return x
+
+
+def _tidy(expr: sympy.Expr) -> sympy.Expr:
+    simple = sympy.factor_terms(sympy.simplify(expr))
+    return simple if sympy.count_ops(simple) <= sympy.count_ops(expr) else expr
+
+
+def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:
+    """atan2(n, t) in closed form; None where the direction is undefined (a body at rest)."""
+    nv, tv = evaluate(n, p), evaluate(t, p)
+    if nv == 0 and tv == 0:
+        return None
+    return sympy.atan2(n, t)
+
+
+def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
+    """atan2(y, x) as a number when y/x is one and the sign of x is known (4.C.12: v_A1 cancels)."""
+    ratio = sympy.simplify(y / x) if x != 0 else None
+    if ratio is not None and ratio.is_number:
+        if x.is_positive:
+            return sympy.atan(ratio)
+        if x.is_negative:
+            return sympy.atan(ratio) + (sympy.pi if y.is_nonnegative else -sympy.pi)
+    if x == 0 and y.is_positive:
+        return sympy.pi / 2
+    if x == 0 and y.is_negative:
+        return -sympy.pi / 2
+    return sympy.atan2(y, x)
+
+
+def _unit(p: Problem, what: str) -> str:
+    from derive import units
+
+    dim = {"velocity": units.VELOCITY, "energy": units.ENERGY}[what]
+    return units.SYSTEMS[p.system][dim]
+
+
+# ---------------------------------------------------------------- steps
+
+
+def _terms(expr: sympy.Expr) -> tuple[sympy.Expr, ...]:
+    """The terms of a sum in a stable order (A before B, as the equations are built)."""
+    if isinstance(expr, sympy.Add):
+        return tuple(expr.args)
+    return (expr,)
+
+
+def _nonzero(terms: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
+    kept = tuple(t for t in terms if t != 0)
+    return kept or (sympy.Integer(0),)
+
+
+class _Writer:
+    """Writes the stages of one solution."""
+
+    def __init__(self, imp: Impact, results: dict[str, Result]) -> None:
+        self.imp = imp
+        self.p = imp.problem
+        self.nm = imp.names
+        self.results = results
+        self.ind = imp.independent
+        self.numeric = self.p.numeric()
+        self.notes: list[Text] = []
+        sym = self.p.symbols()
+        self.m_A, self.m_B, self.e = sym["m_A"], sym["m_B"], sym["e"]
+        self.unit_v = _unit(self.p, "velocity")
+
+    # helpers -----------------------------------------------------------
+    def givens(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` in the givens' symbols (pre-impact components resolved)."""
+        return expr.xreplace(self.imp.pre).xreplace(self.ind)
+
+    def has_values(self, expr: sympy.Expr) -> bool:
+        return bool(expr.free_symbols & set(self.numeric))
+
+    def num(self, expr: sympy.Expr) -> sympy.Expr:
+        return evaluate(expr, self.p)
+
+    # stages --------------------------------------------------------------
+    def stages(self) -> tuple[Stage, ...]:
+        return (
+            Stage(1, "Geometry: the n–t axes", tuple(self.geometry())),
+            Stage(2, "Kinetics", tuple(self.kinetics())),
+            Stage(3, "Solve", tuple(self.elimination())),
+            Stage(4, "Answer", tuple(self.answer())),
+        )
+
+    def geometry(self) -> list[Block]:
+        blocks = [
+            Block(
+                (
+                    "Take ",
+                    Math(symbol("n")),
+                    " along the line of impact, positive from the centre of A toward the centre of B, and ",
+                    Math(symbol("t")),
+                    " in the plane of contact"
+                    + (" (n turned 90° counter-clockwise)." if self.p.oblique else "."),
+                )
+            )
+        ]
+        if not self.p.oblique:
+            v_A1, v_B1 = self.nm.A1n, self.nm.B1n
+            blocks.append(
+                Block(
+                    ("The impact is direct: every velocity lies along n and is signed along +n.",),
+                    (
+                        Eqn((Side((v_A1,)), Side((v_A1,), "result")), unit=self.unit_v),
+                        Eqn((Side((v_B1,)), Side((v_B1,), "result")), unit=self.unit_v),
+                    ),
+                )
+            )
+            return blocks
+        for motion, (cn, ct) in ((self.p.motion_A, (self.nm.A1n, self.nm.A1t)), (self.p.motion_B, (self.nm.B1n, self.nm.B1t))):
+            b = motion.body
+            if motion.speed is not None and motion.angle is None:
+                blocks.append(Block((f"{b} is at rest before the impact: ", Math(sympy.Eq(cn, 0)), ", ", Math(sympy.Eq(ct, 0)), ".")))
+                continue
+            if motion.angle is not None:
+                text: Text = (
+                    f"{b} moves at ",
+                    Math(motion.speed),
+                    ", at ",
+                    Math(motion.angle),
+                    f" from {motion.axis_from} toward {motion.toward}:",
+                )
+            else:
+                text = (f"The velocity of {b} before the impact is given by its components:",)
+            lines = []
+            for c in (cn, ct):
+                expr = self.imp.pre[c]
+                sides = [Side((c,))]
+                if expr != c:
+                    sides.append(Side((expr,)))
+                    if self.has_values(expr) and not expr.is_Symbol:
+                        sides.append(Side((expr,), "values"))
+                sides.append(Side((expr,), "result"))
+                lines.append(Eqn(tuple(sides), unit=self.unit_v))
+            blocks.append(Block(text, tuple(lines)))
+        return blocks
+
+    def kinetics(self) -> list[Block]:
+        blocks: list[Block] = []
+        nm = self.nm
+        if self.p.oblique:
+            blocks.append(Block(("Linear momentum in the t-direction is conserved for each particle: no impulsive force acts on A or on B along t.",)))
+            for tag, b, m, c1, c2 in (("1", "A", self.m_A, nm.A1t, nm.A2t), ("2", "B", self.m_B, nm.B1t, nm.B2t)):
+                pre = self.givens(c1)
+                lines = [
+                    Eqn((Side((m * c1,)), Side((m * c2,))), cancel=frozenset({m})),
+                    Eqn((Side((c2,)), Side((c1,))) + ((Side((pre,)),) if pre != c1 else ()), implies=True),
+                ]
+                res = self.results[f"v_{b}2t"]
+                if self.has_values(pre) and not pre.is_Symbol and pre != 0:
+                    lines.append(Eqn((Side((c2,)), Side((pre,), "values"))))
+                lines.append(Eqn((Side((c2,)), Side((res.closed if res.value is None else res.value,), "result")), tag=tag, unit=self.unit_v))
+                blocks.append(Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)))
+        else:
+            blocks.append(
+                Block(("The impact is direct: there are no t components, so equations (1) and (2) of the notes read 0 = 0.",))
+            )
+        blocks.append(self.momentum_n())
+        blocks.append(self.restitution())
+        return blocks
+
+    def collected(self, lhs: sympy.Expr, rhs: sympy.Expr, order: tuple[sympy.Symbol, ...]) -> tuple[tuple[sympy.Expr, ...], sympy.Expr]:
+        """Unknown terms (in ``order``) = constant, from ``lhs = rhs`` with numbers in."""
+        expr = sympy.expand(self.num(lhs) - self.num(rhs))
+        terms = []
+        for u in order:
+            c = expr.coeff(u)
+            if c != 0:
+                terms.append(sympy.simplify(c) * u)
+        const = sympy.simplify(-(expr - sum(terms)))
+        return tuple(terms), const
+
+    def momentum_n(self) -> Block:
+        nm, m_A, m_B = self.nm, self.m_A, self.m_B
+        lhs_terms = (m_A * nm.A1n, m_B * nm.B1n)
+        rhs_terms = (m_A * nm.A2n, m_B * nm.B2n)
+        lines = [Eqn((Side(lhs_terms), Side(rhs_terms)))]
+        g_lhs = _nonzero(tuple(self.givens(t) for t in lhs_terms))
+        g_rhs = tuple(self.givens(t) for t in rhs_terms)
+        if g_lhs != lhs_terms or g_rhs != rhs_terms:
+            lines.append(Eqn((Side(g_lhs), Side(g_rhs)), implies=True))
+        common = self.common_factor(g_lhs + g_rhs)
+        if common is not None:
+            lines[-1] = Eqn(lines[-1].sides, cancel=frozenset({common}), implies=lines[-1].implies)
+            g_lhs = _nonzero(tuple(sympy.cancel(t / common) for t in g_lhs))
+            g_rhs = tuple(sympy.cancel(t / common) for t in g_rhs)
+            lines.append(Eqn((Side(g_lhs), Side(g_rhs)), implies=True))
+        sums = []
+        if any(self.has_values(t) for t in g_lhs + g_rhs):
+            lines.append(Eqn((Side(g_lhs, "values"), Side(g_rhs, "values"))))
+            lhs_num = tuple(self.num(t) for t in g_lhs)
+            if len(lhs_num) > 1 and all(not t.free_symbols for t in lhs_num):
+                lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values"))))
+                sums.append((lhs_num, sympy.Add(*lhs_num)))
+        terms, const = self.collected(sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
+        lines.append(Eqn((Side(terms, "numeric"), Side((const,), "numeric")), tag="3", implies=True))
+        self.eq3 = (terms, const)
+        return Block(
+            ("Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it.",),
+            tuple(lines),
+            tuple(sums),
+        )
+
+    def common_factor(self, terms: tuple[sympy.Expr, ...]) -> sympy.Symbol | None:
+        """A symbolic mass shared by every term (m in 4.C.12), which cancels."""
+        nonzero = [t for t in terms if t != 0]
+        for cand in sorted({s for s in nonzero[0].free_symbols}, key=str) if nonzero else []:
+            if cand in self.numeric or not cand.is_positive:
+                continue
+            if all(sympy.cancel(t / cand).free_symbols.isdisjoint({cand}) and (t / cand).is_polynomial(cand) for t in nonzero):
+                if all(sympy.Poly(t, cand).degree() == 1 for t in nonzero):
+                    return cand
+        return None
+
+    def restitution(self) -> Block:
+        nm, e = self.nm, self.e
+        sep = sympy.Add(nm.B2n, -nm.A2n, evaluate=False)
+        app = sympy.Add(nm.A1n, -nm.B1n, evaluate=False)
+        lines = [
+            Eqn((Side((e,)), Side((sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False),)))),
+            Eqn((Side((sympy.Mul(e, app, evaluate=False),)), Side((nm.B2n, -nm.A2n))), implies=True),
+        ]
+        g_app = _nonzero(tuple(self.givens(t) for t in (nm.A1n, -nm.B1n)))
+        g_app_expr = sympy.Add(*g_app, evaluate=False) if len(g_app) > 1 else g_app[0]
+        g_lhs = sympy.Mul(e, g_app_expr, evaluate=False)
+        if g_app != (nm.A1n, -nm.B1n):
+            lines.append(Eqn((Side((g_lhs,)), Side((nm.B2n, -nm.A2n))), implies=True))
+        if self.has_values(g_lhs):
+            lines.append(Eqn((Side((g_lhs,), "values"), Side((nm.B2n, -nm.A2n)))))
+        const = sympy.simplify(self.num(e * sympy.Add(*g_app)))
+        lines.append(Eqn((Side((nm.B2n, -nm.A2n), "numeric"), Side((const,), "numeric")), tag="4", implies=True))
+        self.eq4 = const
+        return Block(
+            ("Impact rule: the coefficient of restitution relates the normal components only, separation over approach.",),
+            tuple(lines),
+        )
+
+    def elimination(self) -> list[Block]:
+        nm = self.nm
+        x, y = nm.A2n, nm.B2n
+        (terms3, c) = self.eq3
+        k = self.eq4
+        a = sympy.expand(sympy.Add(*terms3)).coeff(x)
+        b = sympy.expand(sympy.Add(*terms3)).coeff(y)
+        xv, yv = self.results_value(x), self.results_value(y)
+        blocks: list[Block] = []
+        if sympy.simplify(a - b) == 0:
+            # equal coefficients: add and subtract (3) and (4), as in Example 4.C.12
+            a1 = sympy.simplify(a)
+            blocks.append(
+                Block(
+                    ("Add (3) and (4): ", Math(x), " cancels.",),
+                    (
+                        Eqn((Side((sympy.Mul(a1 + 1, y, evaluate=False),), "numeric"), Side((c, k), "numeric"))),
+                        Eqn((Side((y,)), Side((yv,), "result")), unit=self.unit_v, tag="5", implies=True),
+                    ),
+                    self.sum_check((c, k)),
+                )
+            )
+            blocks.append(
+                Block(
+                    ("Subtract (4) from (3): ", Math(y), " cancels.",),
+                    (
+                        Eqn((Side((sympy.Mul(a1 + 1, x, evaluate=False),), "numeric"), Side((c, -k), "numeric"))),
+                        Eqn((Side((x,)), Side((xv,), "result")), unit=self.unit_v, tag="6", implies=True),
+                    ),
+                    self.sum_check((c, -k)),
+                )
+            )
+            return blocks
+        sub = sympy.Add(x, _f(k), evaluate=False)
+        blocks.append(Block(("From (4):",), (Eqn((Side((y,)), Side((x, k), "numeric"))),)))
+        lhs = (a * x, sympy.Mul(b, sub, evaluate=False))
+        coef = sympy.Add(a, b, evaluate=False)
+        bk = sympy.Mul(_f(-b), _f(k), evaluate=False)
+        frac_num = sympy.Add(_f(c), bk, evaluate=False)
+        blocks.append(
+            Block(
+                ("Substitute into (3):",),
+                (
+                    Eqn((Side(lhs, "numeric"), Side((c,), "numeric"))),
+                    Eqn((Side((sympy.Mul(coef, x, evaluate=False),), "numeric"), Side((c, bk), "numeric")), implies=True),
+                    Eqn(
+                        (
+                            Side((x,)),
+                            Side((sympy.Mul(frac_num, sympy.Pow(_f(a + b), -1, evaluate=False), evaluate=False),), "numeric"),
+                            Side((xv,), "result"),
+                        ),
+                        unit=self.unit_v,
+                        implies=True,
+                    ),
+                ),
+            )
+        )
+        blocks.append(
+            Block(
+                ("Back into (4):",),
+                (Eqn((Side((y,)), Side((xv, k), "numeric"), Side((yv,), "result")), unit=self.unit_v),),
+                (((xv, k), yv),) if not (xv.free_symbols or yv.free_symbols) else (),
+            )
+        )
+        return blocks
+
+    def sum_check(self, terms: tuple[sympy.Expr, ...]) -> tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...]:
+        """The sum claim for a line of numeric terms (none when a symbol remains)."""
+        nums = tuple(self.num(t) for t in terms)
+        if any(t.free_symbols for t in nums):
+            return ()
+        return ((nums, sympy.Add(*nums)),)
+
+    def results_value(self, s: sympy.Symbol) -> sympy.Expr:
+        r = self.results[str(s)]
+        return r.value if r.value is not None else r.partial
+
+    def answer(self) -> list[Block]:
+        p = self.p
+        blocks: list[Block] = []
+        e_t, e_n = vector("e_t"), vector("e_n")
+        lines = []
+        if p.oblique:
+            for b in "AB":
+                t = self.results_value(symbol(f"v_{b}2t"))
+                n = self.results_value(symbol(f"v_{b}2n"))
+                comps = _nonzero(tuple(c * u for c, u in ((t, e_t), (n, e_n)) if c != 0))
+                lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=True))
+        else:
+            for b in "AB":
+                lines.append(Eqn((Side((symbol(f"v_{b}2"),)), Side((self.results_value(symbol(f"v_{b}2")),), "result")), unit=self.unit_v, boxed=True))
+        blocks.append(Block(("The velocities immediately after the impact:",), tuple(lines)))
+        symbolic = [r for r in self.results.values() if r.value is None and r.name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")]
+        if symbolic:
+            lines = []
+            for r in symbolic:
+                if r.closed == 0:
+                    continue
+                lines.append(Eqn((Side((r.symbol,)), Side((r.closed,)), Side((r.partial,), "result")), unit=r.unit))
+            blocks.append(Block(("In closed form, in the givens:",), tuple(lines)))
+        extra = []
+        for name in p.find:
+            if name in ("v_A2", "v_B2") and not p.oblique:
+                continue
+            if name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n"):
+                continue
+            r = self.results.get(name)
+            if r is None:
+                continue
+            extra.append(self.derived_line(r, boxed=True))
+        if extra:
+            blocks.append(Block(("As asked:",), tuple(extra)))
+        blocks.append(self.energy())
+        return blocks
+
+    def derived_line(self, r: Result, boxed: bool) -> Eqn:
+        nm = self.nm
+        val = r.value if r.value is not None else r.partial
+        if r.name in ("v_A2", "v_B2", "theta_A2", "theta_B2"):
+            b = r.name[-2]
+            n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+            nv, tv = self.results_value(n), self.results_value(t)
+            if r.name.startswith("v"):
+                form = sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False)
+                shown = None
+                if not (nv.free_symbols or tv.free_symbols):
+                    shown = sympy.Pow(sympy.Add(sympy.Pow(_f(tv), 2, evaluate=False), sympy.Pow(_f(nv), 2, evaluate=False), evaluate=False), sympy.Rational(1, 2), evaluate=False)
+            else:
+                form = sympy.atan(sympy.Mul(n, sympy.Pow(t, -1, evaluate=False), evaluate=False), evaluate=False)
+                shown = None
+                ratio = sympy.simplify(nv / tv) if tv != 0 else None
+                if ratio is not None and ratio.is_number and not (nv.free_symbols or tv.free_symbols):
+                    shown = sympy.atan(sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False)
+                elif ratio is not None and ratio.is_number:
+                    shown = sympy.atan(_f(ratio), evaluate=False)
+            sides = [Side((r.symbol,)), Side((form,))]
+            if shown is not None:
+                sides.append(Side((shown,), "numeric"))
+            sides.append(Side((val,), "result"))
+            return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+        return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+
+    def energy(self) -> Block:
+        p, sym = self.p, self.p.symbols()
+        m_A, m_B = self.m_A, self.m_B
+        s1A = p.motion_A.speed if p.oblique and p.motion_A.speed is not None else None
+        s1B = p.motion_B.speed if p.oblique and p.motion_B.speed is not None else None
+        if p.oblique:
+            v1A = s1A**2 if s1A is not None else sympy.Add(self.nm.A1n**2, self.nm.A1t**2, evaluate=False)
+            v1B = s1B**2 if s1B is not None else sympy.Add(self.nm.B1n**2, self.nm.B1t**2, evaluate=False)
+            v2A, v2B = symbol("v_A2", "positive") ** 2, symbol("v_B2", "positive") ** 2
+        else:
+            v1A, v1B = sym["v_A1"] ** 2, sym["v_B1"] ** 2
+            v2A, v2B = symbol("v_A2") ** 2, symbol("v_B2") ** 2
+        forms = {
+            "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
+            "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
+            "T_lost": (symbol("T_1"), -symbol("T_2")),
+        }
+        lines = []
+        for name, terms in forms.items():
+            r = self.results[name]
+            sides = [Side((r.symbol,)), Side(terms)]
+            if r.value is None:
+                if r.closed != r.partial:
+                    sides.append(Side((r.closed,)))
+                sides.append(Side((r.partial,), "result"))
+            else:
+                sides.append(Side((r.value,), "result"))
+            lines.append(Eqn(tuple(sides), unit=r.unit))
+        r1, rl = self.results["T_1"], self.results["T_lost"]
+        if r1.value is not None and rl.value is not None and r1.value != 0:
+            frac = rl.value / r1.value * 100
+            lines.append(Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac,), "result")), unit="%"))
+        else:
+            frac = sympy.simplify(rl.partial / r1.partial)
+            if frac.is_number:
+                lines.append(Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac * 100,), "result")), unit="%"))
+        text: Text = (
+            "Kinetic energy, for the record: it is not conserved across the impact unless ",
+            Math(sympy.Eq(self.e, 1)),
+            ", so it is never used to find the velocities.",
+        )
+        return Block(text, tuple(lines))
