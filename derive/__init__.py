@@ -16,7 +16,7 @@ from derive.solution import Solution
 from derive.solve import solve
 
 __version__ = "0.1.0"
-__all__ = ["DeriveError", "InputError", "Problem", "RenderError", "Solution", "load", "render", "solve", "__version__"]
+__all__ = ["DeriveError", "InputError", "Problem", "RenderError", "Solution", "__version__", "load", "render", "solve"]
 
 
 def load(path: str | Path) -> Problem:

@@ -22,7 +22,9 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = _Parser(prog="derive", description="Worked solutions of central-impact problems, in the layout of the course notes.")
+    parser = _Parser(
+        prog="derive", description="Worked solutions of central-impact problems, in the layout of the course notes."
+    )
     parser.add_argument("--version", action="version", version=f"derive {__version__}")
     parser.add_argument("--debug", action="store_true", help="show the traceback of an error")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
@@ -30,8 +32,12 @@ def _parser() -> argparse.ArgumentParser:
     p_solve.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
     p_solve.add_argument("--format", "-f", choices=FORMATS, default="md", help="output format (default: md)")
     p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf needs -o)")
-    p_solve.add_argument("--digits", type=int, help="significant figures (default: the file's, else 3, or 4 when the leading digit is 1)")
-    p_solve.add_argument("--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document")
+    p_solve.add_argument(
+        "--digits", type=int, help="significant figures (default: the file's, else 3, or 4 when the leading digit is 1)"
+    )
+    p_solve.add_argument(
+        "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
+    )
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -43,7 +49,11 @@ def _solve(args: argparse.Namespace) -> int:
     from derive.fileio import write_atomic
 
     if args.digits is not None and not 1 <= args.digits <= 10:
-        raise InputError("expected a whole number of significant figures from 1 to 10", where="usage", field=f"--digits {args.digits}")
+        raise InputError(
+            "expected a whole number of significant figures from 1 to 10",
+            where="usage",
+            field=f"--digits {args.digits}",
+        )
     problem = derive.load(args.problem)
     solution = derive.solve(problem)
     inputs = (Path(problem.path),)
@@ -91,11 +101,14 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("Error: interrupted", file=sys.stderr)
         return 1
-    except Exception as exc:  # noqa: BLE001 - the last line of defence: one line, exit 1
+    except Exception as exc:
         if debug:
             traceback.print_exc()
         else:
-            print(f"Error: internal error ({type(exc).__name__}: {exc}); run with --debug for the traceback", file=sys.stderr)
+            print(
+                f"Error: internal error ({type(exc).__name__}: {exc}); run with --debug for the traceback",
+                file=sys.stderr,
+            )
         return 1
 
 

@@ -27,9 +27,7 @@ class InputError(DeriveError):
     message reads ``problems/x.toml:7: [given] e = 1.3: <what was expected>``.
     """
 
-    def __init__(
-        self, what: str, *, where: str | None = None, field: str | None = None
-    ) -> None:
+    def __init__(self, what: str, *, where: str | None = None, field: str | None = None) -> None:
         parts = [p for p in (where, field) if p]
         super().__init__(": ".join([*parts, what]))
         self.where = where

@@ -98,7 +98,7 @@ class _Parser:
         return tok
 
     def expect(self, op: str) -> None:
-        kind, val = self.take()
+        _kind, val = self.take()
         if val != op:
             raise ParseError(f"expected {op!r} but found {val!r}")
 
@@ -133,12 +133,12 @@ class _Parser:
             op = self.take()[1]
             right = self.unary()
             if op == "*":
-                dim = tuple(a + b for a, b in zip(left.dim, right.dim))
+                dim = tuple(a + b for a, b in zip(left.dim, right.dim, strict=False))
                 left = Parsed(left.expr * right.expr, dim)  # type: ignore[arg-type]
             else:
                 if right.expr == 0:
                     raise ParseError("division by zero")
-                dim = tuple(a - b for a, b in zip(left.dim, right.dim))
+                dim = tuple(a - b for a, b in zip(left.dim, right.dim, strict=False))
                 left = Parsed(left.expr / right.expr, dim)  # type: ignore[arg-type]
         return left
 
@@ -237,7 +237,7 @@ def _power(base: Parsed, exp: sympy.Expr) -> Parsed:
     return Parsed(sympy.Pow(base.expr, exp), dim)
 
 
-def _apply(name: str, func, args: list[Parsed]) -> Parsed:  # noqa: ANN001
+def _apply(name: str, func, args: list[Parsed]) -> Parsed:
     if name in ("sin", "cos", "tan"):
         if args[0].dim not in (ANGLE, DIMENSIONLESS):
             raise ParseError(f"{name} takes an angle, not {describe(args[0].dim)}")

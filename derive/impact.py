@@ -64,6 +64,11 @@ class Impact:
     independent: dict[sympy.Symbol, sympy.Expr]
     unknowns: tuple[sympy.Symbol, ...]
     closed: dict[sympy.Symbol, sympy.Expr]
+    by_components: dict[sympy.Symbol, sympy.Expr]
+
+    def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` (in component symbols) with the pre-impact components in the givens."""
+        return expr.xreplace(self.pre).xreplace(self.independent)
 
 
 def independent_map(problem: Problem) -> dict[sympy.Symbol, sympy.Expr]:
@@ -91,7 +96,12 @@ def setup(problem: Problem) -> Impact:
     eqs[4] = sympy.Eq(e, (nm.B2n - nm.A2n) / (nm.A1n - nm.B1n), evaluate=False)
     pre: dict[sympy.Symbol, sympy.Expr] = {}
     if problem.oblique:
-        pre = {nm.A1n: problem.motion_A.n, nm.A1t: problem.motion_A.t, nm.B1n: problem.motion_B.n, nm.B1t: problem.motion_B.t}
+        pre = {
+            nm.A1n: problem.motion_A.n,
+            nm.A1t: problem.motion_A.t,
+            nm.B1n: problem.motion_B.n,
+            nm.B1t: problem.motion_B.t,
+        }
     ind = independent_map(problem)
     unknowns = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
     system = []
@@ -99,29 +109,24 @@ def setup(problem: Problem) -> Impact:
         lhs, rhs = eq.lhs, eq.rhs
         if k == 4:  # clear the denominator: e (v_A1n - v_B1n) = v_B2n - v_A2n
             lhs, rhs = e * (nm.A1n - nm.B1n), nm.B2n - nm.A2n
-        expr = (lhs - rhs).xreplace(pre).xreplace(ind)
-        system.append(sympy.expand(expr))
+        system.append(sympy.expand((lhs - rhs).xreplace(ind)))
+    # Solved in the component symbols, the system is linear with rational
+    # coefficients: fast and exact. The givens go in afterwards.
     sol = sympy.solve(system, unknowns, dict=True)
     if len(sol) != 1 or set(sol[0]) != set(unknowns):
         raise SolveError(
             "equations (1)-(4) do not determine the velocities after the impact for these givens",
             where=problem.path,
         )
-    closed = {u: _tidy(sol[0][u]) for u in unknowns}
-    return Impact(problem, nm, eqs, pre, ind, unknowns, closed)
-
-
-def _tidy(expr: sympy.Expr) -> sympy.Expr:
-    """A short closed form: factor what factors, keep trig as the notes write it."""
-    simple = sympy.factor_terms(sympy.simplify(expr))
-    return simple if sympy.count_ops(simple) <= sympy.count_ops(expr) else expr
+    by_comp = {u: sympy.factor(sol[0][u]) for u in unknowns}
+    closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
+    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
 
 
 def evaluate(expr: sympy.Expr, problem: Problem) -> sympy.Expr:
     """``expr`` with every numeric given substituted (exact); symbols without numbers stay."""
     ind = independent_map(problem)
-    out = expr.xreplace(ind).xreplace(problem.numeric())
-    return sympy.nsimplify(out) if out.is_number and not out.is_Rational and out.is_algebraic else out
+    return expr.xreplace(ind).xreplace(problem.numeric())
 
 
 def is_numeric(expr: sympy.Expr) -> bool:

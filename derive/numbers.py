@@ -7,7 +7,7 @@ of figures instead. Trailing zeros are kept (8.40, not 8.4).
 
 from __future__ import annotations
 
-from decimal import ROUND_HALF_UP, Decimal, localcontext
+from decimal import ROUND_FLOOR, ROUND_HALF_UP, Decimal, localcontext
 
 import sympy
 
@@ -53,8 +53,7 @@ def figures_for(value: Decimal, digits: int | None) -> int:
         return digits
     if value == 0:
         return 3
-    four = _round_sig(abs(value), 4)
-    leading = int(str(four.scaleb(-four.adjusted()))[0])
+    leading = abs(value).scaleb(-abs(value).adjusted()).to_integral_value(rounding=ROUND_FLOOR)
     return 4 if leading == 1 else 3
 
 
@@ -64,9 +63,7 @@ def round_value(value: sympy.Expr | Decimal | int | str, digits: int | None = No
     return _round_sig(d, figures_for(d, digits))
 
 
-def format_number(
-    value: sympy.Expr | Decimal | int | str, digits: int | None = None, *, extra: int = 0
-) -> str:
+def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = None, *, extra: int = 0) -> str:
     """``value`` as text at ``digits`` (+``extra`` for intermediates) significant figures.
 
     Plain notation between 1e-4 and 1e6, else ``1.23e+7``; never ``-0``.

@@ -40,12 +40,21 @@ def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
             doc.name,
         ]
         try:
-            proc = subprocess.run(cmd, cwd=tmp, env=env, capture_output=True, text=True, timeout=time_limit, stdin=subprocess.DEVNULL)
+            proc = subprocess.run(
+                cmd, cwd=tmp, env=env, capture_output=True, text=True, timeout=time_limit, stdin=subprocess.DEVNULL
+            )
         except subprocess.TimeoutExpired:
             raise RenderError(f"LaTeX did not finish within {time_limit:g} s") from None
         pdf = Path(tmp) / "solution.pdf"
         if proc.returncode != 0 or not pdf.exists():
-            log = (Path(tmp) / "solution.log").read_text(errors="replace") if (Path(tmp) / "solution.log").exists() else proc.stdout
-            first = next((ln for ln in log.splitlines() if ln.startswith("!") or ":" in ln and "error" in ln.lower()), "see the LaTeX log")
+            log = (
+                (Path(tmp) / "solution.log").read_text(errors="replace")
+                if (Path(tmp) / "solution.log").exists()
+                else proc.stdout
+            )
+            first = next(
+                (ln for ln in log.splitlines() if ln.startswith("!") or (":" in ln and "error" in ln.lower())),
+                "see the LaTeX log",
+            )
             raise RenderError(f"LaTeX failed: {first.strip()}")
         return pdf.read_bytes()

@@ -10,13 +10,13 @@ equations were written. Renderers call :func:`latex_eqn` and
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from decimal import Decimal
 
 import sympy
 from sympy.printing.latex import LatexPrinter
 
-from derive.numbers import format_number, to_decimal
+from derive.numbers import decimals_of, format_fixed, format_number, to_decimal
 from derive.solution import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
 from derive.units import latex_unit
@@ -33,6 +33,7 @@ class Style:
     extra: int = 1
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
+    decimals: int | None = None
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -60,6 +61,17 @@ def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
     return number_latex(value, digits, extra)
 
 
+def _short_decimal(value: sympy.Expr) -> bool:
+    """True for an exact number with a short decimal form (0.2, 12.5): printed as it is."""
+    if not value.is_Rational:
+        return False
+    q = value.q
+    for f in (2, 5):
+        while q % f == 0:
+            q //= f
+    return q == 1 and len(str(abs(to_decimal(value)).normalize())) <= 7
+
+
 def _structural(expr: sympy.Expr) -> bool:
     """True for a sum, product, power or function of numbers that was built unevaluated
     to be shown as it stands (19.81 - 5 · 9.507), not an exact value such as sqrt(2)/2."""
@@ -68,13 +80,13 @@ def _structural(expr: sympy.Expr) -> bool:
     parts = expr.args
 
     def ok(a: sympy.Expr) -> bool:
-        return isinstance(a, sympy.Float) or a.is_Integer or _structural(a)
+        return isinstance(a, sympy.Float) or a.is_Rational or _structural(a)
 
     if isinstance(expr, sympy.Pow):
         return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
-    if isinstance(expr, (sympy.Add, sympy.Mul)) or isinstance(expr, sympy.Function):
-        return all(ok(a) for a in parts) and any(isinstance(a, sympy.Float) or _structural(a) for a in parts) or (
-            isinstance(expr, sympy.Add) and all(a.is_Integer for a in parts)
+    if isinstance(expr, (sympy.Add, sympy.Mul, sympy.Function)):
+        return (all(ok(a) for a in parts) and any(isinstance(a, sympy.Float) or _structural(a) for a in parts)) or (
+            isinstance(expr, sympy.Add) and all(a.is_Rational for a in parts)
         )
     return False
 
@@ -105,6 +117,8 @@ def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
     if expr.is_Integer and keep_integers:
         return expr
     if expr.is_Number:
+        if keep_integers and _short_decimal(expr):
+            return expr  # a given as written (0.2 kg), not 0.2000
         return sympy.Float(expr, PRECISION)
     if _structural(expr):
         # built unevaluated on purpose, as in (20 + 5) v_A2n: keep it so
@@ -125,7 +139,7 @@ def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
         coeff: sympy.Expr = sympy.Integer(1)
         for n in nums:
             coeff = coeff * n
-        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer:
+        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer and not (keep_integers and _short_decimal(coeff)):
             coeff = sympy.Float(coeff, PRECISION)
         if not rest:
             return coeff
@@ -160,6 +174,8 @@ class StepPrinter(LatexPrinter):
         digits: int | None = None,
         extra: int = 1,
         round_integers: bool = False,
+        decimals: int | None = None,
+        decimal_rationals: bool = False,
     ) -> None:
         super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
         self._values = dict(values or {})
@@ -167,6 +183,8 @@ class StepPrinter(LatexPrinter):
         self._digits = digits
         self._extra = extra
         self._round_integers = round_integers
+        self._decimals = decimals
+        self._decimal_rationals = decimal_rationals
 
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
         if expr in self._values:
@@ -178,7 +196,14 @@ class StepPrinter(LatexPrinter):
         return tex
 
     def _print_Float(self, expr: sympy.Float) -> str:
+        if self._decimals is not None:
+            return format_fixed(expr, self._decimals)
         return number_latex(expr, self._digits, self._extra)
+
+    def _print_Rational(self, expr: sympy.Rational) -> str:
+        if self._decimal_rationals and not self._round_integers and _short_decimal(expr):
+            return format(to_decimal(expr).normalize(), "f")
+        return super()._print_Rational(expr)
 
     def _print_Integer(self, expr: sympy.Integer) -> str:
         if self._round_integers and expr != 0:
@@ -188,7 +213,7 @@ class StepPrinter(LatexPrinter):
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
         out = ""
         terms = expr.args
-        if len(terms) > 1 and terms[0].is_Number and not any(isinstance(t, sympy.Float) for t in terms):
+        if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
             terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
         for i, term in enumerate(terms):
             if is_negative_term(term):
@@ -215,7 +240,11 @@ class StepPrinter(LatexPrinter):
                 return "-" + (r"\left(" + s + r"\right)" if isinstance(inner, sympy.Add) else s)
         num, den = [], []
         for a in sorted(expr.args, key=_factor_key):
-            if isinstance(a, sympy.Rational) and not a.is_Integer:
+            if (
+                isinstance(a, sympy.Rational)
+                and not a.is_Integer
+                and not (self._decimal_rationals and _short_decimal(a))
+            ):
                 if a.p != 1:
                     num.insert(0, sympy.Integer(a.p))
                 den.insert(0, sympy.Integer(a.q))
@@ -283,16 +312,21 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
     return out
 
 
-def latex_expr(expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()) -> str:
+def latex_expr(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> str:
     """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
     if mode == "symbolic":
         return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
     if mode == "values":
         vals = values_map(style, style.digits, extra, expr.free_symbols)
-        return StepPrinter(vals, cancel, style.digits, extra).doprint(expr)
+        return StepPrinter(vals, cancel, style.digits, extra, decimal_rationals=True).doprint(expr)
     if mode == "numeric":
         expr = expr.xreplace(dict(style.values))
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(floatify(expr))
+        printer = StepPrinter(
+            cancel=cancel, digits=style.digits, extra=extra, decimals=style.decimals, decimal_rationals=True
+        )
+        return printer.doprint(floatify(expr))
     if mode == "result":
         expr = expr.xreplace(dict(style.values))
         return StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True).doprint(floatify(expr))
@@ -331,7 +365,11 @@ def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS for t in last.terms
     )
     if eqn.unit and not symbolic:
-        body += r"\ \%" if eqn.unit == "%" else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
+        body += (
+            r"\ \%"
+            if eqn.unit == "%"
+            else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
+        )
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
@@ -339,22 +377,33 @@ def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     return body, eqn.tag
 
 
-def block_extra(block: Block, style: Style) -> int:
-    """Extra figures for a block's intermediates so that its shown sums add up."""
-    for extra in range(style.extra, style.extra + 5):
+def block_style(block: Block, style: Style) -> Style:
+    """The style for one block: where it shows a sum term by term, every
+    intermediate gets the same places after the point, enough that the rounded
+    terms add up to the rounded total (79.23 - 59.42 = 19.81)."""
+    if not block.sums:
+        return style
+    numbers = [floatify(x, keep_integers=False) for terms, total in block.sums for x in (*terms, total)]
+    biggest = max((abs(n) for n in numbers if n.is_Number), default=sympy.Integer(1))
+    start = decimals_of(format_number(biggest, style.digits, extra=style.extra)) if biggest != 0 else 2
+    for places in range(start, start + 4):
         ok = True
         for terms, total in block.sums:
-            shown = [Decimal(format_number(floatify(t), style.digits, extra=extra)) for t in terms]
-            if sum(shown) != Decimal(format_number(floatify(total), style.digits, extra=extra)):
+            shown = [Decimal(format_fixed(floatify(t, False), places)) for t in terms]
+            if sum(shown) != Decimal(format_fixed(floatify(total, False), places)):
                 ok = False
                 break
         if ok:
-            return extra
-    return style.extra + 4
+            return replace(style, decimals=places)
+    return replace(style, decimals=start + 3)
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:
     """Inline mathematics in a sentence."""
     if isinstance(expr, sympy.Eq):
-        return StepPrinter(digits=style.digits).doprint(expr.lhs) + " = " + StepPrinter(digits=style.digits).doprint(expr.rhs)
+        return (
+            StepPrinter(digits=style.digits).doprint(expr.lhs)
+            + " = "
+            + StepPrinter(digits=style.digits).doprint(expr.rhs)
+        )
     return StepPrinter(digits=style.digits).doprint(expr)

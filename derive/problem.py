@@ -160,7 +160,14 @@ class _Ctx:
                     return i
         return None
 
-    def error(self, what: str, section: str | None = None, key: str | None = None, value: Any = None, cls: type[InputError] = InputError) -> InputError:
+    def error(
+        self,
+        what: str,
+        section: str | None = None,
+        key: str | None = None,
+        value: Any = None,
+        cls: type[InputError] = InputError,
+    ) -> InputError:
         line = self.line_of(section, key)
         where = f"{self.path}:{line}" if line else self.path
         fld = None
@@ -250,14 +257,14 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
     kind = data.get("kind")
     if kind not in KINDS:
         what = "is missing" if kind is None else "is not a kind of impact"
-        raise ctx.error(f"{what}: expected \"direct\" or \"oblique\"", key="kind", value=kind)
+        raise ctx.error(f'{what}: expected "direct" or "oblique"', key="kind", value=kind)
     oblique = kind == "oblique"
     digits = data.get("digits")
     if digits is not None and (isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 10):
         raise ctx.error("expected a whole number of significant figures from 1 to 10", key="digits", value=digits)
     system = data.get("units")
     if system is not None and system not in units.SYSTEMS:
-        raise ctx.error("expected \"SI\" or \"US\"", key="units", value=system)
+        raise ctx.error('expected "SI" or "US"', key="units", value=system)
 
     given_tbl = data.get("given")
     if given_tbl is None:
@@ -275,7 +282,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         if need not in by_name:
             what = {"e": "the coefficient of restitution e"}.get(need, f"the mass of {need[-1]}")
             raise ctx.error(f"is missing: give {what}", section="given", key=need)
-    _check_ranges(by_name, ctx)
+    _check_ranges(by_name, given_tbl, ctx)
 
     body_tbls = {}
     for b in "AB":
@@ -334,7 +341,9 @@ def _givens(tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str) -> li
     """Build the givens in dependency order (a given may be defined from others)."""
     for key in tbl:
         if not NAME_RE.match(key):
-            raise ctx.error("is not a usable name: start with a letter; letters, digits and _ only", section="given", key=key)
+            raise ctx.error(
+                "is not a usable name: start with a letter; letters, digits and _ only", section="given", key=key
+            )
         if key in COMPUTED:
             raise ctx.error("is what derive computes, so it cannot be given", section="given", key=key)
         if key in ("pi",) or key in ("sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log"):
@@ -387,7 +396,9 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
         return Given(key, sym, dim, value, unit.text)
     text = raw.strip()
     if text == "":
-        raise err('is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression')
+        raise err(
+            'is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression'
+        )
     unit_problem: str | None = None
     m = _QUANTITY.match(text)
     if m and text not in done:
@@ -416,7 +427,7 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
         if unit_problem:
             raise err(unit_problem, UnitError) from None
         if re.fullmatch(r"[A-Za-z°][A-Za-z°/*^·\d\s]*", text) and not _names_in(text) <= set(done):
-            raise err(f"{exc}; or, for a symbol, a known unit alone such as \"m/s\"", ExpressionError) from None
+            raise err(f'{exc}; or, for a symbol, a known unit alone such as "m/s"', ExpressionError) from None
         raise err(str(exc), ExpressionError) from None
     if expected is not None and parsed.dim != expected:
         raise err(f"expected {describe(expected)}, but the expression is {describe(parsed.dim)}", UnitError)
@@ -432,17 +443,32 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
         if not math.isfinite(num.real) or abs(num.imag) > 1e-12 * max(1.0, abs(num.real)):
             raise err("does not evaluate to a finite real number")
         value = sympy.nsimplify(value, rational=False) if not value.is_Rational else value
-    work = units.working_unit(parsed.dim, system) if parsed.dim in units.SYSTEMS[system] else units.Unit("", sympy.Integer(1), parsed.dim)
+    work = (
+        units.working_unit(parsed.dim, system)
+        if parsed.dim in units.SYSTEMS[system]
+        else units.Unit("", sympy.Integer(1), parsed.dim)
+    )
     return Given(key, sym, parsed.dim, value, work.text, definition=parsed.expr)
 
 
-def _quantity(key: str, sym: sympy.Symbol, number: sympy.Expr, unit: units.Unit, expected: Dim | None, system: str, err) -> Given:  # noqa: ANN001
+def _quantity(
+    key: str, sym: sympy.Symbol, number: sympy.Expr, unit: units.Unit, expected: Dim | None, system: str, err
+) -> Given:
     if expected is not None and unit.dim != expected:
-        raise err(f"expected {describe(expected)}, but {unit.text or 'a bare number'} is {describe(unit.dim)}", UnitError)
+        raise err(
+            f"expected {describe(expected)}, but {unit.text or 'a bare number'} is {describe(unit.dim)}", UnitError
+        )
     if abs(number) > 10**30 or (number != 0 and abs(number) < sympy.Rational(1, 10**30)):
         raise err("is out of range (expected a magnitude between 1e-30 and 1e30)")
     if unit.dim == ANGLE:
-        return Given(key, sym, ANGLE, number * unit.factor, "deg", written=None if unit.text in ("deg", "°") else f"{number} {unit.text}")
+        return Given(
+            key,
+            sym,
+            ANGLE,
+            number * unit.factor,
+            "deg",
+            written=None if unit.text in ("deg", "°") else f"{number} {unit.text}",
+        )
     if unit.dim not in units.SYSTEMS[system]:
         raise err(f"{unit.text} is {describe(unit.dim)}, which derive does not use in a given", UnitError)
     work = units.working_unit(unit.dim, system)
@@ -454,14 +480,20 @@ def _quantity(key: str, sym: sympy.Symbol, number: sympy.Expr, unit: units.Unit,
     return Given(key, sym, unit.dim, value, work.text, written=f"{number} {unit.text}")
 
 
-def _check_ranges(by_name: Mapping[str, Given], ctx: _Ctx) -> None:
+def _check_ranges(by_name: Mapping[str, Given], raw: Mapping[str, Any], ctx: _Ctx) -> None:
     e = by_name["e"].value
     if e is not None and not (0 <= e <= 1):
-        raise ctx.error("the coefficient of restitution must lie between 0 and 1", section="given", key="e", value=_num(e), cls=PhysicsError)
+        raise ctx.error(
+            "the coefficient of restitution must lie between 0 and 1",
+            section="given",
+            key="e",
+            value=raw["e"],
+            cls=PhysicsError,
+        )
     for m in ("m_A", "m_B"):
         v = by_name[m].value
         if v is not None and not v > 0:
-            raise ctx.error("a mass must be positive", section="given", key=m, value=_num(v), cls=PhysicsError)
+            raise ctx.error("a mass must be positive", section="given", key=m, value=raw[m], cls=PhysicsError)
     for s in ("v_A1", "v_B1"):
         g = by_name.get(s)
         if g is not None and g.value is not None and g.symbol.is_nonnegative and not g.value >= 0:
@@ -469,7 +501,7 @@ def _check_ranges(by_name: Mapping[str, Given], ctx: _Ctx) -> None:
                 "a speed cannot be negative (its direction is set by [A]/[B] angle, from and toward)",
                 section="given",
                 key=s,
-                value=_num(g.value),
+                value=raw.get(s, None),
                 cls=PhysicsError,
             )
 
@@ -480,7 +512,9 @@ def _num(value: sympy.Expr) -> str:
     return format_number(value, 4)
 
 
-def _motion(b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool) -> tuple[Motion, Given | None]:
+def _motion(
+    b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool
+) -> tuple[Motion, Given | None]:
     speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
     if not oblique:
         if n_name in by_name or t_name in by_name or tbl:
@@ -491,17 +525,27 @@ def _motion(b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx
                 key=key,
             )
         if speed_name not in by_name:
-            raise ctx.error(f"is missing: give the velocity of {b} before the impact, signed along +n", section="given", key=speed_name)
+            raise ctx.error(
+                f"is missing: give the velocity of {b} before the impact, signed along +n",
+                section="given",
+                key=speed_name,
+            )
         return Motion(b, by_name[speed_name].symbol, sympy.Integer(0)), None
     has_comp = n_name in by_name or t_name in by_name
     if has_comp and speed_name in by_name:
-        raise ctx.error(f"give either {speed_name} (speed, with a direction) or {n_name} and {t_name}, not both", section="given", key=speed_name)
+        raise ctx.error(
+            f"give either {speed_name} (speed, with a direction) or {n_name} and {t_name}, not both",
+            section="given",
+            key=speed_name,
+        )
     if has_comp:
         if tbl:
             raise ctx.error(f"the velocity of {b} is given by components, so [{b}] is not needed", section=b)
         missing = [k for k in (n_name, t_name) if k not in by_name]
         if missing:
-            raise ctx.error(f"is missing: with components give both {n_name} and {t_name}", section="given", key=missing[0])
+            raise ctx.error(
+                f"is missing: with components give both {n_name} and {t_name}", section="given", key=missing[0]
+            )
         return Motion(b, by_name[n_name].symbol, by_name[t_name].symbol), None
     if speed_name not in by_name:
         raise ctx.error(
@@ -522,17 +566,28 @@ def _motion(b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx
         if ax not in AXES:
             raise ctx.error(f"expected one of {', '.join(AXES)}", section=b, key=k, value=ax)
     if axis_from[1] == toward[1]:
-        raise ctx.error(f"the angle is measured from {axis_from} toward an axis at right angles to it (±n or ±t), not {toward}", section=b, key="toward", value=toward)
+        raise ctx.error(
+            f"the angle is measured from {axis_from} toward an axis at right angles to it (±n or ±t), not {toward}",
+            section=b,
+            key="toward",
+            value=toward,
+        )
     extra = None
     angle_raw = tbl["angle"]
     if isinstance(angle_raw, str) and angle_raw.strip() in by_name:
         angle = by_name[angle_raw.strip()]
         if angle.dim != ANGLE:
-            raise ctx.error(f"{angle.name} is {describe(angle.dim)}, not an angle", section=b, key="angle", value=angle_raw, cls=UnitError)
+            raise ctx.error(
+                f"{angle.name} is {describe(angle.dim)}, not an angle",
+                section=b,
+                key="angle",
+                value=angle_raw,
+                cls=UnitError,
+            )
     else:
         name = f"theta_{b}1"
         if name in by_name:
-            raise ctx.error(f"{name} is already given: write angle = \"{name}\"", section=b, key="angle", value=angle_raw)
+            raise ctx.error(f'{name} is already given: write angle = "{name}"', section=b, key="angle", value=angle_raw)
         err = lambda what, cls=InputError: ctx.error(what, section=b, key="angle", value=angle_raw, cls=cls)  # noqa: E731
         if isinstance(angle_raw, bool) or not isinstance(angle_raw, (int, float, str)):
             raise err('expected an angle such as "30 deg" or the name of a given angle')
@@ -578,7 +633,9 @@ def _check_approach(problem: Problem, ctx: _Ctx) -> None:
     value = approach.xreplace(problem.numeric())
     if value.free_symbols:
         if value.is_positive is False or (value.is_zero is True):
-            raise ctx.error("the bodies do not approach along n: v_A1n - v_B1n must be positive", section="given", cls=PhysicsError)
+            raise ctx.error(
+                "the bodies do not approach along n: v_A1n - v_B1n must be positive", section="given", cls=PhysicsError
+            )
         return
     if not value > 0:
         from derive.numbers import format_number

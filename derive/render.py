@@ -17,7 +17,7 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.printing import Style, block_extra, exact_latex, latex_eqn, latex_inline, StepPrinter
+from derive.printing import StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_inline
 from derive.problem import Given
 from derive.resources import templates_dir
 from derive.solution import Math, Solution
@@ -78,7 +78,10 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
         parts.append(StepPrinter().doprint(g.definition))
     if g.written is not None:
         number, _, unit = g.written.partition(" ")
-        parts.append(exact_latex(sympy.Rational(number), style.digits, 1) + (latex_unit(unit) if unit in ("deg", "°") else r"\ " + latex_unit(unit)))
+        parts.append(
+            exact_latex(sympy.Rational(number), style.digits, 1)
+            + (latex_unit(unit) if unit in ("deg", "°") else r"\ " + latex_unit(unit))
+        )
     parts.append(value)
     return " = ".join(parts), ""
 
@@ -102,25 +105,29 @@ def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
     for stage in solution.stages:
         blocks = []
         for block in stage.blocks:
-            extra = block_extra(block, style)
+            bstyle = block_style(block, style)
             lines = []
             last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
             for i, eqn in enumerate(block.lines):
-                body, tag = latex_eqn(eqn, style, extra)
+                body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
                 if i == last_boxed:
                     body += ANSWER_MARK
                 lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
             text = None
             if block.text is not None:
-                text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
+                text = [
+                    ("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text
+                ]
             blocks.append({"text": text, "lines": lines})
         stages.append({"number": stage.number, "title": stage.title, "blocks": blocks})
-    givens = [dict(zip(("latex", "note"), _given_latex(g, style))) for g in p.givens]
+    givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
         find = [("text", p.question)]
     else:
         words = "the velocities of A and B immediately after the impact"
-        extra_words = [_FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)]
+        extra_words = [
+            _FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
+        ]
         if extra_words:
             words += "; " + ", ".join(extra_words)
         find = [("text", words[0].upper() + words[1:] + ".")]
@@ -172,7 +179,9 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
         "results": results,
         "givens": {
             g.name: {
-                "value": None if g.value is None else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
+                "value": None
+                if g.value is None
+                else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
                 "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
             }
             for g in p.givens
@@ -182,7 +191,10 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
                 "number": s["number"],
                 "title": s["title"],
                 "blocks": [
-                    {"text": _text_with_math(b["text"]), "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]]}
+                    {
+                        "text": _text_with_math(b["text"]),
+                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
+                    }
                     for b in s["blocks"]
                 ],
             }
@@ -203,7 +215,7 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) ->
     if fmt == "json":
         return to_json(solution, digits)
     if fmt not in FORMATS:
-        raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join(FORMATS + ('pdf',))})", field="--format")
+        raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
     data = view(solution, digits)
     if fmt == "md":
         return _env("md").get_template("solution.md.j2").render(**data)

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import sympy
 
-from derive.errors import SolveError
 from derive.impact import Impact, evaluate, independent_map, setup
 from derive.problem import Problem
 from derive.solution import Block, Eqn, Math, Result, Side, Solution, Stage, Text
@@ -49,13 +48,13 @@ def _results(imp: Impact) -> dict[str, Result]:
 
     def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
         partial = evaluate(closed, p)
-        partial = sympy.simplify(partial) if partial.free_symbols else partial
+        if partial.free_symbols and sympy.count_ops(partial) < 150:
+            partial = sympy.simplify(partial)
         if degrees and partial.free_symbols and isinstance(partial, sympy.atan2):
             partial = _atan2_number(*partial.args)
         value: sympy.Expr | None = None
         if not partial.free_symbols:
             value = partial * 180 / sympy.pi if degrees else partial
-            value = sympy.nsimplify(value) if value.is_Rational is False and value.is_algebraic else value
         elif degrees:
             partial = partial * 180 / sympy.pi
         out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
@@ -67,7 +66,7 @@ def _results(imp: Impact) -> dict[str, Result]:
             add(name, imp.closed[s], unit_v, f"velocity of {body} after the impact, {axis} component")
         for b in "AB":
             n, t = imp.closed[comps[f"v_{b}2n"]], imp.closed[comps[f"v_{b}2t"]]
-            add(f"v_{b}2", _tidy(sympy.sqrt(n**2 + t**2)), unit_v, f"speed of {b} after the impact")
+            add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
             ang = _angle(n, t, p)
             if ang is not None:
                 add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
@@ -77,33 +76,32 @@ def _results(imp: Impact) -> dict[str, Result]:
     ind = independent_map(p)
     sym = p.symbols()
     m_A, m_B = sym["m_A"].xreplace(ind), sym["m_B"].xreplace(ind)
-    pre = {k: v.xreplace(ind) for k, v in imp.pre.items()} if p.oblique else {}
-    sq1A = (nm.A1n**2 + (nm.A1t**2 if p.oblique else 0)) if True else 0
-    sq1B = nm.B1n**2 + (nm.B1t**2 if p.oblique else 0)
-    T1 = HALF * m_A * sq1A.xreplace(pre) + HALF * m_B * sq1B.xreplace(pre)
-    if not p.oblique:
-        T1 = T1.xreplace({nm.A1n: sym["v_A1"], nm.B1n: sym["v_B1"]})
-    post = imp.closed
-    sq2A = (nm.A2n**2 + (nm.A2t**2 if p.oblique else 0)).xreplace(post)
-    sq2B = (nm.B2n**2 + (nm.B2t**2 if p.oblique else 0)).xreplace(post)
-    T2 = HALF * m_A * sq2A + HALF * m_B * sq2B
+    # Kinetic energy, worked in the component symbols (polynomial, so it factors
+    # quickly and exactly), then the givens put in.
+    sq = {}
+    for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
+        n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
+        t1, t2 = getattr(nm, f"{b}1t"), getattr(nm, f"{b}2t")
+        pre_sq = n1**2 + (t1**2 if p.oblique else 0)
+        post_sq = (n2**2 + (t2**2 if p.oblique else 0)).xreplace(imp.by_components)
+        speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
+        sq[b] = (pre_sq, post_sq, speed_sq)
+    lost = sympy.factor(HALF * m_A * (sq["A"][0] - sq["A"][1]) + HALF * m_B * (sq["B"][0] - sq["B"][1]))
     unit_T = _unit(p, "energy")
-    add("T_1", _tidy(sympy.trigsimp(T1)), unit_T, "kinetic energy before the impact")
-    add("T_2", _tidy(T2), unit_T, "kinetic energy after the impact")
-    add("T_lost", _tidy(sympy.factor(sympy.simplify(T1 - T2))), unit_T, "kinetic energy lost in the impact")
+    add("T_1", HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2], unit_T, "kinetic energy before the impact")
+    T2 = HALF * m_A * imp.in_givens(sq["A"][1]) + HALF * m_B * imp.in_givens(sq["B"][1])
+    add("T_2", T2, unit_T, "kinetic energy after the impact")
+    add("T_lost", sympy.factor_terms(imp.in_givens(lost)), unit_T, "kinetic energy lost in the impact")
     return out
 
 
 def _f(x: sympy.Expr) -> sympy.Expr:
     """A pure number as a Float (kept apart in printed sums); other expressions as they are."""
-    if x.is_number and not x.is_Integer:
+    from derive.printing import _short_decimal
+
+    if x.is_number and not x.is_Integer and not _short_decimal(x):
         return sympy.Float(x.evalf(30), 30)
     return x
-
-
-def _tidy(expr: sympy.Expr) -> sympy.Expr:
-    simple = sympy.factor_terms(sympy.simplify(expr))
-    return simple if sympy.count_ops(simple) <= sympy.count_ops(expr) else expr
 
 
 def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:
@@ -194,8 +192,7 @@ class _Writer:
                     Math(symbol("n")),
                     " along the line of impact, positive from the centre of A toward the centre of B, and ",
                     Math(symbol("t")),
-                    " in the plane of contact"
-                    + (" (n turned 90° counter-clockwise)." if self.p.oblique else "."),
+                    " in the plane of contact" + (" (n turned 90° counter-clockwise)." if self.p.oblique else "."),
                 )
             )
         ]
@@ -211,10 +208,17 @@ class _Writer:
                 )
             )
             return blocks
-        for motion, (cn, ct) in ((self.p.motion_A, (self.nm.A1n, self.nm.A1t)), (self.p.motion_B, (self.nm.B1n, self.nm.B1t))):
+        for motion, (cn, ct) in (
+            (self.p.motion_A, (self.nm.A1n, self.nm.A1t)),
+            (self.p.motion_B, (self.nm.B1n, self.nm.B1t)),
+        ):
             b = motion.body
             if motion.speed is not None and motion.angle is None:
-                blocks.append(Block((f"{b} is at rest before the impact: ", Math(sympy.Eq(cn, 0)), ", ", Math(sympy.Eq(ct, 0)), ".")))
+                blocks.append(
+                    Block(
+                        (f"{b} is at rest before the impact: ", Math(sympy.Eq(cn, 0)), ", ", Math(sympy.Eq(ct, 0)), ".")
+                    )
+                )
                 continue
             if motion.angle is not None:
                 text: Text = (
@@ -243,7 +247,13 @@ class _Writer:
         blocks: list[Block] = []
         nm = self.nm
         if self.p.oblique:
-            blocks.append(Block(("Linear momentum in the t-direction is conserved for each particle: no impulsive force acts on A or on B along t.",)))
+            blocks.append(
+                Block(
+                    (
+                        "Linear momentum in the t-direction is conserved for each particle: no impulsive force acts on A or on B along t.",
+                    )
+                )
+            )
             for tag, b, m, c1, c2 in (("1", "A", self.m_A, nm.A1t, nm.A2t), ("2", "B", self.m_B, nm.B1t, nm.B2t)):
                 pre = self.givens(c1)
                 lines = [
@@ -253,17 +263,29 @@ class _Writer:
                 res = self.results[f"v_{b}2t"]
                 if self.has_values(pre) and not pre.is_Symbol and pre != 0:
                     lines.append(Eqn((Side((c2,)), Side((pre,), "values"))))
-                lines.append(Eqn((Side((c2,)), Side((res.closed if res.value is None else res.value,), "result")), tag=tag, unit=self.unit_v))
+                lines.append(
+                    Eqn(
+                        (Side((c2,)), Side((res.closed if res.value is None else res.value,), "result")),
+                        tag=tag,
+                        unit=self.unit_v,
+                    )
+                )
                 blocks.append(Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)))
         else:
             blocks.append(
-                Block(("The impact is direct: there are no t components, so equations (1) and (2) of the notes read 0 = 0.",))
+                Block(
+                    (
+                        "The impact is direct: there are no t components, so equations (1) and (2) of the notes read 0 = 0.",
+                    )
+                )
             )
         blocks.append(self.momentum_n())
         blocks.append(self.restitution())
         return blocks
 
-    def collected(self, lhs: sympy.Expr, rhs: sympy.Expr, order: tuple[sympy.Symbol, ...]) -> tuple[tuple[sympy.Expr, ...], sympy.Expr]:
+    def collected(
+        self, lhs: sympy.Expr, rhs: sympy.Expr, order: tuple[sympy.Symbol, ...]
+    ) -> tuple[tuple[sympy.Expr, ...], sympy.Expr]:
         """Unknown terms (in ``order``) = constant, from ``lhs = rhs`` with numbers in."""
         expr = sympy.expand(self.num(lhs) - self.num(rhs))
         terms = []
@@ -300,7 +322,9 @@ class _Writer:
         lines.append(Eqn((Side(terms, "numeric"), Side((const,), "numeric")), tag="3", implies=True))
         self.eq3 = (terms, const)
         return Block(
-            ("Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it.",),
+            (
+                "Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it.",
+            ),
             tuple(lines),
             tuple(sums),
         )
@@ -311,9 +335,11 @@ class _Writer:
         for cand in sorted({s for s in nonzero[0].free_symbols}, key=str) if nonzero else []:
             if cand in self.numeric or not cand.is_positive:
                 continue
-            if all(sympy.cancel(t / cand).free_symbols.isdisjoint({cand}) and (t / cand).is_polynomial(cand) for t in nonzero):
-                if all(sympy.Poly(t, cand).degree() == 1 for t in nonzero):
-                    return cand
+            if all(
+                sympy.cancel(t / cand).free_symbols.isdisjoint({cand}) and (t / cand).is_polynomial(cand)
+                for t in nonzero
+            ) and all(sympy.Poly(t, cand).degree() == 1 for t in nonzero):
+                return cand
         return None
 
     def restitution(self) -> Block:
@@ -335,7 +361,9 @@ class _Writer:
         lines.append(Eqn((Side((nm.B2n, -nm.A2n), "numeric"), Side((const,), "numeric")), tag="4", implies=True))
         self.eq4 = const
         return Block(
-            ("Impact rule: the coefficient of restitution relates the normal components only, separation over approach.",),
+            (
+                "Impact rule: the coefficient of restitution relates the normal components only, separation over approach.",
+            ),
             tuple(lines),
         )
 
@@ -353,7 +381,11 @@ class _Writer:
             a1 = sympy.simplify(a)
             blocks.append(
                 Block(
-                    ("Add (3) and (4): ", Math(x), " cancels.",),
+                    (
+                        "Add (3) and (4): ",
+                        Math(x),
+                        " cancels.",
+                    ),
                     (
                         Eqn((Side((sympy.Mul(a1 + 1, y, evaluate=False),), "numeric"), Side((c, k), "numeric"))),
                         Eqn((Side((y,)), Side((yv,), "result")), unit=self.unit_v, tag="5", implies=True),
@@ -363,7 +395,11 @@ class _Writer:
             )
             blocks.append(
                 Block(
-                    ("Subtract (4) from (3): ", Math(y), " cancels.",),
+                    (
+                        "Subtract (4) from (3): ",
+                        Math(y),
+                        " cancels.",
+                    ),
                     (
                         Eqn((Side((sympy.Mul(a1 + 1, x, evaluate=False),), "numeric"), Side((c, -k), "numeric"))),
                         Eqn((Side((x,)), Side((xv,), "result")), unit=self.unit_v, tag="6", implies=True),
@@ -383,11 +419,16 @@ class _Writer:
                 ("Substitute into (3):",),
                 (
                     Eqn((Side(lhs, "numeric"), Side((c,), "numeric"))),
-                    Eqn((Side((sympy.Mul(coef, x, evaluate=False),), "numeric"), Side((c, bk), "numeric")), implies=True),
+                    Eqn(
+                        (Side((sympy.Mul(coef, x, evaluate=False),), "numeric"), Side((c, bk), "numeric")), implies=True
+                    ),
                     Eqn(
                         (
                             Side((x,)),
-                            Side((sympy.Mul(frac_num, sympy.Pow(_f(a + b), -1, evaluate=False), evaluate=False),), "numeric"),
+                            Side(
+                                (sympy.Mul(frac_num, sympy.Pow(_f(a + b), -1, evaluate=False), evaluate=False),),
+                                "numeric",
+                            ),
                             Side((xv,), "result"),
                         ),
                         unit=self.unit_v,
@@ -429,9 +470,19 @@ class _Writer:
                 lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=True))
         else:
             for b in "AB":
-                lines.append(Eqn((Side((symbol(f"v_{b}2"),)), Side((self.results_value(symbol(f"v_{b}2")),), "result")), unit=self.unit_v, boxed=True))
+                lines.append(
+                    Eqn(
+                        (Side((symbol(f"v_{b}2"),)), Side((self.results_value(symbol(f"v_{b}2")),), "result")),
+                        unit=self.unit_v,
+                        boxed=True,
+                    )
+                )
         blocks.append(Block(("The velocities immediately after the impact:",), tuple(lines)))
-        symbolic = [r for r in self.results.values() if r.value is None and r.name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")]
+        symbolic = [
+            r
+            for r in self.results.values()
+            if r.value is None and r.name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")
+        ]
         if symbolic:
             lines = []
             for r in symbolic:
@@ -465,13 +516,21 @@ class _Writer:
                 form = sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False)
                 shown = None
                 if not (nv.free_symbols or tv.free_symbols):
-                    shown = sympy.Pow(sympy.Add(sympy.Pow(_f(tv), 2, evaluate=False), sympy.Pow(_f(nv), 2, evaluate=False), evaluate=False), sympy.Rational(1, 2), evaluate=False)
+                    shown = sympy.Pow(
+                        sympy.Add(
+                            sympy.Pow(_f(tv), 2, evaluate=False), sympy.Pow(_f(nv), 2, evaluate=False), evaluate=False
+                        ),
+                        sympy.Rational(1, 2),
+                        evaluate=False,
+                    )
             else:
                 form = sympy.atan(sympy.Mul(n, sympy.Pow(t, -1, evaluate=False), evaluate=False), evaluate=False)
                 shown = None
                 ratio = sympy.simplify(nv / tv) if tv != 0 else None
                 if ratio is not None and ratio.is_number and not (nv.free_symbols or tv.free_symbols):
-                    shown = sympy.atan(sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False)
+                    shown = sympy.atan(
+                        sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False
+                    )
                 elif ratio is not None and ratio.is_number:
                     shown = sympy.atan(_f(ratio), evaluate=False)
             sides = [Side((r.symbol,)), Side((form,))]
@@ -512,11 +571,18 @@ class _Writer:
         r1, rl = self.results["T_1"], self.results["T_lost"]
         if r1.value is not None and rl.value is not None and r1.value != 0:
             frac = rl.value / r1.value * 100
-            lines.append(Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac,), "result")), unit="%"))
+            lines.append(
+                Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac,), "result")), unit="%")
+            )
         else:
             frac = sympy.simplify(rl.partial / r1.partial)
             if frac.is_number:
-                lines.append(Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac * 100,), "result")), unit="%"))
+                lines.append(
+                    Eqn(
+                        (Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac * 100,), "result")),
+                        unit="%",
+                    )
+                )
         text: Text = (
             "Kinetic energy, for the record: it is not conserved across the impact unless ",
             Math(sympy.Eq(self.e, 1)),

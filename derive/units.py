@@ -155,7 +155,7 @@ def parse_unit(text: str) -> Unit:
         if not m:
             raise ValueError(f"cannot read the unit {text!r}")
         pos = m.end()
-        name, op, num = m.groups()
+        name, op, _num = m.groups()
         if name is not None:
             if not expect_name:
                 raise ValueError(f"cannot read the unit {text!r}")
@@ -165,7 +165,7 @@ def parse_unit(text: str) -> Unit:
                 raise ValueError(f"unknown unit {name!r} (known: {known})")
             last = BASE_UNITS[name]
             factor *= last[0] ** sign
-            dim = [a + sign * b for a, b in zip(dim, last[1])]
+            dim = [a + sign * b for a, b in zip(dim, last[1], strict=False)]
             expect_name = False
         elif op in ("*", "·", "/"):
             if expect_name:
@@ -181,7 +181,7 @@ def parse_unit(text: str) -> Unit:
             if abs(p) > 4:
                 raise ValueError(f"the power {p} in the unit {text!r} is out of range")
             factor *= last[0] ** (sign * (p - 1))
-            dim = [a + sign * (p - 1) * b for a, b in zip(dim, last[1])]
+            dim = [a + sign * (p - 1) * b for a, b in zip(dim, last[1], strict=False)]
         else:
             raise ValueError(f"cannot read the unit {text!r}")
     if expect_name:

@@ -1,0 +1,120 @@
+"""The command line: success paths and every input error, each with its one-line message."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+DATA = Path(__file__).parent / "data"
+
+
+def test_solve_bundled_to_stdout(cli) -> None:
+    r = cli("solve", "notes-4c11-two-spheres")
+    assert r.code == 0, r.err
+    assert r.out.startswith("# Example 4.C.11")
+    assert r.err == ""
+
+
+def test_solve_json(cli) -> None:
+    r = cli("solve", "notes-4c11-two-spheres", "--format", "json")
+    assert r.code == 0
+    assert json.loads(r.out)["results"]["v_A2n"]["shown"] == "-1.11"
+
+
+def test_solve_to_file(cli, tmp_path: Path) -> None:
+    out = tmp_path / "s.tex"
+    r = cli("solve", "notes-4c12-cue-ball", "--format", "tex", "-o", str(out))
+    assert r.code == 0, r.err
+    assert out.read_text().startswith("\\documentclass")
+    frag = tmp_path / "f.tex"
+    assert cli("solve", "notes-4c12-cue-ball", "--format", "tex", "--fragment", "-o", str(frag)).code == 0
+    assert "\\documentclass" not in frag.read_text()
+
+
+def test_list(cli) -> None:
+    r = cli("list")
+    assert r.code == 0
+    assert "notes-4c11-two-spheres" in r.out and "notes-4c12-cue-ball" in r.out
+
+
+def write(tmp_path: Path, name: str, body: str) -> Path:
+    path = tmp_path / name
+    path.write_text(body)
+    return path
+
+
+BASE = """title = "t"
+kind = "direct"
+[given]
+m_A = "2 kg"
+m_B = "3 kg"
+e = 0.5
+v_A1 = "4 m/s"
+v_B1 = "-1 m/s"
+"""
+
+
+@pytest.mark.parametrize(
+    ("name", "body", "needles"),
+    [
+        ("missing-mass.toml", BASE.replace('m_B = "3 kg"\n', ""), ["missing-mass.toml", "m_B", "mass of B"]),
+        (
+            "unknown-unit.toml",
+            BASE.replace('"2 kg"', '"2 stone"'),
+            ["unknown-unit.toml:4", "m_A", "unknown unit 'stone'"],
+        ),
+        (
+            "e-too-big.toml",
+            BASE.replace("e = 0.5", "e = 1.3"),
+            ["e-too-big.toml:6", "[given] e = 1.3", "between 0 and 1"],
+        ),
+        ("no-approach.toml", BASE.replace('"-1 m/s"', '"5 m/s"'), ["no-approach.toml", "do not approach", "-1.000"]),
+        ("wrong-kind-unit.toml", BASE.replace('"4 m/s"', '"4 kg"'), ["v_A1", "expected a velocity"]),
+        ("bad-kind.toml", BASE.replace('"direct"', '"sideways"'), ["bad-kind.toml:2", "kind", "direct"]),
+        ("bad-toml.toml", BASE + "oops = = 1\n", ["bad-toml.toml:9", "not valid TOML"]),
+        ("unknown-field.toml", "colour = 1\n" + BASE, ["colour", "unknown field"]),
+        (
+            "expr-injection.toml",
+            BASE.replace('"4 m/s"', "\"__import__('os').system('true')\""),
+            ["v_A1", "unexpected character"],
+        ),
+    ],
+    ids=lambda v: v if isinstance(v, str) and v.endswith(".toml") else "",
+)
+def test_input_errors(cli, tmp_path: Path, name: str, body: str, needles: list[str]) -> None:
+    path = write(tmp_path, name, body)
+    r = cli("solve", str(path))
+    assert r.code == 2
+    assert r.out == ""
+    assert r.err.startswith("Error: ")
+    assert r.err.count("\n") == 1, r.err  # one line
+    assert "Traceback" not in r.err
+    for needle in needles:
+        assert needle in r.err, (needle, r.err)
+
+
+def test_missing_file_and_usage_errors(cli) -> None:
+    r = cli("solve", "no-such-problem")
+    assert r.code == 2 and "no bundled problem" in r.err
+    r = cli("solve", "notes-4c11-two-spheres", "--format", "docx")
+    assert r.code == 2 and "invalid choice" in r.err
+    r = cli("solve", "notes-4c11-two-spheres", "--digits", "0")
+    assert r.code == 2 and "--digits" in r.err
+    r = cli("solve", "notes-4c11-two-spheres", "--format", "pdf")
+    assert r.code == 2 and "-o" in r.err
+
+
+def test_debug_shows_the_traceback(cli, tmp_path: Path) -> None:
+    path = write(tmp_path, "e.toml", BASE.replace("e = 0.5", "e = 2"))
+    r = cli("--debug", "solve", str(path))
+    assert r.code == 2
+    assert "Traceback" in r.err
+
+
+def test_output_never_overwrites_the_input(cli, tmp_path: Path) -> None:
+    path = write(tmp_path, "p.toml", BASE)
+    r = cli("solve", str(path), "-o", str(path))
+    assert r.code == 2 and "refusing to overwrite the input" in r.err
+    assert path.read_text() == BASE
