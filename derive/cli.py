@@ -13,7 +13,7 @@ from pathlib import Path
 from derive import __version__
 from derive.errors import DeriveError, InputError
 
-FORMATS = ("md", "tex", "pdf", "html", "json")
+FORMATS = ("md", "tex", "pdf", "json")
 
 
 class _Parser(argparse.ArgumentParser):

@@ -74,6 +74,11 @@ _TEX_UNICODE = {
     "²": r"\textsuperscript{2}",
     "³": r"\textsuperscript{3}",
     "\u00a0": "~",
+    "½": r"\textonehalf{}",
+    "¼": r"\textonequarter{}",
+    "¾": r"\textthreequarters{}",
+    "µ": r"\textmu{}",
+    "`": r"\textasciigrave{}",
 }
 for _i, _name in enumerate(_GREEK):
     if _name == "omicron":

@@ -15,6 +15,7 @@ speeds, angles and kinetic energies; it formats nothing.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import sympy
@@ -65,6 +66,7 @@ class Impact:
     unknowns: tuple[sympy.Symbol, ...]
     closed: dict[sympy.Symbol, sympy.Expr]
     by_components: dict[sympy.Symbol, sympy.Expr]
+    inverse: bool = False
 
     def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` (in component symbols) with the pre-impact components in the givens."""
@@ -83,16 +85,35 @@ def independent_map(problem: Problem) -> dict[sympy.Symbol, sympy.Expr]:
     return out
 
 
+def equation_numbers(problem: Problem) -> tuple[int, ...]:
+    """Which of (1)-(4) carry information: no t equations in a direct impact, and
+    against a fixed B neither (2) (B does not move) nor (3) (the supports of a wall
+    exert an impulse, so A + B is not free along n)."""
+    nums = [1, 2, 3, 4] if problem.oblique else [3, 4]
+    if problem.fixed_B:
+        nums = [k for k in nums if k not in (2, 3)]
+    return tuple(nums)
+
+
 def setup(problem: Problem) -> Impact:
-    """Set up equations (1)-(4) for ``problem`` and solve them in closed form."""
+    """Set up equations (1)-(4) for ``problem`` and solve them in closed form.
+
+    The unknowns are the velocities after the impact that the file does not give,
+    plus the givens it marks "?". Their number must equal the number of
+    equations; of several roots only the physical one is kept.
+    """
     nm = names(problem)
     sym = problem.symbols()
-    m_A, m_B, e = sym["m_A"], sym["m_B"], sym["e"]
+    m_A, e = sym["m_A"], sym["e"]
+    m_B = sym.get("m_B", symbol("m_B", "positive"))
     eqs: dict[int, sympy.Eq] = {}
-    if problem.oblique:
+    nums = equation_numbers(problem)
+    if 1 in nums:
         eqs[1] = sympy.Eq(m_A * nm.A1t, m_A * nm.A2t, evaluate=False)
+    if 2 in nums:
         eqs[2] = sympy.Eq(m_B * nm.B1t, m_B * nm.B2t, evaluate=False)
-    eqs[3] = sympy.Eq(m_A * nm.A1n + m_B * nm.B1n, m_A * nm.A2n + m_B * nm.B2n, evaluate=False)
+    if 3 in nums:
+        eqs[3] = sympy.Eq(m_A * nm.A1n + m_B * nm.B1n, m_A * nm.A2n + m_B * nm.B2n, evaluate=False)
     eqs[4] = sympy.Eq(e, (nm.B2n - nm.A2n) / (nm.A1n - nm.B1n), evaluate=False)
     pre: dict[sympy.Symbol, sympy.Expr] = {}
     if problem.oblique:
@@ -102,25 +123,120 @@ def setup(problem: Problem) -> Impact:
             nm.B1n: problem.motion_B.n,
             nm.B1t: problem.motion_B.t,
         }
+    elif problem.fixed_B:
+        pre = {nm.B1n: sympy.Integer(0)}
+    if problem.fixed_B:
+        pre[nm.B2n] = sympy.Integer(0)
+        if problem.oblique:
+            pre[nm.B2t] = sympy.Integer(0)
     ind = independent_map(problem)
-    unknowns = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
+    post_all = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
+    given_names = {g.name for g in problem.givens}
+    post_unknown = tuple(u for u in post_all if u.name not in given_names and u not in pre)
+    unknowns = post_unknown + problem.unknowns()
+    _check_count(problem, nums, unknowns)
     system = []
     for k, eq in eqs.items():
         lhs, rhs = eq.lhs, eq.rhs
         if k == 4:  # clear the denominator: e (v_A1n - v_B1n) = v_B2n - v_A2n
             lhs, rhs = e * (nm.A1n - nm.B1n), nm.B2n - nm.A2n
         system.append(sympy.expand((lhs - rhs).xreplace(ind)))
-    # Solved in the component symbols, the system is linear with rational
-    # coefficients: fast and exact. The givens go in afterwards.
-    sol = sympy.solve(system, unknowns, dict=True)
-    if len(sol) != 1 or set(sol[0]) != set(unknowns):
+    inverse = bool(problem.unknowns()) or len(post_unknown) < len(post_all) - (
+        2 if problem.fixed_B and problem.oblique else 1 if problem.fixed_B else 0
+    )
+    if not inverse:
+        # Solved in the component symbols, the system is linear with rational
+        # coefficients: fast and exact. The givens go in afterwards.
+        sol = sympy.solve([s.xreplace({k: v for k, v in pre.items() if v == 0}) for s in system], unknowns, dict=True)
+        if len(sol) != 1 or set(sol[0]) != set(unknowns):
+            raise SolveError(
+                "equations (1)-(4) do not determine the velocities after the impact for these givens",
+                where=problem.path,
+            )
+        by_comp = {u: sympy.factor(sol[0][u]) for u in unknowns}
+        closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
+        return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
+    full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
+    by_comp = _solve_inverse(problem, full, unknowns)
+    closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
+    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True)
+
+
+def _check_count(problem: Problem, nums: tuple[int, ...], unknowns: tuple[sympy.Symbol, ...]) -> None:
+    listed = ", ".join(f"({k})" for k in nums)
+    names_ = ", ".join(u.name for u in unknowns) or "none"
+    if len(unknowns) > len(nums):
         raise SolveError(
-            "equations (1)-(4) do not determine the velocities after the impact for these givens",
+            f"{len(nums)} equations {listed} cannot determine {len(unknowns)} unknowns ({names_}): "
+            f"give {len(unknowns) - len(nums)} more of them a value",
+            where=problem.path,
+            field="[given]",
+        )
+    if len(unknowns) < len(nums):
+        extra = len(nums) - len(unknowns)
+        raise SolveError(
+            f"{len(nums)} equations {listed} but only {len(unknowns)} unknowns ({names_}): the givens over-determine the impact; "
+            f'mark {extra} more given(s) "?" or remove {extra} of the velocities after the impact',
+            where=problem.path,
+            field="[given]",
+        )
+
+
+def _solve_inverse(
+    problem: Problem, system: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...]
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """Solve a system that may be nonlinear (an unknown angle, e times a velocity)
+    and keep the one physical root."""
+    numeric = problem.numeric()
+    try:
+        roots = sympy.solve(system, unknowns, dict=True)
+    except NotImplementedError:
+        roots = []
+    kept = []
+    for root in roots:
+        if set(root) != set(unknowns):
+            continue
+        if _physical(problem, root, numeric):
+            kept.append(root)
+    if not kept:
+        raise SolveError(
+            "equations (1)-(4) have no physical solution for these givens (check the signs and the numbers)",
             where=problem.path,
         )
-    by_comp = {u: sympy.factor(sol[0][u]) for u in unknowns}
-    closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
-    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
+    if len(kept) > 1:
+        distinct = {tuple(sympy.N(r[u].xreplace(numeric), 12) for u in unknowns) for r in kept}
+        if len(distinct) > 1:
+            raise SolveError(
+                f"equations (1)-(4) have {len(distinct)} physical solutions for these givens; give one more value",
+                where=problem.path,
+            )
+    return kept[0]
+
+
+def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    """A root is physical when it is real and e lies in [0, 1], masses are positive,
+    speeds are not negative, angles lie in (-180°, 180°] and the bodies approach."""
+    for u, val in root.items():
+        v = val.xreplace(numeric)
+        if v.free_symbols:
+            continue
+        num = complex(sympy.N(v, 30))
+        if abs(num.imag) > 1e-9 * max(1.0, abs(num.real)):
+            return False
+        x = num.real
+        g = next((g for g in problem.givens if g.symbol == u), None)
+        if u.name == "e" and not (-1e-12 <= x <= 1 + 1e-12):
+            return False
+        if u.is_positive and x <= 0:
+            return False
+        if u.is_nonnegative and x < -1e-12:
+            return False
+        if g is not None and g.unit == "deg" and not (-math.pi < x <= math.pi):
+            return False
+    approach = (
+        (problem.motion_A.n - problem.motion_B.n).xreplace(independent_map(problem)).xreplace(root).xreplace(numeric)
+    )
+    return bool(approach.free_symbols) or complex(sympy.N(approach)).real > 0
 
 
 def evaluate(expr: sympy.Expr, problem: Problem) -> sympy.Expr:

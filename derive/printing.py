@@ -84,7 +84,9 @@ def _structural(expr: sympy.Expr) -> bool:
 
     if isinstance(expr, sympy.Pow):
         return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
-    if isinstance(expr, (sympy.Add, sympy.Mul, sympy.Function)):
+    if isinstance(expr, sympy.Function) and not isinstance(expr, sympy.Abs):
+        return all(ok(a) for a in parts) and not all(a.is_Rational and not _short_decimal(a) for a in parts)
+    if isinstance(expr, (sympy.Add, sympy.Mul)):
         return (all(ok(a) for a in parts) and any(isinstance(a, sympy.Float) or _structural(a) for a in parts)) or (
             isinstance(expr, sympy.Add) and all(a.is_Rational for a in parts)
         )
@@ -132,6 +134,8 @@ def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
         return sympy.Float(expr.evalf(PRECISION), PRECISION)
     if expr.is_Atom:
         return expr
+    if isinstance(expr, sympy.Pow):
+        return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
     args = [floatify(a, keep_integers) for a in expr.args]
     if isinstance(expr, sympy.Mul):
         nums = [a for a in args if a.is_Number]
@@ -329,7 +333,9 @@ def latex_expr(
         return printer.doprint(floatify(expr))
     if mode == "result":
         expr = expr.xreplace(dict(style.values))
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True).doprint(floatify(expr))
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True).doprint(
+            floatify(expr, keep_integers=False)
+        )
     raise ValueError(mode)
 
 

@@ -24,7 +24,7 @@ from derive.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 
 KINDS = ("direct", "oblique")
 TOP_FIELDS = ("title", "kind", "source", "statement", "question", "find", "digits", "units", "given", "A", "B")
-BODY_FIELDS = ("angle", "from", "toward")
+BODY_FIELDS = ("angle", "from", "toward", "fixed", "name")
 AXES = ("+n", "-n", "+t", "-t")
 MAX_TEXT = 5000
 MAX_GIVENS = 60
@@ -40,7 +40,18 @@ RESERVED: dict[str, Dim] = {
     "v_A1t": VELOCITY,
     "v_B1n": VELOCITY,
     "v_B1t": VELOCITY,
+    "v_A2": VELOCITY,
+    "v_B2": VELOCITY,
+    "v_A2n": VELOCITY,
+    "v_A2t": VELOCITY,
+    "v_B2n": VELOCITY,
+    "v_B2t": VELOCITY,
+    "W_A": units.FORCE,
+    "W_B": units.FORCE,
+    "g": units.ACCELERATION,
 }
+#: Standard gravity as textbooks use it, by unit system (for mass = W/g).
+GRAVITY = {"SI": ("9.81", "m/s^2"), "US": ("32.2", "ft/s^2")}
 #: Results a problem may ask for by name.
 RESULT_NAMES = (
     "v_A2",
@@ -55,8 +66,11 @@ RESULT_NAMES = (
     "T_2",
     "T_lost",
 )
-#: Names a file may not give: the unknowns and results derive computes.
-COMPUTED = {"v_A2n", "v_A2t", "v_B2n", "v_B2t", "v_A2", "v_B2", "theta_A2", "theta_B2", "T_1", "T_2", "T_lost"}
+#: Names a file may not give: the results derive computes (the velocities after
+#: the impact may be given, in an inverse problem).
+COMPUTED = {"theta_A2", "theta_B2", "T_1", "T_2", "T_lost", "J_n"}
+#: Velocities after the impact, by kind: given in an inverse problem, else unknown.
+POST = {"direct": ("v_A2", "v_B2"), "oblique": ("v_A2t", "v_A2n", "v_B2t", "v_B2n")}
 
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,2})?)\s*(.*?)\s*$")
 
@@ -76,6 +90,7 @@ class Given:
     unit: str
     written: str | None = None
     definition: sympy.Expr | None = None
+    unknown: bool = False
 
 
 @dataclass(frozen=True)
@@ -112,6 +127,8 @@ class Problem:
     statement: str | None = None
     question: str | None = None
     name: str = ""
+    fixed_B: bool = False
+    name_B: str | None = None
     extra: Mapping[str, Any] = field(default_factory=dict)
 
     @property
@@ -125,6 +142,10 @@ class Problem:
             if g.name == name:
                 return g
         raise KeyError(name)
+
+    def unknowns(self) -> tuple[sympy.Symbol, ...]:
+        """Givens marked "?", which the equations must determine (an inverse problem)."""
+        return tuple(g.symbol for g in self.givens if g.unknown)
 
     def numeric(self) -> dict[sympy.Symbol, sympy.Expr]:
         """Symbol -> exact value for every given that has a number."""
@@ -278,12 +299,6 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
     givens = _givens(given_tbl, ctx, oblique, system)
     by_name = {g.name: g for g in givens}
 
-    for need in ("m_A", "m_B", "e"):
-        if need not in by_name:
-            what = {"e": "the coefficient of restitution e"}.get(need, f"the mass of {need[-1]}")
-            raise ctx.error(f"is missing: give {what}", section="given", key=need)
-    _check_ranges(by_name, given_tbl, ctx)
-
     body_tbls = {}
     for b in "AB":
         tbl = data.get(b, {})
@@ -292,17 +307,92 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         for k in tbl:
             if k not in BODY_FIELDS:
                 raise ctx.error(f"unknown field (expected one of: {', '.join(BODY_FIELDS)})", section=b, key=k)
+        for k in ("fixed",):
+            if k in tbl and not isinstance(tbl[k], bool):
+                raise ctx.error("expected true or false", section=b, key=k, value=tbl[k])
+        if "name" in tbl and (not isinstance(tbl["name"], str) or not 0 < len(tbl["name"]) <= 40):
+            raise ctx.error('expected a short name such as "wall" or "floor"', section=b, key="name", value=tbl["name"])
         body_tbls[b] = tbl
+    if body_tbls["A"].get("fixed"):
+        raise ctx.error(
+            "only B can be fixed: let A be the moving body and B the wall or floor", section="A", key="fixed"
+        )
+    fixed_B = bool(body_tbls["B"].get("fixed"))
+    if fixed_B:
+        for k in ("m_B", "W_B", "v_B1", "v_B1n", "v_B1t", "v_B2", "v_B2n", "v_B2t"):
+            if k in by_name:
+                raise ctx.error(
+                    "B is fixed (a wall or floor: infinite mass, at rest), so it takes no mass or velocity",
+                    section="given",
+                    key=k,
+                )
+        for k in ("angle", "from", "toward"):
+            if k in body_tbls["B"]:
+                raise ctx.error("B is fixed: it has no velocity to give a direction to", section="B", key=k)
+
+    for b in "AB":
+        m, w = f"m_{b}", f"W_{b}"
+        if b == "B" and fixed_B:
+            continue
+        if m in by_name and w in by_name:
+            raise ctx.error(f"give the mass {m} or the weight {w}, not both", section="given", key=w)
+        if m not in by_name and w in by_name:
+            if "g" not in by_name:
+                number, unit_text = GRAVITY[system]
+                g_given = _quantity(
+                    "g",
+                    symbol("g", "positive"),
+                    sympy.Rational(number),
+                    units.parse_unit(unit_text),
+                    units.ACCELERATION,
+                    system,
+                    None,
+                )
+                givens.append(g_given)
+                by_name["g"] = g_given
+            weight, grav = by_name[w], by_name["g"]
+            definition = weight.symbol / grav.symbol
+            value = None if weight.value is None or grav.value is None else weight.value / grav.value
+            mass = Given(
+                m,
+                symbol(m, "positive"),
+                MASS,
+                value,
+                units.working_unit(MASS, system).text,
+                definition=definition,
+                unknown=False,
+            )
+            givens.append(mass)
+            by_name[m] = mass
+
+    needs = ("m_A", "e") if fixed_B else ("m_A", "m_B", "e")
+    for need in needs:
+        if need not in by_name:
+            what = {"e": "the coefficient of restitution e"}.get(
+                need, f"the mass of {need[-1]} (or its weight W_{need[-1]})"
+            )
+            raise ctx.error(f"is missing: give {what}", section="given", key=need)
+    post = POST[kind]
+    for k in list(by_name):
+        if k.startswith(("v_A2", "v_B2")) and k not in post:
+            allowed = ", ".join(post)
+            raise ctx.error(
+                f"is not a velocity this kind of impact uses after the impact (use {allowed})", section="given", key=k
+            )
+    _check_ranges(by_name, given_tbl, ctx)
 
     motions = []
     for b in "AB":
+        if b == "B" and fixed_B:
+            motions.append(Motion("B", sympy.Integer(0), sympy.Integer(0)))
+            continue
         motion, extra = _motion(b, body_tbls[b], by_name, ctx, oblique)
         if extra is not None:
             givens.append(extra)
             by_name[extra.name] = extra
         motions.append(motion)
 
-    find = _find(data.get("find"), ctx, oblique)
+    find = _find(data.get("find"), ctx, oblique, tuple(g.name for g in givens if g.unknown))
     problem = Problem(
         path=ctx.path,
         title=title,
@@ -317,6 +407,8 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         statement=_text(data, "statement", ctx),
         question=_text(data, "question", ctx),
         name=name,
+        fixed_B=fixed_B,
+        name_B=body_tbls["B"].get("name"),
     )
     _check_approach(problem, ctx)
     return problem
@@ -395,6 +487,22 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
             value = value * unit.factor
         return Given(key, sym, dim, value, unit.text)
     text = raw.strip()
+    if text == "?" or text.startswith("? "):
+        unit_text = text[1:].strip()
+        try:
+            unit = units.parse_unit(unit_text) if unit_text else None
+        except ValueError as exc:
+            raise err(str(exc), UnitError) from None
+        dim = unit.dim if unit is not None else (expected if expected is not None else DIMENSIONLESS)
+        if expected is not None and dim != expected:
+            raise err(f"expected {describe(expected)}, but {unit_text} is {describe(dim)}", UnitError)
+        if dim == ANGLE:
+            work_text = "deg"
+        elif dim in units.SYSTEMS[system]:
+            work_text = units.working_unit(dim, system).text
+        else:
+            raise err(f"{describe(dim)} cannot be an unknown here", UnitError)
+        return Given(key, sym, dim, None, work_text, unknown=True)
     if text == "":
         raise err(
             'is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression'
@@ -491,9 +599,11 @@ def _check_ranges(by_name: Mapping[str, Given], raw: Mapping[str, Any], ctx: _Ct
             cls=PhysicsError,
         )
     for m in ("m_A", "m_B"):
+        if m not in by_name:
+            continue
         v = by_name[m].value
         if v is not None and not v > 0:
-            raise ctx.error("a mass must be positive", section="given", key=m, value=raw[m], cls=PhysicsError)
+            raise ctx.error("a mass must be positive", section="given", key=m, value=raw.get(m), cls=PhysicsError)
     for s in ("v_A1", "v_B1"):
         g = by_name.get(s)
         if g is not None and g.value is not None and g.symbol.is_nonnegative and not g.value >= 0:
@@ -517,7 +627,7 @@ def _motion(
 ) -> tuple[Motion, Given | None]:
     speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
     if not oblique:
-        if n_name in by_name or t_name in by_name or tbl:
+        if n_name in by_name or t_name in by_name or {"angle", "from", "toward"} & set(tbl):
             key = n_name if n_name in by_name else t_name if t_name in by_name else None
             raise ctx.error(
                 f"a direct impact has one velocity component: give {speed_name}, signed along +n (from A toward B)",
@@ -539,8 +649,8 @@ def _motion(
             key=speed_name,
         )
     if has_comp:
-        if tbl:
-            raise ctx.error(f"the velocity of {b} is given by components, so [{b}] is not needed", section=b)
+        if {"angle", "from", "toward"} & set(tbl):
+            raise ctx.error(f"the velocity of {b} is given by components, so [{b}] needs no angle", section=b)
         missing = [k for k in (n_name, t_name) if k not in by_name]
         if missing:
             raise ctx.error(
@@ -554,11 +664,11 @@ def _motion(
             key=speed_name,
         )
     speed = by_name[speed_name]
-    if not tbl:
+    if not {"angle", "from", "toward"} & set(tbl):
         if speed.value == 0:
             return Motion(b, sympy.Integer(0), sympy.Integer(0), speed=speed.symbol), None
         raise ctx.error(f"is missing: give the direction of {b}'s velocity (angle, from, toward)", section=b)
-    for k in BODY_FIELDS:
+    for k in ("angle", "from", "toward"):
         if k not in tbl:
             raise ctx.error(f"is missing: the direction of {b} needs angle, from and toward", section=b, key=k)
     axis_from, toward = tbl["from"], tbl["toward"]
@@ -613,15 +723,15 @@ def _motion(
     return Motion(b, sympy.sympify(n), sympy.sympify(t), speed=v, angle=th, axis_from=axis_from, toward=toward), extra
 
 
-def _find(raw: Any, ctx: _Ctx, oblique: bool) -> tuple[str, ...]:
-    default = ("v_A2", "v_B2")
+def _find(raw: Any, ctx: _Ctx, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
+    default = unknown or ("v_A2", "v_B2")
     if raw is None:
         return default
     if isinstance(raw, str):
         raw = [raw]
     if not isinstance(raw, list) or not raw or not all(isinstance(x, str) for x in raw):
         raise ctx.error("expected a list of result names", key="find", value=raw)
-    allowed = RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")
+    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown)
     for x in raw:
         if x not in allowed:
             raise ctx.error(f"unknown result {x!r} (expected some of: {', '.join(allowed)})", key="find", value=raw)

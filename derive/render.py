@@ -17,14 +17,14 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.printing import StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_inline
+from derive.printing import StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
 from derive.problem import Given
 from derive.resources import templates_dir
 from derive.solution import Math, Solution
 from derive.symbols import latex_name
 from derive.units import latex_unit, plain_unit
 
-FORMATS = ("md", "tex", "tex-fragment", "html", "json")
+FORMATS = ("md", "tex", "tex-fragment", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
 
 
@@ -61,6 +61,8 @@ def _env(kind: str) -> jinja2.Environment:
 def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
     name = latex_name(g.name)
+    if g.unknown:
+        return name + " = ?", "unknown: derive finds it"
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
@@ -76,6 +78,9 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     parts = [name]
     if g.definition is not None:
         parts.append(StepPrinter().doprint(g.definition))
+        shown = latex_expr(g.definition, "values", style, 1)
+        if shown != parts[-1] and not g.definition.is_Symbol:
+            parts.append(shown)
     if g.written is not None:
         number, _, unit = g.written.partition(" ")
         parts.append(
@@ -205,7 +210,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
 
 
 def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) -> str:
-    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment' or 'json'.
 
     ``digits`` overrides the significant figures (default: the problem's, else
     the textbook rule). For a PDF see :func:`derive.pdf.build_pdf`.
@@ -219,7 +224,5 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) ->
     data = view(solution, digits)
     if fmt == "md":
         return _env("md").get_template("solution.md.j2").render(**data)
-    if fmt == "html":
-        return _env("md").get_template("solution.html.j2").render(**data)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
     return _env("tex").get_template(template).render(**data)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sympy
 
-from derive.impact import Impact, evaluate, independent_map, setup
+from derive.impact import Impact, equation_numbers, evaluate, independent_map, setup
 from derive.problem import Problem
 from derive.solution import Block, Eqn, Math, Result, Side, Solution, Stage, Text
 from derive.symbols import symbol, vector
@@ -45,6 +45,11 @@ def _results(imp: Impact) -> dict[str, Result]:
     p, nm = imp.problem, imp.names
     out: dict[str, Result] = {}
     unit_v = _unit(p, "velocity")
+    solved = dict(imp.closed)
+
+    def full(expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
+        return imp.in_givens(expr).xreplace(solved)
 
     def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
         partial = evaluate(closed, p)
@@ -59,39 +64,56 @@ def _results(imp: Impact) -> dict[str, Result]:
             partial = partial * 180 / sympy.pi
         out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
 
+    for g in p.givens:
+        if g.unknown:
+            add(g.name, solved[g.symbol], g.unit, f"{g.name}, unknown in the file", degrees=g.unit == "deg")
     if p.oblique:
         comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
-        for name, s in comps.items():
+        for name, s_ in comps.items():
             body, axis = name[2], name[-1]
-            add(name, imp.closed[s], unit_v, f"velocity of {body} after the impact, {axis} component")
+            add(name, full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
         for b in "AB":
-            n, t = imp.closed[comps[f"v_{b}2n"]], imp.closed[comps[f"v_{b}2t"]]
+            if b == "B" and p.fixed_B:
+                continue
+            n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
             add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
             ang = _angle(n, t, p)
             if ang is not None:
                 add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
     else:
-        add("v_A2", imp.closed[nm.A2n], unit_v, "velocity of A after the impact, along +n")
-        add("v_B2", imp.closed[nm.B2n], unit_v, "velocity of B after the impact, along +n")
+        add("v_A2", full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
+        if not p.fixed_B:
+            add("v_B2", full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
     ind = independent_map(p)
     sym = p.symbols()
-    m_A, m_B = sym["m_A"].xreplace(ind), sym["m_B"].xreplace(ind)
-    # Kinetic energy, worked in the component symbols (polynomial, so it factors
-    # quickly and exactly), then the givens put in.
+    m_A = full(sym["m_A"].xreplace(ind))
+    m_B = sympy.Integer(0) if p.fixed_B else full(sym["m_B"].xreplace(ind))
+    # Kinetic energy. Worked in the component symbols it is polynomial, so it
+    # factors quickly and exactly; then the givens go in. (A fixed B has none.)
     sq = {}
     for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
         n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
         t1, t2 = getattr(nm, f"{b}1t"), getattr(nm, f"{b}2t")
         pre_sq = n1**2 + (t1**2 if p.oblique else 0)
-        post_sq = (n2**2 + (t2**2 if p.oblique else 0)).xreplace(imp.by_components)
+        post_sq = n2**2 + (t2**2 if p.oblique else 0)
         speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
-        sq[b] = (pre_sq, post_sq, speed_sq)
-    lost = sympy.factor(HALF * m_A * (sq["A"][0] - sq["A"][1]) + HALF * m_B * (sq["B"][0] - sq["B"][1]))
+        sq[b] = (pre_sq, post_sq, full(speed_sq))
     unit_T = _unit(p, "energy")
-    add("T_1", HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2], unit_T, "kinetic energy before the impact")
-    T2 = HALF * m_A * imp.in_givens(sq["A"][1]) + HALF * m_B * imp.in_givens(sq["B"][1])
+    T1 = HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2]
+    T2 = HALF * m_A * full(sq["A"][1]) + HALF * m_B * full(sq["B"][1])
+    if imp.inverse:
+        lost = T1 - T2
+    else:
+        lost_c = HALF * m_A * (sq["A"][0] - sq["A"][1].xreplace(imp.by_components))
+        lost_c += HALF * m_B * (sq["B"][0] - sq["B"][1].xreplace(imp.by_components))
+        lost = sympy.factor_terms(
+            imp.in_givens(sympy.factor(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
+        )
+    add("T_1", T1, unit_T, "kinetic energy before the impact")
     add("T_2", T2, unit_T, "kinetic energy after the impact")
-    add("T_lost", sympy.factor_terms(imp.in_givens(lost)), unit_T, "kinetic energy lost in the impact")
+    add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
+    J = -m_A * (full(nm.A2n) - full(nm.A1n))
+    add("J_n", sympy.factor_terms(J), _unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
     return out
 
 
@@ -130,7 +152,7 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
 def _unit(p: Problem, what: str) -> str:
     from derive import units
 
-    dim = {"velocity": units.VELOCITY, "energy": units.ENERGY}[what]
+    dim = {"velocity": units.VELOCITY, "energy": units.ENERGY, "impulse": units.IMPULSE}[what]
     return units.SYSTEMS[p.system][dim]
 
 
@@ -161,8 +183,14 @@ class _Writer:
         self.numeric = self.p.numeric()
         self.notes: list[Text] = []
         sym = self.p.symbols()
-        self.m_A, self.m_B, self.e = sym["m_A"], sym["m_B"], sym["e"]
+        self.m_A, self.e = sym["m_A"], sym["e"]
+        self.m_B = sym.get("m_B", symbol("m_B", "positive"))
         self.unit_v = _unit(self.p, "velocity")
+        self.nums = equation_numbers(self.p)
+        self.unknowns = imp.unknowns
+        self.collected_eqs: dict[int, sympy.Expr] = {}
+        self.shown: set[sympy.Symbol] = set()
+        self.surface = self.p.name_B or "surface"
 
     # helpers -----------------------------------------------------------
     def givens(self, expr: sympy.Expr) -> sympy.Expr:
@@ -175,6 +203,21 @@ class _Writer:
     def num(self, expr: sympy.Expr) -> sympy.Expr:
         return evaluate(expr, self.p)
 
+    def value_of(self, s: sympy.Symbol) -> sympy.Expr:
+        """A solved quantity: its number, or its closed form with numbers in."""
+        r = self.results.get(s.name)
+        if r is not None:
+            return r.value if r.value is not None else r.partial
+        return self.num(self.imp.closed[s])
+
+    results_value = value_of
+
+    def unit_of(self, s: sympy.Symbol) -> str | None:
+        g = next((g for g in self.p.givens if g.symbol == s), None)
+        if g is not None:
+            return g.unit or None
+        return self.unit_v
+
     # stages --------------------------------------------------------------
     def stages(self) -> tuple[Stage, ...]:
         return (
@@ -185,34 +228,44 @@ class _Writer:
         )
 
     def geometry(self) -> list[Block]:
-        blocks = [
-            Block(
-                (
-                    "Take ",
-                    Math(symbol("n")),
-                    " along the line of impact, positive from the centre of A toward the centre of B, and ",
-                    Math(symbol("t")),
-                    " in the plane of contact" + (" (n turned 90° counter-clockwise)." if self.p.oblique else "."),
-                )
+        p = self.p
+        if p.fixed_B:
+            first: Text = (
+                "Take ",
+                Math(symbol("n")),
+                f" along the line of impact, normal to the {self.surface}, positive from A toward the {self.surface}, and ",
+                Math(symbol("t")),
+                " along the " + self.surface + (" (n turned 90° counter-clockwise)." if p.oblique else "."),
             )
-        ]
-        if not self.p.oblique:
-            v_A1, v_B1 = self.nm.A1n, self.nm.B1n
+        else:
+            first = (
+                "Take ",
+                Math(symbol("n")),
+                " along the line of impact, positive from the centre of A toward the centre of B, and ",
+                Math(symbol("t")),
+                " in the plane of contact" + (" (n turned 90° counter-clockwise)." if p.oblique else "."),
+            )
+        blocks = [Block(first)]
+        if p.fixed_B:
             blocks.append(
-                Block(
-                    ("The impact is direct: every velocity lies along n and is signed along +n.",),
-                    (
-                        Eqn((Side((v_A1,)), Side((v_A1,), "result")), unit=self.unit_v),
-                        Eqn((Side((v_B1,)), Side((v_B1,), "result")), unit=self.unit_v),
-                    ),
-                )
+                Block((f"B is the fixed {self.surface}: infinite mass, at rest before and after the impact.",))
+            )
+        if not p.oblique:
+            lines = []
+            for s_ in (self.nm.A1n,) + (() if p.fixed_B else (self.nm.B1n,)):
+                if s_ in self.numeric:
+                    lines.append(Eqn((Side((s_,)), Side((s_,), "result")), unit=self.unit_v))
+            blocks.append(
+                Block(("The impact is direct: every velocity lies along n and is signed along +n.",), tuple(lines))
             )
             return blocks
         for motion, (cn, ct) in (
-            (self.p.motion_A, (self.nm.A1n, self.nm.A1t)),
-            (self.p.motion_B, (self.nm.B1n, self.nm.B1t)),
+            (p.motion_A, (self.nm.A1n, self.nm.A1t)),
+            (p.motion_B, (self.nm.B1n, self.nm.B1t)),
         ):
             b = motion.body
+            if b == "B" and p.fixed_B:
+                continue
             if motion.speed is not None and motion.angle is None:
                 blocks.append(
                     Block(
@@ -238,39 +291,29 @@ class _Writer:
                     sides.append(Side((expr,)))
                     if self.has_values(expr) and not expr.is_Symbol:
                         sides.append(Side((expr,), "values"))
-                sides.append(Side((expr,), "result"))
+                if not (expr.free_symbols & set(self.unknowns)):
+                    sides.append(Side((expr,), "result"))
                 lines.append(Eqn(tuple(sides), unit=self.unit_v))
             blocks.append(Block(text, tuple(lines)))
         return blocks
 
     def kinetics(self) -> list[Block]:
         blocks: list[Block] = []
-        nm = self.nm
-        if self.p.oblique:
+        nm, p = self.nm, self.p
+        if p.oblique:
             blocks.append(
                 Block(
                     (
-                        "Linear momentum in the t-direction is conserved for each particle: no impulsive force acts on A or on B along t.",
+                        "Linear momentum in the t-direction is conserved for each particle: "
+                        "no impulsive force acts on A or on B along t (the surfaces are smooth).",
                     )
                 )
             )
             for tag, b, m, c1, c2 in (("1", "A", self.m_A, nm.A1t, nm.A2t), ("2", "B", self.m_B, nm.B1t, nm.B2t)):
-                pre = self.givens(c1)
-                lines = [
-                    Eqn((Side((m * c1,)), Side((m * c2,))), cancel=frozenset({m})),
-                    Eqn((Side((c2,)), Side((c1,))) + ((Side((pre,)),) if pre != c1 else ()), implies=True),
-                ]
-                res = self.results[f"v_{b}2t"]
-                if self.has_values(pre) and not pre.is_Symbol and pre != 0:
-                    lines.append(Eqn((Side((c2,)), Side((pre,), "values"))))
-                lines.append(
-                    Eqn(
-                        (Side((c2,)), Side((res.closed if res.value is None else res.value,), "result")),
-                        tag=tag,
-                        unit=self.unit_v,
-                    )
-                )
-                blocks.append(Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)))
+                if b == "B" and p.fixed_B:
+                    blocks.append(Block((f"B, the {self.surface}, does not move: (2) says nothing.",)))
+                    continue
+                blocks.append(self.t_momentum(tag, b, m, c1, c2))
         else:
             blocks.append(
                 Block(
@@ -279,22 +322,59 @@ class _Writer:
                     )
                 )
             )
-        blocks.append(self.momentum_n())
+        if p.fixed_B:
+            blocks.append(
+                Block(
+                    (
+                        f"Linear momentum along n is not conserved for A and the {self.surface}: its supports exert an "
+                        "impulsive reaction, so equation (3) does not apply. The impact rule alone gives the n component.",
+                    )
+                )
+            )
+        else:
+            blocks.append(self.momentum_n())
         blocks.append(self.restitution())
         return blocks
 
+    def t_momentum(self, tag: str, b: str, m: sympy.Symbol, c1: sympy.Symbol, c2: sympy.Symbol) -> Block:
+        pre = self.givens(c1)
+        lines = [Eqn((Side((m * c1,)), Side((m * c2,))), cancel=frozenset({m}))]
+        given_c2 = c2.name in {g.name for g in self.p.givens}
+        if not given_c2 and not (pre.free_symbols & set(self.unknowns)):
+            lines.append(Eqn((Side((c2,)), Side((c1,))) + ((Side((pre,)),) if pre != c1 else ()), implies=True))
+            if self.has_values(pre) and not pre.is_Symbol and pre != 0:
+                lines.append(Eqn((Side((c2,)), Side((pre,), "values"))))
+            lines.append(Eqn((Side((c2,)), Side((self.value_of(c2),), "result")), tag=tag, unit=self.unit_v))
+            self.shown.add(c2)
+        else:
+            lines.append(Eqn((Side((pre,)), Side((c2,))), implies=True))
+            lines.append(Eqn((Side((pre,), "values"), Side((c2,), "values")), tag=tag))
+            self.collected_eqs[int(tag)] = self.num(pre - c2)
+        return Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines))
+
     def collected(
         self, lhs: sympy.Expr, rhs: sympy.Expr, order: tuple[sympy.Symbol, ...]
-    ) -> tuple[tuple[sympy.Expr, ...], sympy.Expr]:
-        """Unknown terms (in ``order``) = constant, from ``lhs = rhs`` with numbers in."""
+    ) -> tuple[tuple[sympy.Expr, ...], tuple[sympy.Expr, ...]]:
+        """Unknown terms (in ``order``) = constant, from ``lhs = rhs`` with numbers in;
+        an equation not linear in its unknowns is left as it stands."""
         expr = sympy.expand(self.num(lhs) - self.num(rhs))
+        us = [u for u in order if expr.has(u)] + [u for u in self.unknowns if expr.has(u) and u not in order]
+        poly = expr.is_polynomial(*us) if us else False
+        if (
+            not poly
+            or any(sympy.degree(expr, u) > 1 for u in us)
+            or any(expr.coeff(u).has(*[w for w in us if w != u]) for u in us)
+        ):
+            return (self.num(lhs),), (self.num(rhs),)
         terms = []
-        for u in order:
+        for u in us:
             c = expr.coeff(u)
             if c != 0:
                 terms.append(sympy.simplify(c) * u)
         const = sympy.simplify(-(expr - sum(terms)))
-        return tuple(terms), const
+        if len(terms) == 1 and terms[0].could_extract_minus_sign():
+            return (-terms[0],), (-const,)  # v_A2n = -4.8, not -v_A2n = 4.8
+        return tuple(terms) or (sympy.Integer(0),), (const,)
 
     def momentum_n(self) -> Block:
         nm, m_A, m_B = self.nm, self.m_A, self.m_B
@@ -319,8 +399,9 @@ class _Writer:
                 lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values"))))
                 sums.append((lhs_num, sympy.Add(*lhs_num)))
         terms, const = self.collected(sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
-        lines.append(Eqn((Side(terms, "numeric"), Side((const,), "numeric")), tag="3", implies=True))
-        self.eq3 = (terms, const)
+        lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag="3", implies=True))
+        self.eq3 = (terms, const[0])
+        self.collected_eqs[3] = self.num(sympy.Add(*g_rhs) - sympy.Add(*g_lhs))
         return Block(
             (
                 "Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it.",
@@ -332,8 +413,8 @@ class _Writer:
     def common_factor(self, terms: tuple[sympy.Expr, ...]) -> sympy.Symbol | None:
         """A symbolic mass shared by every term (m in 4.C.12), which cancels."""
         nonzero = [t for t in terms if t != 0]
-        for cand in sorted({s for s in nonzero[0].free_symbols}, key=str) if nonzero else []:
-            if cand in self.numeric or not cand.is_positive:
+        for cand in sorted(set(nonzero[0].free_symbols), key=str) if nonzero else []:
+            if cand in self.numeric or not cand.is_positive or cand in self.unknowns:
                 continue
             if all(
                 sympy.cancel(t / cand).free_symbols.isdisjoint({cand}) and (t / cand).is_polynomial(cand)
@@ -351,41 +432,58 @@ class _Writer:
             Eqn((Side((sympy.Mul(e, app, evaluate=False),)), Side((nm.B2n, -nm.A2n))), implies=True),
         ]
         g_app = _nonzero(tuple(self.givens(t) for t in (nm.A1n, -nm.B1n)))
+        g_sep = _nonzero(tuple(self.givens(t) for t in (nm.B2n, -nm.A2n)))
         g_app_expr = sympy.Add(*g_app, evaluate=False) if len(g_app) > 1 else g_app[0]
         g_lhs = sympy.Mul(e, g_app_expr, evaluate=False)
-        if g_app != (nm.A1n, -nm.B1n):
-            lines.append(Eqn((Side((g_lhs,)), Side((nm.B2n, -nm.A2n))), implies=True))
-        if self.has_values(g_lhs):
-            lines.append(Eqn((Side((g_lhs,), "values"), Side((nm.B2n, -nm.A2n)))))
-        const = sympy.simplify(self.num(e * sympy.Add(*g_app)))
-        lines.append(Eqn((Side((nm.B2n, -nm.A2n), "numeric"), Side((const,), "numeric")), tag="4", implies=True))
-        self.eq4 = const
-        return Block(
-            (
-                "Impact rule: the coefficient of restitution relates the normal components only, separation over approach.",
-            ),
-            tuple(lines),
+        if g_app != (nm.A1n, -nm.B1n) or g_sep != (nm.B2n, -nm.A2n):
+            lines.append(Eqn((Side((g_lhs,)), Side(g_sep)), implies=True))
+        if self.has_values(g_lhs) or any(self.has_values(t) for t in g_sep):
+            lines.append(Eqn((Side((g_lhs,), "values"), Side(g_sep, "values"))))
+        if self.p.fixed_B:
+            terms, const = self.collected(sympy.Add(*g_sep), e * sympy.Add(*g_app), (nm.A2n,))
+        else:
+            terms, const = self.collected(sympy.Add(*g_sep), e * sympy.Add(*g_app), (nm.B2n, nm.A2n))
+        lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag="4", implies=True))
+        self.eq4 = const[0]
+        self.collected_eqs[4] = self.num(sympy.Add(*g_sep) - e * sympy.Add(*g_app))
+        text: Text = (
+            "Impact rule: the coefficient of restitution relates the normal components only, separation over approach.",
         )
+        ev = self.numeric.get(e)
+        if ev == 1:
+            text += (" Here ", Math(sympy.Eq(e, 1)), ": the impact is perfectly elastic.")
+        elif ev == 0:
+            text += (" Here ", Math(sympy.Eq(e, 0)), ": the impact is perfectly plastic.")
+        return Block(text, tuple(lines))
 
     def elimination(self) -> list[Block]:
+        if self.imp.inverse:
+            return self.generic_solve()
         nm = self.nm
+        if self.p.fixed_B:
+            x = nm.A2n
+            g_app = self.givens(nm.A1n)
+            form = -self.e * g_app
+            sides = [Side((x,)), Side((form,))]
+            if self.has_values(form):
+                sides.append(Side((form,), "values"))
+            sides.append(Side((self.value_of(x),), "result"))
+            return [
+                Block(("From (4), with the " + self.surface + " at rest:",), (Eqn(tuple(sides), unit=self.unit_v),))
+            ]
         x, y = nm.A2n, nm.B2n
         (terms3, c) = self.eq3
         k = self.eq4
         a = sympy.expand(sympy.Add(*terms3)).coeff(x)
         b = sympy.expand(sympy.Add(*terms3)).coeff(y)
-        xv, yv = self.results_value(x), self.results_value(y)
+        xv, yv = self.value_of(x), self.value_of(y)
         blocks: list[Block] = []
         if sympy.simplify(a - b) == 0:
             # equal coefficients: add and subtract (3) and (4), as in Example 4.C.12
             a1 = sympy.simplify(a)
             blocks.append(
                 Block(
-                    (
-                        "Add (3) and (4): ",
-                        Math(x),
-                        " cancels.",
-                    ),
+                    ("Add (3) and (4): ", Math(x), " cancels."),
                     (
                         Eqn((Side((sympy.Mul(a1 + 1, y, evaluate=False),), "numeric"), Side((c, k), "numeric"))),
                         Eqn((Side((y,)), Side((yv,), "result")), unit=self.unit_v, tag="5", implies=True),
@@ -395,11 +493,7 @@ class _Writer:
             )
             blocks.append(
                 Block(
-                    (
-                        "Subtract (4) from (3): ",
-                        Math(y),
-                        " cancels.",
-                    ),
+                    ("Subtract (4) from (3): ", Math(y), " cancels."),
                     (
                         Eqn((Side((sympy.Mul(a1 + 1, x, evaluate=False),), "numeric"), Side((c, -k), "numeric"))),
                         Eqn((Side((x,)), Side((xv,), "result")), unit=self.unit_v, tag="6", implies=True),
@@ -446,6 +540,66 @@ class _Writer:
         )
         return blocks
 
+    def generic_solve(self) -> list[Block]:
+        """Inverse problems: take each equation with one unknown left, in turn."""
+        blocks: list[Block] = []
+        remaining = [u for u in self.unknowns if u not in self.shown]
+        eqs = dict(sorted(self.collected_eqs.items()))
+        known: dict[sympy.Symbol, sympy.Expr] = {}
+        while remaining:
+            step = None
+            for k, ex in eqs.items():
+                us = [u for u in remaining if ex.xreplace(known).has(u)]
+                if len(us) == 1:
+                    step = (k, us[0])
+                    break
+            if step is None:
+                lines = tuple(
+                    Eqn((Side((u,)), Side((self.value_of(u),), "result")), unit=self.unit_of(u)) for u in remaining
+                )
+                listed = " and ".join(f"({k})" for k in eqs)
+                blocks.append(Block((f"Solve {listed} together:",), lines))
+                break
+            k, u = step
+            sides = [Side((u,))]
+            if u == self.e and k == 4:
+                nm = self.nm
+                sep = sympy.Add(*_nonzero(tuple(self.givens(t) for t in (nm.B2n, -nm.A2n))), evaluate=False)
+                app = sympy.Add(*_nonzero(tuple(self.givens(t) for t in (nm.A1n, -nm.B1n))), evaluate=False)
+                frac = sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False)
+                sides.append(Side((frac,)))
+                sides.append(Side((self.substituted(frac, known),), "numeric"))
+            sides.append(Side((self.value_of(u),), "result"))
+            why = self.root_reason(u)
+            text: Text = (f"From ({k}):" + (f" {why}" if why else ""),)
+            blocks.append(Block(text, (Eqn(tuple(sides), unit=self.unit_of(u)),)))
+            known[u] = self.value_of(u)
+            remaining.remove(u)
+            del eqs[k]
+        return blocks
+
+    def substituted(self, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+        """``expr`` with every known quantity's number in its place, structure kept."""
+        vals = {**self.numeric, **known}
+        if isinstance(expr, sympy.Symbol):
+            return _f(vals[expr]) if expr in vals else expr
+        if expr.is_Atom:
+            return expr
+        return expr.func(*(self.substituted(a, known) for a in expr.args), evaluate=False)
+
+    def root_reason(self, u: sympy.Symbol) -> str:
+        """Why the root shown is the one kept, where the equations have several."""
+        eqs = [ex for ex in self.collected_eqs.values() if ex.has(u)]
+        if any(not ex.is_polynomial(u) or sympy.degree(ex, u) > 1 for ex in eqs if ex.is_polynomial(u) or True):
+            if u.name == "e":
+                return "the root with 0 ≤ e ≤ 1 is the physical one."
+            g = next((g for g in self.p.givens if g.symbol == u), None)
+            if g is not None and g.unit == "deg":
+                return "the root between -180° and 180° for which the bodies approach is the physical one."
+            if u.is_positive or u.is_nonnegative:
+                return f"the root with {u.name} ≥ 0 is the physical one."
+        return ""
+
     def sum_check(self, terms: tuple[sympy.Expr, ...]) -> tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...]:
         """The sum claim for a line of numeric terms (none when a symbol remains)."""
         nums = tuple(self.num(t) for t in terms)
@@ -453,31 +607,29 @@ class _Writer:
             return ()
         return ((nums, sympy.Add(*nums)),)
 
-    def results_value(self, s: sympy.Symbol) -> sympy.Expr:
-        r = self.results[str(s)]
-        return r.value if r.value is not None else r.partial
-
     def answer(self) -> list[Block]:
         p = self.p
         blocks: list[Block] = []
         e_t, e_n = vector("e_t"), vector("e_n")
         lines = []
+        bodies = "A" if p.fixed_B else "AB"
         if p.oblique:
-            for b in "AB":
-                t = self.results_value(symbol(f"v_{b}2t"))
-                n = self.results_value(symbol(f"v_{b}2n"))
+            for b in bodies:
+                t = self.value_of(symbol(f"v_{b}2t"))
+                n = self.value_of(symbol(f"v_{b}2n"))
                 comps = _nonzero(tuple(c * u for c, u in ((t, e_t), (n, e_n)) if c != 0))
                 lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=True))
         else:
-            for b in "AB":
+            for b in bodies:
                 lines.append(
                     Eqn(
-                        (Side((symbol(f"v_{b}2"),)), Side((self.results_value(symbol(f"v_{b}2")),), "result")),
+                        (Side((symbol(f"v_{b}2"),)), Side((self.value_of(symbol(f"v_{b}2")),), "result")),
                         unit=self.unit_v,
                         boxed=True,
                     )
                 )
-        blocks.append(Block(("The velocities immediately after the impact:",), tuple(lines)))
+        heading = "The velocity of A" if p.fixed_B else "The velocities"
+        blocks.append(Block((heading + " immediately after the impact:",), tuple(lines)))
         symbolic = [
             r
             for r in self.results.values()
@@ -541,7 +693,7 @@ class _Writer:
         return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
 
     def energy(self) -> Block:
-        p, sym = self.p, self.p.symbols()
+        p = self.p
         m_A, m_B = self.m_A, self.m_B
         s1A = p.motion_A.speed if p.oblique and p.motion_A.speed is not None else None
         s1B = p.motion_B.speed if p.oblique and p.motion_B.speed is not None else None
@@ -550,13 +702,16 @@ class _Writer:
             v1B = s1B**2 if s1B is not None else sympy.Add(self.nm.B1n**2, self.nm.B1t**2, evaluate=False)
             v2A, v2B = symbol("v_A2", "positive") ** 2, symbol("v_B2", "positive") ** 2
         else:
-            v1A, v1B = sym["v_A1"] ** 2, sym["v_B1"] ** 2
+            v1A, v1B = symbol("v_A1") ** 2, symbol("v_B1") ** 2
             v2A, v2B = symbol("v_A2") ** 2, symbol("v_B2") ** 2
-        forms = {
-            "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
-            "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
-            "T_lost": (symbol("T_1"), -symbol("T_2")),
-        }
+        if p.fixed_B:
+            forms = {"T_1": (HALF * m_A * v1A,), "T_2": (HALF * m_A * v2A,)}
+        else:
+            forms = {
+                "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
+                "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
+            }
+        forms["T_lost"] = (symbol("T_1"), -symbol("T_2"))
         lines = []
         for name, terms in forms.items():
             r = self.results[name]

@@ -1,0 +1,63 @@
+"""Problems for the output-validity tests: the bundled ones, plus one written here.
+
+The extra problem is a direct impact (the bundled ones are oblique) whose text is
+full of characters that mean something in Markdown, LaTeX or HTML, so that the
+escaping of user text is checked by KaTeX and by TeX as well.
+"""
+
+from __future__ import annotations
+
+import os
+from functools import cache
+from pathlib import Path
+
+import pytest
+
+import derive
+from derive import resources
+
+HOSTILE_DIRECT = r"""
+title = "Direct impact: $5 & 100% of #1 {x} \\input{/etc/passwd} a_b ^ ~ <b> | `code` *bold* [l](u) café θ → ≈ ½ 😀"
+kind = "direct"
+source = "Made up: \\$ costs $3 and $4; \\(not math\\) $$ not display $$"
+statement = "Ball A (2 kg, 3 m/s) hits ball B (1.5 kg, -2 m/s) head-on; e = 0.5. 50% off, x_1 & y_2, 10^3 ~ 1e3, \\section{x} \\\\ \\end{document}."
+question = "Find the velocities after the impact, and T_lost."
+find = ["v_A2", "v_B2", "T_lost"]
+
+[given]
+m_A = "2 kg"
+m_B = "1.5 kg"
+e = 0.5
+v_A1 = "3 m/s"
+v_B1 = "-2 m/s"
+"""
+
+
+def in_ci() -> bool:
+    """True when the CI environment variable says we run in CI (CI=true)."""
+    return os.environ.get("CI", "").strip().lower() in ("true", "1", "yes")
+
+
+def missing_tool(reason: str) -> None:
+    """Fail in CI (a missing tool must not pass silently there); skip elsewhere, saying why."""
+    if in_ci():
+        pytest.fail(f"{reason} (CI=true: a missing tool is a failure, not a skip)", pytrace=False)
+    pytest.skip(reason)
+
+
+def bundled_names() -> list[str]:
+    """Names of the bundled problems (the test ids)."""
+    return list(resources.bundled())
+
+
+@cache
+def solution(name: str) -> derive.Solution:
+    """The solution of a bundled problem, solved once per test session."""
+    return derive.solve(derive.load(name))
+
+
+def hostile_problem(tmp_dir: Path) -> Path:
+    """Write the problem with hostile text into ``tmp_dir``; its path."""
+    path = tmp_dir / "hostile-direct.toml"
+    path.write_text(HOSTILE_DIRECT, encoding="utf-8")
+    return path
