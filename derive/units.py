@@ -61,6 +61,7 @@ BASE_UNITS: dict[str, tuple[sympy.Expr, Dim]] = {
     "mi": (_si(u.mile, u.meter), LENGTH),
     "kg": (sympy.Integer(1), MASS),
     "g": (_si(u.gram, u.kilogram), MASS),
+    "Mg": (sympy.Integer(1000), MASS),  # megagram (tonne)
     "slug": (_LB * _G / _FT, MASS),  # 1 lbf·s²/ft
     "s": (sympy.Integer(1), TIME),
     "min": (_si(u.minute, u.second), TIME),
@@ -115,7 +116,7 @@ SYSTEMS: dict[str, dict[Dim, str]] = {
     },
 }
 
-_SI_NAMES = {"m", "mm", "cm", "km", "kg", "g", "N", "kN", "J", "kJ"}
+_SI_NAMES = {"m", "mm", "cm", "km", "kg", "g", "Mg", "N", "kN", "J", "kJ"}
 _US_NAMES = {"in", "ft", "mi", "slug", "lb", "lbf"}
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z°]+)|(\*|/|·|\^)|(-?\d+))")
