@@ -343,6 +343,12 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     """A side of an equation: its terms joined with their signs, in order."""
     out = ""
     for i, term in enumerate(side.terms):
+        if side.mode in ("numeric", "result"):
+            term = term.xreplace(dict(style.values))
+            if term.is_number and not _structural(term):
+                term = floatify(term, keep_integers=side.mode == "numeric")
+                if term == 0:
+                    term = sympy.Integer(0)
         neg = is_negative_term(term)
         body = negate(term) if neg else term
         s = latex_expr(body, side.mode, style, extra, cancel)
@@ -360,7 +366,7 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     return out
 
 
-_UNITLESS = {sympy.Symbol("vec:e_t", commutative=True), sympy.Symbol("vec:e_n", commutative=True)}
+_UNITLESS = {sympy.Symbol(f"vec:e_{a}", commutative=True) for a in "tnxy"}
 
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:

@@ -23,9 +23,24 @@ from derive.symbols import kind_of, symbol
 from derive.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 
 KINDS = ("direct", "oblique")
-TOP_FIELDS = ("title", "kind", "source", "statement", "question", "find", "digits", "units", "given", "A", "B")
+TOP_FIELDS = (
+    "title",
+    "kind",
+    "source",
+    "statement",
+    "question",
+    "find",
+    "digits",
+    "units",
+    "given",
+    "geometry",
+    "A",
+    "B",
+)
+GEOMETRY_FIELDS = ("n_angle", "offset", "centre_A", "centre_B")
 BODY_FIELDS = ("angle", "from", "toward", "fixed", "name")
 AXES = ("+n", "-n", "+t", "-t")
+XY_AXES = ("+x", "-x", "+y", "-y")
 MAX_TEXT = 5000
 MAX_GIVENS = 60
 
@@ -49,6 +64,11 @@ RESERVED: dict[str, Dim] = {
     "W_A": units.FORCE,
     "W_B": units.FORCE,
     "g": units.ACCELERATION,
+    "phi": ANGLE,
+    "v_A1x": VELOCITY,
+    "v_A1y": VELOCITY,
+    "v_B1x": VELOCITY,
+    "v_B1y": VELOCITY,
 }
 #: Standard gravity as textbooks use it, by unit system (for mass = W/g).
 GRAVITY = {"SI": ("9.81", "m/s^2"), "US": ("32.2", "ft/s^2")}
@@ -108,6 +128,8 @@ class Motion:
     angle: sympy.Symbol | None = None
     axis_from: str | None = None
     toward: str | None = None
+    x: sympy.Expr | None = None
+    y: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -129,6 +151,7 @@ class Problem:
     name: str = ""
     fixed_B: bool = False
     name_B: str | None = None
+    phi: sympy.Symbol | None = None
     extra: Mapping[str, Any] = field(default_factory=dict)
 
     @property
@@ -381,12 +404,13 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
             )
     _check_ranges(by_name, given_tbl, ctx)
 
+    phi = _geometry(data.get("geometry"), givens, by_name, ctx, oblique, system)
     motions = []
     for b in "AB":
         if b == "B" and fixed_B:
             motions.append(Motion("B", sympy.Integer(0), sympy.Integer(0)))
             continue
-        motion, extra = _motion(b, body_tbls[b], by_name, ctx, oblique)
+        motion, extra = _motion(b, body_tbls[b], by_name, ctx, oblique, phi)
         if extra is not None:
             givens.append(extra)
             by_name[extra.name] = extra
@@ -409,6 +433,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         name=name,
         fixed_B=fixed_B,
         name_B=body_tbls["B"].get("name"),
+        phi=phi,
     )
     _check_approach(problem, ctx)
     return problem
@@ -622,10 +647,87 @@ def _num(value: sympy.Expr) -> str:
     return format_number(value, 4)
 
 
+def _geometry(
+    geo: Any, givens: list[Given], by_name: dict[str, Given], ctx: _Ctx, oblique: bool, system: str
+) -> sympy.Symbol | None:
+    """The line of impact in the problem's x-y axes: its angle phi from +x toward +y,
+    given directly, from an offset between parallel paths (sin phi = d/(r_A + r_B)),
+    or from the centres at contact. phi becomes a given, defined by that geometry."""
+    if geo is None:
+        return None
+    if not isinstance(geo, dict):
+        raise ctx.error(f"expected a table, not {_type(geo)}", key="geometry")
+    for k in geo:
+        if k not in GEOMETRY_FIELDS:
+            raise ctx.error(f"unknown field (expected one of: {', '.join(GEOMETRY_FIELDS)})", section="geometry", key=k)
+    if not oblique:
+        raise ctx.error('the line of impact from geometry needs kind = "oblique"', section="geometry")
+    if "phi" in by_name:
+        raise ctx.error(
+            "phi is the angle derive gives the line of impact; rename this given", section="given", key="phi"
+        )
+    methods = [m for m in ("n_angle", "offset", "centre_A") if m in geo]
+    if len(methods) != 1 or ("centre_A" in geo) != ("centre_B" in geo):
+        raise ctx.error(
+            "give exactly one of: n_angle; offset (with r_A and r_B given); centre_A and centre_B", section="geometry"
+        )
+
+    def add(name: str, raw: Any, field_: str) -> Given:
+        if name in by_name:
+            raise ctx.error(f"{name} is given already; [geometry] defines it", section="geometry", key=field_)
+        try:
+            g = _given(name, raw, by_name, ctx, oblique, system)
+        except InputError as exc:
+            raise ctx.error(exc.what, section="geometry", key=field_, value=raw, cls=type(exc)) from None
+        givens.append(g)
+        by_name[name] = g
+        return g
+
+    if "n_angle" in geo:
+        raw = geo["n_angle"]
+        if isinstance(raw, (int, float)) and not isinstance(raw, bool):
+            raw = f"{raw} deg"
+        return add("phi", raw, "n_angle").symbol
+    if "offset" in geo:
+        for r in ("r_A", "r_B"):
+            if r not in by_name or by_name[r].dim != units.LENGTH:
+                raise ctx.error(f"an offset needs the radii: give {r} (a length)", section="given", key=r)
+        raw = geo["offset"]
+        d = by_name[raw.strip()] if isinstance(raw, str) and raw.strip() in by_name else add("d", raw, "offset")
+        if d.dim != units.LENGTH:
+            raise ctx.error("expected a length", section="geometry", key="offset", value=geo["offset"], cls=UnitError)
+        return add("phi", f"asin({d.name}/(r_A + r_B))", "offset").symbol
+    for b in "AB":
+        raw = geo[f"centre_{b}"]
+        if not isinstance(raw, list) or len(raw) != 2:
+            raise ctx.error('expected two coordinates, such as ["0 m", "0.1 m"]', section="geometry", key=f"centre_{b}")
+        for axis, value in zip("xy", raw, strict=True):
+            g = add(f"{axis}_{b}", value, f"centre_{b}")
+            if g.dim != units.LENGTH:
+                raise ctx.error("expected lengths", section="geometry", key=f"centre_{b}", value=raw, cls=UnitError)
+    return add("phi", "atan2(y_B - y_A, x_B - x_A)", "centre_B").symbol
+
+
 def _motion(
-    b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool
+    b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool, phi: sympy.Symbol | None = None
 ) -> tuple[Motion, Given | None]:
     speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
+    x_name, y_name = f"v_{b}1x", f"v_{b}1y"
+    if (x_name in by_name or y_name in by_name) and phi is None:
+        key = x_name if x_name in by_name else y_name
+        raise ctx.error("x-y components need a [geometry] table that sets the line of impact", section="given", key=key)
+    if phi is not None and (x_name in by_name or y_name in by_name):
+        if n_name in by_name or t_name in by_name or speed_name in by_name:
+            raise ctx.error(f"give the velocity of {b} one way only", section="given", key=x_name)
+        missing = [k for k in (x_name, y_name) if k not in by_name]
+        if missing:
+            raise ctx.error(
+                f"is missing: with components give both {x_name} and {y_name}", section="given", key=missing[0]
+            )
+        vx, vy = by_name[x_name].symbol, by_name[y_name].symbol
+        n = vx * sympy.cos(phi) + vy * sympy.sin(phi)
+        t = -vx * sympy.sin(phi) + vy * sympy.cos(phi)
+        return Motion(b, n, t, x=vx, y=vy), None
     if not oblique:
         if n_name in by_name or t_name in by_name or {"angle", "from", "toward"} & set(tbl):
             key = n_name if n_name in by_name else t_name if t_name in by_name else None
@@ -672,9 +774,13 @@ def _motion(
         if k not in tbl:
             raise ctx.error(f"is missing: the direction of {b} needs angle, from and toward", section=b, key=k)
     axis_from, toward = tbl["from"], tbl["toward"]
+    allowed = AXES + (XY_AXES if phi is not None else ())
     for k, ax in (("from", axis_from), ("toward", toward)):
-        if ax not in AXES:
-            raise ctx.error(f"expected one of {', '.join(AXES)}", section=b, key=k, value=ax)
+        if ax not in allowed:
+            hint = "" if phi is not None else " (x-y axes need a [geometry] table)"
+            raise ctx.error(f"expected one of {', '.join(allowed)}{hint}", section=b, key=k, value=ax)
+    if (axis_from in XY_AXES) != (toward in XY_AXES):
+        raise ctx.error("measure the angle between two x-y axes or two n-t axes", section=b, key="toward", value=toward)
     if axis_from[1] == toward[1]:
         raise ctx.error(
             f"the angle is measured from {axis_from} toward an axis at right angles to it (±n or ±t), not {toward}",
@@ -718,6 +824,14 @@ def _motion(
         extra = angle
     v, th = speed.symbol, angle.symbol
     comps = {axis_from: v * sympy.cos(th), toward: v * sympy.sin(th)}
+    if axis_from in XY_AXES:
+        assert phi is not None
+        x = sympy.sympify(sum((c if ax == "+x" else -c) for ax, c in comps.items() if ax[1] == "x"))
+        y = sympy.sympify(sum((c if ax == "+y" else -c) for ax, c in comps.items() if ax[1] == "y"))
+        n = x * sympy.cos(phi) + y * sympy.sin(phi)
+        t = -x * sympy.sin(phi) + y * sympy.cos(phi)
+        motion = Motion(b, n, t, speed=v, angle=th, axis_from=axis_from, toward=toward, x=x, y=y)
+        return motion, extra
     n = sum((c if ax == "+n" else -c) for ax, c in comps.items() if ax[1] == "n")
     t = sum((c if ax == "+t" else -c) for ax, c in comps.items() if ax[1] == "t")
     return Motion(b, sympy.sympify(n), sympy.sympify(t), speed=v, angle=th, axis_from=axis_from, toward=toward), extra

@@ -27,11 +27,28 @@ def solve(problem: Problem) -> Solution:
     imp = setup(problem)
     results = _results(imp)
     values: dict[sympy.Symbol, sympy.Expr] = dict(problem.numeric())
+    for motion, (cn, ct) in _xy_motions(imp):
+        b = motion.body
+        xy = ((symbol(f"v_{b}1x"), motion.x), (symbol(f"v_{b}1y"), motion.y))
+        for c, expr in ((cn, motion.n), (ct, motion.t), *xy):
+            v = evaluate(expr, problem)
+            if not v.free_symbols:
+                values[c] = v
     angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
     writer = _Writer(imp, results)
     stages = writer.stages()
     answers = _answer_names(problem)
     return Solution(problem, results, stages, answers, values, angles, tuple(writer.notes))
+
+
+def _xy_motions(imp: Impact) -> list:
+    """The bodies whose velocity was given in x-y axes, with their n-t component symbols."""
+    p, nm = imp.problem, imp.names
+    out = []
+    for motion, comps in ((p.motion_A, (nm.A1n, nm.A1t)), (p.motion_B, (nm.B1n, nm.B1t))):
+        if motion.x is not None:
+            out.append((motion, comps))
+    return out
 
 
 def _answer_names(problem: Problem) -> tuple[str, ...]:
@@ -80,6 +97,14 @@ def _results(imp: Impact) -> dict[str, Result]:
             ang = _angle(n, t, p)
             if ang is not None:
                 add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
+        if p.phi is not None:
+            for b in "AB":
+                if b == "B" and p.fixed_B:
+                    continue
+                n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
+                c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
+                add(f"v_{b}2x", n * c - t * s_, unit_v, f"velocity of {b} after the impact, x component")
+                add(f"v_{b}2y", n * s_ + t * c, unit_v, f"velocity of {b} after the impact, y component")
     else:
         add("v_A2", full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
         if not p.fixed_B:
@@ -194,14 +219,18 @@ class _Writer:
 
     # helpers -----------------------------------------------------------
     def givens(self, expr: sympy.Expr) -> sympy.Expr:
-        """``expr`` in the givens' symbols (pre-impact components resolved)."""
-        return expr.xreplace(self.imp.pre).xreplace(self.ind)
+        """``expr`` in the givens' symbols (pre-impact components resolved, except those
+        resolved from x-y axes, which the geometry stage has turned into numbers)."""
+        keep = {c for _, comps in _xy_motions(self.imp) for c in comps}
+        pre = {k: v for k, v in self.imp.pre.items() if k not in keep}
+        return expr.xreplace(pre).xreplace(self.ind)
 
     def has_values(self, expr: sympy.Expr) -> bool:
-        return bool(expr.free_symbols & set(self.numeric))
+        keep = {c for _, comps in _xy_motions(self.imp) for c in comps}
+        return bool(expr.free_symbols & (set(self.numeric) | keep))
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
-        return evaluate(expr, self.p)
+        return evaluate(expr.xreplace(self.imp.pre), self.p)
 
     def value_of(self, s: sympy.Symbol) -> sympy.Expr:
         """A solved quantity: its number, or its closed form with numbers in."""
@@ -284,6 +313,10 @@ class _Writer:
             else:
                 text = (f"The velocity of {b} before the impact is given by its components:",)
             lines = []
+            if motion.x is not None:
+                lines.extend(self.xy_lines(motion, cn, ct))
+                blocks.append(Block(text, tuple(lines)))
+                continue
             for c in (cn, ct):
                 expr = self.imp.pre[c]
                 sides = [Side((c,))]
@@ -296,6 +329,25 @@ class _Writer:
                 lines.append(Eqn(tuple(sides), unit=self.unit_v))
             blocks.append(Block(text, tuple(lines)))
         return blocks
+
+    def xy_lines(self, motion, cn: sympy.Symbol, ct: sympy.Symbol) -> list[Eqn]:
+        """A velocity given in x-y axes: its x and y components, then n and t through phi."""
+        b, phi = motion.body, self.p.phi
+        vx, vy = symbol(f"v_{b}1x"), symbol(f"v_{b}1y")
+        lines = []
+        for s_, expr in ((vx, motion.x), (vy, motion.y)):
+            if expr == s_:
+                continue
+            sides = [Side((s_,)), Side((expr,))]
+            if self.has_values(expr):
+                sides.append(Side((expr,), "values"))
+            sides.append(Side((expr,), "result"))
+            lines.append(Eqn(tuple(sides), unit=self.unit_v))
+        n_form = (vx * sympy.cos(phi), vy * sympy.sin(phi))
+        t_form = (-vx * sympy.sin(phi), vy * sympy.cos(phi))
+        for c, form, expr in ((cn, n_form, motion.n), (ct, t_form, motion.t)):
+            lines.append(Eqn((Side((c,)), Side(form), Side(form, "values"), Side((expr,), "result")), unit=self.unit_v))
+        return lines
 
     def kinetics(self) -> list[Block]:
         blocks: list[Block] = []
@@ -630,6 +682,15 @@ class _Writer:
                 )
         heading = "The velocity of A" if p.fixed_B else "The velocities"
         blocks.append(Block((heading + " immediately after the impact:",), tuple(lines)))
+        if p.phi is not None:
+            e_x, e_y = vector("e_x"), vector("e_y")
+            lines = []
+            for b in bodies:
+                x, y = self.value_of(symbol(f"v_{b}2x")), self.value_of(symbol(f"v_{b}2y"))
+                comps = _nonzero(tuple(c * u for c, u in ((x, e_x), (y, e_y)) if c != 0))
+                lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=True))
+            text: Text = ("In the problem's x–y axes (x = n cos φ − t sin φ, y = n sin φ + t cos φ):",)
+            blocks.append(Block(text, tuple(lines)))
         symbolic = [
             r
             for r in self.results.values()

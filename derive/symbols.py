@@ -56,7 +56,7 @@ def latex_name(name: str) -> str:
     return f"{head}_{{{sub_tex}}}"
 
 
-_VECTORS = {"e_t": r"\hat{e}_{t}", "e_n": r"\hat{e}_{n}"}
+_VECTORS = {"e_t": r"\hat{e}_{t}", "e_n": r"\hat{e}_{n}", "e_x": r"\hat{\imath}", "e_y": r"\hat{\jmath}"}
 
 
 @cache
