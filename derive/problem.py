@@ -34,6 +34,7 @@ TOP_FIELDS = (
     "units",
     "given",
     "geometry",
+    "answer_units",
     "A",
     "B",
 )
@@ -82,13 +83,15 @@ RESULT_NAMES = (
     "v_B2t",
     "theta_A2",
     "theta_B2",
+    "beta_A2",
+    "beta_B2",
     "T_1",
     "T_2",
     "T_lost",
 )
 #: Names a file may not give: the results derive computes (the velocities after
 #: the impact may be given, in an inverse problem).
-COMPUTED = {"theta_A2", "theta_B2", "T_1", "T_2", "T_lost", "J_n"}
+COMPUTED = {"theta_A2", "theta_B2", "beta_A2", "beta_B2", "T_1", "T_2", "T_lost", "J_n"}
 #: Velocities after the impact, by kind: given in an inverse problem, else unknown.
 POST = {"direct": ("v_A2", "v_B2"), "oblique": ("v_A2t", "v_A2n", "v_B2t", "v_B2n")}
 
@@ -152,6 +155,7 @@ class Problem:
     fixed_B: bool = False
     name_B: str | None = None
     phi: sympy.Symbol | None = None
+    answer_units: Mapping[str, str] = field(default_factory=dict)
     extra: Mapping[str, Any] = field(default_factory=dict)
 
     @property
@@ -434,6 +438,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         fixed_B=fixed_B,
         name_B=body_tbls["B"].get("name"),
         phi=phi,
+        answer_units=_answer_units(data.get("answer_units"), ctx),
     )
     _check_approach(problem, ctx)
     return problem
@@ -835,6 +840,26 @@ def _motion(
     n = sum((c if ax == "+n" else -c) for ax, c in comps.items() if ax[1] == "n")
     t = sum((c if ax == "+t" else -c) for ax, c in comps.items() if ax[1] == "t")
     return Motion(b, sympy.sympify(n), sympy.sympify(t), speed=v, angle=th, axis_from=axis_from, toward=toward), extra
+
+
+def _answer_units(raw: Any, ctx: _Ctx) -> dict[str, str]:
+    """Results to show also in a unit of the user's choice: {v_A2 = "km/h"}."""
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise ctx.error('expected a table such as { v_A2 = "km/h" }', key="answer_units")
+    out = {}
+    for name, text in raw.items():
+        if not isinstance(text, str):
+            raise ctx.error("expected a unit as text", section="answer_units", key=name, value=text)
+        try:
+            unit = units.parse_unit(text)
+        except ValueError as exc:
+            raise ctx.error(str(exc), section="answer_units", key=name, value=text, cls=UnitError) from None
+        if unit.dim in (DIMENSIONLESS,):
+            raise ctx.error("expected a unit", section="answer_units", key=name, value=text, cls=UnitError)
+        out[name] = unit.text
+    return out
 
 
 def _find(raw: Any, ctx: _Ctx, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:

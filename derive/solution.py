@@ -115,6 +115,9 @@ class Solution:
         return render(self, "md")
 
     def _repr_latex_(self) -> str:
-        from derive.render import render
+        """The boxed answers as display math (for front ends that show LaTeX, not Markdown)."""
+        from derive.render import view
 
-        return render(self, "tex-fragment")
+        stages = view(self)["stages"]
+        lines = [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+        return "\n".join(f"$${ln}$$" for ln in lines)

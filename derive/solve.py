@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy
 
+from derive.errors import SolveError
 from derive.impact import Impact, equation_numbers, evaluate, independent_map, setup
 from derive.problem import Problem
 from derive.solution import Block, Eqn, Math, Result, Side, Solution, Stage, Text
@@ -97,6 +98,13 @@ def _results(imp: Impact) -> dict[str, Result]:
             ang = _angle(n, t, p)
             if ang is not None:
                 add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
+                add(
+                    f"beta_{b}2",
+                    sympy.atan2(t, n),
+                    "deg",
+                    f"direction of {b} after the impact, from +n toward +t",
+                    degrees=True,
+                )
         if p.phi is not None:
             for b in "AB":
                 if b == "B" and p.fixed_B:
@@ -172,6 +180,19 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
     if x == 0 and y.is_negative:
         return -sympy.pi / 2
     return sympy.atan2(y, x)
+
+
+def _convert_result(r: Result, unit_text: str) -> sympy.Expr:
+    """A result's value (or closed form) in another unit of the same kind."""
+    from derive import units
+
+    src, dst = units.parse_unit(r.unit if r.unit != "deg" else "deg"), units.parse_unit(unit_text)
+    if src.dim != dst.dim:
+        raise SolveError(
+            f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}",
+        )
+    value = r.value if r.value is not None else r.partial
+    return value * src.factor / dst.factor
 
 
 def _unit(p: Problem, what: str) -> str:
@@ -713,6 +734,12 @@ class _Writer:
             if r is None:
                 continue
             extra.append(self.derived_line(r, boxed=True))
+        for name, unit in p.answer_units.items():
+            r = self.results.get(name)
+            if r is None:
+                raise SolveError(f"answer_units names {name!r}, which is not a result of this problem", where=p.path)
+            converted = _convert_result(r, unit)
+            extra.append(Eqn((Side((r.symbol,)), Side((converted,), "result")), unit=unit, boxed=True))
         if extra:
             blocks.append(Block(("As asked:",), tuple(extra)))
         blocks.append(self.energy())

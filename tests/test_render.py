@@ -106,3 +106,10 @@ def test_user_text_is_escaped_in_every_format(problem_from) -> None:
     md = derive.render(sol, "md")
     assert "<script>" not in md
     assert r"\$x\$" in md
+
+
+def test_jupyter_representations() -> None:
+    sol = derive.solve(derive.load("notes-4c11-two-spheres"))
+    assert sol._repr_markdown_().startswith("# Example 4.C.11")
+    latex = sol._repr_latex_()
+    assert latex.startswith("$$\\boxed{") and r"\hat{e}_{t}" in latex
