@@ -87,8 +87,11 @@ def _structural(expr: sympy.Expr) -> bool:
     if isinstance(expr, sympy.Function) and not isinstance(expr, sympy.Abs):
         return all(ok(a) for a in parts) and not all(a.is_Rational and not _short_decimal(a) for a in parts)
     if isinstance(expr, (sympy.Add, sympy.Mul)):
-        return (all(ok(a) for a in parts) and any(isinstance(a, sympy.Float) or _structural(a) for a in parts)) or (
-            isinstance(expr, sympy.Add) and all(a.is_Rational for a in parts)
+        # SymPy merges the numbers of an evaluated sum or product into one: two
+        # numbers side by side mean it was built unevaluated, to be shown so.
+        numbers = sum(1 for a in parts if a.is_Number)
+        return all(ok(a) for a in parts) and (
+            numbers >= 2 or any(isinstance(a, sympy.Float) or _structural(a) for a in parts)
         )
     return False
 

@@ -570,7 +570,11 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
     if expected is not None and parsed.dim != expected:
         raise err(f"expected {describe(expected)}, but the expression is {describe(parsed.dim)}", UnitError)
     values = {g.symbol: g.value for g in done.values() if g.value is not None}
-    value = parsed.expr.xreplace(values) if values else parsed.expr
+    defined: dict[sympy.Symbol, sympy.Expr] = {}
+    for g in done.values():  # symbolic givens defined from others (r_A = r) resolved, so r/(r_A + r_B) = 1/2
+        if g.value is None and g.definition is not None:
+            defined[g.symbol] = g.definition.xreplace(defined)
+    value = parsed.expr.xreplace(defined).xreplace(values)
     if value.free_symbols:
         value = None
     else:

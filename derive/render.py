@@ -62,7 +62,7 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
     name = latex_name(g.name)
     if g.unknown:
-        return name + " = ?", "unknown: derive finds it"
+        return name + r" = \,?", "unknown: derive finds it"
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
@@ -129,7 +129,12 @@ def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
     if p.question:
         find = [("text", p.question)]
     else:
-        words = "the velocities of A and B immediately after the impact"
+        unknown = [g.name for g in p.givens if g.unknown]
+        words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
+            "the velocity of A immediately after the impact"
+            if p.fixed_B
+            else "the velocities of A and B immediately after the impact"
+        )
         extra_words = [
             _FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
         ]

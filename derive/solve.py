@@ -467,7 +467,7 @@ class _Writer:
         sums = []
         if any(self.has_values(t) for t in g_lhs + g_rhs):
             lines.append(Eqn((Side(g_lhs, "values"), Side(g_rhs, "values"))))
-            lhs_num = tuple(self.num(t) for t in g_lhs)
+            lhs_num = _nonzero(tuple(self.num(t) for t in g_lhs))
             if len(lhs_num) > 1 and all(not t.free_symbols for t in lhs_num):
                 lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values"))))
                 sums.append((lhs_num, sympy.Add(*lhs_num)))

@@ -89,6 +89,7 @@ def _check_results(doc: dict) -> list[str]:
             if not free:
                 problems.append(f"{key}: value is null but expr {r['expr']!r} is the number {sympy.N(expr)}")
             if "value_expr" in r:
+                checked += 1
                 partial = sympy.sympify(r["value_expr"], locals=syms)
                 for probe in PROBES:
                     at = dict.fromkeys(free, probe)
@@ -111,7 +112,7 @@ def _check_results(doc: dict) -> list[str]:
                 break
         checked += 1
     if checked == 0:
-        problems.append("no result had a number to check")
+        problems.append("no result had a number or a value_expr to check")
     return problems
 
 
