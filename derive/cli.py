@@ -13,7 +13,7 @@ from pathlib import Path
 from derive import __version__
 from derive.errors import DeriveError, InputError
 
-FORMATS = ("md", "tex", "pdf", "json")
+FORMATS = ("md", "tex", "pdf", "html", "json")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -38,6 +38,7 @@ def _parser() -> argparse.ArgumentParser:
     p_solve.add_argument(
         "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
     )
+    p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -62,10 +63,10 @@ def _solve(args: argparse.Namespace) -> int:
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
-        data: str | bytes = build_pdf(derive.render(solution, "tex", digits=args.digits))
+        data: str | bytes = build_pdf(derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure))
     else:
         fmt = "tex-fragment" if args.format == "tex" and args.fragment else args.format
-        data = derive.render(solution, fmt, digits=args.digits)
+        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure)
     if args.output:
         write_atomic(args.output, data, inputs=inputs)
     else:

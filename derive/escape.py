@@ -79,6 +79,8 @@ _TEX_UNICODE = {
     "¾": r"\textthreequarters{}",
     "µ": r"\textmu{}",
     "`": r"\textasciigrave{}",
+    "'": r"\textquotesingle{}",
+    '"': r"{\ttfamily\char34}",  # a straight double quote in any font encoding
 }
 for _i, _name in enumerate(_GREEK):
     if _name == "omicron":

@@ -14,7 +14,7 @@ from typing import Any
 import jinja2
 import sympy
 
-from derive import escape
+from derive import escape, figure
 from derive.errors import InputError
 from derive.numbers import format_number
 from derive.printing import StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
@@ -24,7 +24,7 @@ from derive.solution import Math, Solution
 from derive.symbols import latex_name
 from derive.units import latex_unit, plain_unit
 
-FORMATS = ("md", "tex", "tex-fragment", "json")
+FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
 
 
@@ -102,8 +102,9 @@ _FIND_WORDS = {
 }
 
 
-def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
-    """The data a template needs: every formula already printed as LaTeX."""
+def view(solution: Solution, digits: int | None = None, figures: bool = True) -> dict[str, Any]:
+    """The data a template needs: every formula already printed as LaTeX, and the
+    figures of stage 1 and of the answer as SVG and TikZ."""
     p = solution.problem
     style = Style(digits if digits is not None else p.digits, 1, solution.values, solution.angles)
     stages = []
@@ -124,7 +125,13 @@ def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
                     ("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text
                 ]
             blocks.append({"text": text, "lines": lines})
-        stages.append({"number": stage.number, "title": stage.title, "blocks": blocks})
+        entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
+        if figures and stage.number in (1, 4):
+            fig = figure.describe(solution, after=stage.number == 4)
+            entry["figure_svg"] = figure.to_svg(fig)
+            entry["figure_tikz"] = figure.to_tikz(fig)
+            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+        stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
         find = [("text", p.question)]
@@ -151,6 +158,45 @@ def view(solution: Solution, digits: int | None = None) -> dict[str, Any]:
         "stages": stages,
         "system": p.system,
     }
+
+
+def _html(data: dict[str, Any]) -> str:
+    """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
+    from derive import html as html_mod
+
+    items: list[tuple[str, bool]] = []
+
+    def slot(tex: str, display: bool) -> int:
+        items.append((tex, display))
+        return len(items) - 1
+
+    for g in data["givens"]:
+        g["slot"] = slot(g["latex"], False)
+    for stage in data["stages"]:
+        for block in stage["blocks"]:
+            if block["text"]:
+                block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"]]
+            for line in block["lines"]:
+                line["slot"] = slot(line["latex"], True)
+    rendered = html_mod.render_math(items)
+    if rendered is None:  # no Node.js: the page typesets itself, offline, with the inlined script
+        rendered = [
+            f'<span class="math{" display" if disp else ""}">{escape.html_text(tex)}</span>' for tex, disp in items
+        ]
+        script = html_mod.katex_script()
+    else:
+        script = ""
+    for g in data["givens"]:
+        g["html"] = rendered[g.pop("slot")]
+    for stage in data["stages"]:
+        stage["figure"] = stage.get("figure_svg", "")
+        for block in stage["blocks"]:
+            if block["text"]:
+                block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
+            for line in block["lines"]:
+                line["html"] = rendered[line.pop("slot")]
+    data["find"] = [("text", s_) if k == "text" else ("math", s_) for k, s_ in data["find"]]
+    return _env("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
 
 
 def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
@@ -214,11 +260,12 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
     return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
 
 
-def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) -> str:
-    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment' or 'json'.
+def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
     ``digits`` overrides the significant figures (default: the problem's, else
-    the textbook rule). For a PDF see :func:`derive.pdf.build_pdf`.
+    the textbook rule); ``figures`` False leaves the figures out. For a PDF see
+    :func:`derive.pdf.build_pdf`.
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
@@ -226,7 +273,9 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None) ->
         return to_json(solution, digits)
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    data = view(solution, digits)
+    data = view(solution, digits, figures)
+    if fmt == "html":
+        return _html(data)
     if fmt == "md":
         return _env("md").get_template("solution.md.j2").render(**data)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
