@@ -25,6 +25,31 @@ PRECISION = 30
 
 
 @dataclass(frozen=True)
+class Slot:
+    """A number left open when a solution is compiled for many variants: ``expr`` in
+    the varied givens, printed as ``kind`` says at ``digits``(+``extra``) figures or
+    with its block's places after the point."""
+
+    expr: sympy.Expr
+    kind: str  # given | number | result | lead | signed | leadcoef | signedcoef
+    digits: int | None
+    extra: int
+    block: int | None
+
+
+class SlotBook:
+    """Collects the open numbers of a compiled solution; each prints as a token."""
+
+    def __init__(self) -> None:
+        self.slots: list[Slot] = []
+        self.claims: dict[int, list[tuple[tuple[sympy.Expr, ...], sympy.Expr]]] = {}
+
+    def token(self, expr: sympy.Expr, kind: str, digits: int | None, extra: int, block: int | None) -> str:
+        self.slots.append(Slot(expr, kind, digits, extra, block))
+        return f"DRVSLOT{len(self.slots) - 1}X"
+
+
+@dataclass(frozen=True)
 class Style:
     """How numbers print: the answer's figures (None: textbook rule) and the extra
     figures intermediates carry; ``values`` and ``angles`` feed substitution lines."""
@@ -34,6 +59,9 @@ class Style:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
     decimals: int | None = None
+    varied: frozenset[sympy.Symbol] = frozenset()
+    slots: SlotBook | None = field(default=None, compare=False)
+    block: int | None = None
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -94,6 +122,21 @@ def _structural(expr: sympy.Expr) -> bool:
             numbers >= 2 or any(isinstance(a, sympy.Float) or _structural(a) for a in parts)
         )
     return False
+
+
+def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with ``values`` put in, its structure kept (no re-evaluation: 5(x + 2)
+    stays 5(x + 2) instead of becoming 5x + 10)."""
+    if not values or not (expr.free_symbols & set(values)):
+        return expr
+    if isinstance(expr, sympy.Symbol):
+        return values.get(expr, expr)
+    if expr.is_Atom:
+        return expr
+    args = [substitute(a, values) for a in expr.args]
+    if isinstance(expr, (sympy.Add, sympy.Mul, sympy.Pow)):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
 
 
 def is_negative_term(expr: sympy.Expr) -> bool:
@@ -183,8 +226,16 @@ class StepPrinter(LatexPrinter):
         round_integers: bool = False,
         decimals: int | None = None,
         decimal_rationals: bool = False,
+        slots: SlotBook | None = None,
+        varied: frozenset[sympy.Symbol] = frozenset(),
+        slot_kind: str = "number",
+        block: int | None = None,
     ) -> None:
         super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._slots = slots
+        self._varied = varied
+        self._slot_kind = slot_kind
+        self._block = block
         self._values = dict(values or {})
         self._cancel = cancel
         self._digits = digits
@@ -192,6 +243,15 @@ class StepPrinter(LatexPrinter):
         self._round_integers = round_integers
         self._decimals = decimals
         self._decimal_rationals = decimal_rationals
+
+    def _print(self, expr, **kwargs) -> str:
+        """A part that depends only on varied givens becomes an open number (a slot)."""
+        if self._slots is not None and isinstance(expr, sympy.Expr) and not expr.is_Number:
+            free = expr.free_symbols
+            if free and free <= self._varied and (self._slot_kind != "given" or isinstance(expr, sympy.Symbol)):
+                kind = self._slot_kind
+                return self._slots.token(expr, kind, self._digits, self._extra, self._block)
+        return super()._print(expr, **kwargs)
 
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
         if expr in self._values:
@@ -223,9 +283,20 @@ class StepPrinter(LatexPrinter):
         if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
             terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
         for i, term in enumerate(terms):
+            if (
+                self._slots is not None
+                and self._slot_kind != "given"
+                and term.free_symbols
+                and term.free_symbols <= self._varied
+            ):
+                role = "lead" if i == 0 else "signed"
+                out += self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block)
+                continue
             if is_negative_term(term):
                 s = self._print(negate(term))
                 s = self._paren_if_sum(negate(term), s)
+                if s.startswith("-"):
+                    s = r"\left(" + s + r"\right)"
                 out += ("-" if i == 0 else " - ") + s
             else:
                 s = self._print(term)
@@ -246,7 +317,7 @@ class StepPrinter(LatexPrinter):
                 s = self._print(inner)
                 return "-" + (r"\left(" + s + r"\right)" if isinstance(inner, sympy.Add) else s)
         num, den = [], []
-        for a in sorted(expr.args, key=_factor_key):
+        for a in sorted(expr.args, key=lambda a: 0 if self._open(a) else _factor_key(a)):
             if (
                 isinstance(a, sympy.Rational)
                 and not a.is_Integer
@@ -266,7 +337,19 @@ class StepPrinter(LatexPrinter):
             return r"\frac{" + top + "}{" + bottom + "}"
         return self._join(num)
 
+    def _open(self, a: sympy.Expr) -> bool:
+        """True for a part that becomes an open number (a homework variant's slot)."""
+        return (
+            self._slots is not None
+            and self._slot_kind != "given"
+            and isinstance(a, sympy.Expr)
+            and bool(a.free_symbols)
+            and a.free_symbols <= self._varied
+        )
+
     def _numberish(self, a: sympy.Expr) -> bool:
+        if self._slots is not None and isinstance(a, sympy.Expr) and a.free_symbols and a.free_symbols <= self._varied:
+            return True
         return a.is_Number or a in self._values or (isinstance(a, sympy.Pow) and a.base in self._values)
 
     def _join(self, factors: list[sympy.Expr], bare: bool = False) -> str:
@@ -276,7 +359,7 @@ class StepPrinter(LatexPrinter):
         prev = None
         for a in factors:
             s = self._print(a)
-            if isinstance(a, sympy.Add) or (prev is not None and s.startswith("-")):
+            if (isinstance(a, sympy.Add) and not self._open(a)) or (prev is not None and s.startswith("-")):
                 s = r"\left(" + s + r"\right)"
             if prev is None:
                 out = s
@@ -323,22 +406,40 @@ def latex_expr(
     expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
 ) -> str:
     """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
+    book, varied = style.slots, style.varied
     if mode == "symbolic":
         return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
     if mode == "values":
         vals = values_map(style, style.digits, extra, expr.free_symbols)
-        return StepPrinter(vals, cancel, style.digits, extra, decimal_rationals=True).doprint(expr)
-    if mode == "numeric":
-        expr = expr.xreplace(dict(style.values))
         printer = StepPrinter(
-            cancel=cancel, digits=style.digits, extra=extra, decimals=style.decimals, decimal_rationals=True
+            vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
+        )
+        return printer.doprint(expr)
+    if mode == "numeric":
+        expr = substitute(expr, style.values)
+        printer = StepPrinter(
+            cancel=cancel,
+            digits=style.digits,
+            extra=extra,
+            decimals=style.decimals,
+            decimal_rationals=True,
+            slots=book,
+            varied=varied,
+            block=style.block,
         )
         return printer.doprint(floatify(expr))
     if mode == "result":
-        expr = expr.xreplace(dict(style.values))
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True).doprint(
-            floatify(expr, keep_integers=False)
+        expr = substitute(expr, style.values)
+        printer = StepPrinter(
+            cancel=cancel,
+            digits=style.digits,
+            extra=0,
+            round_integers=True,
+            slots=book,
+            varied=varied,
+            slot_kind="result",
         )
+        return printer.doprint(floatify(expr, keep_integers=False))
     raise ValueError(mode)
 
 
@@ -347,11 +448,16 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     out = ""
     for i, term in enumerate(side.terms):
         if side.mode in ("numeric", "result"):
-            term = term.xreplace(dict(style.values))
+            term = substitute(term, style.values)
             if term.is_number and not _structural(term):
                 term = floatify(term, keep_integers=side.mode == "numeric")
                 if term == 0:
                     term = sympy.Integer(0)
+            if style.slots is not None and term.free_symbols & style.varied:
+                token = _slot_term(term, side.mode, style, extra, cancel, first=i == 0)
+                if token is not None:
+                    out += token
+                    continue
         neg = is_negative_term(term)
         body = negate(term) if neg else term
         s = latex_expr(body, side.mode, style, extra, cancel)
@@ -372,12 +478,33 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
 _UNITLESS = {sympy.Symbol(f"vec:e_{a}", commutative=True) for a in "tnxy"}
 
 
+def _slot_term(
+    term: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol], first: bool
+) -> str | None:
+    """A term whose number (or coefficient) depends on varied givens: its sign is
+    known only per variant, so the slot prints the sign too."""
+    assert style.slots is not None
+    others = term.free_symbols - style.varied
+    if isinstance(term, sympy.Mul) and any(isinstance(a, sympy.Add) for a in term.args) and others:
+        return None  # a product with a sum in it: the printer leaves open the parts inside
+    digits, ext = style.digits, (0 if mode == "result" else extra)
+    kind = "result" if mode == "result" else "number"
+    if not others:
+        return style.slots.token(term, ("lead" if first else "signed") + ":" + kind, digits, ext, style.block)
+    coeff, rest = term.as_independent(*others, as_Add=False)
+    if not (coeff.free_symbols & style.varied):
+        return None
+    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
+    printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True)
+    return token + " " + printer.doprint(rest)
+
+
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
     body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
-        t.xreplace(dict(style.values)).free_symbols - _UNITLESS for t in last.terms
+        t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
     )
     if eqn.unit and not symbolic:
         body += (
@@ -398,6 +525,17 @@ def block_style(block: Block, style: Style) -> Style:
     terms add up to the rounded total (79.23 - 59.42 = 19.81)."""
     if not block.sums:
         return style
+    if style.slots is not None and any(
+        (t.xreplace(dict(style.values)).free_symbols & style.varied)
+        for terms, total in block.sums
+        for t in (*terms, total)
+    ):
+        block_id = len(style.slots.claims)
+        style.slots.claims[block_id] = [
+            (tuple(t.xreplace(dict(style.values)) for t in terms), total.xreplace(dict(style.values)))
+            for terms, total in block.sums
+        ]
+        return replace(style, block=block_id)
     numbers = [floatify(x, keep_integers=False) for terms, total in block.sums for x in (*terms, total)]
     biggest = max((abs(n) for n in numbers if n.is_Number), default=sympy.Integer(1))
     start = decimals_of(format_number(biggest, style.digits, extra=style.extra)) if biggest != 0 else 2

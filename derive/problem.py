@@ -35,6 +35,8 @@ TOP_FIELDS = (
     "given",
     "geometry",
     "answer_units",
+    "vary",
+    "conditions",
     "A",
     "B",
 )
@@ -136,6 +138,16 @@ class Motion:
 
 
 @dataclass(frozen=True)
+class Condition:
+    """A condition every homework variant must meet, such as ``v_B2n > 0``."""
+
+    text: str
+    lhs: sympy.Expr
+    op: str
+    rhs: sympy.Expr
+
+
+@dataclass(frozen=True)
 class Problem:
     """A central-impact problem, checked and ready for the equations."""
 
@@ -156,6 +168,8 @@ class Problem:
     name_B: str | None = None
     phi: sympy.Symbol | None = None
     answer_units: Mapping[str, str] = field(default_factory=dict)
+    vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)
+    conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
 
     @property
@@ -439,6 +453,8 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         name_B=body_tbls["B"].get("name"),
         phi=phi,
         answer_units=_answer_units(data.get("answer_units"), ctx),
+        vary=_vary(data.get("vary"), by_name, ctx, oblique, system),
+        conditions=_conditions(data.get("conditions"), by_name, ctx),
     )
     _check_approach(problem, ctx)
     return problem
@@ -844,6 +860,83 @@ def _motion(
     n = sum((c if ax == "+n" else -c) for ax, c in comps.items() if ax[1] == "n")
     t = sum((c if ax == "+t" else -c) for ax, c in comps.items() if ax[1] == "t")
     return Motion(b, sympy.sympify(n), sympy.sympify(t), speed=v, angle=th, axis_from=axis_from, toward=toward), extra
+
+
+MAX_CHOICES = 100_000
+_CONDITION = re.compile(r"^(.*?)(<=|>=|<|>)(.*)$")
+#: Dimension of each result name, for conditions on results.
+RESULT_DIMS: dict[str, Dim] = {
+    **dict.fromkeys(("v_A2", "v_B2", "v_A2n", "v_A2t", "v_B2n", "v_B2t", "v_A2x", "v_A2y", "v_B2x", "v_B2y"), VELOCITY),
+    **dict.fromkeys(("theta_A2", "theta_B2", "beta_A2", "beta_B2"), ANGLE),
+    **dict.fromkeys(("T_1", "T_2", "T_lost"), units.ENERGY),
+    "J_n": units.IMPULSE,
+}
+
+
+def _vary(
+    raw: Any, by_name: dict[str, Given], ctx: _Ctx, oblique: bool, system: str
+) -> dict[str, tuple[sympy.Expr, ...]]:
+    """Ranges or choices for homework variants: { m_A = { min = "2 kg", max = "10 kg", step = "0.5 kg" } }."""
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise ctx.error("expected a table of ranges or choices", key="vary")
+    out: dict[str, tuple[sympy.Expr, ...]] = {}
+    for name, spec in raw.items():
+        g = by_name.get(name)
+        if g is None or g.value is None or g.unknown or g.definition is not None:
+            raise ctx.error("only a given with a plain number can vary", section="vary", key=name)
+        if not isinstance(spec, dict) or not ({"choices"} == set(spec) or {"min", "max", "step"} == set(spec)):
+            raise ctx.error(
+                "expected { min = ..., max = ..., step = ... } or { choices = [...] }", section="vary", key=name
+            )
+
+        def value(v: Any, field_: str) -> sympy.Expr:
+            try:
+                item = _given(name, v, {}, ctx, oblique, system)
+            except InputError as exc:
+                raise ctx.error(exc.what, section="vary", key=f"{name}.{field_}", value=v, cls=type(exc)) from None
+            if item.dim != g.dim or item.value is None:
+                raise ctx.error(f"expected {describe(g.dim)}", section="vary", key=f"{name}.{field_}", value=v)
+            return item.value
+
+        if "choices" in spec:
+            if not isinstance(spec["choices"], list) or not spec["choices"]:
+                raise ctx.error("expected a list of values", section="vary", key=name)
+            values = tuple(value(v, "choices") for v in spec["choices"])
+        else:
+            lo, hi, step = (value(spec[k], k) for k in ("min", "max", "step"))
+            if not step > 0 or hi < lo:
+                raise ctx.error("expected min <= max and a positive step", section="vary", key=name)
+            count = int(sympy.floor((hi - lo) / step)) + 1
+            if count > MAX_CHOICES:
+                raise ctx.error(f"gives {count} values (at most {MAX_CHOICES})", section="vary", key=name)
+            values = tuple(lo + k * step for k in range(count))
+        out[name] = tuple(dict.fromkeys(sympy.nsimplify(v) if v.is_Float else v for v in values))
+    return out
+
+
+def _conditions(raw: Any, by_name: Mapping[str, Given], ctx: _Ctx) -> tuple[Condition, ...]:
+    """Conditions on givens and results, each "lhs < rhs" (< <= > >=), parsed safely."""
+    if raw is None:
+        return ()
+    if not isinstance(raw, list) or not all(isinstance(c, str) for c in raw):
+        raise ctx.error('expected a list of conditions such as ["v_B2n > 0"]', key="conditions")
+    names = {g.name: (g.symbol, g.dim) for g in by_name.values()}
+    names.update({n: (symbol(n), d) for n, d in RESULT_DIMS.items()})
+    out = []
+    for text in raw:
+        m = _CONDITION.match(text)
+        if not m:
+            raise ctx.error("expected a comparison with <, <=, > or >=", key="conditions", value=text)
+        try:
+            lhs, rhs = parse(m.group(1).strip(), names), parse(m.group(3).strip(), names)
+        except ParseError as exc:
+            raise ctx.error(str(exc), key="conditions", value=text, cls=ExpressionError) from None
+        if lhs.dim != rhs.dim and rhs.expr != 0 and lhs.expr != 0:
+            raise ctx.error(f"compares {describe(lhs.dim)} with {describe(rhs.dim)}", key="conditions", value=text)
+        out.append(Condition(text, lhs.expr, m.group(2), rhs.expr))
+    return tuple(out)
 
 
 def _answer_units(raw: Any, ctx: _Ctx) -> dict[str, str]:

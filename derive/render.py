@@ -8,6 +8,7 @@ A renderer never does physics.
 from __future__ import annotations
 
 import json
+import re
 from functools import cache
 from typing import Any
 
@@ -16,8 +17,8 @@ import sympy
 
 from derive import escape, figure
 from derive.errors import InputError
-from derive.numbers import format_number
-from derive.printing import StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
+from derive.numbers import format_number, to_decimal
+from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
 from derive.problem import Given
 from derive.resources import templates_dir
 from derive.solution import Math, Solution
@@ -63,6 +64,16 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     name = latex_name(g.name)
     if g.unknown:
         return name + r" = \,?", "unknown: derive finds it"
+    if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
+        token = style.slots.token(g.symbol, "given", style.digits, 1, None)
+        tail = r"^\circ" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")
+        return f"{name} = {token}{tail}", ""
+    if style.slots is not None and g.value is None and g.definition is not None:
+        if g.definition.free_symbols & style.varied:  # defined from a varied given (m_A = W_A/g)
+            parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
+            value = latex_expr(g.definition, "numeric", style, 1)
+            unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
+            return " = ".join([*parts, value]) + unit, ""
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
@@ -91,6 +102,29 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     return " = ".join(parts), ""
 
 
+def _statement(p, style: Style) -> str | None:
+    """The statement with each ``{name}`` replaced by that given's value and unit."""
+    if not p.statement:
+        return p.statement
+    by_name = {g.name: g for g in p.givens}
+
+    def one(m: re.Match[str]) -> str:
+        g = by_name.get(m.group(1))
+        if g is None:
+            return m.group(0)
+        if style.slots is not None and g.symbol in style.varied:
+            token = style.slots.token(g.symbol, "text", style.digits, 1, None)
+            return token + ("°" if g.unit == "deg" else (" " + plain_unit(g.unit) if g.unit else ""))
+        if g.value is None:
+            return g.name
+        if g.unit == "deg":
+            return format(to_decimal(sympy.nsimplify(g.value * 180 / sympy.pi)).normalize(), "f") + "°"
+        text = exact_latex(g.value, style.digits, 1)
+        return text + (" " + plain_unit(g.unit) if g.unit else "")
+
+    return re.sub(r"\{([A-Za-z][A-Za-z0-9_]*)\}", one, p.statement)
+
+
 _FIND_WORDS = {
     "v_A2": "the speed of A",
     "v_B2": "the speed of B",
@@ -102,11 +136,24 @@ _FIND_WORDS = {
 }
 
 
-def view(solution: Solution, digits: int | None = None, figures: bool = True) -> dict[str, Any]:
+def view(
+    solution: Solution,
+    digits: int | None = None,
+    figures: bool = True,
+    *,
+    slots: SlotBook | None = None,
+    varied: frozenset[sympy.Symbol] = frozenset(),
+) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
-    figures of stage 1 and of the answer as SVG and TikZ."""
+    figures of stage 1 and of the answer as SVG and TikZ.
+
+    With ``slots``, every number that depends on a ``varied`` given is left open
+    (a token), so that one compiled page serves every homework variant.
+    """
     p = solution.problem
-    style = Style(digits if digits is not None else p.digits, 1, solution.values, solution.angles)
+    style = Style(
+        digits if digits is not None else p.digits, 1, solution.values, solution.angles, varied=varied, slots=slots
+    )
     stages = []
     for stage in solution.stages:
         blocks = []
@@ -152,7 +199,7 @@ def view(solution: Solution, digits: int | None = None, figures: bool = True) ->
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
-        "statement": p.statement,
+        "statement": _statement(p, style),
         "find": find,
         "givens": givens,
         "stages": stages,

@@ -237,6 +237,8 @@ class _Writer:
         self.collected_eqs: dict[int, sympy.Expr] = {}
         self.shown: set[sympy.Symbol] = set()
         self.surface = self.p.name_B or "surface"
+        # homework variants: givens left symbolic only to be filled in later count as numbers
+        self.varied = {g.symbol for g in self.p.givens if g.name in self.p.vary}
 
     # helpers -----------------------------------------------------------
     def givens(self, expr: sympy.Expr) -> sympy.Expr:
@@ -248,7 +250,7 @@ class _Writer:
 
     def has_values(self, expr: sympy.Expr) -> bool:
         keep = {c for _, comps in _xy_motions(self.imp) for c in comps}
-        return bool(expr.free_symbols & (set(self.numeric) | keep))
+        return bool(expr.free_symbols & (set(self.numeric) | keep | self.varied))
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
         return evaluate(expr.xreplace(self.imp.pre), self.p)
@@ -303,7 +305,7 @@ class _Writer:
         if not p.oblique:
             lines = []
             for s_ in (self.nm.A1n,) + (() if p.fixed_B else (self.nm.B1n,)):
-                if s_ in self.numeric:
+                if s_ in self.numeric or s_ in self.varied:
                     lines.append(Eqn((Side((s_,)), Side((s_,), "result")), unit=self.unit_v))
             blocks.append(
                 Block(("The impact is direct: every velocity lies along n and is signed along +n.",), tuple(lines))
@@ -715,7 +717,9 @@ class _Writer:
         symbolic = [
             r
             for r in self.results.values()
-            if r.value is None and r.name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")
+            if r.value is None
+            and r.partial.free_symbols - self.varied
+            and r.name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")
         ]
         if symbolic:
             lines = []
@@ -805,7 +809,7 @@ class _Writer:
             r = self.results[name]
             sides = [Side((r.symbol,)), Side(terms)]
             if r.value is None:
-                if r.closed != r.partial:
+                if r.closed != r.partial and r.partial.free_symbols - self.varied:
                     sides.append(Side((r.closed,)))
                 sides.append(Side((r.partial,), "result"))
             else:
