@@ -891,7 +891,7 @@ def _vary(
                 "expected { min = ..., max = ..., step = ... } or { choices = [...] }", section="vary", key=name
             )
 
-        def value(v: Any, field_: str) -> sympy.Expr:
+        def value(v: Any, field_: str, name: str = name, g: Given = g) -> sympy.Expr:
             try:
                 item = _given(name, v, {}, ctx, oblique, system)
             except InputError as exc:

@@ -68,12 +68,16 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
         token = style.slots.token(g.symbol, "given", style.digits, 1, None)
         tail = r"^\circ" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")
         return f"{name} = {token}{tail}", ""
-    if style.slots is not None and g.value is None and g.definition is not None:
-        if g.definition.free_symbols & style.varied:  # defined from a varied given (m_A = W_A/g)
-            parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
-            value = latex_expr(g.definition, "numeric", style, 1)
-            unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
-            return " = ".join([*parts, value]) + unit, ""
+    if (
+        style.slots is not None
+        and g.value is None
+        and g.definition is not None
+        and g.definition.free_symbols & style.varied
+    ):  # defined from a varied given (m_A = W_A/g)
+        parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
+        value = latex_expr(g.definition, "numeric", style, 1)
+        unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
+        return " = ".join([*parts, value]) + unit, ""
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
