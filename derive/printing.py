@@ -162,6 +162,16 @@ def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
 
     Structure (the order of terms, unexpanded products) is kept.
     """
+    if isinstance(expr, sympy.UnevaluatedExpr):  # shown as built: (19.81 - 5 · 9.507)/25
+        inner = expr.args[0]
+        if inner.is_Atom:
+            return floatify(inner, keep_integers)
+        if isinstance(inner, sympy.Pow):
+            return sympy.UnevaluatedExpr(sympy.Pow(floatify(inner.base, keep_integers), inner.exp, evaluate=False))
+        kept = [floatify(a, keep_integers) for a in inner.args]
+        if isinstance(inner, (sympy.Add, sympy.Mul)):
+            return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
+        return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
     if expr.is_Integer and keep_integers:
         return expr
     if expr.is_Number:
@@ -246,6 +256,8 @@ class StepPrinter(LatexPrinter):
 
     def _print(self, expr, **kwargs) -> str:
         """A part that depends only on varied givens becomes an open number (a slot)."""
+        if isinstance(expr, sympy.UnevaluatedExpr):  # a display structure: its own node printed, its parts open
+            return super()._print(expr.args[0], **kwargs)
         if self._slots is not None and isinstance(expr, sympy.Expr) and not expr.is_Number:
             free = expr.free_symbols
             if free and free <= self._varied and (self._slot_kind != "given" or isinstance(expr, sympy.Symbol)):
@@ -315,9 +327,10 @@ class StepPrinter(LatexPrinter):
             inner = negate(expr)
             if inner != expr:
                 s = self._print(inner)
-                return "-" + (r"\left(" + s + r"\right)" if isinstance(inner, sympy.Add) else s)
+                wrap = isinstance(inner, sympy.Add) or s.startswith("-")
+                return "-" + (r"\left(" + s + r"\right)" if wrap else s)
         num, den = [], []
-        for a in sorted(expr.args, key=lambda a: 0 if self._open(a) else _factor_key(a)):
+        for a in sorted(expr.args, key=lambda a: 0 if self._open(a) or self._numberish(a) else _factor_key(a)):
             if (
                 isinstance(a, sympy.Rational)
                 and not a.is_Integer
@@ -484,8 +497,12 @@ def _slot_term(
     """A term whose number (or coefficient) depends on varied givens: its sign is
     known only per variant, so the slot prints the sign too."""
     assert style.slots is not None
+    if isinstance(term, sympy.UnevaluatedExpr):
+        return None  # a display structure: its parts are left open, not the whole
     others = term.free_symbols - style.varied
-    if isinstance(term, sympy.Mul) and any(isinstance(a, sympy.Add) for a in term.args) and others:
+    if isinstance(term, sympy.Mul) and any(
+        isinstance(a, sympy.Add) and a.free_symbols - style.varied for a in term.args
+    ):
         return None  # a product with a sum in it: the printer leaves open the parts inside
     digits, ext = style.digits, (0 if mode == "result" else extra)
     kind = "result" if mode == "result" else "number"

@@ -933,7 +933,7 @@ def _conditions(raw: Any, by_name: Mapping[str, Given], ctx: _Ctx) -> tuple[Cond
             lhs, rhs = parse(m.group(1).strip(), names), parse(m.group(3).strip(), names)
         except ParseError as exc:
             raise ctx.error(str(exc), key="conditions", value=text, cls=ExpressionError) from None
-        if lhs.dim != rhs.dim and rhs.expr != 0 and lhs.expr != 0:
+        if lhs.dim != rhs.dim and lhs.expr.free_symbols and rhs.expr.free_symbols:
             raise ctx.error(f"compares {describe(lhs.dim)} with {describe(rhs.dim)}", key="conditions", value=text)
         out.append(Condition(text, lhs.expr, m.group(2), rhs.expr))
     return tuple(out)

@@ -64,6 +64,7 @@ def _results(imp: Impact) -> dict[str, Result]:
     out: dict[str, Result] = {}
     unit_v = _unit(p, "velocity")
     solved = dict(imp.closed)
+    varied = {g.symbol for g in p.givens if g.name in p.vary}
 
     def full(expr: sympy.Expr) -> sympy.Expr:
         """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
@@ -71,7 +72,9 @@ def _results(imp: Impact) -> dict[str, Result]:
 
     def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
         partial = evaluate(closed, p)
-        if partial.free_symbols and sympy.count_ops(partial) < 150:
+        # simplify what stays symbolic for the reader; a homework variant's givens are
+        # numbers later, so their expressions need no simplifying
+        if partial.free_symbols - varied and sympy.count_ops(partial) < 150:
             partial = sympy.simplify(partial)
         if degrees and partial.free_symbols and isinstance(partial, sympy.atan2):
             partial = _atan2_number(*partial.args)
@@ -148,6 +151,11 @@ def _results(imp: Impact) -> dict[str, Result]:
     J = -m_A * (full(nm.A2n) - full(nm.A1n))
     add("J_n", sympy.factor_terms(J), _unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
     return out
+
+
+def _show(expr: sympy.Expr) -> sympy.Expr:
+    """Mark a display structure of numbers (a fraction, a root) to be printed as built."""
+    return sympy.UnevaluatedExpr(expr)
 
 
 def _f(x: sympy.Expr) -> sympy.Expr:
@@ -470,7 +478,7 @@ class _Writer:
         if any(self.has_values(t) for t in g_lhs + g_rhs):
             lines.append(Eqn((Side(g_lhs, "values"), Side(g_rhs, "values"))))
             lhs_num = _nonzero(tuple(self.num(t) for t in g_lhs))
-            if len(lhs_num) > 1 and all(not t.free_symbols for t in lhs_num):
+            if len(lhs_num) > 1 and all(not (t.free_symbols - self.varied) for t in lhs_num):
                 lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values"))))
                 sums.append((lhs_num, sympy.Add(*lhs_num)))
         terms, const = self.collected(sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
@@ -595,7 +603,7 @@ class _Writer:
                         (
                             Side((x,)),
                             Side(
-                                (sympy.Mul(frac_num, sympy.Pow(_f(a + b), -1, evaluate=False), evaluate=False),),
+                                (_show(sympy.Mul(frac_num, sympy.Pow(_f(a + b), -1, evaluate=False), evaluate=False)),),
                                 "numeric",
                             ),
                             Side((xv,), "result"),
@@ -610,7 +618,7 @@ class _Writer:
             Block(
                 ("Back into (4):",),
                 (Eqn((Side((y,)), Side((xv, k), "numeric"), Side((yv,), "result")), unit=self.unit_v),),
-                (((xv, k), yv),) if not (xv.free_symbols or yv.free_symbols) else (),
+                (((xv, k), yv),) if not ((xv.free_symbols | yv.free_symbols) - self.varied) else (),
             )
         )
         return blocks
@@ -643,7 +651,7 @@ class _Writer:
                 app = sympy.Add(*_nonzero(tuple(self.givens(t) for t in (nm.A1n, -nm.B1n))), evaluate=False)
                 frac = sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False)
                 sides.append(Side((frac,)))
-                sides.append(Side((self.substituted(frac, known),), "numeric"))
+                sides.append(Side((_show(self.substituted(frac, known)),), "numeric"))
             sides.append(Side((self.value_of(u),), "result"))
             why = self.root_reason(u)
             text: Text = (f"From ({k}):" + (f" {why}" if why else ""),)
@@ -678,7 +686,7 @@ class _Writer:
     def sum_check(self, terms: tuple[sympy.Expr, ...]) -> tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...]:
         """The sum claim for a line of numeric terms (none when a symbol remains)."""
         nums = tuple(self.num(t) for t in terms)
-        if any(t.free_symbols for t in nums):
+        if any(t.free_symbols - self.varied for t in nums):
             return ()
         return ((nums, sympy.Add(*nums)),)
 
@@ -759,21 +767,28 @@ class _Writer:
             if r.name.startswith("v"):
                 form = sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False)
                 shown = None
-                if not (nv.free_symbols or tv.free_symbols):
-                    shown = sympy.Pow(
-                        sympy.Add(
-                            sympy.Pow(_f(tv), 2, evaluate=False), sympy.Pow(_f(nv), 2, evaluate=False), evaluate=False
-                        ),
-                        sympy.Rational(1, 2),
-                        evaluate=False,
+                if not ((nv.free_symbols | tv.free_symbols) - self.varied):
+                    shown = _show(
+                        sympy.Pow(
+                            sympy.Add(
+                                sympy.Pow(_f(tv), 2, evaluate=False),
+                                sympy.Pow(_f(nv), 2, evaluate=False),
+                                evaluate=False,
+                            ),
+                            sympy.Rational(1, 2),
+                            evaluate=False,
+                        )
                     )
             else:
                 form = sympy.atan(sympy.Mul(n, sympy.Pow(t, -1, evaluate=False), evaluate=False), evaluate=False)
                 shown = None
-                ratio = sympy.simplify(nv / tv) if tv != 0 else None
-                if ratio is not None and ratio.is_number and not (nv.free_symbols or tv.free_symbols):
-                    shown = sympy.atan(
-                        sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False
+                numeric = not ((nv.free_symbols | tv.free_symbols) - self.varied)
+                ratio = None if tv == 0 or numeric else sympy.simplify(nv / tv)
+                if numeric and tv != 0:
+                    shown = _show(
+                        sympy.atan(
+                            sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False
+                        )
                     )
                 elif ratio is not None and ratio.is_number:
                     shown = sympy.atan(_f(ratio), evaluate=False)

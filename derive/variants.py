@@ -317,3 +317,112 @@ def iterate(
     """Each variant with its page, one at a time (nothing kept in memory)."""
     for v in variants:
         yield v, fill(compiled, v, fmt, digits)
+
+
+# ------------------------------------------------------------------ writing
+
+
+def _progress(done: int, total: int) -> None:
+    """A progress bar on stderr, only on a terminal."""
+    import sys
+
+    if not sys.stderr.isatty():
+        return
+    width = 30
+    filled = int(width * done / total)
+    sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
+    if done == total:
+        sys.stderr.write("\n")
+    sys.stderr.flush()
+
+
+def write_variants(
+    problem: Problem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
+) -> list[str]:
+    """Draw ``count`` variants and write each (statement and worked solution) and the
+    answer key (key.csv, key.json) into ``out_dir``, one file at a time.
+
+    Returns the one-line errors of the variants that could not be written (a PDF
+    that did not compile); the others are written all the same.
+    """
+    import csv
+    import json
+    import os
+    import tempfile
+    import textwrap
+    from pathlib import Path
+
+    from derive.errors import DeriveError
+
+    folder = Path(out_dir)
+    if folder.exists() and not folder.is_dir():
+        raise InputError("exists and is not a folder", where=str(folder), field="-o")
+    folder.mkdir(parents=True, exist_ok=True)
+    compiled = compile_problem(problem, digits, fmt)
+    chosen = draw(compiled, count, seed)
+    width = max(2, len(str(count)))
+    failures: list[str] = []
+    names = list(compiled.names)
+    result_names: list[str] = []
+    # The answer key is streamed to temporary files and renamed at the end, so
+    # memory stays flat however many variants are drawn, and no key is half-written.
+    csv_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.csv.", suffix=".tmp", delete=False, newline="")  # noqa: SIM115
+    json_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.json.", suffix=".tmp", delete=False)  # noqa: SIM115
+    try:
+        with csv_tmp, json_tmp:
+            writer = csv.writer(csv_tmp, lineterminator="\n")
+            head = {"title": problem.title, "source": problem.source, "seed": seed, "count": count}
+            json_tmp.write(json.dumps(head, indent=2, ensure_ascii=False)[:-2] + ',\n  "variants": [\n')
+            for v in chosen:
+                stem = f"variant-{v.number:0{width}d}"
+                row = {
+                    "variant": v.number,
+                    "givens": given_values(compiled, v),
+                    "results": answers(compiled, v, digits),
+                }
+                if not result_names:
+                    result_names = list(row["results"])
+                    header = ["variant"]
+                    header += [f"{n} [{row['givens'][n]['unit']}]" for n in names]
+                    header += [f"{n} [{row['results'][n]['unit']}]" for n in result_names]
+                    writer.writerow(header)
+                cells = [v.number, *(repr(row["givens"][n]["value"]) for n in names)]
+                cells += [row["results"][n]["shown"] if n in row["results"] else "" for n in result_names]
+                writer.writerow(cells)
+                sep = ",\n" if v.number > 1 else ""
+                json_tmp.write(sep + textwrap.indent(json.dumps(row, indent=2, ensure_ascii=False), "    "))
+                try:
+                    _write_one(compiled, v, folder, stem, fmt, digits, row)
+                except DeriveError as exc:
+                    failures.append(f"{stem}: {exc}")
+                _progress(v.number, len(chosen))
+            json_tmp.write("\n  ]\n}\n")
+        os.replace(csv_tmp.name, folder / "key.csv")
+        os.replace(json_tmp.name, folder / "key.json")
+    finally:
+        for tmp in (csv_tmp.name, json_tmp.name):
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+    return failures
+
+
+def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
+    """One variant's files: statement and worked solution (md), LaTeX, PDF or JSON."""
+    import json
+
+    from derive.fileio import write_atomic
+
+    if fmt == "json":
+        write_atomic(folder / f"{stem}.json", json.dumps(row, indent=2) + "\n")
+    elif fmt == "md":
+        page = fill(compiled, v, "md", digits)
+        write_atomic(folder / f"{stem}-problem.md", statement_only(page))
+        write_atomic(folder / f"{stem}.md", page)
+    else:
+        tex = fill(compiled, v, "tex", digits)
+        if fmt == "tex":
+            write_atomic(folder / f"{stem}.tex", tex)
+        else:
+            from derive.pdf import build_pdf
+
+            write_atomic(folder / f"{stem}.pdf", build_pdf(tex))

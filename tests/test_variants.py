@@ -1,0 +1,151 @@
+"""Homework variants: reproducible, physical, distinct, and the same numbers as a fresh solve."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import textwrap
+from decimal import Decimal
+from pathlib import Path
+
+import pytest
+
+import derive
+from derive import variants
+from derive.errors import InputError
+from derive.problem import loads
+
+
+@pytest.fixture(scope="module")
+def compiled() -> variants.Compiled:
+    return variants.compile_problem(derive.load("notes-4c11-two-spheres"))
+
+
+def test_same_seed_same_variants_other_seed_others(compiled: variants.Compiled) -> None:
+    a = variants.draw(compiled, 20, seed=11)
+    b = variants.draw(compiled, 20, seed=11)
+    c = variants.draw(compiled, 20, seed=12)
+    assert [v.values for v in a] == [v.values for v in b]
+    assert [v.values for v in a] != [v.values for v in c]
+
+
+def test_variants_are_distinct_and_physical(compiled: variants.Compiled) -> None:
+    chosen = variants.draw(compiled, 300, seed=3)
+    keys = {tuple(sorted(v.values.items())) for v in chosen}
+    assert len(keys) == 300
+    th = math.radians(37.6)
+    for v in chosen:
+        g = {k: float(x) for k, x in v.values.items()}
+        r = {k: x["value"] for k, x in variants.answers(compiled, v).items()}
+        vA1n, vB1n = g["v_A1"] * math.cos(th), -g["v_B1"] * math.cos(th)
+        assert vA1n - vB1n > 0
+        # (3) momentum of A + B along n, (4) restitution, (1)-(2) t components kept
+        assert g["m_A"] * r["v_A2n"] + g["m_B"] * r["v_B2n"] == pytest.approx(g["m_A"] * vA1n + g["m_B"] * vB1n)
+        assert r["v_B2n"] - r["v_A2n"] == pytest.approx(g["e"] * (vA1n - vB1n))
+        assert r["v_A2t"] == pytest.approx(g["v_A1"] * math.sin(th))
+        assert r["v_B2t"] == pytest.approx(-g["v_B1"] * math.sin(th))
+        assert r["T_lost"] >= 0
+
+
+def test_each_variant_matches_a_fresh_solve(compiled: variants.Compiled) -> None:
+    """The compiled page and key give what solving the variant's numbers from scratch gives."""
+    base = Path(derive.resources.bundled()["notes-4c11-two-spheres"]).read_text()
+    for v in variants.draw(compiled, 4, seed=5):
+        text = base
+        for name, value in v.values.items():
+            unit = {"m_A": "kg", "m_B": "kg", "v_A1": "m/s", "v_B1": "m/s", "e": ""}[name]
+            shown = format(Decimal(str(float(value))).normalize(), "f")
+            new = f'"{shown} {unit}"' if unit else shown
+            text = re.sub(rf"^{name} = .*$", f"{name} = {new}", text, count=1, flags=re.M)
+        fresh = derive.solve(loads(text, path="variant.toml"))
+        key = variants.answers(compiled, v)
+        for name in ("v_A2n", "v_A2t", "v_B2n", "v_B2t", "T_lost"):
+            assert key[name]["value"] == pytest.approx(float(fresh.results[name].value), rel=1e-12), name
+        page = variants.fill(compiled, v)
+        fresh_md = derive.render(fresh, "md", figures=False)
+        # every boxed answer ends the same (a variant page may show fewer intermediate steps)
+        boxed = [b.rsplit("=", 1)[1] for b in re.findall(r"\\boxed\{.*", page)]
+        assert boxed and boxed == [b.rsplit("=", 1)[1] for b in re.findall(r"\\boxed\{.*", fresh_md)]
+        assert re.findall(r".*\\tag\{[1-4]\}", page) == re.findall(r".*\\tag\{[1-4]\}", fresh_md)
+
+
+def test_shown_sums_add_up_in_every_variant(compiled: variants.Compiled) -> None:
+    for v in variants.draw(compiled, 200, seed=9):
+        page = variants.fill(compiled, v)
+        m = re.search(
+            r"^([\d.]+) - ([\d.]+) = \S+ v_\{A2n\}.*\n\$\$\n\n\$\$\n\\Rightarrow\\quad .* = ([-\d.]+) \\tag\{3\}",
+            page,
+            re.M,
+        )
+        assert m, page[:3000]
+        a, b, total = (Decimal(x) for x in m.groups())
+        assert a - b == total
+
+
+def test_conditions_are_respected() -> None:
+    text = textwrap.dedent(
+        """
+        title = "carts"
+        kind = "direct"
+        conditions = ["v_A2 < 0", "T_lost > 5 J"]
+        [given]
+        m_A = "2 kg"
+        m_B = "3 kg"
+        e = 0.8
+        v_A1 = "4 m/s"
+        v_B1 = "-1 m/s"
+        [vary]
+        m_A = { min = "1 kg", max = "6 kg", step = "0.5 kg" }
+        v_A1 = { min = "1 m/s", max = "9 m/s", step = "1 m/s" }
+        """
+    )
+    with pytest.raises(InputError, match="T_lost"):
+        loads(text, path="c.toml")  # 5 J is an energy, but the condition must name its unit-free form
+    text = text.replace("T_lost > 5 J", "T_lost > 5")
+    compiled = variants.compile_problem(loads(text, path="c.toml"))
+    chosen = variants.draw(compiled, 15, seed=2)
+    for v in chosen:
+        r = variants.answers(compiled, v)
+        assert r["v_A2"]["value"] < 0
+        assert r["T_lost"]["value"] > 5
+
+
+def test_too_many_variants_is_a_clear_error() -> None:
+    text = textwrap.dedent(
+        """
+        title = "two choices"
+        kind = "direct"
+        [given]
+        m_A = "2 kg"
+        m_B = "3 kg"
+        e = 0.8
+        v_A1 = "4 m/s"
+        v_B1 = "-1 m/s"
+        [vary]
+        e = { choices = [0.5, 0.6] }
+        """
+    )
+    compiled = variants.compile_problem(loads(text, path="two.toml"))
+    with pytest.raises(InputError, match="only 2 distinct physical variants"):
+        variants.draw(compiled, 3, seed=1)
+
+
+def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
+    out = tmp_path / "hw"
+    r = cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(out))
+    assert r.code == 0, r.err
+    names = sorted(p.name for p in out.iterdir())
+    assert "key.csv" in names and "key.json" in names
+    assert sum(n.endswith("-problem.md") for n in names) == 6
+    key = json.loads((out / "key.json").read_text())
+    assert key["seed"] == 4 and len(key["variants"]) == 6
+    csv_lines = (out / "key.csv").read_text().splitlines()
+    assert len(csv_lines) == 7 and csv_lines[0].startswith("variant,")
+    student = (out / "variant-01-problem.md").read_text()
+    assert "ANSWER" not in student and "**Find.**" in student
+    again = tmp_path / "again"
+    assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
+    assert (again / "key.json").read_text() == (out / "key.json").read_text()
+    r = cli("variants", "notes-4c12-cue-ball", "--count", "2", "-o", str(tmp_path / "x"))
+    assert r.code == 2 and "[vary]" in r.err
