@@ -265,6 +265,19 @@ class StepPrinter(LatexPrinter):
                 return self._slots.token(expr, kind, self._digits, self._extra, self._block)
         return super()._print(expr, **kwargs)
 
+    def _print_atan(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\tan^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_asin(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\sin^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_acos(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\cos^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_atan2(self, expr: sympy.Function, exp: object = None) -> str:
+        y, x = expr.args
+        return r"\operatorname{atan2}\left(" + self._print(y) + ", " + self._print(x) + r"\right)"
+
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
         if expr in self._values:
             return self._values[expr]

@@ -27,6 +27,7 @@ from derive.units import latex_unit, plain_unit
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
+IMPLIES = r"\Rightarrow\quad "
 
 
 @cache
@@ -94,7 +95,7 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     if g.definition is not None:
         parts.append(StepPrinter().doprint(g.definition))
         shown = latex_expr(g.definition, "values", style, 1)
-        if shown != parts[-1] and not g.definition.is_Symbol:
+        if shown != parts[-1] and not g.definition.is_Symbol and g.definition.free_symbols:
             parts.append(shown)
     if g.written is not None:
         number, _, unit = g.written.partition(" ")
@@ -102,7 +103,8 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
             exact_latex(sympy.Rational(number), style.digits, 1)
             + (latex_unit(unit) if unit in ("deg", "°") else r"\ " + latex_unit(unit))
         )
-    parts.append(value)
+    if value != parts[-1]:
+        parts.append(value)
     return " = ".join(parts), ""
 
 
@@ -169,6 +171,10 @@ def view(
                 body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
                 if i == last_boxed:
                     body += ANSWER_MARK
+                bare = body.removeprefix(IMPLIES)
+                if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
+                    lines[-1] = {"latex": lines[-1]["latex"], "tag": tag or lines[-1]["tag"], "boxed": eqn.boxed}
+                    continue  # the same line again (numbers in, but none to put in): once is enough
                 lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
             text = None
             if block.text is not None:

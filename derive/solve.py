@@ -377,7 +377,8 @@ class _Writer:
         n_form = (vx * sympy.cos(phi), vy * sympy.sin(phi))
         t_form = (-vx * sympy.sin(phi), vy * sympy.cos(phi))
         for c, form, expr in ((cn, n_form, motion.n), (ct, t_form, motion.t)):
-            lines.append(Eqn((Side((c,)), Side(form), Side(form, "values"), Side((expr,), "result")), unit=self.unit_v))
+            value = sympy.expand(self.num(expr))  # cos 0° = 1 and 0 · v_A1 = 0 done, not shown
+            lines.append(Eqn((Side((c,)), Side(form), Side(form, "values"), Side((value,), "result")), unit=self.unit_v))
         return lines
 
     def kinetics(self) -> list[Block]:
@@ -696,19 +697,21 @@ class _Writer:
         e_t, e_n = vector("e_t"), vector("e_n")
         lines = []
         bodies = "A" if p.fixed_B else "AB"
+        given_names = {g.name for g in p.givens}
         if p.oblique:
             for b in bodies:
                 t = self.value_of(symbol(f"v_{b}2t"))
                 n = self.value_of(symbol(f"v_{b}2n"))
                 comps = _nonzero(tuple(c * u for c, u in ((t, e_t), (n, e_n)) if c != 0))
-                lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=True))
+                found = not {f"v_{b}2t", f"v_{b}2n"} <= given_names  # a velocity the file gave is no answer
+                lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=self.unit_v, boxed=found))
         else:
             for b in bodies:
                 lines.append(
                     Eqn(
                         (Side((symbol(f"v_{b}2"),)), Side((self.value_of(symbol(f"v_{b}2")),), "result")),
                         unit=self.unit_v,
-                        boxed=True,
+                        boxed=f"v_{b}2" not in given_names,
                     )
                 )
         heading = "The velocity of A" if p.fixed_B else "The velocities"
@@ -753,7 +756,10 @@ class _Writer:
             converted = _convert_result(r, unit)
             extra.append(Eqn((Side((r.symbol,)), Side((converted,), "result")), unit=unit, boxed=True))
         if extra:
-            blocks.append(Block(("As asked:",), tuple(extra)))
+            words = "As asked"
+            if "J_n" in p.find:
+                words += " (J_n is the impulse along +n on B; on A it is −J_n)"
+            blocks.append(Block((words + ":",), tuple(extra)))
         blocks.append(self.energy())
         return blocks
 
@@ -780,24 +786,60 @@ class _Writer:
                         )
                     )
             else:
-                form = sympy.atan(sympy.Mul(n, sympy.Pow(t, -1, evaluate=False), evaluate=False), evaluate=False)
-                shown = None
-                numeric = not ((nv.free_symbols | tv.free_symbols) - self.varied)
-                ratio = None if tv == 0 or numeric else sympy.simplify(nv / tv)
-                if numeric and tv != 0:
-                    shown = _show(
-                        sympy.atan(
-                            sympy.Mul(_f(nv), sympy.Pow(_f(tv), -1, evaluate=False), evaluate=False), evaluate=False
-                        )
-                    )
-                elif ratio is not None and ratio.is_number:
-                    shown = sympy.atan(_f(ratio), evaluate=False)
+                return self.angle_line(r, n, t, nv, tv, boxed)
             sides = [Side((r.symbol,)), Side((form,))]
             if shown is not None:
                 sides.append(Side((shown,), "numeric"))
             sides.append(Side((val,), "result"))
             return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+        if r.name in ("beta_A2", "beta_B2"):
+            b = r.name[-2]
+            n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+            return self.angle_line(r, t, n, self.results_value(t), self.results_value(n), boxed)
+        if r.name == "J_n":
+            return self.impulse_line(r, boxed)
         return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+
+    def angle_line(
+        self, r: Result, y: sympy.Symbol, x: sympy.Symbol, yv: sympy.Expr, xv: sympy.Expr, boxed: bool
+    ) -> Eqn:
+        """A direction: tan^-1(y/x), with 180° added where x < 0 (written atan2 where
+        the sign of x is not known when the page is written)."""
+        val = r.value if r.value is not None else r.partial
+        numeric = not ((xv.free_symbols | yv.free_symbols) - self.varied)
+        known = numeric and not (xv.free_symbols | yv.free_symbols)
+        sides = [Side((r.symbol,))]
+        ratio = None if xv == 0 else sympy.simplify(yv / xv)
+        if xv == 0:
+            pass
+        elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
+            sides.append(Side((sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False),)))
+            shown = _f(ratio) if not known else sympy.Mul(_f(yv), sympy.Pow(_f(xv), -1, evaluate=False), evaluate=False)
+            sides.append(Side((_show(sympy.atan(shown, evaluate=False)),), "numeric"))
+        elif known:  # x < 0: the angle lies beyond ±90°
+            turn = sympy.Symbol(r"\,180^\circ" if yv >= 0 else r"\,(-180^\circ)")
+            form = sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False)
+            sides.append(Side((form, turn)))
+            shown = sympy.Mul(_f(yv), sympy.Pow(_f(xv), -1, evaluate=False), evaluate=False)
+            sides.append(Side((_show(sympy.atan(shown, evaluate=False)), turn), "numeric"))
+        else:
+            sides.append(Side((sympy.atan2(y, x, evaluate=False),)))
+        sides.append(Side((val,), "result"))
+        return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+
+    def impulse_line(self, r: Result, boxed: bool) -> Eqn:
+        """J_n = m_A (v_A1n - v_A2n): the impulse along +n on B (on A it is -J_n)."""
+        nm = self.nm
+        form = sympy.Mul(self.m_A, sympy.Add(nm.A1n, -nm.A2n, evaluate=False), evaluate=False)
+        sides = [Side((r.symbol,)), Side((form,))]
+        vals = {nm.A1n: self.num(self.imp.pre.get(nm.A1n, nm.A1n)), nm.A2n: self.value_of(nm.A2n)}
+        m = self.num(self.m_A.xreplace(self.ind))
+        if not ((m.free_symbols | vals[nm.A1n].free_symbols | vals[nm.A2n].free_symbols) - self.varied):
+            shown = sympy.Mul(_f(m), sympy.Add(_f(vals[nm.A1n]), -_f(vals[nm.A2n]), evaluate=False), evaluate=False)
+            sides.append(Side((_show(shown),), "numeric"))
+        val = r.value if r.value is not None else r.partial
+        sides.append(Side((val,), "result"))
+        return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
 
     def energy(self) -> Block:
         p = self.p
