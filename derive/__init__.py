@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from derive.check import check
 from derive.errors import DeriveError, InputError, RenderError
 from derive.problem import Problem
 from derive.render import render
@@ -16,7 +17,18 @@ from derive.solution import Solution
 from derive.solve import solve
 
 __version__ = "0.1.0"
-__all__ = ["DeriveError", "InputError", "Problem", "RenderError", "Solution", "__version__", "load", "render", "solve"]
+__all__ = [
+    "DeriveError",
+    "InputError",
+    "Problem",
+    "RenderError",
+    "Solution",
+    "__version__",
+    "check",
+    "load",
+    "render",
+    "solve",
+]
 
 
 def load(path: str | Path) -> Problem:

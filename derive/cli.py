@@ -1,4 +1,4 @@
-"""The command line: ``derive solve``, ``derive list``. A thin layer over the library.
+"""The command line: ``derive solve``, ``derive list``, ``derive check``. A thin layer over the library.
 
 Exit codes: 0 done, 2 bad input or usage, 1 anything else.
 """
@@ -42,6 +42,37 @@ def _parser() -> argparse.ArgumentParser:
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    p_check = sub.add_parser("check", help="check hand answers: which are right, and what went wrong")
+    p_check.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_check.add_argument("--answer", "-a", action="append", metavar="NAME=VALUE", help="an answer (repeatable)")
+    p_check.add_argument("--answers", metavar="FILE", help="answers (and equations) in a TOML file")
+    p_check.add_argument("--equation", action="append", metavar="'N: LHS = RHS'", help="an equation (repeatable)")
+    p_check.add_argument("--tolerance", help="relative tolerance, e.g. 0.01 or 1%% (default: the figures written)")
+    p_check.add_argument("--format", "-f", choices=("text", "md", "json"), default="text", help="default: text")
+    p_check.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    p_var = sub.add_parser("variants", help="homework variants of a problem with a [vary] table, and an answer key")
+    p_var.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_var.add_argument("--count", "-n", type=int, default=40, help="how many variants (default: 40)")
+    p_var.add_argument("--seed", type=int, default=1, help="the same seed and file give the same variants")
+    p_var.add_argument("--format", "-f", choices=("md", "tex", "pdf", "json"), default="md")
+    p_var.add_argument("-o", "--output", required=True, help="the folder to write into")
+    p_var.add_argument("--digits", type=int, help="significant figures")
+    p_var.add_argument("--moodle", metavar="FILE.xml", help="also write Moodle XML: one numerical question per variant")
+    p_var.add_argument("--prairielearn", metavar="DIR", help="also write a PrairieLearn question folder")
+    p_var.add_argument(
+        "--result", metavar="NAME", help="the result the LMS questions ask for (default: the first asked)"
+    )
+    p_var.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    p_hand = sub.add_parser("handout", help="gather problems into one document: problems, answers or solutions")
+    p_hand.add_argument("problems", nargs="+", metavar="PROBLEM", help="problem files (.toml) or bundled names")
+    p_hand.add_argument("-o", "--output", required=True, help="the file to write: FILE.pdf, FILE.tex or FILE.md")
+    p_hand.add_argument("--title", help="the handout's title (default: after the mode)")
+    p_hand.add_argument(
+        "--theory", action=argparse.BooleanOptionalAction, default=True, help="a theory page first (default: yes)"
+    )
+    p_hand.add_argument("--mode", choices=("problems", "answers", "solutions"), default="solutions")
+    p_hand.add_argument("--digits", type=int, help="significant figures (default: each problem's)")
+    p_hand.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     return parser
 
 
@@ -87,27 +118,117 @@ def _list(args: argparse.Namespace) -> int:
     return 0
 
 
+def _check(args: argparse.Namespace) -> int:
+    from derive.check import run
+
+    report, text = run(args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format)
+    sys.stdout.write(text)
+    return report.exit_code
+
+
+def _variants(args: argparse.Namespace) -> int:
+    import derive
+    from derive.variants import write_variants
+
+    if not 1 <= args.count <= 100_000:
+        raise InputError("expected a count from 1 to 100000", where="usage", field=f"--count {args.count}")
+    problem = derive.load(args.problem)
+    exports = None
+    if args.moodle or args.prairielearn:  # built first: a bad --result writes nothing
+        from derive.lms import build_exports
+
+        exports = build_exports(
+            problem,
+            count=args.count,
+            seed=args.seed,
+            digits=args.digits,
+            result=args.result,
+            moodle=args.moodle,
+            prairielearn=args.prairielearn,
+        )
+    elif args.result:
+        raise InputError("--result is for --moodle or --prairielearn", where="usage")
+    failures = write_variants(
+        problem, args.output, count=args.count, seed=args.seed, fmt=args.format, digits=args.digits
+    )
+    if exports is not None:
+        exports.write(inputs=(Path(problem.path),))
+    for line in failures:
+        print(f"Error: {line}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+def _handout(args: argparse.Namespace) -> int:
+    """Write the handout; a problem that fails is left out and reported at the end (exit 1)."""
+    from derive.fileio import write_atomic
+    from derive.handout import DEFAULT_TITLES, NoProblemsError, build_handout
+    from derive.handout import FORMATS as HANDOUT_FORMATS
+
+    fmt = Path(args.output).suffix.lower().lstrip(".")
+    if fmt not in HANDOUT_FORMATS:
+        raise InputError(
+            "the extension sets the format: give -o FILE.pdf, FILE.tex or FILE.md", where="usage", field=args.output
+        )
+    title = args.title if args.title is not None else DEFAULT_TITLES[args.mode]
+    try:
+        data, failures = build_handout(
+            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits
+        )
+    except NoProblemsError as exc:
+        for failure in exc.failures:
+            print(f"Error: {_one_line(failure.line())}", file=sys.stderr)
+        raise
+    write_atomic(args.output, data, inputs=tuple(Path(p) for p in args.problems if Path(p).is_file()))
+    for failure in failures:
+        print(f"Error: {_one_line(failure.line())}", file=sys.stderr)
+    if failures:
+        print(f"Error: {len(failures)} of {len(args.problems)} problems left out of {args.output}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+def _one_line(text: str) -> str:
+    """A message as one line of plain text: a key or value from a file may hold a newline or a
+    terminal escape (ESC [31m); those are shown escaped, never sent to the terminal."""
+    import unicodedata
+
+    out = []
+    for ch in text:
+        if ch in "\r\n\t":
+            out.append(" ")
+        elif unicodedata.category(ch) in ("Cc", "Cf", "Zl", "Zp", "Cs"):
+            out.append(f"\\x{ord(ch):02x}" if ord(ch) < 256 else f"\\u{ord(ch):04x}")
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; returns the exit code."""
     argv = list(sys.argv[1:] if argv is None else argv)
     debug = "--debug" in argv
     try:
         args = _parser().parse_args(argv)
-        return _solve(args) if args.command == "solve" else _list(args)
+        commands = {"solve": _solve, "list": _list, "check": _check, "variants": _variants, "handout": _handout}
+        return commands[args.command](args)
     except DeriveError as exc:
         if debug:
             traceback.print_exc()
-        print(f"Error: {exc}", file=sys.stderr)
+        print(f"Error: {_one_line(str(exc))}", file=sys.stderr)
         return exc.exit_code
     except KeyboardInterrupt:
         print("Error: interrupted", file=sys.stderr)
+        return 1
+    except BrokenPipeError:  # the reader (head, less) stopped early: nothing to report
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 1
     except Exception as exc:
         if debug:
             traceback.print_exc()
         else:
             print(
-                f"Error: internal error ({type(exc).__name__}: {exc}); run with --debug for the traceback",
+                f"Error: {_one_line(f'internal error ({type(exc).__name__}: {exc})')}; run with --debug for the traceback",
                 file=sys.stderr,
             )
         return 1

@@ -10,6 +10,7 @@ expression itself. It also tracks the dimension of every subexpression, so
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -24,6 +25,8 @@ MAX_TOKENS = 300
 MAX_BITS = 4096  # largest exact power computed: about 1,200 decimal digits
 MAX_EXPONENT = 64
 MAX_DECIMAL_EXPONENT = 30
+MAX_DEGREE = 128  # highest total power of the names in an expression (x^64 * y^64)
+MAX_MAGNITUDE = 1e300  # largest computed value of a function or irrational power of numbers
 
 #: function name -> (SymPy function, number of arguments)
 FUNCTIONS = {
@@ -124,6 +127,7 @@ class _Parser:
             if left.dim != right.dim:
                 raise ParseError(f"cannot add {describe(left.dim)} and {describe(right.dim)}")
             left = Parsed(left.expr + right.expr if op == "+" else left.expr - right.expr, left.dim)
+            _check_size(left.expr)
         self.depth -= 1
         return left
 
@@ -140,6 +144,7 @@ class _Parser:
                     raise ParseError("division by zero")
                 dim = tuple(a - b for a, b in zip(left.dim, right.dim, strict=False))
                 left = Parsed(left.expr / right.expr, dim)  # type: ignore[arg-type]
+            _check_size(left.expr)
         return left
 
     def unary(self) -> Parsed:
@@ -212,9 +217,12 @@ def _known(names: Mapping[str, object]) -> str:
 
 def _power(base: Parsed, exp: sympy.Expr) -> Parsed:
     if not exp.is_number:
+        # A given in an exponent is evaluated only when its value is put in
+        # (x^x with x = 1e30 has 10^31 digits): exponents must be numbers.
         if base.dim != DIMENSIONLESS:
             raise ParseError("a quantity with a unit can only be raised to a number")
-        return Parsed(sympy.Pow(base.expr, exp), DIMENSIONLESS)
+        raise ParseError("an exponent must be a number, not an expression in the givens")
+    _check_no_exp(base.expr, "raised to a power")
     if exp.is_Rational and abs(exp) > MAX_EXPONENT:
         raise ParseError(f"the exponent {exp} is too large (at most {MAX_EXPONENT})")
     if not exp.is_Rational:
@@ -234,10 +242,65 @@ def _power(base: Parsed, exp: sympy.Expr) -> Parsed:
         if any(not x.is_integer for x in new):
             raise ParseError(f"{describe(dim)} to the power {exp} has no unit")
         dim = tuple(int(x) for x in new)  # type: ignore[assignment]
-    return Parsed(sympy.Pow(base.expr, exp), dim)
+    out = sympy.Pow(base.expr, exp)
+    _check_size(out)
+    return Parsed(out, dim)
 
 
 def _apply(name: str, func, args: list[Parsed]) -> Parsed:
+    for a in args:
+        _check_no_exp(a.expr, f"inside {name}()")
+    out = _apply_checked(name, func, args)
+    _check_size(out.expr)
+    return out
+
+
+def _check_no_exp(expr: sympy.Expr, where: str) -> None:
+    """exp() of a given may not go inside a function or power: sin(exp(x)) at x = 1e30 never ends."""
+    if expr.free_symbols and any(f.free_symbols for f in expr.atoms(sympy.exp)):
+        raise ParseError(f"exp() of an expression in the givens cannot be {where}")
+
+
+def _degree(expr: sympy.Expr) -> sympy.Expr:
+    """The total power of the names in ``expr`` (x^64*y^2 -> 66); a function of names counts 1."""
+    if not expr.free_symbols:
+        return sympy.Integer(0)
+    if expr.is_Symbol:
+        return sympy.Integer(1)
+    if expr.is_Add:
+        return max(_degree(a) for a in expr.args)
+    if expr.is_Mul:
+        return sum((_degree(a) for a in expr.args), sympy.Integer(0))
+    if expr.is_Pow and expr.exp.is_number:
+        return _degree(expr.base) * abs(expr.exp)
+    return sympy.Integer(1)
+
+
+def _check_size(expr: sympy.Expr) -> None:
+    """Refuse what would take too long to evaluate: huge numbers, huge powers of the names.
+
+    Every part of ``expr`` was checked when it was built, so evaluating it here is quick.
+    """
+    for r in expr.atoms(sympy.Rational):
+        if max(abs(r.p).bit_length(), r.q.bit_length()) > MAX_BITS:
+            raise ParseError("a number in the expression is too large (over about 1,200 digits)")
+    if expr.free_symbols:
+        if _degree(expr) > MAX_DEGREE:
+            raise ParseError(f"the power of the givens is too large (at most {MAX_DEGREE} in all)")
+        return
+    if expr.is_Rational or not expr.is_number:
+        return
+    try:
+        size = abs(complex(expr.evalf(15)))
+    except OverflowError:
+        size = math.inf
+    except (TypeError, ValueError):
+        return  # not a number (zoo, nan): reported where the value is used
+    if not size <= MAX_MAGNITUDE:
+        raise ParseError("the value is too large to compute (it is over 1e300)")
+
+
+def _apply_checked(name: str, func, args: list[Parsed]) -> Parsed:
     if name in ("sin", "cos", "tan"):
         if args[0].dim not in (ANGLE, DIMENSIONLESS):
             raise ParseError(f"{name} takes an angle, not {describe(args[0].dim)}")

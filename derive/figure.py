@@ -129,7 +129,12 @@ def _direction(n: sympy.Expr, t: sympy.Expr) -> tuple[float, float, float | None
 
 
 def describe(solution: Solution, after: bool = False) -> Figure:
-    """The figure of stage 1 (before the impact) or of the answer (``after``)."""
+    """The figure of stage 1 (before the impact) or of the answer (``after``); for a
+    chain, that of its first impact (each impact stage draws its own)."""
+    stages = getattr(solution, "stages", ())
+    impacts = [st.solution for st in stages if getattr(st, "solution", None) is not None]
+    if impacts:
+        return describe(impacts[0], after)
     p = solution.problem
     values = dict(solution.values)
     phi = _num(values.get(p.phi)) if p.phi is not None else 0.0

@@ -27,6 +27,14 @@ def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...
     if not folder.is_dir():
         raise InputError("the folder for the output does not exist", where=str(path), field="-o")
     payload = data.encode("utf-8") if isinstance(data, str) else data
+    if path.exists() and not path.is_file():
+        # a device or a pipe (-o /dev/stdout): write into it; renaming over it would replace it
+        try:
+            with open(path, "wb") as fh:
+                fh.write(payload)
+        except OSError as exc:
+            raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+        return
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
     try:
         with os.fdopen(fd, "wb") as fh:

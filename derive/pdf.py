@@ -8,7 +8,9 @@ limit; a missing TeX installation or a TeX error is a one-line error.
 from __future__ import annotations
 
 import os
+import re
 import shutil
+import signal
 import subprocess
 import tempfile
 from pathlib import Path
@@ -40,9 +42,7 @@ def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
             doc.name,
         ]
         try:
-            proc = subprocess.run(
-                cmd, cwd=tmp, env=env, capture_output=True, text=True, timeout=time_limit, stdin=subprocess.DEVNULL
-            )
+            proc = _run(cmd, tmp, env, time_limit)
         except subprocess.TimeoutExpired:
             raise RenderError(f"LaTeX did not finish within {time_limit:g} s") from None
         pdf = Path(tmp) / "solution.pdf"
@@ -53,8 +53,36 @@ def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
                 else proc.stdout
             )
             first = next(
-                (ln for ln in log.splitlines() if ln.startswith("!") or (":" in ln and "error" in ln.lower())),
+                # "! Undefined control sequence." or, with -file-line-error, "./solution.tex:12: ..."
+                # (not the banner "file:line:error style messages enabled.")
+                (ln for ln in log.splitlines() if ln.startswith("!") or re.match(r"^\S+\.tex:\d+: ", ln)),
                 "see the LaTeX log",
             )
             raise RenderError(f"LaTeX failed: {first.strip()}")
         return pdf.read_bytes()
+
+
+def _run(cmd: list[str], cwd: str, env: dict[str, str], time_limit: float) -> subprocess.CompletedProcess[str]:
+    """Run latexmk in its own process group; on a timeout kill the whole group, pdflatex too
+    (subprocess.run would kill latexmk alone and leave pdflatex looping in a deleted folder)."""
+    proc = subprocess.Popen(
+        cmd,
+        cwd=cwd,
+        env=env,
+        stdin=subprocess.DEVNULL,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
+    try:
+        out, err = proc.communicate(timeout=time_limit)
+    except BaseException:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        proc.communicate()
+        raise
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
+

@@ -456,6 +456,8 @@ def latex_expr(
         return printer.doprint(floatify(expr))
     if mode == "result":
         expr = substitute(expr, style.values)
+        if expr.is_number and not isinstance(expr, sympy.UnevaluatedExpr):
+            expr = sympy.Float(expr.evalf(PRECISION), PRECISION)
         printer = StepPrinter(
             cancel=cancel,
             digits=style.digits,
@@ -475,7 +477,8 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     for i, term in enumerate(side.terms):
         if side.mode in ("numeric", "result"):
             term = substitute(term, style.values)
-            if term.is_number and not _structural(term):
+            collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
+            if term.is_number and (collapse or not _structural(term)):
                 term = floatify(term, keep_integers=side.mode == "numeric")
                 if term == 0:
                     term = sympy.Integer(0)
@@ -583,6 +586,11 @@ def block_style(block: Block, style: Style) -> Style:
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:
     """Inline mathematics in a sentence."""
+    if isinstance(expr, sympy.Interval):
+        lo = "(" if expr.left_open else "["
+        hi = ")" if expr.right_open else "]"
+        p = StepPrinter(digits=style.digits)
+        return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
     if isinstance(expr, sympy.Eq):
         return (
             StepPrinter(digits=style.digits).doprint(expr.lhs)

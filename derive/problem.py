@@ -286,6 +286,10 @@ def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
         where = f"{path}:{m.group(1)}" if m else path
         what = re.sub(r"\s*\(at line \d+, column \d+\)", "", msg) or "invalid TOML"
         raise InputError(f"not valid TOML: {what[0].lower() + what[1:]}", where=where) from None
+    if isinstance(data, dict) and data.get("kind") == "chain":
+        from derive.chain import build_chain
+
+        return build_chain(data, ctx, name)  # type: ignore[return-value]
     return _build(data, ctx, name)
 
 
@@ -310,7 +314,10 @@ def _type(value: Any) -> str:
     )
 
 
-def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
+def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given] | None = None) -> Problem:
+    """A Problem from parsed TOML. ``seed`` holds givens known already (a chain's
+    earlier results): the file's values may refer to them, and a required name the
+    file leaves out (m_A, e, ...) is taken from them."""
     for key in data:
         if key not in TOP_FIELDS:
             raise ctx.error(f"unknown field (expected one of: {', '.join(TOP_FIELDS)})", key=key)
@@ -318,8 +325,8 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
     assert title is not None
     kind = data.get("kind")
     if kind not in KINDS:
-        what = "is missing" if kind is None else "is not a kind of impact"
-        raise ctx.error(f'{what}: expected "direct" or "oblique"', key="kind", value=kind)
+        what = "is missing" if kind is None else "is not a kind of problem"
+        raise ctx.error(f'{what}: expected "direct" or "oblique" (or "chain" for stages)', key="kind", value=kind)
     oblique = kind == "oblique"
     digits = data.get("digits")
     if digits is not None and (isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 10):
@@ -337,8 +344,19 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str) -> Problem:
         raise ctx.error(f"has too many entries ({len(given_tbl)}, at most {MAX_GIVENS})", section="given")
     if system is None:
         system = _infer_system(given_tbl)
-    givens = _givens(given_tbl, ctx, oblique, system)
+    givens = _givens(given_tbl, ctx, oblique, system, seed)
     by_name = {g.name: g for g in givens}
+    b_tbl = data.get("B")
+    b_fixed = isinstance(b_tbl, dict) and b_tbl.get("fixed") is True
+    needed = ("m_A", "e", "v_A1", "v_A1n", "v_A1t", "W_A")
+    if not b_fixed:
+        needed += ("m_B", "v_B1", "v_B1n", "v_B1t", "W_B")
+    if any(w in given_tbl or w in (seed or {}) for w in ("W_A", "W_B")):
+        needed += ("g",)
+    for key, g in (seed or {}).items():
+        if key in needed and key not in by_name:
+            givens.append(g)
+            by_name[key] = g
 
     body_tbls = {}
     for b in "AB":
@@ -475,8 +493,13 @@ def _infer_system(tbl: Mapping[str, Any]) -> str:
     return "US" if votes["US"] > votes["SI"] else "SI"
 
 
-def _givens(tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str) -> list[Given]:
-    """Build the givens in dependency order (a given may be defined from others)."""
+def _givens(
+    tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
+) -> list[Given]:
+    """Build the givens in dependency order (a given may be defined from others).
+
+    ``seed`` givens may be referred to; a key whose value is its own name (e = "e")
+    is the seeded given itself."""
     for key in tbl:
         if not NAME_RE.match(key):
             raise ctx.error(
@@ -486,8 +509,14 @@ def _givens(tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str) -> li
             raise ctx.error("is what derive computes, so it cannot be given", section="given", key=key)
         if key in ("pi",) or key in ("sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log"):
             raise ctx.error("is the name of a constant or function; choose another name", section="given", key=key)
+    seed = dict(seed or {})
     done: dict[str, Given] = {}
     pending = dict(tbl)
+    for key, raw in tbl.items():
+        if isinstance(raw, str) and raw.strip() == key and key in seed:
+            done[key] = seed[key]
+            del pending[key]
+    known = {**seed, **done}
     while pending:
         progressed = False
         for key in list(pending):
@@ -495,7 +524,7 @@ def _givens(tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str) -> li
             deps = _names_in(raw) & set(tbl)
             if deps - set(done):
                 continue
-            done[key] = _given(key, raw, done, ctx, oblique, system)
+            done[key] = _given(key, raw, {**known, **done}, ctx, oblique, system)
             del pending[key]
             progressed = True
         if not progressed:

@@ -21,7 +21,7 @@ from derive.numbers import format_number, to_decimal
 from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
 from derive.problem import Given
 from derive.resources import templates_dir
-from derive.solution import Math, Solution
+from derive.solution import Eqn, Math, Side, Solution
 from derive.symbols import latex_name
 from derive.units import latex_unit, plain_unit
 
@@ -142,6 +142,29 @@ _FIND_WORDS = {
 }
 
 
+def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
+    """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
+    blocks = []
+    for block in blocks_in:
+        bstyle = block_style(block, style)
+        lines: list[dict[str, Any]] = []
+        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+        for i, eqn in enumerate(block.lines):
+            body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
+            if i == last_boxed:
+                body += ANSWER_MARK
+            bare = body.removeprefix(IMPLIES)
+            if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
+                lines[-1] = {"latex": lines[-1]["latex"], "tag": tag or lines[-1]["tag"], "boxed": eqn.boxed}
+                continue  # the same line again (numbers in, but none to put in): once is enough
+            lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
+        text = None
+        if block.text is not None:
+            text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
+        blocks.append({"text": text, "lines": lines})
+    return blocks
+
+
 def view(
     solution: Solution,
     digits: int | None = None,
@@ -162,26 +185,7 @@ def view(
     )
     stages = []
     for stage in solution.stages:
-        blocks = []
-        for block in stage.blocks:
-            bstyle = block_style(block, style)
-            lines = []
-            last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-            for i, eqn in enumerate(block.lines):
-                body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
-                if i == last_boxed:
-                    body += ANSWER_MARK
-                bare = body.removeprefix(IMPLIES)
-                if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
-                    lines[-1] = {"latex": lines[-1]["latex"], "tag": tag or lines[-1]["tag"], "boxed": eqn.boxed}
-                    continue  # the same line again (numbers in, but none to put in): once is enough
-                lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
-            text = None
-            if block.text is not None:
-                text = [
-                    ("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text
-                ]
-            blocks.append({"text": text, "lines": lines})
+        blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.number in (1, 4):
             fig = figure.describe(solution, after=stage.number == 4)
@@ -317,6 +321,103 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
     return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
 
 
+def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
+    """The data the chain templates need: the chain's givens, each stage printed."""
+    p = sol.problem
+    style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
+    stages = []
+    for st in sol.stages:
+        if st.solution is not None:
+            v = view(st.solution, digits, figures=figures)
+            stages.append(
+                {"number": st.number, "title": st.title, "impact": True, "givens": v["givens"], "stages": v["stages"]}
+            )
+        else:
+            stages.append(
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
+            )
+    names = list(p.find) or list(sol.stages[-1].outputs)
+    verdicts = {n for st in sol.stages if st.type == "again" for n in st.outputs}
+    answers = []
+    for name in names:
+        r = sol.results.get(name)
+        if r is None:
+            raise InputError(f"find names {name!r}, which no stage computes", where=p.path, field="find")
+        if name in verdicts:
+            said = "yes" if r.value == 1 else "no"
+            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {said}}}}}"})
+            continue
+        value = r.value if r.value is not None else r.partial
+        eqn = Eqn((Side((r.symbol,)), Side((value,), "result")), unit=r.unit or None, boxed=True)
+        answers.append({"latex": latex_eqn(eqn, style)[0]})
+    if answers:
+        answers[-1]["latex"] += ANSWER_MARK
+    givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
+    find = p.question or ("The quantities " + ", ".join(names) + "." if names else "")
+    return {
+        "title": p.title,
+        "source": p.source,
+        "statement": p.statement,
+        "givens": givens,
+        "find": find,
+        "stages": stages,
+        "answers": answers,
+        "standalone": standalone,
+    }
+
+
+def _chain_json(sol: Any, digits: int | None) -> str:
+    p = sol.problem
+    d = digits if digits is not None else p.digits
+    results = {}
+    for name, r in sol.results.items():
+        results[name] = {
+            "value": None if r.value is None else float(sympy.N(r.value, 17)),
+            "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
+            "expr": str(r.closed),
+            "latex": StepPrinter().doprint(r.closed),
+        }
+        if r.value is not None:
+            results[name]["shown"] = format_number(r.value, d)
+    givens = {
+        g.name: {
+            "value": None
+            if g.value is None
+            else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
+            "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
+        }
+        for g in p.givens
+    }
+    view_ = chain_view(sol, digits, figures=False)
+    stages = []
+    for st in view_["stages"]:
+        subs = st["stages"] if st["impact"] else [{"blocks": st["blocks"]}]
+        blocks = [b for sub in subs for b in sub["blocks"]]
+        stages.append(
+            {
+                "number": st["number"],
+                "title": st["title"],
+                "blocks": [
+                    {
+                        "text": _text_with_math(b["text"]),
+                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
+                    }
+                    for b in blocks
+                ],
+            }
+        )
+    doc = {
+        "title": p.title,
+        "kind": "chain",
+        "source": p.source,
+        "find": list(p.find),
+        "givens": givens,
+        "results": results,
+        "stages": stages,
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
 def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
@@ -326,6 +427,17 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    from derive.chain import ChainSolution
+
+    if isinstance(solution, ChainSolution):
+        if fmt == "json":
+            return _chain_json(solution, digits)
+        if fmt == "md":
+            return _env("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
+        if fmt in ("tex", "tex-fragment"):
+            data = chain_view(solution, digits, figures, standalone=fmt == "tex")
+            return _env("tex").get_template("chain.tex.j2").render(**data)
+        raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
     if fmt == "json":
         return to_json(solution, digits)
     if fmt not in FORMATS:

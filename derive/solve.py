@@ -25,6 +25,10 @@ def solve(problem: Problem) -> Solution:
     >>> solve(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
     -7*cos(47*pi/225)/5
     """
+    from derive.chain import ChainProblem, solve_chain
+
+    if isinstance(problem, ChainProblem):
+        return solve_chain(problem)  # type: ignore[return-value]
     imp = setup(problem)
     results = _results(imp)
     values: dict[sympy.Symbol, sympy.Expr] = dict(problem.numeric())

@@ -26,6 +26,7 @@ FORCE: Dim = (1, 1, -2, 0)
 ENERGY: Dim = (1, 2, -2, 0)
 IMPULSE: Dim = (1, 1, -1, 0)
 ACCELERATION: Dim = (0, 1, -2, 0)
+STIFFNESS: Dim = (1, 0, -2, 0)
 
 DIM_NAMES: dict[Dim, str] = {
     DIMENSIONLESS: "a pure number",
@@ -38,6 +39,7 @@ DIM_NAMES: dict[Dim, str] = {
     ENERGY: "an energy",
     IMPULSE: "an impulse",
     ACCELERATION: "an acceleration",
+    STIFFNESS: "a spring stiffness",
 }
 
 
@@ -99,6 +101,7 @@ SYSTEMS: dict[str, dict[Dim, str]] = {
         ENERGY: "J",
         IMPULSE: "N*s",
         ACCELERATION: "m/s^2",
+        STIFFNESS: "N/m",
         ANGLE: "deg",
         DIMENSIONLESS: "",
     },
@@ -111,6 +114,7 @@ SYSTEMS: dict[str, dict[Dim, str]] = {
         ENERGY: "ft*lb",
         IMPULSE: "lb*s",
         ACCELERATION: "ft/s^2",
+        STIFFNESS: "lb/ft",
         ANGLE: "deg",
         DIMENSIONLESS: "",
     },

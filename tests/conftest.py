@@ -40,3 +40,19 @@ def problem_from() -> Callable[[str], derive.Problem]:
         return loads(textwrap.dedent(text), path="test.toml")
 
     return build
+
+
+# ---------------------------------------------------------------- fuzz summary (tests/test_fuzz.py)
+
+
+def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:  # noqa: ANN001
+    """One line: how many cases the fuzz tests ran (DERIVE_FUZZ_SCALE scales them)."""
+    import os
+    import sys
+
+    for module in list(sys.modules.values()):
+        counts = getattr(module, "FUZZ_COUNTS", None)
+        if counts and str(getattr(module, "__file__", "")).endswith("test_fuzz.py"):
+            parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
+            scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
+            terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")

@@ -1,0 +1,287 @@
+"""Handouts: several problems in one document, with a theory page, in three modes.
+
+The PDF tests need TeX Live with latexmk (in CI a missing latexmk fails instead of skipping).
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+from functools import cache
+from pathlib import Path
+
+import pytest
+import sympy
+from output_cases import hostile_problem, missing_tool
+
+import derive
+from derive import escape, impact, resources, theory
+from derive.handout import MODES, build_handout
+from derive.numbers import format_number
+from derive.printing import Style, latex_eqn
+from derive.render import view
+
+BROKEN = """\
+title = "Broken: B has no mass"
+kind = "direct"
+
+[given]
+m_A = "2 kg"
+e = 0.5
+v_A1 = "3 m/s"
+v_B1 = "0 m/s"
+"""
+
+
+@cache
+def three() -> tuple[str, str, str]:
+    """The notes' two examples and the first bundled direct impact."""
+    direct = next(n for n in resources.bundled() if not n.startswith("notes-") and derive.load(n).kind == "direct")
+    return ("notes-4c11-two-spheres", "notes-4c12-cue-ball", direct)
+
+
+def titles(names: tuple[str, ...]) -> list[str]:
+    return [derive.load(n).title for n in names]
+
+
+def broken_problem(tmp_path: Path) -> Path:
+    path = tmp_path / "broken-no-mass.toml"
+    path.write_text(BROKEN, encoding="utf-8")
+    return path
+
+
+def need_latexmk() -> None:
+    for tool in ("latexmk", "pdflatex"):
+        if shutil.which(tool) is None:
+            missing_tool(f"{tool} is not installed (Debian: apt-get install latexmk texlive-latex-extra)")
+
+
+def pdf_text(pdf: bytes, tmp_path: Path) -> str | None:
+    """The PDF's text by pdftotext, or None when poppler-utils is not installed."""
+    if shutil.which("pdftotext") is None:
+        return None
+    path = tmp_path / "check.pdf"
+    path.write_bytes(pdf)
+    return subprocess.run(["pdftotext", str(path), "-"], capture_output=True, text=True, check=True).stdout
+
+
+# --- the PDF ---------------------------------------------------------------
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("mode", MODES, ids=lambda m: f"mode={m}")
+def test_pdf_builds_in_each_mode(mode: str, tmp_path: Path) -> None:
+    need_latexmk()
+    pdf, failures = build_handout(list(three()), title="Central impact: set 1", theory=True, mode=mode, fmt="pdf")
+    assert failures == []
+    assert isinstance(pdf, bytes) and pdf.startswith(b"%PDF")
+    text = pdf_text(pdf, tmp_path)
+    if text is not None:
+        assert "Central impact: set 1" in text
+        assert "Central impact: the equations" in text
+        for title in titles(three()):
+            assert title.split(":")[0] in text
+        assert ("ANSWER" in text) == (mode != "problems")
+        assert ("Kinetics" in text) == (mode == "solutions")
+
+
+@pytest.mark.slow
+def test_cli_pdf_with_a_broken_problem_still_has_the_others(cli, tmp_path: Path) -> None:
+    """The CLI writes the PDF with every good problem, hostile text included, then reports the broken one."""
+    need_latexmk()
+    out = tmp_path / "handout.pdf"
+    hostile = hostile_problem(tmp_path)
+    broken = broken_problem(tmp_path)
+    r = cli("handout", "notes-4c11-two-spheres", str(broken), str(hostile), "--mode", "answers", "-o", str(out))
+    assert r.code == 1
+    assert out.read_bytes().startswith(b"%PDF")
+    assert str(broken) in r.err
+    text = pdf_text(out.read_bytes(), tmp_path)
+    if text is not None:
+        assert "Example 4.C.11" in text and "100%" in text
+        assert "Broken" not in text
+
+
+# --- what each mode holds --------------------------------------------------
+
+
+def test_markdown_has_each_title_and_no_answer_in_problems_mode() -> None:
+    doc, failures = build_handout(list(three()), title="Sheet", theory=True, mode="problems", fmt="md")
+    assert failures == []
+    assert isinstance(doc, str) and doc.startswith("# Sheet\n")
+    for title in titles(three()):
+        assert escape.markdown(title) in doc
+    assert "ANSWER" not in doc
+    assert "\\boxed" not in doc
+    assert doc.count("**Find.**") == 3
+    assert "**Solution.**" not in doc and "<svg" not in doc
+
+
+def test_answers_mode_has_the_boxed_lines_of_stage_4_only() -> None:
+    doc, _ = build_handout(list(three()), title="Answers", theory=False, mode="answers", fmt="md")
+    assert isinstance(doc, str)
+    assert doc.count("**Answer.**") == 3
+    assert "ANSWER" in doc
+    boxed = [ln for ln in doc.splitlines() if ln.startswith("\\boxed")]
+    assert boxed and all("\\boxed" in ln for ln in boxed)
+    expected = [
+        ln["latex"]
+        for n in three()
+        for st in view(derive.solve(derive.load(n)))["stages"]
+        if st["number"] == 4
+        for b in st["blocks"]
+        for ln in b["lines"]
+        if ln["boxed"]
+    ]
+    assert boxed == expected
+    assert "Kinetics" not in doc and "<svg" not in doc
+
+
+def test_solutions_mode_has_the_worked_stages_and_figures() -> None:
+    doc, _ = build_handout(list(three()), title="Solutions", theory=False, mode="solutions", fmt="md")
+    assert isinstance(doc, str)
+    assert doc.count("**Solution.**") == 3
+    assert doc.count("### 2) Kinetics") == 3
+    assert "<svg" in doc
+    assert "## 1. " + escape.markdown(titles(three())[0]) in doc
+
+
+def test_tex_sections_are_numbered_and_solutions_start_a_page() -> None:
+    tex, _ = build_handout(list(three()), title="T", theory=False, mode="solutions", fmt="tex")
+    assert isinstance(tex, str) and tex.startswith("\\documentclass")
+    assert tex.count("\\section{") == 3 and "\\section*{" not in tex
+    assert tex.count("\\clearpage") == 2
+    assert "\\begin{tikzpicture}" in tex
+
+
+def test_digits_apply_to_every_problem() -> None:
+    name = "notes-4c11-two-spheres"
+    doc, _ = build_handout([name], title="T", theory=False, mode="answers", fmt="md", digits=5)
+    assert isinstance(doc, str)
+    v_A2t = derive.solve(derive.load(name)).results["v_A2t"].value
+    assert format_number(v_A2t, 5) in doc and format_number(v_A2t, 3) + " " not in doc
+
+
+# --- the theory page -------------------------------------------------------
+
+
+@pytest.mark.parametrize("fmt", ["md", "tex"])
+def test_theory_page_contains_the_four_equations(fmt: str) -> None:
+    doc, _ = build_handout(["notes-4c11-two-spheres"], title="T", theory=True, mode="problems", fmt=fmt)
+    assert isinstance(doc, str)
+    page = doc[: doc.index("Example 4.C.11")]
+    for k in (1, 2, 3, 4):
+        body, tag = latex_eqn(theory.EQUATION_LINES[k], Style(None))
+        assert tag == str(k)
+        assert f"{body} \\tag{{{k}}}" in page
+    for words in (
+        "Impulsive forces",
+        "axes clearly",
+        "along the line of impact",
+        "Mechanical energy is not conserved",
+        "System B alone",
+    ):
+        assert words in page
+    assert "m_{B} v_{B2n} + m_{B} v_{B2n}" not in page, "the notes' slip in the system equation is copied"
+
+
+def test_no_theory_leaves_the_page_out() -> None:
+    doc, _ = build_handout(["notes-4c11-two-spheres"], title="T", theory=False, mode="problems", fmt="md")
+    assert isinstance(doc, str)
+    assert "Central impact: the equations" not in doc and "\\tag{" not in doc
+
+
+def test_theory_equations_are_the_solver_equations() -> None:
+    """(1)-(4) on the page say what derive.impact solves: each gives the same post-impact component."""
+    imp = impact.setup(derive.load("notes-4c11-two-spheres"))
+    by_name = {s.name: s for eq in imp.equations.values() for s in eq.free_symbols}
+    for k, unknown in ((1, "v_A2t"), (2, "v_B2t"), (3, "v_A2n"), (4, "v_B2n")):
+        page = theory.equation(k)
+        page = page.xreplace({s: by_name[s.name] for s in page.free_symbols if s.name in by_name})
+        solver = imp.equations[k]
+        u = by_name[unknown]
+        got, want = sympy.solve(page, u), sympy.solve(solver, u)
+        assert len(got) == len(want) == 1
+        assert sympy.simplify(got[0] - want[0]) == 0, k
+
+
+# --- a batch with failures -------------------------------------------------
+
+
+def test_broken_problem_is_left_out_and_reported_at_the_end(cli, tmp_path: Path) -> None:
+    out = tmp_path / "handout.md"
+    broken = broken_problem(tmp_path)
+    a, b, c = three()
+    r = cli("handout", a, str(broken), b, c, "--mode", "answers", "-o", str(out))
+    assert r.code == 1
+    doc = out.read_text(encoding="utf-8")
+    for title in titles(three()):
+        assert escape.markdown(title) in doc
+    assert "Broken" not in doc
+    lines = r.err.splitlines()
+    assert lines and all(ln.startswith("Error: ") for ln in lines)
+    assert str(broken) in lines[0] and "m_B" in lines[0]
+    assert "1 of 4" in lines[-1]
+    assert r.out == ""
+
+
+def test_internal_error_in_one_problem_does_not_stop_the_others(monkeypatch: pytest.MonkeyPatch) -> None:
+    real = derive.solve
+
+    def flaky(problem: derive.Problem) -> derive.Solution:
+        if problem.title.startswith("Example 4.C.12"):
+            raise RuntimeError("boom")
+        return real(problem)
+
+    monkeypatch.setattr(derive, "solve", flaky)
+    doc, failures = build_handout(list(three()), title="T", theory=False, mode="problems", fmt="md")
+    assert [f.problem for f in failures] == ["notes-4c12-cue-ball"]
+    assert "RuntimeError: boom" in failures[0].error
+    assert isinstance(doc, str) and "Example 4.C.11" in doc and "Example 4.C.12" not in doc
+
+
+def test_every_problem_failing_exits_2_and_writes_nothing(cli, tmp_path: Path) -> None:
+    out = tmp_path / "handout.md"
+    r = cli("handout", str(broken_problem(tmp_path)), "no-such-problem", "-o", str(out))
+    assert r.code == 2
+    assert not out.exists()
+    assert "no-such-problem" in r.err and "broken-no-mass.toml" in r.err
+    assert all(ln.startswith("Error: ") for ln in r.err.splitlines())
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ("notes-4c11-two-spheres", "-o", "handout.docx"),
+        ("notes-4c11-two-spheres", "-o", "handout"),
+        ("notes-4c11-two-spheres", "-o", "h.md", "--mode", "everything"),
+        ("notes-4c11-two-spheres", "-o", "h.md", "--digits", "0"),
+        ("-o", "h.md"),
+        ("notes-4c11-two-spheres",),
+    ],
+    ids=["unknown-extension", "no-extension", "bad-mode", "bad-digits", "no-problem", "no-output"],
+)
+def test_bad_usage_exits_2(cli, tmp_path: Path, monkeypatch: pytest.MonkeyPatch, args: tuple[str, ...]) -> None:
+    monkeypatch.chdir(tmp_path)
+    r = cli("handout", *args)
+    assert r.code == 2
+    assert r.err.startswith("Error: ") and len(r.err.splitlines()) == 1
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_title_and_no_theory(cli, tmp_path: Path) -> None:
+    out = tmp_path / "h.md"
+    r = cli("handout", "notes-4c12-cue-ball", "--title", "Week 9 & more", "--no-theory", "-o", str(out))
+    assert r.code == 0, r.err
+    assert r.err == ""
+    doc = out.read_text(encoding="utf-8")
+    assert doc.startswith("# Week 9 &amp; more\n")
+    assert "Central impact: the equations" not in doc
+
+
+def test_cli_refuses_to_overwrite_a_problem(cli, tmp_path: Path) -> None:
+    src = tmp_path / "p.md"
+    src.write_text(resources.bundled()["notes-4c11-two-spheres"].read_text(encoding="utf-8"), encoding="utf-8")
+    r = cli("handout", str(src), "-o", str(src))
+    assert r.code == 2
+    assert "refusing to overwrite" in r.err

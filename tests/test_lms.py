@@ -1,0 +1,264 @@
+"""LMS exports of homework variants: Moodle XML and a PrairieLearn question folder."""
+
+from __future__ import annotations
+
+import json
+import re
+import uuid
+import xml.etree.ElementTree as ET
+from decimal import Decimal
+from pathlib import Path
+
+import pytest
+
+import derive
+from derive import lms, mistakes, variants
+from derive.problem import loads
+
+NAME = "notes-4c11-two-spheres"
+SEED = 7
+COUNT = 4
+RESULT = "v_A2n"
+
+
+@pytest.fixture(scope="module")
+def compiled() -> variants.Compiled:
+    return variants.compile_problem(derive.load(NAME))
+
+
+@pytest.fixture(scope="module")
+def chosen(compiled: variants.Compiled) -> list[variants.Variant]:
+    return variants.draw(compiled, COUNT, seed=SEED)
+
+
+@pytest.fixture(scope="module")
+def moodle(compiled: variants.Compiled, chosen: list[variants.Variant]) -> str:
+    return lms.moodle_xml(compiled, chosen, result=RESULT, category=f"$course$/derive/{NAME}")
+
+
+@pytest.fixture(scope="module")
+def pl_folder(compiled: variants.Compiled, chosen: list[variants.Variant], tmp_path_factory) -> Path:
+    folder = tmp_path_factory.mktemp("pl") / "question"
+    lms.prairielearn(compiled, chosen, folder, result=RESULT, seed=SEED)
+    return folder
+
+
+def _text(el: ET.Element, path: str) -> str:
+    found = el.find(path)
+    assert found is not None, f"missing <{path}>"
+    return found.text or ""
+
+
+def _numerical(xml: str) -> list[ET.Element]:
+    root = ET.fromstring(xml)
+    return [q for q in root.findall("question") if q.get("type") == "numerical"]
+
+
+def _ulp(shown: str) -> Decimal:
+    return Decimal(1).scaleb(Decimal(shown).as_tuple().exponent)
+
+
+# ---------------------------------------------------------------- Moodle XML
+
+
+def test_moodle_xml_has_a_category_and_one_numerical_question_per_variant(
+    moodle: str, compiled: variants.Compiled, chosen: list[variants.Variant]
+) -> None:
+    assert moodle.startswith('<?xml version="1.0" encoding="UTF-8"?>')
+    root = ET.fromstring(moodle)
+    assert root.tag == "quiz"
+    questions = root.findall("question")
+    assert questions[0].get("type") == "category"
+    assert _text(questions[0], "category/text") == f"$course$/derive/{NAME}"
+    numerical = _numerical(moodle)
+    assert len(numerical) == len(questions) - 1 == COUNT
+    for q, v in zip(numerical, chosen, strict=True):
+        key = variants.answers(compiled, v)[RESULT]  # what key.json holds
+        assert f"variant {v.number:02d}" in _text(q, "name/text")
+        assert q.find("questiontext").get("format") == "html"
+        text = _text(q, "questiontext/text")
+        given = variants.given_values(compiled, v)
+        assert f"m_{{A}} = {given['m_A']['value']:g}" in text and "<strong>Given.</strong>" in text
+        assert r"Enter \(v_{A2n}\)" in text and "in m/s" in text
+        assert "**" not in text and "$" not in text and "ANSWER" not in text
+        assert q.find("generalfeedback").get("format") == "html"
+        feedback = _text(q, "generalfeedback/text")
+        assert r"\[" in feedback and "ANSWER" in feedback and "$$" not in feedback
+        assert float(_text(q, "defaultgrade")) > 0 and 0 <= float(_text(q, "penalty")) <= 1
+        right = [a for a in q.findall("answer") if a.get("fraction") == "100"]
+        assert len(right) == 1
+        assert Decimal(_text(right[0], "text")) == Decimal(key["shown"])
+        assert right[0].find("feedback/text") is not None
+        tol = Decimal(_text(right[0], "tolerance"))
+        assert tol > 0 and tol == Decimal("1.5") * _ulp(key["shown"])
+        assert abs(Decimal(repr(key["value"])) - Decimal(key["shown"])) <= tol  # the exact value is accepted
+        assert _text(q, "units/unit/unit_name") == "m/s" and _text(q, "units/unit/multiplier") == "1"
+        assert _text(q, "showunits") == "0" and _text(q, "unitgradingtype") == "0"
+
+
+def test_moodle_xml_has_the_common_mistakes_as_wrong_answers(moodle: str) -> None:
+    hints = {m.description for m in mistakes.REGISTRY.values()}
+    total = 0
+    for q in _numerical(moodle):
+        right = next(a for a in q.findall("answer") if a.get("fraction") == "100")
+        r, tol = Decimal(_text(right, "text")), Decimal(_text(right, "tolerance"))
+        wrong = [a for a in q.findall("answer") if a.get("fraction") == "0"]
+        values = [Decimal(_text(a, "text")) for a in wrong]
+        assert len(set(values)) == len(values)  # one answer per value
+        for a, x in zip(wrong, values, strict=True):
+            assert abs(x - r) > tol  # never a right answer marked wrong
+            assert Decimal(_text(a, "tolerance")) > 0
+            feedback = _text(a, "feedback/text")
+            assert feedback.strip() and any(lms._esc(h) in feedback for h in hints)
+        total += len(wrong)
+    assert total >= COUNT
+
+
+def test_moodle_wrong_values_are_what_the_checker_predicts(
+    compiled: variants.Compiled, chosen: list[variants.Variant]
+) -> None:
+    """The cheap per-variant mistakes equal those of a fresh solve of the variant's numbers."""
+    v = chosen[1]
+    text = Path(derive.resources.bundled()[NAME]).read_text()
+    for name, value in v.values.items():
+        unit = {"m_A": "kg", "m_B": "kg", "v_A1": "m/s", "v_B1": "m/s", "e": ""}[name]
+        shown = format(Decimal(str(float(value))).normalize(), "f")
+        text = re.sub(
+            rf"^{name} = .*$", f'{name} = "{shown} {unit}"' if unit else f"{name} = {shown}", text, count=1, flags=re.M
+        )
+    fresh = mistakes.outcomes(derive.solve(loads(text, path="variant.toml")))
+    mine = dict(lms.MistakeModel(compiled).values(v, RESULT))
+    assert fresh
+    for out in fresh:
+        q = out.results[RESULT]
+        assert mine[out.mistake.name] == pytest.approx(float(q.value), rel=1e-9)
+
+
+def test_moodle_xml_is_reproducible(compiled: variants.Compiled, moodle: str) -> None:
+    again = lms.moodle_xml(
+        compiled, variants.draw(compiled, COUNT, seed=SEED), result=RESULT, category=f"$course$/derive/{NAME}"
+    )
+    assert again == moodle
+    other = lms.moodle_xml(compiled, variants.draw(compiled, 2, seed=SEED + 1), result=RESULT, with_mistakes=False)
+    assert other != moodle and len(_numerical(other)) == 2
+    assert all(a.get("fraction") == "100" for q in _numerical(other) for a in q.findall("answer"))
+
+
+def test_default_result_and_a_bad_one(compiled: variants.Compiled, chosen: list[variants.Variant]) -> None:
+    assert lms.default_result(compiled, chosen) == compiled.problem.find[0] == "v_A2"
+    with pytest.raises(derive.errors.InputError, match="--result nope"):
+        lms.moodle_xml(compiled, chosen, result="nope")
+
+
+def test_tolerance_rule() -> None:
+    assert lms.tolerance("8.40") == Decimal("0.015")
+    assert lms.tolerance("-1.109") == Decimal("0.0015")
+    assert lms.tolerance("1200") == Decimal("1.5")
+    assert lms.tolerance("1.23e+7") == Decimal("1.5e5")
+    assert lms.tolerance("0") == lms.ZERO_TOLERANCE
+
+
+def test_markdown_to_html() -> None:
+    md = (
+        "# Title\n\n*Source: A \\& B &lt;x&gt;*\n\n**Given.** m = 2 \\*kg\\* and $a < b$.\n\n"
+        "- $m_{A} = 2$\n- $e = 0.5$\n\n## 1) Stage\n\n$$\nx = \\frac{1}{2} \\tag{1}\n$$\n\n<div>svg</div>\n"
+    )
+    out = lms.md_to_html(md)
+    assert "<h3>Title</h3>" in out and "<h4>1) Stage</h4>" in out
+    assert "<em>Source: A &amp; B &lt;x&gt;</em>" in out
+    assert r"<strong>Given.</strong> m = 2 *kg* and \(a &lt; b\)." in out
+    assert r"<ul><li>\(m_{A} = 2\)</li><li>\(e = 0.5\)</li></ul>" in out
+    assert r"<p>\[ x = \frac{1}{2} \tag{1} \]</p>" in out
+    assert "svg" not in out and "$" not in out
+
+
+# ---------------------------------------------------------------- PrairieLearn
+
+
+def test_prairielearn_info_json(pl_folder: Path, compiled: variants.Compiled, chosen: list[variants.Variant]) -> None:
+    assert sorted(p.name for p in pl_folder.iterdir()) == ["info.json", "question.html", "server.py"]
+    info = json.loads((pl_folder / "info.json").read_text())
+    assert info["type"] == "v3" and info["topic"] and compiled.problem.title in info["title"]
+    assert isinstance(info["tags"], list) and "derive" in info["tags"]
+    assert uuid.UUID(info["uuid"]).version == 5
+    same = lms.prairielearn_files(compiled, chosen, result=RESULT, seed=SEED)
+    assert json.loads(same["info.json"])["uuid"] == info["uuid"]  # deterministic
+    other = lms.prairielearn_files(compiled, chosen, result=RESULT, seed=SEED + 1)
+    assert json.loads(other["info.json"])["uuid"] != info["uuid"]
+
+
+def _server(folder: Path) -> dict:
+    code = (folder / "server.py").read_text()
+    namespace: dict = {}
+    exec(compile(code, str(folder / "server.py"), "exec"), namespace)
+    return namespace
+
+
+def _mustache(page: str, params: dict) -> str:
+    page = re.sub(r"\{\{\{params\.(\w+)\}\}\}", lambda m: str(params[m.group(1)]), page)
+    return re.sub(r"\{\{params\.(\w+)\}\}", lambda m: str(params[m.group(1)]), page)
+
+
+def test_prairielearn_question_and_server(
+    pl_folder: Path, compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str
+) -> None:
+    html = (pl_folder / "question.html").read_text()
+    assert "<pl-question-panel>" in html and "</pl-question-panel>" in html
+    tag = re.search(r"<pl-number-input [^>]*>", html)
+    assert tag and f'answers-name="{RESULT}"' in tag.group(0) and 'atol="{{params.derive_atol}}"' in tag.group(0)
+    assert 'suffix="m/s"' in tag.group(0)
+    for name in compiled.names:
+        assert "{{params.%s}}" % name in html  # noqa: UP031 - Mustache braces
+    server = _server(pl_folder)
+    questions = _numerical(moodle)
+    for seed, index in ((0, 0), (COUNT + 2, 2)):
+        data = {"params": {}, "correct_answers": {}, "variant_seed": seed}
+        server["generate"](data)
+        v = chosen[index]
+        key = variants.answers(compiled, v)[RESULT]
+        assert data["correct_answers"][RESULT] == float(key["shown"])
+        assert data["params"]["derive_variant"] == v.number
+        assert data["params"]["derive_atol"] == pytest.approx(1.5 * float(_ulp(key["shown"])))
+        for name, given in variants.given_values(compiled, v).items():
+            assert float(data["params"][name]) == pytest.approx(given["value"])
+        # the statement PrairieLearn shows is the Moodle question's, with the same numbers
+        panel = _mustache(html, data["params"]).split("<pl-question-panel>\n")[1].split("\n<p>Enter")[0]
+        moodle_text = _text(questions[index], "questiontext/text").split("\n<p>Enter")[0]
+        assert panel == moodle_text
+        assert "ANSWER" in data["params"]["derive_solution"]
+    bare: dict = {"variant_seed": 1}
+    server["generate"](bare)  # a plain dict works too
+    assert bare["correct_answers"][RESULT] == float(variants.answers(compiled, chosen[1])[RESULT]["shown"])
+
+
+# ---------------------------------------------------------------- the CLI
+
+
+def test_cli_writes_moodle_and_prairielearn(cli, tmp_path: Path) -> None:
+    out, xml, pl = tmp_path / "hw", tmp_path / "hw.xml", tmp_path / "pl" / "impact"
+    r = cli(
+        "variants", NAME, "--count", "3", "--seed", "4", "-o", str(out),
+        "--moodle", str(xml), "--prairielearn", str(pl), "--result", "v_B2n",
+    )  # fmt: skip
+    assert r.code == 0, r.err
+    key = json.loads((out / "key.json").read_text())
+    questions = _numerical(xml.read_text())
+    assert len(questions) == len(key["variants"]) == 3
+    server = _server(pl)
+    for i, (q, row) in enumerate(zip(questions, key["variants"], strict=True)):
+        shown = row["results"]["v_B2n"]["shown"]
+        right = next(a for a in q.findall("answer") if a.get("fraction") == "100")
+        assert Decimal(_text(right, "text")) == Decimal(shown)
+        data: dict = {"params": {}, "correct_answers": {}, "variant_seed": i}
+        server["generate"](data)
+        assert data["correct_answers"]["v_B2n"] == float(shown)
+    assert 'answers-name="v_B2n"' in (pl / "question.html").read_text()
+
+
+def test_cli_bad_result_writes_nothing(cli, tmp_path: Path) -> None:
+    out, xml = tmp_path / "hw", tmp_path / "hw.xml"
+    r = cli("variants", NAME, "--count", "2", "-o", str(out), "--moodle", str(xml), "--result", "v_C2")
+    assert r.code == 2 and "--result v_C2" in r.err and "v_A2n" in r.err
+    assert not out.exists() and not xml.exists()
+    r = cli("variants", NAME, "--count", "2", "-o", str(out), "--result", "v_A2n")
+    assert r.code == 2 and "--moodle" in r.err
