@@ -559,7 +559,7 @@ class _Checker:
             if g.value is not None and g.value.is_Rational:
                 data.add(g.value)
             if g.value is not None and g.dim == ANGLE:
-                deg = sympy.nsimplify(g.value * 180 / sympy.pi)
+                deg = (g.value * 180 / sympy.pi)
                 if deg.is_Rational:
                     data.add(deg)
             if g.written:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from derive import escape
 from derive.solution import Solution
 from derive.symbols import latex_name, symbol
 
@@ -338,7 +339,7 @@ def to_tikz(fig: Figure) -> str:
             )
         elif isinstance(s, Surface):
             out.append(
-                rf"\draw[very thick] ({s.x1:.3f},{s.y1:.3f}) -- ({s.x2:.3f},{s.y2:.3f}) node[anchor=west] {{{s.label}}};"
+                rf"\draw[very thick] ({s.x1:.3f},{s.y1:.3f}) -- ({s.x2:.3f},{s.y2:.3f}) node[anchor=west] {{{escape.tex(s.label)}}};"
             )
             length = math.hypot(s.x2 - s.x1, s.y2 - s.y1)
             ux, uy = (s.x2 - s.x1) / length, (s.y2 - s.y1) / length

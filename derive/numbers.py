@@ -89,7 +89,9 @@ def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = 
 def format_fixed(value: sympy.Expr | Decimal, decimals: int) -> str:
     """``value`` rounded half up to ``decimals`` places after the point."""
     d = to_decimal(value)
-    r = d.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    with localcontext() as ctx:  # enough digits for numbers far apart in size
+        ctx.prec = max(WORKING_PRECISION, d.adjusted() + decimals + 5)
+        r = d.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
     if r == 0:
         r = abs(r)
     return format(r, "f")

@@ -332,7 +332,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given]
     if digits is not None and (isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 10):
         raise ctx.error("expected a whole number of significant figures from 1 to 10", key="digits", value=digits)
     system = data.get("units")
-    if system is not None and system not in units.SYSTEMS:
+    if system is not None and (not isinstance(system, str) or system not in units.SYSTEMS):
         raise ctx.error('expected "SI" or "US"', key="units", value=system)
 
     given_tbl = data.get("given")
@@ -629,7 +629,6 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bo
             raise err("does not evaluate to a number") from None
         if not math.isfinite(num.real) or abs(num.imag) > 1e-12 * max(1.0, abs(num.real)):
             raise err("does not evaluate to a finite real number")
-        value = sympy.nsimplify(value, rational=False) if not value.is_Rational else value
     work = (
         units.working_unit(parsed.dim, system)
         if parsed.dim in units.SYSTEMS[system]

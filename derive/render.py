@@ -17,7 +17,7 @@ import sympy
 
 from derive import escape, figure
 from derive.errors import InputError
-from derive.numbers import format_number, to_decimal
+from derive.numbers import format_number
 from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
 from derive.problem import Given
 from derive.resources import templates_dir
@@ -85,7 +85,7 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
         unit = plain_unit(g.unit) if g.unit else "a pure number"
         return name, f"kept as a symbol ({unit})"
     if g.unit == "deg":
-        deg = sympy.nsimplify(g.value * 180 / sympy.pi)
+        deg = (g.value * 180 / sympy.pi)
         value = exact_latex(deg, style.digits, 1) + r"^\circ"
     else:
         value = exact_latex(g.value, style.digits, 1)
@@ -124,7 +124,7 @@ def _statement(p, style: Style) -> str | None:
         if g.value is None:
             return g.name
         if g.unit == "deg":
-            return format(to_decimal(sympy.nsimplify(g.value * 180 / sympy.pi)).normalize(), "f") + "°"
+            return exact_latex(g.value * 180 / sympy.pi, style.digits, 1) + "°"
         text = exact_latex(g.value, style.digits, 1)
         return text + (" " + plain_unit(g.unit) if g.unit else "")
 

@@ -191,7 +191,7 @@ def parse_unit(text: str) -> Unit:
             raise ValueError(f"cannot read the unit {text!r}")
     if expect_name:
         raise ValueError(f"cannot read the unit {text!r}")
-    return Unit(src, sympy.nsimplify(factor), (dim[0], dim[1], dim[2], dim[3]))
+    return Unit(src, factor, (dim[0], dim[1], dim[2], dim[3]))
 
 
 def working_unit(dim: Dim, system: str) -> Unit:
@@ -206,7 +206,7 @@ def convert(value: sympy.Expr, src: Unit, dst: Unit) -> sympy.Expr:
     """``value`` in ``src`` expressed exactly in ``dst`` (same dimension)."""
     if src.dim != dst.dim:
         raise ValueError(f"cannot convert {src.text} to {dst.text}")
-    return sympy.nsimplify(value * src.factor / dst.factor, rational=False)
+    return value * src.factor / dst.factor  # exact: the factors are exact
 
 
 def describe(dim: Dim) -> str:

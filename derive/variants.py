@@ -20,7 +20,7 @@ import sympy
 
 from derive.errors import InputError
 from derive.impact import independent_map
-from derive.numbers import format_fixed, format_number, to_decimal
+from derive.numbers import format_fixed, format_number
 from derive.printing import SlotBook, exact_latex
 from derive.problem import Given, Problem
 from derive.solution import Solution
@@ -188,7 +188,7 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
 
 def _given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
     if g.unit == "deg":
-        return format(to_decimal(sympy.nsimplify(value * 180 / sympy.pi)).normalize(), "f")
+        return exact_latex(value * 180 / sympy.pi, digits, 1)
     return exact_latex(value, digits, 1)
 
 
