@@ -231,6 +231,19 @@ def test_prairielearn_question_and_server(
     assert bare["correct_answers"][RESULT] == float(variants.answers(compiled, chosen[1])[RESULT]["shown"])
 
 
+def test_prairielearn_statement_as_one_parameter_when_no_template(
+    compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str, tmp_path: Path, monkeypatch
+) -> None:
+    """A statement with a number that is no varied given's goes whole into the params."""
+    monkeypatch.setattr(lms, "_statement_template", lambda compiled: None)
+    lms.prairielearn(compiled, chosen[:2], tmp_path, result=RESULT)
+    assert "{{{params.derive_statement}}}" in (tmp_path / "question.html").read_text()
+    data: dict = {"variant_seed": 1}
+    _server(tmp_path)["generate"](data)
+    moodle_text = _text(_numerical(moodle)[1], "questiontext/text").split("\n<p>Enter")[0]
+    assert data["params"]["derive_statement"] == moodle_text
+
+
 # ---------------------------------------------------------------- the CLI
 
 
