@@ -44,6 +44,7 @@ class ChainStage:
     solution: Solution | None = None
     inputs: tuple[str, ...] = ()
     outputs: tuple[str, ...] = ()
+    exports: tuple[tuple[str, str], ...] = ()  # (name for later stages, the impact's result)
 
 
 @dataclass(frozen=True)
@@ -345,7 +346,7 @@ class _Solver:
 
     def stage_impact(self, i: int, st: dict) -> ChainStage:
         table = {k: v for k, v in st.items() if k not in ("type", "results", "title")}
-        data = {"title": st.get("title", f"Impact {i}"), **table}
+        data = {"title": st.get("title", "An impact"), **table}
         data.setdefault("given", {})
         # a chain's unknowns are symbols inside the stage: a later stage finds them
         seed = {n: (replace(g, unknown=False) if g.unknown else g) for n, g in self.known.items()}
@@ -372,6 +373,7 @@ class _Solver:
         ind = independent_map(problem)
         self.approaches.append((problem.motion_A.n - problem.motion_B.n).xreplace(ind).xreplace(own))
         outputs = []
+        exports: list[tuple[str, str]] = []
         for rname, new in results.items():
             r = solution.results.get(rname)
             if r is None or not isinstance(new, str):
@@ -382,12 +384,13 @@ class _Solver:
                 expr = r.partial * sympy.pi / 180 if r.value is None else r.value * sympy.pi / 180
             g = self.define(i, new, expr, dim, "deg" if dim == units.ANGLE else None)
             outputs.append(g.name)
+            exports.append((g.name, rname))
         for g in problem.givens:  # unknowns found by this impact become known to later stages
             if g.unknown and g.name not in self.known:
                 r = solution.results[g.name]
                 self.define(i, g.name, r.closed.xreplace(ind).xreplace(own), g.dim, g.unit)
                 outputs.append(g.name)
-        return ChainStage(i, "impact", data["title"], solution=solution, outputs=tuple(outputs))
+        return ChainStage(i, "impact", data["title"], solution=solution, outputs=tuple(outputs), exports=tuple(exports))
 
     def stage_define(self, i: int, st: dict) -> ChainStage:
         raw = st.get("expr")

@@ -559,7 +559,7 @@ class _Checker:
             if g.value is not None and g.value.is_Rational:
                 data.add(g.value)
             if g.value is not None and g.dim == ANGLE:
-                deg = (g.value * 180 / sympy.pi)
+                deg = g.value * 180 / sympy.pi
                 if deg.is_Rational:
                     data.add(deg)
             if g.written:
@@ -655,7 +655,8 @@ class _Checker:
                 r = _round_figures(xd, _figures(u))
             except InvalidOperation:
                 return False
-            return abs(u - r) <= Decimal(1).scaleb(r.as_tuple().exponent)
+            # ±1 in the last digit the user wrote (not of the rounded value: "1" is not 10.65)
+            return abs(u - r) <= Decimal(1).scaleb(u.as_tuple().exponent)
 
     def _method(self, u: Decimal) -> str:
         if self.tolerance is not None:

@@ -326,7 +326,7 @@ def to_tikz(fig: Figure) -> str:
     out = [r"\begin{tikzpicture}[>=stealth, scale=0.9]"]
 
     def lab(name: str) -> str:
-        return "$" + (latex_name(name) if "_" in name or name in ("theta", "phi", "n", "t") else name) + "$"
+        return "$" + latex_name(name) + "$"  # Greek names (alpha, theta_1) as letters
 
     for s in fig.shapes:
         if isinstance(s, Circle):

@@ -66,6 +66,10 @@ def _one_line(text: str) -> str:
 def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = derive.solve(derive.load(name))
+    from derive.chain import ChainSolution
+
+    if isinstance(solution, ChainSolution):
+        return _chain_view(solution, mode, digits)
     data = view(solution, digits, figures=mode == "solutions")
     data["answers"] = [
         line
@@ -76,6 +80,38 @@ def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, 
         if line["boxed"]
     ]
     return data
+
+
+def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
+    """A chain in the shape of one problem: its stages in order (an impact's own
+    stages numbered k.1, k.2, ...), its boxed answers."""
+    from derive.render import chain_view
+
+    data = chain_view(solution, digits, figures=mode == "solutions")
+    stages = []
+    for st in data["stages"]:
+        if st["impact"]:
+            for sub in st["stages"]:
+                stages.append(
+                    {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
+                )
+        else:
+            stages.append(
+                {
+                    "number": st["number"],
+                    "title": st["title"],
+                    "blocks": st["blocks"],
+                    "figure_svg": "",
+                    "figure_tikz": "",
+                }
+            )
+    return {
+        **data,
+        "find": [("text", data["find"])],
+        "stages": stages,
+        "kind": "chain",
+        "system": solution.problem.system,
+    }
 
 
 def build_handout(

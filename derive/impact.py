@@ -175,7 +175,7 @@ def _check_count(problem: Problem, nums: tuple[int, ...], unknowns: tuple[sympy.
     if len(unknowns) < len(nums):
         extra = len(nums) - len(unknowns)
         raise SolveError(
-            f"{len(nums)} equations {listed} but only {len(unknowns)} unknowns ({names_}): the givens over-determine the impact; "
+            f"{len(nums)} equations {listed} but only {len(unknowns)} unknown{'' if len(unknowns) == 1 else 's'} ({names_}): the givens over-determine the impact; "
             f'mark {extra} more given(s) "?" or remove {extra} of the velocities after the impact',
             where=problem.path,
             field="[given]",
@@ -199,8 +199,21 @@ def _solve_inverse(
         if _physical(problem, root, numeric):
             kept.append(root)
     if not kept:
+        found = [r for r in roots if set(r) == set(unknowns)]
+        shown = ""
+        if found:
+            from derive.numbers import format_number
+
+            parts = []
+            for u in unknowns:
+                v = found[0][u].xreplace(numeric)
+                parts.append(
+                    f"{u.name} = {format_number(v, 4)}" if not v.free_symbols and v.is_real else f"{u.name} = {v}"
+                )
+            shown = f": the solution {', '.join(parts)} is not physical (e must lie between 0 and 1, masses be positive, speeds not negative, and the bodies approach)"
         raise SolveError(
-            "equations (1)-(4) have no physical solution for these givens (check the signs and the numbers)",
+            "the equations have no physical solution for these givens"
+            + (shown or " (check the signs and the numbers)"),
             where=problem.path,
         )
     if len(kept) > 1:

@@ -587,7 +587,7 @@ def degrees_as_radians(model: Model) -> Variant | None:
     values = {}
     for g in model.problem.givens:
         if g.dim == ANGLE and g.value is not None and g.definition is None and g.written is None and not g.unknown:
-            values[g.symbol] = (g.value * 180 / sympy.pi)
+            values[g.symbol] = g.value * 180 / sympy.pi
     if not values:
         return None
     return Variant(values=values)

@@ -7,6 +7,7 @@ limit; a missing TeX installation or a TeX error is a one-line error.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
@@ -78,11 +79,8 @@ def _run(cmd: list[str], cwd: str, env: dict[str, str], time_limit: float) -> su
     try:
         out, err = proc.communicate(timeout=time_limit)
     except BaseException:
-        try:
+        with contextlib.suppress(ProcessLookupError):
             os.killpg(proc.pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
         proc.communicate()
         raise
     return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
-

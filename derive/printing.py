@@ -421,7 +421,7 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
             continue
         v = style.values[s]
         if s in style.angles:
-            deg = (v * 180 / sympy.pi)
+            deg = v * 180 / sympy.pi
             out[s] = exact_latex(deg, digits, extra) + r"^\circ"
         else:
             out[s] = exact_latex(v, digits, extra)

@@ -847,7 +847,7 @@ def _motion(
         angle = by_name[angle_raw.strip()]
         if angle.dim != ANGLE:
             raise ctx.error(
-                f"{angle.name} is {describe(angle.dim)}, not an angle",
+                f'{angle.name} is {describe(angle.dim)}, not an angle: give it with its unit, such as "30 deg"',
                 section=b,
                 key="angle",
                 value=angle_raw,

@@ -22,7 +22,7 @@ from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_lat
 from derive.problem import Given
 from derive.resources import templates_dir
 from derive.solution import Eqn, Math, Side, Solution
-from derive.symbols import latex_name
+from derive.symbols import latex_name, symbol
 from derive.units import latex_unit, plain_unit
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
@@ -85,7 +85,7 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
         unit = plain_unit(g.unit) if g.unit else "a pure number"
         return name, f"kept as a symbol ({unit})"
     if g.unit == "deg":
-        deg = (g.value * 180 / sympy.pi)
+        deg = g.value * 180 / sympy.pi
         value = exact_latex(deg, style.digits, 1) + r"^\circ"
     else:
         value = exact_latex(g.value, style.digits, 1)
@@ -134,8 +134,11 @@ def _statement(p, style: Style) -> str | None:
 _FIND_WORDS = {
     "v_A2": "the speed of A",
     "v_B2": "the speed of B",
-    "theta_A2": "the direction of A",
-    "theta_B2": "the direction of B",
+    "theta_A2": "the direction of A (from +t)",
+    "theta_B2": "the direction of B (from +t)",
+    "beta_A2": "the direction of A (from +n)",
+    "beta_B2": "the direction of B (from +n)",
+    "J_n": "the impulse along n",
     "T_1": "the kinetic energy before the impact",
     "T_2": "the kinetic energy after the impact",
     "T_lost": "the kinetic energy lost",
@@ -329,8 +332,21 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     for st in sol.stages:
         if st.solution is not None:
             v = view(st.solution, digits, figures=figures)
+            carried = []
+            for new, rname in st.exports:
+                r = sol.results[new]
+                value = r.value if r.value is not None else r.partial
+                eqn = Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((value,), "result")), unit=r.unit or None)
+                carried.append(latex_eqn(eqn, style)[0])
             stages.append(
-                {"number": st.number, "title": st.title, "impact": True, "givens": v["givens"], "stages": v["stages"]}
+                {
+                    "number": st.number,
+                    "title": st.title,
+                    "impact": True,
+                    "givens": v["givens"],
+                    "stages": v["stages"],
+                    "carried": carried,
+                }
             )
         else:
             stages.append(
@@ -353,7 +369,12 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     if answers:
         answers[-1]["latex"] += ANSWER_MARK
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
-    find = p.question or ("The quantities " + ", ".join(names) + "." if names else "")
+    g_sym = symbol("g", "positive")
+    if g_sym in sol.values and "g" not in {g.name for g in p.givens}:
+        shown = exact_latex(sol.values[g_sym], style.digits, 1)
+        unit = "m/s^2" if p.system == "SI" else "ft/s^2"
+        givens.append({"latex": rf"g = {shown}\ {latex_unit(unit)}", "note": "standard gravity, not given"})
+    find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
     return {
         "title": p.title,
         "source": p.source,

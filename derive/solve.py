@@ -382,7 +382,9 @@ class _Writer:
         t_form = (-vx * sympy.sin(phi), vy * sympy.cos(phi))
         for c, form, expr in ((cn, n_form, motion.n), (ct, t_form, motion.t)):
             value = sympy.expand(self.num(expr))  # cos 0° = 1 and 0 · v_A1 = 0 done, not shown
-            lines.append(Eqn((Side((c,)), Side(form), Side(form, "values"), Side((value,), "result")), unit=self.unit_v))
+            lines.append(
+                Eqn((Side((c,)), Side(form), Side(form, "values"), Side((value,), "result")), unit=self.unit_v)
+            )
         return lines
 
     def kinetics(self) -> list[Block]:
@@ -760,10 +762,16 @@ class _Writer:
             converted = _convert_result(r, unit)
             extra.append(Eqn((Side((r.symbol,)), Side((converted,), "result")), unit=unit, boxed=True))
         if extra:
-            words = "As asked"
+            text: Text = ("As asked:",)
             if "J_n" in p.find:
-                words += " (J_n is the impulse along +n on B; on A it is −J_n)"
-            blocks.append(Block((words + ":",), tuple(extra)))
+                text = (
+                    "As asked (",
+                    Math(symbol("J_n")),
+                    " is the impulse along +n on B; on A it is ",
+                    Math(-symbol("J_n")),
+                    "):",
+                )
+            blocks.append(Block(text, tuple(extra)))
         blocks.append(self.energy())
         return blocks
 
@@ -817,7 +825,9 @@ class _Writer:
         if xv == 0:
             pass
         elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
-            sides.append(Side((sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False),)))
+            sides.append(
+                Side((sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False),))
+            )
             shown = _f(ratio) if not known else sympy.Mul(_f(yv), sympy.Pow(_f(xv), -1, evaluate=False), evaluate=False)
             sides.append(Side((_show(sympy.atan(shown, evaluate=False)),), "numeric"))
         elif known:  # x < 0: the angle lies beyond ±90°
