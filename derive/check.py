@@ -321,21 +321,10 @@ def equation_option(text: str) -> Entry:
 
 def load_answers(path: str | Path) -> Answers:
     """Read an answers file (TOML: ``[answers]``, optional ``[equations]`` and ``tolerance``)."""
+    from derive.fileio import read_user_text
+
     shown = str(path)
-    try:
-        raw = Path(path).read_bytes()
-    except FileNotFoundError:
-        raise InputError("no such file", where=shown) from None
-    except IsADirectoryError:
-        raise InputError("is a folder, not an answers file", where=shown) from None
-    except OSError as exc:
-        raise InputError(f"cannot be read ({exc.strerror})", where=shown) from exc
-    if len(raw) > 1_000_000:
-        raise InputError("is too large for an answers file (over 1 MB)", where=shown)
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise InputError(f"is not UTF-8 text (byte {exc.start + 1})", where=shown) from exc
+    text = read_user_text(path, "an answers file")
     return loads_answers(text, path=shown)
 
 

@@ -51,3 +51,27 @@ def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+MAX_INPUT = 1_000_000  # bytes: a problem or answers file is small
+
+
+def read_user_text(path: str | Path, what: str) -> str:
+    """The text of a file someone wrote (``what``: "a problem file", "an answers file"),
+    or a one-line InputError naming the file: missing, a folder, unreadable, too
+    large, or not UTF-8."""
+    shown = str(path)
+    try:
+        raw = Path(path).read_bytes()
+    except FileNotFoundError:
+        raise InputError("no such file", where=shown) from None
+    except IsADirectoryError:
+        raise InputError(f"is a folder, not {what}", where=shown) from None
+    except OSError as exc:
+        raise InputError(f"cannot be read ({exc.strerror})", where=shown) from exc
+    if len(raw) > MAX_INPUT:
+        raise InputError(f"is too large for {what} (over 1 MB)", where=shown)
+    try:
+        return raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise InputError(f"is not UTF-8 text (byte {exc.start + 1})", where=shown) from exc

@@ -256,22 +256,11 @@ def load(path: str | Path, *, name: str | None = None) -> Problem:
 
     >>> p = load(bundled_path("notes-4c11-two-spheres"))  # doctest: +SKIP
     """
+    from derive.fileio import read_user_text
+
     path = Path(path)
     shown = str(path)
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise InputError("no such file", where=shown) from None
-    except IsADirectoryError:
-        raise InputError("is a folder, not a problem file", where=shown) from None
-    except OSError as exc:
-        raise InputError(f"cannot be read ({exc.strerror})", where=shown) from exc
-    if len(raw) > 1_000_000:
-        raise InputError("is too large for a problem file (over 1 MB)", where=shown)
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        raise InputError(f"is not UTF-8 text (byte {exc.start + 1})", where=shown) from exc
+    text = read_user_text(path, "a problem file")
     return loads(text, path=shown, name=name or path.stem)
 
 

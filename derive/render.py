@@ -269,6 +269,19 @@ def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
     return "".join(f"${s}$" if kind == "math" else s for kind, s in parts)
 
 
+def _givens_json(givens: tuple[Given, ...]) -> dict[str, dict[str, Any]]:
+    """Each given's number (angles in degrees; null when symbolic) and unit."""
+    return {
+        g.name: {
+            "value": None
+            if g.value is None
+            else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
+            "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
+        }
+        for g in givens
+    }
+
+
 def to_json(solution: Solution, digits: int | None = None) -> str:
     """The JSON contract of DESIGN.md: title, kind, results (+ givens and steps)."""
     p = solution.problem
@@ -297,15 +310,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
         "units": p.system,
         "find": list(p.find),
         "results": results,
-        "givens": {
-            g.name: {
-                "value": None
-                if g.value is None
-                else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
-                "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
-            }
-            for g in p.givens
-        },
+        "givens": _givens_json(p.givens),
         "stages": [
             {
                 "number": s["number"],
@@ -400,15 +405,7 @@ def _chain_json(sol: Any, digits: int | None) -> str:
         }
         if r.value is not None:
             results[name]["shown"] = format_number(r.value, d)
-    givens = {
-        g.name: {
-            "value": None
-            if g.value is None
-            else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
-            "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
-        }
-        for g in p.givens
-    }
+    givens = _givens_json(p.givens)
     view_ = chain_view(sol, digits, figures=False)
     stages = []
     for st in view_["stages"]:
