@@ -226,8 +226,13 @@ def _power(base: Parsed, exp: sympy.Expr) -> Parsed:
     if exp.is_Rational and abs(exp) > MAX_EXPONENT:
         raise ParseError(f"the exponent {exp} is too large (at most {MAX_EXPONENT})")
     if not exp.is_Rational:
-        approx = abs(float(exp.evalf(15)))
-        if approx > MAX_EXPONENT:
+        try:
+            approx = complex(exp.evalf(15))  # (-1)^0.5 is i: not an exponent
+        except (TypeError, ValueError):
+            raise ParseError("the exponent is not a number") from None
+        if approx.imag != 0 or not math.isfinite(approx.real):
+            raise ParseError("the exponent is not a real number")
+        if abs(approx.real) > MAX_EXPONENT:
             raise ParseError(f"the exponent is too large (at most {MAX_EXPONENT})")
     if base.expr.is_Rational and exp.is_Rational:
         b = base.expr

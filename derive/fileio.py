@@ -62,7 +62,8 @@ def read_user_text(path: str | Path, what: str) -> str:
     large, or not UTF-8."""
     shown = str(path)
     try:
-        raw = Path(path).read_bytes()
+        with open(path, "rb") as fh:  # no more than the limit: /dev/zero or a huge file must not fill memory
+            raw = fh.read(MAX_INPUT + 1)
     except FileNotFoundError:
         raise InputError("no such file", where=shown) from None
     except IsADirectoryError:

@@ -235,10 +235,16 @@ class _Ctx:
         fld = None
         if key is not None:
             shown = _show(value) if value is not None else None
-            fld = (f"[{section}] " if section else "") + key + (f" = {shown}" if shown is not None else "")
+            fld = (f"[{section}] " if section else "") + _printable(key) + (f" = {shown}" if shown is not None else "")
         elif section is not None:
             fld = f"[{section}]"
         return cls(what, where=where, field=fld)
+
+
+def _printable(text: str) -> str:
+    """A key from the file as it can appear in a one-line message: control and
+    line-breaking characters escaped (a newline, ESC, U+2028 stay visible and harmless)."""
+    return "".join(ch if ch.isprintable() else ch.encode("unicode_escape").decode("ascii") for ch in text)
 
 
 def _show(value: Any) -> str:

@@ -45,7 +45,7 @@ def problem_from() -> Callable[[str], derive.Problem]:
 # ---------------------------------------------------------------- fuzz summary (tests/test_fuzz.py)
 
 
-def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:  # noqa: ANN001
+def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     """One line: how many cases the fuzz tests ran (DERIVE_FUZZ_SCALE scales them)."""
     import os
     import sys

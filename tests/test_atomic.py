@@ -77,7 +77,7 @@ def test_failed_write_leaves_old_output_whole(tmp_path: Path, monkeypatch: pytes
     if step == "write":
 
         class Full:
-            def __init__(self, fh) -> None:  # noqa: ANN001
+            def __init__(self, fh) -> None:
                 self.fh = fh
 
             def __enter__(self) -> Full:
