@@ -15,7 +15,7 @@ compression), ``impact`` (a central impact, as in a problem file), ``bounces``
 
 from __future__ import annotations
 
-import math
+import re
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -415,7 +415,7 @@ class _Solver:
         try:
             lhs = parse(left.strip(), names)
             rhs_text = right.strip()
-            m = __import__("re").match(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-z].*)$", rhs_text)
+            m = re.match(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-z].*)$", rhs_text)
             if m:  # a number with a unit
                 u = units.parse_unit(m.group(2))
                 rhs_expr = sympy.Rational(m.group(1)) * u.factor / units.working_unit(u.dim, self.chain.system).factor
@@ -641,10 +641,6 @@ def _renumber(solution: Solution, offset: int) -> Solution:
 def solve_chain(chain: ChainProblem) -> ChainSolution:
     """Work the chain stage by stage."""
     return _Solver(chain).run()
-
-
-def is_finite(x: float) -> bool:
-    return math.isfinite(x)
 
 
 def _float_interval(rng: sympy.Set) -> sympy.Set:
