@@ -109,12 +109,14 @@ def _solve(args: argparse.Namespace) -> int:
 def _list(args: argparse.Namespace) -> int:
     from derive import problem, resources
 
-    for name, path in resources.bundled().items():
+    found = resources.bundled()
+    width = max((len(n) for n in found), default=0) + 2
+    for name, path in found.items():
         try:
             title = problem.load(path).title
         except DeriveError as exc:
             title = f"(broken: {exc})"
-        print(f"{name:40s} {title}")
+        print(f"{name:{width}s}{title}")
     return 0
 
 
