@@ -42,7 +42,6 @@ class ChainStage:
     title: str
     blocks: tuple[Block, ...] = ()
     solution: Solution | None = None
-    inputs: tuple[str, ...] = ()
     outputs: tuple[str, ...] = ()
     exports: tuple[tuple[str, str], ...] = ()  # (name for later stages, the impact's result)
 
@@ -174,24 +173,14 @@ class _Solver:
         """``expr`` in the givens' numbers (symbols without numbers, unknowns, stay)."""
         vals = {g.symbol: g.value for g in self.known.values() if g.value is not None}
         defs = {g.symbol: g.definition for g in self.known.values() if g.value is None and g.definition is not None}
-        out = expr
-        for _ in range(40):
-            new = out.xreplace(defs)
-            if new == out:
-                break
-            out = new
-        return out.xreplace(vals).xreplace(self.solved)
+        return _resolve(expr, defs).xreplace(vals).xreplace(self.solved)
 
     def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` with every earlier result replaced by its definition, down to the givens."""
         given = {g.name for g in self.chain.givens}
-        defs = {g.symbol: g.definition for n, g in self.known.items() if g.definition is not None and n not in given}
-        for _ in range(60):
-            new = expr.xreplace(defs)
-            if new == expr:
-                return expr
-            expr = new
-        return expr
+        return _resolve(
+            expr, {g.symbol: g.definition for n, g in self.known.items() if g.definition is not None and n not in given}
+        )
 
     def define(self, i: int, name: str, expr: sympy.Expr, dim: units.Dim, unit: str | None = None) -> Given:
         if not isinstance(name, str) or not name.isidentifier() or name in self.known:
@@ -240,7 +229,7 @@ class _Solver:
         return ChainSolution(self.chain, tuple(self.stages), results, values, angles)
 
     def energy_lines(
-        self, name: str, form: tuple, solved: sympy.Expr, result: Given, cancel: frozenset = frozenset()
+        self, form: tuple, solved: sympy.Expr, result: Given, cancel: frozenset = frozenset()
     ) -> tuple[Eqn, ...]:
         """Energy conservation written out: the balance, then the result with numbers."""
         lines = [Eqn((Side(form[0]), Side(form[1])), cancel=cancel)]
@@ -267,7 +256,7 @@ class _Solver:
             Math(sympy.Eq(symbol("T_1") + symbol("V_1"), symbol("T_2") + symbol("V_2"))),
             ". The mass cancels.",
         )
-        lines = self.energy_lines("fall", form, speed, out, frozenset({m}))
+        lines = self.energy_lines(form, speed, out, frozenset({m}))
         body = st.get("body", "the body")
         return ChainStage(
             i, "fall", f"{str(body).capitalize()} falls through the height", (Block(text, lines),), outputs=(out.name,)
@@ -281,7 +270,7 @@ class _Solver:
         out = self.define(i, st.get("result", f"h_{i}"), height, units.LENGTH)
         form = ((HALF * m * v**2,), (m * g * out.symbol,))
         text: Text = ("After the impact, mechanical energy is conserved again up to the highest point: ",)
-        lines = self.energy_lines("rise", form, height, out, frozenset({m}))
+        lines = self.energy_lines(form, height, out, frozenset({m}))
         return ChainStage(i, "rise", "Rise after the impact", (Block(text, lines),), outputs=(out.name,))
 
     def stage_slide(self, i: int, st: dict) -> ChainStage:
@@ -297,7 +286,7 @@ class _Solver:
             Math(sympy.Eq(symbol("F"), mu * m * g)),
             " does the work that stops the body.",
         )
-        lines = self.energy_lines("slide", form, d, out, frozenset({m}))
+        lines = self.energy_lines(form, d, out, frozenset({m}))
         return ChainStage(i, "slide", "Sliding to rest after the impact", (Block(text, lines),), outputs=(out.name,))
 
     def stage_spring(self, i: int, st: dict) -> ChainStage:
@@ -550,13 +539,8 @@ class _Solver:
             p = self.known.get(param)
             if p is None or p.dim != units.DIMENSIONLESS:
                 raise self.err(i, "range_of", "expected the name of a known coefficient such as e", param)
-            general = va - vb
             defs = {g.symbol: g.definition for g in self.known.values() if g.definition is not None and g.name != param}
-            for _ in range(20):
-                new = general.xreplace(defs)
-                if new == general:
-                    break
-                general = new
+            general = _resolve(va - vb, defs)
             keep = {g.symbol: g.value for n, g in self.known.items() if g.value is not None and n != param}
             general = sympy.simplify(general.xreplace(keep).xreplace(self.solved))
             rng = sympy.solve_univariate_inequality(general > 0, p.symbol, relational=False).intersect(
@@ -580,6 +564,16 @@ class _Solver:
         return ChainStage(
             i, "again", st.get("title", "Will they collide again?"), tuple(blocks), outputs=tuple(outputs)
         )
+
+
+def _resolve(expr: sympy.Expr, defs: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with ``defs`` put in until none is left (definitions refer to earlier ones)."""
+    for _ in range(len(defs) + 1):
+        new = expr.xreplace(defs)
+        if new == expr:
+            break
+        expr = new
+    return expr
 
 
 def _dim_of(name: str, unit: str) -> units.Dim:

@@ -25,7 +25,6 @@ import json
 import math
 import random
 import re
-import tomllib
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from decimal import ROUND_HALF_UP, Decimal, InvalidOperation, localcontext
@@ -330,29 +329,14 @@ def load_answers(path: str | Path) -> Answers:
 
 def loads_answers(text: str, *, path: str = "<answers>") -> Answers:
     """Read answers given as TOML text (``path`` only names it in messages)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        m = re.search(r"\(at line (\d+), column \d+\)", msg)
-        where = f"{path}:{m.group(1)}" if m else path
-        what = re.sub(r"\s*\(at line \d+, column \d+\)", "", msg) or "invalid TOML"
-        raise InputError(f"not valid TOML: {what}", where=where) from None
-    lines = text.splitlines()
+    from derive.problem import _Ctx, parse_toml
+
+    data = parse_toml(text, path)
+    lines = _Ctx(path, text)
 
     def where(section: str | None, key: str | None) -> str:
-        current = None
-        for n, line in enumerate(lines, 1):
-            s = line.strip()
-            head = re.match(r"^\[\s*([^\]]+?)\s*\]", s)
-            if head:
-                current = head.group(1)
-                if key is None and current == section:
-                    return f"{path}:{n}"
-                continue
-            if key is not None and current == section and re.match(rf"^[\"']?{re.escape(key)}[\"']?\s*=", s):
-                return f"{path}:{n}"
-        return path
+        n = lines.line_of(section, key)
+        return f"{path}:{n}" if n else path
 
     for key in data:
         if key not in ("answers", "equations", "tolerance"):

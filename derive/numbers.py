@@ -100,3 +100,20 @@ def format_fixed(value: sympy.Expr | Decimal, decimals: int) -> str:
 def decimals_of(text: str) -> int:
     """Places after the point in a plain-notation number string."""
     return len(text.split(".")[1]) if "." in text else 0
+
+
+def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int:
+    """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
+    19.81): the largest number's figures to start with, more until each sum's rounded
+    terms add up to its rounded total."""
+    numbers = [x for terms, total in sums for x in (*terms, total)]
+    biggest = max((abs(x) for x in numbers), default=Decimal(0))
+    text = format_number(biggest, digits, extra=extra) if biggest else ""
+    start = decimals_of(text) if text and "e" not in text else 2
+    for places in range(start, start + 4):
+        if all(
+            sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))
+            for terms, total in sums
+        ):
+            return places
+    return start + 3

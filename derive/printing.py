@@ -16,7 +16,7 @@ from decimal import Decimal
 import sympy
 from sympy.printing.latex import LatexPrinter
 
-from derive.numbers import decimals_of, format_fixed, format_number, to_decimal
+from derive.numbers import format_fixed, format_number, places_that_add_up, to_decimal
 from derive.solution import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
 from derive.units import latex_unit
@@ -569,19 +569,11 @@ def block_style(block: Block, style: Style) -> Style:
             for terms, total in block.sums
         ]
         return replace(style, block=block_id)
-    numbers = [floatify(x, keep_integers=False) for terms, total in block.sums for x in (*terms, total)]
-    biggest = max((abs(n) for n in numbers if n.is_Number), default=sympy.Integer(1))
-    start = decimals_of(format_number(biggest, style.digits, extra=style.extra)) if biggest != 0 else 2
-    for places in range(start, start + 4):
-        ok = True
-        for terms, total in block.sums:
-            shown = [Decimal(format_fixed(floatify(t, False), places)) for t in terms]
-            if sum(shown) != Decimal(format_fixed(floatify(total, False), places)):
-                ok = False
-                break
-        if ok:
-            return replace(style, decimals=places)
-    return replace(style, decimals=start + 3)
+    sums = [
+        ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
+        for terms, total in block.sums
+    ]
+    return replace(style, decimals=places_that_add_up(sums, style.digits, style.extra))
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:

@@ -212,8 +212,6 @@ class _Ctx:
             if m:
                 current = m.group(1)
                 continue
-            if key is None and current == section and m is None and section is not None:
-                continue
             if current == section and re.match(rf"^[\"']?{re.escape(key or '')}[\"']?\s*=", line):
                 return i
         if key is None and section is not None:
@@ -270,17 +268,22 @@ def load(path: str | Path, *, name: str | None = None) -> Problem:
     return loads(text, path=shown, name=name or path.stem)
 
 
-def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
-    """Check a problem given as TOML text (``path`` only names it in messages)."""
-    ctx = _Ctx(path, text)
+def parse_toml(text: str, path: str) -> dict[str, Any]:
+    """TOML text as a table, or a one-line InputError at the line TOML names."""
     try:
-        data = tomllib.loads(text)
+        return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         msg = str(exc)
         m = re.search(r"\(at line (\d+), column \d+\)", msg)
         where = f"{path}:{m.group(1)}" if m else path
         what = re.sub(r"\s*\(at line \d+, column \d+\)", "", msg) or "invalid TOML"
         raise InputError(f"not valid TOML: {what[0].lower() + what[1:]}", where=where) from None
+
+
+def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
+    """Check a problem given as TOML text (``path`` only names it in messages)."""
+    ctx = _Ctx(path, text)
+    data = parse_toml(text, path)
     if isinstance(data, dict) and data.get("kind") == "chain":
         from derive.chain import build_chain
 

@@ -104,10 +104,8 @@ class Solution:
     problem: Problem
     results: dict[str, Result]
     stages: tuple[Stage, ...]
-    answers: tuple[str, ...]
     values: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
-    notes: tuple[Text, ...] = ()
 
     def _repr_markdown_(self) -> str:
         from derive.render import render

@@ -42,8 +42,7 @@ def solve(problem: Problem) -> Solution:
     angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
     writer = _Writer(imp, results)
     stages = writer.stages()
-    answers = _answer_names(problem)
-    return Solution(problem, results, stages, answers, values, angles, tuple(writer.notes))
+    return Solution(problem, results, stages, values, angles)
 
 
 def _xy_motions(imp: Impact) -> list:
@@ -54,10 +53,6 @@ def _xy_motions(imp: Impact) -> list:
         if motion.x is not None:
             out.append((motion, comps))
     return out
-
-
-def _answer_names(problem: Problem) -> tuple[str, ...]:
-    return problem.find
 
 
 # ---------------------------------------------------------------- results
@@ -239,7 +234,6 @@ class _Writer:
         self.results = results
         self.ind = imp.independent
         self.numeric = self.p.numeric()
-        self.notes: list[Text] = []
         sym = self.p.symbols()
         self.m_A, self.e = sym["m_A"], sym["e"]
         self.m_B = sym.get("m_B", symbol("m_B", "positive"))

@@ -20,7 +20,7 @@ import sympy
 
 from derive.errors import InputError
 from derive.impact import independent_map
-from derive.numbers import format_fixed, format_number
+from derive.numbers import format_fixed, format_number, places_that_add_up
 from derive.printing import SlotBook, exact_latex
 from derive.problem import Given, Problem
 from derive.solution import Solution
@@ -194,20 +194,11 @@ def _given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
 
 def _places(claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int) -> int:
     """Places after the point for a block, so that its sums add up (as printing does)."""
-    numbers = []
+    sums = []
     for terms_fn, total_fn in claims:
-        numbers += [*terms_fn(*args), total_fn(*args)]
-    biggest = max((abs(x) for x in numbers), default=1.0) or 1.0
-    text = format_number(Decimal(repr(float(biggest))), digits, extra=extra)
-    start = len(text.split(".")[1]) if "." in text and "e" not in text else 2
-    for places in range(start, start + 4):
-        if all(
-            sum(Decimal(format_fixed(Decimal(repr(float(t))), places)) for t in terms_fn(*args))
-            == Decimal(format_fixed(Decimal(repr(float(total_fn(*args)))), places))
-            for terms_fn, total_fn in claims
-        ):
-            return places
-    return start + 3
+        terms = [Decimal(repr(float(t))) for t in terms_fn(*args)]
+        sums.append((terms, Decimal(repr(float(total_fn(*args))))))
+    return places_that_add_up(sums, digits, extra)
 
 
 def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
