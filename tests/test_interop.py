@@ -228,6 +228,7 @@ def _exam(preamble: str, body: str) -> str:
 DOCUMENTS: dict[str, Callable[[str, str], str]] = {"article": _article, "exam": _exam}
 
 
+@cache
 def _fragment(name: str, *options: str) -> str:
     return _ok(_derive("solve", name, "--format", "tex", "--fragment", *options), f"derive solve {name} --fragment")
 
@@ -346,6 +347,7 @@ class Docx:
     text: str
     drawings: int
     struck: int  # m:borderBox with a diagonal strike: a cancelled term
+    arrays: int  # m:eqArr / m:m: what pandoc makes of aligned; LibreOffice 7.4 drops or garbles rows
     media: list[str]
 
     @classmethod
@@ -362,8 +364,9 @@ class Docx:
         text = "\n".join(
             "".join(t.text or "" for t in p.iter(f"{W}t")) for p in root.iter(f"{W}p")
         )  # paragraphs, math removed
-        struck = xml.decode("utf-8").count("<m:strikeBLTR")
-        return cls(formulas, text, xml.decode("utf-8").count("<w:drawing>"), struck, media)
+        raw = xml.decode("utf-8")
+        arrays = raw.count("<m:eqArr>") + raw.count("<m:m>")
+        return cls(formulas, text, raw.count("<w:drawing>"), raw.count("<m:strikeBLTR"), arrays, media)
 
 
 def _check_docx(doc: Docx, name: str, note: str) -> None:
@@ -375,6 +378,9 @@ def _check_docx(doc: Docx, name: str, note: str) -> None:
     assert doc.drawings >= _figure_count(name), (
         f"{name}: {_figure_count(name)} figures, {doc.drawings} pictures in the .docx ({ISSUE}){note}"
     )
+    assert not doc.arrays, f"{name}: {doc.arrays} equation arrays (aligned): LibreOffice loses their rows{note}"
+    bare = [f[:40] for f in doc.formulas if f.startswith(("=", "<", ">", "≈"))]
+    assert not bare, f"{name}: formulas that start with a relation (LibreOffice shows '¿'): {bare[:3]}{note}"
     squeezed = re.sub(r"\s+", "", doc.text)
     stray = [label for label in _figure_labels(name) if label and label in squeezed]
     assert not stray, f"{name}: the figure's labels left as text: {stray} ({ISSUE}){note}"
