@@ -17,8 +17,8 @@ import tracemalloc
 from decimal import Decimal
 
 import derive
-from derive import variants
-from derive.problem import loads
+from derive.homework import variants
+from derive.problem.reader import loads
 from derive.resources import bundled
 
 PROBLEM = "notes-4c11-two-spheres"

@@ -9,12 +9,12 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from derive.check import check
+from derive.checking.answers import check
 from derive.errors import DeriveError, InputError, RenderError
-from derive.problem import Problem
-from derive.render import render
-from derive.solution import Solution
-from derive.solve import solve
+from derive.problem.reader import Problem
+from derive.steps.impact import solve
+from derive.steps.model import Solution
+from derive.writers.view import render
 
 __version__ = "0.1.0"
 __all__ = [
@@ -36,7 +36,8 @@ def load(path: str | Path) -> Problem:
 
     Raises :class:`InputError` with a one-line message on bad input.
     """
-    from derive import problem, resources
+    from derive import resources
+    from derive.problem import reader as problem
 
     p = Path(path)
     if not p.exists() and isinstance(path, str) and "/" not in path and not path.endswith(".toml"):

@@ -13,8 +13,8 @@ import pytest
 import sympy
 
 import derive
-from derive.chain import ChainSolution
-from derive.problem import loads
+from derive.physics.chain import ChainSolution
+from derive.problem.reader import loads
 from derive.resources import bundled
 
 # (chain, quantity, published as printed, rule): "digits" = equal when rounded to the

@@ -15,11 +15,13 @@ import sympy
 from output_cases import hostile_problem, missing_tool
 
 import derive
-from derive import escape, impact, resources, theory
-from derive.handout import MODES, build_handout
+from derive import escape, resources
+from derive.homework import theory
+from derive.homework.handout import MODES, build_handout
 from derive.numbers import format_number
-from derive.printing import Style, latex_eqn
-from derive.render import view
+from derive.physics import impact
+from derive.writers.printing import Style, latex_eqn
+from derive.writers.view import view
 
 BROKEN = """\
 title = "Broken: B has no mass"

@@ -12,8 +12,9 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive import lms, mistakes, variants
-from derive.problem import loads
+from derive.checking import mistakes
+from derive.homework import lms, variants
+from derive.problem.reader import loads
 
 NAME = "notes-4c11-two-spheres"
 SEED = 7

@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive import variants
 from derive.errors import InputError
-from derive.problem import loads
+from derive.homework import variants
+from derive.problem.reader import loads
 
 
 @pytest.fixture(scope="module")

@@ -21,11 +21,11 @@ from typing import Any
 
 import sympy
 
-from derive import units
 from derive.errors import ExpressionError, InputError, SolveError
-from derive.expr import ParseError, parse
-from derive.problem import Given, _build, _Ctx, _givens, _infer_system, _text, _type
-from derive.solution import Block, Eqn, Math, Result, Side, Solution, Text
+from derive.problem import units
+from derive.problem.expr import ParseError, parse
+from derive.problem.reader import Given, _build, _Ctx, _givens, _infer_system, _text, _type
+from derive.steps.model import Block, Eqn, Math, Result, Side, Solution, Text
 from derive.symbols import symbol
 
 STAGE_TYPES = ("fall", "rise", "slide", "spring", "impact", "bounces", "again", "define", "solve")
@@ -79,7 +79,7 @@ class ChainSolution:
     angles: frozenset[sympy.Symbol] = frozenset()
 
     def _repr_markdown_(self) -> str:
-        from derive.render import render
+        from derive.writers.view import render
 
         return render(self, "md")  # type: ignore[arg-type]
 
@@ -343,14 +343,14 @@ class _Solver:
             problem = _build(data, self.ctx, f"stage-{i}", seed=seed)
         except InputError as exc:
             raise InputError(f"stage {i}: {exc.what}", where=exc.where, field=exc.field) from None
-        from derive.solve import solve
+        from derive.steps.impact import solve
 
         solution = _renumber(solve(problem), self.tag)
         self.tag = max((int(t) for t in _tags(solution)), default=self.tag)
         results = st.get("results", {})
         if not isinstance(results, dict):
             raise self.err(i, "results", 'expected a table such as { v_A2 = "u_A" }', results)
-        from derive.impact import independent_map
+        from derive.physics.impact import independent_map
 
         # into the chain's names: a stage given defined from them by its definition,
         # one written in the stage as a number by that number
@@ -546,7 +546,7 @@ class _Solver:
             rng = sympy.solve_univariate_inequality(general > 0, p.symbol, relational=False).intersect(
                 sympy.Interval(0, 1)
             )
-            from derive.printing import floatify
+            from derive.writers.printing import floatify
 
             blocks.append(
                 Block(

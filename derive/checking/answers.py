@@ -33,13 +33,15 @@ from typing import Any
 
 import sympy
 
-from derive import escape, mistakes, units
+from derive import escape
+from derive.checking import mistakes
 from derive.errors import InputError
-from derive.expr import ParseError, parse
 from derive.numbers import format_number, to_decimal
-from derive.problem import Problem
-from derive.solution import Result, Solution
-from derive.units import ACCELERATION, ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, VELOCITY, Dim
+from derive.problem import units
+from derive.problem.expr import ParseError, parse
+from derive.problem.reader import Problem
+from derive.problem.units import ACCELERATION, ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, VELOCITY, Dim
+from derive.steps.model import Result, Solution
 
 FORMATS = ("text", "md", "json")
 #: Random points at which two formulas are compared when simplification cannot decide.
@@ -329,7 +331,7 @@ def load_answers(path: str | Path) -> Answers:
 
 def loads_answers(text: str, *, path: str = "<answers>") -> Answers:
     """Read answers given as TOML text (``path`` only names it in messages)."""
-    from derive.problem import _Ctx, parse_toml
+    from derive.problem.reader import _Ctx, parse_toml
 
     data = parse_toml(text, path)
     lines = _Ctx(path, text)
@@ -410,7 +412,7 @@ def check(
     True
     """
     if isinstance(solution, Problem):
-        from derive.solve import solve
+        from derive.steps.impact import solve
 
         solution = solve(solution)
     given = _as_answers(answers, equations)

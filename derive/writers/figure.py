@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from derive import escape
-from derive.solution import Solution
+from derive.steps.model import Solution
 from derive.symbols import latex_name, symbol
 
 MIN_ARROW = 1.3  # drawing units: the shortest arrow still readable
@@ -222,7 +222,7 @@ def _value(solution: Solution, name: str) -> sympy.Expr:
 
 
 def _independent(p) -> dict:
-    from derive.impact import independent_map
+    from derive.physics.impact import independent_map
 
     return independent_map(p)
 

@@ -12,7 +12,7 @@ from typing import Literal
 
 import sympy
 
-from derive.problem import Problem
+from derive.problem.reader import Problem
 
 #: How a side of an equation line is printed:
 #: 'symbolic' as it stands; 'values' with each given's number in place of its
@@ -108,13 +108,13 @@ class Solution:
     angles: frozenset[sympy.Symbol] = frozenset()
 
     def _repr_markdown_(self) -> str:
-        from derive.render import render
+        from derive.writers.view import render
 
         return render(self, "md")
 
     def _repr_latex_(self) -> str:
         """The boxed answers as display math (for front ends that show LaTeX, not Markdown)."""
-        from derive.render import view
+        from derive.writers.view import view
 
         stages = view(self)["stages"]
         lines = [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]

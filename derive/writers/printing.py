@@ -17,9 +17,9 @@ import sympy
 from sympy.printing.latex import LatexPrinter
 
 from derive.numbers import format_fixed, format_number, places_that_add_up, to_decimal
-from derive.solution import Block, Eqn, Side
+from derive.problem.units import latex_unit
+from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
-from derive.units import latex_unit
 
 PRECISION = 30
 

@@ -19,12 +19,12 @@ from decimal import Decimal
 import sympy
 
 from derive.errors import InputError
-from derive.impact import independent_map
 from derive.numbers import format_fixed, format_number, places_that_add_up
-from derive.printing import SlotBook, exact_latex
-from derive.problem import Given, Problem
-from derive.solution import Solution
-from derive.units import plain_unit
+from derive.physics.impact import independent_map
+from derive.problem.reader import Given, Problem
+from derive.problem.units import plain_unit
+from derive.steps.model import Solution
+from derive.writers.printing import SlotBook, exact_latex
 
 _TOKEN = re.compile(r"DRVSLOT(\d+)X")
 MAX_ATTEMPTS_PER_VARIANT = 200
@@ -73,8 +73,8 @@ def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> obj
 
 def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
     """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
-    from derive.render import _env, view
-    from derive.solve import solve
+    from derive.steps.impact import solve
+    from derive.writers.view import _env, view
 
     if not problem.vary:
         raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
@@ -414,6 +414,6 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
         if fmt == "tex":
             write_atomic(folder / f"{stem}.tex", tex)
         else:
-            from derive.pdf import build_pdf
+            from derive.writers.pdf import build_pdf
 
             write_atomic(folder / f"{stem}.pdf", build_pdf(tex))

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 import sympy
 
 from derive.errors import SolveError
-from derive.problem import Problem
+from derive.problem.reader import Problem
 from derive.symbols import symbol
 
 

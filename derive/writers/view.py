@@ -15,15 +15,25 @@ from typing import Any
 import jinja2
 import sympy
 
-from derive import escape, figure
+from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
-from derive.problem import Given
+from derive.problem.reader import Given
+from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
-from derive.solution import Eqn, Math, Side, Solution
+from derive.steps.model import Eqn, Math, Side, Solution
 from derive.symbols import latex_name, symbol
-from derive.units import latex_unit, plain_unit
+from derive.writers import figure
+from derive.writers.printing import (
+    SlotBook,
+    StepPrinter,
+    Style,
+    block_style,
+    exact_latex,
+    latex_eqn,
+    latex_expr,
+    latex_inline,
+)
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
@@ -226,7 +236,7 @@ def view(
 
 def _html(data: dict[str, Any]) -> str:
     """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
-    from derive import html as html_mod
+    from derive.writers import katex as html_mod
 
     items: list[tuple[str, bool]] = []
 
@@ -445,7 +455,7 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
-    from derive.chain import ChainSolution
+    from derive.physics.chain import ChainSolution
 
     if isinstance(solution, ChainSolution):
         if fmt == "json":

@@ -10,9 +10,9 @@ from __future__ import annotations
 import sympy
 
 from derive.errors import SolveError
-from derive.impact import Impact, equation_numbers, evaluate, independent_map, setup
-from derive.problem import Problem
-from derive.solution import Block, Eqn, Math, Result, Side, Solution, Stage, Text
+from derive.physics.impact import Impact, equation_numbers, evaluate, independent_map, setup
+from derive.problem.reader import Problem
+from derive.steps.model import Block, Eqn, Math, Result, Side, Solution, Stage, Text
 from derive.symbols import symbol, vector
 
 HALF = sympy.Rational(1, 2)
@@ -25,7 +25,7 @@ def solve(problem: Problem) -> Solution:
     >>> solve(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
     -7*cos(47*pi/225)/5
     """
-    from derive.chain import ChainProblem, solve_chain
+    from derive.physics.chain import ChainProblem, solve_chain
 
     if isinstance(problem, ChainProblem):
         return solve_chain(problem)  # type: ignore[return-value]
@@ -159,7 +159,7 @@ def _show(expr: sympy.Expr) -> sympy.Expr:
 
 def _f(x: sympy.Expr) -> sympy.Expr:
     """A pure number as a Float (kept apart in printed sums); other expressions as they are."""
-    from derive.printing import _short_decimal
+    from derive.writers.printing import _short_decimal
 
     if x.is_number and not x.is_Integer and not _short_decimal(x):
         return sympy.Float(x.evalf(30), 30)
@@ -191,7 +191,7 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
 
 def _convert_result(r: Result, unit_text: str) -> sympy.Expr:
     """A result's value (or closed form) in another unit of the same kind."""
-    from derive import units
+    from derive.problem import units
 
     src, dst = units.parse_unit(r.unit if r.unit != "deg" else "deg"), units.parse_unit(unit_text)
     if src.dim != dst.dim:
@@ -203,7 +203,7 @@ def _convert_result(r: Result, unit_text: str) -> sympy.Expr:
 
 
 def _unit(p: Problem, what: str) -> str:
-    from derive import units
+    from derive.problem import units
 
     dim = {"velocity": units.VELOCITY, "energy": units.ENERGY, "impulse": units.IMPULSE}[what]
     return units.SYSTEMS[p.system][dim]

@@ -16,11 +16,11 @@ from typing import Any
 
 import sympy
 
-from derive import units
 from derive.errors import ExpressionError, InputError, PhysicsError, UnitError
-from derive.expr import NAME_RE, ParseError, parse
+from derive.problem import units
+from derive.problem.expr import NAME_RE, ParseError, parse
+from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
-from derive.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 
 KINDS = ("direct", "oblique")
 TOP_FIELDS = (
@@ -285,7 +285,7 @@ def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
     ctx = _Ctx(path, text)
     data = parse_toml(text, path)
     if isinstance(data, dict) and data.get("kind") == "chain":
-        from derive.chain import build_chain
+        from derive.physics.chain import build_chain
 
         return build_chain(data, ctx, name)  # type: ignore[return-value]
     return _build(data, ctx, name)
