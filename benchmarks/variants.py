@@ -18,7 +18,7 @@ from decimal import Decimal
 
 import derive
 from derive.homework import variants
-from derive.problem.reader import loads
+from derive.problem import loads
 from derive.resources import bundled
 
 PROBLEM = "notes-4c11-two-spheres"

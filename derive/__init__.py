@@ -11,8 +11,8 @@ from pathlib import Path
 
 from derive.checking.answers import check
 from derive.errors import DeriveError, InputError, RenderError
-from derive.problem.reader import Problem
-from derive.steps.impact import solve
+from derive.problem import Problem
+from derive.steps import solve
 from derive.steps.model import Solution
 from derive.writers.view import render
 
@@ -36,8 +36,7 @@ def load(path: str | Path) -> Problem:
 
     Raises :class:`InputError` with a one-line message on bad input.
     """
-    from derive import resources
-    from derive.problem import reader as problem
+    from derive import problem, resources
 
     p = Path(path)
     if not p.exists() and isinstance(path, str) and "/" not in path and not path.endswith(".toml"):

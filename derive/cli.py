@@ -107,8 +107,7 @@ def _solve(args: argparse.Namespace) -> int:
 
 
 def _list(args: argparse.Namespace) -> int:
-    from derive import resources
-    from derive.problem import reader as problem
+    from derive import problem, resources
 
     found = resources.bundled()
     width = max((len(n) for n in found), default=0) + 2

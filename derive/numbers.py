@@ -117,3 +117,93 @@ def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | 
         ):
             return places
     return start + 3
+
+
+def short_decimal(value: sympy.Expr) -> bool:
+    """True for an exact number with a short decimal form (0.2, 12.5): printed as it is."""
+    if not value.is_Rational:
+        return False
+    q = value.q
+    for f in (2, 5):
+        while q % f == 0:
+            q //= f
+    return q == 1 and len(str(abs(to_decimal(value)).normalize())) <= 7
+
+
+def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
+    """``expr`` with every numeric part evaluated: one Float coefficient per product.
+
+    Structure (the order of terms, unexpanded products) is kept.
+    """
+    if isinstance(expr, sympy.UnevaluatedExpr):  # shown as built: (19.81 - 5 · 9.507)/25
+        inner = expr.args[0]
+        if inner.is_Atom:
+            return floatify(inner, keep_integers)
+        if isinstance(inner, sympy.Pow):
+            return sympy.UnevaluatedExpr(sympy.Pow(floatify(inner.base, keep_integers), inner.exp, evaluate=False))
+        kept = [floatify(a, keep_integers) for a in inner.args]
+        if isinstance(inner, (sympy.Add, sympy.Mul)):
+            return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
+        return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
+    if expr.is_Integer and keep_integers:
+        return expr
+    if expr.is_Number:
+        if keep_integers and short_decimal(expr):
+            return expr  # a given as written (0.2 kg), not 0.2000
+        return sympy.Float(expr, PRECISION)
+    if structural(expr):
+        # built unevaluated on purpose, as in (20 + 5) v_A2n: keep it so
+        if isinstance(expr, sympy.Pow):
+            return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
+        return expr.func(*(floatify(a, keep_integers) for a in expr.args), evaluate=False)
+    if expr.is_number:
+        exact = expr.doit()
+        if exact.is_Integer and keep_integers:
+            return exact
+        return sympy.Float(expr.evalf(PRECISION), PRECISION)
+    if expr.is_Atom:
+        return expr
+    if isinstance(expr, sympy.Pow):
+        return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
+    args = [floatify(a, keep_integers) for a in expr.args]
+    if isinstance(expr, sympy.Mul):
+        nums = [a for a in args if a.is_Number]
+        rest = [a for a in args if not a.is_Number]
+        coeff: sympy.Expr = sympy.Integer(1)
+        for n in nums:
+            coeff = coeff * n
+        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer and not (keep_integers and short_decimal(coeff)):
+            coeff = sympy.Float(coeff, PRECISION)
+        if not rest:
+            return coeff
+        if coeff == 1:
+            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
+        return sympy.Mul(coeff, *rest, evaluate=False)
+    return expr.func(*args, evaluate=False)
+
+
+PRECISION = 30
+
+
+def structural(expr: sympy.Expr) -> bool:
+    """True for a sum, product, power or function of numbers that was built unevaluated
+    to be shown as it stands (19.81 - 5 · 9.507), not an exact value such as sqrt(2)/2."""
+    if not expr.is_number or expr.is_Number or expr.is_NumberSymbol:
+        return False
+    parts = expr.args
+
+    def ok(a: sympy.Expr) -> bool:
+        return isinstance(a, sympy.Float) or a.is_Rational or structural(a)
+
+    if isinstance(expr, sympy.Pow):
+        return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
+    if isinstance(expr, sympy.Function) and not isinstance(expr, sympy.Abs):
+        return all(ok(a) for a in parts) and not all(a.is_Rational and not short_decimal(a) for a in parts)
+    if isinstance(expr, (sympy.Add, sympy.Mul)):
+        # SymPy merges the numbers of an evaluated sum or product into one: two
+        # numbers side by side mean it was built unevaluated, to be shown so.
+        numbers = sum(1 for a in parts if a.is_Number)
+        return all(ok(a) for a in parts) and (
+            numbers >= 2 or any(isinstance(a, sympy.Float) or structural(a) for a in parts)
+        )
+    return False

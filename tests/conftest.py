@@ -10,7 +10,7 @@ import pytest
 
 import derive
 from derive.cli import main
-from derive.problem.reader import loads
+from derive.problem import loads
 
 
 @dataclass

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive.problem.reader import loads
+from derive.problem import loads
 
 ROOT = Path(__file__).resolve().parent.parent
 DOCS = [ROOT / "docs" / "problem-format.md", ROOT / "README.md"]

@@ -93,7 +93,7 @@ toward = "+n"
 fixed = true
 name = "wall"
 """
-    from derive.problem.reader import loads
+    from derive.problem import loads
 
     sol = derive.solve(loads(text, path="w.toml"))
     svg = to_svg(describe(sol))

@@ -39,8 +39,8 @@ from hypothesis import strategies as st
 
 import derive
 from derive.errors import DeriveError, InputError
+from derive.problem import load, loads
 from derive.problem.expr import ParseError, parse
-from derive.problem.reader import load, loads
 from derive.problem.units import ANGLE, DIMENSIONLESS, LENGTH, MASS, VELOCITY
 
 SCALE = float(os.environ.get("DERIVE_FUZZ_SCALE", "1"))

@@ -26,8 +26,8 @@ import sympy
 import derive
 from derive.errors import DeriveError, ExpressionError, InputError
 from derive.escape import markdown, tex
+from derive.problem import loads
 from derive.problem.expr import ParseError, parse
-from derive.problem.reader import loads
 
 DATA = Path(__file__).parent / "data"
 ROOT = Path(__file__).resolve().parent.parent

@@ -14,7 +14,7 @@ import pytest
 import derive
 from derive.checking import mistakes
 from derive.homework import lms, variants
-from derive.problem.reader import loads
+from derive.problem import loads
 
 NAME = "notes-4c11-two-spheres"
 SEED = 7

@@ -17,7 +17,7 @@ from hypothesis import strategies as st
 
 import derive
 from derive.numbers import format_number
-from derive.problem.reader import loads
+from derive.problem import loads
 from derive.symbols import symbol
 
 

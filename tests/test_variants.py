@@ -14,7 +14,7 @@ import pytest
 import derive
 from derive.errors import InputError
 from derive.homework import variants
-from derive.problem.reader import loads
+from derive.problem import loads
 
 
 @pytest.fixture(scope="module")

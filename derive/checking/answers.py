@@ -37,11 +37,11 @@ from derive import escape
 from derive.checking import mistakes
 from derive.errors import InputError
 from derive.numbers import format_number, to_decimal
-from derive.problem import units
+from derive.physics.results import Result
+from derive.problem import Problem, units
 from derive.problem.expr import ParseError, parse
-from derive.problem.reader import Problem
 from derive.problem.units import ACCELERATION, ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, VELOCITY, Dim
-from derive.steps.model import Result, Solution
+from derive.steps.model import Solution
 
 FORMATS = ("text", "md", "json")
 #: Random points at which two formulas are compared when simplification cannot decide.
@@ -331,10 +331,10 @@ def load_answers(path: str | Path) -> Answers:
 
 def loads_answers(text: str, *, path: str = "<answers>") -> Answers:
     """Read answers given as TOML text (``path`` only names it in messages)."""
-    from derive.problem.reader import _Ctx, parse_toml
+    from derive.problem import Source, parse_toml
 
     data = parse_toml(text, path)
-    lines = _Ctx(path, text)
+    lines = Source(path, text)
 
     def where(section: str | None, key: str | None) -> str:
         n = lines.line_of(section, key)
@@ -412,7 +412,7 @@ def check(
     True
     """
     if isinstance(solution, Problem):
-        from derive.steps.impact import solve
+        from derive.steps import solve
 
         solution = solve(solution)
     given = _as_answers(answers, equations)

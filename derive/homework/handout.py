@@ -25,7 +25,7 @@ import derive
 from derive.errors import DeriveError, InputError
 from derive.homework import theory as theory_page
 from derive.writers.pdf import build_pdf
-from derive.writers.view import _env, view
+from derive.writers.view import environment, view
 
 Mode = Literal["problems", "answers", "solutions"]
 Format = Literal["md", "tex", "pdf"]
@@ -66,9 +66,7 @@ def _one_line(text: str) -> str:
 def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = derive.solve(derive.load(name))
-    from derive.physics.chain import ChainSolution
-
-    if isinstance(solution, ChainSolution):
+    if solution.is_chain:
         return _chain_view(solution, mode, digits)
     data = view(solution, digits, figures=mode == "solutions")
     data["answers"] = [
@@ -170,8 +168,8 @@ def build_handout(
         raise NoProblemsError(failures)
     data = {"title": title, "mode": mode, "problems": views, "theory": theory_page.view() if theory else None}
     if fmt == "md":
-        return _env("md").get_template("handout.md.j2").render(**data), failures
-    tex = _env("tex").get_template("handout.tex.j2").render(**data)
+        return environment("md").get_template("handout.md.j2").render(**data), failures
+    tex = environment("tex").get_template("handout.tex.j2").render(**data)
     if fmt == "tex":
         return tex, failures
     return build_pdf(tex), failures

@@ -39,7 +39,7 @@ import sympy
 from derive.checking import mistakes
 from derive.errors import InputError
 from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
-from derive.problem.reader import Problem
+from derive.problem import Problem
 from derive.symbols import latex_name
 
 #: The tolerance in units of the last digit shown: ½ (rounding) + 1 (the checker's allowance).
@@ -477,12 +477,12 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
 
 
 def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
-    from derive.homework.variants import _given_text
+    from derive.homework.variants import given_text
 
     d = digits if digits is not None else compiled.problem.digits
     out = {}
     for key, (name, kind) in keys.items():
-        text = _given_text(compiled.givens[name], variant.values[name], d)
+        text = given_text(compiled.givens[name], variant.values[name], d)
         out[key] = rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text
     return out
 

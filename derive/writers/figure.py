@@ -132,8 +132,7 @@ def _direction(n: sympy.Expr, t: sympy.Expr) -> tuple[float, float, float | None
 def describe(solution: Solution, after: bool = False) -> Figure:
     """The figure of stage 1 (before the impact) or of the answer (``after``); for a
     chain, that of its first impact (each impact stage draws its own)."""
-    stages = getattr(solution, "stages", ())
-    impacts = [st.solution for st in stages if getattr(st, "solution", None) is not None]
+    impacts = [st.part for st in solution.stages if st.part is not None]
     if impacts:
         return describe(impacts[0], after)
     p = solution.problem

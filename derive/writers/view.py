@@ -18,10 +18,10 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.problem.reader import Given
+from derive.problem import Given
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
-from derive.steps.model import Eqn, Math, Side, Solution
+from derive.steps.model import Math, Solution
 from derive.symbols import latex_name, symbol
 from derive.writers import figure
 from derive.writers.printing import (
@@ -41,7 +41,7 @@ IMPLIES = r"\Rightarrow\quad "
 
 
 @cache
-def _env(kind: str) -> jinja2.Environment:
+def environment(kind: str) -> jinja2.Environment:
     """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
     options: dict[str, Any] = {}
     if kind == "tex":
@@ -200,8 +200,8 @@ def view(
     for stage in solution.stages:
         blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
-        if figures and stage.number in (1, 4):
-            fig = figure.describe(solution, after=stage.number == 4)
+        if figures and stage.figure is not None:
+            fig = figure.describe(solution, after=stage.figure == "after")
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
             entry["figure_caption"] = fig.title + ": arrows to scale with speed"
@@ -270,7 +270,9 @@ def _html(data: dict[str, Any]) -> str:
             for line in block["lines"]:
                 line["html"] = rendered[line.pop("slot")]
     data["find"] = [("text", s_) if k == "text" else ("math", s_) for k, s_ in data["find"]]
-    return _env("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    return (
+        environment("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    )
 
 
 def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
@@ -345,14 +347,9 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
     stages = []
     for st in sol.stages:
-        if st.solution is not None:
-            v = view(st.solution, digits, figures=figures)
-            carried = []
-            for new, rname in st.exports:
-                r = sol.results[new]
-                value = r.value if r.value is not None else r.partial
-                eqn = Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((value,), "result")), unit=r.unit or None)
-                carried.append(latex_eqn(eqn, style)[0])
+        if st.part is not None:
+            v = view(st.part, digits, figures=figures)
+            carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -367,20 +364,12 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             stages.append(
                 {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
             )
-    names = list(p.find) or list(sol.stages[-1].outputs)
-    verdicts = {n for st in sol.stages if st.type == "again" for n in st.outputs}
     answers = []
-    for name in names:
-        r = sol.results.get(name)
-        if r is None:
-            raise InputError(f"find names {name!r}, which no stage computes", where=p.path, field="find")
-        if name in verdicts:
-            said = "yes" if r.value == 1 else "no"
-            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {said}}}}}"})
-            continue
-        value = r.value if r.value is not None else r.partial
-        eqn = Eqn((Side((r.symbol,)), Side((value,), "result")), unit=r.unit or None, boxed=True)
-        answers.append({"latex": latex_eqn(eqn, style)[0]})
+    for a in sol.answers:
+        if a.verdict is not None:
+            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"})
+        else:
+            answers.append({"latex": latex_eqn(a.line, style)[0]})
     if answers:
         answers[-1]["latex"] += ANSWER_MARK
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
@@ -389,6 +378,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         shown = exact_latex(sol.values[g_sym], style.digits, 1)
         unit = "m/s^2" if p.system == "SI" else "ft/s^2"
         givens.append({"latex": rf"g = {shown}\ {latex_unit(unit)}", "note": "standard gravity, not given"})
+    names = [a.name for a in sol.answers]
     find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
     return {
         "title": p.title,
@@ -455,16 +445,14 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
-    from derive.physics.chain import ChainSolution
-
-    if isinstance(solution, ChainSolution):
+    if solution.is_chain:
         if fmt == "json":
             return _chain_json(solution, digits)
         if fmt == "md":
-            return _env("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
+            return environment("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
         if fmt in ("tex", "tex-fragment"):
             data = chain_view(solution, digits, figures, standalone=fmt == "tex")
-            return _env("tex").get_template("chain.tex.j2").render(**data)
+            return environment("tex").get_template("chain.tex.j2").render(**data)
         raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
     if fmt == "json":
         return to_json(solution, digits)
@@ -474,6 +462,6 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     if fmt == "html":
         return _html(data)
     if fmt == "md":
-        return _env("md").get_template("solution.md.j2").render(**data)
+        return environment("md").get_template("solution.md.j2").render(**data)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
-    return _env("tex").get_template(template).render(**data)
+    return environment("tex").get_template(template).render(**data)
