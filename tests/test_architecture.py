@@ -23,7 +23,7 @@ LAYERS = (
     ("derive.steps",),
     ("derive.writers",),
     ("derive.checking", "derive.homework", "derive.verifier"),
-    ("derive.cli", "derive.__main__", "derive"),
+    ("derive.display", "derive.cli", "derive.__main__", "derive"),
 )
 
 

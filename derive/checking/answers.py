@@ -1322,7 +1322,8 @@ def run(
     fmt: str = "text",
 ) -> tuple[Report, str]:
     """What ``derive check`` does: load, solve, check; returns the report and its rendering."""
-    import derive
+    from derive.problem import load
+    from derive.steps import solve
 
     given = Answers()
     if answers_file:
@@ -1335,7 +1336,7 @@ def run(
     tol = parse_tolerance(tolerance) if tolerance is not None else given.tolerance
     if not given.answers and not given.equations:
         raise InputError("nothing to check: give answers with --answer NAME=VALUE or --answers FILE", where="usage")
-    solution = derive.solve(derive.load(problem))
+    solution = solve(load(problem))
     report = check(solution, given, tolerance=tol)
     return report, report.render(fmt)
 

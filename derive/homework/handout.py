@@ -21,9 +21,10 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Literal, NamedTuple
 
-import derive
 from derive.errors import DeriveError, InputError
 from derive.homework import theory as theory_page
+from derive.problem import load
+from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.view import environment, view
 
@@ -65,7 +66,7 @@ def _one_line(text: str) -> str:
 
 def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
-    solution = derive.solve(derive.load(name))
+    solution = solve(load(name))
     if solution.is_chain:
         return _chain_view(solution, mode, digits)
     data = view(solution, digits, figures=mode == "solutions")

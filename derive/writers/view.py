@@ -465,3 +465,34 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
         return environment("md").get_template("solution.md.j2").render(**data)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
     return environment("tex").get_template(template).render(**data)
+
+
+def boxed_lines(solution: Solution) -> list[str]:
+    """The LaTeX of the solution's boxed lines (its answers)."""
+    if solution.is_chain:
+        return [a["latex"] for a in chain_view(solution, figures=False)["answers"]]
+    stages = view(solution, figures=False)["stages"]
+    return [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+
+
+def plain_answers(solution: Solution) -> list[str]:
+    """The answers the problem asks for, as short plain text: ``v_A2 = 3.05 e_t - 1.11 e_n m/s``."""
+    p = solution.problem
+    verdicts = {a.name: a.verdict for a in solution.answers if a.verdict is not None}
+    names = [a.name for a in solution.answers] if solution.is_chain else list(p.find)
+    out = []
+    for name in names:
+        if name in verdicts:
+            out.append(f"{name}: {verdicts[name]}")
+            continue
+        t, n = solution.results.get(name + "t"), solution.results.get(name + "n")
+        r = solution.results.get(name)
+        if not solution.is_chain and p.oblique and name in ("v_A2", "v_B2") and t and n:
+            if t.value is not None and n.value is not None:
+                sign = "-" if n.value < 0 else "+"
+                shown_n = format_number(abs(n.value), p.digits)
+                out.append(f"{name} = {format_number(t.value, p.digits)} e_t {sign} {shown_n} e_n {plain_unit(t.unit)}")
+        elif r is not None and r.value is not None:
+            unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
+            out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
+    return out
