@@ -228,14 +228,16 @@ def test_broken_problem_is_left_out_and_reported_at_the_end(cli, tmp_path: Path)
 
 
 def test_internal_error_in_one_problem_does_not_stop_the_others(monkeypatch: pytest.MonkeyPatch) -> None:
-    real = derive.solve
+    from derive.homework import handout
+
+    real = handout.solve
 
     def flaky(problem: derive.Problem) -> derive.Solution:
         if problem.title.startswith("Example 4.C.12"):
             raise RuntimeError("boom")
         return real(problem)
 
-    monkeypatch.setattr(derive, "solve", flaky)
+    monkeypatch.setattr(handout, "solve", flaky)
     doc, failures = build_handout(list(three()), title="T", theory=False, mode="problems", fmt="md")
     assert [f.problem for f in failures] == ["notes-4c12-cue-ball"]
     assert "RuntimeError: boom" in failures[0].error
