@@ -138,7 +138,12 @@ def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     d: Definition = st.data
     out = d.result
     line = Eqn(
-        (Side((out.symbol,)), Side((d.expr,)), Side((d.expr,), "values"), Side((d.value,), "result")),
+        (
+            Side((out.symbol,)),
+            Side((d.expr,)),
+            Side((d.expr,), "values"),
+            Side((_in_unit(d.value, out.unit),), "result"),
+        ),
         unit=out.unit or None,
         tag=numbers.next(),
     )
@@ -150,7 +155,12 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     g, u = c.given, c.given.symbol
     lines = (
         Eqn((Side((c.lhs,)), Side((c.rhs,), "result")), unit=g.unit if c.same_unit else None),
-        Eqn((Side((u,)), Side((c.root,), "result")), unit=g.unit or None, implies=True, tag=numbers.next()),
+        Eqn(
+            (Side((u,)), Side((_in_unit(c.root, g.unit),), "result")),
+            unit=g.unit or None,
+            implies=True,
+            tag=numbers.next(),
+        ),
     )
     text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), " fixes the unknown ", Math(u), ":")
     return Stage(st.number, st.title, (Block(text, lines),), kind=st.type)
@@ -208,6 +218,11 @@ def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
         )
         blocks.append(Block(words))
     return Stage(st.number, st.title, tuple(blocks), kind=st.type)
+
+
+def _in_unit(value: sympy.Expr, unit: str) -> sympy.Expr:
+    """A value as its unit shows it: an angle, held in radians, in degrees."""
+    return value * 180 / sympy.pi if unit == "deg" else value
 
 
 def _float_interval(rng: sympy.Set) -> sympy.Set:

@@ -46,7 +46,9 @@ class Eqn:
     """An equation line ``side = side = ...``, with the notes' decorations.
 
     ``tag`` is the equation number; ``cancel`` holds symbols shown struck out;
-    ``unit`` follows the last side; ``implies`` starts the line with ⇒.
+    ``unit`` follows the last side; ``implies`` starts the line with ⇒; an
+    ``optional`` line (a sum shown term by term) may be left out where its numbers
+    cannot be shown so that they add up at the solution's figures.
     """
 
     sides: tuple[Side, ...]
@@ -55,6 +57,7 @@ class Eqn:
     unit: str | None = None
     implies: bool = False
     boxed: bool = False
+    optional: bool = False
 
 
 @dataclass(frozen=True)

@@ -163,6 +163,8 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
         lines: list[dict[str, Any]] = []
         last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
         for i, eqn in enumerate(block.lines):
+            if eqn.optional and bstyle.hide_optional:
+                continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
             if i == last_boxed:
                 body += ANSWER_MARK
