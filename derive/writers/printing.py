@@ -30,6 +30,7 @@ from derive.numbers import (
 from derive.problem.units import latex_unit
 from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
+from derive.writers.width import width_pt
 
 
 @dataclass(frozen=True)
@@ -60,7 +61,9 @@ class SlotBook:
 @dataclass(frozen=True)
 class Style:
     """How numbers print: the answer's figures (None: textbook rule) and the extra
-    figures intermediates carry; ``values`` and ``angles`` feed substitution lines."""
+    figures intermediates carry; ``values`` and ``angles`` feed substitution lines;
+    ``strike`` False prints a cancelled symbol without its stroke (for converters
+    that have no ``\\cancel``)."""
 
     digits: int | None
     extra: int = 1
@@ -71,6 +74,7 @@ class Style:
     slots: SlotBook | None = field(default=None, compare=False)
     block: int | None = None
     hide_optional: bool = False
+    strike: bool = True
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -224,7 +228,12 @@ class StepPrinter(LatexPrinter):
         return str(expr.p)
 
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
-        out = ""
+        return join_terms(self.add_terms(expr))
+
+    def add_terms(self, expr: sympy.Add) -> list[tuple[str, str]]:
+        """The terms of a sum as printed, each with its sign: ``("+", "m v")``, ``("-", "3")``
+        (a sign ``""`` when the text carries its own, as an open number does)."""
+        out: list[tuple[str, str]] = []
         terms = expr.args
         if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
             terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
@@ -236,19 +245,21 @@ class StepPrinter(LatexPrinter):
                 and term.free_symbols <= self._varied
             ):
                 role = "lead" if i == 0 else "signed"
-                out += self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block)
+                out.append(
+                    ("", self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block))
+                )
                 continue
             if is_negative_term(term):
                 s = self._print(negate(term))
                 s = self._paren_if_sum(negate(term), s)
                 if s.startswith("-"):
                     s = r"\left(" + s + r"\right)"
-                out += ("-" if i == 0 else " - ") + s
+                out.append(("-", s))
             else:
                 s = self._print(term)
                 if i and s.startswith("-"):
                     s = r"\left(" + s + r"\right)"
-                out += ("" if i == 0 else " + ") + s
+                out.append(("+", s))
         return out
 
     def _paren_if_sum(self, expr: sympy.Expr, s: str) -> str:
@@ -352,19 +363,19 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
     return out
 
 
-def latex_expr(
-    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
-) -> str:
-    """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
+def _prepared(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol]
+) -> tuple[StepPrinter, sympy.Expr]:
+    """The printer for ``mode`` (see :data:`derive.steps.model.Mode`) and ``expr`` made ready for it."""
     book, varied = style.slots, style.varied
     if mode == "symbolic":
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra), expr
     if mode == "values":
         vals = values_map(style, style.digits, extra, expr.free_symbols)
         printer = StepPrinter(
             vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
         )
-        return printer.doprint(expr)
+        return printer, expr
     if mode == "numeric":
         expr = substitute(expr, style.values)
         printer = StepPrinter(
@@ -377,7 +388,7 @@ def latex_expr(
             varied=varied,
             block=style.block,
         )
-        return printer.doprint(floatify(expr))
+        return printer, floatify(expr)
     if mode == "result":
         expr = substitute(expr, style.values)
         if expr.is_number and not isinstance(expr, sympy.UnevaluatedExpr):
@@ -391,13 +402,48 @@ def latex_expr(
             varied=varied,
             slot_kind="result",
         )
-        return printer.doprint(floatify(expr, keep_integers=False))
+        return printer, floatify(expr, keep_integers=False)
     raise ValueError(mode)
 
 
-def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
-    """A side of an equation: its terms joined with their signs, in order."""
+def latex_expr(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> str:
+    """One expression printed in ``mode`` (see :data:`derive.steps.model.Mode`)."""
+    printer, ready = _prepared(expr, mode, style, extra, cancel)
+    return printer.doprint(ready)
+
+
+def latex_terms(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> list[tuple[str, str]]:
+    """``expr`` printed as :func:`latex_expr` prints it, as its terms with their signs
+    (one term, sign ``"+"``, unless it is a sum); :func:`join_terms` gives the line back."""
+    printer, ready = _prepared(expr, mode, style, extra, cancel)
+    if isinstance(ready, sympy.UnevaluatedExpr):
+        ready = ready.args[0]
+    if isinstance(ready, sympy.Add) and style.slots is None:
+        return printer.add_terms(ready)
+    return [("+", printer.doprint(ready))]
+
+
+def join_terms(terms: list[tuple[str, str]]) -> str:
+    """Signed terms as one sum: ``a - b + c``; a sign ``""`` leaves the text as it is."""
     out = ""
+    for i, (sign, text) in enumerate(terms):
+        if not sign:
+            out += text
+        elif i == 0:
+            out = ("-" if sign == "-" else "") + text
+        else:
+            out += f" {sign} {text}"
+    return out
+
+
+def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> list[tuple[str, str]]:
+    """A side of an equation as its printed terms with their signs, in order; a side
+    of one term that is a sum gives that sum's terms."""
+    out: list[tuple[str, str]] = []
     for i, term in enumerate(side.terms):
         if side.mode in ("numeric", "result"):
             term = substitute(term, style.values)
@@ -409,23 +455,27 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
             if style.slots is not None and term.free_symbols & style.varied:
                 token = _slot_term(term, side.mode, style, extra, cancel, first=i == 0)
                 if token is not None:
-                    out += token
+                    out.append(("", token))
                     continue
         neg = is_negative_term(term)
         body = negate(term) if neg else term
+        if len(side.terms) == 1 and not neg and isinstance(body, sympy.Add):
+            return latex_terms(body, side.mode, style, extra, cancel)
         s = latex_expr(body, side.mode, style, extra, cancel)
         if neg and s.startswith("-"):
             neg, s = False, s[1:].lstrip()
         if isinstance(body, sympy.Add) and len(side.terms) > 1:
             s = r"\left(" + s + r"\right)"
-        if i == 0:
-            out = ("-" if neg else "") + s
-        else:
-            if not neg and s.startswith("-"):
-                s = s[1:].lstrip()
-                neg = True
-            out += (" - " if neg else " + ") + s
+        if i and not neg and s.startswith("-"):
+            s = s[1:].lstrip()
+            neg = True
+        out.append(("-" if neg else "+", s))
     return out
+
+
+def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
+    """A side of an equation: its terms joined with their signs, in order."""
+    return join_terms(side_terms(side, style, extra, cancel))
 
 
 _UNITLESS = {sympy.Symbol(f"vec:e_{a}", commutative=True) for a in "tnxy"}
@@ -456,24 +506,95 @@ def _slot_term(
     return token + " " + printer.doprint(rest)
 
 
-def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
-    """The line's LaTeX (without delimiters) and its tag."""
-    body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
+def _struck(eqn: Eqn, style: Style) -> frozenset[sympy.Symbol]:
+    """The symbols the line strikes out, unless the style prints no strokes."""
+    return eqn.cancel if style.strike else frozenset()
+
+
+def unit_latex(eqn: Eqn, style: Style) -> str:
+    """The unit after the line's last side ('' where that side is still in symbols)."""
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
     )
-    if eqn.unit and not symbolic:
-        body += (
-            r"\ \%"
-            if eqn.unit == "%"
-            else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
-        )
+    if not eqn.unit or symbolic:
+        return ""
+    if eqn.unit == "%":
+        return r"\ \%"
+    return latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit)
+
+
+def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
+    """The line's LaTeX (without delimiters) and its tag."""
+    body = " = ".join(latex_side(s, style, extra, _struck(eqn, style)) for s in eqn.sides)
+    body += unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
-        body = r"\Rightarrow\quad " + body
+        body = IMPLIES + body
     return body, eqn.tag
+
+
+IMPLIES = r"\Rightarrow\quad "
+_RELATION_PT = 13.33  # '=' with its spaces (Computer Modern, 10 pt)
+_CONTINUED_PT = 10.0 + 12.22  # '\quad +' at the start of a continued row
+_BOX_PT = 6.8  # what \boxed adds
+
+
+@dataclass(frozen=True)
+class Row:
+    """One row of an equation line too wide for the page: ``lhs rel rhs``.
+
+    The first row holds the left side (``lhs``) and ``=``; each later side starts a
+    row of its own (``lhs`` empty, ``rel`` "="); a side still too wide goes on in
+    rows that start with its next sign (``rel`` "+" or "-", ``continued``).
+    """
+
+    lhs: str
+    rel: str
+    rhs: str
+    continued: bool = False
+
+
+def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: float = 0.0) -> tuple[Row, ...]:
+    """The line set on rows that each fit ``width`` pt (10 pt type, display style), as
+    :func:`derive.writers.width.width_pt` estimates it; ``reserve`` pt more go beside it
+    (the ANSWER mark). Empty when the line fits on one row, or has one side only.
+
+    One side per row after the first (``T_2 = a``, ``= b``, ``= c``); a side still too
+    wide is broken before one of its own terms' signs, never inside a term.
+    """
+    if len(eqn.sides) < 2:
+        return ()
+    cancel = _struck(eqn, style)
+    sides = [side_terms(s, style, extra, cancel) for s in eqn.sides]
+    unit = unit_latex(eqn, style)
+    if unit:
+        sign, text = sides[-1][-1]
+        sides[-1][-1] = (sign, text + unit)
+    room = width - reserve - (_BOX_PT if eqn.boxed else 0.0)
+    lhs = (IMPLIES if eqn.implies else "") + join_terms(sides[0])
+    if width_pt(lhs + " = " + " = ".join(join_terms(t) for t in sides[1:])) <= room:
+        return ()
+    left = width_pt(lhs)
+    rows: list[Row] = []
+    for terms in sides[1:]:
+        chunks = [terms[:1]]
+        for term in terms[1:]:
+            trial = [*chunks[-1], term]
+            lead = _RELATION_PT if len(chunks) == 1 else _CONTINUED_PT
+            if term[0] in "+-" and left + lead + width_pt(_continued(trial)) > room:
+                chunks.append([term])
+            else:
+                chunks[-1] = trial
+        rows.append(Row(lhs if not rows else "", "=", join_terms(chunks[0])))
+        rows.extend(Row("", chunk[0][0], _continued(chunk), continued=True) for chunk in chunks[1:])
+    return tuple(rows)
+
+
+def _continued(terms: list[tuple[str, str]]) -> str:
+    """Terms joined, the first without its sign (the row's ``rel`` shows it)."""
+    return join_terms([("+", terms[0][1]), *terms[1:]])
 
 
 def block_style(block: Block, style: Style) -> Style:
