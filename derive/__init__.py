@@ -55,11 +55,26 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     return displayed(solve_steps(problem))
 
 
-def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
-    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'."""
+def render(
+    solution: Solution,
+    fmt: str = "md",
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    target: str = "github",
+    heading_level: int = 1,
+    title: bool = True,
+) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+
+    ``target`` (Markdown): 'github', 'jupyter', 'mkdocs' or 'pandoc'; ``heading_level``
+    and ``title``: the title's heading level, or no title (see docs/interop.md).
+    """
     from derive.writers.view import render as render_text
 
-    return render_text(solution, fmt, digits=digits, figures=figures)
+    return render_text(
+        solution, fmt, digits=digits, figures=figures, target=target, heading_level=heading_level, title=title
+    )
 
 
 def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> Report:

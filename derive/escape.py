@@ -112,8 +112,10 @@ def tex(text: str) -> str:
 _MD_SPECIAL = set("\\`*_[]|$~#")
 
 
-def markdown(text: str) -> str:
-    """``text`` as Markdown that shows it literally (no markup, no math, no HTML)."""
+def markdown(text: str, *, caret: bool = False) -> str:
+    """``text`` as Markdown that shows it literally (no markup, no math, no HTML);
+    ``caret`` escapes ``^`` too, which pandoc's Markdown reads as a superscript."""
+    special = _MD_SPECIAL | {"^"} if caret else _MD_SPECIAL
     out = []
     for ch in text.replace("\r", " ").replace("\n", " "):
         if ch == "<":
@@ -122,7 +124,7 @@ def markdown(text: str) -> str:
             out.append("&gt;")
         elif ch == "&":
             out.append("&amp;")
-        elif ch in _MD_SPECIAL:
+        elif ch in special:
             out.append("\\" + ch)
         elif ord(ch) < 32:
             out.append(" ")

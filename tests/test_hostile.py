@@ -485,6 +485,10 @@ def test_escape_tables_hold_only_harmless_commands() -> None:
 def test_markdown_has_no_markup_from_the_file(hostile: derive.Solution, benign: derive.Solution) -> None:
     md = derive.render(hostile, "md")
     assert Counter(_tags(md)) == Counter(_tags(derive.render(benign, "md")))  # the figures' SVG only
+    # the one link: a web address of the source line, as a CommonMark autolink (http and https only)
+    links = re.findall(r"<([a-z]+:[^<>\s]*)>", md)
+    assert links == ["http://example.com/x.png"]
+    assert all(f"<{u}>" in next(ln for ln in md.splitlines() if ln.startswith("*Source:")) for u in links)
     assert _handlers(md) == []
     assert "\x1b" not in md
     assert not re.search(r"(?<!\\)\]\(", md)  # no link or image: every ] from the file is escaped
@@ -512,7 +516,8 @@ def test_html_has_no_markup_from_the_file(hostile: derive.Solution, benign: deri
 
 
 def _tags(page: str) -> list[str]:
-    return re.findall(r"<\s*/?\s*([A-Za-z][\w-]*)", page)
+    """HTML tags (an autolink such as <https://x.org> is not one)."""
+    return re.findall(r"<\s*/?\s*([A-Za-z][\w-]*)(?![\w-]*:)", page)
 
 
 def _handlers(page: str) -> list[str]:
