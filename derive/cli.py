@@ -9,11 +9,17 @@ import argparse
 import sys
 import traceback
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from derive import __version__
 from derive.errors import DeriveError, InputError
+from derive.writers.targets import FRAGMENT_PACKAGES, MARKDOWN_TARGETS
 
-FORMATS = ("md", "tex", "pdf", "html", "json")
+if TYPE_CHECKING:
+    from derive.steps.model import Solution
+
+FORMATS = ("md", "tex", "pdf", "html", "json", "docx")
+FRAGMENT_PREAMBLE = rf"\usepackage{{{','.join(FRAGMENT_PACKAGES)}}}"
 
 
 class _Parser(argparse.ArgumentParser):
@@ -36,9 +42,13 @@ def _parser() -> argparse.ArgumentParser:
         "--digits", type=int, help="significant figures (default: the file's, else 3, or 4 when the leading digit is 1)"
     )
     p_solve.add_argument(
-        "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
+        "--fragment",
+        action="store_true",
+        help="with --format tex: a fragment to \\input, not a whole document; "
+        f"its preamble needs {FRAGMENT_PREAMBLE} (see docs/interop.md)",
     )
     p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
+    _add_interop_options(p_solve)
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -76,6 +86,54 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _add_interop_options(p_solve: argparse.ArgumentParser) -> None:
+    """The options for putting the output into other tools (docs/interop.md)."""
+    p_solve.add_argument(
+        "--for",
+        dest="target",
+        choices=tuple(MARKDOWN_TARGETS),
+        help="with --format md: where the Markdown goes (default: github; mkdocs is the same; "
+        "jupyter loads \\cancel for MathJax 2; pandoc: for pandoc -t docx or latex)",
+    )
+    p_solve.add_argument(
+        "--heading-level",
+        type=int,
+        choices=range(1, 7),
+        default=1,
+        metavar="N",
+        help="the title at heading level N (1: # or \\section*), the stages below it (default: 1)",
+    )
+    p_solve.add_argument(
+        "--no-title", action="store_true", help="leave the title out (your heading stands); stages at --heading-level"
+    )
+
+
+def _interop_options(args: argparse.Namespace) -> dict[str, Any]:
+    """The render options of --for, --heading-level and --no-title, checked against --format."""
+    if args.target is not None and args.format != "md":
+        raise InputError("--for is for --format md (docx uses --for pandoc itself)", where="usage")
+    if (args.heading_level != 1 or args.no_title) and args.format in ("html", "json"):
+        raise InputError("--heading-level and --no-title are for md, tex, pdf and docx", where="usage")
+    options: dict[str, Any] = {"heading_level": args.heading_level, "title": not args.no_title}
+    if args.target is not None:
+        options["target"] = args.target
+    return options
+
+
+def _docx(solution: Solution, args: argparse.Namespace, options: dict[str, Any]) -> bytes:
+    from derive.writers.docx import build_docx
+
+    if not args.output:
+        raise InputError("--format docx writes a file: give one with -o FILE.docx", where="usage")
+    return build_docx(
+        solution,
+        digits=args.digits,
+        figures=not args.no_figure,
+        heading_level=options["heading_level"],
+        show_title=options["title"],
+    )
+
+
 def _solve(args: argparse.Namespace) -> int:
     import derive
     from derive.fileio import write_atomic
@@ -86,6 +144,7 @@ def _solve(args: argparse.Namespace) -> int:
             where="usage",
             field=f"--digits {args.digits}",
         )
+    options = _interop_options(args)
     problem = derive.load(args.problem)
     solution = derive.solve(problem)
     inputs = (Path(problem.path),)
@@ -94,10 +153,14 @@ def _solve(args: argparse.Namespace) -> int:
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
-        data: str | bytes = build_pdf(derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure))
+        data: str | bytes = build_pdf(
+            derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure, **options)
+        )
+    elif args.format == "docx":
+        data = _docx(solution, args, options)
     else:
         fmt = "tex-fragment" if args.format == "tex" and args.fragment else args.format
-        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure)
+        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure, **options)
     if args.output:
         write_atomic(args.output, data, inputs=inputs)
     else:
