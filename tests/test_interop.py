@@ -12,8 +12,8 @@ On the notes' two examples and a chain:
   converted with nbconvert (MathJax 2.7: ``\\cancel`` needs ``\\require{cancel}``);
 - a MkDocs (material) page built with the set-up docs/interop.md documents.
 
-The target forms are in docs/interop.md. Until derive has ``--for TARGET``, the
-Markdown tests check the default Markdown (and say so when they fail).
+The target forms are in docs/interop.md (``--for TARGET``, ``--heading-level``,
+``--no-title``, ``--format docx``); tests/test_targets.py checks them without the tools.
 
 Tools: TeX Live with latexmk (exam.cls and xurl come with texlive-latex-extra);
 pandoc (``pip install pypandoc-binary``, or Debian's ``pandoc``; ``DERIVE_PANDOC``
@@ -74,17 +74,9 @@ def _ok(proc: subprocess.CompletedProcess[str], what: str) -> str:
 
 @cache
 def _markdown(name: str, target: str | None = None) -> tuple[str, str]:
-    """derive's Markdown for a target (``--for TARGET``), and a note for failure messages.
-
-    Until derive has ``--for``, the default Markdown stands in (and the note says so).
-    """
-    if target is None:
-        return _ok(_derive("solve", name), f"derive solve {name}"), ""
-    proc = _derive("solve", name, "--for", target)
-    if proc.returncode == 2 and "--for" in proc.stderr:
-        default, _ = _markdown(name)
-        return default, f" [derive has no '--for {target}' yet: checked the default Markdown]"
-    return _ok(proc, f"derive solve {name} --for {target}"), ""
+    """derive's Markdown (the default, or ``--for TARGET``), and a note for failure messages."""
+    args = ("solve", name) if target is None else ("solve", name, "--for", target)
+    return _ok(_derive(*args), f"derive {' '.join(args)}"), ""
 
 
 def _tags(name: str) -> list[str]:
