@@ -123,3 +123,25 @@ def test_later_chain_stages_refer_to_equations_that_exist() -> None:
     for pair in refs:
         assert {r for r in pair if r} <= tags
     assert "Add (15) and (10)" not in md
+
+
+def test_the_printer_writes_one_over_tan_as_a_fraction() -> None:
+    import sympy
+
+    from derive.writers.printing import StepPrinter
+
+    alpha = sympy.Symbol("alpha", real=True)
+    assert StepPrinter().doprint(-1 / sympy.tan(alpha)) == r"-\frac{1}{\tan {\alpha}}"
+    assert "1 \\tan" not in StepPrinter().doprint(sympy.atan(-1 / sympy.tan(alpha)))
+
+
+def test_example_4c12_marks_only_the_angle_it_asks_for() -> None:
+    md = derive.render(derive.solve(derive.load("notes-4c12-cue-ball")), "md")
+    marked = [ln for ln in md.splitlines() if "ANSWER" in ln]
+    assert len(marked) == 1 and r"\theta_{A2}" in marked[0]
+
+
+def test_example_4c11_marks_the_velocities_once() -> None:
+    md = derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
+    marked = [ln for ln in md.splitlines() if "ANSWER" in ln]
+    assert len(marked) == 1 and r"\vec{v}_{B2}" in marked[0]

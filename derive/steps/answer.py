@@ -4,6 +4,8 @@ other units), and the kinetic energy for the record."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from derive.errors import SolveError
@@ -15,9 +17,32 @@ from derive.symbols import symbol, vector
 
 
 def answer(page: Page) -> list[Block]:
-    """The answer blocks: velocities, x-y components, closed forms, what was asked, energy."""
-    blocks = [_velocities(page), _xy(page), _closed_forms(page), _asked(page)]
+    """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
+
+    In each block the last boxed line that answers the question gets the notes'
+    "⟵ ANSWER" mark: the velocities when the question asks for them, else what it asks.
+    """
+    p = page.p
+    velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
+    asks_velocities = bool(velocities & set(p.find))
+    blocks = [
+        _marked(_velocities(page), asks_velocities),
+        _marked(_xy(page), asks_velocities),
+        _closed_forms(page),
+        _marked(_asked(page), True),
+    ]
     return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def _marked(block: Block | None, asked: bool) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
+    if block is None or not asked:
+        return block
+    last = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+    if last < 0:
+        return block
+    lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))
+    return replace(block, lines=lines)
 
 
 def _bodies(page: Page) -> str:

@@ -48,7 +48,8 @@ class Eqn:
     ``tag`` is the equation number; ``cancel`` holds symbols shown struck out;
     ``unit`` follows the last side; ``implies`` starts the line with ⇒; an
     ``optional`` line (a sum shown term by term) may be left out where its numbers
-    cannot be shown so that they add up at the solution's figures.
+    cannot be shown so that they add up at the solution's figures; ``mark`` puts the
+    notes' "⟵ ANSWER" after the line.
     """
 
     sides: tuple[Side, ...]
@@ -58,6 +59,7 @@ class Eqn:
     implies: bool = False
     boxed: bool = False
     optional: bool = False
+    mark: bool = False
 
 
 @dataclass(frozen=True)

@@ -330,6 +330,10 @@ class StepPrinter(LatexPrinter):
             base = self._print(expr.base)
             base = r"\left(" + base + r"\right)" if base.startswith("-") else base
             return f"{base}^{{{expr.exp}}}"
+        if expr.exp.is_Number and expr.exp < 0 and not expr.base.is_Number:
+            # 1/tan(x), not SymPy's power form of a function (which read "-1 tan x")
+            inverse = expr.base if expr.exp == -1 else sympy.Pow(expr.base, -expr.exp, evaluate=False)
+            return r"\frac{1}{" + self._print(inverse) + "}"
         saved, self._round_integers = self._round_integers, False
         try:
             return super()._print_Pow(expr)

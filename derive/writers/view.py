@@ -161,12 +161,11 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     for block in blocks_in:
         bstyle = block_style(block, style)
         lines: list[dict[str, Any]] = []
-        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-        for i, eqn in enumerate(block.lines):
+        for eqn in block.lines:
             if eqn.optional and bstyle.hide_optional:
                 continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
-            if i == last_boxed:
+            if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
