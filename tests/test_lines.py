@@ -141,7 +141,9 @@ def test_example_4c12_marks_only_the_angle_it_asks_for() -> None:
     assert len(marked) == 1 and r"\theta_{A2}" in marked[0]
 
 
-def test_example_4c11_marks_the_velocities_once() -> None:
+def test_example_4c11_marks_each_answer_block_once() -> None:
     md = derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
-    marked = [ln for ln in md.splitlines() if "ANSWER" in ln]
-    assert len(marked) == 1 and r"\vec{v}_{B2}" in marked[0]
+    blocks = md.split("## 4) Answer")[1].split("Kinetic energy")[0].split("immediately after the impact:")[1]
+    velocities, asked = blocks.split("As asked:")
+    assert velocities.count("ANSWER") == 1 and r"\vec{v}_{B2}" in velocities.split("ANSWER")[0].splitlines()[-1]
+    assert asked.count("ANSWER") == 1
