@@ -147,3 +147,18 @@ def test_example_4c11_marks_each_answer_block_once() -> None:
     velocities, asked = blocks.split("As asked:")
     assert velocities.count("ANSWER") == 1 and r"\vec{v}_{B2}" in velocities.split("ANSWER")[0].splitlines()[-1]
     assert asked.count("ANSWER") == 1
+
+
+def test_a_chain_carries_no_number_before_the_unknown_it_depends_on_is_found() -> None:
+    # OCR M2 January 2007 Q3 (mark scheme: impact speed 35, rebound 28, e = 0.8, I = 12.6)
+    md = derive.render(derive.solve(derive.load("chain-ocr-m2-2007-rebounds-to-start")), "md", figures=False)
+    before, after = md.split("**Solution.**")[1].split("## Stage 5")
+    assert "-28.0" not in before and "12.6" not in before  # e is found in stage 5
+    assert r"u = v_{A2} = -35.0 e_{\mathrm{floor}}" in before
+    assert r"J_{n} = m_{A} \left(v_{A1} - v_{A2}\right)" in before  # the impulse is worked out
+    assert r"v_{2} = -u = -u" not in md
+    assert r"h_{2} = 62.5 e_{\mathrm{floor}}^{2} = 40.0\ \mathrm{m}" in after  # the algebra of the solve stage
+    assert r"e_{\mathrm{floor}} = 0.800" in after
+    assert r"u = -35 e_{\mathrm{floor}} = -28.0\ \mathrm{m/s}" in after
+    assert r"J = 7 e_{\mathrm{floor}} + 7 = 12.6\ \mathrm{N\cdot s}" in after
+    assert md.count("ANSWER") == 1 and "## Answer" in md.split("ANSWER")[0]

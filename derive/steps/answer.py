@@ -26,17 +26,17 @@ def answer(page: Page) -> list[Block]:
     velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
     asks_velocities = bool(velocities & set(p.find))
     blocks = [
-        _marked(_velocities(page), asks_velocities),
-        _marked(_xy(page), asks_velocities),
+        _marked(page, _velocities(page), asks_velocities),
+        _marked(page, _xy(page), asks_velocities),
         _closed_forms(page),
-        _marked(_asked(page), True),
+        _marked(page, _asked(page), True),
     ]
     return [b for b in blocks if b is not None] + [energy(page)]
 
 
-def _marked(block: Block | None, asked: bool) -> Block | None:
+def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
     """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
-    if block is None or not asked:
+    if block is None or not asked or not page.marks:
         return block
     last = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
     if last < 0:

@@ -81,7 +81,9 @@ class Stage:
     or of a chain, where an impact stage holds its own worked page in ``part``.
 
     ``figure`` asks for the figure of the impact, "before" or "after"; ``carried``
-    lists what an impact stage hands on to the stages after it.
+    lists what an impact stage hands on to the stages after it; ``values``, where
+    set, are the numbers known at this stage of a chain (its substitution lines use
+    these, not numbers a later stage finds).
     """
 
     number: int
@@ -91,6 +93,7 @@ class Stage:
     part: Solution | None = None
     carried: tuple[Eqn, ...] = ()
     kind: str = "step"
+    values: dict[sympy.Symbol, sympy.Expr] | None = None
 
 
 @dataclass(frozen=True)

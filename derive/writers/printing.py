@@ -462,7 +462,12 @@ def _slot_term(
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
+    printed: list[str] = []
+    for s in eqn.sides:
+        text = latex_side(s, style, extra, eqn.cancel)
+        if not printed or text != printed[-1]:  # v_2 = -u, not v_2 = -u = -u
+            printed.append(text)
+    body = " = ".join(printed)
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
@@ -514,9 +519,6 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
         p = StepPrinter(digits=style.digits)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
     if isinstance(expr, sympy.Eq):
-        return (
-            StepPrinter(digits=style.digits).doprint(expr.lhs)
-            + " = "
-            + StepPrinter(digits=style.digits).doprint(expr.rhs)
-        )
+        printer = StepPrinter(digits=style.digits, decimal_rationals=True)
+        return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
     return StepPrinter(digits=style.digits, decimal_rationals=True).doprint(expr)

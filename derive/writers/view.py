@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
@@ -348,9 +349,10 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
     stages = []
     for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
             v = view(st.part, digits, figures=figures)
-            carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -363,7 +365,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             )
         else:
             stages.append(
-                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
             )
     answers = []
     for a in sol.answers:
