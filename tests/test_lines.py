@@ -162,3 +162,16 @@ def test_a_chain_carries_no_number_before_the_unknown_it_depends_on_is_found() -
     assert r"u = -35 e_{\mathrm{floor}} = -28.0\ \mathrm{m/s}" in after
     assert r"J = 7 e_{\mathrm{floor}} + 7 = 12.6\ \mathrm{N\cdot s}" in after
     assert md.count("ANSWER") == 1 and "## Answer" in md.split("ANSWER")[0]
+
+
+def test_the_kinetic_energy_lost_is_the_difference_of_the_energies_shown() -> None:
+    # 4.C.11: T_1 = 20·5²/2 + 5·15²/2 = 812.5 J exactly; the loss shown must be T_1 - T_2 as shown.
+    md = derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
+    energy = md.split("Kinetic energy, for the record")[1]
+    t1 = re.search(r"T_\{1\} = .* = ([\d.]+)\\ \\mathrm\{J\}", energy).group(1)
+    t2 = re.search(r"T_\{2\} = .* = ([\d.]+)\\ \\mathrm\{J\}", energy).group(1)
+    a, b, lost = re.search(r"T_\{\\mathrm\{lost\}\} = T_\{1\} - T_\{2\} = ([\d.]+) - ([\d.]+) = ([\d.]+)", energy).groups()
+    assert t1 == a == "812.5" and t2 == b
+    from decimal import Decimal
+
+    assert Decimal(a) - Decimal(b) == Decimal(lost)

@@ -234,6 +234,10 @@ def energy(page: Page) -> Block:
         }
     forms["T_lost"] = (symbol("T_1"), -symbol("T_2"))
     lines = []
+    before, after, lost = (page.results[n].value for n in ("T_1", "T_2", "T_lost"))
+    # T_1 - T_2 with their numbers, so that the loss shown is their difference; the
+    # three then carry the places at which they add up
+    difference = before is not None and after is not None and lost is not None and after != 0
     for name, terms in forms.items():
         r = page.results[name]
         sides = [Side((r.symbol,)), Side(terms)]
@@ -242,8 +246,11 @@ def energy(page: Page) -> Block:
                 sides.append(Side((r.closed,)))
             sides.append(Side((r.partial,), "result"))
         else:
-            sides.append(Side((r.value,), "result"))
+            if name == "T_lost" and difference:
+                sides.append(Side((before, -after), "numeric"))
+            sides.append(Side((r.value,), "numeric" if difference else "result"))
         lines.append(Eqn(tuple(sides), unit=r.unit))
+    sums = (((before, -after), lost),) if difference else ()
     r1, rl = page.results["T_1"], page.results["T_lost"]
     if r1.value is not None and rl.value is not None and r1.value != 0:
         frac = rl.value / r1.value * 100
@@ -264,4 +271,4 @@ def energy(page: Page) -> Block:
         Math(sympy.Eq(page.e, 1)),
         ", so it is never used to find the velocities.",
     )
-    return Block(text, tuple(lines))
+    return Block(text, tuple(lines), sums)
