@@ -10,6 +10,7 @@ from __future__ import annotations
 import base64
 import json
 import re
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
@@ -220,11 +221,10 @@ def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list
     for block in blocks_in:
         bstyle = block_style(block, style)
         lines: list[dict[str, Any]] = []
-        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-        for i, eqn in enumerate(block.lines):
+        for eqn in block.lines:
             if eqn.optional and bstyle.hide_optional:
                 continue
-            line = line_view(eqn, bstyle, layout, answer=i == last_boxed, extra=bstyle.extra)
+            line = line_view(eqn, bstyle, layout, answer=eqn.mark, extra=bstyle.extra)
             bare = line["latex"].removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
                 kept = lines[-1]
@@ -264,6 +264,8 @@ def view(
         varied=varied,
         slots=slots,
         strike=layout.strike,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
     )
     stages = []
     for stage in solution.stages:
@@ -416,12 +418,21 @@ def chain_view(
 ) -> dict[str, Any]:
     """The data the chain templates need: the chain's givens, each stage printed."""
     p = sol.problem
-    style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles, strike=layout.strike)
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        sol.values,
+        sol.angles,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown),
+        strike=layout.strike,
+    )
     stages = []
     for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
             v = view(st.part, digits, figures=figures, layout=layout)
-            carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -438,7 +449,7 @@ def chain_view(
                     "number": st.number,
                     "title": st.title,
                     "impact": False,
-                    "blocks": blocks_view(st.blocks, style, layout),
+                    "blocks": blocks_view(st.blocks, stage_style, layout),
                 }
             )
     answers = []
