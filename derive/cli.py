@@ -36,8 +36,10 @@ def _parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     p_solve = sub.add_parser("solve", help="write the worked solution of a problem")
     p_solve.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
-    p_solve.add_argument("--format", "-f", choices=FORMATS, default="md", help="output format (default: md)")
-    p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf needs -o)")
+    p_solve.add_argument(
+        "--format", "-f", choices=FORMATS, default="md", help="output format (default: md; docx through pandoc)"
+    )
+    p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf and docx need -o)")
     p_solve.add_argument(
         "--digits", type=int, help="significant figures (default: the file's, else 3, or 4 when the leading digit is 1)"
     )

@@ -18,8 +18,8 @@ from derive.errors import RenderError
 from derive.steps.model import Eqn, Side
 from derive.writers import docx
 from derive.writers.printing import Style, latex_eqn, latex_rows
-from derive.writers.targets import ARTICLE_WIDTH_PT, FRAGMENT_PACKAGES
-from derive.writers.view import source_parts
+from derive.writers.targets import ARTICLE_WIDTH_PT, FRAGMENT_PACKAGES, Layout
+from derive.writers.view import markdown, source_parts
 from derive.writers.width import width_pt
 
 NOTES = ("notes-4c11-two-spheres", "notes-4c12-cue-ball", "chain-aqa-m3-2007-collide-again")
@@ -99,6 +99,16 @@ def test_pandoc_markdown(name: str) -> None:
     assert md.count("](data:image/svg+xml;base64,") == default.count("<svg")
     assert "\\begin{aligned}" not in md
     assert not re.search(r"^\$\$\n=", md, flags=re.M), "a display that starts with '='"
+
+
+def test_markdown_rows_as_one_aligned_display() -> None:
+    """A layout with a width and aligned rows (no named target has it yet): one display, rows with &=."""
+    layout = Layout(width=ARTICLE_WIDTH_PT)
+    page, files = markdown(solution("notes-4c12-cue-ball"), layout)
+    assert files == {}
+    block = re.search(r"\$\$\n(\\begin\{aligned\}\nT_\{2\} &= .*?)\n\$\$", page, flags=re.S)
+    assert block, "T_2 on aligned rows"
+    assert block.group(1).count(" \\\\\n&= ") == 2 and block.group(1).endswith("\\end{aligned}")
 
 
 def test_pandoc_markdown_escapes_carets_in_text(problem_from) -> None:
