@@ -57,5 +57,9 @@ def solve_impact(problem: Problem) -> ImpactOutcome:
             v = evaluate(expr, problem)
             if not v.free_symbols:
                 values[c] = v
-    angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
-    return ImpactOutcome(problem, imp, found, values, angles)
+    angles = {g.symbol for g in problem.givens if g.unit == "deg"}
+    for rel in problem.asks.equations:  # a direction given after the impact is a known angle
+        if isinstance(rel.lhs, sympy.Symbol) and rel.lhs.name.startswith(("theta", "beta")) and rel.rhs.is_number:
+            values[rel.lhs] = rel.rhs * sympy.pi / 180
+            angles.add(rel.lhs)
+    return ImpactOutcome(problem, imp, found, values, frozenset(angles))

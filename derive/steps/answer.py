@@ -165,6 +165,9 @@ def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _angle_line(page, r, t, n, page.value_of(t), page.value_of(n), boxed)
     if r.name == "J_n":
         return _impulse_line(page, r, boxed)
+    defined = {d.name: d for d in page.p.asks.defined}
+    if r.name in defined:  # F_avg = J_n/dt = ...
+        return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
     return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
 
 

@@ -110,7 +110,8 @@ class Page:
 
     def has_values(self, expr: sympy.Expr) -> bool:
         """True when a substitution line has numbers to put into ``expr``."""
-        return bool(expr.free_symbols & (set(self.numeric) | self._xy_components() | self.varied))
+        known = set(self.numeric) | set(self.outcome.values) | self._xy_components() | self.varied
+        return bool(expr.free_symbols & known)
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` with the pre-impact components and every numeric given put in; where a
