@@ -25,9 +25,10 @@ Fairness: every process runs under the interpreter running this script (the venv
 ``derive`` is the venv's console script, run as ``python .venv/bin/derive ...`` -- what the shebang
 does when a user types ``derive`` -- or ``python -m derive ...`` with ``--module`` (runpy adds a
 few ms). Children run in an empty temporary folder, so the working folder cannot shadow the
-installed package. Before timing, derive's own bytecode is compiled (``compileall``): an installed
-wheel has it, but an editable checkout on a machine with PYTHONDONTWRITEBYTECODE=1 never writes
-it, and would charge derive about 0.3 s of compiling on every call that users never pay.
+installed package. Before timing, derive's own bytecode is compiled (``compileall``, into the
+package's __pycache__ folders, which git ignores): an installed wheel has it, but an editable
+checkout on a machine with PYTHONDONTWRITEBYTECODE=1 never writes it, and would charge derive
+about 0.1 s of CPU for compiling on every call, which users never pay.
 ``--no-compile`` measures the tree as it is. One untimed warm-up run of each command checks its
 exit code and output and warms the file cache.
 """
