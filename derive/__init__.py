@@ -28,6 +28,7 @@ __all__ = [
     "load",
     "render",
     "solve",
+    "verify",
 ]
 
 
@@ -48,3 +49,13 @@ def load(path: str | Path) -> Problem:
             where=str(path),
         )
     return problem.load(p)
+
+
+def verify(solution: Solution, fmt: str = "md", **options: object) -> object:
+    """Check every line of ``solution``'s page in ``fmt``; returns a :class:`derive.verify.Report`.
+
+    Imported on first use, so that ``import derive`` stays light (see :mod:`derive.verify`).
+    """
+    from derive.verify import verify as check_page
+
+    return check_page(solution, fmt, **options)
