@@ -222,9 +222,13 @@ def walk(node: object) -> Iterator[object]:
         yield from walk(node.inner)
 
 
-def measure(node: object, env: Env, halfwidth: Callable[[Num], object]) -> tuple[object, object]:
-    """``node``'s value and how far it may move with the rounding of its numbers."""
+def measure(node: object, env: Env, halfwidth: Callable[[Num], object]) -> tuple[object, object, object]:
+    """``node``'s value, how far it may move with the rounding of its numbers, and its
+    scale (the size of its terms: a difference of large numbers is only as exact as they are)."""
     center = value(node, env)
+    scale = abs(center)
+    if isinstance(node, Add):
+        scale = max(scale, sum((abs(value(t, env)) for _, t in node.terms), ZERO))
     radius = ZERO
     for num in (n for n in walk(node) if isinstance(n, Num)):
         h = halfwidth(num)
@@ -238,7 +242,7 @@ def measure(node: object, env: Env, halfwidth: Callable[[Num], object]) -> tuple
             except Undefined:
                 continue
         radius += worst
-    return center, radius * (1 + CTX.mpf(10) ** -6)
+    return center, radius * (1 + CTX.mpf(10) ** -6), scale
 
 
 def substitute(node: object, mapping: dict[str, object]) -> object:

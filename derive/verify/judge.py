@@ -23,6 +23,12 @@ from derive.verify.tokens import LatexError
 from derive.verify.tree import Display, Hat, Num, Relation, Side, Sym, Vec
 
 TOLERANCE = CTX.mpf(10) ** -20
+TINY = CTX.mpf(10) ** -300
+
+
+def tolerance(*values: Value) -> object:
+    """What exact arithmetic at 40 digits may leave over: relative to the sizes involved."""
+    return TOLERANCE * max([TINY, *(max(abs(v.center), v.scale) for v in values)])
 
 
 @dataclass(frozen=True)
@@ -55,6 +61,7 @@ class Value:
     center: object
     radius: object
     unit_dim: units.Dim | None = None
+    scale: object = ZERO
 
 
 class Judge:
@@ -173,15 +180,15 @@ class Judge:
         """A side's value and radius, its unit applied; raises Unresolved or Undefined.
         ``result``: the side states a result, so its number is a rounding, never a datum."""
         env = self.env(scopes, axis, overrides)
-        center, radius = measure(side.expr, env, lambda n: self.halfwidth(n, scopes, result))
+        center, radius, scale = measure(side.expr, env, lambda n: self.halfwidth(n, scopes, result))
         unit_dim = None
         if side.unit is not None:
             factor, unit_dim, _ = units.to_working(side.unit, scopes[0].system)
             f = mpf(Fraction(factor))
-            center, radius = center * f, radius * f
+            center, radius, scale = center * f, radius * f, scale * f
         elif any(isinstance(n, Num) and n.degrees for n in walk(side.expr)):
             unit_dim = units.ANGLE
-        return Value(center, radius, unit_dim)
+        return Value(center, radius, unit_dim, scale)
 
     def axes(self, relation: Relation) -> list[str | None]:
         """The components a relation is read in: none, or those of its unit vectors."""
@@ -205,8 +212,7 @@ class Judge:
         out: list[Value | None] = []
         for i, side in enumerate(relation.sides):
             try:
-                result = is_result(claim, relation, i)
-                out.append(self.value(side, self.side_scopes(claim, i), axis, result=result))
+                out.append(self.value(side, self.side_scopes(claim, i), axis, result=is_stated(claim, relation, i)))
             except Unresolved as exc:
                 self.unresolved.add((claim.line.number, str(exc)))
                 out.append(None)
@@ -247,6 +253,15 @@ def signed_value(side: Side) -> Decimal | None:
         return None
     neg = isinstance(side.expr, Add)
     return -num.value if neg else num.value
+
+
+def is_stated(claim: Claim, relation: Relation, index: int) -> bool:
+    """True for the last side of a line that states a value (with a unit, boxed, carried):
+    its numbers are roundings, even one that happens to read like a given."""
+    if index == 0 or index != len(relation.sides) - 1 or claim.line.kind == "given":
+        return False
+    boxed = claim.display is not None and claim.display.boxed
+    return relation.sides[index].unit is not None or boxed or claim.line.kind == "carried"
 
 
 def is_result(claim: Claim, relation: Relation, index: int) -> bool:

@@ -18,8 +18,9 @@ __all__ = ["Facts", "Quantity", "Scope", "facts_of"]
 
 
 def facts_of(solution: Any, digits: int | None = None) -> Facts:
-    """The facts of a solved problem or chain; ``digits`` overrides the problem's figures."""
-    problem = solution.problem
+    """The facts of a solved problem or chain (or of a problem, when it has no unknowns to
+    find); ``digits`` overrides the problem's figures."""
+    problem = getattr(solution, "problem", solution)
     if getattr(problem, "kind", None) == "chain":
         from derive.verify.facts.chain import chain_facts
 

@@ -38,14 +38,13 @@ class _Stage:
 
 
 class _Chain:
-    def __init__(self, solution: Any) -> None:
+    """The chain worked once, at one point: ``fixed`` holds the unknowns found by then."""
+
+    def __init__(self, solution: Any, fixed: dict[str, sympy.Expr]) -> None:
         self.sol = solution
         self.chain = solution.problem
         self.system = self.chain.system
-        self.table = Table()
-        self.unknowns: dict[str, sympy.Symbol] = {}
-        self.roots: dict[sympy.Symbol, sympy.Expr] = {}
-        self.solved_at: dict[sympy.Symbol, int] = {}
+        self.table = Table(fixed=dict(fixed))
         self.defined_at: dict[str, int] = {}
         self.stages: list[_Stage] = []
         self.notes: list[str] = []
@@ -73,21 +72,20 @@ class _Chain:
         self.defined_at.setdefault(name, i)
 
     # the stages -----------------------------------------------------------
-    def run(self) -> Facts:
+    def run(self) -> _Chain:
         self.chain_givens()
         for i, (raw, st) in enumerate(zip(self.chain.stages, self.sol.stages, strict=True), 1):
             kind = raw["type"]
             stage = _Stage(i, kind)
             getattr(self, "stage_" + kind)(i, raw, st, stage)
             self.stages.append(stage)
-        return self.facts()
+        return self
 
     def chain_givens(self) -> None:
-        for g in self.chain.givens:
+        for g in sorted(self.chain.givens, key=lambda g: g.unknown):  # the unknowns' roots need the rest
             dim = dim_of(g)
             if g.unknown:
-                sym = self.table.param(g.name, dim, role="unknown")
-                self.unknowns[g.name] = sym
+                self.table.param(g.name, dim, role="unknown")
             elif g.value is not None:
                 self.table.put(g.name, g.value, dim, "given")
                 self.table.note_exact(g.value, g.unit == "deg")
@@ -131,7 +129,7 @@ class _Chain:
 
     def stage_impact(self, i: int, raw: dict, st: Any, stage: _Stage) -> None:
         problem = st.solution.problem
-        table = Table(samples=self.table.samples)
+        table = Table(fixed=self.table.fixed)
         raw_given = raw.get("given", {}) or {}
         values = {}
         for g in problem.givens:
@@ -161,7 +159,7 @@ class _Chain:
     def stage_again(self, i: int, raw: dict, st: Any, stage: _Stage) -> None:
         behind, _ = self.quantity(raw.get("behind"))
         ahead, _ = self.quantity(raw.get("ahead"))
-        gap = number(behind - ahead, {**self.table.samples, **self.roots})
+        gap = number(behind - ahead, {})
         if gap is not None:
             self.define(i, raw.get("result", "again"), sympy.Integer(int(gap > 0)), units.NONE)
 
@@ -170,81 +168,74 @@ class _Chain:
         self.define(i, raw.get("result", f"q_{i}"), expr, dim)
 
     def stage_solve(self, i: int, raw: dict, st: Any, stage: _Stage) -> None:
-        """The unknown's value is derive's root, put back into the condition."""
-        target = raw.get("for")
-        open_ = [n for n, s in self.unknowns.items() if s not in self.roots and (target is None or n == target)]
-        if len(open_) != 1:
+        """The unknown's value is derive's root: put back into the condition, it must hold."""
+        name = _target(self.chain, i)
+        if name is None or name not in self.table.fixed:
             return
-        name = open_[0]
-        root = next((v for s, v in self.sol.values.items() if getattr(s, "name", None) == name), None)
-        if root is None:
-            return
-        sym = self.unknowns[name]
-        self.roots[sym] = self.table.resolve(root)
-        self.solved_at[sym] = i
         left, _, right = str(raw.get("condition", "")).partition("=")
         lhs, _ = self.quantity(left.strip())
         rhs, _ = self.quantity(right.strip())
-        gap = number(lhs - rhs, {**self.table.samples, **self.roots})
-        if gap is not None and abs(gap) > 1e-15 * max(1, abs(number(rhs, self.table.samples) or 1)):
+        gap, size = number(lhs - rhs, {}), number(rhs, {})
+        if gap is not None and abs(gap) > 1e-15 * max(1, abs(size or 1)):
             self.notes.append(f"stage {i}: derive's {name} does not meet the condition {raw.get('condition')}")
 
     # scopes ---------------------------------------------------------------
-    def point(self, stage: int) -> dict[sympy.Symbol, sympy.Expr]:
-        """Sample values, with each unknown solved by ``stage`` at its root."""
-        pt = dict(self.table.samples)
-        for sym, root in self.roots.items():
-            if self.solved_at[sym] <= stage:
-                pt[sym] = root.xreplace(pt)
-        return pt
-
-    def chain_scope(self, key: str, stage: int, point: dict | None = None, **kw: object) -> Scope:
+    def chain_scope(self, key: str, stage: int, **kw: object) -> Scope:
+        """The chain's own names, as far as stage ``stage`` has defined them."""
         names = [n for n, at in self.defined_at.items() if at <= stage]
-        sub = Table(
-            {n: self.table.exprs[n] for n in names},
-            {n: self.table.dims[n] for n in names},
-            {n: self.table.roles.get(n, "result") for n in names},
-            exact=self.table.exact,
-        )
-        return sub.scope(key, self.point(stage) if point is None else point, system=self.system, **kw)
+        return self.table.scope(key, names, system=self.system, **kw)
 
-    def facts(self) -> Facts:
-        last = len(self.stages)
-        scopes = self.scopes(last)
-        solved = {}
-        for stage in self.stages:
-            if any(at > stage.number for at in self.solved_at.values()):
-                solved.update(
-                    {k: v for k, v in self.scopes(last, stage.number).items() if k.endswith(f" {stage.number}")}
-                )
-        return Facts(scopes, self.chain.digits, True, tuple(self.notes), solved)
+    def stage_scopes(self, i: int) -> dict[str, Scope]:
+        """Stage ``i``: an impact's own names (the chain's as parent), or the chain's names."""
+        stage = self.stages[i - 1]
+        if stage.own is not None:
+            stage.own.exact |= self.table.exact
+            own = stage.own.scope(f"stage {i}", system=self.system, parent=f"chain {i}", answers=False)
+            return {f"chain {i}": self.chain_scope(f"chain {i}", i), f"stage {i}": own}
+        scope = self.chain_scope(f"stage {i}", i, answers=False)
+        quantities = dict(scope.quantities)
+        for n, (expr, dim) in stage.extra.items():
+            quantities[n] = Quantity(n, number(expr, {}), dim, "result")
+        return {f"stage {i}": Scope(scope.key, quantities, {}, self.system, None, scope.exact, answers=False)}
 
-    def scopes(self, last: int, only: int | None = None) -> dict[str, Scope]:
-        """Every scope; with ``only``, that stage's scopes with every unknown solved."""
-        asked = frozenset(self.chain.find) or frozenset(self.sol.stages[-1].outputs)
-        scopes = {"chain": self.chain_scope("chain", last, asked=asked)}
-        for stage in self.stages:
-            if only is not None and stage.number != only:
-                continue
-            i = stage.number
-            if stage.own is not None:
-                own = stage.own
-                own.exact |= self.table.exact
-                at = last if only is not None else i
-                scopes[f"chain {i}"] = self.chain_scope(f"chain {i}", i, point=self.point(at))
-                scopes[f"stage {i}"] = own.scope(
-                    f"stage {i}", self.point(at), system=self.system, parent=f"chain {i}", answers=False
-                )
-            else:
-                at = last if only is not None else i
-                scope = self.chain_scope(f"stage {i}", i, answers=False, point=self.point(at))
-                extra = dict(scope.quantities)
-                for n, (expr, dim) in stage.extra.items():
-                    extra[n] = Quantity(n, number(expr, self.point(at)), dim, "result")
-                scopes[f"stage {i}"] = Scope(scope.key, extra, {}, self.system, None, scope.exact, answers=False)
-        return scopes
+
+def _target(chain: Any, index: int) -> str | None:
+    """The unknown a ``solve`` stage finds: its ``for``, else the first one not found before."""
+    found: list[str] = []
+    unknowns = [g.name for g in chain.givens if g.unknown]
+    for i, raw in enumerate(chain.stages, 1):
+        if raw.get("type") != "solve":
+            continue
+        name = raw.get("for") or next((u for u in unknowns if u not in found), None)
+        if i == index:
+            return name
+        found.append(name)
+    return None
 
 
 def chain_facts(solution: Any) -> Facts:
-    """The facts of every stage of a solved chain."""
-    return _Chain(solution).run()
+    """The facts of every stage of a solved chain.
+
+    The chain is worked once for each set of unknowns the page has found so far:
+    a stage before a ``solve`` stage sees its unknown as a letter (a sample
+    value); the stages from there on, and the chain's answer, see its root.
+    """
+    chain = solution.problem
+    solved_at = {_target(chain, i): i for i, raw in enumerate(chain.stages, 1) if raw.get("type") == "solve"}
+    solved_at.pop(None, None)
+    roots = {getattr(s, "name", ""): v for s, v in solution.values.items()}
+    last = len(chain.stages)
+
+    def state(i: int) -> frozenset[str]:
+        return frozenset(n for n, at in solved_at.items() if at <= i and n in roots)
+
+    runs = {s: _Chain(solution, {n: roots[n] for n in s}).run() for s in {state(i) for i in range(last + 1)}}
+    full = runs[state(last)]
+    asked = frozenset(chain.find) or frozenset(solution.stages[-1].outputs)
+    scopes = {"chain": full.chain_scope("chain", last, asked=asked)}
+    solved: dict[str, Scope] = {}
+    for i in range(1, last + 1):
+        scopes.update(runs[state(i)].stage_scopes(i))
+        if state(i) != state(last):
+            solved.update(full.stage_scopes(i))
+    return Facts(scopes, chain.digits, True, tuple(full.notes), solved)

@@ -131,32 +131,37 @@ def exact_decimal(value: sympy.Expr | None) -> Decimal | None:
 
 @dataclass
 class Table:
-    """Names being collected as exact expressions (in sample symbols), before they become numbers."""
+    """Names collected at one sample point, each as a 45-digit number (a SymPy Float).
+
+    ``fixed`` gives letters their value at this point (a chain's unknown: its
+    root once the page has found it); any other letter kept symbolic gets its
+    :func:`sample`. Working with numbers from the start keeps the derived
+    quantities cheap: nothing is built as a long formula and evaluated late.
+    """
 
     exprs: dict[str, sympy.Expr] = field(default_factory=dict)
     dims: dict[str, units.Dim] = field(default_factory=dict)
     roles: dict[str, str] = field(default_factory=dict)
     vectors: dict[str, dict[str, sympy.Expr]] = field(default_factory=dict)
     exact: set[Decimal] = field(default_factory=set)
-    samples: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    fixed: dict[str, sympy.Expr] = field(default_factory=dict)
 
     def put(self, name: str, expr: sympy.Expr, dim: units.Dim, role: str = "result") -> None:
-        self.exprs[name] = sympy.sympify(expr)
+        self.exprs[name] = numeric(expr)
         self.dims[name] = dim
         self.roles[name] = role
 
-    def param(self, name: str, dim: units.Dim, role: str = "param") -> sympy.Symbol:
-        """A letter kept symbolic: a symbol with a sample value."""
-        sym = sympy.Symbol("param:" + name)
-        self.samples.setdefault(sym, sample(name, dim))
-        self.put(name, sym, dim, role)
-        return sym
+    def param(self, name: str, dim: units.Dim, role: str = "param") -> sympy.Expr:
+        """A letter kept symbolic on the page: its value at this point."""
+        value = self.fixed.get(name)
+        self.put(name, sample(name, dim) if value is None else self.resolve(value), dim, role)
+        return self.exprs[name]
 
     def resolve(self, expr: sympy.Expr) -> sympy.Expr:
-        """``expr`` (in derive's symbols) with each name replaced by what this table holds for it."""
+        """``expr`` (in derive's symbols) with each name replaced by its value here."""
         expr = sympy.sympify(expr)
         subs = {s: self.exprs[s.name] for s in expr.free_symbols if s.name in self.exprs}
-        return expr.xreplace(subs)
+        return numeric(expr.xreplace(subs))
 
     def note_exact(self, value: sympy.Expr | None, degrees: bool = False) -> None:
         d = exact_decimal(value * 180 / sympy.pi if degrees and value is not None else value)
@@ -164,12 +169,24 @@ class Table:
             self.exact.add(d)
             self.exact.add(-d)
 
-    def scope(self, key: str, subs: Mapping[sympy.Symbol, sympy.Expr] | None = None, **kw: object) -> Scope:
-        """The names as numbers at the sample point ``subs`` (default: this table's samples)."""
-        point = dict(self.samples if subs is None else subs)
+    def scope(self, key: str, names: list[str] | None = None, **kw: object) -> Scope:
+        """The names (all, or those listed) as a :class:`Scope`."""
+        keep = list(self.exprs) if names is None else names
         quantities = {
-            n: Quantity(n, number(e, point), self.dims.get(n, units.NONE), self.roles.get(n, "result"))
-            for n, e in self.exprs.items()
+            n: Quantity(n, number(self.exprs[n], {}), self.dims.get(n, units.NONE), self.roles.get(n, "result"))
+            for n in keep
         }
-        vectors = {n: {ax: number(e, point) for ax, e in comps.items()} for n, comps in self.vectors.items()}
+        vectors = {n: {ax: number(e, {}) for ax, e in comps.items()} for n, comps in self.vectors.items()}
         return Scope(key, quantities, vectors, exact=frozenset(self.exact), **kw)  # type: ignore[arg-type]
+
+
+def numeric(expr: object) -> sympy.Expr:
+    """A number as a 45-digit Float (an expression with letters is left as it is)."""
+    expr = sympy.sympify(expr)
+    if expr.free_symbols or isinstance(expr, sympy.Float):
+        return expr
+    try:
+        value = expr.evalf(45)
+    except (TypeError, ValueError, ZeroDivisionError):
+        return expr
+    return value if isinstance(value, sympy.Float) else expr

@@ -62,7 +62,9 @@ def residuals(d: Before, post: dict[str, sympy.Expr]) -> dict[int, sympy.Expr]:
 
 def derived(d: Before, post: dict[str, sympy.Expr], phi: sympy.Expr | None) -> dict[str, sympy.Expr]:
     """Speeds, directions (theta from +t toward +n, beta from +n toward +t), kinetic
-    energies, the impulse on B along +n, and x-y components when n is at ``phi`` from x."""
+    energies (the loss 1/2 mu (1 - e^2)(v_A1n - v_B1n)^2, mu = m_A m_B / (m_A + m_B), or
+    m_A against a fixed B), the impulse on B along +n, and x-y components when n is at
+    ``phi`` from x."""
     out: dict[str, sympy.Expr] = {}
     for body in "AB":
         if body == "B" and d.fixed:
@@ -75,7 +77,10 @@ def derived(d: Before, post: dict[str, sympy.Expr], phi: sympy.Expr | None) -> d
     mb = 0 if d.fixed else d.m_B
     t1 = HALF * d.m_A * (d.a_n**2 + d.a_t**2) + HALF * mb * (d.b_n**2 + d.b_t**2)
     t2 = HALF * d.m_A * (post["A2n"] ** 2 + post["A2t"] ** 2) + HALF * mb * (post["B2n"] ** 2 + post["B2t"] ** 2)
-    out.update(T_1=t1, T_2=t2, T_lost=t1 - t2, J_n=d.m_A * (d.a_n - post["A2n"]))
+    # T_1 - T_2 in closed form: exact zero for e = 1 however large the energies
+    reduced = d.m_A if d.fixed else d.m_A * d.m_B / (d.m_A + d.m_B)
+    lost = HALF * reduced * (1 - d.e**2) * (d.a_n - d.b_n) ** 2
+    out.update(T_1=t1, T_2=t2, T_lost=lost, J_n=d.m_A * (d.a_n - post["A2n"]))
     if phi is not None:
         c, s = sympy.cos(phi), sympy.sin(phi)
         comps = {"1": (d.a_n, d.a_t, d.b_n, d.b_t), "2": (post["A2n"], post["A2t"], post["B2n"], post["B2t"])}

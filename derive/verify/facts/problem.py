@@ -46,7 +46,7 @@ def givens(table: Table, problem: object, given_values: Mapping[str, sympy.Expr]
 
 
 def _from_results(table: Table, solution: object, name: str) -> sympy.Expr | None:
-    r = solution.results.get(name)
+    r = getattr(solution, "results", {}).get(name)
     if r is None:
         return None
     value = r.value if r.value is not None else r.partial
@@ -61,8 +61,12 @@ def impact(
     given_values: Mapping[str, sympy.Expr] | None = None,
     label: str = "",
 ) -> list[str]:
-    """Fill ``table`` with the impact's givens, components and results; return notes."""
-    problem = solution.problem
+    """Fill ``table`` with the impact's givens, components and results; return notes.
+
+    ``solution`` may be a bare Problem (a homework variant's): its results are then
+    worked out here only, and an inverse problem's unknowns are not known.
+    """
+    problem = getattr(solution, "problem", solution)
     givens(table, problem, given_values)
     oblique = problem.kind == "oblique"
     inverse = any(g.unknown for g in problem.givens) or any(n in table.exprs for n in POST[oblique])
@@ -124,8 +128,8 @@ def _inverse_post(table: Table, solution: object, data: Before, post: dict, obli
 def _check_residuals(table: Table, data: Before, post: dict, label: str) -> list[str]:
     notes = []
     for k, res in residuals(data, post).items():
-        x = number(res, table.samples)
-        if x is not None and abs(x) > TOLERANCE * max(1, float(abs(number(data.m_A, table.samples) or 1))):
+        x = number(res, {})
+        if x is not None and abs(x) > TOLERANCE * max(1, float(abs(number(data.m_A, {}) or 1))):
             notes.append(
                 f"{label}derive's solution does not satisfy equation ({k}) of the notes (residual {float(x):.3g})"
             )
@@ -152,12 +156,15 @@ def _put_components(table: Table, data: Before, post: dict, oblique: bool) -> No
 
 
 def _compare(table: Table, solution: object, label: str) -> list[str]:
-    """derive's results against the ones worked out here: a difference is a note."""
+    """derive's velocities after the impact and its unknowns against the ones worked out
+    here: a difference is a note (the rest derives from these on the page itself)."""
     notes = []
-    for name in solution.results:
+    problem = getattr(solution, "problem", solution)
+    core = (*POST[True], *POST[False], *(g.name for g in problem.givens if g.unknown))
+    for name in (n for n in getattr(solution, "results", {}) if n in core):
         mine = table.exprs.get(name)
         theirs = _from_results(table, solution, name)
-        a, b = number(mine, table.samples), number(theirs, table.samples)
+        a, b = number(mine, {}), number(theirs, {})
         if a is None or b is None:
             continue
         if abs(a - b) > 1e-12 * max(1, abs(a), abs(b)):

@@ -32,7 +32,9 @@ def _intermediates(judge: Judge, claim: Claim) -> Iterator[Num]:
             if is_result(claim, rel, i) or (last and value_form(side.expr) and _has_letter(side.expr)):
                 continue
             for node in walk(side.expr):
-                if isinstance(node, Num) and not node.integer and not judge.is_exact(node, scopes):
+                if not isinstance(node, Num) or node.integer or node.value == 0:  # 0.00 is rule zero's
+                    continue
+                if not judge.is_exact(node, scopes):
                     yield node
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
-from derive.verify.judge import TOLERANCE, Claim, Judge, Value, lone_number
+from derive.verify.judge import Claim, Judge, Value, lone_number, tolerance
 from derive.verify.report import Failure
 from derive.verify.tree import Relation
 
@@ -24,12 +24,8 @@ def show(x: object) -> str:
     return f"{float(x):.6g}"
 
 
-def _tol(*xs: object) -> object:
-    return TOLERANCE * max([1, *(abs(x) for x in xs)])
-
-
 def _agree(a: Value, b: Value) -> bool:
-    return abs(a.center - b.center) <= a.radius + b.radius + _tol(a.center, b.center)
+    return abs(a.center - b.center) <= a.radius + b.radius + tolerance(a, b)
 
 
 def _side_text(relation: Relation, i: int) -> str:

@@ -19,7 +19,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from derive.verify.evaluate import CTX, Undefined, Unresolved, substitute
-from derive.verify.judge import TOLERANCE, Claim, Judge, Value
+from derive.verify.judge import Claim, Judge, Value, tolerance
 from derive.verify.report import Failure
 from derive.verify.tree import Add, Side, Sym
 
@@ -148,7 +148,7 @@ class _Operation:
                 yield f"{name} is said to cancel but is still in the line"
                 continue
             moved = self.value(self.ref, {**p0, name: p0.get(name, 0) + max(CTX.mpf(1), abs(p0.get(name, 1)))})
-            if abs(moved.center - r0.center) > moved.radius + r0.radius + TOLERANCE * abs(r0.center):
+            if abs(moved.center - r0.center) > moved.radius + r0.radius + tolerance(moved, r0):
                 what = " + ".join(f"({t})" for t in self.step.tags)
                 if self.step.op == "subtract":
                     what = f"({self.step.tags[1]}) - ({self.step.tags[0]})"
@@ -158,14 +158,14 @@ class _Operation:
         k = max(range(len(ref)), key=lambda i: abs(ref[i].center))
         what = {"add": "the sum of", "subtract": "the difference of", "into": "substitution into"}.get(self.step.op, "")
         named = " and ".join(f"({t})" for t in self.step.tags)
-        if abs(ref[k].center) <= ref[k].radius + TOLERANCE:
-            if any(abs(s.center) > s.radius + TOLERANCE for s in shown):
+        if abs(ref[k].center) <= ref[k].radius + tolerance(ref[k]):
+            if any(abs(s.center) > s.radius + tolerance(s) for s in shown):
                 yield f"the line does not follow from {what} {named}".replace("  ", " ")
             return
         c = shown[k].center / ref[k].center
         dc = (shown[k].radius + abs(c) * ref[k].radius) / abs(ref[k].center)
         for s, r in zip(shown, ref, strict=True):
-            slack = s.radius + abs(c) * r.radius + abs(r.center) * dc + TOLERANCE * max(1, abs(s.center))
+            slack = s.radius + abs(c) * r.radius + abs(r.center) * dc + tolerance(s) + abs(c) * tolerance(r)
             if abs(s.center - c * r.center) > slack or not c:
                 yield f"the line is not {what} {named}".replace("  ", " ")
                 return
