@@ -56,3 +56,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
             parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
             scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
             terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
+        checked = getattr(module, "LINES_CHECKED", None)
+        if checked and str(getattr(module, "__file__", "")).endswith("test_every_line.py"):
+            parts = ", ".join(f"{k} {v}" for k, v in sorted(checked.items()))
+            terminalreporter.write_line(f"verify: {sum(checked.values())} lines checked ({parts})")

@@ -424,3 +424,51 @@ def cases(count: int, seed: int = SEED) -> Iterator[Case]:
     makers = [m for m, w in MIX for _ in range(w)]
     for i in range(count):
         yield rng.choice(makers)(draw, i)
+
+
+#: Problems with a [vary] table, for homework variants drawn 200 at a time: equal
+#: masses come up (m_A and m_B from the same range), e = 0 and e = 1, a wall, angles near 0° and 90°.
+VARY = (
+    Case(
+        "vary-direct",
+        "vary",
+        """title = "generated homework: two carts"
+kind = "direct"
+[given]
+m_A = "2 kg"
+m_B = "3 kg"
+e = 0.5
+v_A1 = "4 m/s"
+v_B1 = "-1 m/s"
+[vary]
+m_A = { min = "0.5 kg", max = "6 kg", step = "0.5 kg" }
+m_B = { min = "0.5 kg", max = "6 kg", step = "0.5 kg" }
+e = { choices = [0, 0.25, 0.5, 0.8, 1] }
+v_A1 = { min = "1 m/s", max = "9 m/s", step = "0.5 m/s" }
+""",
+    ),
+    Case(
+        "vary-wall",
+        "vary",
+        """title = "generated homework: a ball against a wall"
+kind = "oblique"
+[given]
+m_A = "0.2 kg"
+e = 0.7
+v_A1 = "10 m/s"
+theta = "30 deg"
+[vary]
+m_A = { min = "0.1 kg", max = "2 kg", step = "0.1 kg" }
+e = { choices = [0.3, 0.6, 0.9, 1] }
+theta = { choices = ["1 deg", "15 deg", "30 deg", "45 deg", "60 deg", "89 deg"] }
+v_A1 = { min = "2 m/s", max = "30 m/s", step = "2 m/s" }
+[A]
+angle = "theta"
+from = "+n"
+toward = "+t"
+[B]
+fixed = true
+name = "wall"
+""",
+    ),
+)

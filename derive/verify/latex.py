@@ -400,10 +400,8 @@ def parse_display(body: str) -> Display:
         tag, s = m.group(1).strip(), s[: m.start()].rstrip()
     marks = len(ANSWER_MARK.findall(s))
     s = ANSWER_MARK.sub("", s).strip()
-    implies = False
-    if s.startswith(r"\Rightarrow"):
-        implies = True
-        s = s[len(r"\Rightarrow") :].lstrip()
+    implies = s.startswith(r"\Rightarrow")
+    s = re.sub(r"^\\Rightarrow(?:\\quad|\\qquad|\\,|\s)*", "", s)
     s, boxed = strip_boxed(s)
     if re.fullmatch(r"\\text\{[^{}]*\}", s):
         return Display(implies, boxed, marks, tag, (), True, body)

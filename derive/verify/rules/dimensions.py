@@ -109,8 +109,11 @@ def _unit_reasons(judge: Judge, claim: Claim, relation: Relation) -> Iterator[st
     if head is None:
         return
     label = relation.sides[0].source
-    for side in relation.sides[1:]:
+    for k, side in enumerate(relation.sides[1:], 1):
         shown = _unit_dim(side, scopes[0].system)
+        if shown is not None and side.unit is not None:  # 22.0 m J/kg is an energy when m is a mass
+            own = dimension(side.expr, _dims(judge, claim, k)[0])
+            shown = _plus(shown, own) if own is not None else shown
         if shown is not None and shown != head and not (head == NONE and side.unit == "%"):
             unit = side.unit or "°"
             yield f"{label} is {_name(head)}, but {unit} is {_name(shown)}"

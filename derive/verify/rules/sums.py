@@ -71,8 +71,11 @@ def _shown_values(judge: Judge) -> dict[int, dict[str, Decimal]]:
 
 
 def _same_line(judge: Judge, claim: Claim, rel: Relation, shown: dict[str, Decimal]) -> Iterator[str]:
+    """A sum and a total on one line. Names stand for the values shown for them above,
+    unless the line writes their numbers out itself (T_1 - T_2 = 812.5 - 491.1 = 321)."""
+    written = any(numeric_sum(side, {}) is not None for side in rel.sides)
     for i, side in enumerate(rel.sides):
-        found = numeric_sum(side, shown)
+        found = numeric_sum(side, {} if written else shown)
         if found is None:
             continue
         for j, other in enumerate(rel.sides):

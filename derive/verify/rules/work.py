@@ -28,7 +28,7 @@ def _derived(judge: Judge, claim: Claim, before: list[Claim]) -> str | None:
     if q is None or q.role != "unknown":
         return None
     seen = {n for c in before for rel in c.relations for s in rel.sides for n in judge.names(s.expr)}
-    if first.name in seen or first.name in claim.line.sentence.replace("{", "").replace("}", ""):
+    if first.name in seen:
         return None
     return f"{first.name} is stated, not worked out: no line above it in this step contains {first.name}"
 
