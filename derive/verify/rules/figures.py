@@ -35,7 +35,9 @@ def _figures(judge: Judge, claim: Claim, num: Num, result: bool) -> str | None:
     scopes = judge.chain_of(claim.line.scope)
     if num.value == 0 or (not result and judge.is_exact(num, scopes)):
         return None
-    rule = judge.rule_figures(num.value)
+    # a number just above a power of ten may be the rounding of one just below it, whose
+    # leading digit is 1 (2.000 for 1.99992 shows 4 figures by the rule)
+    rule = max(judge.rule_figures(num.value), judge.rule_figures(abs(num.value) - num.ulp / 2))
     allowed = rule if result else rule + 1
     if num.figures <= allowed:
         return None

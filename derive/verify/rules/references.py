@@ -159,7 +159,9 @@ class _Operation:
         what = {"add": "the sum of", "subtract": "the difference of", "into": "substitution into"}.get(self.step.op, "")
         named = " and ".join(f"({t})" for t in self.step.tags)
         if abs(ref[k].center) <= ref[k].radius + tolerance(ref[k]):
-            if any(abs(s.center) > s.radius + tolerance(s) for s in shown):
+            # the equation named is nothing in these unknowns; say so only when that is exact
+            # (not when its rounded numbers leave it undecided)
+            if not ref[k].radius and any(abs(s.center) > s.radius + tolerance(s) for s in shown):
                 yield f"the line does not follow from {what} {named}".replace("  ", " ")
             return
         c = shown[k].center / ref[k].center

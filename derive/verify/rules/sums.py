@@ -52,7 +52,8 @@ def _mismatch(judge: Judge, claim: Claim, total: Decimal, side: Side, result: bo
     h = judge.halfwidth(num, judge.chain_of(claim.line.scope), result)
     if abs(total - value) <= Decimal(str(h)) * Decimal("1.000001"):
         return None
-    return f"the terms add up to {total.normalize():f}, not {num.text}"
+    shown = f"{total.normalize():f}" if total == 0 or Decimal("1e-4") <= abs(total) < Decimal("1e6") else f"{total:.4g}"
+    return f"the terms add up to {shown}, not {num.text}"
 
 
 def _shown_values(judge: Judge) -> dict[int, dict[str, Decimal]]:
