@@ -166,6 +166,15 @@ BUGS = [
         r"\beta = -th",
         {"angle"},
     ),
+    # Homework variants of a varied angle: "10 · cos {30}", an angle in degrees without its sign.
+    (
+        "degrees-without-a-degree-sign",
+        "notes-4c11",
+        r"= 5 \cos {37.6^\circ} = 3.96",
+        r"= 5 \cos {37.6} = 3.96",
+        r"5 \cos {37.6} = 3.96",
+        {"angle"},
+    ),
     # Digits: 149.3466 - 22.1841 in a 3-figure solution; (3) shown one way and substituted another.
     (
         "too-many-figures",

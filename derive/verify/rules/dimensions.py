@@ -5,7 +5,8 @@
   symbolic) carries a unit unless the letters already give its dimension
   (``v_A2 = 0.889 u`` needs none, ``T_1 = 22.0 m`` with m a mass does).
 - ``angle``: an angle with a degree sign is in degrees (no radian value with a
-  degree sign: ``beta = 14.036° = 0.245°``).
+  degree sign: ``beta = 14.036° = 0.245°``), and an angle in degrees has its sign
+  (no ``cos {30}`` for cos 30°).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from collections.abc import Iterator
 from fractions import Fraction
 
 from derive.verify import units
-from derive.verify.evaluate import DEGREE, mpf
+from derive.verify.evaluate import DEGREE, mpf, walk
 from derive.verify.judge import Claim, Judge, lone_number
 from derive.verify.report import Failure
 from derive.verify.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Vec
@@ -145,7 +146,30 @@ def value_form(node: object) -> bool:
     return isinstance(node, Sym)
 
 
+def _bare_degrees(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+    """An angle in degrees put into sin, cos or tan without its degree sign (cos {30})."""
+    angles = [q.value / DEGREE for q in _angles(judge, claim)]
+    for side in relation.sides:
+        for node in walk(side.expr):
+            if not (isinstance(node, Func) and node.name in ("sin", "cos", "tan") and isinstance(node.args[0], Num)):
+                continue
+            num = node.args[0]
+            if not num.degrees and any(abs(mpf(num.value) - a) <= mpf("1e-9") * max(1, abs(a)) for a in angles):
+                yield f"{node.name} {{{num.text}}} takes an angle in degrees without its degree sign"
+                return
+
+
+def _angles(judge: Judge, claim: Claim) -> list:
+    return [
+        q
+        for s in judge.chain_of(claim.line.scope)
+        for q in s.quantities.values()
+        if q.dim == units.ANGLE and q.value is not None and q.value
+    ]
+
+
 def _angle_reasons(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+    yield from _bare_degrees(judge, claim, relation)
     first = relation.sides[0].expr
     if not isinstance(first, Sym):
         return

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from derive.verify.evaluate import mpf
+from derive.verify.evaluate import DEGREE, mpf
 from derive.verify.judge import Claim, Judge, lone_number, signed_value
 from derive.verify.report import Failure
 from derive.verify.tree import Add, Frac, Func, Mul, Num, Pow, Sym
@@ -96,8 +96,8 @@ def _compare(judge: Judge, scopes: list, sym: object, num: object) -> Iterator[s
                 want.append((mpf(x.value), px, x.text))
             elif q is not None and q.role == "given" and q.value is not None:
                 want.append((q.value, px, x.name))
-            if isinstance(y, Num) and not y.degrees:
-                have.append((mpf(y.value), py, y))
+            if isinstance(y, Num):
+                have.append((mpf(y.value) * (DEGREE if y.degrees else 1), py, y))
         yield from _match(judge, scopes, want, have)
 
 
@@ -115,6 +115,10 @@ def _match(judge: Judge, scopes: list, want: list, have: list) -> Iterator[str]:
             None,
         )
         if hit is None:
+            bare = [h for h in left if not h[2].degrees and abs(h[0] * DEGREE - abs(value)) <= mpf("1e-12")]
+            if bare and label not in ("",) and not label[0].isdigit():
+                yield f"{label} is {bare[0][2].text}° here: the line shows {bare[0][2].text} without its degree sign"
+                return
             shown = ", ".join(h[2].text for h in left) or "nothing"
             yield f"{label} is {float(value):.6g} here, but the line shows {shown}"
             return
