@@ -9,7 +9,7 @@ numbers are data (exact), what is the figures rule.
 from __future__ import annotations
 
 import copy
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
@@ -272,6 +272,3 @@ def is_result(claim: Claim, relation: Relation, index: int) -> bool:
     boxed = claim.display is not None and claim.display.boxed
     num = lone_number(side)
     return side.unit is not None or boxed or claim.line.kind == "carried" or bool(num and num.degrees)
-
-
-Check = Callable[[Judge], Iterator["object"]]

@@ -11,7 +11,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from fractions import Fraction
 
 from derive.verify import units
@@ -44,7 +44,7 @@ def _exponent(node: object) -> Fraction | None:
     return None
 
 
-def dimension(node: object, dim_of: callable) -> FDim | None:
+def dimension(node: object, dim_of: Callable[[str], units.Dim | None]) -> FDim | None:
     """The dimension of a tree (None when a name is unknown or the terms disagree)."""
     if isinstance(node, Num):
         return ANGLE if node.degrees else NONE
