@@ -23,11 +23,11 @@ import sympy
 import verify_corpus
 
 import derive
-from derive import variants
+from derive.homework import variants
 from derive.problem import loads
 from derive.resources import bundled
-from derive.verify import Report, verify, verify_text
-from derive.verify.facts import facts_of
+from derive.verifier import Report, verify, verify_text
+from derive.verifier.facts import facts_of
 
 #: Lines and relations checked, by test, for the summary line (conftest.py).
 LINES_CHECKED: Counter[str] = Counter()

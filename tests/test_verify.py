@@ -1,4 +1,4 @@
-"""The verifier (derive.verify): it reads a page back and catches each known class of wrong line.
+"""The verifier (derive.verifier): it reads a page back and catches each known class of wrong line.
 
 The pages in tests/data/verify/pages were written by hand in derive's layout,
 with numbers from the notes or worked out with a calculator (each page says
@@ -18,11 +18,11 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive.verify import Report, verify_text
-from derive.verify.facts import Facts, facts_of
-from derive.verify.latex import parse_display
-from derive.verify.reader import read_latex, read_markdown
-from derive.verify.tree import Add, Hat, Num, Sym, Vec
+from derive.verifier import Report, verify_text
+from derive.verifier.facts import Facts, facts_of
+from derive.verifier.latex import parse_display
+from derive.verifier.reader import read_latex, read_markdown
+from derive.verifier.tree import Add, Hat, Num, Sym, Vec
 
 DATA = Path(__file__).parent / "data" / "verify"
 PAGES = DATA / "pages"
@@ -377,7 +377,7 @@ def test_inverse_functions_and_roots() -> None:
 def test_only_the_facts_touch_derive() -> None:
     """The checking logic imports nothing of derive but the verifier itself (the facts may
     read derive's objects and its expression parser; no module prints or solves)."""
-    root = Path(derive.__file__).parent / "verify"
+    root = Path(derive.__file__).parent / "verifier"
     for path in root.rglob("*.py"):
         tree = ast.parse(path.read_text())
         for node in ast.walk(tree):
@@ -387,13 +387,13 @@ def test_only_the_facts_touch_derive() -> None:
             elif isinstance(node, ast.Import):
                 names = [a.name for a in node.names]
             for name in names:
-                if not name.startswith("derive") or name.startswith("derive.verify"):
+                if not name.startswith("derive") or name.startswith("derive.verifier"):
                     continue
                 where = path.relative_to(root).as_posix()
                 if where.startswith("facts/"):
-                    assert name in ("derive.expr",), f"{where} imports {name}"
+                    assert name in ("derive.problem.expr",), f"{where} imports {name}"
                 else:
-                    assert where == "__init__.py" and name == "derive.render", f"{where} imports {name}"
+                    assert where == "__init__.py" and name == "derive.writers.view", f"{where} imports {name}"
 
 
 def test_derive_verify_from_python() -> None:

@@ -1,0 +1,176 @@
+"""Handouts: several problems gathered into one document.
+
+A handout has a title, an optional theory page in the notes' layout (the three
+systems and equations (1)-(4), from :mod:`derive.theory`), then each problem as
+a section, in one of three modes:
+
+- ``problems``: the heading, Given and Find only (a problem sheet);
+- ``answers``: the same, followed by the boxed answer lines of stage 4;
+- ``solutions``: the full worked solution, stages 1-4 with their figures.
+
+Every problem is printed by :func:`derive.writers.view`, as a single solution
+is. A problem that fails to load or solve is left out and reported; the others
+are still included.
+
+>>> doc, failures = build_handout(["notes-4c11-two-spheres"], title="Impact", theory=False,
+...                               mode="answers", fmt="md")  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Literal, NamedTuple
+
+from derive.errors import DeriveError, InputError
+from derive.homework import theory as theory_page
+from derive.problem import load
+from derive.steps import solve
+from derive.writers.pdf import build_pdf
+from derive.writers.view import environment, view
+
+Mode = Literal["problems", "answers", "solutions"]
+Format = Literal["md", "tex", "pdf"]
+MODES: tuple[str, ...] = ("problems", "answers", "solutions")
+FORMATS: tuple[str, ...] = ("md", "tex", "pdf")
+
+#: The title of a handout when none is given, by mode.
+DEFAULT_TITLES = {
+    "problems": "Central impact: problems",
+    "answers": "Central impact: problems and answers",
+    "solutions": "Central impact: worked solutions",
+}
+
+
+class Failure(NamedTuple):
+    """A problem left out of a handout: as it was named, and why (one line)."""
+
+    problem: str
+    error: str
+
+    def line(self) -> str:
+        """The error, naming the problem unless the message already does."""
+        return self.error if self.problem in self.error else f"{self.problem}: {self.error}"
+
+
+class NoProblemsError(InputError):
+    """Not one problem of a handout could be included; ``failures`` says why for each."""
+
+    def __init__(self, failures: list[Failure]) -> None:
+        super().__init__(f"none of the {len(failures)} problems could be included; the handout was not written")
+        self.failures = failures
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())
+
+
+def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
+    """One problem as the handout templates need it: :func:`view` plus its answer lines."""
+    solution = solve(load(name))
+    if solution.is_chain:
+        return _chain_view(solution, mode, digits)
+    data = view(solution, digits, figures=mode == "solutions")
+    data["answers"] = [
+        line
+        for stage in data["stages"]
+        if stage["number"] == 4
+        for block in stage["blocks"]
+        for line in block["lines"]
+        if line["boxed"]
+    ]
+    return data
+
+
+def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
+    """A chain in the shape of one problem: its stages in order (an impact's own
+    stages numbered k.1, k.2, ...), its boxed answers."""
+    from derive.writers.view import chain_view
+
+    data = chain_view(solution, digits, figures=mode == "solutions")
+    stages = []
+    for st in data["stages"]:
+        if st["impact"]:
+            for sub in st["stages"]:
+                stages.append(
+                    {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
+                )
+        else:
+            stages.append(
+                {
+                    "number": st["number"],
+                    "title": st["title"],
+                    "blocks": st["blocks"],
+                    "figure_svg": "",
+                    "figure_tikz": "",
+                }
+            )
+    return {
+        **data,
+        "find": [("text", data["find"])],
+        "stages": stages,
+        "kind": "chain",
+        "system": solution.problem.system,
+    }
+
+
+def build_handout(
+    problems: list[str | Path],
+    *,
+    title: str,
+    theory: bool = True,
+    mode: Mode = "solutions",
+    fmt: Format = "md",
+    digits: int | None = None,
+) -> tuple[str | bytes, list[Failure]]:
+    """Gather ``problems`` (paths or bundled names) into one document.
+
+    Parameters
+    ----------
+    problems
+        Problem files, or names of bundled problems, in the order they appear.
+    title
+        The handout's title.
+    theory
+        Whether a theory page (the three systems, equations (1)-(4)) comes first.
+    mode
+        ``"problems"``, ``"answers"`` or ``"solutions"`` (see the module docstring).
+    fmt
+        ``"md"`` or ``"tex"`` (text), or ``"pdf"`` (bytes, compiled by LaTeX).
+    digits
+        Significant figures (default: each problem's own, else the textbook rule).
+
+    Returns
+    -------
+    The document, and the problems left out with a one-line reason each.
+
+    Raises
+    ------
+    InputError
+        A bad mode, format or ``digits``; :class:`NoProblemsError` when no problem
+        could be included.
+    """
+    if mode not in MODES:
+        raise InputError(f"unknown mode {mode!r} (expected one of: {', '.join(MODES)})", field="--mode")
+    if fmt not in FORMATS:
+        raise InputError(f"unknown handout format {fmt!r} (expected one of: {', '.join(FORMATS)})", field="format")
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    if not problems:
+        raise InputError("a handout needs at least one problem")
+    views, failures = [], []
+    for name in problems:
+        try:
+            views.append(_problem_view(name, mode, digits))
+        except DeriveError as exc:
+            failures.append(Failure(str(name), _one_line(str(exc))))
+        except Exception as exc:  # a bug with one problem must not lose the others
+            failures.append(Failure(str(name), _one_line(f"internal error ({type(exc).__name__}: {exc})")))
+    if not views:
+        raise NoProblemsError(failures)
+    data = {"title": title, "mode": mode, "problems": views, "theory": theory_page.view() if theory else None}
+    if fmt == "md":
+        return environment("md").get_template("handout.md.j2").render(**data), failures
+    tex = environment("tex").get_template("handout.tex.j2").render(**data)
+    if fmt == "tex":
+        return tex, failures
+    return build_pdf(tex), failures

@@ -1,0 +1,420 @@
+"""Homework variants: derive a problem once, then evaluate and print it many times.
+
+A problem with a ``[vary]`` table is solved once with the varied givens kept as
+symbols. Its worked solution is printed once, every number that depends on them
+left open (a slot); each slot and each result is compiled to a plain Python
+function. A variant is then a few float evaluations and string joins: no SymPy
+solving, no SymPy printing.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, replace
+from decimal import Decimal
+
+import sympy
+
+from derive.errors import InputError
+from derive.numbers import format_fixed, format_number, places_that_add_up
+from derive.physics.impact import independent_map
+from derive.problem import Given, Problem
+from derive.problem.units import plain_unit
+from derive.steps.model import Solution
+from derive.writers.printing import SlotBook, exact_latex
+
+_TOKEN = re.compile(r"DRVSLOT(\d+)X")
+MAX_ATTEMPTS_PER_VARIANT = 200
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One drawn variant: its number (1, 2, ...) and the varied givens' exact values."""
+
+    number: int
+    values: dict[str, sympy.Expr]
+
+
+@dataclass
+class Compiled:
+    """A problem derived once, ready to print any variant."""
+
+    problem: Problem
+    solution: Solution
+    names: tuple[str, ...]
+    givens: dict[str, Given]
+    templates: dict[str, list[str | int]]
+    book: SlotBook
+    slot_fn: object
+    claim_fns: dict[int, list[tuple[list[object], object]]]
+    result_fns: dict[str, object]
+    check_fn: object
+
+
+def _symbolic(problem: Problem) -> Problem:
+    """The problem with its varied givens (and givens defined from them) made symbolic."""
+    varied = set(problem.vary)
+    givens = []
+    changed: set[sympy.Symbol] = set()
+    for g in problem.givens:
+        if g.name in varied or (g.definition is not None and g.definition.free_symbols & changed):
+            g = replace(g, value=None)
+            changed.add(g.symbol)
+        givens.append(g)
+    return replace(problem, givens=tuple(givens))
+
+
+def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> object:
+    return sympy.lambdify(symbols, exprs, modules=["math"], cse=True)
+
+
+def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
+    """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
+    from derive.steps import solve
+    from derive.writers.view import environment, view
+
+    if not problem.vary:
+        raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
+    names = tuple(sorted(problem.vary))
+    symbolic = _symbolic(problem)
+    solution = solve(symbolic)
+    givens = {g.name: g for g in problem.givens}
+    symbols = tuple(givens[n].symbol for n in names)
+    book = SlotBook()
+    data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols))
+    templates = {}
+    if fmt in ("md", "json"):
+        page = environment("md").get_template("solution.md.j2").render(**data)
+        templates["md"] = _split(page)
+    if fmt in ("tex", "pdf"):
+        page = environment("tex").get_template("solution.tex.j2").render(**data)
+        templates["tex"] = _split(page)
+    fixed = {k: v for k, v in symbolic.numeric().items()}
+    ind = independent_map(symbolic)
+
+    def prep(expr: sympy.Expr) -> sympy.Expr:
+        return sympy.sympify(expr).xreplace(ind).xreplace(fixed)
+
+    slot_fn = _lambdify(symbols, [prep(s.expr) for s in book.slots]) if book.slots else None
+    claim_fns = {
+        block: [
+            (_lambdify(symbols, [prep(t) for t in terms]), _lambdify(symbols, prep(total))) for terms, total in claims
+        ]
+        for block, claims in book.claims.items()
+    }
+    results = {name: r.partial for name, r in solution.results.items()}
+    result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
+    check_fn = _checks(symbolic, symbols, results, prep)
+    return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn)
+
+
+def _split(page: str) -> list[str | int]:
+    parts: list[str | int] = []
+    pos = 0
+    for m in _TOKEN.finditer(page):
+        parts.append(page[pos : m.start()])
+        parts.append(int(m.group(1)))
+        pos = m.end()
+    parts.append(page[pos:])
+    return parts
+
+
+def _checks(problem: Problem, symbols: tuple[sympy.Symbol, ...], results: dict[str, sympy.Expr], prep) -> object:
+    """One function of the varied values that is True for a physical variant: the
+    bodies approach, e in [0, 1], masses positive, and the file's conditions hold."""
+    exprs = [prep(problem.motion_A.n - problem.motion_B.n)]
+    sym = problem.symbols()
+    lower = [(exprs[0], ">")]
+    for name in ("m_A", "m_B"):
+        if name in sym:
+            lower.append((prep(sym[name]), ">"))
+    e = prep(sym["e"])
+    lower += [(e, ">="), (1 - e, ">=")]
+    from derive.symbols import symbol
+
+    to_results = {symbol(n): prep(expr) for n, expr in results.items()}
+    for c in problem.conditions:
+        diff = prep(c.lhs.xreplace(to_results) - c.rhs.xreplace(to_results))
+        lower.append((diff if c.op in (">", ">=") else -diff, ">" if c.op in ("<", ">") else ">="))
+    fn = _lambdify(symbols, [x for x, _ in lower])
+    ops = [op for _, op in lower]
+
+    def ok(*args: float) -> bool:
+        try:
+            vals = fn(*args)
+        except (ZeroDivisionError, ValueError, OverflowError):
+            return False
+        for v, op in zip(vals, ops, strict=True):
+            v = complex(v)
+            if abs(v.imag) > 1e-12 or not math.isfinite(v.real):
+                return False
+            if (op == ">" and not v.real > 1e-12) or (op == ">=" and not v.real >= -1e-12):
+                return False
+        return True
+
+    return ok
+
+
+def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
+    """``count`` distinct physical variants, the same for the same seed and file anywhere."""
+    p = compiled.problem
+    rng = random.Random(seed)
+    pools = [p.vary[n] for n in compiled.names]
+    seen: set[tuple[int, ...]] = set()
+    out: list[Variant] = []
+    attempts = 0
+    total = math.prod(len(x) for x in pools)
+    while len(out) < count and attempts < MAX_ATTEMPTS_PER_VARIANT * count and len(seen) < total:
+        attempts += 1
+        key = tuple(rng.randrange(len(pool)) for pool in pools)
+        if key in seen:
+            continue
+        seen.add(key)
+        values = {n: pool[i] for n, pool, i in zip(compiled.names, pools, key, strict=True)}
+        if compiled.check_fn(*(float(v) for v in values.values())):
+            out.append(Variant(len(out) + 1, values))
+    if len(out) < count:
+        raise InputError(
+            f"only {len(out)} distinct physical variants found for {count} asked "
+            "(widen the [vary] ranges or relax the conditions)",
+            where=p.path,
+            field="--count",
+        )
+    return out
+
+
+def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
+    if g.unit == "deg":
+        return exact_latex(value * 180 / sympy.pi, digits, 1)
+    return exact_latex(value, digits, 1)
+
+
+def _places(claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int) -> int:
+    """Places after the point for a block, so that its sums add up (as printing does)."""
+    sums = []
+    for terms_fn, total_fn in claims:
+        terms = [Decimal(repr(float(t))) for t in terms_fn(*args)]
+        sums.append((terms, Decimal(repr(float(total_fn(*args))))))
+    # a compiled page shows every line, so a variant may carry up to three more places
+    return places_that_add_up(sums, digits, extra, more=3)
+
+
+def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
+    if integers and abs(x) < 1e9:
+        for k in range(3):  # an exact short number (20, 7.5, 0.25), as a given is printed
+            scaled = x * 10**k
+            if abs(scaled - round(scaled)) < 1e-9 * max(1.0, abs(scaled)):
+                return str(Decimal(round(scaled)).scaleb(-k)) if k else str(round(x))
+    d = Decimal(repr(float(x)))
+    if places is not None:
+        return format_fixed(d, places)
+    text = format_number(d, digits, extra=extra)
+    if "e" in text:
+        mant, exp = text.split("e")
+        return rf"{mant} \times 10^{{{int(exp)}}}"
+    return text
+
+
+def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
+    """The worked solution of one variant, from the compiled page."""
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    args = [float(variant.values[n]) for n in compiled.names]
+    numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
+    places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
+    texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    out = []
+    for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
+        if isinstance(part, str):
+            out.append(part)
+            continue
+        slot = compiled.book.slots[part]
+        kind = slot.kind
+        if kind in ("given", "text"):
+            text = texts[slot.expr]
+            out.append(rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text)
+            continue
+        if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
+            text = texts[slot.expr]  # a given's own number, as written
+            neg = text.startswith("-")
+            role = kind.partition(":")[0] if ":" in kind else ""
+            if role.startswith("signed"):
+                out.append((" - " if neg else " + ") + text.lstrip("-"))
+            elif role.startswith("lead") or not neg:
+                out.append(text)
+            else:
+                out.append(rf"\left({text}\right)")
+            continue
+        x = complex(numbers[part]).real
+        role, _, what = kind.partition(":") if ":" in kind else ("", "", kind)
+        result = what == "result"
+        text = _number(abs(x) if role else x, d, slot.extra, not result, None if result else places.get(slot.block))
+        if role.endswith("coef") and text == "1":
+            text = ""
+        if role.startswith("signed"):
+            out.append((" - " if x < 0 else " + ") + text)
+        elif role.startswith("lead"):
+            out.append(("-" if x < 0 else "") + text)
+        else:
+            out.append(text)
+    return "".join(out)
+
+
+def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:
+    """The answer key of one variant: each result's value, unit and shown text."""
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    args = [float(variant.values[n]) for n in compiled.names]
+    out = {}
+    for name, fn in compiled.result_fns.items():
+        r = compiled.solution.results[name]
+        try:
+            value = complex(fn(*args))
+        except (ZeroDivisionError, ValueError, TypeError):
+            continue
+        if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)):
+            continue
+        x = value.real
+        out[name] = {
+            "value": x,
+            "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
+            "shown": format_number(Decimal(repr(x)), d),
+        }
+    return out
+
+
+def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
+    """The varied givens of a variant, in the problem's units (angles in degrees)."""
+    out = {}
+    for n in compiled.names:
+        g = compiled.givens[n]
+        v = variant.values[n]
+        value = float(v * 180 / sympy.pi) if g.unit == "deg" else float(v)
+        out[n] = {"value": value, "unit": "deg" if g.unit == "deg" else plain_unit(g.unit)}
+    return out
+
+
+def statement_only(page: str) -> str:
+    """The part of a worked page a student gets: up to the solution."""
+    cut = page.find("**Solution.**")
+    return page if cut < 0 else page[:cut].rstrip() + "\n"
+
+
+def iterate(
+    compiled: Compiled, variants: list[Variant], fmt: str = "md", digits: int | None = None
+) -> Iterator[tuple[Variant, str]]:
+    """Each variant with its page, one at a time (nothing kept in memory)."""
+    for v in variants:
+        yield v, fill(compiled, v, fmt, digits)
+
+
+# ------------------------------------------------------------------ writing
+
+
+def _progress(done: int, total: int) -> None:
+    """A progress bar on stderr, only on a terminal."""
+    import sys
+
+    if not sys.stderr.isatty():
+        return
+    width = 30
+    filled = int(width * done / total)
+    sys.stderr.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total}")
+    if done == total:
+        sys.stderr.write("\n")
+    sys.stderr.flush()
+
+
+def write_variants(
+    problem: Problem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
+) -> list[str]:
+    """Draw ``count`` variants and write each (statement and worked solution) and the
+    answer key (key.csv, key.json) into ``out_dir``, one file at a time.
+
+    Returns the one-line errors of the variants that could not be written (a PDF
+    that did not compile); the others are written all the same.
+    """
+    import csv
+    import json
+    import os
+    import tempfile
+    import textwrap
+    from pathlib import Path
+
+    from derive.errors import DeriveError
+
+    folder = Path(out_dir)
+    if folder.exists() and not folder.is_dir():
+        raise InputError("exists and is not a folder", where=str(folder), field="-o")
+    folder.mkdir(parents=True, exist_ok=True)
+    compiled = compile_problem(problem, digits, fmt)
+    chosen = draw(compiled, count, seed)
+    width = max(2, len(str(count)))
+    failures: list[str] = []
+    names = list(compiled.names)
+    result_names: list[str] = []
+    # The answer key is streamed to temporary files and renamed at the end, so
+    # memory stays flat however many variants are drawn, and no key is half-written.
+    csv_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.csv.", suffix=".tmp", delete=False, newline="")  # noqa: SIM115
+    json_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.json.", suffix=".tmp", delete=False)  # noqa: SIM115
+    try:
+        with csv_tmp, json_tmp:
+            writer = csv.writer(csv_tmp, lineterminator="\n")
+            head = {"title": problem.title, "source": problem.source, "seed": seed, "count": count}
+            json_tmp.write(json.dumps(head, indent=2, ensure_ascii=False)[:-2] + ',\n  "variants": [\n')
+            for v in chosen:
+                stem = f"variant-{v.number:0{width}d}"
+                row = {
+                    "variant": v.number,
+                    "givens": given_values(compiled, v),
+                    "results": answers(compiled, v, digits),
+                }
+                if not result_names:
+                    result_names = list(row["results"])
+                    header = ["variant"]
+                    header += [f"{n} [{row['givens'][n]['unit']}]" for n in names]
+                    header += [f"{n} [{row['results'][n]['unit']}]" for n in result_names]
+                    writer.writerow(header)
+                cells = [v.number, *(repr(row["givens"][n]["value"]) for n in names)]
+                cells += [row["results"][n]["shown"] if n in row["results"] else "" for n in result_names]
+                writer.writerow(cells)
+                sep = ",\n" if v.number > 1 else ""
+                json_tmp.write(sep + textwrap.indent(json.dumps(row, indent=2, ensure_ascii=False), "    "))
+                try:
+                    _write_one(compiled, v, folder, stem, fmt, digits, row)
+                except DeriveError as exc:
+                    failures.append(f"{stem}: {exc}")
+                _progress(v.number, len(chosen))
+            json_tmp.write("\n  ]\n}\n")
+        os.replace(csv_tmp.name, folder / "key.csv")
+        os.replace(json_tmp.name, folder / "key.json")
+    finally:
+        for tmp in (csv_tmp.name, json_tmp.name):
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+    return failures
+
+
+def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
+    """One variant's files: statement and worked solution (md), LaTeX, PDF or JSON."""
+    import json
+
+    from derive.fileio import write_atomic
+
+    if fmt == "json":
+        write_atomic(folder / f"{stem}.json", json.dumps(row, indent=2) + "\n")
+    elif fmt == "md":
+        page = fill(compiled, v, "md", digits)
+        write_atomic(folder / f"{stem}-problem.md", statement_only(page))
+        write_atomic(folder / f"{stem}.md", page)
+    else:
+        tex = fill(compiled, v, "tex", digits)
+        if fmt == "tex":
+            write_atomic(folder / f"{stem}.tex", tex)
+        else:
+            from derive.writers.pdf import build_pdf
+
+            write_atomic(folder / f"{stem}.pdf", build_pdf(tex))

@@ -1,0 +1,598 @@
+"""LaTeX for the mathematics of a solution: SymPy's printer, set up for the notes.
+
+A :class:`StepPrinter` prints symbols with the notes' names, numbers at the
+problem's significant figures, a given's number in place of its symbol on a
+substitution line, struck-out (cancelled) masses, and sums in the order the
+equations were written. Renderers call :func:`latex_eqn` and
+:func:`latex_inline`; no LaTeX string is patched afterwards.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from decimal import Decimal
+
+import sympy
+from sympy.printing.latex import LatexPrinter
+
+from derive.numbers import (
+    PRECISION,
+    as_written,
+    exactify,
+    floatify,
+    format_fixed,
+    format_number,
+    places_that_add_up,
+    short_decimal,
+    structural,
+    to_decimal,
+)
+from derive.problem.units import latex_unit
+from derive.steps.model import Block, Eqn, Side
+from derive.symbols import latex_name, vector_latex
+
+
+@dataclass(frozen=True)
+class Slot:
+    """A number left open when a solution is compiled for many variants: ``expr`` in
+    the varied givens, printed as ``kind`` says at ``digits``(+``extra``) figures or
+    with its block's places after the point."""
+
+    expr: sympy.Expr
+    kind: str  # given | number | result | lead | signed | leadcoef | signedcoef
+    digits: int | None
+    extra: int
+    block: int | None
+
+
+class SlotBook:
+    """Collects the open numbers of a compiled solution; each prints as a token."""
+
+    def __init__(self) -> None:
+        self.slots: list[Slot] = []
+        self.claims: dict[int, list[tuple[tuple[sympy.Expr, ...], sympy.Expr]]] = {}
+
+    def token(self, expr: sympy.Expr, kind: str, digits: int | None, extra: int, block: int | None) -> str:
+        self.slots.append(Slot(expr, kind, digits, extra, block))
+        return f"DRVSLOT{len(self.slots) - 1}X"
+
+
+@dataclass(frozen=True)
+class Style:
+    """How numbers print: the answer's figures (None: textbook rule) and the extra
+    figures intermediates carry; ``values`` and ``angles`` feed substitution lines."""
+
+    digits: int | None
+    extra: int = 1
+    values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
+    angles: frozenset[sympy.Symbol] = frozenset()
+    decimals: int | None = None
+    varied: frozenset[sympy.Symbol] = frozenset()
+    slots: SlotBook | None = field(default=None, compare=False)
+    block: int | None = None
+    hide_optional: bool = False
+    decimal: frozenset[sympy.Symbol] = frozenset()
+    letters: frozenset[sympy.Symbol] = frozenset()
+
+
+def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
+    """A number at ``digits`` (+``extra``) significant figures, in LaTeX."""
+    return power_latex(format_number(value, digits, extra=extra))
+
+
+def power_latex(text: str) -> str:
+    """``1.67e-27`` as ``1.67 \\times 10^{-27}``; plain numbers as they are."""
+    if "e" in text:
+        mant, exp = text.split("e")
+        return rf"{mant} \times 10^{{{int(exp)}}}"
+    return text
+
+
+def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
+    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded."""
+    if value.is_Integer and abs(value) < 10**6:
+        return str(value)
+    if short_decimal(value):
+        return power_latex(as_written(value))
+    return number_latex(value, digits, extra)
+
+
+def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``expr`` with ``values`` put in, its structure kept (no re-evaluation: 5(x + 2)
+    stays 5(x + 2) instead of becoming 5x + 10)."""
+    if not values or not (expr.free_symbols & set(values)):
+        return expr
+    if isinstance(expr, sympy.Symbol):
+        return values.get(expr, expr)
+    if expr.is_Atom:
+        return expr
+    args = [substitute(a, values) for a in expr.args]
+    if isinstance(expr, (sympy.Add, sympy.Mul, sympy.Pow)):
+        return expr.func(*args, evaluate=False)
+    return expr.func(*args)
+
+
+def is_negative_term(expr: sympy.Expr) -> bool:
+    """True for a term written with a leading minus: -3, -v_B1 cos(theta), -5 · 9.507."""
+    if expr.is_Number:
+        return bool(expr < 0)
+    return isinstance(expr, sympy.Mul) and bool(expr.args) and expr.args[0].is_Number and bool(expr.args[0] < 0)
+
+
+def negate(expr: sympy.Expr) -> sympy.Expr:
+    """``-expr``, keeping an unevaluated product unevaluated: -(-5 · 9.507) is 5 · 9.507."""
+    if isinstance(expr, sympy.Mul) and expr.args and expr.args[0].is_Number and expr.args[0] < 0:
+        first = -expr.args[0]
+        rest = expr.args[1:]
+        if first == 1:
+            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
+        return sympy.Mul(first, *rest, evaluate=False)
+    return -expr
+
+
+def _factor_key(a: sympy.Expr) -> int:
+    """Order of factors in a printed product: number, mass, symbol, function, sum, unit vector."""
+    if a.is_Number:
+        return 0
+    if isinstance(a, sympy.Symbol):
+        if a.name.startswith("vec:"):
+            return 5
+        return 1 if a.name.startswith(("m", "M")) else 2
+    if isinstance(a, sympy.Pow) and isinstance(a.base, sympy.Symbol):
+        return 2
+    if isinstance(a, sympy.Add):
+        return 4
+    return 3
+
+
+def _factors(expr: sympy.Expr):
+    for a in expr.args:
+        if isinstance(a, sympy.Mul):
+            yield from _factors(a)
+        else:
+            yield a
+
+
+class StepPrinter(LatexPrinter):
+    """SymPy's LaTeX printer with the notes' conventions (see module docstring)."""
+
+    def __init__(
+        self,
+        values: Mapping[sympy.Symbol, str] | None = None,
+        cancel: frozenset[sympy.Symbol] = frozenset(),
+        digits: int | None = None,
+        extra: int = 1,
+        round_integers: bool = False,
+        decimals: int | None = None,
+        decimal_rationals: bool = False,
+        slots: SlotBook | None = None,
+        varied: frozenset[sympy.Symbol] = frozenset(),
+        slot_kind: str = "number",
+        block: int | None = None,
+        trim_floats: bool = False,
+        fractions: bool = False,
+    ) -> None:
+        super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._trim_floats = trim_floats
+        self._fractions = fractions
+        self._slots = slots
+        self._varied = varied
+        self._slot_kind = slot_kind
+        self._block = block
+        self._values = dict(values or {})
+        self._cancel = cancel
+        self._digits = digits
+        self._extra = extra
+        self._round_integers = round_integers
+        self._decimals = decimals
+        self._decimal_rationals = decimal_rationals
+
+    def _print(self, expr, **kwargs) -> str:
+        """A part that depends only on varied givens becomes an open number (a slot)."""
+        if isinstance(expr, sympy.UnevaluatedExpr):  # a display structure: its own node printed, its parts open
+            return super()._print(expr.args[0], **kwargs)
+        if self._slots is not None and isinstance(expr, sympy.Expr) and not expr.is_Number:
+            free = expr.free_symbols
+            if free and free <= self._varied and (self._slot_kind != "given" or isinstance(expr, sympy.Symbol)):
+                kind = self._slot_kind
+                return self._slots.token(expr, kind, self._digits, self._extra, self._block)
+        return super()._print(expr, **kwargs)
+
+    def _print_atan(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\tan^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_asin(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\sin^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_acos(self, expr: sympy.Function, exp: object = None) -> str:
+        return r"\cos^{-1}\left(" + self._print(expr.args[0]) + r"\right)"
+
+    def _print_atan2(self, expr: sympy.Function, exp: object = None) -> str:
+        y, x = expr.args
+        return r"\operatorname{atan2}\left(" + self._print(y) + ", " + self._print(x) + r"\right)"
+
+    def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
+        if expr in self._values:
+            return self._values[expr]
+        name = expr.name
+        tex = vector_latex(name) or (name if name.startswith("\\") else latex_name(name))
+        if expr in self._cancel:
+            return r"\cancel{" + tex + "}"
+        return tex
+
+    def _print_Float(self, expr: sympy.Float) -> str:
+        if self._decimals is not None:
+            return format_fixed(expr, self._decimals)
+        if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
+            mantissa, _, power = format_number(expr, self._digits, extra=self._extra).partition("e")
+            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            return power_latex(mantissa + ("e" + power if power else ""))
+        return number_latex(expr, self._digits, self._extra)
+
+    def _as_decimal(self, r: sympy.Rational) -> bool:
+        """Whether a short decimal prints as one: beside letters, halves, thirds and
+        quarters stay fractions (m u²/2), fifths and tenths are decimals (0.6 u)."""
+        if not short_decimal(r):
+            return False
+        return not (self._fractions and r.q <= 12 and r.q % 5 != 0)
+
+    def _print_Rational(self, expr: sympy.Rational) -> str:
+        if self._decimal_rationals and not self._round_integers and self._as_decimal(expr):
+            return power_latex(as_written(expr))
+        return super()._print_Rational(expr)
+
+    def _print_Integer(self, expr: sympy.Integer) -> str:
+        if self._round_integers and expr != 0:
+            return number_latex(expr, self._digits, self._extra)
+        if abs(expr.p) >= 10**6:
+            return power_latex(as_written(expr))
+        return str(expr.p)
+
+    def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
+        out = ""
+        terms = expr.args
+        if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
+            terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
+        if is_negative_term(terms[0]) and any(t.free_symbols for t in terms):
+            positive = [t for t in terms if not is_negative_term(t)]
+            if positive:  # 1 - 2 e, not -2 e + 1
+                terms = tuple(positive) + tuple(t for t in terms if is_negative_term(t))
+        for i, term in enumerate(terms):
+            if (
+                self._slots is not None
+                and self._slot_kind != "given"
+                and term.free_symbols
+                and term.free_symbols <= self._varied
+            ):
+                role = "lead" if i == 0 else "signed"
+                out += self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block)
+                continue
+            if is_negative_term(term):
+                s = self._print(negate(term))
+                s = self._paren_if_sum(negate(term), s)
+                if s.startswith("-"):
+                    s = r"\left(" + s + r"\right)"
+                out += ("-" if i == 0 else " - ") + s
+            else:
+                s = self._print(term)
+                if i and s.startswith("-"):
+                    s = r"\left(" + s + r"\right)"
+                out += ("" if i == 0 else " + ") + s
+        return out
+
+    def _paren_if_sum(self, expr: sympy.Expr, s: str) -> str:
+        return r"\left(" + s + r"\right)" if isinstance(expr, sympy.Add) else s
+
+    def _print_Mul(self, expr: sympy.Mul) -> str:
+        """A product as the notes write it: numbers, masses, other symbols, functions;
+        ``\\cdot`` between two numbers; negative powers as a fraction."""
+        if is_negative_term(expr):
+            factors = list(_factors(expr))
+            sums = [a for a in factors if isinstance(a, sympy.Add) and a.free_symbols]
+            numbers = [a for a in factors if a.is_Number and a < 0]
+            if len(sums) == 1 and len(numbers) == 1 and self._fractions:  # -u (2e - 1)/3 is u (1 - 2e)/3
+                turned = [-a if a is sums[0] or a is numbers[0] else a for a in factors]
+                return self._print(sympy.Mul(*[a for a in turned if a != 1], evaluate=False))
+            inner = negate(expr)
+            if inner != expr:
+                s = self._print(inner)
+                wrap = isinstance(inner, sympy.Add) or s.startswith("-")
+                return "-" + (r"\left(" + s + r"\right)" if wrap else s)
+        args = [a for a in expr.args if a != 1] or [sympy.Integer(1)]  # 1 (v + 4u/3) is v + 4u/3
+        if len(args) == 1:
+            return self._print(args[0])
+        # beside a surd a fraction stays a fraction: sqrt(2)/2, not 0.5 sqrt(2)
+        surd = any(isinstance(a, sympy.Pow) and a.base.is_Rational and not a.exp.is_Integer for a in args)
+        decimal = self._decimal_rationals and not surd
+        num, den = [], []
+
+        def first(a: sympy.Expr) -> bool:  # numbers before letters (not a sum: v (20 + 5))
+            return self._open(a) or self._numberish(a) or (a.is_number and not isinstance(a, sympy.Add))
+
+        for a in sorted(args, key=lambda a: 0 if first(a) else _factor_key(a)):
+            if isinstance(a, sympy.Rational) and not a.is_Integer and not (decimal and self._as_decimal(a)):
+                if a.p != 1:
+                    num.insert(0, sympy.Integer(a.p))
+                den.insert(0, sympy.Integer(a.q))
+                continue
+            if isinstance(a, sympy.Pow) and a.exp.is_Number and a.exp < 0:
+                den.append(a.base if a.exp == -1 else sympy.Pow(a.base, -a.exp, evaluate=False))
+            else:
+                num.append(a)
+        if den:
+            top = self._join(num, bare=True) if num else "1"
+            bottom = self._join(den, bare=True)
+            return r"\frac{" + top + "}{" + bottom + "}"
+        return self._join(num)
+
+    def _open(self, a: sympy.Expr) -> bool:
+        """True for a part that becomes an open number (a homework variant's slot)."""
+        return (
+            self._slots is not None
+            and self._slot_kind != "given"
+            and isinstance(a, sympy.Expr)
+            and bool(a.free_symbols)
+            and a.free_symbols <= self._varied
+        )
+
+    def _numberish(self, a: sympy.Expr) -> bool:
+        if self._slots is not None and isinstance(a, sympy.Expr) and a.free_symbols and a.free_symbols <= self._varied:
+            return True
+        return a.is_Number or a in self._values or (isinstance(a, sympy.Pow) and a.base in self._values)
+
+    def _join(self, factors: list[sympy.Expr], bare: bool = False) -> str:
+        if bare and len(factors) == 1:
+            return self._print(factors[0])
+        out = ""
+        prev = None
+        for a in factors:
+            s = self._print(a)
+            wrap = isinstance(a, sympy.Add) and not self._open(a)
+            wrap = wrap or (prev is not None and s.startswith("-"))
+            wrap = wrap or (len(factors) > 1 and r"\times 10^" in s)  # (2 × 10^6)(1.67 × 10^-27)
+            if wrap:
+                s = r"\left(" + s + r"\right)"
+            if prev is None:
+                out = s
+            elif self._numberish(prev) and (self._numberish(a) or s[:1].isdigit() or s.startswith(r"\left(")):
+                out += r" \cdot " + s if not s.startswith(r"\left(") else s
+            else:
+                out += " " + s
+            prev = a
+        return out
+
+    def _print_Pow(self, expr: sympy.Pow) -> str:
+        if expr.base in self._values and expr.exp.is_Integer and expr.exp > 0:
+            base = self._values[expr.base]
+            if base.startswith("-") or " " in base:
+                base = r"\left(" + base + r"\right)"
+            return f"{base}^{{{expr.exp}}}"
+        if isinstance(expr.base, sympy.Float) and expr.exp.is_Integer:
+            base = self._print(expr.base)
+            base = r"\left(" + base + r"\right)" if base.startswith("-") else base
+            return f"{base}^{{{expr.exp}}}"
+        if expr.exp.is_Number and expr.exp < 0 and not expr.base.is_Number:
+            # 1/tan(x), not SymPy's power form of a function (which read "-1 tan x")
+            inverse = expr.base if expr.exp == -1 else sympy.Pow(expr.base, -expr.exp, evaluate=False)
+            return r"\frac{1}{" + self._print(inverse) + "}"
+        saved, self._round_integers = self._round_integers, False
+        try:
+            return super()._print_Pow(expr)
+        finally:
+            self._round_integers = saved
+
+
+def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.Symbol]) -> dict[sympy.Symbol, str]:
+    """The substitution line's numbers: each symbol's value, angles in degrees."""
+    out = {}
+    for s in symbols:
+        if s not in style.values:
+            continue
+        v = style.values[s]
+        if s in style.angles:
+            deg = v * 180 / sympy.pi
+            out[s] = exact_latex(deg, digits, extra) + r"^\circ"
+        else:
+            out[s] = exact_latex(v, digits, extra)
+    return out
+
+
+def latex_expr(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> str:
+    """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
+    book, varied = style.slots, style.varied
+    if mode == "symbolic":
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
+    if mode == "values":
+        vals = values_map(style, style.digits, extra, expr.free_symbols)
+        printer = StepPrinter(
+            vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
+        )
+        return printer.doprint(expr)
+    if mode in ("numeric", "result") and _letters(expr, style):
+        # letters remain: numbers exact where the data are (u (1 - 2e)/3), decimals
+        # where the data are decimal (0.6 u), never 1.000 e
+        values = {
+            s: sympy.Float(v.evalf(PRECISION), PRECISION) if s in style.decimal else v for s, v in style.values.items()
+        }
+        expr = exactify(substitute(expr, values))
+        extra = 0 if mode == "result" else extra
+        decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
+        if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
+            printer = StepPrinter(fractions=True)
+            rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
+            expr = expr.xreplace(rounded)
+        printer = StepPrinter(
+            cancel=cancel, digits=style.digits, extra=extra, trim_floats=True, decimal_rationals=decimal, fractions=True
+        )
+        return printer.doprint(expr)
+    if mode == "numeric":
+        expr = substitute(expr, style.values)
+        printer = StepPrinter(
+            cancel=cancel,
+            digits=style.digits,
+            extra=extra,
+            decimals=style.decimals,
+            decimal_rationals=True,
+            slots=book,
+            varied=varied,
+            block=style.block,
+        )
+        return printer.doprint(floatify(expr))
+    if mode == "result":
+        expr = substitute(expr, style.values)
+        if expr.is_number and not isinstance(expr, sympy.UnevaluatedExpr):
+            expr = sympy.Float(expr.evalf(PRECISION), PRECISION)
+        printer = StepPrinter(
+            cancel=cancel,
+            digits=style.digits,
+            extra=0,
+            round_integers=True,
+            slots=book,
+            varied=varied,
+            slot_kind="result",
+        )
+        return printer.doprint(floatify(expr, keep_integers=False))
+    raise ValueError(mode)
+
+
+def _letters(expr: sympy.Expr, style: Style) -> bool:
+    """True when ``expr`` keeps a given that the problem keeps as a letter (u, m, e) once
+    its numbers are in; unknowns alone (v_A2) do not count, nor a variant's open numbers."""
+    if style.slots is not None:
+        return False
+    return bool(substitute(expr, style.values).free_symbols & style.letters)
+
+
+def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
+    """A side of an equation: its terms joined with their signs, in order."""
+    out = ""
+    for i, term in enumerate(side.terms):
+        if side.mode in ("numeric", "result") and not _letters(term, style):
+            term = substitute(term, style.values)
+            collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
+            if term.is_number and (collapse or not structural(term)):
+                term = floatify(term, keep_integers=side.mode == "numeric")
+                if term == 0:
+                    term = sympy.Integer(0)
+            if style.slots is not None and term.free_symbols & style.varied:
+                token = _slot_term(term, side.mode, style, extra, cancel, first=i == 0)
+                if token is not None:
+                    out += token
+                    continue
+        neg = is_negative_term(term)
+        body = negate(term) if neg else term
+        if side.mode in ("numeric", "result") and _letters(term, style):
+            s = latex_expr(term, side.mode, style, extra, cancel)  # the printer picks the sign: u (1 - 2e)/3
+            neg, body = s.startswith("-"), term
+            s = s[1:].lstrip() if neg else s
+        else:
+            s = latex_expr(body, side.mode, style, extra, cancel)
+        if neg and s.startswith("-"):
+            neg, s = False, s[1:].lstrip()
+        if isinstance(body, sympy.Add) and len(side.terms) > 1:
+            s = r"\left(" + s + r"\right)"
+        if i == 0:
+            out = ("-" if neg else "") + s
+        else:
+            if not neg and s.startswith("-"):
+                s = s[1:].lstrip()
+                neg = True
+            out += (" - " if neg else " + ") + s
+    return out
+
+
+_UNITLESS = {sympy.Symbol(f"vec:e_{a}", commutative=True) for a in "tnxy"}
+
+
+def _slot_term(
+    term: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol], first: bool
+) -> str | None:
+    """A term whose number (or coefficient) depends on varied givens: its sign is
+    known only per variant, so the slot prints the sign too."""
+    assert style.slots is not None
+    if isinstance(term, sympy.UnevaluatedExpr):
+        return None  # a display structure: its parts are left open, not the whole
+    others = term.free_symbols - style.varied
+    if isinstance(term, sympy.Mul) and any(
+        isinstance(a, sympy.Add) and a.free_symbols - style.varied for a in term.args
+    ):
+        return None  # a product with a sum in it: the printer leaves open the parts inside
+    digits, ext = style.digits, (0 if mode == "result" else extra)
+    kind = "result" if mode == "result" else "number"
+    if not others:
+        return style.slots.token(term, ("lead" if first else "signed") + ":" + kind, digits, ext, style.block)
+    coeff, rest = term.as_independent(*others, as_Add=False)
+    if not (coeff.free_symbols & style.varied):
+        return None
+    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
+    printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True)
+    return token + " " + printer.doprint(rest)
+
+
+def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
+    """The line's LaTeX (without delimiters) and its tag."""
+    printed: list[str] = []
+    for s in eqn.sides:
+        text = latex_side(s, style, extra, eqn.cancel)
+        if not printed or text != printed[-1]:  # v_2 = -u, not v_2 = -u = -u
+            printed.append(text)
+    body = " = ".join(printed)
+    last = eqn.sides[-1]
+    symbolic = last.mode == "symbolic" or any(
+        t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
+    )
+    if eqn.unit and not symbolic:
+        body += (
+            r"\ \%"
+            if eqn.unit == "%"
+            else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
+        )
+    if eqn.boxed:
+        body = r"\boxed{" + body + "}"
+    if eqn.implies:
+        body = r"\Rightarrow\quad " + body
+    return body, eqn.tag
+
+
+def block_style(block: Block, style: Style) -> Style:
+    """The style for one block: where it shows a sum term by term, every
+    intermediate gets the same places after the point, enough that the rounded
+    terms add up to the rounded total (79.23 - 59.42 = 19.81)."""
+    if block.answer_figures:
+        style = replace(style, extra=0)
+    if not block.sums:
+        return style
+    if style.slots is not None and any(
+        (t.xreplace(dict(style.values)).free_symbols & style.varied)
+        for terms, total in block.sums
+        for t in (*terms, total)
+    ):
+        block_id = len(style.slots.claims)
+        style.slots.claims[block_id] = [
+            (tuple(t.xreplace(dict(style.values)) for t in terms), total.xreplace(dict(style.values)))
+            for terms, total in block.sums
+        ]
+        return replace(style, block=block_id)
+    sums = [
+        ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
+        for terms, total in block.sums
+    ]
+    places = places_that_add_up(sums, style.digits, style.extra, each=block.answer_figures)
+    # no places at which the rounded terms add up: leave out the line that shows them
+    return replace(style, decimals=places, hide_optional=places is None)
+
+
+def latex_inline(expr: sympy.Basic, style: Style) -> str:
+    """Inline mathematics in a sentence."""
+    if isinstance(expr, sympy.Interval):
+        lo = "(" if expr.left_open else "["
+        hi = ")" if expr.right_open else "]"
+        p = StepPrinter(digits=style.digits)
+        return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
+    printer = StepPrinter(digits=style.digits, decimal_rationals=True, fractions=True)
+    if isinstance(expr, sympy.Eq):
+        return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
+    return printer.doprint(expr)

@@ -1,0 +1,534 @@
+"""Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+
+Layout lives in the Jinja2 templates (``templates/``); the mathematics is
+printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
+A renderer never does physics.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import replace
+from functools import cache
+from typing import Any
+
+import jinja2
+import sympy
+
+from derive import escape
+from derive.errors import InputError
+from derive.numbers import format_number
+from derive.problem import Given
+from derive.problem.units import latex_unit, plain_unit
+from derive.resources import templates_dir
+from derive.steps.model import Math, Solution
+from derive.symbols import latex_name, symbol
+from derive.writers import figure
+from derive.writers.printing import (
+    SlotBook,
+    StepPrinter,
+    Style,
+    block_style,
+    exact_latex,
+    latex_eqn,
+    latex_expr,
+    latex_inline,
+)
+
+FORMATS = ("md", "tex", "tex-fragment", "html", "json")
+ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
+IMPLIES = r"\Rightarrow\quad "
+
+
+@cache
+def environment(kind: str) -> jinja2.Environment:
+    """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
+    options: dict[str, Any] = {}
+    if kind == "tex":
+        options = dict(
+            block_start_string=r"\BLOCK{",
+            block_end_string="}",
+            variable_start_string=r"\VAR{",
+            variable_end_string="}",
+            comment_start_string=r"\#{",
+            comment_end_string="}",
+            line_statement_prefix=None,
+            line_comment_prefix=None,
+        )
+    env = jinja2.Environment(
+        loader=jinja2.FileSystemLoader(str(templates_dir())),
+        undefined=jinja2.StrictUndefined,
+        autoescape=False,
+        keep_trailing_newline=True,
+        trim_blocks=True,
+        lstrip_blocks=True,
+        **options,
+    )
+    env.filters["md"] = escape.markdown
+    env.filters["tex"] = escape.tex
+    env.filters["html"] = escape.html_text
+    return env
+
+
+def _given_latex(g: Given, style: Style) -> tuple[str, str]:
+    """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
+    name = latex_name(g.name)
+    if g.unknown:
+        return name + r" = \,?", "unknown: derive finds it"
+    if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
+        token = style.slots.token(g.symbol, "given", style.digits, 1, None)
+        tail = r"^\circ" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")
+        return f"{name} = {token}{tail}", ""
+    if (
+        style.slots is not None
+        and g.value is None
+        and g.definition is not None
+        and g.definition.free_symbols & style.varied
+    ):  # defined from a varied given (m_A = W_A/g)
+        parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
+        value = latex_expr(g.definition, "numeric", style, 1)
+        unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
+        return " = ".join([*parts, value]) + unit, ""
+    if g.value is None:
+        if g.definition is not None:
+            return f"{name} = {StepPrinter().doprint(g.definition)}", ""
+        unit = plain_unit(g.unit) if g.unit else "a pure number"
+        return name, f"kept as a symbol ({unit})"
+    if g.unit == "deg":
+        deg = g.value * 180 / sympy.pi
+        value = exact_latex(deg, style.digits, 1) + r"^\circ"
+    else:
+        value = exact_latex(g.value, style.digits, 1)
+        if g.unit:
+            value += r"\ " + latex_unit(g.unit)
+    parts = [name]
+    if g.definition is not None:
+        parts.append(StepPrinter().doprint(g.definition))
+        shown = latex_expr(g.definition, "values", style, 1)
+        if shown != parts[-1] and not g.definition.is_Symbol and g.definition.free_symbols:
+            parts.append(shown)
+    if g.written is not None:
+        number, _, unit = g.written.partition(" ")
+        parts.append(
+            exact_latex(sympy.Rational(number), style.digits, 1)
+            + (latex_unit(unit) if unit in ("deg", "°") else r"\ " + latex_unit(unit))
+        )
+    if value != parts[-1]:
+        parts.append(value)
+    return " = ".join(parts), ""
+
+
+def _statement(p, style: Style) -> str | None:
+    """The statement with each ``{name}`` replaced by that given's value and unit."""
+    if not p.statement:
+        return p.statement
+    by_name = {g.name: g for g in p.givens}
+
+    def one(m: re.Match[str]) -> str:
+        g = by_name.get(m.group(1))
+        if g is None:
+            return m.group(0)
+        if style.slots is not None and g.symbol in style.varied:
+            token = style.slots.token(g.symbol, "text", style.digits, 1, None)
+            return token + ("°" if g.unit == "deg" else (" " + plain_unit(g.unit) if g.unit else ""))
+        if g.value is None:
+            return g.name
+        if g.unit == "deg":
+            return exact_latex(g.value * 180 / sympy.pi, style.digits, 1) + "°"
+        text = exact_latex(g.value, style.digits, 1)
+        return text + (" " + plain_unit(g.unit) if g.unit else "")
+
+    return re.sub(r"\{([A-Za-z][A-Za-z0-9_]*)\}", one, p.statement)
+
+
+_FIND_WORDS = {
+    "v_A2": "the speed of A",
+    "v_B2": "the speed of B",
+    "theta_A2": "the direction of A (from +t)",
+    "theta_B2": "the direction of B (from +t)",
+    "beta_A2": "the direction of A (from +n)",
+    "beta_B2": "the direction of B (from +n)",
+    "J_n": "the impulse along n",
+    "T_1": "the kinetic energy before the impact",
+    "T_2": "the kinetic energy after the impact",
+    "T_lost": "the kinetic energy lost",
+}
+
+
+def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
+    """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
+    blocks = []
+    for block in blocks_in:
+        bstyle = block_style(block, style)
+        lines: list[dict[str, Any]] = []
+        for eqn in block.lines:
+            if eqn.optional and bstyle.hide_optional:
+                continue
+            body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
+            if eqn.mark:
+                body += ANSWER_MARK
+            bare = body.removeprefix(IMPLIES)
+            if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
+                lines[-1] = {"latex": lines[-1]["latex"], "tag": tag or lines[-1]["tag"], "boxed": eqn.boxed}
+                continue  # the same line again (numbers in, but none to put in): once is enough
+            lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
+        text = None
+        if block.text is not None:
+            text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
+        blocks.append({"text": text, "lines": lines})
+    return blocks
+
+
+def view(
+    solution: Solution,
+    digits: int | None = None,
+    figures: bool = True,
+    *,
+    slots: SlotBook | None = None,
+    varied: frozenset[sympy.Symbol] = frozenset(),
+) -> dict[str, Any]:
+    """The data a template needs: every formula already printed as LaTeX, and the
+    figures of stage 1 and of the answer as SVG and TikZ.
+
+    With ``slots``, every number that depends on a ``varied`` given is left open
+    (a token), so that one compiled page serves every homework variant.
+    """
+    p = solution.problem
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        solution.values,
+        solution.angles,
+        varied=varied,
+        slots=slots,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
+    )
+    stages = []
+    for stage in solution.stages:
+        blocks = blocks_view(stage.blocks, style)
+        entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
+        if figures and stage.figure is not None:
+            fig = figure.describe(solution, after=stage.figure == "after")
+            entry["figure_svg"] = figure.to_svg(fig)
+            entry["figure_tikz"] = figure.to_tikz(fig)
+            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+        stages.append(entry)
+    givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
+    if p.question:
+        find = [("text", p.question)]
+    else:
+        unknown = [g.name for g in p.givens if g.unknown]
+        words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
+            "the velocity of A immediately after the impact"
+            if p.fixed_B
+            else "the velocities of A and B immediately after the impact"
+        )
+        extra_words = [
+            _FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
+        ]
+        if extra_words:
+            words += "; " + ", ".join(extra_words)
+        find = [("text", words[0].upper() + words[1:] + ".")]
+    return {
+        "title": p.title,
+        "kind": p.kind,
+        "source": p.source,
+        "statement": _statement(p, style),
+        "find": find,
+        "givens": givens,
+        "stages": stages,
+        "system": p.system,
+    }
+
+
+def _html(data: dict[str, Any]) -> str:
+    """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
+    from derive.writers import katex as html_mod
+
+    items: list[tuple[str, bool]] = []
+
+    def slot(tex: str, display: bool) -> int:
+        items.append((tex, display))
+        return len(items) - 1
+
+    for g in data["givens"]:
+        g["slot"] = slot(g["latex"], False)
+    for stage in data["stages"]:
+        for block in stage["blocks"]:
+            if block["text"]:
+                block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"]]
+            for line in block["lines"]:
+                line["slot"] = slot(line["latex"], True)
+    rendered = html_mod.render_math(items)
+    if rendered is None:  # no Node.js: the page typesets itself, offline, with the inlined script
+        rendered = [
+            f'<span class="math{" display" if disp else ""}">{escape.html_text(tex)}</span>' for tex, disp in items
+        ]
+        script = html_mod.katex_script()
+    else:
+        script = ""
+    for g in data["givens"]:
+        g["html"] = rendered[g.pop("slot")]
+    for stage in data["stages"]:
+        stage["figure"] = stage.get("figure_svg", "")
+        for block in stage["blocks"]:
+            if block["text"]:
+                block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
+            for line in block["lines"]:
+                line["html"] = rendered[line.pop("slot")]
+    data["find"] = [("text", s_) if k == "text" else ("math", s_) for k, s_ in data["find"]]
+    return (
+        environment("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    )
+
+
+def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
+    if not parts:
+        return ""
+    return "".join(f"${s}$" if kind == "math" else s for kind, s in parts)
+
+
+def _givens_json(givens: tuple[Given, ...]) -> dict[str, dict[str, Any]]:
+    """Each given's number (angles in degrees; null when symbolic) and unit."""
+    return {
+        g.name: {
+            "value": None
+            if g.value is None
+            else float(sympy.N(g.value * 180 / sympy.pi if g.unit == "deg" else g.value, 17)),
+            "unit": "deg" if g.unit == "deg" else plain_unit(g.unit),
+        }
+        for g in givens
+    }
+
+
+def to_json(solution: Solution, digits: int | None = None) -> str:
+    """The JSON contract of DESIGN.md: title, kind, results (+ givens and steps)."""
+    p = solution.problem
+    d = digits if digits is not None else p.digits
+    results = {}
+    printer = StepPrinter()
+    for name, r in solution.results.items():
+        value = None if r.value is None else float(sympy.N(r.value, 17))
+        entry: dict[str, Any] = {
+            "value": value,
+            "unit": plain_unit(r.unit) if r.unit != "deg" else "deg",
+            "expr": str(r.closed),
+            "latex": printer.doprint(r.closed),
+            "description": r.description,
+        }
+        if r.value is not None:
+            entry["shown"] = format_number(r.value, d)
+        else:
+            entry["value_expr"] = str(r.partial)
+        results[name] = entry
+    v = view(solution, digits)
+    doc = {
+        "title": p.title,
+        "kind": p.kind,
+        "source": p.source,
+        "units": p.system,
+        "find": list(p.find),
+        "results": results,
+        "givens": _givens_json(p.givens),
+        "show": [
+            {
+                "relation": s.relation.text,
+                "holds": s.holds,
+                "decided": s.how,
+                "found": str(s.lhs),
+                "counterexample": {k.name: v for k, v in (s.counterexample or {}).items()} or None,
+            }
+            for s in solution.shown
+        ],
+        "ranges": [
+            {
+                "of": f.range.of.name,
+                "where": f.range.text,
+                "interval": None if f.interval is None else str(f.interval),
+                "latex": None if f.interval is None else printer.doprint(f.interval),
+            }
+            for f in solution.ranges
+        ],
+        "stages": [
+            {
+                "number": s["number"],
+                "title": s["title"],
+                "blocks": [
+                    {
+                        "text": _text_with_math(b["text"]),
+                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
+                    }
+                    for b in s["blocks"]
+                ],
+            }
+            for s in v["stages"]
+        ],
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
+def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
+    """The data the chain templates need: the chain's givens, each stage printed."""
+    p = sol.problem
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        sol.values,
+        sol.angles,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown),
+    )
+    stages = []
+    for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
+        if st.part is not None:
+            v = view(st.part, digits, figures=figures)
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
+            stages.append(
+                {
+                    "number": st.number,
+                    "title": st.title,
+                    "impact": True,
+                    "givens": v["givens"],
+                    "stages": v["stages"],
+                    "carried": carried,
+                }
+            )
+        else:
+            stages.append(
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
+            )
+    answers = []
+    for a in sol.answers:
+        if a.verdict is not None:
+            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"})
+        else:
+            answers.append({"latex": latex_eqn(a.line, style)[0]})
+    if answers:
+        answers[-1]["latex"] += ANSWER_MARK
+    givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
+    g_sym = symbol("g", "positive")
+    if g_sym in sol.values and "g" not in {g.name for g in p.givens}:
+        shown = exact_latex(sol.values[g_sym], style.digits, 1)
+        unit = "m/s^2" if p.system == "SI" else "ft/s^2"
+        givens.append({"latex": rf"g = {shown}\ {latex_unit(unit)}", "note": "standard gravity, not given"})
+    names = [a.name for a in sol.answers]
+    find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
+    return {
+        "title": p.title,
+        "source": p.source,
+        "statement": p.statement,
+        "givens": givens,
+        "find": find,
+        "stages": stages,
+        "answers": answers,
+        "standalone": standalone,
+    }
+
+
+def _chain_json(sol: Any, digits: int | None) -> str:
+    p = sol.problem
+    d = digits if digits is not None else p.digits
+    results = {}
+    for name, r in sol.results.items():
+        results[name] = {
+            "value": None if r.value is None else float(sympy.N(r.value, 17)),
+            "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
+            "expr": str(r.closed),
+            "latex": StepPrinter().doprint(r.closed),
+        }
+        if r.value is not None:
+            results[name]["shown"] = format_number(r.value, d)
+    givens = _givens_json(p.givens)
+    view_ = chain_view(sol, digits, figures=False)
+    stages = []
+    for st in view_["stages"]:
+        subs = st["stages"] if st["impact"] else [{"blocks": st["blocks"]}]
+        blocks = [b for sub in subs for b in sub["blocks"]]
+        stages.append(
+            {
+                "number": st["number"],
+                "title": st["title"],
+                "blocks": [
+                    {
+                        "text": _text_with_math(b["text"]),
+                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
+                    }
+                    for b in blocks
+                ],
+            }
+        )
+    doc = {
+        "title": p.title,
+        "kind": "chain",
+        "source": p.source,
+        "find": list(p.find),
+        "givens": givens,
+        "results": results,
+        "stages": stages,
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
+def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+
+    ``digits`` overrides the significant figures (default: the problem's, else
+    the textbook rule); ``figures`` False leaves the figures out. For a PDF see
+    :func:`derive.pdf.build_pdf`.
+    """
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    if solution.is_chain:
+        if fmt == "json":
+            return _chain_json(solution, digits)
+        if fmt == "md":
+            return environment("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
+        if fmt in ("tex", "tex-fragment"):
+            data = chain_view(solution, digits, figures, standalone=fmt == "tex")
+            return environment("tex").get_template("chain.tex.j2").render(**data)
+        raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
+    if fmt == "json":
+        return to_json(solution, digits)
+    if fmt not in FORMATS:
+        raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
+    data = view(solution, digits, figures)
+    if fmt == "html":
+        return _html(data)
+    if fmt == "md":
+        return environment("md").get_template("solution.md.j2").render(**data)
+    template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
+    return environment("tex").get_template(template).render(**data)
+
+
+def boxed_lines(solution: Solution) -> list[str]:
+    """The LaTeX of the solution's boxed lines (its answers)."""
+    if solution.is_chain:
+        return [a["latex"] for a in chain_view(solution, figures=False)["answers"]]
+    stages = view(solution, figures=False)["stages"]
+    return [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+
+
+def plain_answers(solution: Solution) -> list[str]:
+    """The answers the problem asks for, as short plain text: ``v_A2 = 3.05 e_t - 1.11 e_n m/s``."""
+    p = solution.problem
+    verdicts = {a.name: a.verdict for a in solution.answers if a.verdict is not None}
+    names = [a.name for a in solution.answers] if solution.is_chain else list(p.find)
+    out = []
+    for name in names:
+        if name in verdicts:
+            out.append(f"{name}: {verdicts[name]}")
+            continue
+        t, n = solution.results.get(name + "t"), solution.results.get(name + "n")
+        r = solution.results.get(name)
+        if not solution.is_chain and p.oblique and name in ("v_A2", "v_B2") and t and n:
+            if t.value is not None and n.value is not None:
+                sign = "-" if n.value < 0 else "+"
+                shown_n = format_number(abs(n.value), p.digits)
+                out.append(f"{name} = {format_number(t.value, p.digits)} e_t {sign} {shown_n} e_n {plain_unit(t.unit)}")
+        elif r is not None and r.value is not None:
+            unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
+            out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
+    return out
