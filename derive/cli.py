@@ -120,7 +120,7 @@ def _list(args: argparse.Namespace) -> int:
     width = max((len(n) for n in found), default=0) + 2
     for name, path in found.items():
         try:
-            title = problem.load(path).title
+            title = problem.title(path)
         except DeriveError as exc:
             title = f"(broken: {exc})"
         print(f"{name:{width}s}{title}")

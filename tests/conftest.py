@@ -2,15 +2,23 @@
 
 from __future__ import annotations
 
+import os
 import textwrap
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import pytest
+from hypothesis import settings
 
 import derive
 from derive.cli import main
 from derive.problem import loads
+
+# In CI the property tests draw the same cases every run (a red CI is then reproducible
+# and not a matter of luck); run locally, they draw new ones each time.
+settings.register_profile("ci", derandomize=True, print_blob=True)
+if os.environ.get("CI"):
+    settings.load_profile("ci")
 
 
 @dataclass
