@@ -19,7 +19,7 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.problem import Given
+from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
 from derive.steps.model import Math, Solution
@@ -156,6 +156,10 @@ _FIND_WORDS = {
 }
 
 
+#: Around an optional line of a compiled variant page, for the variant to keep or drop.
+OPTIONAL_BEGIN, OPTIONAL_END = "%%derive-optional:", "%%derive-end%%"
+
+
 def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
     blocks = []
@@ -166,6 +170,8 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
             if eqn.optional and bstyle.hide_optional:
                 continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
+            if eqn.optional and bstyle.block is not None:  # a variant's page drops it where it cannot add up
+                body = f"{OPTIONAL_BEGIN}{bstyle.block}%{body}{OPTIONAL_END}"
             if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
@@ -187,6 +193,7 @@ def view(
     *,
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
+    outer_letters: dict[sympy.Symbol, str] | None = None,
 ) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
@@ -204,6 +211,7 @@ def view(
         slots=slots,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
+        letter_units={**(outer_letters or {}), **letter_units(p)},
     )
     stages = []
     for stage in solution.stages:
@@ -379,12 +387,13 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         sol.angles,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
+        letter_units=letter_units(p),
     )
     stages = []
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
-            v = view(st.part, digits, figures=figures)
+            v = view(st.part, style.digits, figures=figures, outer_letters=letter_units(p))
             carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
@@ -532,3 +541,8 @@ def plain_answers(solution: Solution) -> list[str]:
             unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
             out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
     return out
+
+
+def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
+    """The unit of each given kept as a letter (m in kg), for the unit a value in it still needs."""
+    return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}
