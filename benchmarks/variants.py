@@ -17,7 +17,7 @@ import tracemalloc
 from decimal import Decimal
 
 import derive
-from derive import variants
+from derive.homework import variants
 from derive.problem import loads
 from derive.resources import bundled
 

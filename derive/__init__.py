@@ -3,18 +3,21 @@
 >>> import derive  # doctest: +SKIP
 >>> solution = derive.solve(derive.load("notes-4c11-two-spheres"))  # doctest: +SKIP
 >>> print(derive.render(solution, "md"))  # doctest: +SKIP
+
+``import derive`` loads nothing heavy: each function imports what it needs when called.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
-from derive.check import check
 from derive.errors import DeriveError, InputError, RenderError
-from derive.problem import Problem
-from derive.render import render
-from derive.solution import Solution
-from derive.solve import solve
+
+if TYPE_CHECKING:
+    from derive.checking.answers import Report
+    from derive.problem import ChainProblem, Problem
+    from derive.steps.model import Solution
 
 __version__ = "0.1.0"
 __all__ = [
@@ -31,20 +34,49 @@ __all__ = [
 ]
 
 
-def load(path: str | Path) -> Problem:
+def load(path: str | Path) -> Problem | ChainProblem:
     """Read a problem: a path to a TOML file, or the name of a bundled problem.
 
     Raises :class:`InputError` with a one-line message on bad input.
     """
-    from derive import problem, resources
+    from derive import problem
 
-    p = Path(path)
-    if not p.exists() and isinstance(path, str) and "/" not in path and not path.endswith(".toml"):
-        bundled = resources.bundled()
-        if path in bundled:
-            return problem.load(bundled[path])
-        raise InputError(
-            f"no such file, and no bundled problem of that name (try 'derive list'); bundled: {', '.join(bundled)}",
-            where=str(path),
-        )
-    return problem.load(p)
+    return problem.load(path)
+
+
+def solve(problem: Problem | ChainProblem) -> Solution:
+    """Solve ``problem`` in closed form and write its worked solution as data.
+
+    In Jupyter the solution shows itself as its worked solution.
+    """
+    from derive.display import displayed
+    from derive.steps import solve as solve_steps
+
+    return displayed(solve_steps(problem))
+
+
+def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'."""
+    from derive.writers.view import render as render_text
+
+    return render_text(solution, fmt, digits=digits, figures=figures)
+
+
+def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> Report:
+    """Check hand answers (and equations) against a solution; see :func:`derive.checking.answers.check`."""
+    from derive.checking.answers import check as check_answers
+
+    return check_answers(solution, answers, **options)
+
+
+def __getattr__(name: str) -> Any:
+    """``derive.Problem`` and ``derive.Solution``, imported on first use."""
+    if name == "Problem":
+        from derive.problem import Problem
+
+        return Problem
+    if name == "Solution":
+        from derive.steps.model import Solution
+
+        return Solution
+    raise AttributeError(f"module 'derive' has no attribute {name!r}")

@@ -90,7 +90,7 @@ def _solve(args: argparse.Namespace) -> int:
     solution = derive.solve(problem)
     inputs = (Path(problem.path),)
     if args.format == "pdf":
-        from derive.pdf import build_pdf
+        from derive.writers.pdf import build_pdf
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
@@ -121,7 +121,7 @@ def _list(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
-    from derive.check import run
+    from derive.checking.answers import run
 
     report, text = run(args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format)
     sys.stdout.write(text)
@@ -130,14 +130,14 @@ def _check(args: argparse.Namespace) -> int:
 
 def _variants(args: argparse.Namespace) -> int:
     import derive
-    from derive.variants import write_variants
+    from derive.homework.variants import write_variants
 
     if not 1 <= args.count <= 100_000:
         raise InputError("expected a count from 1 to 100000", where="usage", field=f"--count {args.count}")
     problem = derive.load(args.problem)
     exports = None
     if args.moodle or args.prairielearn:  # built first: a bad --result writes nothing
-        from derive.lms import build_exports
+        from derive.homework.lms import build_exports
 
         exports = build_exports(
             problem,
@@ -163,8 +163,8 @@ def _variants(args: argparse.Namespace) -> int:
 def _handout(args: argparse.Namespace) -> int:
     """Write the handout; a problem that fails is left out and reported at the end (exit 1)."""
     from derive.fileio import write_atomic
-    from derive.handout import DEFAULT_TITLES, NoProblemsError, build_handout
-    from derive.handout import FORMATS as HANDOUT_FORMATS
+    from derive.homework.handout import DEFAULT_TITLES, NoProblemsError, build_handout
+    from derive.homework.handout import FORMATS as HANDOUT_FORMATS
 
     fmt = Path(args.output).suffix.lower().lstrip(".")
     if fmt not in HANDOUT_FORMATS:

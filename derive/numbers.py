@@ -102,18 +102,128 @@ def decimals_of(text: str) -> int:
     return len(text.split(".")[1]) if "." in text else 0
 
 
-def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int:
+def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int | None:
     """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
-    19.81): the largest number's figures to start with, more until each sum's rounded
-    terms add up to its rounded total."""
+    19.81): the largest number's figures to start with, one more if the rounded terms
+    do not add up to the rounded total. None when no such places exist: the numbers
+    are too far apart in size for fixed places, or need more figures than the rule."""
     numbers = [x for terms, total in sums for x in (*terms, total)]
+    if any(x != 0 and not -4 <= x.adjusted() < 6 for x in numbers):
+        return None
     biggest = max((abs(x) for x in numbers), default=Decimal(0))
     text = format_number(biggest, digits, extra=extra) if biggest else ""
     start = decimals_of(text) if text and "e" not in text else 2
-    for places in range(start, start + 4):
+    for places in (start, start + 1):
         if all(
             sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))
             for terms, total in sums
         ):
             return places
-    return start + 3
+    return None
+
+
+def short_decimal(value: sympy.Expr) -> bool:
+    """True for an exact number with a short decimal form (0.2, 12.5, 1.67e-27): printed as written."""
+    if not value.is_Rational:
+        return False
+    q = value.q
+    for f in (2, 5):
+        while q % f == 0:
+            q //= f
+    return q == 1 and len(abs(to_decimal(value)).normalize().as_tuple().digits) <= 6
+
+
+def as_written(value: sympy.Expr | Decimal) -> str:
+    """An exact short decimal as a textbook writes it: plain between 1e-4 and 1e6
+    (0.6, 12.5, 20), else with a power of ten (``1.67e-27``, ``2e+6``).
+
+    >>> as_written(sympy.Rational(167, 10**29))
+    '1.67e-27'
+    >>> as_written(sympy.Integer(2000000))
+    '2e+6'
+    """
+    d = (value if isinstance(value, Decimal) else to_decimal(value)).normalize()
+    if d == 0:
+        return "0"
+    if -4 <= d.adjusted() < 6:
+        return format(d, "f")
+    return f"{format(d.scaleb(-d.adjusted()), 'f')}e{d.adjusted():+d}"
+
+
+def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
+    """``expr`` with every numeric part evaluated: one Float coefficient per product.
+
+    Structure (the order of terms, unexpanded products) is kept.
+    """
+    if isinstance(expr, sympy.UnevaluatedExpr):  # shown as built: (19.81 - 5 · 9.507)/25
+        inner = expr.args[0]
+        if inner.is_Atom:
+            return floatify(inner, keep_integers)
+        if isinstance(inner, sympy.Pow):
+            return sympy.UnevaluatedExpr(sympy.Pow(floatify(inner.base, keep_integers), inner.exp, evaluate=False))
+        kept = [floatify(a, keep_integers) for a in inner.args]
+        if isinstance(inner, (sympy.Add, sympy.Mul)):
+            return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
+        return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
+    if expr.is_Integer and keep_integers:
+        return expr
+    if expr.is_Number:
+        if keep_integers and short_decimal(expr):
+            return expr  # a given as written (0.2 kg), not 0.2000
+        return sympy.Float(expr, PRECISION)
+    if structural(expr):
+        # built unevaluated on purpose, as in (20 + 5) v_A2n: keep it so
+        if isinstance(expr, sympy.Pow):
+            return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
+        return expr.func(*(floatify(a, keep_integers) for a in expr.args), evaluate=False)
+    if expr.is_number:
+        exact = expr.doit()
+        if exact.is_Integer and keep_integers:
+            return exact
+        return sympy.Float(expr.evalf(PRECISION), PRECISION)
+    if expr.is_Atom:
+        return expr
+    if isinstance(expr, sympy.Pow):
+        return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
+    args = [floatify(a, keep_integers) for a in expr.args]
+    if isinstance(expr, sympy.Mul):
+        nums = [a for a in args if a.is_Number]
+        rest = [a for a in args if not a.is_Number]
+        coeff: sympy.Expr = sympy.Integer(1)
+        for n in nums:
+            coeff = coeff * n
+        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer and not (keep_integers and short_decimal(coeff)):
+            coeff = sympy.Float(coeff, PRECISION)
+        if not rest:
+            return coeff
+        if coeff == 1:
+            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
+        return sympy.Mul(coeff, *rest, evaluate=False)
+    return expr.func(*args, evaluate=False)
+
+
+PRECISION = 30
+
+
+def structural(expr: sympy.Expr) -> bool:
+    """True for a sum, product, power or function of numbers that was built unevaluated
+    to be shown as it stands (19.81 - 5 · 9.507), not an exact value such as sqrt(2)/2."""
+    if not expr.is_number or expr.is_Number or expr.is_NumberSymbol:
+        return False
+    parts = expr.args
+
+    def ok(a: sympy.Expr) -> bool:
+        return isinstance(a, sympy.Float) or a.is_Rational or structural(a)
+
+    if isinstance(expr, sympy.Pow):
+        return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
+    if isinstance(expr, sympy.Function) and not isinstance(expr, sympy.Abs):
+        return all(ok(a) for a in parts) and not all(a.is_Rational and not short_decimal(a) for a in parts)
+    if isinstance(expr, (sympy.Add, sympy.Mul)):
+        # SymPy merges the numbers of an evaluated sum or product into one: two
+        # numbers side by side mean it was built unevaluated, to be shown so.
+        numbers = sum(1 for a in parts if a.is_Number)
+        return all(ok(a) for a in parts) and (
+            numbers >= 2 or any(isinstance(a, sympy.Float) or structural(a) for a in parts)
+        )
+    return False

@@ -13,9 +13,9 @@ import pytest
 import sympy
 
 import derive
-from derive.chain import ChainSolution
 from derive.problem import loads
 from derive.resources import bundled
+from derive.steps.model import Solution as ChainSolution
 
 # (chain, quantity, published as printed, rule): "digits" = equal when rounded to the
 # published places; "digits±1" = the source rounded an intermediate; "corrected" = the

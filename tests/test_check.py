@@ -16,8 +16,8 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive import mistakes
-from derive.check import Item, load_answers, loads_answers
+from derive.checking import mistakes
+from derive.checking.answers import Item, load_answers, loads_answers
 
 DATA = Path(__file__).parent / "data"
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "checking.md"

@@ -14,7 +14,7 @@ import pytest
 
 import derive
 import derive.resources
-from derive.figure import Arrow, describe, to_svg, to_tikz
+from derive.writers.figure import Arrow, describe, to_svg, to_tikz
 
 SVG = "{http://www.w3.org/2000/svg}"
 

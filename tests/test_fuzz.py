@@ -39,9 +39,9 @@ from hypothesis import strategies as st
 
 import derive
 from derive.errors import DeriveError, InputError
-from derive.expr import ParseError, parse
 from derive.problem import load, loads
-from derive.units import ANGLE, DIMENSIONLESS, LENGTH, MASS, VELOCITY
+from derive.problem.expr import ParseError, parse
+from derive.problem.units import ANGLE, DIMENSIONLESS, LENGTH, MASS, VELOCITY
 
 SCALE = float(os.environ.get("DERIVE_FUZZ_SCALE", "1"))
 #: Cases run per test, for the summary line (see conftest.py).

@@ -15,11 +15,13 @@ import sympy
 from output_cases import hostile_problem, missing_tool
 
 import derive
-from derive import escape, impact, resources, theory
-from derive.handout import MODES, build_handout
+from derive import escape, resources
+from derive.homework import theory
+from derive.homework.handout import MODES, build_handout
 from derive.numbers import format_number
-from derive.printing import Style, latex_eqn
-from derive.render import view
+from derive.physics import impact
+from derive.writers.printing import Style, latex_eqn
+from derive.writers.view import view
 
 BROKEN = """\
 title = "Broken: B has no mass"
@@ -226,14 +228,16 @@ def test_broken_problem_is_left_out_and_reported_at_the_end(cli, tmp_path: Path)
 
 
 def test_internal_error_in_one_problem_does_not_stop_the_others(monkeypatch: pytest.MonkeyPatch) -> None:
-    real = derive.solve
+    from derive.homework import handout
+
+    real = handout.solve
 
     def flaky(problem: derive.Problem) -> derive.Solution:
         if problem.title.startswith("Example 4.C.12"):
             raise RuntimeError("boom")
         return real(problem)
 
-    monkeypatch.setattr(derive, "solve", flaky)
+    monkeypatch.setattr(handout, "solve", flaky)
     doc, failures = build_handout(list(three()), title="T", theory=False, mode="problems", fmt="md")
     assert [f.problem for f in failures] == ["notes-4c12-cue-ball"]
     assert "RuntimeError: boom" in failures[0].error

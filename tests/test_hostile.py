@@ -26,8 +26,8 @@ import sympy
 import derive
 from derive.errors import DeriveError, ExpressionError, InputError
 from derive.escape import markdown, tex
-from derive.expr import ParseError, parse
 from derive.problem import loads
+from derive.problem.expr import ParseError, parse
 
 DATA = Path(__file__).parent / "data"
 ROOT = Path(__file__).resolve().parent.parent
@@ -569,7 +569,7 @@ def _latex_available() -> bool:
 def test_hostile_pdf_compiles_and_writes_nothing_outside(
     hostile: derive.Solution, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from derive.pdf import build_pdf
+    from derive.writers.pdf import build_pdf
 
     work, tmp = tmp_path / "cwd", tmp_path / "tmp"
     work.mkdir()
@@ -621,7 +621,7 @@ def test_build_pdf_sandboxes_even_raw_tex(tmp_path: Path, monkeypatch: pytest.Mo
     """Defence in depth: were a payload to reach TeX, it could not run a program, read or write
     outside its folder, or run for ever (and no pdflatex is left running after a time-out)."""
     from derive.errors import RenderError
-    from derive.pdf import build_pdf
+    from derive.writers.pdf import build_pdf
 
     work, tmp, outside = tmp_path / "cwd", tmp_path / "tmp", tmp_path / "outside"
     for d in (work, tmp, outside):

@@ -16,7 +16,7 @@ from output_cases import bundled_names, hostile_problem, missing_tool, solution
 
 import derive
 from derive import resources
-from derive.pdf import build_pdf
+from derive.writers.pdf import build_pdf
 
 REPO = Path(__file__).resolve().parents[1]
 

@@ -36,7 +36,7 @@ import sympy
 
 import derive
 from derive import resources
-from derive.units import ANGLE
+from derive.problem.units import ANGLE
 
 DIGITS = "digits"
 DIGITS_1 = "digits±1"

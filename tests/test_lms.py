@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive import lms, mistakes, variants
+from derive.checking import mistakes
+from derive.homework import lms, variants
 from derive.problem import loads
 
 NAME = "notes-4c11-two-spheres"

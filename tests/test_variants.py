@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive import variants
 from derive.errors import InputError
+from derive.homework import variants
 from derive.problem import loads
 
 

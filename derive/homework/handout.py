@@ -8,7 +8,7 @@ a section, in one of three modes:
 - ``answers``: the same, followed by the boxed answer lines of stage 4;
 - ``solutions``: the full worked solution, stages 1-4 with their figures.
 
-Every problem is printed by :func:`derive.render.view`, as a single solution
+Every problem is printed by :func:`derive.writers.view`, as a single solution
 is. A problem that fails to load or solve is left out and reported; the others
 are still included.
 
@@ -21,11 +21,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Literal, NamedTuple
 
-import derive
-from derive import theory as theory_page
 from derive.errors import DeriveError, InputError
-from derive.pdf import build_pdf
-from derive.render import _env, view
+from derive.homework import theory as theory_page
+from derive.problem import load
+from derive.steps import solve
+from derive.writers.pdf import build_pdf
+from derive.writers.view import environment, view
 
 Mode = Literal["problems", "answers", "solutions"]
 Format = Literal["md", "tex", "pdf"]
@@ -65,10 +66,8 @@ def _one_line(text: str) -> str:
 
 def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
-    solution = derive.solve(derive.load(name))
-    from derive.chain import ChainSolution
-
-    if isinstance(solution, ChainSolution):
+    solution = solve(load(name))
+    if solution.is_chain:
         return _chain_view(solution, mode, digits)
     data = view(solution, digits, figures=mode == "solutions")
     data["answers"] = [
@@ -85,7 +84,7 @@ def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, 
 def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
     """A chain in the shape of one problem: its stages in order (an impact's own
     stages numbered k.1, k.2, ...), its boxed answers."""
-    from derive.render import chain_view
+    from derive.writers.view import chain_view
 
     data = chain_view(solution, digits, figures=mode == "solutions")
     stages = []
@@ -170,8 +169,8 @@ def build_handout(
         raise NoProblemsError(failures)
     data = {"title": title, "mode": mode, "problems": views, "theory": theory_page.view() if theory else None}
     if fmt == "md":
-        return _env("md").get_template("handout.md.j2").render(**data), failures
-    tex = _env("tex").get_template("handout.tex.j2").render(**data)
+        return environment("md").get_template("handout.md.j2").render(**data), failures
+    tex = environment("tex").get_template("handout.tex.j2").render(**data)
     if fmt == "tex":
         return tex, failures
     return build_pdf(tex), failures

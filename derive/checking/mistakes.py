@@ -25,8 +25,8 @@ from dataclasses import dataclass, field
 
 import sympy
 
-from derive.impact import Impact, equation_numbers, setup
-from derive.solution import Solution
+from derive.physics.impact import Impact, equation_numbers, setup
+from derive.steps.model import Solution
 from derive.symbols import symbol
 
 #: What each of the equations is, in words (the notes' three systems and the impact rule).
@@ -582,7 +582,7 @@ def angle_quadrant(model: Model) -> Variant | None:
     "reads the angle in degrees as radians",
 )
 def degrees_as_radians(model: Model) -> Variant | None:
-    from derive.units import ANGLE
+    from derive.problem.units import ANGLE
 
     values = {}
     for g in model.problem.givens:

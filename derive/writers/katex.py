@@ -16,7 +16,7 @@ import subprocess
 from functools import cache
 from pathlib import Path
 
-VENDOR = Path(__file__).resolve().parent / "vendor" / "katex"
+VENDOR = Path(__file__).resolve().parent.parent / "vendor" / "katex"
 NODE_TIME_LIMIT = 60
 
 _NODE_SCRIPT = r"""

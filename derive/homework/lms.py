@@ -36,11 +36,11 @@ from pathlib import Path
 
 import sympy
 
-from derive import mistakes
+from derive.checking import mistakes
 from derive.errors import InputError
+from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
 from derive.problem import Problem
 from derive.symbols import latex_name
-from derive.variants import Compiled, Variant, answers, fill, statement_only
 
 #: The tolerance in units of the last digit shown: ½ (rounding) + 1 (the checker's allowance).
 TOLERANCE_UNITS = Decimal("1.5")
@@ -477,12 +477,12 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
 
 
 def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
-    from derive.variants import _given_text
+    from derive.homework.variants import given_text
 
     d = digits if digits is not None else compiled.problem.digits
     out = {}
     for key, (name, kind) in keys.items():
-        text = _given_text(compiled.givens[name], variant.values[name], d)
+        text = given_text(compiled.givens[name], variant.values[name], d)
         out[key] = rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text
     return out
 
@@ -633,7 +633,7 @@ def build_exports(
     """What ``derive variants --moodle/--prairielearn`` writes, built in memory first so
     that a bad ``--result`` writes nothing. The variants are those ``write_variants``
     draws for the same file and seed."""
-    from derive.variants import compile_problem, draw
+    from derive.homework.variants import compile_problem, draw
 
     if moodle:
         parent = Path(moodle).parent

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from derive import escape
-from derive.solution import Solution
+from derive.steps.model import Solution
 from derive.symbols import latex_name, symbol
 
 MIN_ARROW = 1.3  # drawing units: the shortest arrow still readable
@@ -132,8 +132,7 @@ def _direction(n: sympy.Expr, t: sympy.Expr) -> tuple[float, float, float | None
 def describe(solution: Solution, after: bool = False) -> Figure:
     """The figure of stage 1 (before the impact) or of the answer (``after``); for a
     chain, that of its first impact (each impact stage draws its own)."""
-    stages = getattr(solution, "stages", ())
-    impacts = [st.solution for st in stages if getattr(st, "solution", None) is not None]
+    impacts = [st.part for st in solution.stages if st.part is not None]
     if impacts:
         return describe(impacts[0], after)
     p = solution.problem
@@ -222,7 +221,7 @@ def _value(solution: Solution, name: str) -> sympy.Expr:
 
 
 def _independent(p) -> dict:
-    from derive.impact import independent_map
+    from derive.physics.impact import independent_map
 
     return independent_map(p)
 

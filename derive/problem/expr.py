@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import sympy
 
-from derive.units import ANGLE, DIMENSIONLESS, Dim, describe
+from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 
 MAX_LENGTH = 500
 MAX_DEPTH = 40

@@ -12,7 +12,8 @@ from typing import Literal
 
 import sympy
 
-from derive.problem import Problem
+from derive.physics.results import Result
+from derive.problem import ChainProblem, Problem
 
 #: How a side of an equation line is printed:
 #: 'symbolic' as it stands; 'values' with each given's number in place of its
@@ -45,7 +46,10 @@ class Eqn:
     """An equation line ``side = side = ...``, with the notes' decorations.
 
     ``tag`` is the equation number; ``cancel`` holds symbols shown struck out;
-    ``unit`` follows the last side; ``implies`` starts the line with ⇒.
+    ``unit`` follows the last side; ``implies`` starts the line with ⇒; an
+    ``optional`` line (a sum shown term by term) may be left out where its numbers
+    cannot be shown so that they add up at the solution's figures; ``mark`` puts the
+    notes' "⟵ ANSWER" after the line.
     """
 
     sides: tuple[Side, ...]
@@ -54,6 +58,8 @@ class Eqn:
     unit: str | None = None
     implies: bool = False
     boxed: bool = False
+    optional: bool = False
+    mark: bool = False
 
 
 @dataclass(frozen=True)
@@ -71,51 +77,51 @@ class Block:
 
 @dataclass(frozen=True)
 class Stage:
-    """A numbered stage of the notes' layout (1 geometry, 2 kinetics, 3 solve, 4 answer)."""
+    """A numbered stage: of the notes' layout (1 geometry, 2 kinetics, 3 solve, 4 answer),
+    or of a chain, where an impact stage holds its own worked page in ``part``.
+
+    ``figure`` asks for the figure of the impact, "before" or "after"; ``carried``
+    lists what an impact stage hands on to the stages after it; ``values``, where
+    set, are the numbers known at this stage of a chain (its substitution lines use
+    these, not numbers a later stage finds).
+    """
 
     number: int
     title: str
-    blocks: tuple[Block, ...]
+    blocks: tuple[Block, ...] = ()
+    figure: str | None = None
+    part: Solution | None = None
+    carried: tuple[Eqn, ...] = ()
+    kind: str = "step"
+    values: dict[sympy.Symbol, sympy.Expr] | None = None
 
 
 @dataclass(frozen=True)
-class Result:
-    """A computed quantity.
-
-    ``closed`` is its closed form in the givens' symbols; ``value`` its exact
-    value in the problem's working unit (degrees for angles), or None when it
-    depends on a symbolic given, in which case ``partial`` holds the numbers
-    substituted and the symbols kept.
-    """
+class Answer:
+    """A chain's final answer, the quantity ``name``: a boxed line, or a yes/no ``verdict``."""
 
     name: str
-    symbol: sympy.Symbol
-    closed: sympy.Expr
-    value: sympy.Expr | None
-    partial: sympy.Expr
-    unit: str
-    description: str
+    line: Eqn | None = None
+    verdict: str | None = None
 
 
 @dataclass(frozen=True)
 class Solution:
-    """A solved problem: its results and the worked stages that reach them."""
+    """A solved problem or chain: its results and the worked stages that reach them.
 
-    problem: Problem
+    ``values`` maps each symbol with a number to its exact value, for substitution
+    lines; ``angles`` are the symbols held in radians and shown in degrees;
+    ``answers`` closes a chain.
+    """
+
+    problem: Problem | ChainProblem
     results: dict[str, Result]
     stages: tuple[Stage, ...]
     values: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
+    answers: tuple[Answer, ...] = ()
 
-    def _repr_markdown_(self) -> str:
-        from derive.render import render
-
-        return render(self, "md")
-
-    def _repr_latex_(self) -> str:
-        """The boxed answers as display math (for front ends that show LaTeX, not Markdown)."""
-        from derive.render import view
-
-        stages = view(self)["stages"]
-        lines = [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
-        return "\n".join(f"$${ln}$$" for ln in lines)
+    @property
+    def is_chain(self) -> bool:
+        """True for a chain of stages (``kind = "chain"``)."""
+        return isinstance(self.problem, ChainProblem)

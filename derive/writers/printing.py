@@ -16,12 +16,20 @@ from decimal import Decimal
 import sympy
 from sympy.printing.latex import LatexPrinter
 
-from derive.numbers import format_fixed, format_number, places_that_add_up, to_decimal
-from derive.solution import Block, Eqn, Side
+from derive.numbers import (
+    PRECISION,
+    as_written,
+    floatify,
+    format_fixed,
+    format_number,
+    places_that_add_up,
+    short_decimal,
+    structural,
+    to_decimal,
+)
+from derive.problem.units import latex_unit
+from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
-from derive.units import latex_unit
-
-PRECISION = 30
 
 
 @dataclass(frozen=True)
@@ -62,11 +70,16 @@ class Style:
     varied: frozenset[sympy.Symbol] = frozenset()
     slots: SlotBook | None = field(default=None, compare=False)
     block: int | None = None
+    hide_optional: bool = False
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
     """A number at ``digits`` (+``extra``) significant figures, in LaTeX."""
-    text = format_number(value, digits, extra=extra)
+    return power_latex(format_number(value, digits, extra=extra))
+
+
+def power_latex(text: str) -> str:
+    """``1.67e-27`` as ``1.67 \\times 10^{-27}``; plain numbers as they are."""
     if "e" in text:
         mant, exp = text.split("e")
         return rf"{mant} \times 10^{{{int(exp)}}}"
@@ -74,54 +87,12 @@ def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0
 
 
 def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
-    """A given's number as the file wrote it when short and exact (0.6, 20), else rounded."""
-    if value.is_Integer and abs(value) < 10**9:
+    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded."""
+    if value.is_Integer and abs(value) < 10**6:
         return str(value)
-    if value.is_Rational:
-        d = to_decimal(value)
-        q = value.q
-        while q % 2 == 0:
-            q //= 2
-        while q % 5 == 0:
-            q //= 5
-        if q == 1 and len(d.normalize().as_tuple().digits) <= 6:
-            return format(d.normalize(), "f")
+    if short_decimal(value):
+        return power_latex(as_written(value))
     return number_latex(value, digits, extra)
-
-
-def _short_decimal(value: sympy.Expr) -> bool:
-    """True for an exact number with a short decimal form (0.2, 12.5): printed as it is."""
-    if not value.is_Rational:
-        return False
-    q = value.q
-    for f in (2, 5):
-        while q % f == 0:
-            q //= f
-    return q == 1 and len(str(abs(to_decimal(value)).normalize())) <= 7
-
-
-def _structural(expr: sympy.Expr) -> bool:
-    """True for a sum, product, power or function of numbers that was built unevaluated
-    to be shown as it stands (19.81 - 5 · 9.507), not an exact value such as sqrt(2)/2."""
-    if not expr.is_number or expr.is_Number or expr.is_NumberSymbol:
-        return False
-    parts = expr.args
-
-    def ok(a: sympy.Expr) -> bool:
-        return isinstance(a, sympy.Float) or a.is_Rational or _structural(a)
-
-    if isinstance(expr, sympy.Pow):
-        return ok(parts[0]) and (parts[1].is_Integer or not parts[0].is_Rational) and parts[1].is_Number
-    if isinstance(expr, sympy.Function) and not isinstance(expr, sympy.Abs):
-        return all(ok(a) for a in parts) and not all(a.is_Rational and not _short_decimal(a) for a in parts)
-    if isinstance(expr, (sympy.Add, sympy.Mul)):
-        # SymPy merges the numbers of an evaluated sum or product into one: two
-        # numbers side by side mean it was built unevaluated, to be shown so.
-        numbers = sum(1 for a in parts if a.is_Number)
-        return all(ok(a) for a in parts) and (
-            numbers >= 2 or any(isinstance(a, sympy.Float) or _structural(a) for a in parts)
-        )
-    return False
 
 
 def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
@@ -155,58 +126,6 @@ def negate(expr: sympy.Expr) -> sympy.Expr:
             return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
         return sympy.Mul(first, *rest, evaluate=False)
     return -expr
-
-
-def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:
-    """``expr`` with every numeric part evaluated: one Float coefficient per product.
-
-    Structure (the order of terms, unexpanded products) is kept.
-    """
-    if isinstance(expr, sympy.UnevaluatedExpr):  # shown as built: (19.81 - 5 · 9.507)/25
-        inner = expr.args[0]
-        if inner.is_Atom:
-            return floatify(inner, keep_integers)
-        if isinstance(inner, sympy.Pow):
-            return sympy.UnevaluatedExpr(sympy.Pow(floatify(inner.base, keep_integers), inner.exp, evaluate=False))
-        kept = [floatify(a, keep_integers) for a in inner.args]
-        if isinstance(inner, (sympy.Add, sympy.Mul)):
-            return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
-        return sympy.UnevaluatedExpr(inner.func(*kept, evaluate=False))
-    if expr.is_Integer and keep_integers:
-        return expr
-    if expr.is_Number:
-        if keep_integers and _short_decimal(expr):
-            return expr  # a given as written (0.2 kg), not 0.2000
-        return sympy.Float(expr, PRECISION)
-    if _structural(expr):
-        # built unevaluated on purpose, as in (20 + 5) v_A2n: keep it so
-        if isinstance(expr, sympy.Pow):
-            return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
-        return expr.func(*(floatify(a, keep_integers) for a in expr.args), evaluate=False)
-    if expr.is_number:
-        exact = expr.doit()
-        if exact.is_Integer and keep_integers:
-            return exact
-        return sympy.Float(expr.evalf(PRECISION), PRECISION)
-    if expr.is_Atom:
-        return expr
-    if isinstance(expr, sympy.Pow):
-        return sympy.Pow(floatify(expr.base, keep_integers), expr.exp, evaluate=False)
-    args = [floatify(a, keep_integers) for a in expr.args]
-    if isinstance(expr, sympy.Mul):
-        nums = [a for a in args if a.is_Number]
-        rest = [a for a in args if not a.is_Number]
-        coeff: sympy.Expr = sympy.Integer(1)
-        for n in nums:
-            coeff = coeff * n
-        if isinstance(coeff, sympy.Rational) and not coeff.is_Integer and not (keep_integers and _short_decimal(coeff)):
-            coeff = sympy.Float(coeff, PRECISION)
-        if not rest:
-            return coeff
-        if coeff == 1:
-            return rest[0] if len(rest) == 1 else sympy.Mul(*rest, evaluate=False)
-        return sympy.Mul(coeff, *rest, evaluate=False)
-    return expr.func(*args, evaluate=False)
 
 
 def _factor_key(a: sympy.Expr) -> int:
@@ -293,13 +212,15 @@ class StepPrinter(LatexPrinter):
         return number_latex(expr, self._digits, self._extra)
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
-        if self._decimal_rationals and not self._round_integers and _short_decimal(expr):
-            return format(to_decimal(expr).normalize(), "f")
+        if self._decimal_rationals and not self._round_integers and short_decimal(expr):
+            return power_latex(as_written(expr))
         return super()._print_Rational(expr)
 
     def _print_Integer(self, expr: sympy.Integer) -> str:
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
+        if abs(expr.p) >= 10**6:
+            return power_latex(as_written(expr))
         return str(expr.p)
 
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
@@ -347,7 +268,7 @@ class StepPrinter(LatexPrinter):
             if (
                 isinstance(a, sympy.Rational)
                 and not a.is_Integer
-                and not (self._decimal_rationals and _short_decimal(a))
+                and not (self._decimal_rationals and short_decimal(a))
             ):
                 if a.p != 1:
                     num.insert(0, sympy.Integer(a.p))
@@ -385,7 +306,10 @@ class StepPrinter(LatexPrinter):
         prev = None
         for a in factors:
             s = self._print(a)
-            if (isinstance(a, sympy.Add) and not self._open(a)) or (prev is not None and s.startswith("-")):
+            wrap = isinstance(a, sympy.Add) and not self._open(a)
+            wrap = wrap or (prev is not None and s.startswith("-"))
+            wrap = wrap or (len(factors) > 1 and r"\times 10^" in s)  # (2 × 10^6)(1.67 × 10^-27)
+            if wrap:
                 s = r"\left(" + s + r"\right)"
             if prev is None:
                 out = s
@@ -406,6 +330,10 @@ class StepPrinter(LatexPrinter):
             base = self._print(expr.base)
             base = r"\left(" + base + r"\right)" if base.startswith("-") else base
             return f"{base}^{{{expr.exp}}}"
+        if expr.exp.is_Number and expr.exp < 0 and not expr.base.is_Number:
+            # 1/tan(x), not SymPy's power form of a function (which read "-1 tan x")
+            inverse = expr.base if expr.exp == -1 else sympy.Pow(expr.base, -expr.exp, evaluate=False)
+            return r"\frac{1}{" + self._print(inverse) + "}"
         saved, self._round_integers = self._round_integers, False
         try:
             return super()._print_Pow(expr)
@@ -478,7 +406,7 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
         if side.mode in ("numeric", "result"):
             term = substitute(term, style.values)
             collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
-            if term.is_number and (collapse or not _structural(term)):
+            if term.is_number and (collapse or not structural(term)):
                 term = floatify(term, keep_integers=side.mode == "numeric")
                 if term == 0:
                     term = sympy.Integer(0)
@@ -534,7 +462,12 @@ def _slot_term(
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
+    printed: list[str] = []
+    for s in eqn.sides:
+        text = latex_side(s, style, extra, eqn.cancel)
+        if not printed or text != printed[-1]:  # v_2 = -u, not v_2 = -u = -u
+            printed.append(text)
+    body = " = ".join(printed)
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
@@ -573,7 +506,9 @@ def block_style(block: Block, style: Style) -> Style:
         ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
         for terms, total in block.sums
     ]
-    return replace(style, decimals=places_that_add_up(sums, style.digits, style.extra))
+    places = places_that_add_up(sums, style.digits, style.extra)
+    # no places at which the rounded terms add up: leave out the line that shows them
+    return replace(style, decimals=places, hide_optional=places is None)
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:
@@ -584,9 +519,6 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
         p = StepPrinter(digits=style.digits)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
     if isinstance(expr, sympy.Eq):
-        return (
-            StepPrinter(digits=style.digits).doprint(expr.lhs)
-            + " = "
-            + StepPrinter(digits=style.digits).doprint(expr.rhs)
-        )
-    return StepPrinter(digits=style.digits).doprint(expr)
+        printer = StepPrinter(digits=style.digits, decimal_rationals=True)
+        return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
+    return StepPrinter(digits=style.digits, decimal_rationals=True).doprint(expr)

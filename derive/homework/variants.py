@@ -19,12 +19,12 @@ from decimal import Decimal
 import sympy
 
 from derive.errors import InputError
-from derive.impact import independent_map
 from derive.numbers import format_fixed, format_number, places_that_add_up
-from derive.printing import SlotBook, exact_latex
+from derive.physics.impact import independent_map
 from derive.problem import Given, Problem
-from derive.solution import Solution
-from derive.units import plain_unit
+from derive.problem.units import plain_unit
+from derive.steps.model import Solution
+from derive.writers.printing import SlotBook, exact_latex
 
 _TOKEN = re.compile(r"DRVSLOT(\d+)X")
 MAX_ATTEMPTS_PER_VARIANT = 200
@@ -73,8 +73,8 @@ def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> obj
 
 def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
     """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
-    from derive.render import _env, view
-    from derive.solve import solve
+    from derive.steps import solve
+    from derive.writers.view import environment, view
 
     if not problem.vary:
         raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
@@ -87,10 +87,10 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols))
     templates = {}
     if fmt in ("md", "json"):
-        page = _env("md").get_template("solution.md.j2").render(**data)
+        page = environment("md").get_template("solution.md.j2").render(**data)
         templates["md"] = _split(page)
     if fmt in ("tex", "pdf"):
-        page = _env("tex").get_template("solution.tex.j2").render(**data)
+        page = environment("tex").get_template("solution.tex.j2").render(**data)
         templates["tex"] = _split(page)
     fixed = {k: v for k, v in symbolic.numeric().items()}
     ind = independent_map(symbolic)
@@ -186,7 +186,7 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
     return out
 
 
-def _given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
+def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
     if g.unit == "deg":
         return exact_latex(value * 180 / sympy.pi, digits, 1)
     return exact_latex(value, digits, 1)
@@ -224,7 +224,7 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
     args = [float(variant.values[n]) for n in compiled.names]
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
     places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
-    texts = {compiled.givens[n].symbol: _given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
     out = []
     for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
         if isinstance(part, str):
@@ -414,6 +414,6 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
         if fmt == "tex":
             write_atomic(folder / f"{stem}.tex", tex)
         else:
-            from derive.pdf import build_pdf
+            from derive.writers.pdf import build_pdf
 
             write_atomic(folder / f"{stem}.pdf", build_pdf(tex))

@@ -261,3 +261,31 @@ def evaluate(expr: sympy.Expr, problem: Problem) -> sympy.Expr:
 def is_numeric(expr: sympy.Expr) -> bool:
     """True when ``expr`` has no free symbols left."""
     return not expr.free_symbols
+
+
+def numbered(imp: Impact) -> dict[int, sympy.Expr]:
+    """Each of the impact's equations as ``lhs - rhs``, in the givens, with every number in."""
+    out = {}
+    for k, eq in imp.equations.items():
+        lhs, rhs = eq.lhs, eq.rhs
+        if k == 4:  # e (v_A1n - v_B1n) = v_B2n - v_A2n
+            lhs, rhs = eq.lhs * (imp.names.A1n - imp.names.B1n), imp.names.B2n - imp.names.A2n
+        out[k] = evaluate((lhs - rhs).xreplace(imp.pre), imp.problem)
+    return out
+
+
+def root_rule(imp: Impact, u: sympy.Symbol) -> str | None:
+    """Which rule picks the physical root of the unknown ``u`` where its equations are not
+    linear in it: 'e' (0 <= e <= 1), 'angle' (between -180° and 180°, the bodies
+    approaching) or 'sign' (a speed or mass not negative); None when the root is unique."""
+    eqs = [ex for ex in numbered(imp).values() if ex.has(u)]
+    if not any(not ex.is_polynomial(u) or sympy.degree(ex, u) > 1 for ex in eqs):
+        return None
+    if u.name == "e":
+        return "e"
+    g = next((g for g in imp.problem.givens if g.symbol == u), None)
+    if g is not None and g.unit == "deg":
+        return "angle"
+    if u.is_positive or u.is_nonnegative:
+        return "sign"
+    return None

@@ -9,21 +9,32 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
 import jinja2
 import sympy
 
-from derive import escape, figure
+from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.printing import SlotBook, StepPrinter, Style, block_style, exact_latex, latex_eqn, latex_expr, latex_inline
 from derive.problem import Given
+from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
-from derive.solution import Eqn, Math, Side, Solution
+from derive.steps.model import Math, Solution
 from derive.symbols import latex_name, symbol
-from derive.units import latex_unit, plain_unit
+from derive.writers import figure
+from derive.writers.printing import (
+    SlotBook,
+    StepPrinter,
+    Style,
+    block_style,
+    exact_latex,
+    latex_eqn,
+    latex_expr,
+    latex_inline,
+)
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
@@ -31,7 +42,7 @@ IMPLIES = r"\Rightarrow\quad "
 
 
 @cache
-def _env(kind: str) -> jinja2.Environment:
+def environment(kind: str) -> jinja2.Environment:
     """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
     options: dict[str, Any] = {}
     if kind == "tex":
@@ -151,10 +162,11 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     for block in blocks_in:
         bstyle = block_style(block, style)
         lines: list[dict[str, Any]] = []
-        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-        for i, eqn in enumerate(block.lines):
+        for eqn in block.lines:
+            if eqn.optional and bstyle.hide_optional:
+                continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
-            if i == last_boxed:
+            if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
@@ -190,8 +202,8 @@ def view(
     for stage in solution.stages:
         blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
-        if figures and stage.number in (1, 4):
-            fig = figure.describe(solution, after=stage.number == 4)
+        if figures and stage.figure is not None:
+            fig = figure.describe(solution, after=stage.figure == "after")
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
             entry["figure_caption"] = fig.title + ": arrows to scale with speed"
@@ -226,7 +238,7 @@ def view(
 
 def _html(data: dict[str, Any]) -> str:
     """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
-    from derive import html as html_mod
+    from derive.writers import katex as html_mod
 
     items: list[tuple[str, bool]] = []
 
@@ -260,7 +272,9 @@ def _html(data: dict[str, Any]) -> str:
             for line in block["lines"]:
                 line["html"] = rendered[line.pop("slot")]
     data["find"] = [("text", s_) if k == "text" else ("math", s_) for k, s_ in data["find"]]
-    return _env("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    return (
+        environment("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    )
 
 
 def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
@@ -335,14 +349,10 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
     stages = []
     for st in sol.stages:
-        if st.solution is not None:
-            v = view(st.solution, digits, figures=figures)
-            carried = []
-            for new, rname in st.exports:
-                r = sol.results[new]
-                value = r.value if r.value is not None else r.partial
-                eqn = Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((value,), "result")), unit=r.unit or None)
-                carried.append(latex_eqn(eqn, style)[0])
+        stage_style = style if st.values is None else replace(style, values=st.values)
+        if st.part is not None:
+            v = view(st.part, digits, figures=figures)
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -355,22 +365,14 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             )
         else:
             stages.append(
-                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
             )
-    names = list(p.find) or list(sol.stages[-1].outputs)
-    verdicts = {n for st in sol.stages if st.type == "again" for n in st.outputs}
     answers = []
-    for name in names:
-        r = sol.results.get(name)
-        if r is None:
-            raise InputError(f"find names {name!r}, which no stage computes", where=p.path, field="find")
-        if name in verdicts:
-            said = "yes" if r.value == 1 else "no"
-            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {said}}}}}"})
-            continue
-        value = r.value if r.value is not None else r.partial
-        eqn = Eqn((Side((r.symbol,)), Side((value,), "result")), unit=r.unit or None, boxed=True)
-        answers.append({"latex": latex_eqn(eqn, style)[0]})
+    for a in sol.answers:
+        if a.verdict is not None:
+            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"})
+        else:
+            answers.append({"latex": latex_eqn(a.line, style)[0]})
     if answers:
         answers[-1]["latex"] += ANSWER_MARK
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
@@ -379,6 +381,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         shown = exact_latex(sol.values[g_sym], style.digits, 1)
         unit = "m/s^2" if p.system == "SI" else "ft/s^2"
         givens.append({"latex": rf"g = {shown}\ {latex_unit(unit)}", "note": "standard gravity, not given"})
+    names = [a.name for a in sol.answers]
     find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
     return {
         "title": p.title,
@@ -445,16 +448,14 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
-    from derive.chain import ChainSolution
-
-    if isinstance(solution, ChainSolution):
+    if solution.is_chain:
         if fmt == "json":
             return _chain_json(solution, digits)
         if fmt == "md":
-            return _env("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
+            return environment("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
         if fmt in ("tex", "tex-fragment"):
             data = chain_view(solution, digits, figures, standalone=fmt == "tex")
-            return _env("tex").get_template("chain.tex.j2").render(**data)
+            return environment("tex").get_template("chain.tex.j2").render(**data)
         raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
     if fmt == "json":
         return to_json(solution, digits)
@@ -464,6 +465,37 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
     if fmt == "html":
         return _html(data)
     if fmt == "md":
-        return _env("md").get_template("solution.md.j2").render(**data)
+        return environment("md").get_template("solution.md.j2").render(**data)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
-    return _env("tex").get_template(template).render(**data)
+    return environment("tex").get_template(template).render(**data)
+
+
+def boxed_lines(solution: Solution) -> list[str]:
+    """The LaTeX of the solution's boxed lines (its answers)."""
+    if solution.is_chain:
+        return [a["latex"] for a in chain_view(solution, figures=False)["answers"]]
+    stages = view(solution, figures=False)["stages"]
+    return [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+
+
+def plain_answers(solution: Solution) -> list[str]:
+    """The answers the problem asks for, as short plain text: ``v_A2 = 3.05 e_t - 1.11 e_n m/s``."""
+    p = solution.problem
+    verdicts = {a.name: a.verdict for a in solution.answers if a.verdict is not None}
+    names = [a.name for a in solution.answers] if solution.is_chain else list(p.find)
+    out = []
+    for name in names:
+        if name in verdicts:
+            out.append(f"{name}: {verdicts[name]}")
+            continue
+        t, n = solution.results.get(name + "t"), solution.results.get(name + "n")
+        r = solution.results.get(name)
+        if not solution.is_chain and p.oblique and name in ("v_A2", "v_B2") and t and n:
+            if t.value is not None and n.value is not None:
+                sign = "-" if n.value < 0 else "+"
+                shown_n = format_number(abs(n.value), p.digits)
+                out.append(f"{name} = {format_number(t.value, p.digits)} e_t {sign} {shown_n} e_n {plain_unit(t.unit)}")
+        elif r is not None and r.value is not None:
+            unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
+            out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
+    return out

@@ -21,9 +21,9 @@ from typing import Any
 
 import sympy
 
-from derive.printing import Style, latex_eqn, latex_inline
-from derive.solution import Block, Eqn, Math, Side, Text
+from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.symbols import kind_of, symbol
+from derive.writers.printing import Style, latex_eqn, latex_inline
 
 TITLE = "Central impact: the equations"
 

@@ -33,13 +33,15 @@ from typing import Any
 
 import sympy
 
-from derive import escape, mistakes, units
+from derive import escape
+from derive.checking import mistakes
 from derive.errors import InputError
-from derive.expr import ParseError, parse
 from derive.numbers import format_number, to_decimal
-from derive.problem import Problem
-from derive.solution import Result, Solution
-from derive.units import ACCELERATION, ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, VELOCITY, Dim
+from derive.physics.results import Result
+from derive.problem import Problem, units
+from derive.problem.expr import ParseError, parse
+from derive.problem.units import ACCELERATION, ANGLE, DIMENSIONLESS, FORCE, LENGTH, MASS, VELOCITY, Dim
+from derive.steps.model import Solution
 
 FORMATS = ("text", "md", "json")
 #: Random points at which two formulas are compared when simplification cannot decide.
@@ -329,10 +331,10 @@ def load_answers(path: str | Path) -> Answers:
 
 def loads_answers(text: str, *, path: str = "<answers>") -> Answers:
     """Read answers given as TOML text (``path`` only names it in messages)."""
-    from derive.problem import _Ctx, parse_toml
+    from derive.problem import Source, parse_toml
 
     data = parse_toml(text, path)
-    lines = _Ctx(path, text)
+    lines = Source(path, text)
 
     def where(section: str | None, key: str | None) -> str:
         n = lines.line_of(section, key)
@@ -410,7 +412,7 @@ def check(
     True
     """
     if isinstance(solution, Problem):
-        from derive.solve import solve
+        from derive.steps import solve
 
         solution = solve(solution)
     given = _as_answers(answers, equations)
@@ -1320,7 +1322,8 @@ def run(
     fmt: str = "text",
 ) -> tuple[Report, str]:
     """What ``derive check`` does: load, solve, check; returns the report and its rendering."""
-    import derive
+    from derive.problem import load
+    from derive.steps import solve
 
     given = Answers()
     if answers_file:
@@ -1333,7 +1336,7 @@ def run(
     tol = parse_tolerance(tolerance) if tolerance is not None else given.tolerance
     if not given.answers and not given.equations:
         raise InputError("nothing to check: give answers with --answer NAME=VALUE or --answers FILE", where="usage")
-    solution = derive.solve(derive.load(problem))
+    solution = solve(load(problem))
     report = check(solution, given, tolerance=tol)
     return report, report.render(fmt)
 

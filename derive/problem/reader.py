@@ -8,19 +8,18 @@ from __future__ import annotations
 
 import math
 import re
-import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import sympy
 
-from derive import units
 from derive.errors import ExpressionError, InputError, PhysicsError, UnitError
-from derive.expr import NAME_RE, ParseError, parse
+from derive.problem import units
+from derive.problem.expr import NAME_RE, ParseError, parse
+from derive.problem.source import Source, text_field, type_name
+from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
-from derive.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 
 KINDS = ("direct", "oblique")
 TOP_FIELDS = (
@@ -44,7 +43,6 @@ GEOMETRY_FIELDS = ("n_angle", "offset", "centre_A", "centre_B")
 BODY_FIELDS = ("angle", "from", "toward", "fixed", "name")
 AXES = ("+n", "-n", "+t", "-t")
 XY_AXES = ("+x", "-x", "+y", "-y")
-MAX_TEXT = 5000
 MAX_GIVENS = 60
 
 #: Names whose meaning (and so dimension) the notes fix.
@@ -197,129 +195,14 @@ class Problem:
         return {g.name: g.symbol for g in self.givens}
 
 
-class _Ctx:
-    """Where we are in a file, to put in messages."""
-
-    def __init__(self, path: str, text: str) -> None:
-        self.path = path
-        self.lines = text.splitlines()
-
-    def line_of(self, section: str | None, key: str | None) -> int | None:
-        current: str | None = None
-        for i, raw in enumerate(self.lines, 1):
-            line = raw.strip()
-            m = re.match(r"^\[\s*([^\]]+?)\s*\]", line)
-            if m:
-                current = m.group(1)
-                continue
-            if current == section and re.match(rf"^[\"']?{re.escape(key or '')}[\"']?\s*=", line):
-                return i
-        if key is None and section is not None:
-            for i, raw in enumerate(self.lines, 1):
-                if re.match(rf"^\s*\[\s*{re.escape(section)}\s*\]", raw):
-                    return i
-        return None
-
-    def error(
-        self,
-        what: str,
-        section: str | None = None,
-        key: str | None = None,
-        value: Any = None,
-        cls: type[InputError] = InputError,
-    ) -> InputError:
-        line = self.line_of(section, key)
-        where = f"{self.path}:{line}" if line else self.path
-        fld = None
-        if key is not None:
-            shown = _show(value) if value is not None else None
-            fld = (f"[{section}] " if section else "") + _printable(key) + (f" = {shown}" if shown is not None else "")
-        elif section is not None:
-            fld = f"[{section}]"
-        return cls(what, where=where, field=fld)
-
-
-def _printable(text: str) -> str:
-    """A key from the file as it can appear in a one-line message: control and
-    line-breaking characters escaped (a newline, ESC, U+2028 stay visible and harmless)."""
-    return "".join(ch if ch.isprintable() else ch.encode("unicode_escape").decode("ascii") for ch in text)
-
-
-def _show(value: Any) -> str:
-    text = repr(value) if isinstance(value, str) else str(value)
-    if len(text) > 60:
-        text = text[:57] + "…"
-    return text.replace("\n", " ")
-
-
-def load(path: str | Path, *, name: str | None = None) -> Problem:
-    """Read and check the problem file at ``path``.
-
-    Raises :class:`~derive.errors.InputError` (one line: file, field, what was
-    expected) on anything that is not a well-posed central-impact problem.
-
-    >>> p = load(bundled_path("notes-4c11-two-spheres"))  # doctest: +SKIP
-    """
-    from derive.fileio import read_user_text
-
-    path = Path(path)
-    shown = str(path)
-    text = read_user_text(path, "a problem file")
-    return loads(text, path=shown, name=name or path.stem)
-
-
-def parse_toml(text: str, path: str) -> dict[str, Any]:
-    """TOML text as a table, or a one-line InputError at the line TOML names."""
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        m = re.search(r"\(at line (\d+), column \d+\)", msg)
-        where = f"{path}:{m.group(1)}" if m else path
-        what = re.sub(r"\s*\(at line \d+, column \d+\)", "", msg) or "invalid TOML"
-        raise InputError(f"not valid TOML: {what[0].lower() + what[1:]}", where=where) from None
-
-
-def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem:
-    """Check a problem given as TOML text (``path`` only names it in messages)."""
-    ctx = _Ctx(path, text)
-    data = parse_toml(text, path)
-    if isinstance(data, dict) and data.get("kind") == "chain":
-        from derive.chain import build_chain
-
-        return build_chain(data, ctx, name)  # type: ignore[return-value]
-    return _build(data, ctx, name)
-
-
-def _text(data: Mapping[str, Any], key: str, ctx: _Ctx, required: bool = False) -> str | None:
-    value = data.get(key)
-    if value is None:
-        if required:
-            raise ctx.error("is missing: give the problem a title (a line of text)", key=key)
-        return None
-    if not isinstance(value, str):
-        raise ctx.error(f"expected text, not {_type(value)}", key=key, value=value)
-    if len(value) > MAX_TEXT:
-        raise ctx.error(f"is too long ({len(value)} characters, at most {MAX_TEXT})", key=key)
-    if "\x00" in value:
-        raise ctx.error("contains a NUL character", key=key)
-    return value
-
-
-def _type(value: Any) -> str:
-    return {bool: "true/false", int: "a number", float: "a number", str: "text", list: "a list", dict: "a table"}.get(
-        type(value), type(value).__name__
-    )
-
-
-def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given] | None = None) -> Problem:
+def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[str, Given] | None = None) -> Problem:
     """A Problem from parsed TOML. ``seed`` holds givens known already (a chain's
     earlier results): the file's values may refer to them, and a required name the
     file leaves out (m_A, e, ...) is taken from them."""
     for key in data:
         if key not in TOP_FIELDS:
             raise ctx.error(f"unknown field (expected one of: {', '.join(TOP_FIELDS)})", key=key)
-    title = _text(data, "title", ctx, required=True)
+    title = text_field(data, "title", ctx, required=True)
     assert title is not None
     kind = data.get("kind")
     if kind not in KINDS:
@@ -337,12 +220,12 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given]
     if given_tbl is None:
         raise ctx.error("is missing: give the masses, e and the velocities before the impact", section="given")
     if not isinstance(given_tbl, dict):
-        raise ctx.error(f"expected a table, not {_type(given_tbl)}", key="given")
+        raise ctx.error(f"expected a table, not {type_name(given_tbl)}", key="given")
     if len(given_tbl) > MAX_GIVENS:
         raise ctx.error(f"has too many entries ({len(given_tbl)}, at most {MAX_GIVENS})", section="given")
     if system is None:
-        system = _infer_system(given_tbl)
-    givens = _givens(given_tbl, ctx, oblique, system, seed)
+        system = infer_system(given_tbl)
+    givens = build_givens(given_tbl, ctx, oblique, system, seed)
     by_name = {g.name: g for g in givens}
     b_tbl = data.get("B")
     b_fixed = isinstance(b_tbl, dict) and b_tbl.get("fixed") is True
@@ -360,7 +243,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given]
     for b in "AB":
         tbl = data.get(b, {})
         if not isinstance(tbl, dict):
-            raise ctx.error(f"expected a table, not {_type(tbl)}", key=b)
+            raise ctx.error(f"expected a table, not {type_name(tbl)}", key=b)
         for k in tbl:
             if k not in BODY_FIELDS:
                 raise ctx.error(f"unknown field (expected one of: {', '.join(BODY_FIELDS)})", section=b, key=k)
@@ -461,9 +344,9 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given]
         find=find,
         system=system,
         digits=digits,
-        source=_text(data, "source", ctx),
-        statement=_text(data, "statement", ctx),
-        question=_text(data, "question", ctx),
+        source=text_field(data, "source", ctx),
+        statement=text_field(data, "statement", ctx),
+        question=text_field(data, "question", ctx),
         name=name,
         fixed_B=fixed_B,
         name_B=body_tbls["B"].get("name"),
@@ -476,7 +359,7 @@ def _build(data: dict[str, Any], ctx: _Ctx, name: str, seed: Mapping[str, Given]
     return problem
 
 
-def _infer_system(tbl: Mapping[str, Any]) -> str:
+def infer_system(tbl: Mapping[str, Any]) -> str:
     votes = {"SI": 0, "US": 0}
     for value in tbl.values():
         if isinstance(value, str):
@@ -491,8 +374,8 @@ def _infer_system(tbl: Mapping[str, Any]) -> str:
     return "US" if votes["US"] > votes["SI"] else "SI"
 
 
-def _givens(
-    tbl: Mapping[str, Any], ctx: _Ctx, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
+def build_givens(
+    tbl: Mapping[str, Any], ctx: Source, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
 ) -> list[Given]:
     """Build the givens in dependency order (a given may be defined from others).
 
@@ -514,15 +397,18 @@ def _givens(
         if isinstance(raw, str) and raw.strip() == key and key in seed:
             done[key] = seed[key]
             del pending[key]
-    known = {**seed, **done}
+    # In a chain's stage, a name on the right refers to the chain's quantity, even
+    # where the stage defines the same name for itself (m_A = "m_B", m_B = "m_C").
+    outer = {k: g for k, g in seed.items() if k in pending}
     while pending:
         progressed = False
         for key in list(pending):
             raw = pending[key]
-            deps = _names_in(raw) & set(tbl)
+            deps = (_names_in(raw) & set(tbl)) - set(seed)
             if deps - set(done):
                 continue
-            done[key] = _given(key, raw, {**known, **done}, ctx, oblique, system)
+            scope = {**done, **seed, **{k: _alias(g) for k, g in outer.items()}}
+            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system), outer, ctx)
             del pending[key]
             progressed = True
         if not progressed:
@@ -536,18 +422,45 @@ def _givens(
     return [done[k] for k in tbl]
 
 
+def _alias(g: Given) -> Given:
+    """A chain's quantity that a stage shadows, under a symbol of its own while parsed."""
+    return replace(g, symbol=sympy.Symbol(g.name + "__outer", **g.symbol.assumptions0))
+
+
+def _outer(g: Given, outer: Mapping[str, Given], ctx: Source) -> Given:
+    """``g`` with every shadowed chain quantity it names put in by its value (or definition)."""
+    if g.definition is None or not outer:
+        return g
+    subs = {}
+    for name, o in outer.items():
+        alias = _alias(o).symbol
+        if not g.definition.has(alias):
+            continue
+        if o.value is None and o.definition is None:
+            raise ctx.error(
+                f"refers to the chain's {name}, which this stage also defines: rename one of them",
+                section="given",
+                key=g.name,
+            )
+        subs[alias] = o.value if o.value is not None else o.definition
+    if not subs:
+        return g
+    definition = g.definition.xreplace(subs)
+    return replace(g, definition=definition if definition.free_symbols else None)
+
+
 def _names_in(raw: Any) -> set[str]:
     if not isinstance(raw, str):
         return set()
     return set(re.findall(r"[A-Za-z][A-Za-z0-9_]*", raw))
 
 
-def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: _Ctx, oblique: bool, system: str) -> Given:
+def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: bool, system: str) -> Given:
     expected = RESERVED.get(key)
     sym = symbol(key, kind_of(key, oblique))
     err = lambda what, cls=InputError: ctx.error(what, section="given", key=key, value=raw, cls=cls)  # noqa: E731
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
-        raise err(f'expected a number or text such as "5 m/s", not {_type(raw)}')
+        raise err(f'expected a number or text such as "5 m/s", not {type_name(raw)}')
     if isinstance(raw, float) and not math.isfinite(raw):
         raise err("expected a finite number")
     if isinstance(raw, (int, float)):
@@ -664,7 +577,7 @@ def _quantity(
     return Given(key, sym, unit.dim, value, work.text, written=f"{number} {unit.text}")
 
 
-def _check_ranges(by_name: Mapping[str, Given], raw: Mapping[str, Any], ctx: _Ctx) -> None:
+def _check_ranges(by_name: Mapping[str, Given], raw: Mapping[str, Any], ctx: Source) -> None:
     e = by_name["e"].value
     if e is not None and not (0 <= e <= 1):
         raise ctx.error(
@@ -699,7 +612,7 @@ def _num(value: sympy.Expr) -> str:
 
 
 def _geometry(
-    geo: Any, givens: list[Given], by_name: dict[str, Given], ctx: _Ctx, oblique: bool, system: str
+    geo: Any, givens: list[Given], by_name: dict[str, Given], ctx: Source, oblique: bool, system: str
 ) -> sympy.Symbol | None:
     """The line of impact in the problem's x-y axes: its angle phi from +x toward +y,
     given directly, from an offset between parallel paths (sin phi = d/(r_A + r_B)),
@@ -707,7 +620,7 @@ def _geometry(
     if geo is None:
         return None
     if not isinstance(geo, dict):
-        raise ctx.error(f"expected a table, not {_type(geo)}", key="geometry")
+        raise ctx.error(f"expected a table, not {type_name(geo)}", key="geometry")
     for k in geo:
         if k not in GEOMETRY_FIELDS:
             raise ctx.error(f"unknown field (expected one of: {', '.join(GEOMETRY_FIELDS)})", section="geometry", key=k)
@@ -760,7 +673,12 @@ def _geometry(
 
 
 def _motion(
-    b: str, tbl: Mapping[str, Any], by_name: dict[str, Given], ctx: _Ctx, oblique: bool, phi: sympy.Symbol | None = None
+    b: str,
+    tbl: Mapping[str, Any],
+    by_name: dict[str, Given],
+    ctx: Source,
+    oblique: bool,
+    phi: sympy.Symbol | None = None,
 ) -> tuple[Motion, Given | None]:
     speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
     x_name, y_name = f"v_{b}1x", f"v_{b}1y"
@@ -900,7 +818,7 @@ RESULT_DIMS: dict[str, Dim] = {
 
 
 def _vary(
-    raw: Any, by_name: dict[str, Given], ctx: _Ctx, oblique: bool, system: str
+    raw: Any, by_name: dict[str, Given], ctx: Source, oblique: bool, system: str
 ) -> dict[str, tuple[sympy.Expr, ...]]:
     """Ranges or choices for homework variants: { m_A = { min = "2 kg", max = "10 kg", step = "0.5 kg" } }."""
     if raw is None:
@@ -942,7 +860,7 @@ def _vary(
     return out
 
 
-def _conditions(raw: Any, by_name: Mapping[str, Given], ctx: _Ctx) -> tuple[Condition, ...]:
+def _conditions(raw: Any, by_name: Mapping[str, Given], ctx: Source) -> tuple[Condition, ...]:
     """Conditions on givens and results, each "lhs < rhs" (< <= > >=), parsed safely."""
     if raw is None:
         return ()
@@ -965,7 +883,7 @@ def _conditions(raw: Any, by_name: Mapping[str, Given], ctx: _Ctx) -> tuple[Cond
     return tuple(out)
 
 
-def _answer_units(raw: Any, ctx: _Ctx) -> dict[str, str]:
+def _answer_units(raw: Any, ctx: Source) -> dict[str, str]:
     """Results to show also in a unit of the user's choice: {v_A2 = "km/h"}."""
     if raw is None:
         return {}
@@ -985,7 +903,7 @@ def _answer_units(raw: Any, ctx: _Ctx) -> dict[str, str]:
     return out
 
 
-def _find(raw: Any, ctx: _Ctx, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
+def _find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
     default = unknown or ("v_A2", "v_B2")
     if raw is None:
         return default
@@ -1000,7 +918,7 @@ def _find(raw: Any, ctx: _Ctx, oblique: bool, unknown: tuple[str, ...] = ()) -> 
     return tuple(dict.fromkeys(raw))
 
 
-def _check_approach(problem: Problem, ctx: _Ctx) -> None:
+def _check_approach(problem: Problem, ctx: Source) -> None:
     approach = problem.motion_A.n - problem.motion_B.n
     value = approach.xreplace(problem.numeric())
     if value.free_symbols:

@@ -1,0 +1,61 @@
+"""One impact solved: equations (1)-(4) in closed form, every result, and the numbers.
+
+This is what the physics hands on: the writer (:mod:`derive.steps`) turns it into
+worked steps, the checker compares hand answers with it, and a chain keeps one per
+impact stage.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+from derive.physics.impact import Impact, evaluate, setup
+from derive.physics.results import Result, results
+from derive.problem import Motion, Problem
+from derive.symbols import symbol
+
+
+@dataclass(frozen=True)
+class ImpactOutcome:
+    """An impact solved: ``values`` maps each symbol with a number (givens, and the
+    n-t components of velocities given in x-y axes) to its exact value; ``angles``
+    are the givens held in radians and shown in degrees."""
+
+    problem: Problem
+    impact: Impact
+    results: dict[str, Result]
+    values: dict[sympy.Symbol, sympy.Expr]
+    angles: frozenset[sympy.Symbol]
+
+
+def xy_motions(imp: Impact) -> list[tuple[Motion, tuple[sympy.Symbol, sympy.Symbol]]]:
+    """The bodies whose velocity was given in x-y axes, with their n-t component symbols."""
+    p, nm = imp.problem, imp.names
+    out = []
+    for motion, comps in ((p.motion_A, (nm.A1n, nm.A1t)), (p.motion_B, (nm.B1n, nm.B1t))):
+        if motion.x is not None:
+            out.append((motion, comps))
+    return out
+
+
+def solve_impact(problem: Problem) -> ImpactOutcome:
+    """Solve ``problem``'s equations (1)-(4) in closed form and evaluate every result.
+
+    >>> from derive import load  # doctest: +SKIP
+    >>> solve_impact(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
+    -7*cos(47*pi/225)/5
+    """
+    imp = setup(problem)
+    found = results(imp)
+    values: dict[sympy.Symbol, sympy.Expr] = dict(problem.numeric())
+    for motion, (cn, ct) in xy_motions(imp):
+        b = motion.body
+        xy = ((symbol(f"v_{b}1x"), motion.x), (symbol(f"v_{b}1y"), motion.y))
+        for c, expr in ((cn, motion.n), (ct, motion.t), *xy):
+            v = evaluate(expr, problem)
+            if not v.free_symbols:
+                values[c] = v
+    angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
+    return ImpactOutcome(problem, imp, found, values, angles)

@@ -1,0 +1,172 @@
+"""What an impact gives besides the velocities: speeds, directions, kinetic energies, impulse.
+
+Each result keeps its closed form in the givens' symbols and its exact value (or,
+where a given stays symbolic, the numbers substituted and the symbols kept).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy
+
+from derive.errors import SolveError
+from derive.physics.energy import HALF
+from derive.physics.impact import Impact, evaluate, independent_map
+from derive.problem import Problem, units
+from derive.symbols import symbol
+
+
+@dataclass(frozen=True)
+class Result:
+    """A computed quantity.
+
+    ``closed`` is its closed form in the givens' symbols; ``value`` its exact
+    value in the problem's working unit (degrees for angles), or None when it
+    depends on a symbolic given, in which case ``partial`` holds the numbers
+    substituted and the symbols kept.
+    """
+
+    name: str
+    symbol: sympy.Symbol
+    closed: sympy.Expr
+    value: sympy.Expr | None
+    partial: sympy.Expr
+    unit: str
+    description: str
+
+
+def results(imp: Impact) -> dict[str, Result]:
+    p, nm = imp.problem, imp.names
+    out: dict[str, Result] = {}
+    unit_v = working_unit(p, "velocity")
+    solved = dict(imp.closed)
+    varied = {g.symbol for g in p.givens if g.name in p.vary}
+
+    def full(expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
+        return imp.in_givens(expr).xreplace(solved)
+
+    def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
+        partial = evaluate(closed, p)
+        # simplify what stays symbolic for the reader; a homework variant's givens are
+        # numbers later, so their expressions need no simplifying
+        if partial.free_symbols - varied and sympy.count_ops(partial) < 150:
+            partial = sympy.simplify(partial)
+        if degrees and partial.free_symbols and isinstance(partial, sympy.atan2):
+            partial = _atan2_number(*partial.args)
+        value: sympy.Expr | None = None
+        if not partial.free_symbols:
+            value = partial * 180 / sympy.pi if degrees else partial
+        elif degrees:
+            partial = partial * 180 / sympy.pi
+        out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
+
+    for g in p.givens:
+        if g.unknown:
+            add(g.name, solved[g.symbol], g.unit, f"{g.name}, unknown in the file", degrees=g.unit == "deg")
+    if p.oblique:
+        comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
+        for name, s_ in comps.items():
+            body, axis = name[2], name[-1]
+            add(name, full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
+        for b in "AB":
+            if b == "B" and p.fixed_B:
+                continue
+            n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
+            add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
+            ang = _angle(n, t, p)
+            if ang is not None:
+                add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
+                add(
+                    f"beta_{b}2",
+                    sympy.atan2(t, n),
+                    "deg",
+                    f"direction of {b} after the impact, from +n toward +t",
+                    degrees=True,
+                )
+        if p.phi is not None:
+            for b in "AB":
+                if b == "B" and p.fixed_B:
+                    continue
+                n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
+                c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
+                add(f"v_{b}2x", n * c - t * s_, unit_v, f"velocity of {b} after the impact, x component")
+                add(f"v_{b}2y", n * s_ + t * c, unit_v, f"velocity of {b} after the impact, y component")
+    else:
+        add("v_A2", full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
+        if not p.fixed_B:
+            add("v_B2", full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
+    ind = independent_map(p)
+    sym = p.symbols()
+    m_A = full(sym["m_A"].xreplace(ind))
+    m_B = sympy.Integer(0) if p.fixed_B else full(sym["m_B"].xreplace(ind))
+    # Kinetic energy. Worked in the component symbols it is polynomial, so it
+    # factors quickly and exactly; then the givens go in. (A fixed B has none.)
+    sq = {}
+    for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
+        n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
+        t1, t2 = getattr(nm, f"{b}1t"), getattr(nm, f"{b}2t")
+        pre_sq = n1**2 + (t1**2 if p.oblique else 0)
+        post_sq = n2**2 + (t2**2 if p.oblique else 0)
+        speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
+        sq[b] = (pre_sq, post_sq, full(speed_sq))
+    unit_T = working_unit(p, "energy")
+    T1 = HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2]
+    T2 = HALF * m_A * full(sq["A"][1]) + HALF * m_B * full(sq["B"][1])
+    if imp.inverse:
+        lost = T1 - T2
+    else:
+        lost_c = HALF * m_A * (sq["A"][0] - sq["A"][1].xreplace(imp.by_components))
+        lost_c += HALF * m_B * (sq["B"][0] - sq["B"][1].xreplace(imp.by_components))
+        lost = sympy.factor_terms(
+            imp.in_givens(sympy.factor(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
+        )
+    add("T_1", T1, unit_T, "kinetic energy before the impact")
+    add("T_2", T2, unit_T, "kinetic energy after the impact")
+    add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
+    J = -m_A * (full(nm.A2n) - full(nm.A1n))
+    add("J_n", sympy.factor_terms(J), working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
+    return out
+
+
+def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:
+    """atan2(n, t) in closed form; None where the direction is undefined (a body at rest)."""
+    nv, tv = evaluate(n, p), evaluate(t, p)
+    if nv == 0 and tv == 0:
+        return None
+    return sympy.atan2(n, t)
+
+
+def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
+    """atan2(y, x) as a number when y/x is one and the sign of x is known (4.C.12: v_A1 cancels)."""
+    ratio = sympy.simplify(y / x) if x != 0 else None
+    if ratio is not None and ratio.is_number:
+        if x.is_positive:
+            return sympy.atan(ratio)
+        if x.is_negative:
+            return sympy.atan(ratio) + (sympy.pi if y.is_nonnegative else -sympy.pi)
+    if x == 0 and y.is_positive:
+        return sympy.pi / 2
+    if x == 0 and y.is_negative:
+        return -sympy.pi / 2
+    return sympy.atan2(y, x)
+
+
+def convert(r: Result, unit_text: str) -> sympy.Expr:
+    """A result's value (or closed form) in another unit of the same kind."""
+
+    src, dst = units.parse_unit(r.unit if r.unit != "deg" else "deg"), units.parse_unit(unit_text)
+    if src.dim != dst.dim:
+        raise SolveError(
+            f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}",
+        )
+    value = r.value if r.value is not None else r.partial
+    return value * src.factor / dst.factor
+
+
+def working_unit(p: Problem, what: str) -> str:
+    """The unit results of this kind are worked in (m/s or ft/s, J or ft·lb, ...)."""
+
+    dim = {"velocity": units.VELOCITY, "energy": units.ENERGY, "impulse": units.IMPULSE}[what]
+    return units.SYSTEMS[p.system][dim]

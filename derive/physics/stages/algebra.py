@@ -1,0 +1,114 @@
+"""The ``define`` stage (a quantity from others) and the ``solve`` stage (an unknown of
+the chain, a given marked "?", from a condition such as ``h_2 = 40 m``)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, replace
+
+import sympy
+
+from derive.errors import ExpressionError, SolveError
+from derive.physics.state import ChainState, StageOutcome
+from derive.problem import Given, units
+from derive.problem.expr import ParseError, parse
+
+
+@dataclass(frozen=True)
+class Definition:
+    """``result = expr``, with ``text`` the file's sentence before it."""
+
+    expr: sympy.Expr
+    value: sympy.Expr
+    result: Given
+    text: str
+
+
+@dataclass(frozen=True)
+class Condition:
+    """``lhs = rhs`` fixing the unknown ``given``: ``in_unknown`` is lhs in the unknown
+    (with every number known so far), ``root`` its one admissible value out of
+    ``roots`` found; ``same_unit`` whether lhs has the unknown's unit; ``updated`` the
+    earlier quantities that depended on the unknown, each with its number now."""
+
+    lhs: sympy.Expr
+    rhs: sympy.Expr
+    given: Given
+    root: sympy.Expr
+    same_unit: bool
+    in_unknown: sympy.Expr | None = None
+    roots: int = 1
+    lhs_unit: str | None = None
+    updated: tuple[tuple[Given, sympy.Expr, sympy.Expr], ...] = ()
+
+
+def define(state: ChainState, i: int, st: dict) -> StageOutcome:
+    """A new quantity ``result = expr`` from known ones."""
+    raw = st.get("expr")
+    expr = state.quantity(i, st, "expr", None)
+    dim = parse(str(raw), state.names()).dim
+    out = state.define(i, st.get("result", f"q_{i}"), expr, dim)
+    data = Definition(expr, state.value(expr), out, str(st.get("text", "Then:")))
+    return StageOutcome(i, "define", st.get("title", "Then"), data, (out.name,))
+
+
+def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
+    """The one unknown (``for``, or the only one left) from ``condition``: its one admissible root."""
+    raw = st.get("condition")
+    if not isinstance(raw, str) or raw.count("=") != 1:
+        raise state.err(i, "condition", 'expected one equation such as "h_2 = 40 m"', raw)
+    left, right = raw.split("=")
+    try:
+        lhs = parse(left.strip(), state.names())
+        rhs_text = right.strip()
+        m = re.match(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-z].*)$", rhs_text)
+        if m:  # a number with a unit
+            u = units.parse_unit(m.group(2))
+            rhs_expr = sympy.Rational(m.group(1)) * u.factor / units.working_unit(u.dim, state.chain.system).factor
+        else:
+            rhs_expr = parse(rhs_text, state.names()).expr
+    except (ParseError, ValueError) as exc:
+        raise state.err(i, "condition", str(exc), raw, ExpressionError) from None
+    target = st.get("for")
+    unknown = [u for u in state.unknowns if u not in state.solved and (target is None or u.name == target)]
+    if len(unknown) != 1:
+        raise state.err(i, "for", 'expected exactly one unknown (a given marked "?") to solve for', target)
+    u = unknown[0]
+    in_unknown = state.value(lhs.expr)
+    found = sympy.solve(in_unknown - rhs_expr, u)
+    roots = [r for r in found if admissible(state, u, r)]
+    if len(roots) != 1:
+        raise SolveError(f"stage {i}: {raw} gives {len(roots)} admissible values of {u.name}", where=state.chain.path)
+    waiting = {n: state.value(g.symbol) for n, g in state.known.items() if g.value is None and g.definition is not None}
+    state.solved[u] = roots[0]
+    updated = []
+    for name, before in waiting.items():
+        now = state.value(before)
+        if before.has(u) and not now.free_symbols:
+            state.known[name] = replace(state.known[name], value=now)
+            updated.append((state.known[name], before, now))
+    g = state.known[u.name]
+    system = units.SYSTEMS[state.chain.system]
+    lhs_unit = units.working_unit(lhs.dim, state.chain.system).text if lhs.dim in system else None
+    data = Condition(
+        lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim, in_unknown, len(found), lhs_unit, tuple(updated)
+    )
+    return StageOutcome(i, "solve", f"Solve for {u.name}", data, (u.name,))
+
+
+def admissible(state: ChainState, u: sympy.Symbol, r: sympy.Expr) -> bool:
+    """A root is admissible when real, e in [0, 1], a speed not negative, and every
+    impact of the chain still has its bodies approaching."""
+    for approach in state.approaches:
+        a = state.value(approach).xreplace({u: r})
+        if not a.free_symbols and not complex(sympy.N(a)).real > 0:
+            return False
+    v = state.value(r)
+    if v.free_symbols:
+        return True
+    c = complex(sympy.N(v))
+    if abs(c.imag) > 1e-12:
+        return False
+    if u.name.startswith("e") and not (-1e-12 <= c.real <= 1 + 1e-12):
+        return False
+    return not ((u.is_positive or u.is_nonnegative) and c.real < 0)

@@ -1,0 +1,67 @@
+"""Problem files: read a TOML problem or chain, check every field, and build its record.
+
+The format is documented in ``docs/problem-format.md``. Every error names the file,
+the line where it can be found, the field and what was expected.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from derive.errors import InputError
+from derive.problem.chain import ChainProblem
+from derive.problem.reader import Condition, Given, Motion, Problem, build_problem
+from derive.problem.source import Source, parse_toml
+
+__all__ = [
+    "ChainProblem",
+    "Condition",
+    "Given",
+    "Motion",
+    "Problem",
+    "Source",
+    "build_problem",
+    "find",
+    "load",
+    "loads",
+]
+
+
+def load(path: str | Path, *, name: str | None = None) -> Problem | ChainProblem:
+    """Read and check a problem: a path to a TOML file, or the name of a bundled problem.
+
+    Raises :class:`~derive.errors.InputError` (one line: file, field, what was
+    expected) on anything that is not a well-posed central-impact problem.
+    """
+    from derive.fileio import read_user_text
+
+    path = find(path)
+    text = read_user_text(path, "a problem file")
+    return loads(text, path=str(path), name=name or path.stem)
+
+
+def find(path: str | Path) -> Path:
+    """The file a problem argument names: a path, or the name (file stem) of a bundled problem."""
+    from derive import resources
+
+    p = Path(path)
+    if not p.exists() and isinstance(path, str) and "/" not in path and not path.endswith(".toml"):
+        bundled = resources.bundled()
+        if path in bundled:
+            return bundled[path]
+        raise InputError(
+            f"no such file, and no bundled problem of that name (try 'derive list'); bundled: {', '.join(bundled)}",
+            where=str(path),
+        )
+    return p
+
+
+def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem | ChainProblem:
+    """Check a problem given as TOML text (``path`` only names it in messages)."""
+    from derive.problem.chain import build_chain
+
+    source = Source(path, text)
+    data = parse_toml(text, path)
+    if isinstance(data, dict) and data.get("kind") == "chain":
+        return build_chain(data, source, name)
+    return build_problem(data, source, name)

@@ -1,0 +1,274 @@
+"""Stage 4 of the notes' layout: the answer. The velocities after the impact as vectors
+in e_t and e_n (boxed), what the question asks besides (speeds, directions, impulse,
+other units), and the kinetic energy for the record."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import sympy
+
+from derive.errors import SolveError
+from derive.physics.energy import HALF
+from derive.physics.results import Result, convert
+from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.page import Page, as_float, nonzero, show
+from derive.symbols import symbol, vector
+
+
+def answer(page: Page) -> list[Block]:
+    """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
+
+    In each block the last boxed line that answers the question gets the notes'
+    "⟵ ANSWER" mark: the velocities when the question asks for them, else what it asks.
+    """
+    p = page.p
+    velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
+    asks_velocities = bool(velocities & set(p.find))
+    blocks = [
+        _marked(page, _velocities(page), asks_velocities),
+        _marked(page, _xy(page), asks_velocities),
+        _closed_forms(page),
+        _marked(page, _asked(page), True),
+    ]
+    return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
+    if block is None or not asked or not page.marks:
+        return block
+    last = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+    if last < 0:
+        return block
+    lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))
+    return replace(block, lines=lines)
+
+
+def _bodies(page: Page) -> str:
+    return "A" if page.p.fixed_B else "AB"
+
+
+def _velocities(page: Page) -> Block:
+    """The velocities after the impact: vectors in e_t and e_n (a direct impact: along n)."""
+    p = page.p
+    e_t, e_n = vector("e_t"), vector("e_n")
+    lines = []
+    given_names = {g.name for g in p.givens}
+    for b in _bodies(page):
+        if p.oblique:
+            t = page.value_of(symbol(f"v_{b}2t"))
+            n = page.value_of(symbol(f"v_{b}2n"))
+            comps = nonzero(tuple(c * u for c, u in ((t, e_t), (n, e_n)) if c != 0))
+            found = not {f"v_{b}2t", f"v_{b}2n"} <= given_names  # a velocity the file gave is no answer
+            lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=page.unit_v, boxed=found))
+        else:
+            value = page.value_of(symbol(f"v_{b}2"))
+            boxed = f"v_{b}2" not in given_names
+            lines.append(Eqn((Side((symbol(f"v_{b}2"),)), Side((value,), "result")), unit=page.unit_v, boxed=boxed))
+    heading = "The velocity of A" if p.fixed_B else "The velocities"
+    return Block((heading + " immediately after the impact:",), tuple(lines))
+
+
+def _xy(page: Page) -> Block | None:
+    """The velocities in the problem's x-y axes, where it gave them."""
+    if page.p.phi is None:
+        return None
+    e_x, e_y = vector("e_x"), vector("e_y")
+    lines = []
+    for b in _bodies(page):
+        x, y = page.value_of(symbol(f"v_{b}2x")), page.value_of(symbol(f"v_{b}2y"))
+        comps = nonzero(tuple(c * u for c, u in ((x, e_x), (y, e_y)) if c != 0))
+        lines.append(Eqn((Side((vector(f"v_{b}2"),)), Side(comps, "result")), unit=page.unit_v, boxed=True))
+    text: Text = ("In the problem's x–y axes (x = n cos φ − t sin φ, y = n sin φ + t cos φ):",)
+    return Block(text, tuple(lines))
+
+
+def _closed_forms(page: Page) -> Block | None:
+    """Velocities that stay symbolic, in closed form in the givens."""
+    names = ("v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2", "v_B2")
+    symbolic = [
+        r for r in page.results.values() if r.value is None and r.partial.free_symbols - page.varied and r.name in names
+    ]
+    if not symbolic:
+        return None
+    lines = [
+        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((r.partial,), "result")), unit=r.unit)
+        for r in symbolic
+        if r.closed != 0
+    ]
+    return Block(("In closed form, in the givens:",), tuple(lines))
+
+
+def _asked(page: Page) -> Block | None:
+    """What the question asks besides the velocities, and results in the units it asks for."""
+    p = page.p
+    extra = []
+    for name in p.find:
+        if (name in ("v_A2", "v_B2") and not p.oblique) or name in ("v_A2t", "v_A2n", "v_B2t", "v_B2n"):
+            continue
+        r = page.results.get(name)
+        if r is not None:
+            extra.append(_derived_line(page, r, boxed=True))
+    for name, unit in p.answer_units.items():
+        r = page.results.get(name)
+        if r is None:
+            raise SolveError(f"answer_units names {name!r}, which is not a result of this problem", where=p.path)
+        extra.append(Eqn((Side((r.symbol,)), Side((convert(r, unit),), "result")), unit=unit, boxed=True))
+    if not extra:
+        return None
+    text: Text = ("As asked:",)
+    if "J_n" in p.find:
+        J = symbol("J_n")
+        text = ("As asked (", Math(J), " is the impulse along +n on B; on A it is ", Math(-J), "):")
+    return Block(text, tuple(extra))
+
+
+def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
+    nm = page.nm
+    val = r.value if r.value is not None else r.partial
+    if r.name in ("v_A2", "v_B2", "theta_A2", "theta_B2"):
+        b = r.name[-2]
+        n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+        nv, tv = page.value_of(n), page.value_of(t)
+        if r.name.startswith("v"):
+            form = sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False)
+            shown = None
+            if not ((nv.free_symbols | tv.free_symbols) - page.varied):
+                shown = show(
+                    sympy.Pow(
+                        sympy.Add(
+                            sympy.Pow(as_float(tv), 2, evaluate=False),
+                            sympy.Pow(as_float(nv), 2, evaluate=False),
+                            evaluate=False,
+                        ),
+                        sympy.Rational(1, 2),
+                        evaluate=False,
+                    )
+                )
+        else:
+            return _angle_line(page, r, n, t, nv, tv, boxed)
+        sides = [Side((r.symbol,)), Side((form,))]
+        if shown is not None:
+            sides.append(Side((shown,), "numeric"))
+        sides.append(Side((val,), "result"))
+        return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+    if r.name in ("beta_A2", "beta_B2"):
+        b = r.name[-2]
+        n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+        return _angle_line(page, r, t, n, page.value_of(t), page.value_of(n), boxed)
+    if r.name == "J_n":
+        return _impulse_line(page, r, boxed)
+    return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+
+
+def _angle_line(
+    page: Page, r: Result, y: sympy.Symbol, x: sympy.Symbol, yv: sympy.Expr, xv: sympy.Expr, boxed: bool
+) -> Eqn:
+    """A direction: tan^-1(y/x), with 180° added where x < 0 (written atan2 where
+    the sign of x is not known when the page is written)."""
+    val = r.value if r.value is not None else r.partial
+    numeric = not ((xv.free_symbols | yv.free_symbols) - page.varied)
+    known = numeric and not (xv.free_symbols | yv.free_symbols)
+    sides = [Side((r.symbol,))]
+    ratio = None if xv == 0 else sympy.simplify(yv / xv)
+    if xv == 0:
+        pass
+    elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
+        sides.append(
+            Side((sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False),))
+        )
+        shown = (
+            as_float(ratio)
+            if not known
+            else sympy.Mul(as_float(yv), sympy.Pow(as_float(xv), -1, evaluate=False), evaluate=False)
+        )
+        sides.append(Side((show(sympy.atan(shown, evaluate=False)),), "numeric"))
+    elif known:  # x < 0: the angle lies beyond ±90°
+        turn = sympy.Symbol(r"\,180^\circ" if yv >= 0 else r"\,(-180^\circ)")
+        form = sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False)
+        sides.append(Side((form, turn)))
+        shown = sympy.Mul(as_float(yv), sympy.Pow(as_float(xv), -1, evaluate=False), evaluate=False)
+        sides.append(Side((show(sympy.atan(shown, evaluate=False)), turn), "numeric"))
+    else:
+        sides.append(Side((sympy.atan2(y, x, evaluate=False),)))
+    sides.append(Side((val,), "result"))
+    return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+
+
+def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
+    """J_n = m_A (v_A1n - v_A2n): the impulse along +n on B (on A it is -J_n)."""
+    nm = page.nm
+    form = sympy.Mul(page.m_A, sympy.Add(nm.A1n, -nm.A2n, evaluate=False), evaluate=False)
+    sides = [Side((r.symbol,)), Side((form,))]
+    vals = {nm.A1n: page.num(page.imp.pre.get(nm.A1n, nm.A1n)), nm.A2n: page.value_of(nm.A2n)}
+    m = page.num(page.m_A.xreplace(page.ind))
+    if not ((m.free_symbols | vals[nm.A1n].free_symbols | vals[nm.A2n].free_symbols) - page.varied):
+        shown = sympy.Mul(
+            as_float(m), sympy.Add(as_float(vals[nm.A1n]), -as_float(vals[nm.A2n]), evaluate=False), evaluate=False
+        )
+        sides.append(Side((show(shown),), "numeric"))
+    val = r.value if r.value is not None else r.partial
+    sides.append(Side((val,), "result"))
+    return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+
+
+def energy(page: Page) -> Block:
+    p = page.p
+    m_A, m_B = page.m_A, page.m_B
+    s1A = p.motion_A.speed if p.oblique and p.motion_A.speed is not None else None
+    s1B = p.motion_B.speed if p.oblique and p.motion_B.speed is not None else None
+    if p.oblique:
+        v1A = s1A**2 if s1A is not None else sympy.Add(page.nm.A1n**2, page.nm.A1t**2, evaluate=False)
+        v1B = s1B**2 if s1B is not None else sympy.Add(page.nm.B1n**2, page.nm.B1t**2, evaluate=False)
+        v2A, v2B = symbol("v_A2", "positive") ** 2, symbol("v_B2", "positive") ** 2
+    else:
+        v1A, v1B = symbol("v_A1") ** 2, symbol("v_B1") ** 2
+        v2A, v2B = symbol("v_A2") ** 2, symbol("v_B2") ** 2
+    if p.fixed_B:
+        forms = {"T_1": (HALF * m_A * v1A,), "T_2": (HALF * m_A * v2A,)}
+    else:
+        forms = {
+            "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
+            "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
+        }
+    forms["T_lost"] = (symbol("T_1"), -symbol("T_2"))
+    lines = []
+    before, after, lost = (page.results[n].value for n in ("T_1", "T_2", "T_lost"))
+    # T_1 - T_2 with their numbers, so that the loss shown is their difference; the
+    # three then carry the places at which they add up
+    difference = before is not None and after is not None and lost is not None and after != 0
+    for name, terms in forms.items():
+        r = page.results[name]
+        sides = [Side((r.symbol,)), Side(terms)]
+        if r.value is None:
+            if r.closed != r.partial and r.partial.free_symbols - page.varied:
+                sides.append(Side((r.closed,)))
+            sides.append(Side((r.partial,), "result"))
+        else:
+            if name == "T_lost" and difference:
+                sides.append(Side((before, -after), "numeric"))
+            sides.append(Side((r.value,), "numeric" if difference else "result"))
+        lines.append(Eqn(tuple(sides), unit=r.unit))
+    sums = (((before, -after), lost),) if difference else ()
+    r1, rl = page.results["T_1"], page.results["T_lost"]
+    if r1.value is not None and rl.value is not None and r1.value != 0:
+        frac = rl.value / r1.value * 100
+        lines.append(
+            Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac,), "result")), unit="%")
+        )
+    else:
+        frac = sympy.simplify(rl.partial / r1.partial)
+        if frac.is_number:
+            lines.append(
+                Eqn(
+                    (Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac * 100,), "result")),
+                    unit="%",
+                )
+            )
+    text: Text = (
+        "Kinetic energy, for the record: it is not conserved across the impact unless ",
+        Math(sympy.Eq(page.e, 1)),
+        ", so it is never used to find the velocities.",
+    )
+    return Block(text, tuple(lines), sums)

@@ -1,0 +1,263 @@
+"""A chain written out stage by stage: each stage type's outcome as blocks, each impact
+stage as a page of its own written by the same writer as a single impact, equation
+numbers running on through the stages, and the boxed answers at the end."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import sympy
+
+from derive.errors import InputError
+from derive.numbers import floatify
+from derive.physics.chain import ChainOutcome
+from derive.physics.stages.again import Again
+from derive.physics.stages.algebra import Condition, Definition
+from derive.physics.stages.bounces import Bounces
+from derive.physics.stages.energy import Balance, Spring
+from derive.physics.stages.impact import ImpactStage
+from derive.physics.state import StageOutcome
+from derive.problem import units
+from derive.steps.impact import write_impact
+from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
+from derive.steps.page import Tags, as_float
+from derive.symbols import symbol
+
+
+class Numbers:
+    """The equation numbers of a chain's page: each stage takes the next ones."""
+
+    def __init__(self) -> None:
+        self.last = 0
+
+    def next(self) -> str:
+        """The next number."""
+        self.last += 1
+        return str(self.last)
+
+
+def write_chain(outcome: ChainOutcome) -> Solution:
+    """The chain's worked page: every stage, then the answers the file asks for."""
+    numbers = Numbers()
+    stages = tuple(WRITERS[st.type](outcome, st, numbers) for st in outcome.stages)
+    return Solution(outcome.chain, outcome.results, stages, outcome.values, outcome.angles, answers=_answers(outcome))
+
+
+def _answers(outcome: ChainOutcome) -> tuple[Answer, ...]:
+    """The quantities the file's ``find`` names (else the last stage's), boxed."""
+    chain = outcome.chain
+    names = list(chain.find) or list(outcome.stages[-1].outputs)
+    verdicts = {n for st in outcome.stages if st.type == "again" for n in st.outputs}
+    answers = []
+    for name in names:
+        r = outcome.results.get(name)
+        if r is None:
+            raise InputError(f"find names {name!r}, which no stage computes", where=chain.path, field="find")
+        if name in verdicts:
+            answers.append(Answer(name, verdict="yes" if r.value == 1 else "no"))
+            continue
+        value = r.value if r.value is not None else r.partial
+        line = Eqn((Side((r.symbol,)), Side((value,), "result")), unit=r.unit or None, boxed=True)
+        answers.append(Answer(name, line))
+    return tuple(answers)
+
+
+def _balance_lines(b: Balance, numbers: Numbers) -> tuple[Eqn, ...]:
+    """Energy conservation written out: the balance, then the result with numbers."""
+    solved, result = b.solved, b.result
+    return (
+        Eqn((Side(b.lhs), Side(b.rhs)), cancel=b.cancel),
+        Eqn(
+            (Side((result.symbol,)), Side((solved,)), Side((solved,), "values"), Side((b.value,), "result")),
+            unit=result.unit,
+            implies=True,
+            tag=numbers.next(),
+        ),
+    )
+
+
+def _fall(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    text: Text = (
+        "Before the impact no impulsive force acts: mechanical energy is conserved (datum at the lowest point), ",
+        Math(sympy.Eq(symbol("T_1") + symbol("V_1"), symbol("T_2") + symbol("V_2"))),
+        ". The mass cancels.",
+    )
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
+
+
+def _rise(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    text: Text = ("After the impact, mechanical energy is conserved again up to the highest point: ",)
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
+
+
+def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    text: Text = (
+        "After the impact, work and energy: kinetic friction ",
+        Math(sympy.Eq(symbol("F"), st.data.friction)),
+        " does the work that stops the body.",
+    )
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
+
+
+def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    s: Spring = st.data
+    X = s.result.symbol
+    if s.vertical:
+        text: Text = (
+            "After the impact, energy is conserved while the spring compresses by a further ",
+            Math(X),
+            " below the equilibrium position (gravity does work too):",
+        )
+    else:
+        text = (
+            "After the impact, energy is conserved while the spring compresses: kinetic energy becomes spring energy.",
+        )
+    lines = (
+        Eqn((Side(s.lhs), Side(s.rhs))),
+        Eqn((Side((X,)), Side((s.root,), "result")), unit=s.result.unit, implies=True, tag=numbers.next()),
+    )
+    return Stage(st.number, st.title, (Block(text, lines),), kind=st.type, values=st.values)
+
+
+def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    data: ImpactStage = st.data
+    inner = data.outcome
+    written = write_impact(inner, Tags(numbers.last), marks=False)
+    tags = [int(ln.tag) for s in written for b in s.blocks for ln in b.lines if ln.tag]
+    numbers.last = max(tags, default=numbers.last)
+    part = Solution(inner.problem, inner.results, written, inner.values, inner.angles)
+    carried = []
+    for (new, rname), value in zip(data.exports, data.carried, strict=True):
+        r = outcome.results[new]
+        shown = _in_unit(value, r.unit)
+        carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((shown,), "result")), unit=r.unit or None))
+    return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
+
+
+def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    d: Definition = st.data
+    out = d.result
+    line = Eqn(
+        (
+            Side((out.symbol,)),
+            Side((d.expr,)),
+            Side((d.expr,), "values"),
+            Side((_in_unit(d.value, out.unit),), "result"),
+        ),
+        unit=out.unit or None,
+        tag=numbers.next(),
+    )
+    return Stage(st.number, st.title, (Block((d.text,), (line,)),), kind=st.type, values=st.values)
+
+
+def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    c: Condition = st.data
+    g, u = c.given, c.given.symbol
+    sides = [Side((c.lhs,))]
+    if c.in_unknown is not None and c.in_unknown != c.lhs:
+        sides.append(Side((c.in_unknown,), "numeric"))
+    sides.append(Side((c.rhs,), "result"))
+    unit = g.unit or None
+    root = Eqn((Side((u,)), Side((_in_unit(c.root, g.unit),), "result")), unit=unit, implies=True, tag=numbers.next())
+    text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), " fixes the unknown ", Math(u), ":")
+    blocks = [Block(text, (Eqn(tuple(sides), unit=c.lhs_unit), root))]
+    if c.roots > 1:
+        if u.name.startswith("e"):
+            why: Text = ("0 ≤ ", Math(u), " ≤ 1")
+        elif u.is_positive or u.is_nonnegative:
+            why = (Math(u), " ≥ 0")
+        else:
+            why = (Math(u), " for which every impact still has its bodies approaching")
+        blocks.append(Block((f"Of the {c.roots} roots, the one with ", *why, " is the physical one.")))
+    if c.updated:
+        lines = tuple(
+            Eqn(
+                (Side((q.symbol,)), Side((before,), "numeric"), Side((_in_unit(now, q.unit),), "result")),
+                unit=q.unit or None,
+            )
+            for q, before, now in c.updated
+        )
+        blocks.append(
+            Block(("With ", Math(sympy.Eq(u, as_float(c.root))), ", the quantities that waited for it:"), lines)
+        )
+    return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
+
+
+def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    b: Bounces = st.data
+    v_0 = symbol("v_0")
+    velocity = units.working_unit(units.VELOCITY, outcome.chain.system).text
+    lines = [
+        Eqn(
+            (Side((v_0,)), Side((sympy.sqrt(2 * b.g * b.h0),)), Side((b.v0,), "result")),
+            unit=velocity,
+            tag=numbers.next(),
+        )
+    ]
+    for k, (vk, hk) in enumerate(zip(b.speeds, b.heights, strict=True), 1):
+        lines.append(Eqn((Side((vk.symbol,)), Side((b.e**k * v_0,)), Side((vk.definition,), "result")), unit=vk.unit))
+        lines.append(
+            Eqn((Side((hk.symbol,)), Side((hk.definition,), "values"), Side((hk.definition,), "result")), unit=hk.unit)
+        )
+    total = b.total
+    sides = (Side((total.symbol,)), Side((total.definition,)), Side((total.definition,), "values"))
+    lines.append(Eqn((*sides, Side((total.definition,), "result")), unit=total.unit, tag=numbers.next()))
+    text: Text = (
+        "Each bounce is an impact with the floor (a fixed body): the rebound speed is e times the impact speed, "
+        "and between bounces energy is conserved, so the height after bounce k is ",
+        Math(sympy.Eq(symbol("h_k"), b.e ** (2 * symbol("k")) * symbol("h_0"))),
+        ". The distance travelled before the ball comes to rest is the sum of a geometric series.",
+    )
+    return Stage(st.number, st.title, (Block(text, tuple(lines)),), kind=st.type, values=st.values)
+
+
+def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+    a: Again = st.data
+    text: Text = (
+        "They collide again if the one behind moves faster along +n than the one ahead: ",
+        Math(sympy.StrictGreaterThan(a.behind, a.ahead)),
+        ".",
+    )
+    velocity = units.working_unit(units.VELOCITY, outcome.chain.system).text
+    blocks = [Block(text, (Eqn((Side((a.behind, -a.ahead)), Side((a.difference,), "result")), unit=velocity),))]
+    if a.verdict is not None:
+        blocks.append(Block(("Yes: they collide again." if a.verdict else "No: they do not collide again.",)))
+    if a.param is not None:
+        general = floatify(a.general, keep_integers=False)
+        words: Text = (
+            "For other values of ",
+            Math(a.param),
+            ": they collide again when ",
+            Math(sympy.StrictGreaterThan(general, 0)),
+            ", that is for ",
+            Math(_float_interval(a.interval)),
+            ".",
+        )
+        blocks.append(Block(words))
+    return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
+
+
+def _in_unit(value: sympy.Expr, unit: str) -> sympy.Expr:
+    """A value as its unit shows it: an angle, held in radians, in degrees."""
+    return value * 180 / sympy.pi if unit == "deg" else value
+
+
+def _float_interval(rng: sympy.Set) -> sympy.Set:
+    """An interval with its ends as decimals, for printing."""
+    if isinstance(rng, sympy.Interval):
+        return sympy.Interval(sympy.Float(rng.start, 4), sympy.Float(rng.end, 4), rng.left_open, rng.right_open)
+    return rng
+
+
+#: Stage type -> the function that writes a stage of that type.
+WRITERS: dict[str, Callable[[ChainOutcome, StageOutcome, Numbers], Stage]] = {
+    "fall": _fall,
+    "rise": _rise,
+    "slide": _slide,
+    "spring": _spring,
+    "impact": _impact,
+    "bounces": _bounces,
+    "again": _again,
+    "define": _define,
+    "solve": _solve,
+}

@@ -1,0 +1,172 @@
+"""Stage 2 of the notes' layout: equations (1)-(4), each written symbolically, then
+with the numbers in, then collected into unknown terms and a constant.
+
+The blocks come back with what the solve stage needs (:class:`Kinetics`): the
+collected (3) and (4), the equations still to be solved, and the unknowns found on
+the way.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy
+
+from derive.physics.algebra import collect, common_factor
+from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.page import Page, nonzero
+
+SMOOTH = (
+    "Linear momentum in the t-direction is conserved for each particle: "
+    "no impulsive force acts on A or on B along t (the surfaces are smooth)."
+)
+INTERNAL = (
+    "Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it."
+)
+IMPACT_RULE = (
+    "Impact rule: the coefficient of restitution relates the normal components only, separation over approach."
+)
+
+
+@dataclass(frozen=True)
+class Kinetics:
+    """The kinetics blocks and what the solve stage takes from them.
+
+    ``eq3`` is (3) collected, (unknown terms, constant); ``eq4`` the constant of (4);
+    ``open`` maps each equation still to be solved to its ``lhs - rhs`` with numbers
+    in; ``shown`` holds the unknowns already found from (1) or (2).
+    """
+
+    blocks: tuple[Block, ...]
+    eq3: tuple[tuple[sympy.Expr, ...], sympy.Expr] | None = None
+    eq4: sympy.Expr | None = None
+    open: dict[int, sympy.Expr] = field(default_factory=dict)
+    shown: frozenset[sympy.Symbol] = frozenset()
+
+
+def kinetics(page: Page) -> Kinetics:
+    """Equations (1)-(4) as they apply to this impact."""
+    blocks: list[Block] = []
+    open_: dict[int, sympy.Expr] = {}
+    shown: set[sympy.Symbol] = set()
+    nm, p = page.nm, page.p
+    if p.oblique:
+        blocks.append(Block((SMOOTH,)))
+        for k, b, m, c1, c2 in ((1, "A", page.m_A, nm.A1t, nm.A2t), (2, "B", page.m_B, nm.B1t, nm.B2t)):
+            if b == "B" and p.fixed_B:
+                blocks.append(Block((f"B, the {page.surface}, does not move: (2) says nothing.",)))
+                continue
+            block, left = t_momentum(page, k, b, m, c1, c2)
+            blocks.append(block)
+            if left is None:
+                shown.add(c2)
+            else:
+                open_[k] = left
+    else:
+        blocks.append(
+            Block(
+                ("The impact is direct: there are no t components, so equations (1) and (2) of the notes read 0 = 0.",)
+            )
+        )
+    eq3 = None
+    if p.fixed_B:
+        blocks.append(
+            Block(
+                (
+                    f"Linear momentum along n is not conserved for A and the {page.surface}: its supports exert an "
+                    "impulsive reaction, so equation (3) does not apply. The impact rule alone gives the n component.",
+                )
+            )
+        )
+    else:
+        block, eq3, open_[3] = momentum_n(page)
+        blocks.append(block)
+    block, eq4, open_[4] = restitution(page)
+    blocks.append(block)
+    return Kinetics(tuple(blocks), eq3, eq4, open_, frozenset(shown))
+
+
+def t_momentum(
+    page: Page, k: int, b: str, m: sympy.Symbol, c1: sympy.Symbol, c2: sympy.Symbol
+) -> tuple[Block, sympy.Expr | None]:
+    """(1) or (2): the mass cancels and the t component is unchanged. Returns the block
+    and, when the line does not give ``c2`` outright, the equation left to solve."""
+    pre = page.givens(c1)
+    lines = [Eqn((Side((m * c1,)), Side((m * c2,))), cancel=frozenset({m}))]
+    given_c2 = c2.name in {g.name for g in page.p.givens}
+    left = None
+    if not given_c2 and not (pre.free_symbols & set(page.unknowns)):
+        lines.append(Eqn((Side((c2,)), Side((c1,))) + ((Side((pre,)),) if pre != c1 else ()), implies=True))
+        if page.has_values(pre) and not pre.is_Symbol and pre != 0:
+            lines.append(Eqn((Side((c2,)), Side((pre,), "values"))))
+        lines.append(Eqn((Side((c2,)), Side((page.value_of(c2),), "result")), tag=page.tags(k), unit=page.unit_v))
+    else:
+        lines.append(Eqn((Side((pre,)), Side((c2,))), implies=True))
+        lines.append(Eqn((Side((pre,), "values"), Side((c2,), "values")), tag=page.tags(k)))
+        left = page.num(pre - c2)
+    return Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)), left
+
+
+def collected(
+    page: Page, lhs: sympy.Expr, rhs: sympy.Expr, order: tuple[sympy.Symbol, ...]
+) -> tuple[tuple[sympy.Expr, ...], tuple[sympy.Expr, ...]]:
+    """``lhs = rhs`` with numbers in, as unknown terms (in ``order``) = constant."""
+    return collect(page.num(lhs), page.num(rhs), order, page.unknowns)
+
+
+def momentum_n(page: Page) -> tuple[Block, tuple[tuple[sympy.Expr, ...], sympy.Expr], sympy.Expr]:
+    """(3): n-momentum of A + B, written out and collected; a shared mass cancels."""
+    nm, m_A, m_B = page.nm, page.m_A, page.m_B
+    lhs_terms = (m_A * nm.A1n, m_B * nm.B1n)
+    rhs_terms = (m_A * nm.A2n, m_B * nm.B2n)
+    lines = [Eqn((Side(lhs_terms), Side(rhs_terms)))]
+    g_lhs = nonzero(tuple(page.givens(t) for t in lhs_terms))
+    g_rhs = tuple(page.givens(t) for t in rhs_terms)
+    if g_lhs != lhs_terms or g_rhs != rhs_terms:
+        lines.append(Eqn((Side(g_lhs), Side(g_rhs)), implies=True))
+    common = common_factor(g_lhs + g_rhs, set(page.numeric), page.unknowns)
+    if common is not None:
+        lines[-1] = Eqn(lines[-1].sides, cancel=frozenset({common}), implies=lines[-1].implies)
+        g_lhs = nonzero(tuple(sympy.cancel(t / common) for t in g_lhs))
+        g_rhs = tuple(sympy.cancel(t / common) for t in g_rhs)
+        lines.append(Eqn((Side(g_lhs), Side(g_rhs)), implies=True))
+    sums = []
+    if any(page.has_values(t) for t in g_lhs + g_rhs):
+        lines.append(Eqn((Side(g_lhs, "values"), Side(g_rhs, "values"))))
+        lhs_num = nonzero(tuple(page.num(t) for t in g_lhs))
+        if len(lhs_num) > 1 and all(not (t.free_symbols - page.varied) for t in lhs_num):
+            lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values")), optional=True))
+            sums.append((lhs_num, sympy.Add(*lhs_num)))
+    terms, const = collected(page, sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
+    lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag=page.tags(3), implies=True))
+    block = Block((INTERNAL,), tuple(lines), tuple(sums))
+    return block, (terms, const[0]), page.num(sympy.Add(*g_rhs) - sympy.Add(*g_lhs))
+
+
+def restitution(page: Page) -> tuple[Block, sympy.Expr, sympy.Expr]:
+    """(4): the impact rule, separation over approach along n, written out and collected."""
+    nm, e = page.nm, page.e
+    sep = sympy.Add(nm.B2n, -nm.A2n, evaluate=False)
+    app = sympy.Add(nm.A1n, -nm.B1n, evaluate=False)
+    lines = [
+        Eqn((Side((e,)), Side((sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False),)))),
+        Eqn((Side((sympy.Mul(e, app, evaluate=False),)), Side((nm.B2n, -nm.A2n))), implies=True),
+    ]
+    g_app = nonzero(tuple(page.givens(t) for t in (nm.A1n, -nm.B1n)))
+    g_sep = nonzero(tuple(page.givens(t) for t in (nm.B2n, -nm.A2n)))
+    g_app_expr = sympy.Add(*g_app, evaluate=False) if len(g_app) > 1 else g_app[0]
+    g_lhs = sympy.Mul(e, g_app_expr, evaluate=False)
+    if g_app != (nm.A1n, -nm.B1n) or g_sep != (nm.B2n, -nm.A2n):
+        lines.append(Eqn((Side((g_lhs,)), Side(g_sep)), implies=True))
+    if page.has_values(g_lhs) or any(page.has_values(t) for t in g_sep):
+        lines.append(Eqn((Side((g_lhs,), "values"), Side(g_sep, "values"))))
+    order = (nm.A2n,) if page.p.fixed_B else (nm.B2n, nm.A2n)
+    terms, const = collected(page, sympy.Add(*g_sep), e * sympy.Add(*g_app), order)
+    lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag=page.tags(4), implies=True))
+    text: Text = (IMPACT_RULE,)
+    ev = page.numeric.get(e)
+    if ev == 1:
+        text += (" Here ", Math(sympy.Eq(e, 1)), ": the impact is perfectly elastic.")
+    elif ev == 0:
+        text += (" Here ", Math(sympy.Eq(e, 0)), ": the impact is perfectly plastic.")
+    return Block(text, tuple(lines)), const[0], page.num(sympy.Add(*g_sep) - e * sympy.Add(*g_app))

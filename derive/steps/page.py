@@ -1,0 +1,145 @@
+"""What the writer of one impact reads: the solved impact, with the questions every step asks.
+
+A :class:`Page` is read-only: each step function takes it and returns its blocks (and
+what later steps need), so no step depends on another having run first.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy
+
+from derive.numbers import short_decimal
+from derive.physics.impact import equation_numbers, evaluate
+from derive.physics.outcome import ImpactOutcome, xy_motions
+from derive.physics.results import working_unit
+from derive.symbols import symbol
+
+
+@dataclass(frozen=True)
+class Tags:
+    """Equation numbers on the page: the notes' numbers (1)-(6) of one impact, moved
+    past the ``offset`` equations that earlier stages of a chain have numbered."""
+
+    offset: int = 0
+
+    def __call__(self, k: int) -> str:
+        return str(self.offset + k)
+
+
+@dataclass(frozen=True)
+class Page:
+    """An impact outcome and the questions the steps ask of it."""
+
+    outcome: ImpactOutcome
+    tags: Tags = field(default_factory=Tags)
+    marks: bool = True
+
+    @property
+    def imp(self):
+        return self.outcome.impact
+
+    @property
+    def p(self):
+        return self.outcome.problem
+
+    @property
+    def nm(self):
+        return self.outcome.impact.names
+
+    @property
+    def results(self) -> dict:
+        return self.outcome.results
+
+    @property
+    def ind(self) -> dict[sympy.Symbol, sympy.Expr]:
+        return self.outcome.impact.independent
+
+    @property
+    def numeric(self) -> dict[sympy.Symbol, sympy.Expr]:
+        return self.p.numeric()
+
+    @property
+    def m_A(self) -> sympy.Symbol:
+        return self.p.symbols()["m_A"]
+
+    @property
+    def m_B(self) -> sympy.Symbol:
+        return self.p.symbols().get("m_B", symbol("m_B", "positive"))
+
+    @property
+    def e(self) -> sympy.Symbol:
+        return self.p.symbols()["e"]
+
+    @property
+    def unit_v(self) -> str:
+        return working_unit(self.p, "velocity")
+
+    @property
+    def nums(self) -> tuple[int, ...]:
+        return equation_numbers(self.p)
+
+    @property
+    def unknowns(self) -> tuple[sympy.Symbol, ...]:
+        return self.imp.unknowns
+
+    @property
+    def surface(self) -> str:
+        return self.p.name_B or "surface"
+
+    @property
+    def varied(self) -> set[sympy.Symbol]:
+        """Givens of homework variants: symbols here only to be filled in later, so they count as numbers."""
+        return {g.symbol for g in self.p.givens if g.name in self.p.vary}
+
+    def _xy_components(self) -> set[sympy.Symbol]:
+        return {c for _, comps in xy_motions(self.imp) for c in comps}
+
+    def givens(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` in the givens' symbols (pre-impact components resolved, except those
+        resolved from x-y axes, which the geometry stage has turned into numbers)."""
+        keep = self._xy_components()
+        pre = {k: v for k, v in self.imp.pre.items() if k not in keep}
+        return expr.xreplace(pre).xreplace(self.ind)
+
+    def has_values(self, expr: sympy.Expr) -> bool:
+        """True when a substitution line has numbers to put into ``expr``."""
+        return bool(expr.free_symbols & (set(self.numeric) | self._xy_components() | self.varied))
+
+    def num(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` with the pre-impact components and every numeric given put in."""
+        return evaluate(expr.xreplace(self.imp.pre), self.p)
+
+    def value_of(self, s: sympy.Symbol) -> sympy.Expr:
+        """A solved quantity: its number, or its closed form with numbers in."""
+        r = self.results.get(s.name)
+        if r is not None:
+            return r.value if r.value is not None else r.partial
+        return self.num(self.imp.closed[s])
+
+    def unit_of(self, s: sympy.Symbol) -> str | None:
+        """The unit a quantity is shown in: a given's own, else a velocity's."""
+        g = next((g for g in self.p.givens if g.symbol == s), None)
+        if g is not None:
+            return g.unit or None
+        return self.unit_v
+
+
+def show(expr: sympy.Expr) -> sympy.Expr:
+    """Mark a display structure of numbers (a fraction, a root) to be printed as built."""
+    return sympy.UnevaluatedExpr(expr)
+
+
+def as_float(x: sympy.Expr) -> sympy.Expr:
+    """A pure number as a Float (kept apart in printed sums); other expressions as they are."""
+
+    if x.is_number and not x.is_Integer and not short_decimal(x):
+        return sympy.Float(x.evalf(30), 30)
+    return x
+
+
+def nonzero(terms: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
+    """The terms that are not zero (a single 0 when none is left)."""
+    kept = tuple(t for t in terms if t != 0)
+    return kept or (sympy.Integer(0),)
