@@ -265,7 +265,7 @@ def shown(x: float, digits: int | None) -> list[Shown]:
     for y in (x, x * (1 + 1e-12), x * (1 - 1e-12)):
         d = Decimal(repr(y))
         if x == 0:
-            s = Shown(Decimal(0), 1, Decimal("0.01"), Decimal("0.005"))
+            s = Shown(Decimal(0), figures(Decimal(0), digits), Decimal("0.01"), Decimal("0.005"))
         else:
             figs = figures(d, digits)
             r = round_sig(d, figs)
@@ -418,8 +418,11 @@ def _band_points(s: Shown, exact: float) -> tuple[list[str], list[str]]:
 
 
 def _numbers_for(run: Run, row: dict) -> tuple[Shown, float]:
+    """The rule's shown value of the physics' value (on a rounding tie, the key's choice)."""
     exact = run.physics(row)[run.result]
-    return shown(exact, run.spec.digits)[0], exact
+    options = shown(exact, run.spec.digits)
+    key = Decimal(row["results"][run.result]["shown"])
+    return next((s for s in options if s.value == key), options[0]), exact
 
 
 @slow
@@ -536,15 +539,16 @@ def test_moodle_mistake_feedback_goes_to_the_nearest_mistake(run: Run, result: s
             if a.fraction < 1e-7 and a.feedback not in mistakes:
                 w = Decimal(a.text)
                 figs = figures(w, run.spec.digits)
-                mistakes[a.feedback] = (w, Decimal(1).scaleb(w.adjusted() - figs + 1) if w != 0 else Decimal("0.01"))
+                mistakes[a.feedback] = (w, Decimal(1).scaleb(w.adjusted() - figs + 1) if w != 0 else Decimal(0))
         problems = set()
         for w, place in mistakes.values():
-            for x in (w - place, w, w + place):
+            for x in sorted({w - place, w, w + place}):
                 if abs(x - s.value) <= s.tolerance:
                     continue  # in the right answer's band: right, tested above
                 dist = sorted([(abs(x - s.value), "RIGHT"), *((abs(x - v), fb) for fb, (v, _) in mistakes.items())])
                 (d0, nearest), d1 = dist[0], dist[1][0]
-                if nearest == "RIGHT" or d0 == d1 or d0 > Decimal("1.5") * mistakes[nearest][1]:
+                band = Decimal("1.5") * mistakes[nearest][1] if mistakes[nearest][0] != 0 else Decimal("0.005")
+                if nearest == "RIGHT" or d0 == d1 or d0 > band:
                     continue  # nearer the right answer, halfway between two, or outside every band
                 got = lf.moodle_grade(q, plain(x))
                 if got.feedback != nearest:
