@@ -18,6 +18,7 @@ from derive.errors import ExpressionError, InputError, PhysicsError, UnitError
 from derive.problem import units
 from derive.problem.expr import NAME_RE, ParseError, parse
 from derive.problem.source import Source, text_field, type_name
+from derive.problem.symbolic import Asks, Relation, read_asks
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
 
@@ -34,6 +35,12 @@ TOP_FIELDS = (
     "given",
     "geometry",
     "answer_units",
+    "answers",
+    "assume",
+    "define",
+    "equations",
+    "range",
+    "show",
     "vary",
     "conditions",
     "A",
@@ -91,7 +98,7 @@ RESULT_NAMES = (
 )
 #: Names a file may not give: the results derive computes (the velocities after
 #: the impact may be given, in an inverse problem).
-COMPUTED = {"theta_A2", "theta_B2", "beta_A2", "beta_B2", "T_1", "T_2", "T_lost", "J_n"}
+COMPUTED = {"T_1", "T_2", "T_lost", "J_n"}
 #: Velocities after the impact, by kind: given in an inverse problem, else unknown.
 POST = {"direct": ("v_A2", "v_B2"), "oblique": ("v_A2t", "v_A2n", "v_B2t", "v_B2n")}
 
@@ -114,6 +121,17 @@ class Given:
     written: str | None = None
     definition: sympy.Expr | None = None
     unknown: bool = False
+
+    @property
+    def decimal(self) -> bool:
+        """True for a number that is not whole and was not written as an expression (0.6,
+        37.6 deg, 22 g as 0.022 kg): where it meets letters the worked lines show decimals;
+        exact data (integers, 3/5, sqrt(2)) stay exact."""
+        if self.value is None or self.definition is not None:
+            return False
+        if self.unit == "deg":
+            return not (self.value * 180 / sympy.pi).is_Integer
+        return not self.value.is_Integer  # 0.6, and 22 g as 0.022 kg
 
 
 @dataclass(frozen=True)
@@ -169,6 +187,8 @@ class Problem:
     vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)
     conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
+    assume: Mapping[str, str] = field(default_factory=dict)
+    asks: Asks = field(default_factory=Asks)
 
     @property
     def oblique(self) -> bool:
@@ -225,7 +245,10 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
         raise ctx.error(f"has too many entries ({len(given_tbl)}, at most {MAX_GIVENS})", section="given")
     if system is None:
         system = infer_system(given_tbl)
-    givens = build_givens(given_tbl, ctx, oblique, system, seed)
+    assume = read_assume(data.get("assume"), given_tbl, ctx)
+    after = {k: v for k, v in given_tbl.items() if k in AFTER}
+    given_tbl = {k: v for k, v in given_tbl.items() if k not in AFTER}
+    givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     b_tbl = data.get("B")
     b_fixed = isinstance(b_tbl, dict) and b_tbl.get("fixed") is True
@@ -333,7 +356,17 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             by_name[extra.name] = extra
         motions.append(motion)
 
-    find = _find(data.get("find"), ctx, oblique, tuple(g.name for g in givens if g.unknown))
+    asks = read_asks(
+        data,
+        {g.name: (g.symbol, g.dim) for g in givens},
+        RESULT_DIMS,
+        {g.name for g in givens if g.value is None and not g.unknown},
+        system,
+        ctx,
+    )
+    asks = replace(asks, equations=asks.equations + _known_after(after, by_name, ctx, oblique, system))
+    extra = tuple(d.name for d in asks.defined) + (("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ())
+    find = _find(data.get("find"), ctx, oblique, tuple(g.name for g in givens if g.unknown), extra)
     problem = Problem(
         path=ctx.path,
         title=title,
@@ -354,6 +387,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
         answer_units=_answer_units(data.get("answer_units"), ctx),
         vary=_vary(data.get("vary"), by_name, ctx, oblique, system),
         conditions=_conditions(data.get("conditions"), by_name, ctx),
+        assume=assume,
+        asks=asks,
     )
     _check_approach(problem, ctx)
     return problem
@@ -375,7 +410,12 @@ def infer_system(tbl: Mapping[str, Any]) -> str:
 
 
 def build_givens(
-    tbl: Mapping[str, Any], ctx: Source, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
+    tbl: Mapping[str, Any],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    seed: Mapping[str, Given] | None = None,
+    assume: Mapping[str, str] | None = None,
 ) -> list[Given]:
     """Build the givens in dependency order (a given may be defined from others).
 
@@ -404,11 +444,11 @@ def build_givens(
         progressed = False
         for key in list(pending):
             raw = pending[key]
-            deps = (_names_in(raw) & set(tbl)) - set(seed)
+            deps = (_names_in(raw) & set(tbl)) - set(seed) - {key}  # e = "e" is a letter
             if deps - set(done):
                 continue
             scope = {**done, **seed, **{k: _alias(g) for k, g in outer.items()}}
-            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system), outer, ctx)
+            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system, assume), outer, ctx)
             del pending[key]
             progressed = True
         if not progressed:
@@ -420,6 +460,51 @@ def build_givens(
                 value=pending[key],
             )
     return [done[k] for k in tbl]
+
+
+#: What a file may assume of a letter -> the symbol's assumptions (an acute angle is
+#: positive, and its range is used where a sign is decided).
+ASSUMPTIONS = {
+    "positive": "positive",
+    "nonnegative": "nonnegative",
+    "real": "real",
+    "negative": "negative",
+    "acute": "positive",
+}
+
+
+def read_assume(raw: Any, given_tbl: Mapping[str, Any], ctx: Source) -> dict[str, str]:
+    """The [assume] table: what a letter is (letters are positive unless it says otherwise)."""
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise ctx.error(f'expected a table such as {{ alpha = "acute" }}, not {type_name(raw)}', key="assume")
+    for name, word in raw.items():
+        if name not in given_tbl:
+            raise ctx.error("names no given: assume what a letter of [given] is", section="assume", key=name)
+        if word not in ASSUMPTIONS:
+            raise ctx.error(f"expected one of: {', '.join(ASSUMPTIONS)}", section="assume", key=name, value=word)
+    return dict(raw)
+
+
+#: Results after the impact a file may give as knowns (each becomes an equation).
+AFTER = ("theta_A2", "theta_B2", "beta_A2", "beta_B2")
+
+
+def _known_after(
+    after: Mapping[str, Any], by_name: Mapping[str, Given], ctx: Source, oblique: bool, system: str
+) -> tuple[Relation, ...]:
+    """A direction after the impact given as a known: ``theta_A2 = "30 deg"`` is the
+    equation theta_A2 = 30°, which fixes one more unknown."""
+    out = []
+    for name, raw in after.items():
+        if not oblique:
+            raise ctx.error('a direction after the impact needs kind = "oblique"', section="given", key=name)
+        g = _given(name, raw, by_name, ctx, oblique, system)
+        if g.dim != ANGLE or g.value is None:
+            raise ctx.error('expected an angle such as "30 deg"', section="given", key=name, value=raw)
+        out.append(Relation(f"{name} = {raw}", symbol(name), g.value * 180 / sympy.pi))
+    return tuple(out)
 
 
 def _alias(g: Given) -> Given:
@@ -455,9 +540,22 @@ def _names_in(raw: Any) -> set[str]:
     return set(re.findall(r"[A-Za-z][A-Za-z0-9_]*", raw))
 
 
-def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: bool, system: str) -> Given:
+def _given(
+    key: str,
+    raw: Any,
+    done: Mapping[str, Given],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    assume: Mapping[str, str] | None = None,
+) -> Given:
     expected = RESERVED.get(key)
-    sym = symbol(key, kind_of(key, oblique))
+    assume = assume or {}
+    sym = symbol(key, ASSUMPTIONS.get(assume.get(key, ""), kind_of(key, oblique)))
+    # a new name kept as a letter (u, m) is positive unless [assume] says otherwise; the
+    # notes' own names keep their meaning (v_A1n is signed, e is 0 to 1)
+    natural = kind_of(key, oblique) if key in RESERVED else "positive"
+    letter = symbol(key, ASSUMPTIONS.get(assume.get(key, ""), natural))
     err = lambda what, cls=InputError: ctx.error(what, section="given", key=key, value=raw, cls=cls)  # noqa: E731
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise err(f'expected a number or text such as "5 m/s", not {type_name(raw)}')
@@ -473,6 +571,10 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: 
             value = value * unit.factor
         return Given(key, sym, dim, value, unit.text)
     text = raw.strip()
+    if text == key and key not in done:  # e = "e": a letter, of the dimension its name has
+        dim = expected if expected is not None else DIMENSIONLESS
+        work = units.parse_unit("deg") if dim == ANGLE else units.working_unit(dim, system)
+        return Given(key, letter, dim, None, work.text if dim in units.SYSTEMS[system] or dim == ANGLE else "")
     if text == "?" or text.startswith("? "):
         unit_text = text[1:].strip()
         try:
@@ -513,7 +615,7 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: 
             if expected is not None and unit.dim != expected:
                 raise err(f"expected {describe(expected)}, but {text} is {describe(unit.dim)}", UnitError)
             work = units.working_unit(unit.dim, system) if unit.dim != ANGLE else units.parse_unit("deg")
-            return Given(key, sym, unit.dim, None, work.text)
+            return Given(key, letter, unit.dim, None, work.text)
     names = {g.name: (g.symbol, g.dim) for g in done.values()}
     try:
         parsed = parse(text, names)
@@ -903,7 +1005,11 @@ def _answer_units(raw: Any, ctx: Source) -> dict[str, str]:
     return out
 
 
-def _find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
+def _find(
+    raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = (), extra: tuple[str, ...] = ()
+) -> tuple[str, ...]:
+    """The results asked for: by default the unknowns, else the velocities; ``extra``
+    names more that may be asked (quantities defined from the results, x-y components)."""
     default = unknown or ("v_A2", "v_B2")
     if raw is None:
         return default
@@ -911,7 +1017,7 @@ def _find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -
         raw = [raw]
     if not isinstance(raw, list) or not raw or not all(isinstance(x, str) for x in raw):
         raise ctx.error("expected a list of result names", key="find", value=raw)
-    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown)
+    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown, *extra)
     for x in raw:
         if x not in allowed:
             raise ctx.error(f"unknown result {x!r} (expected some of: {', '.join(allowed)})", key="find", value=raw)

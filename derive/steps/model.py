@@ -8,7 +8,7 @@ mathematics stays SymPy until a renderer prints it.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import sympy
 
@@ -67,12 +67,15 @@ class Block:
     """A sentence (optional) and the equation lines it introduces.
 
     ``sums`` records sums shown term by term, ``(terms, total)``: a renderer
-    carries enough figures that the rounded terms add up to the rounded total.
+    carries enough figures that the rounded terms add up to the rounded total,
+    starting from the answer's figures where ``answer_figures`` (results, not
+    intermediates).
     """
 
     text: Text | None
     lines: tuple[Eqn, ...] = ()
     sums: tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...] = ()
+    answer_figures: bool = False
 
 
 @dataclass(frozen=True)
@@ -111,7 +114,8 @@ class Solution:
 
     ``values`` maps each symbol with a number to its exact value, for substitution
     lines; ``angles`` are the symbols held in radians and shown in degrees;
-    ``answers`` closes a chain.
+    ``answers`` closes a chain; ``shown`` and ``ranges`` are the problem's "show that"
+    results and ranges as the physics decided them.
     """
 
     problem: Problem | ChainProblem
@@ -120,6 +124,8 @@ class Solution:
     values: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
     answers: tuple[Answer, ...] = ()
+    shown: tuple[Any, ...] = ()
+    ranges: tuple[Any, ...] = ()
 
     @property
     def is_chain(self) -> bool:

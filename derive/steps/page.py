@@ -14,6 +14,7 @@ from derive.numbers import short_decimal
 from derive.physics.impact import equation_numbers, evaluate
 from derive.physics.outcome import ImpactOutcome, xy_motions
 from derive.physics.results import working_unit
+from derive.steps.model import Math, Text
 from derive.symbols import symbol
 
 
@@ -93,6 +94,11 @@ class Page:
         """Givens of homework variants: symbols here only to be filled in later, so they count as numbers."""
         return {g.symbol for g in self.p.givens if g.name in self.p.vary}
 
+    @property
+    def letters(self) -> set[sympy.Symbol]:
+        """The givens kept as letters (u, m, e): not those of homework variants, which are numbers."""
+        return {g.symbol for g in self.p.givens if g.value is None and not g.unknown} - self.varied
+
     def _xy_components(self) -> set[sympy.Symbol]:
         return {c for _, comps in xy_motions(self.imp) for c in comps}
 
@@ -105,17 +111,27 @@ class Page:
 
     def has_values(self, expr: sympy.Expr) -> bool:
         """True when a substitution line has numbers to put into ``expr``."""
-        return bool(expr.free_symbols & (set(self.numeric) | self._xy_components() | self.varied))
+        known = set(self.numeric) | set(self.outcome.values) | self._xy_components() | self.varied
+        return bool(expr.free_symbols & known)
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
-        """``expr`` with the pre-impact components and every numeric given put in."""
-        return evaluate(expr.xreplace(self.imp.pre), self.p)
+        """``expr`` with the pre-impact components and every numeric given put in; where a
+        letter stays, those the file wrote as decimals go in as decimals (0.9 u, not 9u/10)."""
+        exact = evaluate(expr.xreplace(self.imp.pre), self.p)
+        if exact.free_symbols & self.letters:
+            return evaluate(expr.xreplace(self.imp.pre), self.p, decimals=True)
+        return exact
 
     def value_of(self, s: sympy.Symbol) -> sympy.Expr:
         """A solved quantity: its number, or its closed form with numbers in."""
         r = self.results.get(s.name)
         if r is not None:
-            return r.value if r.value is not None else r.partial
+            if r.value is not None:
+                return r.value
+            if r.unit != "deg" and any(g.decimal for g in self.p.givens) and r.partial.free_symbols & self.letters:
+                shown = evaluate(r.closed, self.p, decimals=True)  # 0.475 v_A1 √2, not 19 v_A1 √2/40
+                return sympy.simplify(shown) if sympy.count_ops(shown) < 150 else shown
+            return r.partial
         return self.num(self.imp.closed[s])
 
     def unit_of(self, s: sympy.Symbol) -> str | None:
@@ -143,3 +159,18 @@ def nonzero(terms: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
     """The terms that are not zero (a single 0 when none is left)."""
     kept = tuple(t for t in terms if t != 0)
     return kept or (sympy.Integer(0),)
+
+
+def interval_text(interval: sympy.Set, x: sympy.Symbol) -> Text:
+    """``1/2 < e ≤ 1`` as words and inline mathematics."""
+    if interval is sympy.S.EmptySet:
+        return ("no value of ", Math(x), " at all")
+    if not isinstance(interval, sympy.Interval):
+        return (Math(interval),)
+    lo, hi = interval.start, interval.end
+    parts: list[sympy.Expr] = []
+    if lo != -sympy.oo:
+        parts.append((sympy.StrictLessThan if interval.left_open else sympy.LessThan)(lo, x))
+    if hi != sympy.oo:
+        parts.append((sympy.StrictLessThan if interval.right_open else sympy.LessThan)(x, hi))
+    return tuple(p for i, r in enumerate(parts) for p in (((" and ",) if i else ()) + (Math(r),)))
