@@ -105,7 +105,9 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
         ]
         for block, claims in book.claims.items()
     }
-    results = {name: r.partial for name, r in solution.results.items()}
+    # a result that needs no varied given is a number already: ``value`` (an angle in degrees;
+    # its ``partial`` would be radians, atan2(x, 0) = pi/2)
+    results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
     result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
     check_fn = _checks(symbolic, symbols, results, prep)
     return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn)
