@@ -125,6 +125,9 @@ def _check(args: argparse.Namespace) -> int:
 
     report, text = run(args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format)
     sys.stdout.write(text)
+    for item in report.items:  # an item that could not be read is in the report, and named here
+        if item.status == "error":
+            print(f"Error: {_one_line(item.message)}", file=sys.stderr)
     return report.exit_code
 
 
