@@ -26,6 +26,7 @@ DEG = math.pi / 180
 mA, mB, e, vA, vB, th = 20.0, 5.0, 0.6, 5.0, 15.0, 37.6 * DEG
 # 4.C.11 by hand: n along A's velocity's n component, B moving toward A
 A1n, A1t, B1n, B1t = vA * math.cos(th), vA * math.sin(th), -vB * math.cos(th), -vB * math.sin(th)
+COS = math.cos(th)
 _SOLVED: dict[str, derive.Solution] = {}
 
 
@@ -172,11 +173,14 @@ def test_answers_from_the_notes_numbers_of_3_and_4_are_accepted() -> None:
     assert one(C11, "theta_A2", f"{theta:.2f}").status == "correct"
 
 
-def test_the_rounding_band_is_narrow() -> None:
+def test_the_rounding_band_is_narrow_and_a_near_miss_gets_a_word_about_rounding() -> None:
+    exact = {"v_B2n": 53 / 5 * COS, "v_A2n": -7 / 5 * COS}  # the notes' example solved by hand
     for name, written in (("v_B2n", "8.396"), ("v_B2n", "8.42"), ("v_A2n", "-1.107"), ("v_A2n", "-1.13")):
         item = one(C11, name, written)
         assert item.status == "wrong", (written, item.message)
-        assert "rounded" not in item.message
+        near = abs(float(written) - exact[name]) <= 0.01 * abs(exact[name])
+        assert ("within 1 % of the exact value" in item.message) is near, item.message
+        assert ("3-figure intermediates give" in item.message) is near
 
 
 def test_no_rounding_band_with_a_tolerance() -> None:

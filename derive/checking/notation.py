@@ -29,7 +29,7 @@ _UNICODE = {
     "√": " sqrt ",
 }
 _NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
-_ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|\bdeg\b|(\brad\b))")
+_ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
 _BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
 _TOKEN = re.compile(rf"\s*({_NUM}|[A-Za-z][A-Za-z0-9_]*|\*\*|[-+*/^(),=]|\S)")
 

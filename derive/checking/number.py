@@ -23,6 +23,8 @@ from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.units import ANGLE, DIMENSIONLESS
 
+#: A wrong answer this close (relative) to the exact value gets a word about rounding.
+NEAR = Decimal("0.01")
 #: Other units a value may have been worked out in, by dimension (for the "right value, wrong unit" hint).
 ALTERNATIVES: dict[units.Dim, tuple[str, ...]] = {
     units.VELOCITY: ("m/s", "ft/s", "km/h", "mi/h"),
@@ -70,6 +72,8 @@ def number_item(ctx: Context, e: Entry, r: Result, text: str, number: str, unit:
             return Item("answer", r.name, text, "correct", expected, _rounded_message(number, band, unit), **fields)
         diags, together = _diagnosis(ctx, r, u, unit, scale, ctx.pairs()), True
     hints = _hints(ctx, r, u, x, unit, number, unit_written)
+    if not diags and ctx.tolerance is None and x != 0 and abs(u - to_decimal(x)) <= NEAR * abs(to_decimal(x)):
+        hints.append(_near_message(ctx, r, scale, unit))
     if diags and together:
         msg = f"Wrong: {number} is what {'these two mistakes' if len(diags) == 2 else 'two of these mistakes'} give together."
     elif diags:
@@ -135,6 +139,20 @@ def _rounded_message(number: str, band: tuple[str, str], unit: units.Unit) -> st
         f"method gives with intermediates rounded to {INTERMEDIATE_FIGURES} significant figures ({span}"
         f"{' ' + units.plain_unit(unit.text) if unit.text and units.plain_unit(unit.text) != '°' else ''}). "
         "Carry a figure more through the working to land on the exact value."
+    )
+
+
+def _near_message(ctx: Context, r: Result, scale: sympy.Expr, unit: units.Unit) -> str:
+    """A wrong answer within :data:`NEAR` of the exact value: perhaps rounding."""
+    values = [to_decimal(v * scale) for v in rounded_values(ctx, r.name)]
+    band = ""
+    if values:
+        exact = to_decimal(r.value * scale)
+        lo, hi = min([*values, exact]), max([*values, exact])
+        band = f" ({INTERMEDIATE_FIGURES}-figure intermediates give {format_number(lo, 4)} to {format_number(hi, 4)})"
+    return (
+        f"It is within {NEAR * 100:.0f} % of the exact value: if it was worked from rounded intermediates, "
+        f"carry more figures{band}."
     )
 
 
