@@ -70,8 +70,13 @@ def run(
     equations: list[str] | None = None,
     tolerance: str | None = None,
     fmt: str = "text",
+    derivation: str | None = None,
 ) -> tuple[Report, str]:
-    """What ``derive check`` does: load, solve, check; returns the report and its rendering."""
+    """What ``derive check`` does: load, solve, check; returns the report and its rendering.
+
+    ``derivation`` is the path of a typed derivation (``.md``, ``.tex`` or plain lines).
+    """
+    from derive.fileio import read_user_text
     from derive.problem import load
     from derive.steps import solve
 
@@ -84,10 +89,14 @@ def run(
     )
     given = given.merged(extra)
     tol = parse_tolerance(tolerance) if tolerance is not None else given.tolerance
-    if not given.answers and not given.equations:
-        raise InputError("nothing to check: give answers with --answer NAME=VALUE or --answers FILE", where="usage")
+    work = read_user_text(derivation, "a derivation") if derivation else None
+    if not given.answers and not given.equations and work is None:
+        raise InputError(
+            "nothing to check: give answers with --answer NAME=VALUE or --answers FILE, or --derivation FILE",
+            where="usage",
+        )
     solution = solve(load(problem))
-    report = check(solution, given, tolerance=tol)
+    report = check(solution, given, tolerance=tol, derivation=work)
     return report, report.render(fmt)
 
 

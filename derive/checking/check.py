@@ -1,4 +1,4 @@
-"""``derive.check``: judge hand answers and equations against a solution.
+"""``derive.check``: judge hand answers, equations and a typed derivation against a solution.
 
 Each answer, equation and line becomes an :class:`~.report.Item`; one that cannot
 be read becomes an item with status "error" (and its message), so that the other
@@ -29,13 +29,15 @@ def check(
     *,
     equations: Any = None,
     tolerance: Any = None,
+    derivation: str | None = None,
 ) -> Report:
-    """Check hand answers (and equations) against ``solution``.
+    """Check hand answers (and equations, and a typed derivation) against ``solution``.
 
     ``answers`` maps result names to values (``{"v_B2n": "8.40 m/s", "v_A2n": -1.11}``),
     or is a list of ``"NAME=VALUE"`` strings, or what :func:`~.answers.load_answers` read;
     ``equations`` maps labels ("3", "4") to equations (``"20*v_A2n + 5*v_B2n = 19.8"``);
-    ``tolerance`` is relative (0.01 or "1%"):
+    ``derivation`` is the text of a typed derivation (plain lines, Markdown or LaTeX),
+    judged line by line (:mod:`.lines`); ``tolerance`` is relative (0.01 or "1%"):
     without it numbers are judged at the precision they are written with. An item that
     cannot be read is reported with status "error"; raises
     :class:`~derive.errors.InputError` when nothing can be read.
@@ -51,7 +53,7 @@ def check(
         solution = solve(solution)
     given = as_answers(answers, equations)
     tol = parse_tolerance(tolerance if tolerance is not None else given.tolerance, "tolerance")
-    if not given.answers and not given.equations:
+    if not given.answers and not given.equations and derivation is None:
         raise InputError("nothing to check: give answers (--answer NAME=VALUE or --answers FILE)", field="answers")
     ctx = Context(solution, tol)
     items: list[Item] = []
@@ -63,6 +65,10 @@ def check(
             except InputError as exc:
                 errors.append(exc)
                 items.append(error_item("answer" if judge is answer_item else "equation", e, exc))
+    if derivation is not None:
+        from derive.checking.lines import derivation_items
+
+        items += derivation_items(ctx, derivation)
     if errors and len(errors) == len(items):
         raise errors[0]
     p = solution.problem
