@@ -231,3 +231,12 @@ def test_cli_derivation(cli, tmp_path: Path) -> None:
     empty.write_text("no mathematics here\n", encoding="utf-8")
     r = cli("check", C11, "--derivation", str(empty), "--format", "json")
     assert r.code == 2 and '"status": "error"' in r.out
+
+
+def test_a_long_derivation_says_what_was_not_checked() -> None:
+    from derive.checking.derivation import MAX_LINES
+
+    work = "v_A2t = 5 sin 37.6°\n" * (MAX_LINES + 3)
+    report = derive.check(solved(C11), derivation=work)
+    assert len(report.items) == MAX_LINES + 1
+    assert report.items[-1].status == "error" and "3 more relations" in report.items[-1].message

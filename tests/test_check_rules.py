@@ -277,3 +277,20 @@ def test_a_mistake_built_on_another() -> None:
     a, b = n_solve(mA * sA + mB * sB, e * (sA - sB))
     assert float(out.results["v_A2n"].value) == pytest.approx(a, rel=1e-12)
     assert float(out.results["v_B2n"].value) == pytest.approx(b, rel=1e-12)
+
+
+def test_a_new_kind_of_mistake_is_one_decorated_function() -> None:
+    # BYJU'S: 4 kg at 12 m/s behind 8 kg at 4 m/s, e = 0.5; with e halved, by hand
+    v_A2 = (4 * 12 + 8 * 4 - 8 * 0.25 * (12 - 4)) / 12
+    try:
+
+        @mistakes.mistake("e_halved", "e halved", "e was taken as half its value.", (4,), "the impact rule", "halves e")
+        def e_halved(model: mistakes.Model) -> mistakes.Variant:
+            return mistakes.Variant(e=model.e / 2)
+
+        assert list(mistakes.REGISTRY)[-1] == "e_halved"
+        solution = derive.solve(derive.load("byjus-4kg-ball-catches-8kg-ball"))  # its own cache
+        item = derive.check(solution, {"v_A2": sig(v_A2, 4)}).items[0]
+        assert item.status == "wrong" and "e_halved" in [d.mistake for d in item.diagnosis], item.message
+    finally:
+        mistakes.REGISTRY.pop("e_halved", None)

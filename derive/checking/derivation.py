@@ -17,6 +17,7 @@ from dataclasses import dataclass
 
 from derive.checking.notation import student
 
+#: The most relations of one derivation that are judged (the rest are reported as not checked).
 MAX_LINES = 200
 
 
@@ -55,8 +56,6 @@ def read_derivation(text: str) -> tuple[Line, ...]:
             line = relation(number, written, part)
             if line is not None:
                 out.append(line)
-            if len(out) >= MAX_LINES:
-                return tuple(out)
     return tuple(out)
 
 

@@ -20,7 +20,7 @@ import sympy
 
 from derive.checking import mistakes
 from derive.checking.context import Context
-from derive.checking.derivation import Line, read_derivation
+from derive.checking.derivation import MAX_LINES, Line, read_derivation
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
@@ -60,7 +60,11 @@ def derivation_items(ctx: Context, text: str) -> list[Item]:
     if not lines:
         return [Item("line", "", "", "error", "", "The derivation has no relation to check (no line with '=').")]
     trace = Trace(ctx)
-    return [trace.item(line) for line in lines]
+    items = [trace.item(line) for line in lines[:MAX_LINES]]
+    if len(lines) > MAX_LINES:
+        rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
+        items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
+    return items
 
 
 class Trace:

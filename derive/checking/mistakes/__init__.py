@@ -24,7 +24,7 @@ from derive.checking.mistakes.equations import Model
 from derive.checking.mistakes.outcomes import changes, correct, model, outcomes, pair_outcomes
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Mistake, Outcome, Quantity, Variant, mistake
-from derive.checking.mistakes.registry import EQUATION_TITLES, KINDS, REGISTRY, phrase
+from derive.checking.mistakes.registry import EQUATION_TITLES, KINDS, REGISTRY, phrase, register
 
 __all__ = [
     "EQUATION_TITLES",
@@ -44,4 +44,5 @@ __all__ = [
     "outcomes",
     "pair_outcomes",
     "phrase",
+    "register",
 ]

@@ -87,7 +87,7 @@ class Model:
         placeholders for the masses, e and (in (4)) the approach components."""
         nm, p = self.nm, self.problem
         mA, mB, e = self.m_A, self.m_B, self.e
-        k = v.t_factor if v.t_factor is not None else 1
+        k = v.t_factor if v.t_factor is not None else (e if v.t_rule == "scaled" else 1)
         eqs: dict[int, sympy.Expr] = {}
         if p.oblique:
             if v.t_rule == "system":

@@ -8,7 +8,7 @@ import weakref
 from derive.checking.mistakes.equations import Model, point
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Outcome
-from derive.checking.mistakes.registry import KINDS
+from derive.checking.mistakes.registry import REGISTRY
 from derive.steps.model import Solution
 
 
@@ -25,7 +25,7 @@ class _Entry:
     def outcomes(self) -> list[Outcome]:
         if self.found is None:
             found = []
-            for m in KINDS:
+            for m in REGISTRY.values():
                 variant = m.build(self.model)
                 if variant is None:
                     continue

@@ -17,7 +17,7 @@ class Variant:
     expressions in the givens; ``approach`` is what (4) uses for v_A1n and v_B1n;
     ``masses`` are (m_A, m_B) as the equations use them; ``restitution`` is
     "normal" or "reversed"; ``t_rule`` is "each" (equations (1), (2)) or "system"
-    (one t velocity for both); ``t_factor`` multiplies the t components before the
+    (one t velocity for both) ("scaled", as before, is "each" with e as ``t_factor``); ``t_factor`` multiplies the t components before the
     impact in (1) and (2) (e where e is applied to them; None for 1); ``energy``
     replaces (4) with conservation of kinetic energy (its nontrivial root is e = 1);
     ``values`` overrides the numbers of some givens; ``angles`` is how the
@@ -55,8 +55,14 @@ class Mistake:
     phrase: str
     build: Callable[[Any], Variant | None]
 
-    def where_in(self, numbers: tuple[int, ...]) -> str:
-        """``where`` for a problem with equations ``numbers``: only the equations it has."""
+    def __call__(self, model: Any) -> Variant | None:
+        """``build(model)``: the mistake's variant of the equations, or None."""
+        return self.build(model)
+
+    def where_in(self, numbers: tuple[int, ...] | Any) -> str:
+        """``where`` for a problem with equations ``numbers`` (or a model, which has them):
+        only the equations it has."""
+        numbers = getattr(numbers, "numbers", numbers)
         nums = [k for k in self.enters if k in numbers]
         if not self.enters:
             return self.where
@@ -90,12 +96,18 @@ class Outcome:
     unknowns: tuple[sympy.Symbol, ...]
 
 
+#: Every mistake by name (:mod:`.registry` puts the built-in kinds in report order).
+REGISTRY: dict[str, Mistake] = {}
+
+
 def mistake(
     name: str, title: str, description: str, enters: tuple[int, ...], where: str, phrase: str
 ) -> Callable[[Callable[[Any], Variant | None]], Mistake]:
-    """Make a :class:`Mistake` of a function ``build(model) -> Variant | None``."""
+    """Make a :class:`Mistake` of a function ``build(model) -> Variant | None`` and register it."""
 
     def make(build: Callable[[Any], Variant | None]) -> Mistake:
-        return Mistake(name, title, description, enters, where, phrase, build)
+        m = Mistake(name, title, description, enters, where, phrase, build)
+        REGISTRY[name] = m
+        return m
 
     return make

@@ -1,13 +1,13 @@
 """The common mistakes, in the order a report lists them: one entry per kind.
 
-A new kind is a function in one of the family modules (decorated with
-:func:`~.records.mistake`) and one line here.
+A new kind is a function decorated with :func:`~.records.mistake` (which registers
+it, after these); a built-in one is also one line of :data:`KINDS`.
 """
 
 from __future__ import annotations
 
 from derive.checking.mistakes import directions, masses, restitution, tangential, velocities
-from derive.checking.mistakes.records import Mistake
+from derive.checking.mistakes.records import REGISTRY, Mistake
 
 #: What each of the equations is, in words (the notes' three systems and the impact rule).
 EQUATION_TITLES = {
@@ -32,8 +32,16 @@ KINDS: tuple[Mistake, ...] = (
     masses.weight_as_mass,
 )
 
-#: Every mistake by name.
-REGISTRY: dict[str, Mistake] = {m.name: m for m in KINDS}
+# every kind registered itself when its module was imported; here they are put in report order
+_OTHERS = {k: m for k, m in REGISTRY.items() if m not in KINDS}
+REGISTRY.clear()
+REGISTRY.update({m.name: m for m in KINDS}, **_OTHERS)
+
+
+def register(m: Mistake) -> Mistake:
+    """Add a kind of mistake after those of :data:`KINDS` (what :func:`~.records.mistake` does); returns it."""
+    REGISTRY[m.name] = m
+    return m
 
 
 def phrase(name: str) -> str | None:
