@@ -294,3 +294,26 @@ def test_a_new_kind_of_mistake_is_one_decorated_function() -> None:
         assert item.status == "wrong" and "e_halved" in [d.mistake for d in item.diagnosis], item.message
     finally:
         mistakes.REGISTRY.pop("e_halved", None)
+
+
+def test_a_files_own_condition_is_kept_by_the_mistakes(problem_from) -> None:
+    # 2 kg at 3 m/s onto 1 kg at rest, e unknown, a quarter of the energy lost: by hand
+    # 2a + b = 6 and a^2 + b^2/2 = 3/4 * 9 give (a, b) = (1.5, 3) with e = 0.5, or (2.5, 1):
+    # the root of the reversed impact rule 3e = a - b, with e = 0.5 again
+    problem = problem_from(
+        """
+        title = "A quarter of the energy lost"
+        kind = "direct"
+        equations = ["T_2 = 3/4*T_1"]
+        [given]
+        m_A = "2 kg"
+        m_B = "1 kg"
+        v_A1 = "3 m/s"
+        v_B1 = 0
+        e = "?"
+        """
+    )
+    solution = derive.solve(problem)
+    report = derive.check(solution, {"e": "0.5", "v_A2": "1.5", "v_B2": "1.0"}, equations={"3": "2 v_A2 + v_B2 = 6"})
+    assert [i.status for i in report.items] == ["correct", "correct", "wrong", "correct"], report.text()
+    assert [d.mistake for d in report.items[2].diagnosis] == ["restitution_reversed"]

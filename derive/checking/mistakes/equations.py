@@ -102,6 +102,9 @@ class Model:
             eqs[3] = mA * nm.A1n + mB * nm.B1n - mA * nm.A2n - mB * nm.B2n
         sep = nm.B2n - nm.A2n if v.restitution == "normal" else nm.A2n - nm.B2n
         eqs[4] = e * (APPROACH_A - APPROACH_B) - sep
+        for k, eq in self.imp.equations.items():  # the file's own conditions (5), (6), ...: kept as they are
+            if k > 4:
+                eqs[k] = eq.lhs - eq.rhs
         return eqs
 
     def energy_equation(self) -> sympy.Expr:
