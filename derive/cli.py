@@ -48,6 +48,9 @@ def _parser() -> argparse.ArgumentParser:
     p_check.add_argument("--answer", "-a", action="append", metavar="NAME=VALUE", help="an answer (repeatable)")
     p_check.add_argument("--answers", metavar="FILE", help="answers (and equations) in a TOML file")
     p_check.add_argument("--equation", action="append", metavar="'N: LHS = RHS'", help="an equation (repeatable)")
+    p_check.add_argument(
+        "--derivation", metavar="FILE", help="a typed derivation (.md, .tex or plain lines), judged line by line"
+    )
     p_check.add_argument("--tolerance", help="relative tolerance, e.g. 0.01 or 1%% (default: the figures written)")
     p_check.add_argument("--format", "-f", choices=("text", "md", "json"), default="text", help="default: text")
     p_check.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -130,8 +133,13 @@ def _list(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     from derive.checking.answers import run
 
-    report, text = run(args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format)
+    report, text = run(
+        args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format, args.derivation
+    )
     sys.stdout.write(text)
+    for item in report.items:  # an item that could not be read is in the report, and named here
+        if item.status == "error":
+            print(f"Error: {_one_line(item.message)}", file=sys.stderr)
     return report.exit_code
 
 
