@@ -185,12 +185,16 @@ def view(
     *,
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
+    falls: bool = False,
+    known: dict[sympy.Symbol, sympy.Expr] | None = None,
 ) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
 
     With ``slots``, every number that depends on a ``varied`` given is left open
-    (a token), so that one compiled page serves every homework variant.
+    (a token), so that one compiled page serves every homework variant. ``falls``
+    and ``known`` are for an impact inside a chain: drawn with n pointing down, and
+    the chain's numbers for symbols the impact leaves open.
     """
     p = solution.problem
     style = Style(
@@ -201,7 +205,7 @@ def view(
         blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
-            fig = figure.describe(solution, after=stage.figure == "after")
+            fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
             entry["figure_caption"] = fig.title + ": arrows to scale with speed"
@@ -346,9 +350,10 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     p = sol.problem
     style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
     stages = []
+    falls = figure.chain_falls(sol) if figures else {}
     for st in sol.stages:
         if st.part is not None:
-            v = view(st.part, digits, figures=figures)
+            v = view(st.part, digits, figures=figures, falls=falls.get(st.number, False), known=sol.values)
             carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
             stages.append(
                 {

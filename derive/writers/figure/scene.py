@@ -1,0 +1,333 @@
+"""From a solution to a figure: bodies at contact, the n and t axes, velocity arrows,
+angles, walls and floors, x-y axes, with every label placed.
+
+The figure reads the solution's numbers; it does no physics of its own. A symbol
+without a number (a symbolic mass or speed) is drawn as 1, so that arrows stay in
+proportion: in Example 4.C.12 every speed is a multiple of v_A1.
+
+Which way is down (docs/figures.md): n points down, A above B, when B is a fixed
+body named as a floor ("floor", "ground"), or when, in a chain, the impact follows a
+``fall`` stage and a later stage moves vertically (``rise``, ``bounces``, a
+``spring`` with ``vertical = true``). Otherwise n points to the right; with a
+``[geometry]`` table n is drawn at its angle phi from +x, x to the right, y up.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import sympy
+
+from derive.physics.impact import independent_map
+from derive.problem import Problem
+from derive.steps.model import Solution
+from derive.writers.figure.layout import AROUND, Spec, place
+from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
+
+ARROW_MAX = 3.0  # cm: the arrow of the greatest speed, before or after
+R_MAX = 1.3  # cm: the radius of the larger body
+ARC_R = 0.75  # cm: the radius of an angle's arc
+FLOOR_WORDS = ("floor", "ground")
+#: The order labels are placed in: those with the least room first.
+ORDER = {"body": 0, "angle": 1, "velocity": 2, "axis": 3, "surface": 4}
+
+
+@dataclass(frozen=True)
+class Frame:
+    """The drawing directions of +n and +t (t is n turned 90° counter-clockwise)."""
+
+    n: Point
+    falls: bool = False
+    xy: bool = False
+
+    @property
+    def t(self) -> Point:
+        return -self.n[1], self.n[0]
+
+    def at(self, a: float, b: float) -> Point:
+        """The drawing point a along n and b along t from the point of contact."""
+        return a * self.n[0] + b * self.t[0], a * self.n[1] + b * self.t[1]
+
+    def axis(self, name: str) -> Point:
+        """The drawing direction of an axis named ``+n``, ``-t``, ``+x``, ..."""
+        sign = -1.0 if name[0] == "-" else 1.0
+        vec = {"n": self.n, "t": self.t, "x": (1.0, 0.0), "y": (0.0, 1.0)}[name[1]]
+        return sign * vec[0], sign * vec[1]
+
+
+def number(expr: object, values: Mapping[sympy.Symbol, sympy.Expr] | None = None) -> float | None:
+    """``expr`` as a float, each symbol without a value taken as 1; None if not real."""
+    if expr is None:
+        return None
+    e = sympy.sympify(expr)
+    if values:
+        e = e.xreplace(dict(values))
+    e = e.xreplace(dict.fromkeys(e.free_symbols, sympy.Integer(1)))
+    try:
+        z = complex(sympy.N(e))
+    except (TypeError, ValueError):
+        return None
+    return z.real if abs(z.imag) < 1e-9 and math.isfinite(z.real) else None
+
+
+def is_floor(problem: Problem) -> bool:
+    """True when B is fixed and its name says it is a floor."""
+    name = (problem.name_B or "").lower()
+    return problem.fixed_B and any(w in name for w in FLOOR_WORDS)
+
+
+def chain_falls(solution: Solution) -> dict[int, bool]:
+    """Stage number -> True for each impact stage of a chain that is drawn vertically."""
+    stages = solution.stages
+    tables = getattr(solution.problem, "stages", ())
+    out = {}
+    for i, st in enumerate(stages):
+        if st.part is None:
+            continue
+        after = stages[i + 1 :]
+        vertical = any(
+            s.kind in ("rise", "bounces")
+            or (s.kind == "spring" and i + 1 + j < len(tables) and tables[i + 1 + j].get("vertical") is True)
+            for j, s in enumerate(after)
+        )
+        out[st.number] = is_floor(st.part.problem) or (i > 0 and stages[i - 1].kind == "fall" and vertical)
+    return out
+
+
+def frame(problem: Problem, falls: bool, values: Mapping[sympy.Symbol, sympy.Expr]) -> Frame:
+    """Where n points in the drawing."""
+    if falls or is_floor(problem):
+        return Frame((0.0, -1.0), falls=True)
+    if problem.phi is not None:
+        phi = number(values.get(problem.phi, problem.phi), values) or 0.0
+        return Frame((math.cos(phi), math.sin(phi)), xy=True)
+    return Frame((1.0, 0.0))
+
+
+def radii(problem: Problem) -> tuple[float, float]:
+    """Drawn radii of A and B: in the ratio of the given r_A and r_B, else equal."""
+    given = {g.name: g for g in problem.givens}
+    ind = independent_map(problem)
+    values = problem.numeric()
+    found = []
+    for name in ("r_A", "r_B"):
+        g = given.get(name)
+        expr = None if g is None else (g.value if g.value is not None else g.symbol.xreplace(ind))
+        found.append(number(expr, values))
+    a, b = found
+    if a is None or b is None or a <= 0 or b <= 0:
+        return R_MAX, R_MAX
+    big = max(a, b)
+    return R_MAX * a / big, R_MAX * b / big
+
+
+def _result(solution: Solution, name: str, values: Mapping) -> float | None:
+    r = solution.results.get(name)
+    if r is not None:
+        return number(r.value if r.value is not None else r.partial, values)
+    p = solution.problem
+    for g in p.givens:  # a velocity after the impact given (an inverse problem)
+        if g.name == name:
+            return number(g.value if g.value is not None else g.symbol, values)
+    return None
+
+
+def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
+    """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
+    p = solution.problem
+    known = {**solution.values, **values}
+    ind = independent_map(p)
+    out: dict[str, tuple[float, float]] = {}
+    for b in "AB":
+        if b == "B" and p.fixed_B:
+            continue
+        motion = p.motion_A if b == "A" else p.motion_B
+        n, t = number(motion.n.xreplace(ind), known), number(motion.t.xreplace(ind), known)
+        if n is not None and t is not None:
+            out[b + "1"] = (n, t)
+        if p.oblique:
+            n2, t2 = _result(solution, f"v_{b}2n", known), _result(solution, f"v_{b}2t", known)
+        else:
+            n2, t2 = _result(solution, f"v_{b}2", known), 0.0
+        if n2 is not None and t2 is not None:
+            out[b + "2"] = (n2, t2)
+    return out
+
+
+def _perps(ux: float, uy: float, away: Point) -> tuple[Point, Point]:
+    """The two directions across (ux, uy), the one pointing along ``away`` first."""
+    left, right = (-uy, ux), (uy, -ux)
+    return (left, right) if left[0] * away[0] + left[1] * away[1] >= 0 else (right, left)
+
+
+def arrow_spec(a: Arrow, free_end: Point, outward: Point) -> Spec:
+    """Where a velocity's label may go: beside its middle (on the side away from the
+    point of contact, else above), beyond its free end, beside its quarters."""
+    ux, uy = (a.x2 - a.x1) / a.length, (a.y2 - a.y1) / a.length
+    mid = ((a.x1 + a.x2) / 2, (a.y1 + a.y2) / 2)
+    p1, p2 = _perps(ux, uy, (mid[0] + 1e-6, mid[1] + 1e-3))
+    quarter = ((3 * free_end[0] + mid[0]) / 4, (3 * free_end[1] + mid[1]) / 4)
+    return Spec(
+        a.name,
+        "velocity",
+        ((mid, (p1, p2)), (free_end, (outward, p1, p2)), (quarter, (p1, p2)), (mid, AROUND)),
+    )
+
+
+def _ring(b: Body) -> tuple[tuple[Point, tuple[Point, ...]], ...]:
+    """Anchors on a body's outline, each with its outward direction (below and above first)."""
+    order = [AROUND[k] for k in (8, 0, 4, 12, 6, 10, 2, 14)]
+    return tuple(((b.x + b.r * ux, b.y + b.r * uy), ((ux, uy),)) for ux, uy in order)
+
+
+def _frame_shapes(p: Problem, fr: Frame, A: Body, B: Body | None) -> tuple[list[Shape], list[Spec]]:
+    """The bodies (or the wall), the line of impact n and the plane of contact t."""
+    shapes: list[Shape] = [A]
+    specs = [Spec("A", "body", _ring(A), home=A, inside=True)]
+    span = max(A.r, B.r if B else 0.0)
+    if B is not None:
+        shapes.append(B)
+        specs.append(Spec("B", "body", _ring(B), home=B, inside=True))
+        n_end, t_half = B.r * 2 + 0.8, span + 0.8
+    else:
+        half = A.r + 0.9
+        face = Surface(*fr.at(0, -half), *fr.at(0, half), *fr.n, p.name_B or "wall")
+        shapes.append(face)
+        tip = fr.at(0.5 * 0.3, half)
+        specs.append(Spec(face.name, "surface", ((tip, (fr.t, fr.n, *AROUND)),), math=False))
+        n_end, t_half = 1.0, half + 0.6
+    n_axis = Axis(*fr.at(-2 * A.r - 0.5, 0), *fr.at(n_end, 0), "n")
+    t_axis = Axis(*fr.at(0, -t_half), *fr.at(0, t_half), "t", dashed=True)
+    shapes += [n_axis, t_axis]
+    for ax, along in ((n_axis, fr.n), (t_axis, fr.t)):
+        specs.append(Spec(ax.name, "axis", (((ax.x2, ax.y2), (along, *AROUND)),)))
+    return shapes, specs
+
+
+def _arrow(centre: Body, vel: tuple[float, float], fr: Frame, scale: float, name: str, after: bool) -> Arrow:
+    """A velocity arrow: arriving at the centre before the impact, leaving it after."""
+    dx, dy = fr.at(vel[0] * scale, vel[1] * scale)
+    if after:
+        return Arrow(centre.x, centre.y, centre.x + dx, centre.y + dy, name)
+    return Arrow(centre.x - dx, centre.y - dy, centre.x, centre.y, name)
+
+
+def _angle(centre: Body, ref: Point, d: Point, name: str, guide: bool) -> tuple[list[Shape], Spec | None]:
+    """The arc from direction ``ref`` to ``d`` at a body's centre, its guide line and label."""
+    start = math.degrees(math.atan2(ref[1], ref[0]))
+    sweep = (math.degrees(math.atan2(d[1], d[0])) - start + 540) % 360 - 180
+    if abs(sweep) < 1 or abs(abs(sweep) - 180) < 1:
+        return [], None
+    arc = Arc(centre.x, centre.y, ARC_R, start, start + sweep, name)
+    shapes: list[Shape] = [arc]
+    if guide:
+        reach = ARC_R + 0.45
+        shapes.append(Guide(centre.x, centre.y, centre.x + reach * ref[0], centre.y + reach * ref[1]))
+    anchors = []
+    for frac in (0.5, 0.3, 0.7):
+        a = math.radians(start + frac * sweep)
+        u = (math.cos(a), math.sin(a))
+        anchors.append(((centre.x + ARC_R * u[0], centre.y + ARC_R * u[1]), (u,)))
+    anchors.append(((centre.x, centre.y), AROUND))
+    return shapes, Spec(name, "angle", tuple(anchors), home=centre)
+
+
+def _unit(fr: Frame, vel: tuple[float, float]) -> Point:
+    dx, dy = fr.at(*vel)
+    size = math.hypot(dx, dy)
+    return dx / size, dy / size
+
+
+def _motion_shapes(
+    solution: Solution, fr: Frame, bodies: dict[str, Body], vel: dict[str, tuple[float, float]], after: bool
+) -> tuple[list[Shape], list[Spec]]:
+    """Velocity arrows (to one scale for before and after), angles, and "= 0" for a body at rest."""
+    p = solution.problem
+    top = max((math.hypot(*v) for v in vel.values()), default=0.0)
+    scale = ARROW_MAX / top if top > 0 else 1.0
+    stage = "2" if after else "1"
+    shapes: list[Shape] = []
+    specs: list[Spec] = []
+    for b, body in bodies.items():
+        v = vel.get(b + stage)
+        name = f"v_{b}{stage}"
+        if v is None:
+            continue
+        if math.hypot(*v) * scale < 1e-6:
+            specs.append(Spec(name, "velocity", _ring(body), tail=" = 0"))
+            continue
+        arrow = _arrow(body, v, fr, scale, name, after)
+        shapes.append(arrow)
+        d = _unit(fr, v)
+        free = (arrow.x2, arrow.y2) if after else (arrow.x1, arrow.y1)
+        outward = d if after else (-d[0], -d[1])
+        specs.append(arrow_spec(arrow, free, outward))
+        found = _after_angles(p, b, fr, d) if after else _before_angle(p, b, fr, d)
+        for ref, label, guide in found:
+            more, spec = _angle(body, ref, d if after else (-d[0], -d[1]), label, guide)
+            shapes += more
+            specs += [spec] if spec else []
+    return shapes, specs
+
+
+def _before_angle(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
+    """The given angle of a velocity: between the axis (reversed) and the arrow's tail."""
+    motion = p.motion_A if b == "A" else p.motion_B
+    if motion.angle is None or motion.axis_from is None:
+        return []
+    ref = fr.axis(motion.axis_from)
+    return [((-ref[0], -ref[1]), motion.angle.name, motion.axis_from[1] != "n")]
+
+
+def _after_angles(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
+    """The directions the problem asks for: theta from +t, beta from +n."""
+    out = []
+    if f"theta_{b}2" in p.find:
+        out.append((fr.t, f"theta_{b}2", True))
+    if f"beta_{b}2" in p.find:
+        out.append((fr.n, f"beta_{b}2", False))
+    return out
+
+
+def _xy_axes(shapes: list[Shape]) -> tuple[list[Shape], list[Spec]]:
+    """Small x-y axes left of the drawing, for problems posed in x-y."""
+    x0, y0, _, _ = Figure("", tuple(shapes)).bounds(pad=0.0)
+    ox, oy = x0 - 1.9, y0 + 0.1
+    axes = [Axis(ox, oy, ox + 1.2, oy, "x"), Axis(ox, oy, ox, oy + 1.2, "y")]
+    specs = [Spec(a.name, "axis", (((a.x2, a.y2), (d, *AROUND)),)) for a, d in zip(axes, ((1, 0), (0, 1)), strict=True)]
+    return list(axes), specs
+
+
+def describe(
+    solution: Solution, after: bool = False, *, falls: bool | None = None, values: Mapping | None = None
+) -> Figure:
+    """The figure of an impact, before it or (``after``) after it.
+
+    ``falls`` draws n pointing down (see the module docstring; by default, a fixed
+    floor does); ``values`` gives numbers to symbols the solution leaves open (a
+    chain's later results). A chain gives the figure of its first impact.
+    """
+    if solution.is_chain:
+        first = next(st for st in solution.stages if st.part is not None)
+        down = chain_falls(solution)[first.number] if falls is None else falls
+        return describe(first.part, after, falls=down, values={**solution.values, **(values or {})})
+    p = solution.problem
+    known = {**solution.values, **(values or {})}
+    fr = frame(p, bool(falls), known)
+    rA, rB = radii(p)
+    A = Body(*fr.at(-rA, 0), rA, "A")
+    B = None if p.fixed_B else Body(*fr.at(rB, 0), rB, "B")
+    shapes, specs = _frame_shapes(p, fr, A, B)
+    bodies = {"A": A} if B is None else {"A": A, "B": B}
+    more, more_specs = _motion_shapes(solution, fr, bodies, velocities(solution, known), after)
+    shapes += more
+    specs += more_specs
+    if fr.xy:
+        axes, axis_specs = _xy_axes(shapes)
+        shapes += axes
+        specs += axis_specs
+    title = "After the impact" if after else "Before the impact"
+    specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
+    return Figure(title, tuple(shapes), place(specs, shapes))
