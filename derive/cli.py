@@ -1,4 +1,4 @@
-"""The command line: ``derive solve``, ``derive list``, ``derive check``. A thin layer over the library.
+"""The command line: ``derive solve``, ``list``, ``check``, ``variants``, ``handout``, ``plot``. A thin layer over the library.
 
 Exit codes: 0 done, 2 bad input or usage, 1 anything else.
 """
@@ -39,6 +39,7 @@ def _parser() -> argparse.ArgumentParser:
         "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
     )
     p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
+    p_solve.add_argument("--plot", action="store_true", help="add the plot of the outcome against e to the answer")
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -73,6 +74,13 @@ def _parser() -> argparse.ArgumentParser:
     p_hand.add_argument("--mode", choices=("problems", "answers", "solutions"), default="solutions")
     p_hand.add_argument("--digits", type=int, help="significant figures (default: each problem's)")
     p_hand.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    p_plot = sub.add_parser("plot", help="plot the outcome against e (0 to 1): velocities along n, energy lost")
+    p_plot.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_plot.add_argument(
+        "-o", "--output", help="FILE.svg, FILE.pdf, FILE.png or FILE.tex (default: SVG to standard output)"
+    )
+    p_plot.add_argument("--stage", type=int, help="in a chain, the impact stage to plot (default: the first)")
+    p_plot.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     return parser
 
 
@@ -94,15 +102,34 @@ def _solve(args: argparse.Namespace) -> int:
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
-        data: str | bytes = build_pdf(derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure))
+        tex = derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure, plot=args.plot)
+        data: str | bytes = build_pdf(tex)
     else:
         fmt = "tex-fragment" if args.format == "tex" and args.fragment else args.format
-        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure)
+        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure, plot=args.plot)
     if args.output:
         write_atomic(args.output, data, inputs=inputs)
     else:
         assert isinstance(data, str)
         sys.stdout.write(data)
+    return 0
+
+
+def _plot(args: argparse.Namespace) -> int:
+    import derive
+    from derive.fileio import write_atomic
+    from derive.writers import plot
+
+    fmt = Path(args.output).suffix.lower().lstrip(".") if args.output else "svg"
+    writers = {"svg": plot.to_svg, "tex": plot.to_tikz, "pdf": plot.to_pdf, "png": plot.to_png}
+    if fmt not in writers:
+        raise InputError("the extension sets the format: give -o FILE.svg, .pdf, .png or .tex", where="usage")
+    problem = derive.load(args.problem)
+    data = writers[fmt](plot.chart(plot.impact_of(problem, args.stage)))
+    if args.output:
+        write_atomic(args.output, data, inputs=(Path(problem.path),))
+    else:
+        sys.stdout.write(data if isinstance(data, str) else "")
     return 0
 
 
@@ -210,7 +237,14 @@ def main(argv: list[str] | None = None) -> int:
     debug = "--debug" in argv
     try:
         args = _parser().parse_args(argv)
-        commands = {"solve": _solve, "list": _list, "check": _check, "variants": _variants, "handout": _handout}
+        commands = {
+            "solve": _solve,
+            "list": _list,
+            "check": _check,
+            "variants": _variants,
+            "handout": _handout,
+            "plot": _plot,
+        }
         return commands[args.command](args)
     except DeriveError as exc:
         if debug:
