@@ -62,19 +62,22 @@ def write_html(rows: list[tuple[str, figure.Figure, figure.Figure]], path: Path)
 
 
 def write_tex(rows: list[tuple[str, figure.Figure, figure.Figure]], path: Path) -> bytes:
+    def fit(fig: figure.Figure) -> str:
+        """Side by side, each shrunk to half the text width if it is wider (on the page it is not)."""
+        pic = figure.to_tikz(fig)
+        if fig.width > 8.0:
+            pic = "\\resizebox{\\linewidth}{!}{" + pic + "}"
+        return "\\begin{minipage}[t]{0.49\\linewidth}\\centering " + pic + "\\end{minipage}"
+
     body = "\n".join(
-        "\\subsection*{"
-        + head.replace("_", "\\_")
-        + "}\n\\noindent"
-        + figure.to_tikz(a)
-        + "\\hfill"
-        + figure.to_tikz(b)
-        + "\\par"
+        "\\subsection*{" + head.replace("_", "\\_") + "}\n\\noindent" + fit(a) + "\\hfill" + fit(b) + "\\par"
         for head, a, b in rows
     )
     tex = (
         "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern,amsmath,tikz}\n"
-        "\\usepackage[margin=2.2cm,a4paper]{geometry}\n\\begin{document}\n" + body + "\n\\end{document}\n"
+        "\\usepackage[margin=2.2cm,a4paper]{geometry}\n\\usepackage{graphicx}\n\\begin{document}\n"
+        + body
+        + "\n\\end{document}\n"
     )
     path.write_text(tex)
     return build_pdf(tex)

@@ -210,7 +210,7 @@ def view(
             fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
-            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+            entry["figure_caption"] = f"{fig.title}: {fig.caption}"
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:

@@ -119,11 +119,13 @@ Shape = Body | Surface | Axis | Arrow | Arc | Guide
 
 @dataclass(frozen=True)
 class Figure:
-    """Shapes and labels of one figure; ``title`` names it (before or after the impact)."""
+    """Shapes and labels of one figure; ``title`` names it (before or after the impact),
+    ``caption`` says how it is drawn (to what scale)."""
 
     title: str
     shapes: tuple[Shape, ...] = ()
     labels: tuple[Label, ...] = field(default_factory=tuple)
+    caption: str = ""
 
     def bounds(self, pad: float = 0.25) -> tuple[float, float, float, float]:
         """(left, bottom, right, top) of everything drawn, with ``pad`` around."""

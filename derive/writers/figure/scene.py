@@ -15,7 +15,7 @@ body named as a floor ("floor", "ground"), or when, in a chain, the impact follo
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -49,6 +49,14 @@ class Frame:
     def at(self, a: float, b: float) -> Point:
         """The drawing point a along n and b along t from the point of contact."""
         return a * self.n[0] + b * self.t[0], a * self.n[1] + b * self.t[1]
+
+    def along(self, x: float, y: float) -> float:
+        """The n coordinate of a drawing point (from the point of contact)."""
+        return x * self.n[0] + y * self.n[1]
+
+    def across(self, x: float, y: float) -> float:
+        """The t coordinate of a drawing point."""
+        return x * self.t[0] + y * self.t[1]
 
     def axis(self, name: str) -> Point:
         """The drawing direction of an axis named ``+n``, ``-t``, ``+x``, ..."""
@@ -182,8 +190,11 @@ def _ring(b: Body) -> tuple[tuple[Point, tuple[Point, ...]], ...]:
     return tuple(((b.x + b.r * ux, b.y + b.r * uy), ((ux, uy),)) for ux, uy in order)
 
 
-def _frame_shapes(p: Problem, fr: Frame, A: Body, B: Body | None) -> tuple[list[Shape], list[Spec]]:
-    """The bodies (or the wall), the line of impact n and the plane of contact t."""
+def _frame_shapes(
+    p: Problem, fr: Frame, A: Body, B: Body | None, arrows: list[Arrow]
+) -> tuple[list[Shape], list[Spec]]:
+    """The bodies (or the wall), the line of impact n (reaching past any arrow that lies
+    along it, so that their heads stay apart) and the plane of contact t."""
     shapes: list[Shape] = [A]
     specs = [Spec("A", "body", _ring(A), home=A, inside=True)]
     span = max(A.r, B.r if B else 0.0)
@@ -198,6 +209,9 @@ def _frame_shapes(p: Problem, fr: Frame, A: Body, B: Body | None) -> tuple[list[
         tip = fr.at(0.5 * 0.3, half)
         specs.append(Spec(face.name, "surface", ((tip, (fr.t, fr.n, *AROUND)),), math=False))
         n_end, t_half = 1.0, half + 0.6
+    along = [fr.along(x, y) for a in arrows for x, y in ((a.x1, a.y1), (a.x2, a.y2)) if abs(fr.across(x, y)) < 0.3]
+    if B is not None and along:
+        n_end = max(n_end, max(along) + 0.6)
     n_axis = Axis(*fr.at(-2 * A.r - 0.5, 0), *fr.at(n_end, 0), "n")
     t_axis = Axis(*fr.at(0, -t_half), *fr.at(0, t_half), "t", dashed=True)
     shapes += [n_axis, t_axis]
@@ -206,12 +220,29 @@ def _frame_shapes(p: Problem, fr: Frame, A: Body, B: Body | None) -> tuple[list[
     return shapes, specs
 
 
-def _arrow(centre: Body, vel: tuple[float, float], fr: Frame, scale: float, name: str, after: bool) -> Arrow:
-    """A velocity arrow: arriving at the centre before the impact, leaving it after."""
-    dx, dy = fr.at(vel[0] * scale, vel[1] * scale)
-    if after:
-        return Arrow(centre.x, centre.y, centre.x + dx, centre.y + dy, name)
-    return Arrow(centre.x - dx, centre.y - dy, centre.x, centre.y, name)
+def _blocked(a: Arrow, others: list[Body], fr: Frame, wall: bool) -> bool:
+    """True when an arrow would run into another body, or through the wall."""
+    if wall and max(fr.along(a.x1, a.y1), fr.along(a.x2, a.y2)) > -0.01:
+        return True
+    for b in others:
+        dx, dy = a.x2 - a.x1, a.y2 - a.y1
+        k = max(0.0, min(1.0, ((b.x - a.x1) * dx + (b.y - a.y1) * dy) / (dx * dx + dy * dy)))
+        if math.hypot(a.x1 + k * dx - b.x, a.y1 + k * dy - b.y) < b.r + 0.05:
+            return True
+    return False
+
+
+def _arrow(
+    body: Body, d: Point, length: float, name: str, after: bool, room: Callable[[Arrow], bool]
+) -> tuple[Arrow, int]:
+    """A velocity arrow on the ray through the body's centre, starting at its outline: after
+    the impact leaving it ahead (side +1), before it arriving from behind (side -1); the
+    other way round when that side is taken by the other body or the wall."""
+    r0, r1 = body.r + 0.06, body.r + 0.06 + length
+    ahead = Arrow(body.x + r0 * d[0], body.y + r0 * d[1], body.x + r1 * d[0], body.y + r1 * d[1], name)
+    behind = Arrow(body.x - r1 * d[0], body.y - r1 * d[1], body.x - r0 * d[0], body.y - r0 * d[1], name)
+    first, second = ((ahead, 1), (behind, -1)) if after else ((behind, -1), (ahead, 1))
+    return first if room(first[0]) or not room(second[0]) else second
 
 
 def _angle(centre: Body, ref: Point, d: Point, name: str, guide: bool) -> tuple[list[Shape], Spec | None]:
@@ -240,14 +271,26 @@ def _unit(fr: Frame, vel: tuple[float, float]) -> Point:
     return dx / size, dy / size
 
 
+def scales(vel: dict[str, tuple[float, float]]) -> dict[str, float]:
+    """Centimetres per unit of speed, before ("1") and after ("2"): one scale for both,
+    unless one figure's greatest speed is under a quarter of the other's (a bullet that
+    lodges), when each figure has its own."""
+    top = {k: max((math.hypot(*v) for b, v in vel.items() if b[1] == k), default=0.0) for k in "12"}
+    both = max(top.values())
+    if both == 0:
+        return {"1": 1.0, "2": 1.0}
+    if min(top.values()) > 0 and min(top.values()) < both / 4:
+        return {k: ARROW_MAX / top[k] for k in "12"}
+    return {k: ARROW_MAX / both for k in "12"}
+
+
 def _motion_shapes(
     solution: Solution, fr: Frame, bodies: dict[str, Body], vel: dict[str, tuple[float, float]], after: bool
 ) -> tuple[list[Shape], list[Spec]]:
-    """Velocity arrows (to one scale for before and after), angles, and "= 0" for a body at rest."""
+    """Velocity arrows to scale, the angles of their directions, "= 0" for a body at rest."""
     p = solution.problem
-    top = max((math.hypot(*v) for v in vel.values()), default=0.0)
-    scale = ARROW_MAX / top if top > 0 else 1.0
     stage = "2" if after else "1"
+    scale = scales(vel)[stage]
     shapes: list[Shape] = []
     specs: list[Spec] = []
     for b, body in bodies.items():
@@ -258,30 +301,35 @@ def _motion_shapes(
         if math.hypot(*v) * scale < 1e-6:
             specs.append(Spec(name, "velocity", _ring(body), tail=" = 0"))
             continue
-        arrow = _arrow(body, v, fr, scale, name, after)
-        shapes.append(arrow)
+        others = [o for o in bodies.values() if o is not body]
         d = _unit(fr, v)
-        free = (arrow.x2, arrow.y2) if after else (arrow.x1, arrow.y1)
-        outward = d if after else (-d[0], -d[1])
+        arrow, side = _arrow(
+            body, d, math.hypot(*v) * scale, name, after, lambda a, o=others: not _blocked(a, o, fr, p.fixed_B)
+        )
+        shapes.append(arrow)
+        free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
         specs.append(arrow_spec(arrow, free, outward))
-        found = _after_angles(p, b, fr, d) if after else _before_angle(p, b, fr, d)
+        leg = (side * d[0], side * d[1])
+        found = _after_angles(p, b, fr) if after else _before_angle(p, b, fr)
         for ref, label, guide in found:
-            more, spec = _angle(body, ref, d if after else (-d[0], -d[1]), label, guide)
+            more, spec = _angle(body, (side * ref[0], side * ref[1]), leg, label, guide)
+            if more:  # the arrow's own leg of the angle, from the centre to the arrow
+                more.append(Guide(body.x, body.y, body.x + (body.r + 0.06) * leg[0], body.y + (body.r + 0.06) * leg[1]))
             shapes += more
             specs += [spec] if spec else []
     return shapes, specs
 
 
-def _before_angle(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
-    """The given angle of a velocity: between the axis (reversed) and the arrow's tail."""
+def _before_angle(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
+    """The given angle of a velocity: the axis it is measured from, its name, and whether
+    that axis needs a guide line (it is not the line of impact)."""
     motion = p.motion_A if b == "A" else p.motion_B
     if motion.angle is None or motion.axis_from is None:
         return []
-    ref = fr.axis(motion.axis_from)
-    return [((-ref[0], -ref[1]), motion.angle.name, motion.axis_from[1] != "n")]
+    return [(fr.axis(motion.axis_from), motion.angle.name, motion.axis_from[1] != "n")]
 
 
-def _after_angles(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
+def _after_angles(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
     """The directions the problem asks for: theta from +t, beta from +n."""
     out = []
     if f"theta_{b}2" in p.find:
@@ -319,9 +367,10 @@ def describe(
     rA, rB = radii(p)
     A = Body(*fr.at(-rA, 0), rA, "A")
     B = None if p.fixed_B else Body(*fr.at(rB, 0), rB, "B")
-    shapes, specs = _frame_shapes(p, fr, A, B)
     bodies = {"A": A} if B is None else {"A": A, "B": B}
-    more, more_specs = _motion_shapes(solution, fr, bodies, velocities(solution, known), after)
+    vel = velocities(solution, known)
+    more, more_specs = _motion_shapes(solution, fr, bodies, vel, after)
+    shapes, specs = _frame_shapes(p, fr, A, B, [s for s in more if isinstance(s, Arrow)])
     shapes += more
     specs += more_specs
     if fr.xy:
@@ -330,4 +379,6 @@ def describe(
         specs += axis_specs
     title = "After the impact" if after else "Before the impact"
     specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
-    return Figure(title, tuple(shapes), place(specs, shapes))
+    own = scales(vel)
+    note = "arrows to scale with speed" + ("" if own["1"] == own["2"] else ", a scale of their own in each figure")
+    return Figure(title, tuple(shapes), place(specs, shapes), caption=note)
