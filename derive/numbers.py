@@ -102,32 +102,52 @@ def decimals_of(text: str) -> int:
     return len(text.split(".")[1]) if "." in text else 0
 
 
-def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int:
+def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int | None:
     """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
-    19.81): the largest number's figures to start with, more until each sum's rounded
-    terms add up to its rounded total."""
+    19.81): the largest number's figures to start with, one more if the rounded terms
+    do not add up to the rounded total. None when no such places exist: the numbers
+    are too far apart in size for fixed places, or need more figures than the rule."""
     numbers = [x for terms, total in sums for x in (*terms, total)]
+    if any(x != 0 and not -4 <= x.adjusted() < 6 for x in numbers):
+        return None
     biggest = max((abs(x) for x in numbers), default=Decimal(0))
     text = format_number(biggest, digits, extra=extra) if biggest else ""
     start = decimals_of(text) if text and "e" not in text else 2
-    for places in range(start, start + 4):
+    for places in (start, start + 1):
         if all(
             sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))
             for terms, total in sums
         ):
             return places
-    return start + 3
+    return None
 
 
 def short_decimal(value: sympy.Expr) -> bool:
-    """True for an exact number with a short decimal form (0.2, 12.5): printed as it is."""
+    """True for an exact number with a short decimal form (0.2, 12.5, 1.67e-27): printed as written."""
     if not value.is_Rational:
         return False
     q = value.q
     for f in (2, 5):
         while q % f == 0:
             q //= f
-    return q == 1 and len(str(abs(to_decimal(value)).normalize())) <= 7
+    return q == 1 and len(abs(to_decimal(value)).normalize().as_tuple().digits) <= 6
+
+
+def as_written(value: sympy.Expr | Decimal) -> str:
+    """An exact short decimal as a textbook writes it: plain between 1e-4 and 1e6
+    (0.6, 12.5, 20), else with a power of ten (``1.67e-27``, ``2e+6``).
+
+    >>> as_written(sympy.Rational(167, 10**29))
+    '1.67e-27'
+    >>> as_written(sympy.Integer(2000000))
+    '2e+6'
+    """
+    d = (value if isinstance(value, Decimal) else to_decimal(value)).normalize()
+    if d == 0:
+        return "0"
+    if -4 <= d.adjusted() < 6:
+        return format(d, "f")
+    return f"{format(d.scaleb(-d.adjusted()), 'f')}e{d.adjusted():+d}"
 
 
 def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:

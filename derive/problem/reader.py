@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import sympy
@@ -397,15 +397,18 @@ def build_givens(
         if isinstance(raw, str) and raw.strip() == key and key in seed:
             done[key] = seed[key]
             del pending[key]
-    known = {**seed, **done}
+    # In a chain's stage, a name on the right refers to the chain's quantity, even
+    # where the stage defines the same name for itself (m_A = "m_B", m_B = "m_C").
+    outer = {k: g for k, g in seed.items() if k in pending}
     while pending:
         progressed = False
         for key in list(pending):
             raw = pending[key]
-            deps = _names_in(raw) & set(tbl)
+            deps = (_names_in(raw) & set(tbl)) - set(seed)
             if deps - set(done):
                 continue
-            done[key] = _given(key, raw, {**known, **done}, ctx, oblique, system)
+            scope = {**done, **seed, **{k: _alias(g) for k, g in outer.items()}}
+            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system), outer, ctx)
             del pending[key]
             progressed = True
         if not progressed:
@@ -417,6 +420,33 @@ def build_givens(
                 value=pending[key],
             )
     return [done[k] for k in tbl]
+
+
+def _alias(g: Given) -> Given:
+    """A chain's quantity that a stage shadows, under a symbol of its own while parsed."""
+    return replace(g, symbol=sympy.Symbol(g.name + "__outer", **g.symbol.assumptions0))
+
+
+def _outer(g: Given, outer: Mapping[str, Given], ctx: Source) -> Given:
+    """``g`` with every shadowed chain quantity it names put in by its value (or definition)."""
+    if g.definition is None or not outer:
+        return g
+    subs = {}
+    for name, o in outer.items():
+        alias = _alias(o).symbol
+        if not g.definition.has(alias):
+            continue
+        if o.value is None and o.definition is None:
+            raise ctx.error(
+                f"refers to the chain's {name}, which this stage also defines: rename one of them",
+                section="given",
+                key=g.name,
+            )
+        subs[alias] = o.value if o.value is not None else o.definition
+    if not subs:
+        return g
+    definition = g.definition.xreplace(subs)
+    return replace(g, definition=definition if definition.free_symbols else None)
 
 
 def _names_in(raw: Any) -> set[str]:

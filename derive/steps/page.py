@@ -34,6 +34,7 @@ class Page:
 
     outcome: ImpactOutcome
     tags: Tags = field(default_factory=Tags)
+    marks: bool = True
 
     @property
     def imp(self):

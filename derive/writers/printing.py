@@ -18,6 +18,7 @@ from sympy.printing.latex import LatexPrinter
 
 from derive.numbers import (
     PRECISION,
+    as_written,
     floatify,
     format_fixed,
     format_number,
@@ -69,11 +70,16 @@ class Style:
     varied: frozenset[sympy.Symbol] = frozenset()
     slots: SlotBook | None = field(default=None, compare=False)
     block: int | None = None
+    hide_optional: bool = False
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
     """A number at ``digits`` (+``extra``) significant figures, in LaTeX."""
-    text = format_number(value, digits, extra=extra)
+    return power_latex(format_number(value, digits, extra=extra))
+
+
+def power_latex(text: str) -> str:
+    """``1.67e-27`` as ``1.67 \\times 10^{-27}``; plain numbers as they are."""
     if "e" in text:
         mant, exp = text.split("e")
         return rf"{mant} \times 10^{{{int(exp)}}}"
@@ -81,18 +87,11 @@ def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0
 
 
 def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
-    """A given's number as the file wrote it when short and exact (0.6, 20), else rounded."""
-    if value.is_Integer and abs(value) < 10**9:
+    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded."""
+    if value.is_Integer and abs(value) < 10**6:
         return str(value)
-    if value.is_Rational:
-        d = to_decimal(value)
-        q = value.q
-        while q % 2 == 0:
-            q //= 2
-        while q % 5 == 0:
-            q //= 5
-        if q == 1 and len(d.normalize().as_tuple().digits) <= 6:
-            return format(d.normalize(), "f")
+    if short_decimal(value):
+        return power_latex(as_written(value))
     return number_latex(value, digits, extra)
 
 
@@ -214,12 +213,14 @@ class StepPrinter(LatexPrinter):
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
         if self._decimal_rationals and not self._round_integers and short_decimal(expr):
-            return format(to_decimal(expr).normalize(), "f")
+            return power_latex(as_written(expr))
         return super()._print_Rational(expr)
 
     def _print_Integer(self, expr: sympy.Integer) -> str:
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
+        if abs(expr.p) >= 10**6:
+            return power_latex(as_written(expr))
         return str(expr.p)
 
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
@@ -305,7 +306,10 @@ class StepPrinter(LatexPrinter):
         prev = None
         for a in factors:
             s = self._print(a)
-            if (isinstance(a, sympy.Add) and not self._open(a)) or (prev is not None and s.startswith("-")):
+            wrap = isinstance(a, sympy.Add) and not self._open(a)
+            wrap = wrap or (prev is not None and s.startswith("-"))
+            wrap = wrap or (len(factors) > 1 and r"\times 10^" in s)  # (2 × 10^6)(1.67 × 10^-27)
+            if wrap:
                 s = r"\left(" + s + r"\right)"
             if prev is None:
                 out = s
@@ -326,6 +330,10 @@ class StepPrinter(LatexPrinter):
             base = self._print(expr.base)
             base = r"\left(" + base + r"\right)" if base.startswith("-") else base
             return f"{base}^{{{expr.exp}}}"
+        if expr.exp.is_Number and expr.exp < 0 and not expr.base.is_Number:
+            # 1/tan(x), not SymPy's power form of a function (which read "-1 tan x")
+            inverse = expr.base if expr.exp == -1 else sympy.Pow(expr.base, -expr.exp, evaluate=False)
+            return r"\frac{1}{" + self._print(inverse) + "}"
         saved, self._round_integers = self._round_integers, False
         try:
             return super()._print_Pow(expr)
@@ -454,7 +462,12 @@ def _slot_term(
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    body = " = ".join(latex_side(s, style, extra, eqn.cancel) for s in eqn.sides)
+    printed: list[str] = []
+    for s in eqn.sides:
+        text = latex_side(s, style, extra, eqn.cancel)
+        if not printed or text != printed[-1]:  # v_2 = -u, not v_2 = -u = -u
+            printed.append(text)
+    body = " = ".join(printed)
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
@@ -493,7 +506,9 @@ def block_style(block: Block, style: Style) -> Style:
         ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
         for terms, total in block.sums
     ]
-    return replace(style, decimals=places_that_add_up(sums, style.digits, style.extra))
+    places = places_that_add_up(sums, style.digits, style.extra)
+    # no places at which the rounded terms add up: leave out the line that shows them
+    return replace(style, decimals=places, hide_optional=places is None)
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:
@@ -504,9 +519,6 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
         p = StepPrinter(digits=style.digits)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
     if isinstance(expr, sympy.Eq):
-        return (
-            StepPrinter(digits=style.digits).doprint(expr.lhs)
-            + " = "
-            + StepPrinter(digits=style.digits).doprint(expr.rhs)
-        )
-    return StepPrinter(digits=style.digits).doprint(expr)
+        printer = StepPrinter(digits=style.digits, decimal_rationals=True)
+        return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
+    return StepPrinter(digits=style.digits, decimal_rationals=True).doprint(expr)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
@@ -161,10 +162,11 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     for block in blocks_in:
         bstyle = block_style(block, style)
         lines: list[dict[str, Any]] = []
-        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-        for i, eqn in enumerate(block.lines):
+        for eqn in block.lines:
+            if eqn.optional and bstyle.hide_optional:
+                continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
-            if i == last_boxed:
+            if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
@@ -362,9 +364,10 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     stages = []
     falls = figure.chain_falls(sol) if figures else {}
     for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
             v = view(st.part, digits, figures=figures, falls=falls.get(st.number, False), known=sol.values)
-            carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -377,7 +380,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             )
         else:
             stages.append(
-                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
             )
     answers = []
     for a in sol.answers:
