@@ -73,6 +73,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     p_hand.add_argument("--mode", choices=("problems", "answers", "solutions"), default="solutions")
     p_hand.add_argument("--digits", type=int, help="significant figures (default: each problem's)")
+    p_hand.add_argument("--plot", action="store_true", help="with --mode solutions: each impact's plot against e")
     p_hand.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_plot = sub.add_parser("plot", help="plot the outcome against e (0 to 1): velocities along n, energy lost")
     p_plot.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
@@ -201,7 +202,7 @@ def _handout(args: argparse.Namespace) -> int:
     title = args.title if args.title is not None else DEFAULT_TITLES[args.mode]
     try:
         data, failures = build_handout(
-            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits
+            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits, plot=args.plot
         )
     except NoProblemsError as exc:
         for failure in exc.failures:

@@ -136,3 +136,13 @@ def test_plot_as_pdf_and_png(cli, tmp_path: Path) -> None:
     assert pdf.read_bytes().startswith(b"%PDF")
     assert cli("plot", "notes-4c11-two-spheres", "-o", str(png)).code == 0
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_handout_with_plot(cli, tmp_path: Path) -> None:
+    """--plot puts each single impact's plot after its worked solution; a chain has none."""
+    out = tmp_path / "h.md"
+    args = ["handout", "notes-4c11-two-spheres", "chain-ocr-m2-2006-drop-rebound", "--no-theory", "-o", str(out)]
+    assert cli(*args).code == 0
+    plain = out.read_text().count("<svg")
+    assert cli(*args, "--plot").code == 0
+    assert out.read_text().count("<svg") == plain + 1
