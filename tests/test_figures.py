@@ -338,3 +338,45 @@ def test_html_screenshot_is_not_blank(name: str, tmp_path: Path) -> None:
     assert shot[:8] == b"\x89PNG\r\n\x1a\n"
     # A page of text, formulas and a figure compresses far worse than a white one.
     assert len(shot) > 8 * len(empty), (len(shot), len(empty))
+
+
+@pytest.mark.slow
+def test_rendered_label_widths_fit_their_boxes(tmp_path: Path) -> None:
+    """Chromium lays the SVG labels out: each is no wider than the box the layout kept for
+    it (the height getBBox gives is the font's line box, not the ink, so only widths)."""
+    import json
+
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        pytest.skip("chromium is not installed")
+    svgs, widths = [], []
+    for _, fig in bundled_figures():
+        svgs.append(to_svg(fig))
+        widths.append([lab.w * 40 for lab in fig.labels])
+    script = (
+        "<script>const w = " + json.dumps(widths) + "; const bad = [];"
+        "document.querySelectorAll('svg').forEach((s, i) => s.querySelectorAll('text').forEach((t, j) => {"
+        "const b = t.getBBox(); if (b.width > w[i][j]) bad.push([i, t.textContent, b.width, w[i][j]]); }));"
+        "document.getElementById('out').textContent = 'RESULT' + JSON.stringify(bad) + 'END';</script>"
+    )
+    page = tmp_path / "labels.html"
+    page.write_text("<!DOCTYPE html><html><body>" + "".join(svgs) + "<pre id='out'></pre>" + script + "</body></html>")
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run"]
+    flags += ["--disable-background-networking", "--disable-component-update", "--disable-sync"]
+    dom = subprocess.run(
+        [
+            chromium,
+            *flags,
+            f"--user-data-dir={tmp_path / 'profile'}",
+            "--virtual-time-budget=5000",
+            "--dump-dom",
+            page.as_uri(),
+        ],
+        check=True,
+        capture_output=True,
+        text=True,
+        timeout=180,
+    ).stdout
+    found = re.search(r"RESULT(.*?)END", dom)
+    assert found is not None, "the page's script did not run"
+    assert json.loads(found.group(1).replace("&quot;", '"')) == []
