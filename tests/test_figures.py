@@ -4,6 +4,7 @@ works offline."""
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -178,6 +179,7 @@ def clashes(fig: Figure, step: float = 0.04) -> list[str]:
     return found
 
 
+@functools.cache
 def bundled_figures() -> list[tuple[str, Figure]]:
     """Before and after figures of every bundled problem, each impact stage of a chain too."""
     out = []

@@ -1,6 +1,7 @@
 """Figures of an impact: one geometric description, drawn as SVG and as TikZ.
 
 - :mod:`.model`: the shapes and labels, in centimetres (y up);
+- :mod:`.frame`: which way n points (a floor is level, a drop falls down);
 - :mod:`.scene`: a solution's figure, before or after the impact (:func:`describe`);
 - :mod:`.layout`: label placement by bounding boxes;
 - :mod:`.svg`, :mod:`.tikz`: the drawing, pure functions returning text.
@@ -12,8 +13,9 @@
 from __future__ import annotations
 
 from derive.steps.model import Solution
+from derive.writers.figure.frame import chain_falls
 from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Label, Surface
-from derive.writers.figure.scene import chain_falls, describe
+from derive.writers.figure.scene import describe
 from derive.writers.figure.svg import to_svg
 from derive.writers.figure.tikz import to_tikz
 
