@@ -194,12 +194,18 @@ def view(
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
     outer_letters: dict[sympy.Symbol, str] | None = None,
+    falls: bool = False,
+    known: dict[sympy.Symbol, sympy.Expr] | None = None,
+    plot: bool = False,
 ) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
 
     With ``slots``, every number that depends on a ``varied`` given is left open
-    (a token), so that one compiled page serves every homework variant.
+    (a token), so that one compiled page serves every homework variant. ``falls``
+    and ``known`` are for an impact inside a chain: drawn with n pointing down, and
+    the chain's numbers for symbols the impact leaves open. ``plot`` adds the plot
+    of the outcome against e (``plot_svg``, ``plot_tikz``).
     """
     p = solution.problem
     style = Style(
@@ -218,10 +224,10 @@ def view(
         blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
-            fig = figure.describe(solution, after=stage.figure == "after")
+            fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
-            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+            entry["figure_caption"] = f"{fig.title}: {fig.caption}"
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
@@ -239,10 +245,18 @@ def view(
         if extra_words:
             words += "; " + ", ".join(extra_words)
         find = [("text", words[0].upper() + words[1:] + ".")]
+    plot_svg = plot_tikz = ""
+    if plot:
+        from derive.writers import plot as plots
+
+        chart = plots.chart(p)
+        plot_svg, plot_tikz = plots.to_svg(chart), plots.to_tikz(chart)
     return {
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
+        "plot_svg": plot_svg,
+        "plot_tikz": plot_tikz,
         "statement": _statement(p, style),
         "find": find,
         "givens": givens,
@@ -390,10 +404,18 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         letter_units=letter_units(p),
     )
     stages = []
+    falls = figure.chain_falls(sol) if figures else {}
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
-            v = view(st.part, style.digits, figures=figures, outer_letters=letter_units(p))
+            v = view(
+                st.part,
+                style.digits,
+                figures=figures,
+                outer_letters=letter_units(p),
+                falls=falls.get(st.number, False),
+                known=sol.values,
+            )
             carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
@@ -481,16 +503,23 @@ def _chain_json(sol: Any, digits: int | None) -> str:
     return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
 
 
-def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
+def render(
+    solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True, plot: bool = False
+) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
     ``digits`` overrides the significant figures (default: the problem's, else
-    the textbook rule); ``figures`` False leaves the figures out. For a PDF see
+    the textbook rule); ``figures`` False leaves the figures out; ``plot`` adds the
+    plot of the outcome against e after the answer. For a PDF see
     :func:`derive.pdf.build_pdf`.
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
     if solution.is_chain:
+        if plot:
+            raise InputError(
+                "a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot"
+            )
         if fmt == "json":
             return _chain_json(solution, digits)
         if fmt == "md":
@@ -503,7 +532,7 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
         return to_json(solution, digits)
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    data = view(solution, digits, figures)
+    data = view(solution, digits, figures, plot=plot and fmt != "json")
     if fmt == "html":
         return _html(data)
     if fmt == "md":
