@@ -231,9 +231,14 @@ class StepPrinter(LatexPrinter):
         if self._decimals is not None:
             return format_fixed(expr, self._decimals)
         if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
-            mantissa, _, power = format_number(expr, self._digits, extra=self._extra).partition("e")
-            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
-            return power_latex(mantissa + ("e" + power if power else ""))
+            text = format_number(expr, self._digits, extra=self._extra)
+            mantissa, _, power = text.partition("e")
+            trimmed = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            short = trimmed + ("e" + power if power else "")
+            value = to_decimal(expr)
+            if abs(Decimal(short) - value) > abs(value) * Decimal("1e-12"):
+                return power_latex(text)  # rounded: 1.00 v, 49.0 m (not 1 v, 49 m, read as exact)
+            return power_latex(short)
         return number_latex(expr, self._digits, self._extra)
 
     def _as_decimal(self, r: sympy.Rational) -> bool:
@@ -255,6 +260,8 @@ class StepPrinter(LatexPrinter):
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
         if abs(expr.p) >= 10**6:
+            if _figures(to_decimal(expr)) > _figures(Decimal(format_number(expr, self._digits, extra=self._extra))):
+                return number_latex(expr, self._digits, self._extra)  # 7.350 x 10^22, not all its digits
             return power_latex(as_written(expr))
         return str(expr.p)
 
@@ -565,6 +572,9 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
         return None
     if not any(have):
         return eqn.unit
+    if have == tuple(w - m for w, m in zip(parse_unit(eqn.unit).dim, (1, 0, 0, 0), strict=True)):
+        # a mass short (T_1 = 4.8 v_A1^2 with the masses in numbers): the mass unit
+        return "slug" if any("ft" in u for u in style.letter_units.values()) else "kg"
     alone = [s for s in letters if dims[s] == have and not any(c in style.letter_units[s] for c in "/*^")]
     return f"{eqn.unit}/{style.letter_units[alone[0]]}" if alone and "/" not in eqn.unit else None
 
