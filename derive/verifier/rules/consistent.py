@@ -57,6 +57,7 @@ def check(judge: Judge) -> Iterator[Failure]:
         for claim in judge.claims:
             if claim.line.block != step.claim.line.block:
                 continue
+            own = {n.mantissa for n in _intermediates(judge, claim)}
             for mine in _intermediates(judge, claim):
                 if mine.degrees or mine.mantissa in anywhere:
                     continue
@@ -64,6 +65,8 @@ def check(judge: Judge) -> Iterator[Failure]:
                 if not near:
                     continue
                 gap, other, tag = min(near, key=lambda x: x[0])
+                if other.mantissa in own:  # the line writes that number as it was: mine is another
+                    continue
                 h = max(judge.halfwidth(mine, scopes), judge.halfwidth(other, scopes))
                 if gap <= Decimal(str(h)) and mine.mantissa != other.mantissa:
                     line = claim.line
