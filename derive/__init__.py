@@ -65,16 +65,25 @@ def render(
     target: str = "github",
     heading_level: int = 1,
     title: bool = True,
+    plot: bool = False,
 ) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
     ``target`` (Markdown): 'github', 'jupyter', 'mkdocs' or 'pandoc'; ``heading_level``
-    and ``title``: the title's heading level, or no title (see docs/interop.md).
+    and ``title``: the title's heading level, or no title (see docs/interop.md); ``plot``
+    adds the plot of the outcome against e after the answer.
     """
     from derive.writers.view import render as render_text
 
     return render_text(
-        solution, fmt, digits=digits, figures=figures, target=target, heading_level=heading_level, title=title
+        solution,
+        fmt,
+        digits=digits,
+        figures=figures,
+        target=target,
+        heading_level=heading_level,
+        title=title,
+        plot=plot,
     )
 
 

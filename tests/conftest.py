@@ -68,3 +68,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
         if checked and str(getattr(module, "__file__", "")).endswith("test_every_line.py"):
             parts = ", ".join(f"{k} {v}" for k, v in sorted(checked.items()))
             terminalreporter.write_line(f"verify: {sum(checked.values())} lines checked ({parts})")
+            known = getattr(module, "KNOWN_SEEN", None)
+            if known:
+                shown = ", ".join(f"{k} {v}" for k, v in sorted(known.items()))
+                terminalreporter.write_line(f"verify: pages with a known class of wrong line (issue #12): {shown}")

@@ -28,7 +28,7 @@ from derive.numbers import (
     structural,
     to_decimal,
 )
-from derive.problem.units import latex_unit
+from derive.problem.units import latex_unit, parse_unit
 from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
 from derive.writers.width import width_pt
@@ -78,6 +78,7 @@ class Style:
     strike: bool = True
     decimal: frozenset[sympy.Symbol] = frozenset()
     letters: frozenset[sympy.Symbol] = frozenset()
+    letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -100,6 +101,11 @@ def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
     if short_decimal(value):
         return power_latex(as_written(value))
     return number_latex(value, digits, extra)
+
+
+def _figures(x: Decimal) -> int:
+    """Significant figures of a decimal as written (trailing zeros of a whole number not counted)."""
+    return len(x.normalize().as_tuple().digits) if x else 1
 
 
 def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
@@ -229,9 +235,14 @@ class StepPrinter(LatexPrinter):
         if self._decimals is not None:
             return format_fixed(expr, self._decimals)
         if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
-            mantissa, _, power = format_number(expr, self._digits, extra=self._extra).partition("e")
-            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
-            return power_latex(mantissa + ("e" + power if power else ""))
+            text = format_number(expr, self._digits, extra=self._extra)
+            mantissa, _, power = text.partition("e")
+            trimmed = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            short = trimmed + ("e" + power if power else "")
+            value = to_decimal(expr)
+            if abs(Decimal(short) - value) > abs(value) * Decimal("1e-12"):
+                return power_latex(text)  # rounded: 1.00 v, 49.0 m (not 1 v, 49 m, read as exact)
+            return power_latex(short)
         return number_latex(expr, self._digits, self._extra)
 
     def _as_decimal(self, r: sympy.Rational) -> bool:
@@ -244,6 +255,8 @@ class StepPrinter(LatexPrinter):
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
         if self._decimal_rationals and not self._round_integers and self._as_decimal(expr):
+            if _figures(to_decimal(expr)) > _figures(Decimal(format_number(expr, self._digits, extra=self._extra))):
+                return number_latex(expr, self._digits, self._extra)  # exact, but too long: 9.435, not 9.43536
             return power_latex(as_written(expr))
         return super()._print_Rational(expr)
 
@@ -251,6 +264,8 @@ class StepPrinter(LatexPrinter):
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
         if abs(expr.p) >= 10**6:
+            if _figures(to_decimal(expr)) > _figures(Decimal(format_number(expr, self._digits, extra=self._extra))):
+                return number_latex(expr, self._digits, self._extra)  # 7.350 x 10^22, not all its digits
             return power_latex(as_written(expr))
         return str(expr.p)
 
@@ -432,6 +447,13 @@ def _prepared(
         expr = exactify(substitute(expr, values))
         extra = 0 if mode == "result" else extra
         decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
+        # a fraction no textbook writes (4225 v^2/724808, from g = 9.8) as a decimal: 0.005829 v^2
+        long = {
+            r: sympy.Float(r, PRECISION)
+            for r in expr.atoms(sympy.Rational)
+            if not short_decimal(r) and (r.q > (12 if decimal else 1000) or abs(r.p) > 10**4)
+        }
+        expr = expr.xreplace(long)
         if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
             printer = StepPrinter(fractions=True)
             rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
@@ -585,22 +607,80 @@ def _slot_term(
     return token + " " + printer.doprint(rest)
 
 
+def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
+    """The unit a value in letters still needs: none where its letters give its dimension
+    (v_A2 = 0.6 u), the whole unit where they are pure numbers (3.5 + 3.5 e m/s), the rest
+    where one letter gives part of it (T_1 = 22 m J/kg, m a mass in kg)."""
+    last = eqn.sides[-1]
+    if not eqn.unit or eqn.unit in ("%", "deg") or last.mode == "symbolic" or len(last.terms) != 1:
+        return None
+    term = last.terms[0].xreplace(dict(style.values))
+    letters = term.free_symbols - _UNITLESS - style.varied
+    if not letters or not letters <= style.letters | set(style.letter_units):
+        return None
+    dims = {s: parse_unit(style.letter_units[s]).dim if s in style.letter_units else (0, 0, 0, 0) for s in letters}
+    have = _dimension(term, dims)
+    if have is None or have == parse_unit(eqn.unit).dim:
+        return None
+    if not any(have):
+        return eqn.unit
+    if have == tuple(w - m for w, m in zip(parse_unit(eqn.unit).dim, (1, 0, 0, 0), strict=True)):
+        # a mass short (T_1 = 4.8 v_A1^2 with the masses in numbers): the mass unit
+        return "slug" if any("ft" in u for u in style.letter_units.values()) else "kg"
+    alone = [s for s in letters if dims[s] == have and not any(c in style.letter_units[s] for c in "/*^")]
+    return f"{eqn.unit}/{style.letter_units[alone[0]]}" if alone and "/" not in eqn.unit else None
+
+
+def _dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, tuple[int, ...]]) -> tuple[int, ...] | None:
+    """The dimension of a value in letters of known dimensions (None where it cannot tell)."""
+    if expr.is_number:
+        return (0, 0, 0, 0)
+    if isinstance(expr, sympy.Symbol):
+        return tuple(dims[expr]) if expr in dims else None
+    if isinstance(expr, sympy.Add):
+        found = {_dimension(a, dims) for a in expr.args if not a.is_number}
+        return found.pop() if len(found) == 1 else None
+    if isinstance(expr, sympy.Mul):
+        total = [0, 0, 0, 0]
+        for a in expr.args:
+            d = _dimension(a, dims)
+            if d is None:
+                return None
+            total = [t + x for t, x in zip(total, d, strict=True)]
+        return tuple(total)
+    if isinstance(expr, sympy.Pow) and expr.exp.is_Rational:
+        d = _dimension(expr.base, dims)
+        return None if d is None or any(x * expr.exp % 1 for x in d) else tuple(int(x * expr.exp) for x in d)
+    return None
+
+
 def _struck(eqn: Eqn, style: Style) -> frozenset[sympy.Symbol]:
     """The symbols the line strikes out, unless the style prints no strokes."""
     return eqn.cancel if style.strike else frozenset()
 
 
-def unit_latex(eqn: Eqn, style: Style) -> str:
-    """The unit after the line's last side ('' where that side is still in symbols)."""
+def _line_unit(eqn: Eqn, style: Style) -> tuple[str | None, bool]:
+    """The unit after the line's last side, and whether that side, a sum in letters, goes in
+    brackets before it ((3.5 + 3.5 e) m/s)."""
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
     )
-    if not eqn.unit or symbolic:
+    if not symbolic:
+        return eqn.unit, False
+    unit = _unit_beside_letters(eqn, style)
+    return unit, bool(unit) and isinstance(last.terms[0].xreplace(dict(style.values)), sympy.Add)
+
+
+def unit_latex(eqn: Eqn, style: Style) -> str:
+    """The unit after the line's last side ('' where that side is still in symbols and its
+    letters give its dimension)."""
+    unit, _ = _line_unit(eqn, style)
+    if not unit:
         return ""
-    if eqn.unit == "%":
+    if unit == "%":
         return r"\ \%"
-    return latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit)
+    return latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit)
 
 
 def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, str]]]:
@@ -616,8 +696,10 @@ def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, s
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    body = " = ".join(join_terms(terms) for terms in _printed_sides(eqn, style, extra))
-    body += unit_latex(eqn, style)
+    texts = [join_terms(terms) for terms in _printed_sides(eqn, style, extra)]
+    if _line_unit(eqn, style)[1]:
+        texts[-1] = r"\left(" + texts[-1] + r"\right)"
+    body = " = ".join(texts) + unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:

@@ -20,7 +20,7 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.problem import Given
+from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
 from derive.steps.model import Eqn, Math, Solution
@@ -215,6 +215,10 @@ def line_view(eqn: Eqn, style: Style, layout: Layout, *, answer: bool = False, e
     }
 
 
+#: Around an optional line of a compiled variant page, for the variant to keep or drop.
+OPTIONAL_BEGIN, OPTIONAL_END = "%%derive-optional:", "%%derive-end%%"
+
+
 def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list[dict[str, Any]]:
     """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
     blocks = []
@@ -225,6 +229,8 @@ def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list
             if eqn.optional and bstyle.hide_optional:
                 continue
             line = line_view(eqn, bstyle, layout, answer=eqn.mark, extra=bstyle.extra)
+            if eqn.optional and bstyle.block is not None:  # a variant's page drops it where it cannot add up
+                line["latex"] = f"{OPTIONAL_BEGIN}{bstyle.block}%{line['latex']}{OPTIONAL_END}"
             bare = line["latex"].removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
                 kept = lines[-1]
@@ -246,6 +252,10 @@ def view(
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
     layout: Layout = GITHUB,
+    outer_letters: dict[sympy.Symbol, str] | None = None,
+    falls: bool = False,
+    known: dict[sympy.Symbol, sympy.Expr] | None = None,
+    plot: bool = False,
 ) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
@@ -253,7 +263,10 @@ def view(
     With ``slots``, every number that depends on a ``varied`` given is left open
     (a token), so that one compiled page serves every homework variant. ``layout``
     says where the page goes (:mod:`derive.writers.targets`): how wide a line may
-    be, and whether cancelled terms are struck out.
+    be, and whether cancelled terms are struck out. ``falls`` and ``known`` are for
+    an impact inside a chain: drawn with n pointing down, and the chain's numbers for
+    symbols the impact leaves open. ``plot`` adds the plot of the outcome against e
+    (``plot_svg``, ``plot_tikz``).
     """
     p = solution.problem
     style = Style(
@@ -266,16 +279,17 @@ def view(
         strike=layout.strike,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
+        letter_units={**(outer_letters or {}), **letter_units(p)},
     )
     stages = []
     for stage in solution.stages:
         blocks = blocks_view(stage.blocks, style, layout)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
-            fig = figure.describe(solution, after=stage.figure == "after")
+            fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
-            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+            entry["figure_caption"] = f"{fig.title}: {fig.caption}"
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
@@ -293,11 +307,19 @@ def view(
         if extra_words:
             words += "; " + ", ".join(extra_words)
         find = [("text", words[0].upper() + words[1:] + ".")]
+    plot_svg = plot_tikz = ""
+    if plot:
+        from derive.writers import plot as plots
+
+        chart = plots.chart(p)
+        plot_svg, plot_tikz = plots.to_svg(chart), plots.to_tikz(chart)
     return {
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
         "source_parts": source_parts(p.source),
+        "plot_svg": plot_svg,
+        "plot_tikz": plot_tikz,
         "statement": _statement(p, style),
         "find": find,
         "givens": givens,
@@ -445,12 +467,22 @@ def chain_view(
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
         strike=layout.strike,
+        letter_units=letter_units(p),
     )
     stages = []
+    falls = figure.chain_falls(sol) if figures else {}
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
-            v = view(st.part, digits, figures=figures, layout=layout)
+            v = view(
+                st.part,
+                style.digits,
+                figures=figures,
+                layout=layout,
+                outer_letters=letter_units(p),
+                falls=falls.get(st.number, False),
+                known=sol.values,
+            )
             carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
@@ -554,6 +586,7 @@ def render(
     target: str = "github",
     heading_level: int = 1,
     title: bool = True,
+    plot: bool = False,
 ) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
@@ -564,11 +597,13 @@ def render(
     that level (1: ``#``/``\\section*``) and the stages below it; ``title`` False
     leaves the title out (the caller's heading stands) and starts the stages at
     ``heading_level``. For a PDF see :func:`derive.writers.pdf.build_pdf`, for Word
-    :func:`derive.writers.docx.build_docx`.
+    :func:`derive.writers.docx.build_docx`; ``plot`` adds the plot of the outcome against e after the answer.
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
     tex_vars = {**_headings(heading_level, title), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+    if solution.is_chain and plot:
+        raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
     if fmt == "md":
         page, _ = markdown(
             solution,
@@ -577,6 +612,7 @@ def render(
             figures=figures,
             heading_level=heading_level,
             show_title=title,
+            plot=plot,
         )
         return page
     if solution.is_chain:
@@ -592,9 +628,9 @@ def render(
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
     if fmt == "html":
-        return _html(view(solution, digits, figures))
+        return _html(view(solution, digits, figures, plot=plot))
     layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
-    data = view(solution, digits, figures, layout=layout)
+    data = view(solution, digits, figures, layout=layout, plot=plot)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
     return environment("tex").get_template(template).render(**data, **tex_vars)
 
@@ -614,13 +650,14 @@ def markdown(
     figures: bool = True,
     heading_level: int = 1,
     show_title: bool = True,
+    plot: bool = False,
 ) -> tuple[str, dict[str, str]]:
     """The Markdown for ``layout``, and the figure files it names (``figure-1.svg``: SVG
     text) when the layout writes figures as files for the caller to put beside it."""
     data = (
         chain_view(solution, digits, figures, layout=layout)
         if solution.is_chain
-        else view(solution, digits, figures, layout=layout)
+        else view(solution, digits, figures, layout=layout, plot=plot)
     )
     files = _figure_images(data, layout)
     page = (
@@ -689,3 +726,8 @@ def plain_answers(solution: Solution) -> list[str]:
             unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
             out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
     return out
+
+
+def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
+    """The unit of each given kept as a letter (m in kg), for the unit a value in it still needs."""
+    return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}
