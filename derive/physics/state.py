@@ -60,7 +60,7 @@ class ChainState:
         self, i: int, key: str | None, what: str, value: Any = None, cls: type[InputError] = InputError
     ) -> InputError:
         """A one-line error at stage ``i``'s field ``key``."""
-        return self.chain.ctx.error(f"stage {i}: {what}", section="stage", key=key, value=value, cls=cls)
+        return self.chain.stage_source(i).error(what, key=key, value=value, cls=cls)
 
     def quantity(self, i: int, st: dict, key: str, dim: units.Dim | None, default: Any = None) -> sympy.Expr:
         """A stage field: a name or an expression of known quantities, as an exact expression."""

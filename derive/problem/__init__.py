@@ -1,7 +1,8 @@
 """Problem files: read a TOML problem or chain, check every field, and build its record.
 
-The format is documented in ``docs/problem-format.md``. Every error names the file,
-the line where it can be found, the field and what was expected.
+The format is documented in ``docs/problem-format.md`` and declared in
+:mod:`derive.problem.schema`. Every error names the file, the line where it can be
+found, the field and what was expected.
 """
 
 from __future__ import annotations
@@ -10,7 +11,8 @@ from pathlib import Path
 
 from derive.errors import InputError
 from derive.problem.chain import ChainProblem
-from derive.problem.reader import Condition, Given, Motion, Problem, build_problem
+from derive.problem.reader import build_problem
+from derive.problem.records import Condition, Given, Motion, Problem
 from derive.problem.source import Source, parse_toml
 
 __all__ = [
@@ -24,6 +26,7 @@ __all__ = [
     "find",
     "load",
     "loads",
+    "parse_toml",
 ]
 
 
@@ -62,6 +65,6 @@ def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem | Cha
 
     source = Source(path, text)
     data = parse_toml(text, path)
-    if isinstance(data, dict) and data.get("kind") == "chain":
+    if data.get("kind") == "chain":
         return build_chain(data, source, name)
     return build_problem(data, source, name)
