@@ -121,7 +121,8 @@ def index_lines(text: str) -> dict[Path_, int]:
             continue
         m = _ARRAY_HEADER.match(line)
         if m:
-            name = _with_indices(_split_key(m.group(1)), arrays)
+            parts = _split_key(m.group(1))
+            name = (*_with_indices(parts[:-1], arrays), parts[-1])
             arrays[name] = arrays.get(name, -1) + 1
             header = (*name, arrays[name])
             out.setdefault(header, n)
@@ -185,6 +186,8 @@ def shown_value(value: Any) -> str:
 
 
 def _short_str(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= 10**60:
         return f"a whole number of {len(str(abs(value)))} digits"
     if isinstance(value, (list, dict)):
@@ -236,9 +239,12 @@ def parse_toml(text: str, path: str) -> dict[str, Any]:
 def _too_deep(text: str, path: str) -> InputError:
     depth, line = 0, None
     for n, raw in enumerate(text.splitlines(), 1):
-        depth += raw.count("[") + raw.count("{") - raw.count("]") - raw.count("}")
-        if depth > MAX_NESTING:
-            line = n
+        for ch in raw:
+            depth += (ch in "[{") - (ch in "]}")
+            if depth > MAX_NESTING:
+                line = n
+                break
+        if line:
             break
     where = f"{path}:{line}" if line else path
     return InputError(f"arrays or tables are nested too deeply (at most {MAX_NESTING} levels)", where=where)

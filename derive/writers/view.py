@@ -7,7 +7,6 @@ A renderer never does physics.
 
 from __future__ import annotations
 
-import json
 import re
 from functools import cache
 from typing import Any
@@ -17,6 +16,7 @@ import sympy
 
 from derive import escape
 from derive.errors import InputError
+from derive.fileio import dumps_json
 from derive.numbers import format_number
 from derive.problem import Given
 from derive.problem.units import latex_unit, plain_unit
@@ -338,7 +338,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
             for s in v["stages"]
         ],
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
 def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
@@ -433,7 +433,7 @@ def _chain_json(sol: Any, digits: int | None) -> str:
         "results": results,
         "stages": stages,
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
 def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
