@@ -230,7 +230,7 @@ IMPACT_FIELDS = (
     FIND,
     DIGITS,
     UNITS,
-    Field("answer_units", "table", "results to show also in another unit", table=ANSWER_UNITS),
+    Field("answer_units", "table", 'results to show also in another unit: `{ v_A2 = "km/h" }`', table=ANSWER_UNITS),
     Field(
         "given",
         "table",
@@ -239,11 +239,11 @@ IMPACT_FIELDS = (
         table=GIVEN,
     ),
     Field("geometry", "table", "the line of impact in x-y axes (below)", table=GEOMETRY),
-    Field("vary", "table", "ranges or choices for homework variants", table=VARY),
+    Field("vary", "table", "ranges or choices for homework variants (below)", table=VARY),
     Field(
         "conditions",
         "list",
-        'conditions every variant must meet, such as "v_B2 > 0"',
+        'conditions every variant must meet, such as `"v_B2 > 0"`',
         max_items=20,
         items=Field("condition", "text", "a comparison", max_length=500),
         expected='a list of conditions such as ["v_B2n > 0"]',

@@ -119,7 +119,9 @@ def _text_limits(value: str, f: Field, src: Source, path: Path_) -> None:
 
 
 def _line(value: Any, f: Field, src: Source, path: Path_) -> None:
-    if not isinstance(value, str) or not value.strip() or (f.max_length and len(value) > f.max_length):
+    if not isinstance(value, str):
+        raise _wrong_type(value, f, src, path)
+    if not value.strip() or (f.max_length and len(value) > f.max_length):
         raise err(src, path, f"expected {f.expected or TYPES['line']} (at most {f.max_length} characters)", value)
     _text_limits(value, f, src, path)
 
