@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import functools
 import math
 import re
 import signal
@@ -50,7 +51,9 @@ def _seconds(text: str) -> float:
     return value
 
 
+@functools.cache
 def _parser() -> argparse.ArgumentParser:
+    """The argument parser (built once: it keeps no state between runs)."""
     parser = _Parser(
         prog="derive",
         description="Worked solutions of central-impact problems, in the layout of the course notes.",

@@ -9,6 +9,7 @@ one, never a mix. JSON is written strictly: no NaN or Infinity, which is not JSO
 from __future__ import annotations
 
 import contextlib
+import glob
 import json
 import math
 import os
@@ -48,7 +49,8 @@ def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...
             raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
         return
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+        _sweep(folder, path.name)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=folder)
     except OSError as exc:
         raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
     try:
@@ -133,7 +135,8 @@ def folder_atomic(path: str | Path, *, owned: tuple[str, ...] = ()) -> Iterator[
     parent = path.parent if str(path.parent) else Path(".")
     try:
         parent.mkdir(parents=True, exist_ok=True)
-        tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".tmp", dir=parent))
+        _sweep(parent, path.name)
+        tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=parent))
     except OSError as exc:
         raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
     try:
@@ -145,6 +148,30 @@ def folder_atomic(path: str | Path, *, owned: tuple[str, ...] = ()) -> Iterator[
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _sweep(parent: Path, name: str) -> None:
+    """Remove the temporary files and folders that runs killed while writing ``name`` left
+    behind (``.NAME.PID.XXXX.tmp``, where process PID is gone)."""
+    for leftover in parent.glob(f".{glob.escape(name)}.*.*"):
+        pid = leftover.name[len(name) + 2 :].split(".")[0]
+        if leftover.suffix not in (".tmp", ".old") or not pid.isdigit() or _alive(int(pid)):
+            continue
+        if leftover.is_dir() and not leftover.is_symlink():
+            shutil.rmtree(leftover, ignore_errors=True)
+        else:
+            with contextlib.suppress(OSError):
+                leftover.unlink()
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True
+    return True
 
 
 def _check_owned(path: Path, owned: tuple[str, ...]) -> None:
@@ -169,7 +196,7 @@ def _swap_in(new: Path, path: Path) -> None:
         os.rename(new, path)
         return
     if not _exchange(new, path):  # no atomic exchange here: two renames, the old kept until the end
-        old = Path(tempfile.mkdtemp(prefix=f".{path.name}.", suffix=".old", dir=path.parent))
+        old = Path(tempfile.mkdtemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".old", dir=path.parent))
         os.rmdir(old)
         os.rename(path, old)
         os.rename(new, path)
