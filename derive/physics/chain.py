@@ -11,6 +11,7 @@ is a problem of its own, solved by the same single-impact physics
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 import sympy
 
@@ -36,7 +37,10 @@ STAGES: dict[str, Callable[[ChainState, int, dict], StageOutcome]] = {
 def run_chain(chain: ChainProblem) -> ChainOutcome:
     """Solve the chain stage by stage, then every named quantity in the chain's givens."""
     state = ChainState(chain)
-    stages = tuple(STAGES[st["type"]](state, i, st) for i, st in enumerate(chain.stages, 1))
+    stages: list[StageOutcome] = []
+    for i, st in enumerate(chain.stages, 1):
+        known = state.snapshot()  # the numbers this stage starts from
+        stages.append(replace(STAGES[st["type"]](state, i, st), values=known))
     outputs = {n for st in stages for n in st.outputs}
     results = {}
     roots = dict(state.solved)
@@ -53,4 +57,4 @@ def run_chain(chain: ChainProblem) -> ChainOutcome:
     values = {g.symbol: g.value for g in state.known.values() if g.value is not None}
     values.update(state.solved)
     angles = frozenset(g.symbol for g in state.known.values() if g.unit == "deg")
-    return ChainOutcome(chain, stages, results, values, angles)
+    return ChainOutcome(chain, tuple(stages), results, values, angles)

@@ -25,13 +25,16 @@ from derive.symbols import symbol
 @dataclass(frozen=True)
 class StageOutcome:
     """A stage solved: its number, type and title, the names it defines for later
-    stages, and ``data``, the stage type's own record (see :mod:`derive.physics.stages`)."""
+    stages, and ``data``, the stage type's own record (see :mod:`derive.physics.stages`).
+    ``values`` are the numbers known when the stage starts (an unknown that this or a
+    later stage solves for is not among them)."""
 
     number: int
     type: str
     title: str
     data: Any
     outputs: tuple[str, ...] = ()
+    values: dict[sympy.Symbol, sympy.Expr] | None = None
 
 
 @dataclass(frozen=True)
@@ -115,6 +118,12 @@ class ChainState:
             g = Given("g", symbol("g", "positive"), units.ACCELERATION, sympy.Rational(number), unit_text)
             self.known["g"] = g
         return g.symbol
+
+    def snapshot(self) -> dict[sympy.Symbol, sympy.Expr]:
+        """Every quantity with a number now: the givens, earlier results, unknowns solved so far."""
+        values = {g.symbol: g.value for g in self.known.values() if g.value is not None}
+        values.update(self.solved)
+        return values
 
     def positive(self, r: sympy.Expr) -> bool:
         """True when ``r`` is (or, with symbols, is known to be) a positive real number."""

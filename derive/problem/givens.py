@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from typing import Any
 
 import sympy
@@ -20,6 +21,7 @@ from derive.errors import ExpressionError, InputError, UnitError
 from derive.problem import units
 from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, ParseError, function_nesting, parse
 from derive.problem.records import Given, RecordError
+from derive.problem.schema import ASSUMPTIONS
 from derive.problem.source import Source
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
@@ -73,12 +75,17 @@ def infer_system(tbl: Mapping[str, Any]) -> str:
 
 
 def build_givens(
-    tbl: Mapping[str, Any], ctx: Source, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
+    tbl: Mapping[str, Any],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    seed: Mapping[str, Given] | None = None,
+    assume: Mapping[str, str] | None = None,
 ) -> list[Given]:
     """Build the givens in dependency order (a given may be defined from others).
 
     ``seed`` givens may be referred to; a key whose value is its own name (e = "e")
-    is the seeded given itself."""
+    is the seeded given itself. ``assume`` says what a letter is (``[assume]``)."""
     for key in tbl:
         _check_name(key, ctx)
     seed = dict(seed or {})
@@ -88,9 +95,11 @@ def build_givens(
         if isinstance(raw, str) and raw.strip() == key and key in seed:
             done[key] = seed[key]
             del pending[key]
-    known = {**seed, **done}
+    # In a chain's stage, a name on the right refers to the chain's quantity, even
+    # where the stage defines the same name for itself (m_A = "m_B", m_B = "m_C").
+    outer = {k: g for k, g in seed.items() if k in pending}
     while pending:
-        ready = [k for k in pending if not (names_in(pending[k]) & set(tbl)) - set(done)]
+        ready = [k for k in pending if not ((names_in(pending[k]) & set(tbl)) - set(seed) - {k}) - set(done)]
         if not ready:
             key = sorted(pending)[0]
             raise ctx.error(
@@ -100,8 +109,45 @@ def build_givens(
                 value=pending[key],
             )
         for key in ready:
-            done[key] = given_value(key, pending.pop(key), {**known, **done}, ctx, oblique, system)
+            scope = {**done, **seed, **{k: _alias(g) for k, g in outer.items()}}
+            done[key] = _outer(given_value(key, pending.pop(key), scope, ctx, oblique, system, assume), outer, ctx)
     return [done[k] for k in tbl]
+
+
+def read_assume(raw: Mapping[str, str] | None, given_tbl: Mapping[str, Any], ctx: Source) -> dict[str, str]:
+    """The [assume] table: what a letter is (letters are positive unless it says otherwise).
+    Its words were checked against the schema; here each must name a given."""
+    for name in raw or {}:
+        if name not in given_tbl:
+            raise ctx.error("names no given: assume what a letter of [given] is", section="assume", key=name)
+    return dict(raw or {})
+
+
+def _alias(g: Given) -> Given:
+    """A chain's quantity that a stage shadows, under a symbol of its own while parsed."""
+    return replace(g, symbol=sympy.Symbol(g.name + "__outer", **g.symbol.assumptions0))
+
+
+def _outer(g: Given, outer: Mapping[str, Given], ctx: Source) -> Given:
+    """``g`` with every shadowed chain quantity it names put in by its value (or definition)."""
+    if g.definition is None or not outer:
+        return g
+    subs = {}
+    for name, o in outer.items():
+        alias = _alias(o).symbol
+        if not g.definition.has(alias):
+            continue
+        if o.value is None and o.definition is None:
+            raise ctx.error(
+                f"refers to the chain's {name}, which this stage also defines: rename one of them",
+                section="given",
+                key=g.name,
+            )
+        subs[alias] = o.value if o.value is not None else o.definition
+    if not subs:
+        return g
+    definition = g.definition.xreplace(subs)
+    return replace(g, definition=definition if definition.free_symbols else None)
 
 
 def _check_name(key: str, ctx: Source) -> None:
@@ -122,29 +168,51 @@ def names_in(raw: Any) -> set[str]:
     return set(re.findall(r"[A-Za-z][A-Za-z0-9_]*", raw))
 
 
-def given_value(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: bool, system: str) -> Given:
-    """One given from its file value: a number, "?" (an unknown), a number with a unit, a
-    unit alone (a symbol) or an expression of the givens in ``done``."""
+def given_value(
+    key: str,
+    raw: Any,
+    done: Mapping[str, Given],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    assume: Mapping[str, str] | None = None,
+) -> Given:
+    """One given from its file value: a number, "?" (an unknown), its own name (a letter),
+    a number with a unit, a unit alone (a letter of that kind) or an expression of the
+    givens in ``done``."""
 
     def err(what: str, cls: type[InputError] = InputError) -> InputError:
         return ctx.error(what, section="given", key=key, value=raw, cls=cls)
 
-    sym = symbol(key, kind_of(key, oblique))
+    said = ASSUMPTIONS.get((assume or {}).get(key, ""))
+    sym = symbol(key, said or kind_of(key, oblique))
+    # a new name kept as a letter (u, m) is positive unless [assume] says otherwise; the
+    # notes' own names keep their meaning (v_A1n is signed, e is 0 to 1)
+    letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED else "positive"))
     try:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
             raise err(f'expected a number or text such as "5 m/s", found {_type(raw)}')
         if isinstance(raw, (int, float)):
             return _from_number(key, sym, raw, system, err)
         text = raw.strip()
+        if text == key and key not in done:  # e = "e": a letter, of the dimension its name has
+            return _letter(key, letter, system)
         if text == "?" or text.startswith("? "):
             return _unknown(key, sym, text[1:].strip(), system, err)
         if text == "":
             raise err(
                 'is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression'
             )
-        return _from_text(key, sym, text, done, system, err)
+        return _from_text(key, sym, letter, text, done, system, err)
     except RecordError as exc:
         raise err(exc.what, exc.cls) from exc
+
+
+def _letter(key: str, letter: sympy.Symbol, system: str) -> Given:
+    expected = RESERVED.get(key)
+    dim = expected if expected is not None else DIMENSIONLESS
+    work = units.parse_unit("deg") if dim == ANGLE else units.working_unit(dim, system)
+    return Given(key, letter, dim, None, work.text if dim in units.SYSTEMS[system] or dim == ANGLE else "")
 
 
 def _type(raw: Any) -> str:
@@ -185,7 +253,9 @@ def _unknown(key: str, sym: sympy.Symbol, unit_text: str, system: str, err: Err)
     return Given(key, sym, dim, None, work_text, unknown=True)
 
 
-def _from_text(key: str, sym: sympy.Symbol, text: str, done: Mapping[str, Given], system: str, err: Err) -> Given:
+def _from_text(
+    key: str, sym: sympy.Symbol, letter: sympy.Symbol, text: str, done: Mapping[str, Given], system: str, err: Err
+) -> Given:
     expected = RESERVED.get(key)
     unit_problem: str | None = None
     m = QUANTITY.match(text)
@@ -207,7 +277,7 @@ def _from_text(key: str, sym: sympy.Symbol, text: str, done: Mapping[str, Given]
             if expected is not None and unit.dim != expected:
                 raise err(f"expected {describe(expected)}, but {text} is {describe(unit.dim)}", UnitError)
             work = units.working_unit(unit.dim, system) if unit.dim != ANGLE else units.parse_unit("deg")
-            return Given(key, sym, unit.dim, None, work.text)
+            return Given(key, letter, unit.dim, None, work.text)
     return _from_expression(key, sym, text, done, system, err, unit_problem, looks_like_unit)
 
 

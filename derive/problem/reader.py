@@ -15,7 +15,7 @@ from typing import Any
 import sympy
 
 from derive.problem import fields, units
-from derive.problem.givens import GRAVITY, build_givens, infer_system, quantity
+from derive.problem.givens import GRAVITY, build_givens, infer_system, quantity, read_assume
 from derive.problem.motion import geometry, motion
 from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
@@ -39,7 +39,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     kind, given_tbl = data["kind"], data["given"]
     oblique = kind == "oblique"
     system = data.get("units") or infer_system(given_tbl)
-    givens = build_givens(given_tbl, ctx, oblique, system, seed)
+    assume = read_assume(data.get("assume"), given_tbl, ctx)
+    givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     bodies = {b: data.get(b, {}) for b in "AB"}
     fixed_B = bodies["B"].get("fixed") is True
@@ -82,6 +83,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
             conditions=fields.conditions(data.get("conditions"), by_name, ctx),
+            assume=assume,
         )
     except RecordError as exc:
         raw = data.get(exc.section, {}).get(exc.key) if exc.section else data.get(exc.key or "")

@@ -54,6 +54,17 @@ class Given:
     definition: sympy.Expr | None = None
     unknown: bool = False
 
+    @property
+    def decimal(self) -> bool:
+        """True for a number that is not whole and was not written as an expression (0.6,
+        37.6 deg, 22 g as 0.022 kg): where it meets letters the worked lines show decimals;
+        exact data (integers, 3/5, sqrt(2)) stay exact."""
+        if self.value is None or self.definition is not None:
+            return False
+        if self.unit == "deg":
+            return not (self.value * 180 / sympy.pi).is_Integer
+        return not self.value.is_Integer  # 0.6, and 22 g as 0.022 kg
+
     def __post_init__(self) -> None:
         if not NAME_RE.match(self.name):
             raise RecordError("is not a usable name: start with a letter; letters, digits and _ only", key=self.name)
@@ -130,6 +141,7 @@ class Problem:
     vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)
     conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
+    assume: Mapping[str, str] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

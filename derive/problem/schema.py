@@ -101,6 +101,23 @@ class Table:
 # ---------------------------------------------------------------- parts shared by problems and stages
 
 VALUE = Field("value", "value", "a given's value", expected='a number or text such as "5 m/s"')
+#: What a file may assume of a letter -> the symbol's assumptions (an acute angle is
+#: positive, and its range is used where a sign is decided).
+ASSUMPTIONS = {
+    "positive": "positive",
+    "nonnegative": "nonnegative",
+    "real": "real",
+    "negative": "negative",
+    "acute": "positive",
+}
+ASSUME = Table(
+    "assume",
+    'what a letter of [given] is: { alpha = "acute" } (letters are positive unless it says otherwise)',
+    keys=Field("assumption", "choice", "what the letter is", choices=tuple(ASSUMPTIONS)),
+    key_pattern=NAME_PATTERN,
+    key_words="a given kept as a letter",
+    max_keys=60,
+)
 AXES = ("+n", "-n", "+t", "-t", "+x", "-x", "+y", "-y")
 GIVEN = Table(
     "given",
@@ -231,6 +248,13 @@ IMPACT_FIELDS = (
     DIGITS,
     UNITS,
     Field("answer_units", "table", 'results to show also in another unit: `{ v_A2 = "km/h" }`', table=ANSWER_UNITS),
+    Field(
+        "assume",
+        "table",
+        'what a letter of `[given]` is: `{ alpha = "acute" }` (positive, nonnegative, real, negative or acute; '
+        "letters are positive unless it says otherwise)",
+        table=ASSUME,
+    ),
     Field(
         "given",
         "table",

@@ -4,9 +4,12 @@ other units), and the kinetic energy for the record."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from derive.errors import SolveError
+from derive.numbers import tidy
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.model import Block, Eqn, Math, Side, Text
@@ -15,9 +18,37 @@ from derive.symbols import symbol, vector
 
 
 def answer(page: Page) -> list[Block]:
-    """The answer blocks: velocities, x-y components, closed forms, what was asked, energy."""
-    blocks = [_velocities(page), _xy(page), _closed_forms(page), _asked(page)]
+    """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
+
+    In each block the last boxed line that answers the question gets the notes'
+    "⟵ ANSWER" mark: the velocities when the question asks for them, else what it asks.
+    """
+    p = page.p
+    velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
+    asks_velocities = bool(velocities & set(p.find))
+    blocks = [
+        _marked(page, _velocities(page), asks_velocities),
+        _marked(page, _xy(page), asks_velocities),
+        _closed_forms(page),
+        _marked(page, _asked(page), True),
+    ]
     return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def as_number(x: sympy.Expr) -> sympy.Expr:
+    """An energy as a decimal, so that it prints at the places the block's sum needs (812.5)."""
+    return x if x.is_Integer and x == 0 else sympy.Float(x.evalf(30), 30)
+
+
+def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
+    if block is None or not asked or not page.marks:
+        return block
+    last = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+    if last < 0:
+        return block
+    lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))
+    return replace(block, lines=lines)
 
 
 def _bodies(page: Page) -> str:
@@ -68,7 +99,7 @@ def _closed_forms(page: Page) -> Block | None:
     if not symbolic:
         return None
     lines = [
-        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((r.partial,), "result")), unit=r.unit)
+        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((page.value_of(r.symbol),), "result")), unit=r.unit)
         for r in symbolic
         if r.closed != 0
     ]
@@ -146,7 +177,7 @@ def _angle_line(
     numeric = not ((xv.free_symbols | yv.free_symbols) - page.varied)
     known = numeric and not (xv.free_symbols | yv.free_symbols)
     sides = [Side((r.symbol,))]
-    ratio = None if xv == 0 else sympy.simplify(yv / xv)
+    ratio = None if xv == 0 else tidy(sympy.simplify(yv / xv))
     if xv == 0:
         pass
     elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
@@ -209,16 +240,23 @@ def energy(page: Page) -> Block:
         }
     forms["T_lost"] = (symbol("T_1"), -symbol("T_2"))
     lines = []
+    before, after, lost = (page.results[n].value for n in ("T_1", "T_2", "T_lost"))
+    # T_1 - T_2 with their numbers, so that the loss shown is their difference; the
+    # three then carry the places at which they add up
+    difference = before is not None and after is not None and lost is not None and after != 0
     for name, terms in forms.items():
         r = page.results[name]
         sides = [Side((r.symbol,)), Side(terms)]
         if r.value is None:
             if r.closed != r.partial and r.partial.free_symbols - page.varied:
                 sides.append(Side((r.closed,)))
-            sides.append(Side((r.partial,), "result"))
+            sides.append(Side((page.value_of(r.symbol),), "result"))
         else:
-            sides.append(Side((r.value,), "result"))
+            if name == "T_lost" and difference:
+                sides.append(Side((as_number(before), -as_number(after)), "numeric"))
+            sides.append(Side((as_number(r.value),), "numeric") if difference else Side((r.value,), "result"))
         lines.append(Eqn(tuple(sides), unit=r.unit))
+    sums = (((as_number(before), -as_number(after)), as_number(lost)),) if difference else ()
     r1, rl = page.results["T_1"], page.results["T_lost"]
     if r1.value is not None and rl.value is not None and r1.value != 0:
         frac = rl.value / r1.value * 100
@@ -239,4 +277,4 @@ def energy(page: Page) -> Block:
         Math(sympy.Eq(page.e, 1)),
         ", so it is never used to find the velocities.",
     )
-    return Block(text, tuple(lines))
+    return Block(text, tuple(lines), sums, answer_figures=True)

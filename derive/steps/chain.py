@@ -20,7 +20,7 @@ from derive.physics.state import StageOutcome
 from derive.problem import units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
-from derive.steps.page import Tags
+from derive.steps.page import Tags, as_float
 from derive.symbols import symbol
 
 
@@ -68,7 +68,7 @@ def _balance_lines(b: Balance, numbers: Numbers) -> tuple[Eqn, ...]:
     return (
         Eqn((Side(b.lhs), Side(b.rhs)), cancel=b.cancel),
         Eqn(
-            (Side((result.symbol,)), Side((solved,)), Side((solved,), "values"), Side((solved,), "result")),
+            (Side((result.symbol,)), Side((solved,)), Side((solved,), "values"), Side((b.value,), "result")),
             unit=result.unit,
             implies=True,
             tag=numbers.next(),
@@ -82,12 +82,12 @@ def _fall(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
         Math(sympy.Eq(symbol("T_1") + symbol("V_1"), symbol("T_2") + symbol("V_2"))),
         ". The mass cancels.",
     )
-    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type)
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
 def _rise(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     text: Text = ("After the impact, mechanical energy is conserved again up to the highest point: ",)
-    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type)
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
 def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
@@ -96,7 +96,7 @@ def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
         Math(sympy.Eq(symbol("F"), st.data.friction)),
         " does the work that stops the body.",
     )
-    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type)
+    return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
 def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
@@ -116,44 +116,71 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
         Eqn((Side(s.lhs), Side(s.rhs))),
         Eqn((Side((X,)), Side((s.root,), "result")), unit=s.result.unit, implies=True, tag=numbers.next()),
     )
-    return Stage(st.number, st.title, (Block(text, lines),), kind=st.type)
+    return Stage(st.number, st.title, (Block(text, lines),), kind=st.type, values=st.values)
 
 
 def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     data: ImpactStage = st.data
     inner = data.outcome
-    written = write_impact(inner, Tags(numbers.last))
+    written = write_impact(inner, Tags(numbers.last), marks=False)
     tags = [int(ln.tag) for s in written for b in s.blocks for ln in b.lines if ln.tag]
     numbers.last = max(tags, default=numbers.last)
     part = Solution(inner.problem, inner.results, written, inner.values, inner.angles)
     carried = []
-    for new, rname in data.exports:
+    for (new, rname), value in zip(data.exports, data.carried, strict=True):
         r = outcome.results[new]
-        value = r.value if r.value is not None else r.partial
-        carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((value,), "result")), unit=r.unit or None))
-    return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type)
+        shown = _in_unit(value, r.unit)
+        carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((shown,), "result")), unit=r.unit or None))
+    return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
 
 
 def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     d: Definition = st.data
     out = d.result
     line = Eqn(
-        (Side((out.symbol,)), Side((d.expr,)), Side((d.expr,), "values"), Side((d.value,), "result")),
+        (
+            Side((out.symbol,)),
+            Side((d.expr,)),
+            Side((d.expr,), "values"),
+            Side((_in_unit(d.value, out.unit),), "result"),
+        ),
         unit=out.unit or None,
         tag=numbers.next(),
     )
-    return Stage(st.number, st.title, (Block((d.text,), (line,)),), kind=st.type)
+    return Stage(st.number, st.title, (Block((d.text,), (line,)),), kind=st.type, values=st.values)
 
 
 def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     c: Condition = st.data
     g, u = c.given, c.given.symbol
-    lines = (
-        Eqn((Side((c.lhs,)), Side((c.rhs,), "result")), unit=g.unit if c.same_unit else None),
-        Eqn((Side((u,)), Side((c.root,), "result")), unit=g.unit or None, implies=True, tag=numbers.next()),
-    )
+    sides = [Side((c.lhs,))]
+    if c.in_unknown is not None and c.in_unknown != c.lhs:
+        sides.append(Side((c.in_unknown,), "numeric"))
+    sides.append(Side((c.rhs,), "result"))
+    unit = g.unit or None
+    root = Eqn((Side((u,)), Side((_in_unit(c.root, g.unit),), "result")), unit=unit, implies=True, tag=numbers.next())
     text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), " fixes the unknown ", Math(u), ":")
-    return Stage(st.number, st.title, (Block(text, lines),), kind=st.type)
+    blocks = [Block(text, (Eqn(tuple(sides), unit=c.lhs_unit), root))]
+    if c.roots > 1:
+        if u.name.startswith("e"):
+            why: Text = ("0 ≤ ", Math(u), " ≤ 1")
+        elif u.is_positive or u.is_nonnegative:
+            why = (Math(u), " ≥ 0")
+        else:
+            why = (Math(u), " for which every impact still has its bodies approaching")
+        blocks.append(Block((f"Of the {c.roots} roots, the one with ", *why, " is the physical one.")))
+    if c.updated:
+        lines = tuple(
+            Eqn(
+                (Side((q.symbol,)), Side((before,), "numeric"), Side((_in_unit(now, q.unit),), "result")),
+                unit=q.unit or None,
+            )
+            for q, before, now in c.updated
+        )
+        blocks.append(
+            Block(("With ", Math(sympy.Eq(u, as_float(c.root))), ", the quantities that waited for it:"), lines)
+        )
+    return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
 
 
 def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
@@ -181,7 +208,7 @@ def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage
         Math(sympy.Eq(symbol("h_k"), b.e ** (2 * symbol("k")) * symbol("h_0"))),
         ". The distance travelled before the ball comes to rest is the sum of a geometric series.",
     )
-    return Stage(st.number, st.title, (Block(text, tuple(lines)),), kind=st.type)
+    return Stage(st.number, st.title, (Block(text, tuple(lines)),), kind=st.type, values=st.values)
 
 
 def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
@@ -207,7 +234,12 @@ def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
             ".",
         )
         blocks.append(Block(words))
-    return Stage(st.number, st.title, tuple(blocks), kind=st.type)
+    return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
+
+
+def _in_unit(value: sympy.Expr, unit: str) -> sympy.Expr:
+    """A value as its unit shows it: an angle, held in radians, in degrees."""
+    return value * 180 / sympy.pi if unit == "deg" else value
 
 
 def _float_interval(rng: sympy.Set) -> sympy.Set:

@@ -48,26 +48,38 @@ def _against_surface(page: Page) -> Block:
 
 
 def _add_and_subtract(page: Page, kin: Kinetics, a1: sympy.Expr) -> list[Block]:
-    """Equal coefficients in (3): add and subtract (3) and (4), as in Example 4.C.12."""
+    """Equal coefficients in (3): add and subtract (3) and (4), as in Example 4.C.12.
+
+    (4) reads v_B2n - v_A2n = k, so with a coefficient ``a1`` other than 1 in (3),
+    (4) is taken ``a1`` times for a term to cancel."""
     x, y = page.nm.A2n, page.nm.B2n
     (_, c), k = kin.eq3, kin.eq4
     xv, yv = page.value_of(x), page.value_of(y)
+    three, four = page.tags(3), page.tags(4)
+    if a1 == 1:
+        add: Text = (f"Add ({three}) and ({four}): ", Math(x), " cancels.")
+        sub: Text = (f"Subtract ({four}) from ({three}): ", Math(y), " cancels.")
+        ak = k
+    else:
+        add = (f"Multiply ({four}) by ", Math(as_float(a1)), f" and add it to ({three}): ", Math(x), " cancels.")
+        sub = (f"Multiply ({four}) by ", Math(as_float(a1)), f" and subtract it from ({three}): ", Math(y), " cancels.")
+        ak = a1 * k
     return [
         Block(
-            (f"Add ({page.tags(3)}) and ({page.tags(4)}): ", Math(x), " cancels."),
+            add,
             (
-                Eqn((Side((sympy.Mul(a1 + 1, y, evaluate=False),), "numeric"), Side((c, k), "numeric"))),
+                Eqn((Side((sympy.Mul(2 * a1, y, evaluate=False),), "numeric"), Side((c, ak), "numeric"))),
                 Eqn((Side((y,)), Side((yv,), "result")), unit=page.unit_v, tag=page.tags(5), implies=True),
             ),
-            _sum_check(page, (c, k)),
+            _sum_check(page, (c, ak)),
         ),
         Block(
-            (f"Subtract ({page.tags(4)}) from ({page.tags(3)}): ", Math(y), " cancels."),
+            sub,
             (
-                Eqn((Side((sympy.Mul(a1 + 1, x, evaluate=False),), "numeric"), Side((c, -k), "numeric"))),
+                Eqn((Side((sympy.Mul(2 * a1, x, evaluate=False),), "numeric"), Side((c, -ak), "numeric"))),
                 Eqn((Side((x,)), Side((xv,), "result")), unit=page.unit_v, tag=page.tags(6), implies=True),
             ),
-            _sum_check(page, (c, -k)),
+            _sum_check(page, (c, -ak)),
         ),
     ]
 

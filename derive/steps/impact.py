@@ -14,9 +14,10 @@ from derive.steps.model import Stage
 from derive.steps.page import Page, Tags
 
 
-def write_impact(outcome: ImpactOutcome, tags: Tags | None = None) -> tuple[Stage, ...]:
-    """The four stages of the worked solution of one impact."""
-    page = Page(outcome, tags or Tags())
+def write_impact(outcome: ImpactOutcome, tags: Tags | None = None, *, marks: bool = True) -> tuple[Stage, ...]:
+    """The four stages of the worked solution of one impact; ``marks`` False leaves out
+    the ANSWER marks (an impact inside a chain answers nothing by itself)."""
+    page = Page(outcome, tags or Tags(), marks)
     kin = kinetics(page)
     return (
         Stage(1, "Geometry: the n–t axes", tuple(geometry(page)), figure="before"),

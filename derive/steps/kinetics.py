@@ -135,7 +135,7 @@ def momentum_n(page: Page) -> tuple[Block, tuple[tuple[sympy.Expr, ...], sympy.E
         lines.append(Eqn((Side(g_lhs, "values"), Side(g_rhs, "values"))))
         lhs_num = nonzero(tuple(page.num(t) for t in g_lhs))
         if len(lhs_num) > 1 and all(not (t.free_symbols - page.varied) for t in lhs_num):
-            lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values"))))
+            lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values")), optional=True))
             sums.append((lhs_num, sympy.Add(*lhs_num)))
     terms, const = collected(page, sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
     lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag=page.tags(3), implies=True))

@@ -46,7 +46,10 @@ class Eqn:
     """An equation line ``side = side = ...``, with the notes' decorations.
 
     ``tag`` is the equation number; ``cancel`` holds symbols shown struck out;
-    ``unit`` follows the last side; ``implies`` starts the line with ⇒.
+    ``unit`` follows the last side; ``implies`` starts the line with ⇒; an
+    ``optional`` line (a sum shown term by term) may be left out where its numbers
+    cannot be shown so that they add up at the solution's figures; ``mark`` puts the
+    notes' "⟵ ANSWER" after the line.
     """
 
     sides: tuple[Side, ...]
@@ -55,6 +58,8 @@ class Eqn:
     unit: str | None = None
     implies: bool = False
     boxed: bool = False
+    optional: bool = False
+    mark: bool = False
 
 
 @dataclass(frozen=True)
@@ -62,12 +67,15 @@ class Block:
     """A sentence (optional) and the equation lines it introduces.
 
     ``sums`` records sums shown term by term, ``(terms, total)``: a renderer
-    carries enough figures that the rounded terms add up to the rounded total.
+    carries enough figures that the rounded terms add up to the rounded total,
+    starting from the answer's figures where ``answer_figures`` (results, not
+    intermediates).
     """
 
     text: Text | None
     lines: tuple[Eqn, ...] = ()
     sums: tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...] = ()
+    answer_figures: bool = False
 
 
 @dataclass(frozen=True)
@@ -76,7 +84,9 @@ class Stage:
     or of a chain, where an impact stage holds its own worked page in ``part``.
 
     ``figure`` asks for the figure of the impact, "before" or "after"; ``carried``
-    lists what an impact stage hands on to the stages after it.
+    lists what an impact stage hands on to the stages after it; ``values``, where
+    set, are the numbers known at this stage of a chain (its substitution lines use
+    these, not numbers a later stage finds).
     """
 
     number: int
@@ -86,6 +96,7 @@ class Stage:
     part: Solution | None = None
     carried: tuple[Eqn, ...] = ()
     kind: str = "step"
+    values: dict[sympy.Symbol, sympy.Expr] | None = None
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ A renderer never does physics.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from functools import cache
 from typing import Any
 
@@ -161,10 +162,11 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     for block in blocks_in:
         bstyle = block_style(block, style)
         lines: list[dict[str, Any]] = []
-        last_boxed = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
-        for i, eqn in enumerate(block.lines):
+        for eqn in block.lines:
+            if eqn.optional and bstyle.hide_optional:
+                continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
-            if i == last_boxed:
+            if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
@@ -194,7 +196,14 @@ def view(
     """
     p = solution.problem
     style = Style(
-        digits if digits is not None else p.digits, 1, solution.values, solution.angles, varied=varied, slots=slots
+        digits if digits is not None else p.digits,
+        1,
+        solution.values,
+        solution.angles,
+        varied=varied,
+        slots=slots,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
     )
     stages = []
     for stage in solution.stages:
@@ -344,12 +353,20 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
 def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
     """The data the chain templates need: the chain's givens, each stage printed."""
     p = sol.problem
-    style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        sol.values,
+        sol.angles,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown),
+    )
     stages = []
     for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
             v = view(st.part, digits, figures=figures)
-            carried = [latex_eqn(eqn, style)[0] for eqn in st.carried]
+            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,
@@ -362,7 +379,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             )
         else:
             stages.append(
-                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, style)}
+                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
             )
     answers = []
     for a in sol.answers:

@@ -3,7 +3,7 @@ the chain, a given marked "?", from a condition such as ``h_2 = 40 m``)."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -25,14 +25,20 @@ class Definition:
 
 @dataclass(frozen=True)
 class Condition:
-    """``lhs = rhs`` fixing the unknown ``given``; ``root`` is its one admissible value,
-    ``same_unit`` whether lhs has the unknown's unit."""
+    """``lhs = rhs`` fixing the unknown ``given``: ``in_unknown`` is lhs in the unknown
+    (with every number known so far), ``root`` its one admissible value out of
+    ``roots`` found; ``same_unit`` whether lhs has the unknown's unit; ``updated`` the
+    earlier quantities that depended on the unknown, each with its number now."""
 
     lhs: sympy.Expr
     rhs: sympy.Expr
     given: Given
     root: sympy.Expr
     same_unit: bool
+    in_unknown: sympy.Expr | None = None
+    roots: int = 1
+    lhs_unit: str | None = None
+    updated: tuple[tuple[Given, sympy.Expr, sympy.Expr], ...] = ()
 
 
 def define(state: ChainState, i: int, st: dict) -> StageOutcome:
@@ -67,13 +73,25 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
     if len(unknown) != 1:
         raise state.err(i, "for", 'expected exactly one unknown (a given marked "?") to solve for', target)
     u = unknown[0]
-    equation = state.value(lhs.expr) - rhs_expr
-    roots = [r for r in sympy.solve(equation, u) if admissible(state, u, r)]
+    in_unknown = state.value(lhs.expr)
+    found = sympy.solve(in_unknown - rhs_expr, u)
+    roots = [r for r in found if admissible(state, u, r)]
     if len(roots) != 1:
         raise SolveError(f"stage {i}: {raw} gives {len(roots)} admissible values of {u.name}", where=state.chain.path)
+    waiting = {n: state.value(g.symbol) for n, g in state.known.items() if g.value is None and g.definition is not None}
     state.solved[u] = roots[0]
+    updated = []
+    for name, before in waiting.items():
+        now = state.value(before)
+        if before.has(u) and not now.free_symbols:
+            state.known[name] = replace(state.known[name], value=now)
+            updated.append((state.known[name], before, now))
     g = state.known[u.name]
-    data = Condition(lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim)
+    system = units.SYSTEMS[state.chain.system]
+    lhs_unit = units.working_unit(lhs.dim, state.chain.system).text if lhs.dim in system else None
+    data = Condition(
+        lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim, in_unknown, len(found), lhs_unit, tuple(updated)
+    )
     return StageOutcome(i, "solve", f"Solve for {u.name}", data, (u.name,))
 
 

@@ -26,6 +26,7 @@ class Balance:
     result: Given
     cancel: frozenset[sympy.Symbol] = frozenset()
     friction: sympy.Expr | None = None  # slide: mu m g
+    value: sympy.Expr | None = None  # ``solved`` with every number known now put in
 
 
 @dataclass(frozen=True)
@@ -49,7 +50,7 @@ def fall(state: ChainState, i: int, st: dict) -> StageOutcome:
     speed = sympy.sqrt(v0**2 + 2 * g * h)
     out = state.define(i, st.get("result", f"v_{i}"), speed, units.VELOCITY)
     lhs = (HALF * m * v0**2, m * g * h) if v0 != 0 else (m * g * h,)
-    data = Balance(lhs, (HALF * m * out.symbol**2,), speed, out, frozenset({m}))
+    data = Balance(lhs, (HALF * m * out.symbol**2,), speed, out, frozenset({m}), value=state.value(speed))
     body = st.get("body", "the body")
     return StageOutcome(i, "fall", f"{str(body).capitalize()} falls through the height", data, (out.name,))
 
@@ -61,7 +62,7 @@ def rise(state: ChainState, i: int, st: dict) -> StageOutcome:
     m = symbol("m", "positive")
     height = v**2 / (2 * g)
     out = state.define(i, st.get("result", f"h_{i}"), height, units.LENGTH)
-    data = Balance((HALF * m * v**2,), (m * g * out.symbol,), height, out, frozenset({m}))
+    data = Balance((HALF * m * v**2,), (m * g * out.symbol,), height, out, frozenset({m}), value=state.value(height))
     return StageOutcome(i, "rise", "Rise after the impact", data, (out.name,))
 
 
@@ -73,7 +74,8 @@ def slide(state: ChainState, i: int, st: dict) -> StageOutcome:
     m = symbol("m", "positive")
     d = v**2 / (2 * mu * g)
     out = state.define(i, st.get("result", f"d_{i}"), d, units.LENGTH)
-    data = Balance((HALF * m * v**2, -mu * m * g * out.symbol), (sympy.Integer(0),), d, out, frozenset({m}), mu * m * g)
+    lhs = (HALF * m * v**2, -mu * m * g * out.symbol)
+    data = Balance(lhs, (sympy.Integer(0),), d, out, frozenset({m}), mu * m * g, state.value(d))
     return StageOutcome(i, "slide", "Sliding to rest after the impact", data, (out.name,))
 
 

@@ -17,10 +17,16 @@ from derive.problem import build_problem, units
 @dataclass(frozen=True)
 class ImpactStage:
     """The impact solved, and the results it hands on: ``exports`` pairs each new name
-    for later stages with the impact's own result name."""
+    for later stages with the impact's own result name; ``carried`` holds their values
+    as far as they are known at this stage (in the unknowns a later stage solves for)."""
 
     outcome: ImpactOutcome
     exports: tuple[tuple[str, str], ...] = ()
+    carried: tuple[sympy.Expr, ...] = ()
+
+
+#: Results an impact stage works out on its page when a later stage takes them.
+WORKED = ("J_n", "T_1", "T_2", "T_lost", "theta_A2", "theta_B2", "beta_A2", "beta_B2")
 
 
 def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
@@ -28,6 +34,10 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
     table = {k: v for k, v in st.items() if k not in ("type", "results", "title")}
     data = {"title": st.get("title", "An impact"), **table}
     data.setdefault("given", {})
+    exported = st.get("results", {})
+    worked = [r for r in exported if r in WORKED] if isinstance(exported, dict) else []
+    if worked and isinstance(data.get("find", []), list):
+        data["find"] = list(dict.fromkeys([*data.get("find", ["v_A2", "v_B2"]), *worked]))
     # a chain's unknowns are symbols inside the stage: a later stage finds them
     seed = {n: (replace(g, unknown=False) if g.unknown else g) for n, g in state.known.items()}
     try:
@@ -47,7 +57,7 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
     }
     ind = independent_map(problem)
     state.approaches.append((problem.motion_A.n - problem.motion_B.n).xreplace(ind).xreplace(own))
-    outputs, exports = [], []
+    outputs, exports, carried = [], [], []
     for rname, new in results.items():
         r = outcome.results.get(rname)
         if r is None or not isinstance(new, str):
@@ -59,12 +69,15 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
         g = state.define(i, new, expr, dim, "deg" if dim == units.ANGLE else None)
         outputs.append(g.name)
         exports.append((g.name, rname))
+        carried.append(state.value(expr))
     for g in problem.givens:  # unknowns found by this impact become known to later stages
         if g.unknown and g.name not in state.known:
             r = outcome.results[g.name]
             state.define(i, g.name, r.closed.xreplace(ind).xreplace(own), g.dim, g.unit)
             outputs.append(g.name)
-    return StageOutcome(i, "impact", data["title"], ImpactStage(outcome, tuple(exports)), tuple(outputs))
+    return StageOutcome(
+        i, "impact", data["title"], ImpactStage(outcome, tuple(exports), tuple(carried)), tuple(outputs)
+    )
 
 
 def dimension_of(name: str) -> units.Dim:
