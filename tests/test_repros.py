@@ -174,6 +174,17 @@ def test_json_never_holds_infinity(cli, here: Path) -> None:
     one_line_error(r, "json-infinity.toml:8: [given] m_A = 'u*(1e30)^10'", "out of range")
 
 
+def test_a_chain_result_beyond_range_is_one_line(cli, here: Path) -> None:
+    """Givens keep 1e-30..1e30; a result a stage works out from them must stay finite in every output."""
+    (here / "big.toml").write_text(
+        'title = "c"\nkind = "chain"\n[given]\nv_0 = "1e30 m/s"\n[[stage]]\ntype = "define"\nexpr = "v_0^11"\n'
+        'result = "q"\n'
+    )
+    for fmt in ("json", "md"):
+        r = run(cli, "solve", "big.toml", "-f", fmt)
+        one_line_error(r, "big.toml:8: [stage 1] result = 'q': q works out beyond", "at most 1e300")
+
+
 def test_strict_json_names_the_value(tmp_path: Path) -> None:
     from derive.errors import RenderError
     from derive.fileio import dumps_json

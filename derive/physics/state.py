@@ -104,6 +104,8 @@ class ChainState:
             raise self.err(i, "result", f"{name!r} is not a new name (letters, digits and _)", name)
         val = self.value(expr)
         value = None if val.free_symbols else val
+        if value is not None and not finite_number(value):
+            raise self.err(i, "result", f"{name} works out beyond what derive computes with (at most 1e300)", name)
         if unit is None:
             unit = units.working_unit(dim, self.chain.system).text if dim in units.SYSTEMS[self.chain.system] else ""
         g = Given(name, symbol(name), dim, value, unit, definition=expr)
@@ -132,6 +134,15 @@ class ChainState:
             return bool(v.is_positive)
         c = complex(sympy.N(v))
         return abs(c.imag) < 1e-12 and c.real > 0
+
+
+def finite_number(value: sympy.Expr) -> bool:
+    """True when ``value`` is a number of magnitude at most 1e300 (finite in every output)."""
+    try:
+        size = abs(complex(sympy.N(value, 15)))
+    except (TypeError, ValueError, OverflowError):
+        return True  # not a plain number (a complex or undefined one): reported where it is used
+    return size <= 1e300
 
 
 def resolve(expr: sympy.Expr, defs: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
