@@ -51,7 +51,14 @@ def _type_schema(f: Field) -> dict[str, Any]:
         return {"type": "number", "minimum": -1e30, "maximum": 1e30}
     if t == "choice":
         return {"type": "string", "enum": list(f.choices)}
-    if t in ("value", "expression", "tolerance"):
+    if t == "tolerance":
+        return {
+            "anyOf": [
+                {"type": "number", "exclusiveMinimum": 0, "exclusiveMaximum": 1},
+                {"type": "string", "pattern": r"^\s*(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,2})?\s*%?\s*$"},
+            ]
+        }
+    if t in ("value", "expression"):
         return {"type": ["number", "string"], "minimum": -1e30, "maximum": 1e30, "maxLength": f.max_length or 500}
     if t == "name":
         return {"type": "string", "pattern": NAME_PATTERN}

@@ -232,11 +232,19 @@ def _list(value: Any, f: Field, src: Source, path: Path_) -> None:
             check_value(x, item, src, path)
 
 
+_TOLERANCE = re.compile(r"^\s*(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,2})?\s*%?\s*$")
+
+
 def _tolerance(value: Any, f: Field, src: Source, path: Path_) -> None:
     if isinstance(value, bool) or not isinstance(value, (int, float, str)):
         raise _wrong_type(value, f, src, path)
+    words = 'expected a relative tolerance such as 0.01 or "1%", between 0 and 1 (0 % and 100 %)'
     if isinstance(value, str):
         _text_limits(value, f, src, path)
+        if not _TOLERANCE.match(value):
+            raise err(src, path, words, value)
+    elif not (math.isfinite(value) and 0 < value < 1):
+        raise err(src, path, words, value)
 
 
 CHECKS = {
