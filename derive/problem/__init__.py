@@ -8,12 +8,25 @@ found, the field and what was expected.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from derive.errors import InputError
-from derive.problem.chain import ChainProblem
-from derive.problem.reader import build_problem
-from derive.problem.records import Condition, Given, Motion, Problem
 from derive.problem.source import Source, parse_toml
+
+if TYPE_CHECKING:
+    from derive.problem.chain import ChainProblem
+    from derive.problem.reader import build_problem
+    from derive.problem.records import Condition, Given, Motion, Problem
+
+#: Names imported on first use: the records need SymPy, the schema and the TOML reader do not.
+_LAZY = {
+    "ChainProblem": "derive.problem.chain",
+    "build_problem": "derive.problem.reader",
+    "Condition": "derive.problem.records",
+    "Given": "derive.problem.records",
+    "Motion": "derive.problem.records",
+    "Problem": "derive.problem.records",
+}
 
 __all__ = [
     "ChainProblem",
@@ -62,9 +75,19 @@ def find(path: str | Path) -> Path:
 def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem | ChainProblem:
     """Check a problem given as TOML text (``path`` only names it in messages)."""
     from derive.problem.chain import build_chain
+    from derive.problem.reader import build_problem
 
     source = Source(path, text)
     data = parse_toml(text, path)
     if data.get("kind") == "chain":
         return build_chain(data, source, name)
     return build_problem(data, source, name)
+
+
+def __getattr__(name: str) -> Any:
+    """The records and the builder, imported when first asked for (they import SymPy)."""
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'derive.problem' has no attribute {name!r}")
