@@ -74,6 +74,8 @@ def _type_schema(f: Field) -> dict[str, Any]:
         out["maxItems"] = f.max_items
     if f.items is not None:
         out["items"] = field_schema(f.items) if f.items.type != "table" else _item_table(f.items)
+        if f.also == "one":
+            return {"anyOf": [out["items"], out]}
     return out
 
 

@@ -40,8 +40,11 @@ MAX_CHOICES = 100_000
 _CONDITION = re.compile(r"^(.*?)(<=|>=|<|>)(.*)$")
 
 
-def find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
-    """The results to box in the answer (default: the unknowns, else the velocities after)."""
+def find(
+    raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = (), extra: tuple[str, ...] = ()
+) -> tuple[str, ...]:
+    """The results to box in the answer (default: the unknowns, else the velocities after);
+    ``extra`` names more that may be asked (quantities defined from the results, x-y components)."""
     default = unknown or ("v_A2", "v_B2")
     if raw is None:
         return default
@@ -49,7 +52,7 @@ def find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) ->
         raw = [raw]
     if not raw:
         raise ctx.error("expected a list of result names", key="find", value=raw)
-    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown)
+    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown, *extra)
     for x in raw:
         if x not in allowed:
             raise ctx.error(f"unknown result {x!r} (expected some of: {', '.join(allowed)})", key="find", value=raw)

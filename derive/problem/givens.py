@@ -47,7 +47,7 @@ RESERVED: dict[str, Dim] = {
 GRAVITY = {"SI": ("9.81", "m/s^2"), "US": ("32.2", "ft/s^2")}
 #: Names a file may not give: the results derive computes (the velocities after
 #: the impact may be given, in an inverse problem).
-COMPUTED = {"theta_A2", "theta_B2", "beta_A2", "beta_B2", "T_1", "T_2", "T_lost", "J_n"}
+COMPUTED = {"T_1", "T_2", "T_lost", "J_n"}
 #: The magnitude of every given's value (written or computed), when not 0.
 MAGNITUDE = (sympy.Rational(1, 10**30), sympy.Integer(10**30))
 OUT_OF_RANGE = "is out of range (expected a magnitude between 1e-30 and 1e30)"

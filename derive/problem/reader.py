@@ -10,17 +10,19 @@ physics as it is built; its errors get their place in the file here.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import sympy
 
 from derive.problem import fields, units
-from derive.problem.givens import GRAVITY, build_givens, infer_system, quantity, read_assume
+from derive.problem.givens import GRAVITY, build_givens, given_value, infer_system, quantity, read_assume
 from derive.problem.motion import geometry, motion
 from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
 from derive.problem.source import Source
-from derive.problem.units import MASS
+from derive.problem.symbolic import Asks, Relation, read_asks
+from derive.problem.units import ANGLE, MASS
 from derive.problem.validate import check
 from derive.symbols import symbol
 
@@ -40,6 +42,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     oblique = kind == "oblique"
     system = data.get("units") or infer_system(given_tbl)
     assume = read_assume(data.get("assume"), given_tbl, ctx)
+    after = {k: v for k, v in given_tbl.items() if k in AFTER}  # directions after the impact, known
+    given_tbl = {k: v for k, v in given_tbl.items() if k not in AFTER}
     givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     bodies = {b: data.get(b, {}) for b in "AB"}
@@ -62,6 +66,10 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             by_name[extra.name] = extra
         motions.append(found)
     unknown = tuple(g.name for g in givens if g.unknown)
+    asks = _asks(data, givens, by_name, after, ctx, oblique, system)
+    extra_names = tuple(d.name for d in asks.defined) + (
+        ("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ()
+    )
     try:
         return Problem(
             path=ctx.path,
@@ -70,7 +78,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             givens=tuple(givens),
             motion_A=motions[0],
             motion_B=motions[1],
-            find=fields.find(data.get("find"), ctx, oblique, unknown),
+            find=fields.find(data.get("find"), ctx, oblique, unknown, extra_names),
             system=system,
             digits=data.get("digits"),
             source=data.get("source"),
@@ -84,10 +92,53 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
             conditions=fields.conditions(data.get("conditions"), by_name, ctx),
             assume=assume,
+            asks=asks,
         )
     except RecordError as exc:
         raw = data.get(exc.section, {}).get(exc.key) if exc.section else data.get(exc.key or "")
         raise ctx.error(exc.what, section=exc.section, key=exc.key, value=raw, cls=exc.cls) from exc
+
+
+#: Results after the impact a file may give as knowns (each becomes an equation).
+AFTER = ("theta_A2", "theta_B2", "beta_A2", "beta_B2")
+
+
+def _asks(
+    data: Mapping[str, Any],
+    givens: list[Given],
+    by_name: Mapping[str, Given],
+    after: Mapping[str, Any],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+) -> Asks:
+    """What the problem asks beyond the velocities (``show``, ``range``, ``equations``,
+    ``define``, ``answers``), and the directions after the impact given as knowns."""
+    asks = read_asks(
+        data,
+        {g.name: (g.symbol, g.dim) for g in givens},
+        fields.RESULT_DIMS,
+        {g.name for g in givens if g.value is None and not g.unknown},
+        system,
+        ctx,
+    )
+    return replace(asks, equations=asks.equations + _known_after(after, by_name, ctx, oblique, system))
+
+
+def _known_after(
+    after: Mapping[str, Any], by_name: Mapping[str, Given], ctx: Source, oblique: bool, system: str
+) -> tuple[Relation, ...]:
+    """A direction after the impact given as a known: ``theta_A2 = "30 deg"`` is the
+    equation theta_A2 = 30°, which fixes one more unknown."""
+    out = []
+    for name, raw in after.items():
+        if not oblique:
+            raise ctx.error('a direction after the impact needs kind = "oblique"', section="given", key=name)
+        g = given_value(name, raw, by_name, ctx, oblique, system)
+        if g.dim != ANGLE or g.value is None:
+            raise ctx.error('expected an angle such as "30 deg"', section="given", key=name, value=raw)
+        out.append(Relation(f"{name} = {raw}", symbol(name), g.value * 180 / sympy.pi))
+    return tuple(out)
 
 
 def _take_from_seed(

@@ -16,6 +16,7 @@ import sympy
 from derive.errors import InputError, PhysicsError
 from derive.problem import units
 from derive.problem.expr import NAME_RE
+from derive.problem.symbolic import Asks
 from derive.problem.units import Dim
 
 KINDS = ("direct", "oblique")
@@ -142,6 +143,7 @@ class Problem:
     conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
     assume: Mapping[str, str] = field(default_factory=dict)
+    asks: Asks = field(default_factory=Asks)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

@@ -212,6 +212,8 @@ def _table(value: Any, f: Field, src: Source, path: Path_) -> None:
 
 
 def _list(value: Any, f: Field, src: Source, path: Path_) -> None:
+    if f.also == "one" and f.items is not None and not isinstance(value, list):  # one item, without its list
+        value = [value]
     if not isinstance(value, list):
         raise _wrong_type(value, f, src, path)
     if len(value) < f.min_items or (f.max_items is not None and len(value) > f.max_items):

@@ -52,7 +52,7 @@ class Field:
     items: Field | None = None
     table: Table | None = None
     expected: str = ""
-    also: str = ""  # another accepted form, for the docs and the JSON Schema: "name" (find = "v_A2")
+    also: str = ""  # another accepted form: "name" (find = "v_A2"), "one" (a single item without its list)
 
     def __post_init__(self) -> None:
         if self.type not in TYPES:

@@ -146,6 +146,77 @@ def kind_field(choices: tuple[str, ...], meaning: str, expected: str) -> Field:
     return Field("kind", "choice", meaning, required=True, choices=choices, expected=expected)
 
 
+RELATION = Field("relation", "text", "an equation in the givens and results", max_length=500)
+ASK_RANGE = Table(
+    "range",
+    "the values of a letter for which a comparison holds",
+    (
+        Field("of", "name", "a given kept as a letter (such as e)", required=True),
+        Field("where", "text", 'a comparison with <, <=, > or >=, such as "v_A2 < 0"', required=True, max_length=500),
+    ),
+)
+#: What a problem asks beyond the velocities (read by :mod:`derive.problem.symbolic`).
+ASKS = (
+    Field(
+        "show",
+        "list",
+        'relations to show from the closed forms, such as `"v_B2 = 2/5*(1 + e)*u"`',
+        max_items=20,
+        items=RELATION,
+        also="one",
+        expected='a relation such as "v_B2 = 2/5*(1 + e)*u", or a list of them',
+    ),
+    Field(
+        "range",
+        "list",
+        'for which values of a letter a comparison holds: `{ of = "e", where = "v_A2 < 0" }`, or a list of them',
+        max_items=20,
+        items=Field("range", "table", "a range", table=ASK_RANGE),
+        also="one",
+        expected='{ of = "e", where = "v_A2 < 0" }',
+    ),
+    Field(
+        "equations",
+        "list",
+        'more equations that fix "?" unknowns, such as `"T_2 = 3/4*T_1"`',
+        max_items=20,
+        items=RELATION,
+        also="one",
+        expected='one equation such as "T_2 = 3/4*T_1", or a list of them',
+    ),
+    Field(
+        "define",
+        "table",
+        'quantities defined from the results: `{ F_avg = "J_n/dt" }`',
+        table=Table(
+            "define",
+            "quantities from the results",
+            keys=Field("definition", "text", "an expression of the givens and results", max_length=500),
+            key_pattern=NAME_PATTERN,
+            key_words="a new name",
+            max_keys=20,
+        ),
+    ),
+    Field(
+        "answers",
+        "table",
+        'published answers, for tests and keys: `{ v_B2 = "2/5*(1 + e)*u" }`',
+        table=Table(
+            "answers",
+            "published answers",
+            keys=Field(
+                "published",
+                "value",
+                "a number with its unit, or an expression",
+                max_length=500,
+                expected="a number with its unit or an expression",
+            ),
+            key_pattern=NAME_PATTERN,
+            key_words="a result or given",
+            max_keys=40,
+        ),
+    ),
+)
 #: The fields of a problem (and of a chain's impact stage) after ``title`` and ``kind``.
 IMPACT_FIELDS = (
     *TEXTS,
@@ -168,6 +239,7 @@ IMPACT_FIELDS = (
         table=GIVEN,
     ),
     Field("geometry", "table", "the line of impact in x-y axes (below)", table=GEOMETRY),
+    *ASKS,
     Field("vary", "table", "ranges or choices for homework variants (below)", table=VARY),
     Field(
         "conditions",
