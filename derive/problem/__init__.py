@@ -40,6 +40,7 @@ __all__ = [
     "load",
     "loads",
     "parse_toml",
+    "title",
 ]
 
 
@@ -91,3 +92,22 @@ def __getattr__(name: str) -> Any:
 
         return getattr(importlib.import_module(_LAZY[name]), name)
     raise AttributeError(f"module 'derive.problem' has no attribute {name!r}")
+
+
+def title(path: str | Path) -> str:
+    """A problem file's title, read and checked against the schema's ``title`` field
+    without building the rest (for ``derive list``: no SymPy)."""
+    from derive.fileio import read_user_text
+    from derive.problem.schema import PROBLEM
+    from derive.problem.validate import check_value, missing
+
+    path = Path(path)
+    text = read_user_text(path, "a problem file")
+    source = Source(str(path), text)
+    data = parse_toml(text, str(path))
+    field = PROBLEM.get("title")
+    assert field is not None
+    if "title" not in data:
+        raise missing(field, source)
+    check_value(data["title"], field, source, ("title",))
+    return data["title"]
