@@ -241,3 +241,17 @@ def test_byte_order_mark_is_accepted(cli, here: Path) -> None:
 
     doc = json.loads(r.out)
     assert doc["title"] == "BOM" and doc["results"]["v_A2"]["value"] == pytest.approx(-0.32)
+
+
+def test_a_stage_result_that_works_out_complex_is_one_line() -> None:
+    """Fuzz case 5549 (seed 18): a bounces stage with e = sqrt(-1) was an internal error in JSON."""
+    import derive
+    from derive.problem import loads
+
+    text = (
+        'title = "t"\nkind = "chain"\n[given]\nh_0 = "1.6 m"\n'
+        '[[stage]]\ntype = "bounces"\nheight = "h_0"\ne = "sqrt(-1)"\ncount = 2\n'
+    )
+    with pytest.raises(derive.InputError, match="complex number") as info:
+        derive.solve(loads(text, path="x.toml"))
+    assert str(info.value).startswith("x.toml:") and "\n" not in str(info.value)

@@ -106,6 +106,10 @@ class ChainState:
         value = None if val.free_symbols else val
         if value is not None and not finite_number(value):
             raise self.err(i, "result", f"{name} works out beyond what derive computes with (at most 1e300)", name)
+        if value is not None and not real_number(value):
+            raise self.err(
+                i, "result", f"{name} works out to a complex number (a square root of a negative number?)", name
+            )
         if unit is None:
             unit = units.working_unit(dim, self.chain.system).text if dim in units.SYSTEMS[self.chain.system] else ""
         g = Given(name, symbol(name), dim, value, unit, definition=expr)
@@ -143,6 +147,15 @@ def finite_number(value: sympy.Expr) -> bool:
     except (TypeError, ValueError, OverflowError):
         return True  # not a plain number (a complex or undefined one): reported where it is used
     return size <= 1e300
+
+
+def real_number(value: sympy.Expr) -> bool:
+    """False when ``value`` is a number with an imaginary part (sqrt(-1)): no output can show it."""
+    try:
+        c = complex(sympy.N(value, 15))
+    except (TypeError, ValueError, OverflowError):
+        return True  # not a plain number: reported where it is used
+    return abs(c.imag) <= 1e-12 * max(1.0, abs(c.real))
 
 
 def resolve(expr: sympy.Expr, defs: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
