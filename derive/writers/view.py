@@ -8,7 +8,6 @@ A renderer never does physics.
 from __future__ import annotations
 
 import base64
-import json
 import re
 from dataclasses import replace
 from functools import cache
@@ -19,6 +18,7 @@ import sympy
 
 from derive import escape
 from derive.errors import InputError
+from derive.fileio import dumps_json
 from derive.numbers import format_number
 from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
@@ -451,7 +451,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
             for s in v["stages"]
         ],
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
 def chain_view(
@@ -574,7 +574,7 @@ def _chain_json(sol: Any, digits: int | None) -> str:
         "results": results,
         "stages": stages,
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
 def render(
