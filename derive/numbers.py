@@ -102,10 +102,18 @@ def decimals_of(text: str) -> int:
     return len(text.split(".")[1]) if "." in text else 0
 
 
-def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int) -> int | None:
+def places_that_add_up(
+    sums: list[tuple[list[Decimal], Decimal]],
+    digits: int | None,
+    extra: int,
+    *,
+    each: bool = False,
+    more: int = 1,
+) -> int | None:
     """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
-    19.81): the largest number's figures to start with, one more if the rounded terms
-    do not add up to the rounded total. None when no such places exist: the numbers
+    19.81): the largest number's figures to start with (with ``each``, the figures of
+    every number), up to ``more`` more while the rounded terms do not add up to the
+    rounded total. None when no such places exist: the numbers
     are too far apart in size for fixed places, or need more figures than the rule."""
     numbers = [x for terms, total in sums for x in (*terms, total)]
     if any(x != 0 and not -4 <= x.adjusted() < 6 for x in numbers):
@@ -113,7 +121,9 @@ def places_that_add_up(sums: list[tuple[list[Decimal], Decimal]], digits: int | 
     biggest = max((abs(x) for x in numbers), default=Decimal(0))
     text = format_number(biggest, digits, extra=extra) if biggest else ""
     start = decimals_of(text) if text and "e" not in text else 2
-    for places in (start, start + 1):
+    if each:  # every number keeps its figures (21.60 - 14.69 = 6.91), the smallest deciding
+        start = max((decimals_of(format_number(x, digits, extra=extra)) for x in numbers if x != 0), default=start)
+    for places in range(start, start + more + 1):
         if all(
             sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))
             for terms, total in sums
@@ -148,6 +158,51 @@ def as_written(value: sympy.Expr | Decimal) -> str:
     if -4 <= d.adjusted() < 6:
         return format(d, "f")
     return f"{format(d.scaleb(-d.adjusted()), 'f')}e{d.adjusted():+d}"
+
+
+def nice(x: sympy.Expr) -> bool:
+    """True for a number a textbook writes exactly: a fraction, a surd, pi, and sums
+    and products of these (1/3, sqrt(2)/2, pi/4); False for cos 37.6° and the like."""
+    if x.is_Rational or x is sympy.pi:
+        return True
+    if isinstance(x, sympy.Pow):
+        return x.base.is_Rational and x.exp.is_Rational and x.exp.q <= 3
+    if isinstance(x, (sympy.Mul, sympy.Add)):
+        return all(nice(a) for a in x.args)
+    return False
+
+
+def exactify(expr: sympy.Expr) -> sympy.Expr:
+    """``expr`` with its letters kept and every number in it exact where a textbook
+    writes it so (:func:`nice`), else evaluated: u (1 - 2 e)/3, not 0.333 u (1.000 - 2.00 e).
+
+    >>> u, e = sympy.symbols("u e")
+    >>> exactify(u * (1 - 2 * e) / 3)
+    u*(1 - 2*e)/3
+    """
+    if isinstance(expr, sympy.UnevaluatedExpr):
+        return sympy.UnevaluatedExpr(exactify(expr.args[0]))
+    if expr.is_number:
+        if structural(expr):  # built to be shown as it stands: (20 + 5)
+            return floatify(expr)
+        return expr if nice(expr) else sympy.Float(expr.evalf(PRECISION), PRECISION)
+    if expr.is_Atom:
+        return expr
+    if isinstance(expr, sympy.Mul):  # one coefficient: 0.672 v_A1, not 0.475 √2 v_A1
+        coeff, rest = expr.as_independent(*expr.free_symbols, as_Add=False)
+        if coeff != 1 and not structural(coeff):
+            return sympy.Mul(exactify(coeff), exactify(rest), evaluate=False)
+    return expr.func(*(exactify(a) for a in expr.args), evaluate=False)
+
+
+def tidy(x: sympy.Expr) -> sympy.Expr:
+    """A Float that is a short decimal to 12 figures (0.05) as that exact number, so it is
+    printed as written; other numbers as they are."""
+    if isinstance(x, sympy.Float) and x != 0:
+        r = sympy.Rational(format(to_decimal(x).normalize().__round__(12 - to_decimal(x).adjusted()), "f"))
+        if short_decimal(r):
+            return r
+    return x
 
 
 def floatify(expr: sympy.Expr, keep_integers: bool = True) -> sympy.Expr:

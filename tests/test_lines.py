@@ -170,8 +170,39 @@ def test_the_kinetic_energy_lost_is_the_difference_of_the_energies_shown() -> No
     energy = md.split("Kinetic energy, for the record")[1]
     t1 = re.search(r"T_\{1\} = .* = ([\d.]+)\\ \\mathrm\{J\}", energy).group(1)
     t2 = re.search(r"T_\{2\} = .* = ([\d.]+)\\ \\mathrm\{J\}", energy).group(1)
-    a, b, lost = re.search(r"T_\{\\mathrm\{lost\}\} = T_\{1\} - T_\{2\} = ([\d.]+) - ([\d.]+) = ([\d.]+)", energy).groups()
+    a, b, lost = re.search(
+        r"T_\{\\mathrm\{lost\}\} = T_\{1\} - T_\{2\} = ([\d.]+) - ([\d.]+) = ([\d.]+)", energy
+    ).groups()
     assert t1 == a == "812.5" and t2 == b
     from decimal import Decimal
 
     assert Decimal(a) - Decimal(b) == Decimal(lost)
+
+
+def test_letters_are_written_exactly_where_the_data_are_exact() -> None:
+    # m_A = m, m_B = 2m, B at rest, A at u, e kept as a letter. By hand from (3) and (4):
+    # v_A2 = u(1 - 2e)/3, v_B2 = u(1 + e)/3, T_2 = m u^2 (1 + 2e^2)/6.
+    md = page(
+        """
+        title = "letters"
+        kind = "direct"
+        [given]
+        m_A = "m"
+        m_B = "2*m"
+        m = "kg"
+        e = "e"
+        v_A1 = "u"
+        v_B1 = "0 m/s"
+        u = "m/s"
+        """
+    )
+    assert r"\boxed{v_{A2} = \frac{u \left(1 - 2 e\right)}{3}}" in md
+    assert r"\boxed{v_{B2} = \frac{u \left(e + 1\right)}{3}}" in md
+    assert r"\frac{m u^{2} \left(2 e^{2} + 1\right)}{6}" in md
+    assert "1.000" not in md and "0.333" not in md and "0.500" not in md
+
+
+def test_example_4c12_keeps_the_notes_root_two_over_two() -> None:
+    md = derive.render(derive.solve(derive.load("notes-4c12-cue-ball")), "md")
+    assert r"v_{A2t} = \frac{\sqrt{2}}{2} v_{A1} \tag{1}" in md
+    assert "0.7071" not in md and "0.707 v" not in md

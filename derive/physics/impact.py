@@ -252,10 +252,17 @@ def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: d
     return bool(approach.free_symbols) or complex(sympy.N(approach)).real > 0
 
 
-def evaluate(expr: sympy.Expr, problem: Problem) -> sympy.Expr:
-    """``expr`` with every numeric given substituted (exact); symbols without numbers stay."""
+def evaluate(expr: sympy.Expr, problem: Problem, *, decimals: bool = False) -> sympy.Expr:
+    """``expr`` with every numeric given substituted (exact); symbols without numbers stay.
+
+    With ``decimals``, the givens the file wrote as decimals go in as Floats, so that an
+    expression that keeps a letter shows where its numbers came from (0.9 u, not 9u/10).
+    """
     ind = independent_map(problem)
-    return expr.xreplace(ind).xreplace(problem.numeric())
+    numeric = problem.numeric()
+    if decimals:
+        numeric.update({g.symbol: sympy.Float(g.value.evalf(30), 30) for g in problem.givens if g.decimal})
+    return expr.xreplace(ind).xreplace(numeric)
 
 
 def is_numeric(expr: sympy.Expr) -> bool:

@@ -34,6 +34,7 @@ TOP_FIELDS = (
     "given",
     "geometry",
     "answer_units",
+    "assume",
     "vary",
     "conditions",
     "A",
@@ -115,6 +116,17 @@ class Given:
     definition: sympy.Expr | None = None
     unknown: bool = False
 
+    @property
+    def decimal(self) -> bool:
+        """True for a number that is not whole and was not written as an expression (0.6,
+        37.6 deg, 22 g as 0.022 kg): where it meets letters the worked lines show decimals;
+        exact data (integers, 3/5, sqrt(2)) stay exact."""
+        if self.value is None or self.definition is not None:
+            return False
+        if self.unit == "deg":
+            return not (self.value * 180 / sympy.pi).is_Integer
+        return not self.value.is_Integer  # 0.6, and 22 g as 0.022 kg
+
 
 @dataclass(frozen=True)
 class Motion:
@@ -169,6 +181,7 @@ class Problem:
     vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)
     conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
+    assume: Mapping[str, str] = field(default_factory=dict)
 
     @property
     def oblique(self) -> bool:
@@ -225,7 +238,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
         raise ctx.error(f"has too many entries ({len(given_tbl)}, at most {MAX_GIVENS})", section="given")
     if system is None:
         system = infer_system(given_tbl)
-    givens = build_givens(given_tbl, ctx, oblique, system, seed)
+    assume = read_assume(data.get("assume"), given_tbl, ctx)
+    givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     b_tbl = data.get("B")
     b_fixed = isinstance(b_tbl, dict) and b_tbl.get("fixed") is True
@@ -354,6 +368,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
         answer_units=_answer_units(data.get("answer_units"), ctx),
         vary=_vary(data.get("vary"), by_name, ctx, oblique, system),
         conditions=_conditions(data.get("conditions"), by_name, ctx),
+        assume=assume,
     )
     _check_approach(problem, ctx)
     return problem
@@ -375,7 +390,12 @@ def infer_system(tbl: Mapping[str, Any]) -> str:
 
 
 def build_givens(
-    tbl: Mapping[str, Any], ctx: Source, oblique: bool, system: str, seed: Mapping[str, Given] | None = None
+    tbl: Mapping[str, Any],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    seed: Mapping[str, Given] | None = None,
+    assume: Mapping[str, str] | None = None,
 ) -> list[Given]:
     """Build the givens in dependency order (a given may be defined from others).
 
@@ -404,11 +424,11 @@ def build_givens(
         progressed = False
         for key in list(pending):
             raw = pending[key]
-            deps = (_names_in(raw) & set(tbl)) - set(seed)
+            deps = (_names_in(raw) & set(tbl)) - set(seed) - {key}  # e = "e" is a letter
             if deps - set(done):
                 continue
             scope = {**done, **seed, **{k: _alias(g) for k, g in outer.items()}}
-            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system), outer, ctx)
+            done[key] = _outer(_given(key, raw, scope, ctx, oblique, system, assume), outer, ctx)
             del pending[key]
             progressed = True
         if not progressed:
@@ -420,6 +440,31 @@ def build_givens(
                 value=pending[key],
             )
     return [done[k] for k in tbl]
+
+
+#: What a file may assume of a letter -> the symbol's assumptions (an acute angle is
+#: positive, and its range is used where a sign is decided).
+ASSUMPTIONS = {
+    "positive": "positive",
+    "nonnegative": "nonnegative",
+    "real": "real",
+    "negative": "negative",
+    "acute": "positive",
+}
+
+
+def read_assume(raw: Any, given_tbl: Mapping[str, Any], ctx: Source) -> dict[str, str]:
+    """The [assume] table: what a letter is (letters are positive unless it says otherwise)."""
+    if raw is None:
+        return {}
+    if not isinstance(raw, dict):
+        raise ctx.error(f'expected a table such as {{ alpha = "acute" }}, not {type_name(raw)}', key="assume")
+    for name, word in raw.items():
+        if name not in given_tbl:
+            raise ctx.error("names no given: assume what a letter of [given] is", section="assume", key=name)
+        if word not in ASSUMPTIONS:
+            raise ctx.error(f"expected one of: {', '.join(ASSUMPTIONS)}", section="assume", key=name, value=word)
+    return dict(raw)
 
 
 def _alias(g: Given) -> Given:
@@ -455,9 +500,22 @@ def _names_in(raw: Any) -> set[str]:
     return set(re.findall(r"[A-Za-z][A-Za-z0-9_]*", raw))
 
 
-def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: bool, system: str) -> Given:
+def _given(
+    key: str,
+    raw: Any,
+    done: Mapping[str, Given],
+    ctx: Source,
+    oblique: bool,
+    system: str,
+    assume: Mapping[str, str] | None = None,
+) -> Given:
     expected = RESERVED.get(key)
-    sym = symbol(key, kind_of(key, oblique))
+    assume = assume or {}
+    sym = symbol(key, ASSUMPTIONS.get(assume.get(key, ""), kind_of(key, oblique)))
+    # a new name kept as a letter (u, m) is positive unless [assume] says otherwise; the
+    # notes' own names keep their meaning (v_A1n is signed, e is 0 to 1)
+    natural = kind_of(key, oblique) if key in RESERVED else "positive"
+    letter = symbol(key, ASSUMPTIONS.get(assume.get(key, ""), natural))
     err = lambda what, cls=InputError: ctx.error(what, section="given", key=key, value=raw, cls=cls)  # noqa: E731
     if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
         raise err(f'expected a number or text such as "5 m/s", not {type_name(raw)}')
@@ -473,6 +531,10 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: 
             value = value * unit.factor
         return Given(key, sym, dim, value, unit.text)
     text = raw.strip()
+    if text == key and key not in done:  # e = "e": a letter, of the dimension its name has
+        dim = expected if expected is not None else DIMENSIONLESS
+        work = units.parse_unit("deg") if dim == ANGLE else units.working_unit(dim, system)
+        return Given(key, letter, dim, None, work.text if dim in units.SYSTEMS[system] or dim == ANGLE else "")
     if text == "?" or text.startswith("? "):
         unit_text = text[1:].strip()
         try:
@@ -513,7 +575,7 @@ def _given(key: str, raw: Any, done: Mapping[str, Given], ctx: Source, oblique: 
             if expected is not None and unit.dim != expected:
                 raise err(f"expected {describe(expected)}, but {text} is {describe(unit.dim)}", UnitError)
             work = units.working_unit(unit.dim, system) if unit.dim != ANGLE else units.parse_unit("deg")
-            return Given(key, sym, unit.dim, None, work.text)
+            return Given(key, letter, unit.dim, None, work.text)
     names = {g.name: (g.symbol, g.dim) for g in done.values()}
     try:
         parsed = parse(text, names)

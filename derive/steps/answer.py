@@ -9,6 +9,7 @@ from dataclasses import replace
 import sympy
 
 from derive.errors import SolveError
+from derive.numbers import tidy
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.model import Block, Eqn, Math, Side, Text
@@ -32,6 +33,11 @@ def answer(page: Page) -> list[Block]:
         _marked(page, _asked(page), True),
     ]
     return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def as_number(x: sympy.Expr) -> sympy.Expr:
+    """An energy as a decimal, so that it prints at the places the block's sum needs (812.5)."""
+    return x if x.is_Integer and x == 0 else sympy.Float(x.evalf(30), 30)
 
 
 def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
@@ -93,7 +99,7 @@ def _closed_forms(page: Page) -> Block | None:
     if not symbolic:
         return None
     lines = [
-        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((r.partial,), "result")), unit=r.unit)
+        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((page.value_of(r.symbol),), "result")), unit=r.unit)
         for r in symbolic
         if r.closed != 0
     ]
@@ -171,7 +177,7 @@ def _angle_line(
     numeric = not ((xv.free_symbols | yv.free_symbols) - page.varied)
     known = numeric and not (xv.free_symbols | yv.free_symbols)
     sides = [Side((r.symbol,))]
-    ratio = None if xv == 0 else sympy.simplify(yv / xv)
+    ratio = None if xv == 0 else tidy(sympy.simplify(yv / xv))
     if xv == 0:
         pass
     elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
@@ -244,13 +250,13 @@ def energy(page: Page) -> Block:
         if r.value is None:
             if r.closed != r.partial and r.partial.free_symbols - page.varied:
                 sides.append(Side((r.closed,)))
-            sides.append(Side((r.partial,), "result"))
+            sides.append(Side((page.value_of(r.symbol),), "result"))
         else:
             if name == "T_lost" and difference:
-                sides.append(Side((before, -after), "numeric"))
-            sides.append(Side((r.value,), "numeric" if difference else "result"))
+                sides.append(Side((as_number(before), -as_number(after)), "numeric"))
+            sides.append(Side((as_number(r.value),), "numeric") if difference else Side((r.value,), "result"))
         lines.append(Eqn(tuple(sides), unit=r.unit))
-    sums = (((before, -after), lost),) if difference else ()
+    sums = (((as_number(before), -as_number(after)), as_number(lost)),) if difference else ()
     r1, rl = page.results["T_1"], page.results["T_lost"]
     if r1.value is not None and rl.value is not None and r1.value != 0:
         frac = rl.value / r1.value * 100
@@ -271,4 +277,4 @@ def energy(page: Page) -> Block:
         Math(sympy.Eq(page.e, 1)),
         ", so it is never used to find the velocities.",
     )
-    return Block(text, tuple(lines), sums)
+    return Block(text, tuple(lines), sums, answer_figures=True)

@@ -67,12 +67,15 @@ class Block:
     """A sentence (optional) and the equation lines it introduces.
 
     ``sums`` records sums shown term by term, ``(terms, total)``: a renderer
-    carries enough figures that the rounded terms add up to the rounded total.
+    carries enough figures that the rounded terms add up to the rounded total,
+    starting from the answer's figures where ``answer_figures`` (results, not
+    intermediates).
     """
 
     text: Text | None
     lines: tuple[Eqn, ...] = ()
     sums: tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...] = ()
+    answer_figures: bool = False
 
 
 @dataclass(frozen=True)

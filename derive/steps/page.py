@@ -93,6 +93,11 @@ class Page:
         """Givens of homework variants: symbols here only to be filled in later, so they count as numbers."""
         return {g.symbol for g in self.p.givens if g.name in self.p.vary}
 
+    @property
+    def letters(self) -> set[sympy.Symbol]:
+        """The givens kept as letters (u, m, e): not those of homework variants, which are numbers."""
+        return {g.symbol for g in self.p.givens if g.value is None and not g.unknown} - self.varied
+
     def _xy_components(self) -> set[sympy.Symbol]:
         return {c for _, comps in xy_motions(self.imp) for c in comps}
 
@@ -108,14 +113,23 @@ class Page:
         return bool(expr.free_symbols & (set(self.numeric) | self._xy_components() | self.varied))
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
-        """``expr`` with the pre-impact components and every numeric given put in."""
-        return evaluate(expr.xreplace(self.imp.pre), self.p)
+        """``expr`` with the pre-impact components and every numeric given put in; where a
+        letter stays, those the file wrote as decimals go in as decimals (0.9 u, not 9u/10)."""
+        exact = evaluate(expr.xreplace(self.imp.pre), self.p)
+        if exact.free_symbols & self.letters:
+            return evaluate(expr.xreplace(self.imp.pre), self.p, decimals=True)
+        return exact
 
     def value_of(self, s: sympy.Symbol) -> sympy.Expr:
         """A solved quantity: its number, or its closed form with numbers in."""
         r = self.results.get(s.name)
         if r is not None:
-            return r.value if r.value is not None else r.partial
+            if r.value is not None:
+                return r.value
+            if r.unit != "deg" and any(g.decimal for g in self.p.givens) and r.partial.free_symbols & self.letters:
+                shown = evaluate(r.closed, self.p, decimals=True)  # 0.475 v_A1 √2, not 19 v_A1 √2/40
+                return sympy.simplify(shown) if sympy.count_ops(shown) < 150 else shown
+            return r.partial
         return self.num(self.imp.closed[s])
 
     def unit_of(self, s: sympy.Symbol) -> str | None:

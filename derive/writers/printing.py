@@ -19,6 +19,7 @@ from sympy.printing.latex import LatexPrinter
 from derive.numbers import (
     PRECISION,
     as_written,
+    exactify,
     floatify,
     format_fixed,
     format_number,
@@ -71,6 +72,8 @@ class Style:
     slots: SlotBook | None = field(default=None, compare=False)
     block: int | None = None
     hide_optional: bool = False
+    decimal: frozenset[sympy.Symbol] = frozenset()
+    letters: frozenset[sympy.Symbol] = frozenset()
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -159,8 +162,12 @@ class StepPrinter(LatexPrinter):
         varied: frozenset[sympy.Symbol] = frozenset(),
         slot_kind: str = "number",
         block: int | None = None,
+        trim_floats: bool = False,
+        fractions: bool = False,
     ) -> None:
         super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._trim_floats = trim_floats
+        self._fractions = fractions
         self._slots = slots
         self._varied = varied
         self._slot_kind = slot_kind
@@ -209,7 +216,18 @@ class StepPrinter(LatexPrinter):
     def _print_Float(self, expr: sympy.Float) -> str:
         if self._decimals is not None:
             return format_fixed(expr, self._decimals)
+        if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
+            mantissa, _, power = format_number(expr, self._digits, extra=self._extra).partition("e")
+            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            return power_latex(mantissa + ("e" + power if power else ""))
         return number_latex(expr, self._digits, self._extra)
+
+    def _as_decimal(self, r: sympy.Rational) -> bool:
+        """Whether a short decimal prints as one: beside letters, halves, thirds and
+        quarters stay fractions (m u²/2), fifths and tenths are decimals (0.6 u)."""
+        if not short_decimal(r):
+            return False
+        return not (self._fractions and r.q <= 12 and r.q % 5 != 0)
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
         if self._decimal_rationals and not self._round_integers and short_decimal(expr):
@@ -228,6 +246,10 @@ class StepPrinter(LatexPrinter):
         terms = expr.args
         if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
             terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
+        if is_negative_term(terms[0]) and any(t.free_symbols for t in terms):
+            positive = [t for t in terms if not is_negative_term(t)]
+            if positive:  # 1 - 2 e, not -2 e + 1
+                terms = tuple(positive) + tuple(t for t in terms if is_negative_term(t))
         for i, term in enumerate(terms):
             if (
                 self._slots is not None
@@ -263,13 +285,19 @@ class StepPrinter(LatexPrinter):
                 s = self._print(inner)
                 wrap = isinstance(inner, sympy.Add) or s.startswith("-")
                 return "-" + (r"\left(" + s + r"\right)" if wrap else s)
+        args = [a for a in expr.args if a != 1] or [sympy.Integer(1)]  # 1 (v + 4u/3) is v + 4u/3
+        if len(args) == 1:
+            return self._print(args[0])
+        # beside a surd a fraction stays a fraction: sqrt(2)/2, not 0.5 sqrt(2)
+        surd = any(isinstance(a, sympy.Pow) and a.base.is_Rational and not a.exp.is_Integer for a in args)
+        decimal = self._decimal_rationals and not surd
         num, den = [], []
-        for a in sorted(expr.args, key=lambda a: 0 if self._open(a) or self._numberish(a) else _factor_key(a)):
-            if (
-                isinstance(a, sympy.Rational)
-                and not a.is_Integer
-                and not (self._decimal_rationals and short_decimal(a))
-            ):
+
+        def first(a: sympy.Expr) -> bool:  # numbers before letters (not a sum: v (20 + 5))
+            return self._open(a) or self._numberish(a) or (a.is_number and not isinstance(a, sympy.Add))
+
+        for a in sorted(args, key=lambda a: 0 if first(a) else _factor_key(a)):
+            if isinstance(a, sympy.Rational) and not a.is_Integer and not (decimal and self._as_decimal(a)):
                 if a.p != 1:
                     num.insert(0, sympy.Integer(a.p))
                 den.insert(0, sympy.Integer(a.q))
@@ -369,6 +397,23 @@ def latex_expr(
             vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
         )
         return printer.doprint(expr)
+    if mode in ("numeric", "result") and _letters(expr, style):
+        # letters remain: numbers exact where the data are (u (1 - 2e)/3), decimals
+        # where the data are decimal (0.6 u), never 1.000 e
+        values = {
+            s: sympy.Float(v.evalf(PRECISION), PRECISION) if s in style.decimal else v for s, v in style.values.items()
+        }
+        expr = exactify(substitute(expr, values))
+        extra = 0 if mode == "result" else extra
+        decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
+        if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
+            printer = StepPrinter(fractions=True)
+            rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
+            expr = expr.xreplace(rounded)
+        printer = StepPrinter(
+            cancel=cancel, digits=style.digits, extra=extra, trim_floats=True, decimal_rationals=decimal, fractions=True
+        )
+        return printer.doprint(expr)
     if mode == "numeric":
         expr = substitute(expr, style.values)
         printer = StepPrinter(
@@ -399,11 +444,19 @@ def latex_expr(
     raise ValueError(mode)
 
 
+def _letters(expr: sympy.Expr, style: Style) -> bool:
+    """True when ``expr`` keeps a given that the problem keeps as a letter (u, m, e) once
+    its numbers are in; unknowns alone (v_A2) do not count, nor a variant's open numbers."""
+    if style.slots is not None:
+        return False
+    return bool(substitute(expr, style.values).free_symbols & style.letters)
+
+
 def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
     """A side of an equation: its terms joined with their signs, in order."""
     out = ""
     for i, term in enumerate(side.terms):
-        if side.mode in ("numeric", "result"):
+        if side.mode in ("numeric", "result") and not _letters(term, style):
             term = substitute(term, style.values)
             collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
             if term.is_number and (collapse or not structural(term)):
@@ -489,6 +542,8 @@ def block_style(block: Block, style: Style) -> Style:
     """The style for one block: where it shows a sum term by term, every
     intermediate gets the same places after the point, enough that the rounded
     terms add up to the rounded total (79.23 - 59.42 = 19.81)."""
+    if block.answer_figures:
+        style = replace(style, extra=0)
     if not block.sums:
         return style
     if style.slots is not None and any(
@@ -506,7 +561,7 @@ def block_style(block: Block, style: Style) -> Style:
         ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
         for terms, total in block.sums
     ]
-    places = places_that_add_up(sums, style.digits, style.extra)
+    places = places_that_add_up(sums, style.digits, style.extra, each=block.answer_figures)
     # no places at which the rounded terms add up: leave out the line that shows them
     return replace(style, decimals=places, hide_optional=places is None)
 

@@ -196,7 +196,14 @@ def view(
     """
     p = solution.problem
     style = Style(
-        digits if digits is not None else p.digits, 1, solution.values, solution.angles, varied=varied, slots=slots
+        digits if digits is not None else p.digits,
+        1,
+        solution.values,
+        solution.angles,
+        varied=varied,
+        slots=slots,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
     )
     stages = []
     for stage in solution.stages:
@@ -346,7 +353,14 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
 def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
     """The data the chain templates need: the chain's givens, each stage printed."""
     p = sol.problem
-    style = Style(digits if digits is not None else p.digits, 1, sol.values, sol.angles)
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        sol.values,
+        sol.angles,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown),
+    )
     stages = []
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
