@@ -104,7 +104,7 @@ PUBLISHED: dict[str, tuple[Row, ...]] = {
     "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters": (
         Row("v_B2", "u"),  # "vQ = u"
         Row("v_A2", "u/2"),  # "vP = u/2"
-        Row("e", "1/2"),  # "e = (u - u/2)/u"
+        Row("e", "1/2"),  # impact law on "vQ = u, vP = u/2" (its printed value cut off in the transcription)
     ),
     "edexcel-m2-2017-january-q5-both-reverse-find-speeds-before": (
         Row("v_A1", "8*v"),  # "u_P = 8v"
