@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
 
@@ -134,15 +135,23 @@ def setup(problem: Problem) -> Impact:
     given_names = {g.name for g in problem.givens}
     post_unknown = tuple(u for u in post_all if u.name not in given_names and u not in pre)
     unknowns = post_unknown + problem.unknowns()
-    _check_count(problem, nums, unknowns)
+    directions = []
+    for j, rel in enumerate(problem.asks.equations, start=5):  # conditions beyond (1)-(4)
+        eqs[j], direction = extra_equation(problem, nm, rel, (m_A, m_B))
+        if direction is not None:
+            directions.append(direction)
+    _check_count(problem, tuple(eqs), unknowns)
     system = []
     for k, eq in eqs.items():
         lhs, rhs = eq.lhs, eq.rhs
         if k == 4:  # clear the denominator: e (v_A1n - v_B1n) = v_B2n - v_A2n
             lhs, rhs = e * (nm.A1n - nm.B1n), nm.B2n - nm.A2n
         system.append(sympy.expand((lhs - rhs).xreplace(ind)))
-    inverse = bool(problem.unknowns()) or len(post_unknown) < len(post_all) - (
-        2 if problem.fixed_B and problem.oblique else 1 if problem.fixed_B else 0
+    inverse = (
+        bool(problem.unknowns())
+        or len(eqs) > 4
+        or len(post_unknown)
+        < len(post_all) - (2 if problem.fixed_B and problem.oblique else 1 if problem.fixed_B else 0)
     )
     if not inverse:
         # Solved in the component symbols, the system is linear with rational
@@ -157,7 +166,7 @@ def setup(problem: Problem) -> Impact:
         closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
         return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
     full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
-    by_comp = _solve_inverse(problem, full, unknowns)
+    by_comp = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
     return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True)
 
@@ -183,10 +192,14 @@ def _check_count(problem: Problem, nums: tuple[int, ...], unknowns: tuple[sympy.
 
 
 def _solve_inverse(
-    problem: Problem, system: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...]
+    problem: Problem,
+    system: list[sympy.Expr],
+    unknowns: tuple[sympy.Symbol, ...],
+    directions: list[tuple[sympy.Expr, sympy.Expr, sympy.Expr]] = (),  # type: ignore[assignment]
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """Solve a system that may be nonlinear (an unknown angle, e times a velocity)
-    and keep the one physical root."""
+    and keep the one physical root; a direction given after the impact, (y, x, angle),
+    keeps only the roots that point that way (not the opposite way)."""
     numeric = problem.numeric()
     try:
         roots = sympy.solve(system, unknowns, dict=True)
@@ -196,7 +209,7 @@ def _solve_inverse(
     for root in roots:
         if set(root) != set(unknowns):
             continue
-        if _physical(problem, root, numeric):
+        if _physical(problem, root, numeric) and all(_points(root, numeric, d) for d in directions):
             kept.append(root)
     if not kept:
         found = [r for r in roots if set(r) == set(unknowns)]
@@ -224,6 +237,54 @@ def _solve_inverse(
                 where=problem.path,
             )
     return kept[0]
+
+
+def _points(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr], direction: tuple) -> bool:
+    """True when the root's (y, x) points at the given angle (not 180° away from it)."""
+    y, x, angle = (sympy.sympify(d).xreplace(root).xreplace(numeric) for d in direction)
+    if y.free_symbols | x.free_symbols | angle.free_symbols:
+        return True
+    yv, xv, a = (complex(sympy.N(v)).real for v in (y, x, angle))
+    return yv * math.sin(a) + xv * math.cos(a) > 0
+
+
+def extra_equation(
+    problem: Problem, nm: Names, rel: Any, masses: tuple[sympy.Expr, sympy.Expr]
+) -> tuple[sympy.Eq, tuple[sympy.Expr, sympy.Expr, sympy.Expr] | None]:
+    """A condition of the file (``T_2 = 3/4*T_1``, a direction after the impact) as an
+    equation in the component symbols; for a direction, also (y, x, angle) to pick the root."""
+    forms = result_forms(problem, nm, masses)
+    directions = {
+        "theta_A2": (nm.A2n, nm.A2t),
+        "theta_B2": (nm.B2n, nm.B2t),
+        "beta_A2": (nm.A2t, nm.A2n),
+        "beta_B2": (nm.B2t, nm.B2n),
+    }
+    name = rel.lhs.name if isinstance(rel.lhs, sympy.Symbol) else None
+    if name in directions and not rel.rhs.free_symbols:  # theta_A2 = 30°: v_A2n cos 30° = v_A2t sin 30°
+        y, x = directions[name]
+        angle = rel.rhs * sympy.pi / 180
+        return sympy.Eq(y * sympy.cos(angle), x * sympy.sin(angle), evaluate=False), (y, x, angle)
+    return sympy.Eq(rel.lhs.xreplace(forms), rel.rhs.xreplace(forms), evaluate=False), None
+
+
+def result_forms(problem: Problem, nm: Names, masses: tuple[sympy.Expr, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+    """Each result a condition may name, in the component symbols (T_2 = 1/2 m_A v_A2^2 + ...)."""
+    m_A, m_B = masses
+    half = sympy.Rational(1, 2)
+    zero = sympy.Integer(0)
+    t = {k: (getattr(nm, k) if problem.oblique else zero) for k in ("A1t", "A2t", "B1t", "B2t")}
+    b = zero if problem.fixed_B else m_B
+    T1 = half * m_A * (nm.A1n**2 + t["A1t"] ** 2) + half * b * (nm.B1n**2 + t["B1t"] ** 2)
+    T2 = half * m_A * (nm.A2n**2 + t["A2t"] ** 2) + half * b * (nm.B2n**2 + t["B2t"] ** 2)
+    forms = {symbol("T_1"): T1, symbol("T_2"): T2, symbol("T_lost"): T1 - T2, symbol("J_n"): m_A * (nm.A1n - nm.A2n)}
+    if problem.oblique:
+        for body in "AB":
+            n, tt = getattr(nm, f"{body}2n"), getattr(nm, f"{body}2t")
+            forms[symbol(f"v_{body}2")] = sympy.sqrt(n**2 + tt**2)
+            forms[symbol(f"theta_{body}2")] = sympy.atan2(n, tt)
+            forms[symbol(f"beta_{body}2")] = sympy.atan2(tt, n)
+    return forms
 
 
 def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:

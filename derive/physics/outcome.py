@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from derive.physics.asks import Found, Shown, decide, solve_range
 from derive.physics.impact import Impact, evaluate, setup
 from derive.physics.results import Result, results
 from derive.problem import Motion, Problem
@@ -28,6 +29,8 @@ class ImpactOutcome:
     results: dict[str, Result]
     values: dict[sympy.Symbol, sympy.Expr]
     angles: frozenset[sympy.Symbol]
+    shown: tuple[Shown, ...] = ()
+    ranges: tuple[Found, ...] = ()
 
 
 def xy_motions(imp: Impact) -> list[tuple[Motion, tuple[sympy.Symbol, sympy.Symbol]]]:
@@ -57,5 +60,11 @@ def solve_impact(problem: Problem) -> ImpactOutcome:
             v = evaluate(expr, problem)
             if not v.free_symbols:
                 values[c] = v
-    angles = frozenset(g.symbol for g in problem.givens if g.unit == "deg")
-    return ImpactOutcome(problem, imp, found, values, angles)
+    angles = {g.symbol for g in problem.givens if g.unit == "deg"}
+    for rel in problem.asks.equations:  # a direction given after the impact is a known angle
+        if isinstance(rel.lhs, sympy.Symbol) and rel.lhs.name.startswith(("theta", "beta")) and rel.rhs.is_number:
+            values[rel.lhs] = rel.rhs * sympy.pi / 180
+            angles.add(rel.lhs)
+    shown = tuple(decide(rel, problem, found) for rel in problem.asks.show)
+    ranges = tuple(solve_range(rng, problem, found) for rng in problem.asks.ranges)
+    return ImpactOutcome(problem, imp, found, values, frozenset(angles), shown, ranges)

@@ -127,6 +127,9 @@ def results(imp: Impact) -> dict[str, Result]:
     add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
     J = -m_A * (full(nm.A2n) - full(nm.A1n))
     add("J_n", sympy.factor_terms(J), working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
+    for d in p.asks.defined:  # quantities the file defines from the results (F_avg = J_n/dt)
+        closed = d.expr.xreplace({r.symbol: r.closed for r in out.values()})
+        add(d.name, closed, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
     return out
 
 

@@ -18,6 +18,7 @@ from derive.errors import ExpressionError, InputError, PhysicsError, UnitError
 from derive.problem import units
 from derive.problem.expr import NAME_RE, ParseError, parse
 from derive.problem.source import Source, text_field, type_name
+from derive.problem.symbolic import Asks, Relation, read_asks
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
 
@@ -34,7 +35,12 @@ TOP_FIELDS = (
     "given",
     "geometry",
     "answer_units",
+    "answers",
     "assume",
+    "define",
+    "equations",
+    "range",
+    "show",
     "vary",
     "conditions",
     "A",
@@ -92,7 +98,7 @@ RESULT_NAMES = (
 )
 #: Names a file may not give: the results derive computes (the velocities after
 #: the impact may be given, in an inverse problem).
-COMPUTED = {"theta_A2", "theta_B2", "beta_A2", "beta_B2", "T_1", "T_2", "T_lost", "J_n"}
+COMPUTED = {"T_1", "T_2", "T_lost", "J_n"}
 #: Velocities after the impact, by kind: given in an inverse problem, else unknown.
 POST = {"direct": ("v_A2", "v_B2"), "oblique": ("v_A2t", "v_A2n", "v_B2t", "v_B2n")}
 
@@ -182,6 +188,7 @@ class Problem:
     conditions: tuple[Condition, ...] = ()
     extra: Mapping[str, Any] = field(default_factory=dict)
     assume: Mapping[str, str] = field(default_factory=dict)
+    asks: Asks = field(default_factory=Asks)
 
     @property
     def oblique(self) -> bool:
@@ -239,6 +246,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     if system is None:
         system = infer_system(given_tbl)
     assume = read_assume(data.get("assume"), given_tbl, ctx)
+    after = {k: v for k, v in given_tbl.items() if k in AFTER}
+    given_tbl = {k: v for k, v in given_tbl.items() if k not in AFTER}
     givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     b_tbl = data.get("B")
@@ -347,7 +356,17 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             by_name[extra.name] = extra
         motions.append(motion)
 
-    find = _find(data.get("find"), ctx, oblique, tuple(g.name for g in givens if g.unknown))
+    asks = read_asks(
+        data,
+        {g.name: (g.symbol, g.dim) for g in givens},
+        RESULT_DIMS,
+        {g.name for g in givens if g.value is None and not g.unknown},
+        system,
+        ctx,
+    )
+    asks = replace(asks, equations=asks.equations + _known_after(after, by_name, ctx, oblique, system))
+    extra = tuple(d.name for d in asks.defined) + (("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ())
+    find = _find(data.get("find"), ctx, oblique, tuple(g.name for g in givens if g.unknown), extra)
     problem = Problem(
         path=ctx.path,
         title=title,
@@ -369,6 +388,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
         vary=_vary(data.get("vary"), by_name, ctx, oblique, system),
         conditions=_conditions(data.get("conditions"), by_name, ctx),
         assume=assume,
+        asks=asks,
     )
     _check_approach(problem, ctx)
     return problem
@@ -465,6 +485,26 @@ def read_assume(raw: Any, given_tbl: Mapping[str, Any], ctx: Source) -> dict[str
         if word not in ASSUMPTIONS:
             raise ctx.error(f"expected one of: {', '.join(ASSUMPTIONS)}", section="assume", key=name, value=word)
     return dict(raw)
+
+
+#: Results after the impact a file may give as knowns (each becomes an equation).
+AFTER = ("theta_A2", "theta_B2", "beta_A2", "beta_B2")
+
+
+def _known_after(
+    after: Mapping[str, Any], by_name: Mapping[str, Given], ctx: Source, oblique: bool, system: str
+) -> tuple[Relation, ...]:
+    """A direction after the impact given as a known: ``theta_A2 = "30 deg"`` is the
+    equation theta_A2 = 30°, which fixes one more unknown."""
+    out = []
+    for name, raw in after.items():
+        if not oblique:
+            raise ctx.error('a direction after the impact needs kind = "oblique"', section="given", key=name)
+        g = _given(name, raw, by_name, ctx, oblique, system)
+        if g.dim != ANGLE or g.value is None:
+            raise ctx.error('expected an angle such as "30 deg"', section="given", key=name, value=raw)
+        out.append(Relation(f"{name} = {raw}", symbol(name), g.value * 180 / sympy.pi))
+    return tuple(out)
 
 
 def _alias(g: Given) -> Given:
@@ -965,7 +1005,11 @@ def _answer_units(raw: Any, ctx: Source) -> dict[str, str]:
     return out
 
 
-def _find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -> tuple[str, ...]:
+def _find(
+    raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = (), extra: tuple[str, ...] = ()
+) -> tuple[str, ...]:
+    """The results asked for: by default the unknowns, else the velocities; ``extra``
+    names more that may be asked (quantities defined from the results, x-y components)."""
     default = unknown or ("v_A2", "v_B2")
     if raw is None:
         return default
@@ -973,7 +1017,7 @@ def _find(raw: Any, ctx: Source, oblique: bool, unknown: tuple[str, ...] = ()) -
         raw = [raw]
     if not isinstance(raw, list) or not raw or not all(isinstance(x, str) for x in raw):
         raise ctx.error("expected a list of result names", key="find", value=raw)
-    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown)
+    allowed = (RESULT_NAMES if oblique else ("v_A2", "v_B2", "T_1", "T_2", "T_lost")) + ("J_n", *unknown, *extra)
     for x in raw:
         if x not in allowed:
             raise ctx.error(f"unknown result {x!r} (expected some of: {', '.join(allowed)})", key="find", value=raw)

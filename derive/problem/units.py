@@ -1,6 +1,6 @@
 """Units: parse "number unit" text and convert it to a problem's working units.
 
-Scale factors come from :mod:`sympy.physics.units`, exactly (1 ft = 381/1250 m),
+Scale factors are exact by definition (1 ft = 381/1250 m, 1 lb = 0.45359237 kg),
 so a given converts without rounding. A dimension is the exponent tuple
 (mass, length, time, angle); angles are kept apart so that "deg" is not
 mistaken for a pure number.
@@ -12,7 +12,6 @@ import re
 from dataclasses import dataclass
 
 import sympy
-import sympy.physics.units as u
 
 Dim = tuple[int, int, int, int]
 
@@ -43,31 +42,31 @@ DIM_NAMES: dict[Dim, str] = {
 }
 
 
-def _si(q: sympy.Expr, base: sympy.Expr) -> sympy.Expr:
-    """Exact factor that turns one ``q`` into ``base`` SI units."""
-    return sympy.nsimplify(u.convert_to(q, base) / base)
-
-
+#: Exact by definition (the international yard and pound, 1959): no unit system is
+#: built at import time (tests/test_units.py checks them against sympy.physics.units).
 _G = sympy.Rational(980665, 100000)  # standard gravity, m/s^2
-_LB = _si(u.pound, u.kilogram)  # pound mass in kg
-_FT = _si(u.foot, u.meter)
+_LB = sympy.Rational(45359237, 100000000)  # pound mass in kg
+_FT = sympy.Rational(3048, 10000)  # foot in m
+_IN = _FT / 12
+_MI = 5280 * _FT
 
 #: name -> (factor to SI, dimension). Angles: factor to radians.
 BASE_UNITS: dict[str, tuple[sympy.Expr, Dim]] = {
     "m": (sympy.Integer(1), LENGTH),
-    "mm": (_si(u.millimeter, u.meter), LENGTH),
-    "cm": (_si(u.centimeter, u.meter), LENGTH),
-    "km": (_si(u.kilometer, u.meter), LENGTH),
-    "in": (_si(u.inch, u.meter), LENGTH),
+    "mm": (sympy.Rational(1, 1000), LENGTH),
+    "cm": (sympy.Rational(1, 100), LENGTH),
+    "km": (sympy.Integer(1000), LENGTH),
+    "in": (_IN, LENGTH),
     "ft": (_FT, LENGTH),
-    "mi": (_si(u.mile, u.meter), LENGTH),
+    "mi": (_MI, LENGTH),
     "kg": (sympy.Integer(1), MASS),
-    "g": (_si(u.gram, u.kilogram), MASS),
+    "g": (sympy.Rational(1, 1000), MASS),
+    "lbm": (_LB, MASS),  # pound-mass
     "Mg": (sympy.Integer(1000), MASS),  # megagram (tonne)
     "slug": (_LB * _G / _FT, MASS),  # 1 lbf·s²/ft
     "s": (sympy.Integer(1), TIME),
-    "min": (_si(u.minute, u.second), TIME),
-    "h": (_si(u.hour, u.second), TIME),
+    "min": (sympy.Integer(60), TIME),
+    "h": (sympy.Integer(3600), TIME),
     "N": (sympy.Integer(1), FORCE),
     "kN": (sympy.Integer(1000), FORCE),
     "lb": (_LB * _G, FORCE),  # a pound is a weight (pound-force)
@@ -121,7 +120,7 @@ SYSTEMS: dict[str, dict[Dim, str]] = {
 }
 
 _SI_NAMES = {"m", "mm", "cm", "km", "kg", "g", "Mg", "N", "kN", "J", "kJ"}
-_US_NAMES = {"in", "ft", "mi", "slug", "lb", "lbf"}
+_US_NAMES = {"in", "ft", "mi", "slug", "lb", "lbf", "lbm"}
 
 _TOKEN = re.compile(r"\s*(?:([A-Za-z°]+)|(\*|/|·|\^)|(-?\d+))")
 

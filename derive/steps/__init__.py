@@ -26,4 +26,7 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     from derive.steps.impact import write_impact
 
     outcome = solve_impact(problem)
-    return Solution(problem, outcome.results, write_impact(outcome), outcome.values, outcome.angles)
+    stages = write_impact(outcome)
+    return Solution(
+        problem, outcome.results, stages, outcome.values, outcome.angles, shown=outcome.shown, ranges=outcome.ranges
+    )

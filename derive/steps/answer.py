@@ -9,11 +9,12 @@ from dataclasses import replace
 import sympy
 
 from derive.errors import SolveError
-from derive.numbers import tidy
+from derive.numbers import exactify, format_number, tidy
+from derive.physics.asks import Found, Shown
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.model import Block, Eqn, Math, Side, Text
-from derive.steps.page import Page, as_float, nonzero, show
+from derive.steps.page import Page, as_float, interval_text, nonzero, show
 from derive.symbols import symbol, vector
 
 
@@ -31,8 +32,43 @@ def answer(page: Page) -> list[Block]:
         _marked(page, _xy(page), asks_velocities),
         _closed_forms(page),
         _marked(page, _asked(page), True),
+        *(shown(page, s) for s in page.outcome.shown),
+        *(ranged(page, f) for f in page.outcome.ranges),
     ]
     return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def shown(page: Page, s: Shown) -> Block:
+    """A "show that" result: the closed form found, and whether it is the one to show."""
+    rel = s.relation
+    text: Text = ("Show that ", Math(sympy.Eq(rel.lhs, rel.rhs, evaluate=False)), ":")
+    line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds, mark=s.holds)
+    if s.holds:
+        how = "" if s.how == "exactly" else f" (the two sides agree {s.how} of the letters' ranges)"
+        return Block((*text, f" from the results above it follows, as required{how}."), (line,))
+    point = s.counterexample or {}
+    values = ", ".join(f"{k.name} = {format_number(v, 3)}" for k, v in point.items())
+    sides = [s.lhs, s.rhs]
+    left, right = (format_number(x.xreplace({k: sympy.Float(v) for k, v in point.items()}).evalf(), 3) for x in sides)
+    text = (
+        *text,
+        f" it does not follow. The results above give the left side; at {values} it is {left}, the right side {right}.",
+    )
+    return Block(text, (Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"))),))
+
+
+def ranged(page: Page, f: Found) -> Block:
+    """The values of a letter for which an inequality between results holds."""
+    rng, x = f.range, f.range.of
+    op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
+    rel = op[rng.op]
+    text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ", Math(rel(exactify(f.expr), 0)))
+    if f.dropped:
+        text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
+        text += (Math(rel(exactify(f.reduced), 0)),)
+    if f.interval is None:
+        return Block((*text, "; this depends on the other letters and is not worked out here."))
+    return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
 
 
 def as_number(x: sympy.Expr) -> sympy.Expr:
@@ -165,6 +201,9 @@ def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _angle_line(page, r, t, n, page.value_of(t), page.value_of(n), boxed)
     if r.name == "J_n":
         return _impulse_line(page, r, boxed)
+    defined = {d.name: d for d in page.p.asks.defined}
+    if r.name in defined:  # F_avg = J_n/dt = ...
+        return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
     return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
 
 

@@ -9,7 +9,7 @@ from collections.abc import Callable
 import sympy
 
 from derive.errors import InputError
-from derive.numbers import floatify
+from derive.numbers import exactify
 from derive.physics.chain import ChainOutcome
 from derive.physics.stages.again import Again
 from derive.physics.stages.algebra import Condition, Definition
@@ -20,7 +20,7 @@ from derive.physics.state import StageOutcome
 from derive.problem import units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
-from derive.steps.page import Tags, as_float
+from derive.steps.page import Tags, as_float, interval_text
 from derive.symbols import symbol
 
 
@@ -129,7 +129,7 @@ def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     carried = []
     for (new, rname), value in zip(data.exports, data.carried, strict=True):
         r = outcome.results[new]
-        shown = _in_unit(value, r.unit)
+        shown = _in_unit(sympy.factor(value) if value.free_symbols else value, r.unit)
         carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((shown,), "result")), unit=r.unit or None))
     return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
 
@@ -223,14 +223,14 @@ def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     if a.verdict is not None:
         blocks.append(Block(("Yes: they collide again." if a.verdict else "No: they do not collide again.",)))
     if a.param is not None:
-        general = floatify(a.general, keep_integers=False)
+        general = exactify(a.general)
         words: Text = (
             "For other values of ",
             Math(a.param),
             ": they collide again when ",
-            Math(sympy.StrictGreaterThan(general, 0)),
+            Math(sympy.StrictGreaterThan(general, 0, evaluate=False)),
             ", that is for ",
-            Math(_float_interval(a.interval)),
+            *interval_text(a.interval, a.param),
             ".",
         )
         blocks.append(Block(words))
@@ -240,13 +240,6 @@ def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
 def _in_unit(value: sympy.Expr, unit: str) -> sympy.Expr:
     """A value as its unit shows it: an angle, held in radians, in degrees."""
     return value * 180 / sympy.pi if unit == "deg" else value
-
-
-def _float_interval(rng: sympy.Set) -> sympy.Set:
-    """An interval with its ends as decimals, for printing."""
-    if isinstance(rng, sympy.Interval):
-        return sympy.Interval(sympy.Float(rng.start, 4), sympy.Float(rng.end, 4), rng.left_open, rng.right_open)
-    return rng
 
 
 #: Stage type -> the function that writes a stage of that type.

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sympy
 
+from derive.numbers import as_written, tidy
 from derive.physics.impact import root_rule
 from derive.steps.kinetics import Kinetics
 from derive.steps.model import Block, Eqn, Math, Side, Text
@@ -156,6 +157,8 @@ def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.E
     """``expr`` with every known quantity's number in its place, structure kept."""
     vals = {**page.numeric, **known}
     if isinstance(expr, sympy.Symbol):
+        if expr in page.outcome.angles and expr in vals:  # an angle as the page shows angles: 30°
+            return sympy.Symbol(as_written(tidy(vals[expr] * 180 / sympy.pi)) + r"^\circ")
         return as_float(vals[expr]) if expr in vals else expr
     if expr.is_Atom:
         return expr

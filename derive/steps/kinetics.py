@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 import sympy
 
+from derive.numbers import as_written, tidy
 from derive.physics.algebra import collect, common_factor
 from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.steps.page import Page, nonzero
@@ -23,6 +24,13 @@ SMOOTH = (
 INTERNAL = (
     "Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it."
 )
+#: A direction after the impact, by name: the components (y, x) whose ratio is its tangent.
+DIRECTIONS = {
+    "theta_A2": ("A2n", "A2t"),
+    "theta_B2": ("B2n", "B2t"),
+    "beta_A2": ("A2t", "A2n"),
+    "beta_B2": ("B2t", "B2n"),
+}
 IMPACT_RULE = (
     "Impact rule: the coefficient of restitution relates the normal components only, separation over approach."
 )
@@ -83,7 +91,29 @@ def kinetics(page: Page) -> Kinetics:
         blocks.append(block)
     block, eq4, open_[4] = restitution(page)
     blocks.append(block)
+    for k, eq in page.imp.equations.items():
+        if k >= 5:
+            block, open_[k] = condition(page, k, eq)
+            blocks.append(block)
     return Kinetics(tuple(blocks), eq3, eq4, open_, frozenset(shown))
+
+
+def condition(page: Page, k: int, eq: sympy.Eq) -> tuple[Block, sympy.Expr]:
+    """A condition of the problem beyond (1)-(4), as one more equation (5), (6), ..."""
+    rel = page.p.asks.equations[k - 5]
+    rhs = rel.rhs
+    lhs, rhs_ = page.givens(eq.lhs), page.givens(eq.rhs)
+    direction = DIRECTIONS.get(rel.lhs.name) if isinstance(rel.lhs, sympy.Symbol) else None
+    if direction is not None and rhs.is_number:  # theta_A2 = 30°: v_A2n cos theta_A2 = v_A2t sin theta_A2
+        rhs = sympy.Symbol(as_written(tidy(rhs)) + r"^\circ")
+        y, x = (getattr(page.nm, c) for c in direction)
+        lhs, rhs_ = y * sympy.cos(rel.lhs), x * sympy.sin(rel.lhs)
+    text: Text = ("The problem gives ", Math(sympy.Eq(rel.lhs, rhs, evaluate=False)), ": one more equation.")
+    lines = [Eqn((Side((lhs,)), Side((rhs_,))))]
+    if page.has_values(lhs) or page.has_values(rhs_):
+        lines.append(Eqn((Side((lhs,), "values"), Side((rhs_,), "values"))))
+    lines[-1] = Eqn(lines[-1].sides, tag=page.tags(k))
+    return Block(text, tuple(lines)), page.num(lhs - rhs_)
 
 
 def t_momentum(

@@ -8,7 +8,7 @@ mathematics stays SymPy until a renderer prints it.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import sympy
 
@@ -114,7 +114,8 @@ class Solution:
 
     ``values`` maps each symbol with a number to its exact value, for substitution
     lines; ``angles`` are the symbols held in radians and shown in degrees;
-    ``answers`` closes a chain.
+    ``answers`` closes a chain; ``shown`` and ``ranges`` are the problem's "show that"
+    results and ranges as the physics decided them.
     """
 
     problem: Problem | ChainProblem
@@ -123,6 +124,8 @@ class Solution:
     values: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
     answers: tuple[Answer, ...] = ()
+    shown: tuple[Any, ...] = ()
+    ranges: tuple[Any, ...] = ()
 
     @property
     def is_chain(self) -> bool:

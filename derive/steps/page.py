@@ -14,6 +14,7 @@ from derive.numbers import short_decimal
 from derive.physics.impact import equation_numbers, evaluate
 from derive.physics.outcome import ImpactOutcome, xy_motions
 from derive.physics.results import working_unit
+from derive.steps.model import Math, Text
 from derive.symbols import symbol
 
 
@@ -110,7 +111,8 @@ class Page:
 
     def has_values(self, expr: sympy.Expr) -> bool:
         """True when a substitution line has numbers to put into ``expr``."""
-        return bool(expr.free_symbols & (set(self.numeric) | self._xy_components() | self.varied))
+        known = set(self.numeric) | set(self.outcome.values) | self._xy_components() | self.varied
+        return bool(expr.free_symbols & known)
 
     def num(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` with the pre-impact components and every numeric given put in; where a
@@ -157,3 +159,18 @@ def nonzero(terms: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
     """The terms that are not zero (a single 0 when none is left)."""
     kept = tuple(t for t in terms if t != 0)
     return kept or (sympy.Integer(0),)
+
+
+def interval_text(interval: sympy.Set, x: sympy.Symbol) -> Text:
+    """``1/2 < e ≤ 1`` as words and inline mathematics."""
+    if interval is sympy.S.EmptySet:
+        return ("no value of ", Math(x), " at all")
+    if not isinstance(interval, sympy.Interval):
+        return (Math(interval),)
+    lo, hi = interval.start, interval.end
+    parts: list[sympy.Expr] = []
+    if lo != -sympy.oo:
+        parts.append((sympy.StrictLessThan if interval.left_open else sympy.LessThan)(lo, x))
+    if hi != sympy.oo:
+        parts.append((sympy.StrictLessThan if interval.right_open else sympy.LessThan)(x, hi))
+    return tuple(p for i, r in enumerate(parts) for p in (((" and ",) if i else ()) + (Math(r),)))

@@ -146,6 +146,14 @@ def _factor_key(a: sympy.Expr) -> int:
     return 3
 
 
+def _factors(expr: sympy.Expr):
+    for a in expr.args:
+        if isinstance(a, sympy.Mul):
+            yield from _factors(a)
+        else:
+            yield a
+
+
 class StepPrinter(LatexPrinter):
     """SymPy's LaTeX printer with the notes' conventions (see module docstring)."""
 
@@ -230,7 +238,7 @@ class StepPrinter(LatexPrinter):
         return not (self._fractions and r.q <= 12 and r.q % 5 != 0)
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
-        if self._decimal_rationals and not self._round_integers and short_decimal(expr):
+        if self._decimal_rationals and not self._round_integers and self._as_decimal(expr):
             return power_latex(as_written(expr))
         return super()._print_Rational(expr)
 
@@ -280,6 +288,12 @@ class StepPrinter(LatexPrinter):
         """A product as the notes write it: numbers, masses, other symbols, functions;
         ``\\cdot`` between two numbers; negative powers as a fraction."""
         if is_negative_term(expr):
+            factors = list(_factors(expr))
+            sums = [a for a in factors if isinstance(a, sympy.Add) and a.free_symbols]
+            numbers = [a for a in factors if a.is_Number and a < 0]
+            if len(sums) == 1 and len(numbers) == 1 and self._fractions:  # -u (2e - 1)/3 is u (1 - 2e)/3
+                turned = [-a if a is sums[0] or a is numbers[0] else a for a in factors]
+                return self._print(sympy.Mul(*[a for a in turned if a != 1], evaluate=False))
             inner = negate(expr)
             if inner != expr:
                 s = self._print(inner)
@@ -470,7 +484,12 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
                     continue
         neg = is_negative_term(term)
         body = negate(term) if neg else term
-        s = latex_expr(body, side.mode, style, extra, cancel)
+        if side.mode in ("numeric", "result") and _letters(term, style):
+            s = latex_expr(term, side.mode, style, extra, cancel)  # the printer picks the sign: u (1 - 2e)/3
+            neg, body = s.startswith("-"), term
+            s = s[1:].lstrip() if neg else s
+        else:
+            s = latex_expr(body, side.mode, style, extra, cancel)
         if neg and s.startswith("-"):
             neg, s = False, s[1:].lstrip()
         if isinstance(body, sympy.Add) and len(side.terms) > 1:
@@ -573,7 +592,7 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
         hi = ")" if expr.right_open else "]"
         p = StepPrinter(digits=style.digits)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
+    printer = StepPrinter(digits=style.digits, decimal_rationals=True, fractions=True)
     if isinstance(expr, sympy.Eq):
-        printer = StepPrinter(digits=style.digits, decimal_rationals=True)
         return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
-    return StepPrinter(digits=style.digits, decimal_rationals=True).doprint(expr)
+    return printer.doprint(expr)

@@ -332,6 +332,25 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
         "find": list(p.find),
         "results": results,
         "givens": _givens_json(p.givens),
+        "show": [
+            {
+                "relation": s.relation.text,
+                "holds": s.holds,
+                "decided": s.how,
+                "found": str(s.lhs),
+                "counterexample": {k.name: v for k, v in (s.counterexample or {}).items()} or None,
+            }
+            for s in solution.shown
+        ],
+        "ranges": [
+            {
+                "of": f.range.of.name,
+                "where": f.range.text,
+                "interval": None if f.interval is None else str(f.interval),
+                "latex": None if f.interval is None else printer.doprint(f.interval),
+            }
+            for f in solution.ranges
+        ],
         "stages": [
             {
                 "number": s["number"],

@@ -8,6 +8,7 @@ from dataclasses import dataclass
 
 import sympy
 
+from derive.physics.asks import drop_positive
 from derive.physics.state import ChainState, StageOutcome, resolve
 from derive.problem import Given, units
 from derive.symbols import symbol
@@ -52,6 +53,12 @@ def again(state: ChainState, i: int, st: dict) -> StageOutcome:
         general = resolve(va - vb, defs)
         keep = {g.symbol: g.value for n, g in state.known.items() if g.value is not None and n != param}
         general = sympy.simplify(general.xreplace(keep).xreplace(state.solved))
-        rng = sympy.solve_univariate_inequality(general > 0, p.symbol, relational=False)
+        reduced, _ = drop_positive(sympy.factor(general), p.symbol)  # a speed u > 0 does not change the sign
+        try:
+            rng = sympy.solve_univariate_inequality(reduced > 0, p.symbol, relational=False)
+        except (NotImplementedError, ValueError, TypeError):
+            raise state.err(
+                i, "range_of", "the range depends on other letters and cannot be worked out", param
+            ) from None
         data = Again(va, vb, diff, verdict, p.symbol, general, rng.intersect(sympy.Interval(0, 1)))
     return StageOutcome(i, "again", st.get("title", "Will they collide again?"), data, tuple(outputs))
