@@ -102,18 +102,18 @@ CASES: dict[str, Case] = {
     "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m": direct(2 * m, 3 * m, e, 5 * u),
     "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u": direct(2 * m, m, e, 2 * u, -u),
     "edexcel-m2-2011-june-q2-m-at-4u-hits-3m-show-e-gt-third": direct(
-        m, 3 * m, e, 4 * u, ranges={"reverses": lambda r: r["v_A2"] < 0}
+        m, 3 * m, e, 4 * u, ranges={"v_A2 < 0": lambda r: r["v_A2"] < 0}
     ),
     "edexcel-m2-2015-january-q7-m-at-3u-hits-2m-p-reverses": direct(
-        m, 2 * m, e, 3 * u, ranges={"reverses": lambda r: r["v_A2"] < 0}
+        m, 2 * m, e, 3 * u, ranges={"v_A2 < 0": lambda r: r["v_A2"] < 0}
     ),
     "edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p": direct(m, 2 * m, e, u),
     "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u": direct(
-        m, 7 * m, e, 5 * u, u, ranges={"reverses": lambda r: r["v_A2"] < 0}
+        m, 7 * m, e, 5 * u, u, ranges={"v_A2 < 0": lambda r: r["v_A2"] < 0}
     ),
     "cie-9231-p2-2012-june-q1-3m-hits-6m-show-ke-lost": direct(3 * m, 6 * m, e, u),
     "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses": direct(
-        2 * m, m, e, 4 * u, -3 * u, ranges={"reverses": lambda r: r["v_A2"] < 0}
+        2 * m, m, e, 4 * u, -3 * u, ranges={"v_A2 < 0": lambda r: r["v_A2"] < 0}
     ),
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": direct(5 * m, 2 * m, e, u, -2 * u),
     "cie-9231-p2-2019-june-q3-2m-at-2u-meets-4m-at-u": direct(2 * m, 4 * m, e, 2 * u, -u),
@@ -332,8 +332,14 @@ def test_every_problem_with_answers_is_checked_here() -> None:
 @pytest.mark.parametrize("stem", sorted(PUBLISHED))
 def test_the_file_states_the_published_strings(stem: str) -> None:
     data = _file(stem)
-    expected = {row.name: _compact(row.published) for row in PUBLISHED[stem] if row.in_file}
+    expected = {row.name: _compact(row.published) for row in PUBLISHED[stem] if row.in_answers}
     assert {name: _compact(text) for name, text in data["answers"].items()} == expected
+    ranges = data.get("range", [])
+    ranges = [ranges] if isinstance(ranges, dict) else ranges
+    wanted = [{"of": "e", "where": row.name} for row in PUBLISHED[stem] if row.rule == RANGE]
+    assert [{k: _compact(v) for k, v in r.items()} for r in ranges] == [
+        {k: _compact(v) for k, v in r.items()} for r in wanted
+    ]
     shown = data.get("show", ())
     shown = (shown,) if isinstance(shown, str) else tuple(shown)
     assert tuple(_compact(s) for s in shown) == tuple(_compact(s) for s in SHOWN.get(stem, ()))
