@@ -31,6 +31,7 @@ __all__ = [
     "load",
     "render",
     "solve",
+    "verify",
 ]
 
 
@@ -67,6 +68,16 @@ def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> 
     from derive.checking.answers import check as check_answers
 
     return check_answers(solution, answers, **options)
+
+
+def verify(solution: Solution, fmt: str = "md", **options: Any) -> Any:
+    """Check every line of ``solution``'s page in ``fmt``; returns a :class:`derive.verifier.Report`.
+
+    Imported on first use, so that ``import derive`` stays light (see :mod:`derive.verifier`).
+    """
+    from derive.verifier import verify as check_page
+
+    return check_page(solution, fmt, **options)
 
 
 def __getattr__(name: str) -> Any:

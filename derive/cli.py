@@ -39,6 +39,7 @@ def _parser() -> argparse.ArgumentParser:
         "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
     )
     p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
+    p_solve.add_argument("--verify", action="store_true", help="check every line; print failing lines, exit 1 if any")
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -103,6 +104,12 @@ def _solve(args: argparse.Namespace) -> int:
     else:
         assert isinstance(data, str)
         sys.stdout.write(data)
+    if args.verify:  # the page written, when it is Markdown or LaTeX; else its Markdown
+        page = data if args.format in ("md", "tex") and isinstance(data, str) else None
+        fmt = "tex" if args.format in ("tex", "pdf") else "md"
+        report = derive.verify(solution, fmt, digits=args.digits, text=page)
+        print(report.format(), file=sys.stderr)
+        return 0 if report.ok else 1
     return 0
 
 
@@ -113,7 +120,7 @@ def _list(args: argparse.Namespace) -> int:
     width = max((len(n) for n in found), default=0) + 2
     for name, path in found.items():
         try:
-            title = problem.load(path).title
+            title = problem.title(path)
         except DeriveError as exc:
             title = f"(broken: {exc})"
         print(f"{name:{width}s}{title}")

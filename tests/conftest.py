@@ -2,15 +2,23 @@
 
 from __future__ import annotations
 
+import os
 import textwrap
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import pytest
+from hypothesis import settings
 
 import derive
 from derive.cli import main
 from derive.problem import loads
+
+# In CI the property tests draw the same cases every run (a red CI is then reproducible
+# and not a matter of luck); run locally, they draw new ones each time.
+settings.register_profile("ci", derandomize=True, print_blob=True)
+if os.environ.get("CI"):
+    settings.load_profile("ci")
 
 
 @dataclass
@@ -56,3 +64,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
             parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
             scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
             terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
+        checked = getattr(module, "LINES_CHECKED", None)
+        if checked and str(getattr(module, "__file__", "")).endswith("test_every_line.py"):
+            parts = ", ".join(f"{k} {v}" for k, v in sorted(checked.items()))
+            terminalreporter.write_line(f"verify: {sum(checked.values())} lines checked ({parts})")

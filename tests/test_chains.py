@@ -172,8 +172,8 @@ def test_collide_again_and_the_range_of_e() -> None:
     md = derive.render(solved("chain-aqa-m3-2007-collide-again"), "md")
     assert "Yes: they collide again." in md
     # B returns at 3.4 e_wall; A moves back at 0.6: they meet again when 3.4 e_wall > 0.6
-    m = re.search(r"\\left\(([\d.]+), ([\d.]+)\\right\]", md)
-    assert m and float(m.group(1)) == pytest.approx(0.6 / 3.4, abs=1e-4) and float(m.group(2)) == 1
+    m = re.search(r"\$\\frac\{(\d+)\}\{(\d+)\} < e_\{\\mathrm\{wall\}\}\$ and \$e_\{\\mathrm\{wall\}\} \\leq 1\$", md)
+    assert m and int(m.group(1)) / int(m.group(2)) == pytest.approx(0.6 / 3.4, rel=1e-12)
 
 
 def test_a_stage_error_names_the_stage() -> None:

@@ -236,7 +236,7 @@ def valid_direct(draw: st.DrawFn) -> tuple[dict[str, Any], dict[str, Fraction]]:
     vA_raw, _ = speed_text(vA1, draw)
     vB_raw, _ = speed_text(vB1, draw)
     doc = {
-        "title": draw(st.text(min_size=1, max_size=30)),
+        "title": draw(st.text(st.characters(blacklist_characters="\x00"), min_size=1, max_size=30)),
         "kind": "direct",
         "given": {"m_A": mA_raw, "m_B": mB_raw, "e": e_raw, "v_A1": vA_raw, "v_B1": vB_raw},
     }

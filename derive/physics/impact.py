@@ -156,19 +156,42 @@ def setup(problem: Problem) -> Impact:
     if not inverse:
         # Solved in the component symbols, the system is linear with rational
         # coefficients: fast and exact. The givens go in afterwards.
-        sol = sympy.solve([s.xreplace({k: v for k, v in pre.items() if v == 0}) for s in system], unknowns, dict=True)
-        if len(sol) != 1 or set(sol[0]) != set(unknowns):
-            raise SolveError(
-                "equations (1)-(4) do not determine the velocities after the impact for these givens",
-                where=problem.path,
-            )
-        by_comp = {u: sympy.factor(sol[0][u]) for u in unknowns}
+        forms = general_solution(nm, m_A, m_B, e, problem.fixed_B)
+        zero = {k: v for k, v in pre.items() if v == 0}
+        by_comp = {u: sympy.factor(forms[u].xreplace(ind).xreplace(zero)) for u in unknowns}
         closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
         return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
     full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
     by_comp = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
     return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True)
+
+
+def general_solution(
+    nm: Names, m_A: sympy.Expr, m_B: sympy.Expr, e: sympy.Expr, fixed_B: bool
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """Equations (1)-(4) solved once for all, in the component symbols:
+
+        v_A2t = v_A1t,  v_B2t = v_B1t,
+        v_A2n = (m_A v_A1n + m_B v_B1n - e m_B (v_A1n - v_B1n)) / (m_A + m_B),
+        v_B2n = (m_A v_A1n + m_B v_B1n + e m_A (v_A1n - v_B1n)) / (m_A + m_B);
+
+    against a fixed B (infinite mass, at rest), v_A2n = -e v_A1n. A problem puts its
+    numbers in; nothing is solved again (tests/test_physics.py checks these forms
+    against (1)-(4))."""
+    if fixed_B:
+        forms = {nm.A2n: -e * nm.A1n}
+    else:
+        momentum = m_A * nm.A1n + m_B * nm.B1n
+        approach = nm.A1n - nm.B1n
+        forms = {
+            nm.A2n: (momentum - e * m_B * approach) / (m_A + m_B),
+            nm.B2n: (momentum + e * m_A * approach) / (m_A + m_B),
+        }
+    if nm.A2t is not None:
+        forms[nm.A2t] = nm.A1t
+        forms[nm.B2t] = nm.B1t
+    return forms
 
 
 def _check_count(problem: Problem, nums: tuple[int, ...], unknowns: tuple[sympy.Symbol, ...]) -> None:

@@ -7,11 +7,34 @@ the line where it can be found, the field and what was expected.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from derive.errors import InputError
-from derive.problem.chain import ChainProblem
-from derive.problem.reader import Condition, Given, Motion, Problem, build_problem
 from derive.problem.source import Source, parse_toml
+
+if TYPE_CHECKING:
+    from derive.problem.chain import ChainProblem
+    from derive.problem.reader import Condition, Given, Motion, Problem, build_problem
+
+#: Names this package gives, and the module each lives in (imported on first use, so
+#: that reading a title needs no SymPy).
+_LAZY = {
+    "ChainProblem": "chain",
+    "Condition": "reader",
+    "Given": "reader",
+    "Motion": "reader",
+    "Problem": "reader",
+    "build_problem": "reader",
+}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(f"derive.problem.{_LAZY[name]}"), name)
+    raise AttributeError(f"module 'derive.problem' has no attribute {name!r}")
+
 
 __all__ = [
     "ChainProblem",
@@ -59,9 +82,22 @@ def find(path: str | Path) -> Path:
 def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem | ChainProblem:
     """Check a problem given as TOML text (``path`` only names it in messages)."""
     from derive.problem.chain import build_chain
+    from derive.problem.reader import build_problem
 
     source = Source(path, text)
     data = parse_toml(text, path)
     if isinstance(data, dict) and data.get("kind") == "chain":
         return build_chain(data, source, name)
     return build_problem(data, source, name)
+
+
+def title(path: str | Path) -> str:
+    """A problem file's title, read without checking the rest (for ``derive list``)."""
+    from derive.fileio import read_user_text
+
+    path = Path(path)
+    data = parse_toml(read_user_text(path, "a problem file"), str(path))
+    value = data.get("title")
+    if not isinstance(value, str):
+        raise InputError("expected a title (a line of text)", where=str(path), field="title")
+    return value

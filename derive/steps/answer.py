@@ -156,7 +156,11 @@ def _asked(page: Page) -> Block | None:
         r = page.results.get(name)
         if r is None:
             raise SolveError(f"answer_units names {name!r}, which is not a result of this problem", where=p.path)
-        extra.append(Eqn((Side((r.symbol,)), Side((convert(r, unit),), "result")), unit=unit, boxed=True))
+        try:
+            value = convert(r, unit)
+        except SolveError as exc:
+            raise SolveError(str(exc), where=p.path) from None
+        extra.append(Eqn((Side((r.symbol,)), Side((value,), "result")), unit=unit, boxed=True))
     if not extra:
         return None
     text: Text = ("As asked:",)

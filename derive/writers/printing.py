@@ -231,11 +231,12 @@ class StepPrinter(LatexPrinter):
         return number_latex(expr, self._digits, self._extra)
 
     def _as_decimal(self, r: sympy.Rational) -> bool:
-        """Whether a short decimal prints as one: beside letters, halves, thirds and
-        quarters stay fractions (m u²/2), fifths and tenths are decimals (0.6 u)."""
+        """Whether a short decimal prints as one: beside letters, a half or three quarters
+        stays a fraction (m u²/2), fifths and tenths and larger numbers are decimals
+        (0.6 u, 62.5 e²)."""
         if not short_decimal(r):
             return False
-        return not (self._fractions and r.q <= 12 and r.q % 5 != 0)
+        return not (self._fractions and abs(r.p) <= 3 and r.q <= 12 and r.q % 5 != 0)
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
         if self._decimal_rationals and not self._round_integers and self._as_decimal(expr):

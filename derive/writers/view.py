@@ -378,7 +378,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         sol.values,
         sol.angles,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
-        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
     )
     stages = []
     for st in sol.stages:

@@ -1,0 +1,50 @@
+"""An independent check that every line of a worked solution is true.
+
+It reads the page as a reader does (the rendered Markdown or LaTeX, not the
+objects that produced it), parses each displayed relation with a reader of its
+own (:mod:`.latex`), and checks it against facts about the problem (:mod:`.facts`,
+the only part that touches derive's objects): each ``=`` holds to the precision
+shown, the givens are the right ones, equation references exist and do what
+they say, sums add up, numbers have the figures the rule allows, units match.
+
+>>> import derive  # doctest: +SKIP
+>>> report = derive.verify(derive.solve(derive.load("notes-4c11-two-spheres")))  # doctest: +SKIP
+>>> report.ok  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from derive.verifier.facts import Facts, facts_of
+from derive.verifier.judge import Judge
+from derive.verifier.reader import read
+from derive.verifier.report import Failure, Report
+from derive.verifier.rules import RULES
+
+__all__ = ["Failure", "Report", "verify", "verify_text"]
+
+
+def verify_text(text: str, facts: Facts, fmt: str = "md") -> Report:
+    """Check the page ``text`` (Markdown, or LaTeX for 'tex'/'tex-fragment') against ``facts``."""
+    judge = Judge(facts, read(text, fmt))
+    report = Report(lines=len(judge.claims))
+    report.failures += [Failure(0, "", "physics", note) for note in facts.notes]
+    for check in RULES.values():
+        report.failures += list(check(judge))
+    report.failures.sort(key=lambda f: (f.line, f.rule))
+    report.relations = sum(len(c.relations) for c in judge.claims)
+    report.unchecked = sorted(judge.unresolved)
+    return report
+
+
+def verify(solution: Any, fmt: str = "md", *, digits: int | None = None, text: str | None = None) -> Report:
+    """Render ``solution`` in ``fmt`` ('md' or 'tex') and check every line of it.
+
+    ``text`` checks a page already rendered (a homework variant's) instead.
+    """
+    if text is None:
+        from derive.writers.view import render
+
+        text = render(solution, fmt, digits=digits, figures=False)
+    return verify_text(text, facts_of(solution, digits), fmt)

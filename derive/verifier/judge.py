@@ -1,0 +1,274 @@
+"""What every rule needs: the page's claims read and placed, and their values under the facts.
+
+A :class:`Judge` holds the claims of one page (each line read into relations),
+the facts of each part of the page, and answers the questions the rules ask:
+what is this side worth here, how much rounding may its numbers hide, which
+numbers are data (exact), what is the figures rule.
+"""
+
+from __future__ import annotations
+
+import copy
+from collections.abc import Iterator
+from dataclasses import dataclass
+from decimal import Decimal
+from fractions import Fraction
+
+from derive.verifier import units
+from derive.verifier.evaluate import CTX, ZERO, Env, Undefined, Unresolved, measure, mpf, walk
+from derive.verifier.facts import Facts, Scope
+from derive.verifier.latex import parse_display, parse_inline
+from derive.verifier.reader import Line
+from derive.verifier.tokens import LatexError
+from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Vec
+
+TOLERANCE = CTX.mpf(10) ** -20
+TINY = CTX.mpf(10) ** -300
+
+
+def tolerance(*values: Value) -> object:
+    """What exact arithmetic at 40 digits may leave over: relative to the sizes involved."""
+    return TOLERANCE * max([TINY, *(max(abs(v.center), v.scale) for v in values)])
+
+
+@dataclass(frozen=True)
+class Claim:
+    """A line of the page, read: a display, or one relation (a given, a carried value)."""
+
+    line: Line
+    display: Display | None
+    error: str | None = None
+
+    @property
+    def relations(self) -> tuple[Relation, ...]:
+        return self.display.relations if self.display is not None else ()
+
+
+def read_claim(line: Line) -> Claim:
+    """Parse one line; a line the reader cannot read keeps the reason."""
+    try:
+        if line.kind == "display":
+            return Claim(line, parse_display(line.latex))
+        return Claim(line, Display(relations=(parse_inline(line.latex),), body=line.latex))
+    except (LatexError, IndexError) as exc:
+        return Claim(line, None, str(exc))
+
+
+@dataclass(frozen=True)
+class Value:
+    """A side's value in working units (radians for angles), the rounding it may hide, its unit's dimension."""
+
+    center: object
+    radius: object
+    unit_dim: units.Dim | None = None
+    scale: object = ZERO
+
+
+class Judge:
+    """The claims of a page under its facts."""
+
+    def __init__(self, facts: Facts, lines: list[Line]) -> None:
+        self.facts = facts
+        self.claims = [read_claim(line) for line in lines]
+        self.unresolved: set[tuple[int, str]] = set()
+
+    def solved_view(self) -> Judge | None:
+        """The same claims with a chain's unknowns solved everywhere (None when nothing changes)."""
+        if not self.facts.solved:
+            return None
+        other = copy.copy(self)
+        f = self.facts
+        other.facts = Facts({**f.scopes, **f.solved}, f.digits, f.chain, f.notes)
+        other.unresolved = set()
+        return other
+
+    # scopes ----------------------------------------------------------------
+    def scope(self, key: str) -> Scope:
+        if key in self.facts.scopes:
+            return self.facts.scopes[key]
+        return next(iter(self.facts.scopes.values()))
+
+    def chain_of(self, key: str) -> list[Scope]:
+        """The scope and its parents, nearest first."""
+        out, seen = [], set()
+        scope: Scope | None = self.scope(key)
+        while scope is not None and scope.key not in seen:
+            out.append(scope)
+            seen.add(scope.key)
+            scope = self.facts.scopes.get(scope.parent) if scope.parent else None
+        return out
+
+    def side_scopes(self, claim: Claim, index: int) -> list[Scope]:
+        """Where a side's names are looked up: a stage's Given line names the stage's
+        given on the left and the chain's names on the right; a carried value the reverse."""
+        scopes = self.chain_of(claim.line.scope)
+        if len(scopes) > 1 and (
+            (claim.line.kind == "given" and index > 0) or (claim.line.kind == "carried" and index == 0)
+        ):
+            return scopes[1:] + scopes[:1]
+        return scopes
+
+    def quantity(self, name: str, scopes: list[Scope]):
+        for s in scopes:
+            q = s.quantities.get(name)
+            if q is not None:
+                return q
+        return None
+
+    def env(self, scopes: list[Scope], axis: str | None = None, overrides: dict | None = None) -> Env:
+        over = overrides or {}
+
+        def scalar(name: str) -> object | None:
+            if name in over:
+                return over[name]
+            q = self.quantity(name, scopes)
+            return None if q is None else q.value
+
+        def vector(name: str, ax: str) -> object | None:
+            for s in scopes:
+                comps = s.vectors.get(name)
+                if comps is not None:
+                    return comps.get(ax)
+            return None
+
+        return Env(scalar, vector, axis)
+
+    # numbers -----------------------------------------------------------------
+    def rule_figures(self, value: Decimal) -> int:
+        """Figures a value is shown with: the problem's digits, else 3 (4 when the leading digit is 1)."""
+        if self.facts.digits is not None:
+            return self.facts.digits
+        if value == 0:
+            return 3
+        lead = abs(value).scaleb(-abs(value).adjusted())
+        return 4 if int(lead) == 1 else 3
+
+    def is_exact(self, num: Num, scopes: list[Scope], result: bool = False) -> bool:
+        """A number a reader takes as exact: a small whole number, or a given written as
+        the Given list writes it (0.15, not 0.150; a result is never one)."""
+        if num.value == 0 and num.integer:
+            return True
+        if num.integer and len(num.mantissa) < self.rule_figures(num.value):
+            return True
+        canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
+        if result or not canonical:
+            return False
+        v = num.value.normalize()
+        return any(v in s.exact for s in scopes)
+
+    def halfwidth(self, num: Num, scopes: list[Scope], result: bool = False) -> object:
+        """Half a unit in the last figure shown; 0 for an exact number. A whole number
+        ending in zeros may hide rounding up to its zeros (12300 for 12345)."""
+        if self.is_exact(num, scopes, result):
+            return ZERO
+        if not num.integer:
+            return mpf(num.ulp) / 2
+        digits = num.mantissa.lstrip("-")
+        zeros = len(digits) - len(digits.rstrip("0"))
+        room = len(digits) - self.rule_figures(num.value)
+        return CTX.mpf(10) ** max(0, min(zeros, room)) / 2
+
+    # values ---------------------------------------------------------------
+    def value(
+        self,
+        side: Side,
+        scopes: list[Scope],
+        axis: str | None = None,
+        overrides: dict | None = None,
+        result: bool = False,
+    ) -> Value:
+        """A side's value and radius, its unit applied; raises Unresolved or Undefined.
+        ``result``: the side states a result, so its number is a rounding, never a datum."""
+        env = self.env(scopes, axis, overrides)
+        center, radius, scale = measure(side.expr, env, lambda n: self.halfwidth(n, scopes, result))
+        unit_dim = None
+        if side.unit is not None:
+            factor, unit_dim, _ = units.to_working(side.unit, scopes[0].system)
+            f = mpf(Fraction(factor))
+            center, radius, scale = center * f, radius * f, scale * f
+        elif any(isinstance(n, Num) and n.degrees for n in walk(side.expr)):
+            unit_dim = units.ANGLE
+        return Value(center, radius, unit_dim, scale)
+
+    def axes(self, relation: Relation) -> list[str | None]:
+        """The components a relation is read in: none, or those of its unit vectors."""
+        found: list[str] = []
+        has_vec = False
+        for side in relation.sides:
+            for node in walk(side.expr):
+                if isinstance(node, Hat) and node.axis not in found:
+                    found.append(node.axis)
+                has_vec = has_vec or isinstance(node, Vec)
+        if has_vec and not found:
+            found = ["t", "n"]
+        if found and set(found) <= {"t", "n"}:
+            return ["t", "n"]
+        if found and set(found) <= {"x", "y"}:
+            return ["x", "y"]
+        return found or [None]
+
+    def values(self, claim: Claim, relation: Relation, axis: str | None) -> list[Value | None]:
+        """Each side's value (None where a name has no value or the side no number)."""
+        out: list[Value | None] = []
+        for i, side in enumerate(relation.sides):
+            try:
+                out.append(self.value(side, self.side_scopes(claim, i), axis, result=is_stated(claim, relation, i)))
+            except Unresolved as exc:
+                self.unresolved.add((claim.line.number, str(exc)))
+                out.append(None)
+            except (Undefined, ZeroDivisionError, ValueError, OverflowError):
+                out.append(None)
+        return out
+
+    def names(self, node: object) -> Iterator[str]:
+        for n in walk(node):
+            if isinstance(n, (Sym, Vec)):
+                yield n.name
+
+    def roles(self, node: object, scopes: list[Scope]) -> set[str]:
+        out = set()
+        for name in self.names(node):
+            q = self.quantity(name, scopes)
+            if q is not None:
+                out.add(q.role)
+        return out
+
+
+def lone_number(side: Side) -> Num | None:
+    """The number when a side is one number (perhaps negative), else None."""
+    from derive.verifier.tree import Add
+
+    expr = side.expr
+    if isinstance(expr, Add) and len(expr.terms) == 1 and expr.terms[0][0] == -1:
+        expr = expr.terms[0][1]
+    return expr if isinstance(expr, Num) else None
+
+
+def signed_value(side: Side) -> Decimal | None:
+    """A lone number's value with its sign, as shown."""
+    from derive.verifier.tree import Add
+
+    num = lone_number(side)
+    if num is None:
+        return None
+    neg = isinstance(side.expr, Add)
+    return -num.value if neg else num.value
+
+
+def is_stated(claim: Claim, relation: Relation, index: int) -> bool:
+    """True for the last side of a line that states a value (with a unit, boxed, carried):
+    its numbers are roundings, even one that happens to read like a given."""
+    if index == 0 or index != len(relation.sides) - 1 or claim.line.kind == "given":
+        return False
+    boxed = claim.display is not None and claim.display.boxed
+    return relation.sides[index].unit is not None or boxed or claim.line.kind == "carried"
+
+
+def is_result(claim: Claim, relation: Relation, index: int) -> bool:
+    """True for the last side of a line that states a result: one number, with a unit or boxed."""
+    side = relation.sides[index]
+    if index != len(relation.sides) - 1 or index == 0 or lone_number(side) is None or claim.line.kind == "given":
+        return False
+    boxed = claim.display is not None and claim.display.boxed
+    num = lone_number(side)
+    return side.unit is not None or boxed or claim.line.kind == "carried" or bool(num and num.degrees)

@@ -1,0 +1,69 @@
+"""Rule ``consistent``: a value shown twice is shown the same way.
+
+Where a sentence names an equation ("Substitute into (3)"), the numbers of
+that equation that the lines under it use again must be written as the
+equation wrote them: (3) shown with 84.8 and then substituted as 84.77 reads
+as two different numbers. A result rounded for the answer (-1.11 m/s) and
+carried on with one more figure (-1.109) is the textbook way, and not flagged;
+nor is a value with letters at the end of a line (``-6.261 e = -6.26 e``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from decimal import Decimal
+
+from derive.verifier.evaluate import walk
+from derive.verifier.judge import Claim, Judge, is_result
+from derive.verifier.report import Failure
+from derive.verifier.rules.dimensions import value_form
+from derive.verifier.rules.references import steps
+from derive.verifier.tree import Num, Sym
+
+RULE = "consistent"
+
+
+def _intermediates(judge: Judge, claim: Claim) -> Iterator[Num]:
+    """The rounded numbers of a line that are not its stated result."""
+    scopes = judge.chain_of(claim.line.scope)
+    for rel in claim.relations:
+        for i, side in enumerate(rel.sides):
+            last = i == len(rel.sides) - 1 and i > 0
+            if is_result(claim, rel, i) or (last and value_form(side.expr) and _has_letter(side.expr)):
+                continue
+            for node in walk(side.expr):
+                if not isinstance(node, Num) or node.integer or node.value == 0:  # 0.00 is rule zero's
+                    continue
+                if not judge.is_exact(node, scopes):
+                    yield node
+
+
+def _has_letter(node: object) -> bool:
+    return any(isinstance(n, Sym) for n in walk(node))
+
+
+def check(judge: Judge) -> Iterator[Failure]:
+    """Numbers of a named equation written again differently under it."""
+    tagged = {c.display.tag: c for c in judge.claims if c.display is not None and c.display.tag}
+    for step in steps(judge):
+        sources = [tagged[t] for t in step.tags if t in tagged]
+        if not sources:
+            continue
+        scopes = judge.chain_of(step.claim.line.scope)
+        theirs = [(n, s.display.tag) for s in sources for n in _intermediates(judge, s)]
+        for claim in judge.claims:
+            if claim.line.block != step.claim.line.block:
+                continue
+            for mine in _intermediates(judge, claim):
+                if mine.degrees:
+                    continue
+                near = [(abs(mine.value - o.value), o, tag) for o, tag in theirs if not o.degrees]
+                if not near:
+                    continue
+                gap, other, tag = min(near, key=lambda x: x[0])
+                h = max(judge.halfwidth(mine, scopes), judge.halfwidth(other, scopes))
+                if gap <= Decimal(str(h)) and mine.mantissa != other.mantissa:
+                    line = claim.line
+                    reason = f"({tag}) shows {other.text}; this line writes it {mine.text}"
+                    yield Failure(line.number, line.latex, RULE, reason, line.scope)
+                    break

@@ -1,0 +1,209 @@
+"""Rule ``references``: "Add (3) and (4)", "From (4)", "Substitute into (3)", "Back into (4)".
+
+The equation numbers named exist above the line, in the same part of the page
+(an impact's own equations, not another stage's), and the operation does what
+the sentence says: the line that follows is, as an equation in the unknowns,
+the sum, the difference or the named equation itself (after putting in what
+the lines before have found); a term said to cancel cancels. Each equation
+number is used once.
+
+The check treats each equation as ``left - right`` and compares the line with
+the operation at a few points of the unknowns around their solved values: the
+two must be proportional there, within the rounding of the numbers shown.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute
+from derive.verifier.judge import Claim, Judge, Value, tolerance
+from derive.verifier.report import Failure
+from derive.verifier.tree import Add, Side, Sym
+
+RULE = "references"
+OPERATIONS = (
+    (re.compile(r"Add \((\d+)\) and \((\d+)\)"), "add"),
+    (re.compile(r"Subtract \((\d+)\) from \((\d+)\)"), "subtract"),
+    (re.compile(r"(?:Substitute|Back) into \((\d+)\)"), "into"),
+    (re.compile(r"^From \((\d+)\)"), "from"),
+    (re.compile(r"^Solve ((?:\(\d+\)(?:,| and)? ?)+) together"), "together"),
+)
+CANCELS = re.compile(r"\$([^$]+)\$ cancels")
+STEPS = (CTX.mpf("0.37"), CTX.mpf("-0.61"), CTX.mpf("1.13"))
+
+
+@dataclass
+class Step:
+    """A sentence naming equations, and the first line under it."""
+
+    op: str
+    tags: tuple[str, ...]
+    cancels: tuple[str, ...]
+    claim: Claim
+
+
+def _name(latex: str) -> str:
+    m = re.fullmatch(r"\s*([A-Za-z]+|\\[A-Za-z]+)(?:_\{?([^{}]*)\}?)?\s*", latex)
+    if not m:
+        return latex
+    base = m.group(1).lstrip("\\")
+    sub = re.sub(r"\\mathrm\{([^{}]*)\}", r"\1", m.group(2) or "")
+    return base + ("_" + sub if sub else "")
+
+
+def steps(judge: Judge) -> Iterator[Step]:
+    """Each block whose sentence names an operation on equations."""
+    seen: set[int] = set()
+    for claim in judge.claims:
+        line = claim.line
+        if line.kind != "display" or line.block in seen or not line.sentence:
+            continue
+        seen.add(line.block)
+        for pattern, op in OPERATIONS:
+            m = pattern.search(line.sentence)
+            if m:
+                tags = tuple(re.findall(r"\d+", m.group(0)))
+                cancels = tuple(_name(c) for c in CANCELS.findall(line.sentence))
+                yield Step(op, tags, cancels, claim)
+                break
+
+
+def _equation(claim: Claim) -> object | None:
+    """A tagged line as ``left - right`` (its first and last sides)."""
+    if not claim.relations or len(claim.relations[0].sides) < 2:
+        return None
+    sides = claim.relations[0].sides
+    return Add(((1, sides[0].expr), (-1, sides[-1].expr)))
+
+
+def _found_before(judge: Judge, step: Step) -> dict[str, object]:
+    """Unknowns the lines above (same section, earlier blocks) have found: name -> its expression."""
+    out: dict[str, object] = {}
+    here = step.claim.line
+    for claim in judge.claims:
+        line = claim.line
+        if line.number >= here.number or line.section != here.section or line.scope != here.scope:
+            continue
+        if line.block == here.block or not claim.relations:
+            continue
+        sides = claim.relations[0].sides
+        if len(sides) >= 2 and isinstance(sides[0].expr, Sym):
+            out[sides[0].expr.name] = (sides[1] if len(sides) == 2 else sides[-1]).expr
+    return out
+
+
+class _Operation:
+    """The line under a step and the operation's equation, valued at points of the unknowns."""
+
+    def __init__(self, judge: Judge, step: Step, tagged: dict[str, Claim]) -> None:
+        self.judge = judge
+        self.step = step
+        self.scopes = judge.chain_of(step.claim.line.scope)
+        eqs = [_equation(tagged[t]) for t in step.tags]
+        if step.op == "add":
+            ref = Add(((1, eqs[0]), (1, eqs[1])))
+        elif step.op == "subtract":  # Subtract (a) from (b): (b) - (a)
+            ref = Add(((1, eqs[1]), (-1, eqs[0])))
+        else:
+            ref = eqs[0]
+        self.line = _equation(step.claim)
+        unknowns = self.scopes[0].unknowns()
+        self.free = ({n for n in judge.names(self.line) if n in unknowns} | set(step.cancels)) & unknowns
+        if step.op == "into":  # what earlier lines found in terms of the unknowns left goes in
+            found = {
+                n: e
+                for n, e in _found_before(judge, step).items()
+                if n not in self.free and n in unknowns and set(judge.names(e)) & self.free
+            }
+            ref = substitute(ref, found)
+        self.ref = ref
+
+    def point(self, k: int, bump: str | None = None) -> dict[str, object]:
+        out = {}
+        for i, name in enumerate(sorted(self.free)):
+            q = self.judge.quantity(name, self.scopes)
+            base = q.value if q is not None and q.value is not None else CTX.mpf(1)
+            scale = max(CTX.mpf(1), abs(base))
+            out[name] = base + STEPS[(k + i) % len(STEPS)] * scale + (scale if name == bump else 0)
+        return out
+
+    def value(self, tree: object, point: dict[str, object]) -> Value:
+        return self.judge.value(Side(tree), self.scopes, overrides=point)
+
+    def reasons(self) -> Iterator[str]:
+        if self.line is None or self.ref is None:
+            return
+        pts = [self.point(k) for k in range(len(STEPS))]
+        shown = [self.value(self.line, p) for p in pts]
+        ref = [self.value(self.ref, p) for p in pts]
+        yield from self._cancels(pts[0], ref[0])
+        yield from self._proportional(shown, ref)
+
+    def _cancels(self, p0: dict[str, object], r0: Value) -> Iterator[str]:
+        for name in self.step.cancels:
+            if name in set(self.judge.names(self.line)):
+                yield f"{name} is said to cancel but is still in the line"
+                continue
+            moved = self.value(self.ref, {**p0, name: p0.get(name, 0) + max(CTX.mpf(1), abs(p0.get(name, 1)))})
+            if abs(moved.center - r0.center) > moved.radius + r0.radius + tolerance(moved, r0):
+                what = " + ".join(f"({t})" for t in self.step.tags)
+                if self.step.op == "subtract":
+                    what = f"({self.step.tags[1]}) - ({self.step.tags[0]})"
+                yield f"{name} does not cancel in {what}"
+
+    def _proportional(self, shown: list[Value], ref: list[Value]) -> Iterator[str]:
+        k = max(range(len(ref)), key=lambda i: abs(ref[i].center))
+        what = {"add": "the sum of", "subtract": "the difference of", "into": "substitution into"}.get(self.step.op, "")
+        named = " and ".join(f"({t})" for t in self.step.tags)
+        if abs(ref[k].center) <= ref[k].radius + tolerance(ref[k]):
+            # the equation named is nothing in these unknowns; say so only when that is exact
+            # (not when its rounded numbers leave it undecided)
+            if not ref[k].radius and any(abs(s.center) > s.radius + tolerance(s) for s in shown):
+                yield f"the line does not follow from {what} {named}".replace("  ", " ")
+            return
+        c = shown[k].center / ref[k].center
+        dc = (shown[k].radius + abs(c) * ref[k].radius) / abs(ref[k].center)
+        for s, r in zip(shown, ref, strict=True):
+            slack = s.radius + abs(c) * r.radius + abs(r.center) * dc + tolerance(s) + abs(c) * tolerance(r)
+            if abs(s.center - c * r.center) > slack or not c:
+                yield f"the line is not {what} {named}".replace("  ", " ")
+                return
+
+
+def check(judge: Judge) -> Iterator[Failure]:
+    """Equation numbers used once, named only when they are above, and doing what is said."""
+    tagged: dict[str, Claim] = {}
+    for claim in judge.claims:
+        tag = claim.display.tag if claim.display is not None else None
+        if tag is None:
+            continue
+        if tag in tagged:
+            line = claim.line
+            yield Failure(line.number, line.latex, RULE, f"({tag}) numbers two equations", line.scope)
+        else:
+            tagged[tag] = claim
+    for step in steps(judge):
+        line = step.claim.line
+        reason = _missing(step, tagged)
+        if reason is None and step.op != "together":
+            try:
+                reason = next(_Operation(judge, step, tagged).reasons(), None)
+            except (Unresolved, Undefined, ZeroDivisionError):
+                reason = None
+        if reason:
+            yield Failure(line.number, line.latex, RULE, f"{line.sentence} {reason}", line.scope)
+
+
+def _missing(step: Step, tagged: dict[str, Claim]) -> str | None:
+    here = step.claim.line
+    for t in step.tags:
+        target = tagged.get(t)
+        if target is None or target.line.number >= here.number:
+            return f"— ({t}) is not an equation above this line"
+        if target.line.scope != here.scope:
+            where = target.line.scope or "another part of the page"
+            return f"— ({t}) is an equation of {where}, not of this one"
+    return None

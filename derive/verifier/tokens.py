@@ -1,0 +1,58 @@
+"""Tokens of the LaTeX a worked solution uses: commands, numbers, letter runs, characters.
+
+Spacing commands are dropped, except ``\\ `` before a unit; ``\\left(`` and its
+kin are one token. Each token keeps where it stands, so that a side of a
+relation can be quoted as written.
+"""
+
+from __future__ import annotations
+
+import re
+
+SPACES = {r"\quad", r"\qquad", r"\,", r"\;", r"\:", r"\!", "~", r"\displaystyle", r"\left.", r"\right."}
+
+
+class LatexError(ValueError):
+    """The text is not in the subset this reader knows (the message says where)."""
+
+
+_TOKEN = re.compile(
+    r"(?P<cmd>\\[A-Za-z]+)|(?P<esc>\\[ ,;:!%{}|_#&])|(?P<num>\d+(?:\.\d+)?|\.\d+)"
+    r"|(?P<word>[A-Za-z]+)|(?P<op>[{}()\[\]^_+\-=,/|<>'*!?·:;.~])|(?P<ws>\s+)"
+)
+
+
+def tokenize(text: str) -> list[str]:
+    """LaTeX as a list of tokens: commands, numbers, letter runs, single characters."""
+    return [tok for tok, _, _ in token_spans(text)]
+
+
+def token_spans(text: str) -> list[tuple[str, int, int]]:
+    """Tokens with where each starts and ends in ``text``."""
+    out: list[tuple[str, int, int]] = []
+    pos = 0
+    while pos < len(text):
+        begin = pos
+        m = _TOKEN.match(text, pos)
+        if not m:
+            raise LatexError(f"unexpected {text[pos]!r} in {text!r}")
+        pos = m.end()
+        kind = m.lastgroup
+        tok = m.group(0)
+        if kind == "ws":
+            continue
+        if kind == "cmd" and tok in (r"\left", r"\right") and pos < len(text):
+            m2 = re.match(r"\s*(\\[{}|]|[()\[\]|.])", text[pos:])
+            if m2:
+                tok += m2.group(1)
+                pos += m2.end()
+        if tok in SPACES or (tok == r"\ " and not _unit_follows(text, pos)):
+            continue
+        out.append((tok, begin, pos))
+    return out
+
+
+def _unit_follows(text: str, pos: int) -> bool:
+    """After ``\\ ``: True when a unit follows (``\\mathrm{...}`` or ``\\%``)."""
+    rest = text[pos:].lstrip()
+    return rest.startswith((r"\mathrm", r"\%", r"\text"))
