@@ -56,11 +56,14 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     return displayed(solve_steps(problem))
 
 
-def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
-    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'."""
+def render(
+    solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True, plot: bool = False
+) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json';
+    ``plot`` adds the plot of the outcome against e after the answer."""
     from derive.writers.view import render as render_text
 
-    return render_text(solution, fmt, digits=digits, figures=figures)
+    return render_text(solution, fmt, digits=digits, figures=figures, plot=plot)
 
 
 def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> Report:

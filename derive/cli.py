@@ -1,4 +1,4 @@
-"""The command line: ``derive solve``, ``derive list``, ``derive check``. A thin layer over the library.
+"""The command line: ``derive solve``, ``list``, ``check``, ``variants``, ``handout``, ``plot``. A thin layer over the library.
 
 Exit codes: 0 done, 2 bad input or usage, 1 anything else.
 """
@@ -40,6 +40,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
     p_solve.add_argument("--verify", action="store_true", help="check every line; print failing lines, exit 1 if any")
+    p_solve.add_argument("--plot", action="store_true", help="add the plot of the outcome against e to the answer")
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     p_list = sub.add_parser("list", help="list the bundled problems")
     p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -48,6 +49,9 @@ def _parser() -> argparse.ArgumentParser:
     p_check.add_argument("--answer", "-a", action="append", metavar="NAME=VALUE", help="an answer (repeatable)")
     p_check.add_argument("--answers", metavar="FILE", help="answers (and equations) in a TOML file")
     p_check.add_argument("--equation", action="append", metavar="'N: LHS = RHS'", help="an equation (repeatable)")
+    p_check.add_argument(
+        "--derivation", metavar="FILE", help="a typed derivation (.md, .tex or plain lines), judged line by line"
+    )
     p_check.add_argument("--tolerance", help="relative tolerance, e.g. 0.01 or 1%% (default: the figures written)")
     p_check.add_argument("--format", "-f", choices=("text", "md", "json"), default="text", help="default: text")
     p_check.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -73,7 +77,15 @@ def _parser() -> argparse.ArgumentParser:
     )
     p_hand.add_argument("--mode", choices=("problems", "answers", "solutions"), default="solutions")
     p_hand.add_argument("--digits", type=int, help="significant figures (default: each problem's)")
+    p_hand.add_argument("--plot", action="store_true", help="with --mode solutions: each impact's plot against e")
     p_hand.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    p_plot = sub.add_parser("plot", help="plot the outcome against e (0 to 1): velocities along n, energy lost")
+    p_plot.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_plot.add_argument(
+        "-o", "--output", help="FILE.svg, FILE.pdf, FILE.png or FILE.tex (default: SVG to standard output)"
+    )
+    p_plot.add_argument("--stage", type=int, help="in a chain, the impact stage to plot (default: the first)")
+    p_plot.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
     return parser
 
 
@@ -95,10 +107,11 @@ def _solve(args: argparse.Namespace) -> int:
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
-        data: str | bytes = build_pdf(derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure))
+        tex = derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure, plot=args.plot)
+        data: str | bytes = build_pdf(tex)
     else:
         fmt = "tex-fragment" if args.format == "tex" and args.fragment else args.format
-        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure)
+        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure, plot=args.plot)
     if args.output:
         write_atomic(args.output, data, inputs=inputs)
     else:
@@ -110,6 +123,24 @@ def _solve(args: argparse.Namespace) -> int:
         report = derive.verify(solution, fmt, digits=args.digits, text=page)
         print(report.format(), file=sys.stderr)
         return 0 if report.ok else 1
+    return 0
+
+
+def _plot(args: argparse.Namespace) -> int:
+    import derive
+    from derive.fileio import write_atomic
+    from derive.writers import plot
+
+    fmt = Path(args.output).suffix.lower().lstrip(".") if args.output else "svg"
+    writers = {"svg": plot.to_svg, "tex": plot.to_tikz, "pdf": plot.to_pdf, "png": plot.to_png}
+    if fmt not in writers:
+        raise InputError("the extension sets the format: give -o FILE.svg, .pdf, .png or .tex", where="usage")
+    problem = derive.load(args.problem)
+    data = writers[fmt](plot.chart(plot.impact_of(problem, args.stage)))
+    if args.output:
+        write_atomic(args.output, data, inputs=(Path(problem.path),))
+    else:
+        sys.stdout.write(data if isinstance(data, str) else "")
     return 0
 
 
@@ -130,8 +161,13 @@ def _list(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     from derive.checking.answers import run
 
-    report, text = run(args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format)
+    report, text = run(
+        args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format, args.derivation
+    )
     sys.stdout.write(text)
+    for item in report.items:  # an item that could not be read is in the report, and named here
+        if item.status == "error":
+            print(f"Error: {_one_line(item.message)}", file=sys.stderr)
     return report.exit_code
 
 
@@ -181,7 +217,7 @@ def _handout(args: argparse.Namespace) -> int:
     title = args.title if args.title is not None else DEFAULT_TITLES[args.mode]
     try:
         data, failures = build_handout(
-            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits
+            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits, plot=args.plot
         )
     except NoProblemsError as exc:
         for failure in exc.failures:
@@ -217,7 +253,14 @@ def main(argv: list[str] | None = None) -> int:
     debug = "--debug" in argv
     try:
         args = _parser().parse_args(argv)
-        commands = {"solve": _solve, "list": _list, "check": _check, "variants": _variants, "handout": _handout}
+        commands = {
+            "solve": _solve,
+            "list": _list,
+            "check": _check,
+            "variants": _variants,
+            "handout": _handout,
+            "plot": _plot,
+        }
         return commands[args.command](args)
     except DeriveError as exc:
         if debug:

@@ -1,7 +1,10 @@
-"""Figures and the HTML page: the arrows agree with the numbers; the page works offline."""
+"""Figures and the HTML page: the arrows agree with the numbers and are to scale, the
+bodies to the given radii, floors horizontal, labels clear of everything; the page
+works offline."""
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import re
@@ -10,22 +13,26 @@ import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import figure_cases
 import pytest
 from pending_syntax import skip_if_pending
 
 import derive
 import derive.resources
-from derive.writers.figure import Arrow, describe, to_svg, to_tikz
+from derive.writers.figure import Arrow, Axis, Body, Figure, Surface, describe, setup_svg, setup_tikz, to_svg, to_tikz
+from derive.writers.figure.model import segments
 
 SVG = "{http://www.w3.org/2000/svg}"
+A4_TEXT_WIDTH = 21.0 - 2 * 2.2  # cm: A4 less the templates' 2.2 cm margins (Letter: 17.2 cm)
 
 
 def arrows_in_svg(svg: str) -> list[tuple[float, float]]:
-    """Directions (x right, y up) of the arrows drawn in an SVG, in order."""
+    """Directions (x right, y up) of the velocity arrows drawn in an SVG, in order."""
     root = ET.fromstring(svg)
     out = []
-    for line in root.iter(f"{SVG}line"):
-        if line.get("marker-end"):
+    for group in root.iter(f"{SVG}g"):
+        if group.get("class") == "velocity":
+            line = group.find(f"{SVG}line")
             dx = float(line.get("x2")) - float(line.get("x1"))
             dy = -(float(line.get("y2")) - float(line.get("y1")))
             norm = math.hypot(dx, dy)
@@ -51,10 +58,75 @@ def test_example_4c11_arrows_point_as_the_notes_say() -> None:
     assert same_direction(after[1], (8.40 / math.hypot(8.40, 9.15), -9.15 / math.hypot(8.40, 9.15)))
 
 
-def test_arrows_scale_with_speed() -> None:
-    fig = describe(derive.solve(derive.load("notes-4c11-two-spheres")))
-    lengths = [math.hypot(s.x2 - s.x1, s.y2 - s.y1) for s in fig.shapes if isinstance(s, Arrow)]
-    assert lengths[1] > lengths[0]  # B (15 m/s) longer than A (5 m/s)
+def test_arrows_and_bodies_are_to_scale() -> None:
+    """Example 4.C.11: arrow length / speed is one scale for all four velocities (the notes'
+    speeds: 5 and 15 m/s before; 3.05 e_t - 1.11 e_n and -9.15 e_t + 8.40 e_n after), and
+    the spheres are in the ratio of the radii the notes give, 75 mm to 48 mm."""
+    sol = derive.solve(derive.load("notes-4c11-two-spheres"))
+    speeds = {"v_A1": 5.0, "v_B1": 15.0, "v_A2": math.hypot(3.05, 1.11), "v_B2": math.hypot(9.15, 8.40)}
+    arrows = {s.name: s for after in (False, True) for s in describe(sol, after).shapes if isinstance(s, Arrow)}
+    assert set(arrows) == set(speeds)
+    scales = [arrows[name].length / speed for name, speed in speeds.items()]
+    assert max(scales) / min(scales) == pytest.approx(1.0, abs=0.01)  # the notes' figures are rounded to 3
+    bodies = {s.name: s.r for s in describe(sol).shapes if isinstance(s, Body)}
+    assert bodies["A"] / bodies["B"] == pytest.approx(75 / 48)
+
+
+def test_a_bullet_that_lodges_gets_a_scale_per_figure() -> None:
+    """MSU: 300 m/s before, 1.5 m/s after (0.02 kg into 4.0 kg): on one scale the arrows after
+    would be 0.015 cm long, so each figure has its own, and the caption says so."""
+    sol = derive.solve(derive.load("msu-lectureonline-bullet-lodges-in-block"))
+    before, after = describe(sol), describe(sol, after=True)
+    lengths = [s.length for fig in (before, after) for s in fig.shapes if isinstance(s, Arrow)]
+    assert min(lengths) > 1.0 and "own" in after.caption
+    assert "own" not in describe(derive.solve(derive.load("notes-4c11-two-spheres"))).caption
+
+
+def test_bodies_are_equal_without_radii() -> None:
+    fig = describe(derive.solve(derive.load("notes-4c12-cue-ball")))
+    a, b = (s.r for s in fig.shapes if isinstance(s, Body))
+    assert a == b
+
+
+def test_a_drop_falls_onto_a_horizontal_floor() -> None:
+    """chain-ocr-m2-2006-drop-rebound: released above the ground, so the ground is drawn
+    level, the sphere above it, falling down and rebounding up; n points down."""
+    sol = derive.solve(derive.load("chain-ocr-m2-2006-drop-rebound"))
+    for after, sign in ((False, -1), (True, 1)):
+        fig = describe(sol, after=after)
+        (floor,) = (s for s in fig.shapes if isinstance(s, Surface))
+        (ball,) = (s for s in fig.shapes if isinstance(s, Body))
+        (arrow,) = (s for s in fig.shapes if isinstance(s, Arrow))
+        n_axis = next(s for s in fig.shapes if isinstance(s, Axis) and s.name == "n")
+        assert floor.y1 == pytest.approx(floor.y2) and ball.y > floor.y1
+        assert floor.ny < 0  # hatched below the face
+        assert same_direction(((arrow.x2 - arrow.x1) / arrow.length, (arrow.y2 - arrow.y1) / arrow.length), (0, sign))
+        assert n_axis.y2 < n_axis.y1 and n_axis.x1 == pytest.approx(n_axis.x2)
+        assert "ground" in to_svg(fig)
+
+
+def test_a_wall_stands_upright_and_a_block_on_a_spring_pan_falls() -> None:
+    wall = describe(derive.solve(derive.load("giancoli-7-18-tennis-ball-wall-45deg")))
+    (face,) = (s for s in wall.shapes if isinstance(s, Surface))
+    assert face.x1 == pytest.approx(face.x2)
+    pan = describe(derive.solve(derive.load("chain-block-onto-spring-pan")))  # a fall, then a vertical spring
+    a, b = (s for s in pan.shapes if isinstance(s, Body))
+    assert a.y > b.y and a.x == pytest.approx(b.x)
+    cases = describe(derive.solve(derive.load("chain-hibbeler-15-58-suitcases")))  # a ramp, then a slide
+    a, b = (s for s in cases.shapes if isinstance(s, Body))
+    assert a.y == pytest.approx(b.y) and a.x < b.x
+
+
+def test_xy_axes_where_the_problem_gives_them() -> None:
+    """FisicaLab Example 7: n at 20 deg from +x, and the x-y axes drawn."""
+    fig = describe(derive.solve(derive.load("fisicalab-example-7-normal-at-20deg")))
+    axes = {s.name: s for s in fig.shapes if isinstance(s, Axis)}
+    assert {"n", "t", "x", "y"} <= set(axes)
+    n = axes["n"]
+    assert math.degrees(math.atan2(n.y2 - n.y1, n.x2 - n.x1)) == pytest.approx(20)
+    assert axes["x"].y1 == pytest.approx(axes["x"].y2) and axes["y"].x1 == pytest.approx(axes["y"].x2)
+    plain = describe(derive.solve(derive.load("notes-4c11-two-spheres")))
+    assert not {"x", "y"} & {s.name for s in plain.shapes if isinstance(s, Axis)}
 
 
 def test_example_4c12_cue_ball_and_object_ball() -> None:
@@ -78,6 +150,115 @@ def test_every_bundled_figure_is_valid_svg_and_tikz(name: str) -> None:
         ET.fromstring(to_svg(fig))  # well-formed XML
         tikz = to_tikz(fig)
         assert tikz.startswith(r"\begin{tikzpicture}") and tikz.endswith(r"\end{tikzpicture}")
+
+
+def clashes(fig: Figure, step: float = 0.04) -> list[str]:
+    """Labels that meet another label, a stroke or a body's outline: checked by sampling
+    points along every stroke and outline and testing them against each label's box."""
+    found = []
+    boxes = [(lab.text, lab.box) for lab in fig.labels]
+    for i, (a, (ax0, ay0, ax1, ay1)) in enumerate(boxes):
+        for b, (bx0, by0, bx1, by1) in boxes[i + 1 :]:
+            if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1:
+                found.append(f"label {a} meets label {b}")
+    points: list[tuple[str, float, float]] = []
+    for s in fig.shapes:
+        name = getattr(s, "name", type(s).__name__)
+        if isinstance(s, Body):
+            k = max(8, int(2 * math.pi * s.r / step))
+            points += [
+                (f"body {name}", s.x + s.r * math.cos(2 * math.pi * j / k), s.y + s.r * math.sin(2 * math.pi * j / k))
+                for j in range(k)
+            ]
+        for (x1, y1), (x2, y2) in segments(s):
+            k = max(1, int(math.hypot(x2 - x1, y2 - y1) / step))
+            points += [
+                (f"{type(s).__name__} {name}", x1 + (x2 - x1) * j / k, y1 + (y2 - y1) * j / k) for j in range(k + 1)
+            ]
+    for text, (x0, y0, x1, y1) in boxes:
+        hit = {what for what, px, py in points if x0 < px < x1 and y0 < py < y1}
+        found += [f"label {text} meets {what}" for what in sorted(hit)]
+    return found
+
+
+@functools.cache
+def bundled_figures() -> list[tuple[str, Figure]]:
+    """Before and after figures of every bundled problem, each impact stage of a chain too."""
+    out = []
+    for name in sorted(derive.resources.bundled()):
+        sol = derive.solve(derive.load(name))
+        parts = [(name, sol, {})]
+        if sol.is_chain:
+            from derive.writers.figure import chain_falls
+
+            falls = chain_falls(sol)
+            parts = [
+                (f"{name}#{st.number}", st.part, {"falls": falls[st.number], "values": sol.values})
+                for st in sol.stages
+                if st.part
+            ]
+        for label, part, opts in parts:
+            out += [
+                (f"{label} {'after' if after else 'before'}", describe(part, after, **opts)) for after in (False, True)
+            ]
+    return out
+
+
+def test_no_label_overlaps_in_bundled_figures() -> None:
+    figures = bundled_figures()
+    bad = [f"{name}: {c}" for name, fig in figures for c in clashes(fig)]
+    assert bad == []
+    assert len(figures) >= 2 * len(derive.resources.bundled())
+
+
+def test_no_label_overlaps_in_500_generated_figures() -> None:
+    bad = []
+    for seed in range(figure_cases.CASES):
+        sol = figure_cases.solution(figure_cases.case(seed))
+        for after in (False, True):
+            bad += [f"case {seed} {'after' if after else 'before'}: {c}" for c in clashes(describe(sol, after))]
+    assert bad == []
+
+
+def test_generated_arrows_are_to_scale() -> None:
+    """Length / speed is one number in each figure, and the same before and after unless
+    one figure's greatest speed is under a quarter of the other's (then each has its own)."""
+    for seed in range(0, figure_cases.CASES, 5):
+        c = figure_cases.case(seed)
+        sol = figure_cases.solution(c)
+        arrows = {s.name: s for after in (False, True) for s in describe(sol, after).shapes if isinstance(s, Arrow)}
+        out = figure_cases.outcome(c)
+        speeds = {"v_A1": math.hypot(*c.A1), "v_B1": math.hypot(*c.B1), "v_A2": math.hypot(out["A2n"], out["A2t"])}
+        if not c.fixed:
+            speeds["v_B2"] = math.hypot(out["B2n"], out["B2t"])
+        moving = {n: v for n, v in speeds.items() if v > 1e-9}
+        assert set(moving) == set(arrows), seed
+        scale = {k: [arrows[n].length / v for n, v in moving.items() if n[3] == k] for k in "12"}
+        for k in "12":
+            assert max(scale[k]) == pytest.approx(min(scale[k])), seed
+        top = [max((v for n, v in moving.items() if n[3] == k), default=0.0) for k in "12"]
+        if min(top) > 0 and min(top) >= max(top) / 4:
+            assert scale["1"][0] == pytest.approx(scale["2"][0]), seed
+
+
+def test_figures_fit_the_page() -> None:
+    """Drawn at 1:1 (labels in the text's 11 pt), every figure fits the text width of A4 and
+    Letter with room to spare; the SVG is 40 px per cm (a 12 cm figure is 480 px)."""
+    for name, fig in bundled_figures():
+        assert fig.width < 0.8 * A4_TEXT_WIDTH and fig.height < 12, name
+        svg = ET.fromstring(to_svg(fig))
+        assert float(svg.get("width")) == pytest.approx(fig.width * 40, abs=1)
+
+
+def test_setup_figure_for_a_student_sheet() -> None:
+    """The figure of a statement: the given velocities and angles, nothing found."""
+    sol = derive.solve(derive.load("notes-4c11-two-spheres"))
+    svg, tikz = setup_svg(sol), setup_tikz(sol)
+    ET.fromstring(svg)
+    assert "A1" in svg and "A2" not in svg and "θ" in svg
+    assert r"v_{A1}" in tikz and r"v_{A2}" not in tikz
+    chain = derive.solve(derive.load("chain-ocr-m2-2006-drop-rebound"))
+    assert "ground" in setup_svg(chain)
 
 
 def test_wall_is_hatched() -> None:
@@ -161,3 +342,45 @@ def test_html_screenshot_is_not_blank(name: str, tmp_path: Path) -> None:
     assert shot[:8] == b"\x89PNG\r\n\x1a\n"
     # A page of text, formulas and a figure compresses far worse than a white one.
     assert len(shot) > 8 * len(empty), (len(shot), len(empty))
+
+
+@pytest.mark.slow
+def test_rendered_label_widths_fit_their_boxes(tmp_path: Path) -> None:
+    """Chromium lays the SVG labels out: each is no wider than the box the layout kept for
+    it (the height getBBox gives is the font's line box, not the ink, so only widths)."""
+    import json
+
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if chromium is None:
+        pytest.skip("chromium is not installed")
+    svgs, widths = [], []
+    for _, fig in bundled_figures():
+        svgs.append(to_svg(fig))
+        widths.append([lab.w * 40 for lab in fig.labels])
+    script = (
+        "<script>const w = " + json.dumps(widths) + "; const bad = [];"
+        "document.querySelectorAll('svg').forEach((s, i) => s.querySelectorAll('text').forEach((t, j) => {"
+        "const b = t.getBBox(); if (b.width > w[i][j]) bad.push([i, t.textContent, b.width, w[i][j]]); }));"
+        "document.getElementById('out').textContent = 'RESULT' + JSON.stringify(bad) + 'END';</script>"
+    )
+    page = tmp_path / "labels.html"
+    page.write_text("<!DOCTYPE html><html><body>" + "".join(svgs) + "<pre id='out'></pre>" + script + "</body></html>")
+    flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run"]
+    flags += ["--disable-background-networking", "--disable-component-update", "--disable-sync"]
+    dom = subprocess.run(
+        [
+            chromium,
+            *flags,
+            f"--user-data-dir={tmp_path / 'profile'}",
+            "--virtual-time-budget=5000",
+            "--dump-dom",
+            page.as_uri(),
+        ],
+        check=True,
+        capture_output=True,
+        text=True,
+        timeout=180,
+    ).stdout
+    found = re.search(r"RESULT(.*?)END", dom)
+    assert found is not None, "the page's script did not run"
+    assert json.loads(found.group(1).replace("&quot;", '"')) == []

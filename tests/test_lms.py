@@ -152,11 +152,16 @@ def test_default_result_and_a_bad_one(compiled: variants.Compiled, chosen: list[
 
 
 def test_tolerance_rule() -> None:
-    assert lms.tolerance("8.40") == Decimal("0.015")
-    assert lms.tolerance("-1.109") == Decimal("0.0015")
-    assert lms.tolerance("1200") == Decimal("1.5")
-    assert lms.tolerance("1.23e+7") == Decimal("1.5e5")
-    assert lms.tolerance("0") == lms.ZERO_TOLERANCE
+    """1.5 units in the last significant figure of the value as rounded (issue #15: 1045.81
+    at three figures is shown as 1050 and is right from 1035 to 1065)."""
+    assert lms.tolerance("8.40", 3) == lms.tolerance("8.40") == Decimal("0.015")
+    assert lms.tolerance("-1.109", 4) == Decimal("0.0015")
+    assert lms.tolerance("1050", 3) == Decimal("15")
+    assert lms.tolerance("1200", 4) == Decimal("1.5")
+    assert lms.tolerance("1200") == Decimal("150")  # figures unknown: trailing zeros of a whole number don't count
+    assert lms.tolerance("10.0", 3) == Decimal("0.15")
+    assert lms.tolerance("1.23e+7", 3) == lms.tolerance("1.23e+7") == Decimal("1.5e5")
+    assert lms.tolerance("0") == lms.tolerance("0", 3) == lms.ZERO_TOLERANCE
 
 
 def test_markdown_to_html() -> None:

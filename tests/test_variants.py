@@ -71,16 +71,22 @@ def test_each_variant_matches_a_fresh_solve(compiled: variants.Compiled) -> None
 
 
 def test_shown_sums_add_up_in_every_variant(compiled: variants.Compiled) -> None:
+    shown = 0
     for v in variants.draw(compiled, 200, seed=9):
         page = variants.fill(compiled, v)
+        assert re.search(r"= [-\d.]+ \\tag\{3\}", page), page[:3000]  # (3) is always there
         m = re.search(
             r"^([\d.]+) - ([\d.]+) = \S+ v_\{A2n\}.*\n\$\$\n\n\$\$\n\\Rightarrow\\quad .* = ([-\d.]+) \\tag\{3\}",
             page,
             re.M,
         )
-        assert m, page[:3000]
+        if m is None:  # left out: no places at which its terms add up within the figures allowed
+            assert "%%derive" not in page
+            continue
+        shown += 1
         a, b, total = (Decimal(x) for x in m.groups())
         assert a - b == total
+    assert shown >= 100
 
 
 def test_conditions_are_respected() -> None:

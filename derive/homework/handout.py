@@ -64,12 +64,12 @@ def _one_line(text: str) -> str:
     return " ".join(text.split())
 
 
-def _problem_view(name: str | Path, mode: str, digits: int | None) -> dict[str, Any]:
+def _problem_view(name: str | Path, mode: str, digits: int | None, plot: bool = False) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = solve(load(name))
     if solution.is_chain:
         return _chain_view(solution, mode, digits)
-    data = view(solution, digits, figures=mode == "solutions")
+    data = view(solution, digits, figures=mode == "solutions", plot=plot and mode == "solutions")
     data["answers"] = [
         line
         for stage in data["stages"]
@@ -121,6 +121,7 @@ def build_handout(
     mode: Mode = "solutions",
     fmt: Format = "md",
     digits: int | None = None,
+    plot: bool = False,
 ) -> tuple[str | bytes, list[Failure]]:
     """Gather ``problems`` (paths or bundled names) into one document.
 
@@ -138,6 +139,9 @@ def build_handout(
         ``"md"`` or ``"tex"`` (text), or ``"pdf"`` (bytes, compiled by LaTeX).
     digits
         Significant figures (default: each problem's own, else the textbook rule).
+    plot
+        In ``solutions`` mode, each single impact's plot of the outcome against e
+        after its answer (chains are left without).
 
     Returns
     -------
@@ -160,7 +164,7 @@ def build_handout(
     views, failures = [], []
     for name in problems:
         try:
-            views.append(_problem_view(name, mode, digits))
+            views.append(_problem_view(name, mode, digits, plot))
         except DeriveError as exc:
             failures.append(Failure(str(name), _one_line(str(exc))))
         except Exception as exc:  # a bug with one problem must not lose the others

@@ -4,18 +4,31 @@ Both exports ask for one result (``--result``) of each variant drawn by
 :mod:`derive.variants`, graded by the significant-figure rule of ``derive check``:
 
 * the right answer is the value as the answer key shows it (key.json ``shown``);
-* the tolerance is 1.5 units in its last digit: half a unit, so that any answer
-  that rounds to the shown value counts, plus the ±1 in the last digit that
-  ``derive check`` allows for rounded intermediates. For v = 8.40 m/s it is
-  0.015 m/s (8.385 to 8.415). An exact zero (shown ``0``) gets ±0.005.
+* the tolerance is 1.5 units in its last significant digit: half a unit, so that
+  any answer that rounds to the shown value counts, plus the ±1 in the last digit
+  that ``derive check`` allows for rounded intermediates. For v = 8.40 m/s it is
+  0.015 m/s (8.385 to 8.415). The significant figures are those the value was
+  rounded to, so the trailing zeros of a rounded whole number do not count:
+  1045.81 J at three figures is shown as 1050 J, ± 15 J. An exact zero (shown
+  ``0``) gets ±0.005.
 
 Moodle: one numerical question per variant, all in one category (a random
 question drawn from it gives each student a variant), with the worked solution as
 general feedback and, where :mod:`derive.mistakes` predicts the value a common
 mistake gives, that value as a wrong answer with the mistake's hint as feedback.
+Moodle gives the feedback of the first answer whose range holds the response, so
+the mistakes' ranges are cut where they would overlap the right answer's or each
+other's (:func:`mistake_ranges`): a student gets the hint of the mistake nearest
+to their value.
 
 PrairieLearn: a question folder (``info.json``, ``question.html``, ``server.py``)
-whose ``generate()`` picks one of the same variants by ``data["variant_seed"]``.
+whose ``generate()`` picks one of the same variants by ``data["variant_seed"]``
+and whose ``grade()`` gives a wrong answer the same mistake hints (in place of
+pl-number-input's "does not have precision" message, which ``rtol="0"`` would give
+every wrong answer).
+
+Neither question text carries the problem's citation (its Source line): the
+citations of the bundled problems quote their published answers.
 
 Nothing here needs more than the standard library and derive itself.
 """
@@ -39,6 +52,7 @@ import sympy
 from derive.checking import mistakes
 from derive.errors import InputError
 from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
+from derive.numbers import figures_for, format_number
 from derive.problem import Problem
 from derive.symbols import latex_name
 
@@ -46,6 +60,18 @@ from derive.symbols import latex_name
 TOLERANCE_UNITS = Decimal("1.5")
 #: The tolerance of an answer shown as an exact zero (it rounds to 0.00).
 ZERO_TOLERANCE = Decimal("0.005")
+#: PrairieLearn compares |x - c| <= atol in doubles, where 8.385 - 8.40 is 0.0150000000000006: its
+#: atol is the tolerance widened by this fraction of the larger of |c| and the tolerance, so that the
+#: ends of the range are right (Moodle widens its ranges the same way, by 1e-14).
+EDGE = Decimal("1e-12")
+#: Units a student may write instead of the one asked, with how many of them make one of it
+#: (Moodle converts a response in one of these by its multiplier).
+OTHER_UNITS: dict[str, tuple[tuple[str, Decimal], ...]] = {
+    "m/s": (("km/h", Decimal("3.6")), ("ft/s", 1 / Decimal("0.3048")), ("cm/s", Decimal(100))),
+    "ft/s": (("m/s", Decimal("0.3048")), ("mph", Decimal(3600) / 5280), ("in/s", Decimal(12))),
+    "J": (("kJ", Decimal("0.001")),),
+    "N·s": (("kg·m/s", Decimal(1)), ("kN·s", Decimal("0.001"))),
+}
 DEFAULT_GRADE = "1.0000000"
 PENALTY = "0.3333333"
 TOPIC = "Central impact"
@@ -168,11 +194,21 @@ def _inline(text: str) -> str:
 
 
 def _statement_html(md: str) -> str:
-    """A statement page (heading, source, Given, Find) as HTML, without its title heading."""
+    """A statement page (heading, source, Given, Find) as HTML, without its title heading
+    and without the Source paragraph (citations quote the published answers)."""
     lines = md.splitlines()
     while lines and (not lines[0].strip() or re.match(r"#\s", lines[0])):
         lines.pop(0)
-    return md_to_html("\n".join(lines))
+    kept: list[str] = []
+    in_source = False
+    for line in lines:
+        if line.startswith("*Source:"):
+            in_source = True
+        if in_source:
+            in_source = bool(line.strip())
+            continue
+        kept.append(line)
+    return md_to_html("\n".join(kept))
 
 
 def _solution_md(page: str) -> str:
@@ -192,25 +228,41 @@ class Answer:
     value: Decimal
     unit: str
     tolerance: Decimal
-
-    @property
-    def figures(self) -> int:
-        return len(self.value.as_tuple().digits) if self.value != 0 else 1
+    figures: int  # the significant figures ``shown`` was rounded to
 
 
-def tolerance(shown: str) -> Decimal:
-    """The tolerance of an answer shown as ``shown``: 1.5 units in its last digit."""
+def significant_figures(shown: str) -> int:
+    """The significant figures of a number as written, when nothing else is known: every
+    digit from the first non-zero one, except the trailing zeros of a whole number."""
+    d = Decimal(shown)
+    if d == 0:
+        return 1
+    digits = "".join(map(str, d.as_tuple().digits)).lstrip("0")
+    exp = d.as_tuple().exponent
+    assert isinstance(exp, int)
+    return len(digits.rstrip("0")) if exp >= 0 else len(digits)
+
+
+def tolerance(shown: str, figures: int | None = None) -> Decimal:
+    """The tolerance of an answer shown as ``shown``, rounded to ``figures`` significant
+    figures: 1.5 units in its last significant digit (``figures`` None: counted by
+    :func:`significant_figures`)."""
     d = Decimal(shown)
     if d == 0:
         return ZERO_TOLERANCE
-    exp = d.as_tuple().exponent
-    assert isinstance(exp, int)
-    return TOLERANCE_UNITS.scaleb(exp)
+    figs = significant_figures(shown) if figures is None else figures
+    return TOLERANCE_UNITS.scaleb(d.adjusted() - figs + 1)
 
 
-def _answer(name: str, row: dict) -> Answer:
+def _figures(value: float, digits: int | None) -> int:
+    """The figures ``format_number(value, digits)`` rounds to (as the key shows numbers)."""
+    return figures_for(Decimal(repr(float(value))), digits)
+
+
+def _answer(name: str, row: dict, digits: int | None) -> Answer:
     shown = row["shown"]
-    return Answer(name, shown, Decimal(shown), row["unit"], tolerance(shown))
+    figs = _figures(row["value"], digits)
+    return Answer(name, shown, Decimal(shown), row["unit"], tolerance(shown, figs), figs)
 
 
 def default_result(compiled: Compiled, variants: list[Variant], digits: int | None = None) -> str:
@@ -274,6 +326,7 @@ class MistakeModel:
         self.compiled = compiled
         self.base = mistakes.Model(compiled.solution)
         self.registry = mistakes.REGISTRY
+        self._wrong: dict[tuple, list[Wrong]] = {}
 
     def model(self, variant: Variant) -> mistakes.Model:
         """The mistakes' model with this variant's numbers in."""
@@ -318,20 +371,82 @@ class MistakeModel:
 
     def wrong(self, variant: Variant, right: Answer, digits: int | None) -> list[Wrong]:
         """The mistakes' values for ``right.name`` that a student would not get right anyway,
-        one per value shown (mistakes that give the same value share it)."""
-        from derive.numbers import format_number
-
+        one per value shown (mistakes that give the same value share it), in order of value."""
         d = digits if digits is not None else self.compiled.problem.digits
+        key = (variant.number, tuple(sorted((k, str(x)) for k, x in variant.values.items())), right, d)
+        if key in self._wrong:
+            return self._wrong[key]
         found: dict[str, list[str]] = {}
+        figs: dict[str, int] = {}
         for name, x in self.values(variant, right.name):
             shown = format_number(Decimal(repr(x)), d)
             if abs(Decimal(shown) - right.value) <= right.tolerance:
                 continue  # within the right answer's tolerance: it grades as right
             found.setdefault(shown, []).append(name)
-        return [
-            Wrong(shown, tolerance(shown), tuple(names), tuple(self.registry[n].description for n in names))
-            for shown, names in found.items()
+            figs.setdefault(shown, _figures(x, d))
+        out = [
+            Wrong(
+                shown, tolerance(shown, figs[shown]), tuple(names), tuple(self.registry[n].description for n in names)
+            )
+            for shown, names in sorted(found.items(), key=lambda item: Decimal(item[0]))
         ]
+        self._wrong[key] = out
+        return out
+
+
+@dataclass(frozen=True)
+class Range:
+    """Where a response gets a wrong answer's feedback: center ± half_width."""
+
+    center: Decimal
+    half_width: Decimal
+    wrong: Wrong
+
+    @property
+    def low(self) -> Decimal:
+        return self.center - self.half_width
+
+    @property
+    def high(self) -> Decimal:
+        return self.center + self.half_width
+
+
+def mistake_ranges(right: Answer, wrongs: list[Wrong]) -> list[Range]:
+    """The ranges of the mistakes' answers, so that a response gets the feedback of the
+    mistake nearest to it whichever answer an LMS tries first.
+
+    A mistake's range is its own tolerance about its value, cut where it meets the
+    right answer's range (which wins) and halfway to the next mistake's value. Each
+    mistake's first range is centred on its value (the widest that fits); what is
+    left on the wider side follows as a second range with the same feedback.
+    """
+    ordered = sorted(wrongs, key=lambda w: Decimal(w.shown))
+    right_low, right_high = right.value - right.tolerance, right.value + right.tolerance
+    out: list[Range] = []
+    for i, w in enumerate(ordered):
+        v = Decimal(w.shown)
+        low, high = v - w.tolerance, v + w.tolerance
+        if i > 0:
+            low = max(low, (Decimal(ordered[i - 1].shown) + v) / 2)
+        if i + 1 < len(ordered):
+            high = min(high, (v + Decimal(ordered[i + 1].shown)) / 2)
+        if v > right.value:
+            low = max(low, right_high)
+        else:
+            high = min(high, right_low)
+        half = min(v - low, high - v)
+        if half <= 0:
+            continue
+        out.append(Range(v, half, w))
+        rest_low, rest_high = (v + half, high) if high - v > half else (low, v - half)
+        if rest_high > rest_low:
+            out.append(Range((rest_low + rest_high) / 2, (rest_high - rest_low) / 2, w))
+    return out
+
+
+def _hint_text(wrong: Wrong) -> str:
+    lead = "A common mistake gives this value." if len(wrong.hints) == 1 else "Common mistakes give this value."
+    return " ".join([lead, *wrong.hints])
 
 
 # ---------------------------------------------------------------- Moodle XML
@@ -366,7 +481,8 @@ def _ask(compiled: Compiled, answer: Answer) -> str:
 
 
 def _units(question: ET.Element, unit: str) -> None:
-    """Units optional (``showunits`` 0, ``unitgradingtype`` 0): a unit, if typed, must be this one."""
+    """Units optional (``showunits`` 0, ``unitgradingtype`` 0): the asked unit, or one of
+    :data:`OTHER_UNITS` that Moodle converts by its multiplier (units per asked unit)."""
     ET.SubElement(question, "unitgradingtype").text = "0"
     ET.SubElement(question, "unitpenalty").text = "0.1000000"
     ET.SubElement(question, "showunits").text = "0" if unit else "3"
@@ -374,9 +490,12 @@ def _units(question: ET.Element, unit: str) -> None:
     if not unit:
         return
     units = ET.SubElement(question, "units")
-    for name in [unit, "°"] if unit == "deg" else [unit]:
+    names = [(unit, Decimal(1)), ("°", Decimal(1))] if unit == "deg" else [(unit, Decimal(1))]
+    for name, multiplier in [*names, *OTHER_UNITS.get(unit, ())]:
         u = ET.SubElement(units, "unit")
-        ET.SubElement(u, "multiplier").text = "1"
+        ET.SubElement(u, "multiplier").text = (
+            _plain(multiplier.normalize()) if multiplier == 1 else f"{multiplier:.15g}"
+        )
         ET.SubElement(u, "unit_name").text = name
 
 
@@ -393,19 +512,25 @@ def moodle_xml(
     digits: int | None = None,
     category: str | None = None,
     with_mistakes: bool = True,
+    model: MistakeModel | None = None,
 ) -> str:
     """The variants as Moodle XML: a category, then one numerical question per variant.
 
     ``category`` defaults to ``$course$/derive/<problem name>``; ``result`` to
     :func:`default_result`. With ``with_mistakes`` each question also has the values
-    common mistakes give, as wrong answers whose feedback is the mistake's hint.
+    common mistakes give, as wrong answers whose feedback is the mistake's hint, in
+    the ranges of :func:`mistake_ranges` (``model``: a :class:`MistakeModel` to share).
     """
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
+    d = digits if digits is not None else p.digits
     name = _problem_name(compiled)
     if category is None:
         category = f"$course$/derive/{name}"
-    model = MistakeModel(compiled) if with_mistakes else None
+    if not with_mistakes:
+        model = None
+    elif model is None:
+        model = MistakeModel(compiled)
     quiz = ET.Element("quiz")
     cat = ET.SubElement(quiz, "question", {"type": "category"})
     _text(cat, "category", category)
@@ -414,7 +539,7 @@ def moodle_xml(
     symbol = latex_name(result)
     for v in variants:
         page = fill(compiled, v, "md", digits)
-        right = _answer(result, answers(compiled, v, digits)[result])
+        right = _answer(result, answers(compiled, v, digits)[result], d)
         q = ET.SubElement(quiz, "question", {"type": "numerical"})
         _text(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
         _text(q, "questiontext", _statement_html(statement_only(page)) + "\n" + _ask(compiled, right), format="html")
@@ -427,13 +552,15 @@ def moodle_xml(
         ET.SubElement(a, "text").text = _plain(right.value)
         _text(a, "feedback", f"<p>Right: \\({symbol} = {_esc(right.shown)}\\){_esc(unit)}.</p>", format="html")
         ET.SubElement(a, "tolerance").text = _plain(right.tolerance)
-        for wrong in model.wrong(v, right, digits) if model is not None else []:
+        for r in mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []:
             a = ET.SubElement(q, "answer", {"fraction": "0", "format": "moodle_auto_format"})
-            ET.SubElement(a, "text").text = _plain(Decimal(wrong.shown))
-            lead = "A common mistake gives this value." if len(wrong.hints) == 1 else "Common mistakes give this value."
-            body = "".join(f"<p>{_esc(h)}</p>" for h in wrong.hints)
+            ET.SubElement(a, "text").text = _plain(r.center)
+            lead = (
+                "A common mistake gives this value." if len(r.wrong.hints) == 1 else "Common mistakes give this value."
+            )
+            body = "".join(f"<p>{_esc(h)}</p>" for h in r.wrong.hints)
             _text(a, "feedback", f"<p>{lead}</p>{body}", format="html")
-            ET.SubElement(a, "tolerance").text = _plain(wrong.tolerance)
+            ET.SubElement(a, "tolerance").text = _plain(r.half_width)
         _units(q, right.unit)
     ET.indent(quiz, space="  ")
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(quiz, encoding="unicode") + "\n"
@@ -513,6 +640,27 @@ def generate(data):
     variant = VARIANTS[int(data.get("variant_seed", 0)) % len(VARIANTS)]
     data.setdefault("params", {{}}).update(variant["params"])
     data.setdefault("correct_answers", {{}})[RESULT] = variant["answer"]
+
+
+def grade(data):
+    """A wrong answer near a value a common mistake gives gets that mistake's hint, in place
+    of pl-number-input's "does not have precision" message (which rtol="0" gives every
+    wrong answer); the score stays the element's."""
+    part = data.get("partial_scores", {{}}).get(RESULT)
+    if not part or part.get("score", 0) >= 1:
+        return
+    variant = VARIANTS[int(data.get("variant_seed", 0)) % len(VARIANTS)]
+    hint = None
+    try:
+        x = float(data["submitted_answers"][RESULT])
+    except (KeyError, TypeError, ValueError):
+        x = None
+    if x is not None:
+        for low, high, text in variant["mistakes"]:
+            if low <= x <= high:
+                hint = text
+                break
+    part["feedback"] = hint
 '''
 
 
@@ -523,15 +671,27 @@ def prairielearn_files(
     result: str | None = None,
     digits: int | None = None,
     seed: int | None = None,
+    with_mistakes: bool = True,
+    model: MistakeModel | None = None,
 ) -> dict[str, str]:
-    """The files of a PrairieLearn question (name -> text): info.json, question.html, server.py."""
+    """The files of a PrairieLearn question (name -> text): info.json, question.html, server.py.
+
+    pl-number-input grades with ``rtol="0"`` and ``atol`` the tolerance, widened by
+    :data:`EDGE` so that the ends of the range are right in floating point; server.py's
+    ``grade()`` gives the mistakes' hints in the ranges Moodle uses."""
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
+    d = digits if digits is not None else p.digits
+    if not with_mistakes:
+        model = None
+    elif model is None:
+        model = MistakeModel(compiled)
     template = _statement_template(compiled)
     rows = []
     for v in variants:
         page = fill(compiled, v, "md", digits)
-        right = _answer(result, answers(compiled, v, digits)[result])
+        right = _answer(result, answers(compiled, v, digits)[result], d)
+        ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
         if template is not None:
             params = _params(compiled, v, template[1], digits)
         else:
@@ -540,11 +700,12 @@ def prairielearn_files(
             {
                 "derive_variant": v.number,
                 "derive_figures": right.figures,
-                "derive_atol": float(right.tolerance),
+                "derive_atol": float(right.tolerance + EDGE * max(abs(right.value), right.tolerance)),
                 "derive_solution": md_to_html(_solution_md(page)),
             }
         )
-        rows.append({"number": v.number, "params": params, "answer": float(right.value)})
+        mistake_rows = [[float(r.low), float(r.high), _hint_text(r.wrong)] for r in ranges]
+        rows.append({"number": v.number, "params": params, "answer": float(right.value), "mistakes": mistake_rows})
     statement = template[0] if template is not None else "{{{params.derive_statement}}}"
     r = compiled.solution.results[result]
     unit = answers(compiled, variants[0], digits)[result]["unit"] if variants else ""
@@ -610,7 +771,7 @@ class Exports:
 
         for folder in self.folders:
             if folder.exists() and not folder.is_dir():
-                raise InputError("exists and is not a folder", where=str(folder), field="--prairielearn")
+                raise InputError("exists and is not a folder", where=str(folder))
             folder.mkdir(parents=True, exist_ok=True)
         for path, text in self.files:
             write_atomic(path, text, inputs=inputs)
@@ -636,19 +797,26 @@ def build_exports(
     from derive.homework.variants import compile_problem, draw
 
     if moodle:
+        # the folder is made when the files are written (it may be the -o folder, not made yet)
         parent = Path(moodle).parent
-        if not parent.is_dir():
-            raise InputError("the folder for the output does not exist", where=moodle, field="--moodle")
+        for folder in (parent, *parent.parents):
+            if folder.exists() and not folder.is_dir():
+                raise InputError("a folder on the way is a file", where=str(folder), field="--moodle")
+        if Path(moodle).is_dir():
+            raise InputError("is a folder, not a file", where=moodle, field="--moodle")
     if prairielearn and Path(prairielearn).exists() and not Path(prairielearn).is_dir():
         raise InputError("exists and is not a folder", where=prairielearn, field="--prairielearn")
     compiled = compile_problem(problem, digits, "md")
     chosen = draw(compiled, count, seed)
     result = resolve_result(compiled, chosen, result, digits)
+    model = MistakeModel(compiled)  # shared: each variant's mistakes are worked out once
     out = Exports([], [])
     if moodle:
-        out.files.append((Path(moodle), moodle_xml(compiled, chosen, result=result, digits=digits)))
+        out.files.append((Path(moodle), moodle_xml(compiled, chosen, result=result, digits=digits, model=model)))
+        out.folders.append(Path(moodle).parent)
     if prairielearn:
-        pl = _folder(prairielearn, prairielearn_files(compiled, chosen, result=result, digits=digits, seed=seed))
+        files = prairielearn_files(compiled, chosen, result=result, digits=digits, seed=seed, model=model)
+        pl = _folder(prairielearn, files)
         out.files += pl.files
         out.folders += pl.folders
     return out

@@ -105,7 +105,9 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
         ]
         for block, claims in book.claims.items()
     }
-    results = {name: r.partial for name, r in solution.results.items()}
+    # a result that needs no varied given is a number already: ``value`` (an angle in degrees;
+    # its ``partial`` would be radians, atan2(x, 0) = pi/2)
+    results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
     result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
     check_fn = _checks(symbolic, symbols, results, prep)
     return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn)
@@ -202,12 +204,20 @@ def _places(claims: list[tuple[object, object]], args: list[float], digits: int 
     return places_that_add_up(sums, digits, extra, more=3)
 
 
+def _allowed(x: float, digits: int | None, extra: int) -> int:
+    """Significant figures a number at ``digits`` (+``extra``) shows."""
+    return len(Decimal(format_number(Decimal(repr(float(x))), digits, extra=extra).split("e")[0]).as_tuple().digits)
+
+
 def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
     if integers and abs(x) < 1e9:
         for k in range(3):  # an exact short number (20, 7.5, 0.25), as a given is printed
             scaled = x * 10**k
             if abs(scaled - round(scaled)) < 1e-9 * max(1.0, abs(scaled)):
-                return str(Decimal(round(scaled)).scaleb(-k)) if k else str(round(x))
+                exact = Decimal(round(scaled)).scaleb(-k) if k else Decimal(round(x))
+                if k and len(exact.normalize().as_tuple().digits) > _allowed(x, digits, extra):
+                    break  # exact, but more figures than an intermediate shows: 857.3, not 857.25
+                return str(exact) if k else str(round(x))
     d = Decimal(repr(float(x)))
     if places is not None:
         return format_fixed(d, places)
@@ -226,6 +236,7 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
     places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
     texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    angles = {compiled.givens[n].symbol for n in compiled.names if compiled.givens[n].unit == "deg"}
     out = []
     for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
         if isinstance(part, str):
@@ -235,6 +246,8 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
         kind = slot.kind
         if kind in ("given", "text"):
             text = texts[slot.expr]
+            if kind == "given" and slot.expr in angles:
+                text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
             out.append(rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text)
             continue
         if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
@@ -260,7 +273,22 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
             out.append(("-" if x < 0 else "") + text)
         else:
             out.append(text)
-    return "".join(out)
+    return _optional_lines("".join(out), places)
+
+
+def _optional_lines(page: str, places: dict[int, int | None]) -> str:
+    """The page with each optional line (a sum shown term by term) kept where its block's
+    numbers add up at fixed places, and dropped with its display where they do not."""
+    from derive.writers.view import OPTIONAL_BEGIN, OPTIONAL_END
+
+    begin, end = re.escape(OPTIONAL_BEGIN), re.escape(OPTIONAL_END)
+
+    def drop(m: re.Match[str]) -> str:
+        return "" if places.get(int(m.group(1))) is None else m.group(0)
+
+    display = rf"(?:\$\$\n|\\begin\{{equation\*\}}\n){begin}(\d+)%.*?{end}.*?(?:\$\$\n\n|\\end\{{equation\*\}}\n)"
+    page = re.sub(display, drop, page, flags=re.S)
+    return re.sub(rf"{begin}\d+%(.*?){end}", r"\1", page, flags=re.S)
 
 
 def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:

@@ -21,20 +21,24 @@ from derive.symbols import symbol, vector
 def answer(page: Page) -> list[Block]:
     """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
 
-    In each block the last boxed line that answers the question gets the notes'
-    "⟵ ANSWER" mark: the velocities when the question asks for them, else what it asks.
+    One line gets the notes' "⟵ ANSWER" mark: the last boxed line of the last block
+    that answers the question (the velocities when it asks for them, what it asks, a
+    "show that").
     """
     p = page.p
     velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
     asks_velocities = bool(velocities & set(p.find))
-    blocks = [
-        _marked(page, _velocities(page), asks_velocities),
-        _marked(page, _xy(page), asks_velocities),
-        _closed_forms(page),
-        _marked(page, _asked(page), True),
-        *(shown(page, s) for s in page.outcome.shown),
-        *(ranged(page, f) for f in page.outcome.ranges),
+    candidates = [  # (block, whether it answers the question)
+        (_velocities(page), asks_velocities),
+        (_xy(page), asks_velocities),
+        (_closed_forms(page), False),
+        (_asked(page), True),
+        *((shown(page, s), True) for s in page.outcome.shown),
+        *((ranged(page, f), False) for f in page.outcome.ranges),
     ]
+    # one mark, as in the notes: on the last boxed line of the last block that answers
+    last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
+    blocks = [_marked(page, b, True) if i == last else b for i, (b, _) in enumerate(candidates)]
     return [b for b in blocks if b is not None] + [energy(page)]
 
 
@@ -42,7 +46,7 @@ def shown(page: Page, s: Shown) -> Block:
     """A "show that" result: the closed form found, and whether it is the one to show."""
     rel = s.relation
     text: Text = ("Show that ", Math(sympy.Eq(rel.lhs, rel.rhs, evaluate=False)), ":")
-    line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds, mark=s.holds)
+    line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds)
     if s.holds:
         how = "" if s.how == "exactly" else f" (the two sides agree {s.how} of the letters' ranges)"
         return Block((*text, f" from the results above it follows, as required{how}."), (line,))
@@ -74,6 +78,10 @@ def ranged(page: Page, f: Found) -> Block:
 def as_number(x: sympy.Expr) -> sympy.Expr:
     """An energy as a decimal, so that it prints at the places the block's sum needs (812.5)."""
     return x if x.is_Integer and x == 0 else sympy.Float(x.evalf(30), 30)
+
+
+def _boxed(block: Block | None) -> bool:
+    return block is not None and any(ln.boxed for ln in block.lines)
 
 
 def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
@@ -281,12 +289,7 @@ def energy(page: Page) -> Block:
             "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
             "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
         }
-    forms["T_lost"] = (symbol("T_1"), -symbol("T_2"))
     lines = []
-    before, after, lost = (page.results[n].value for n in ("T_1", "T_2", "T_lost"))
-    # T_1 - T_2 with their numbers, so that the loss shown is their difference; the
-    # three then carry the places at which they add up
-    difference = before is not None and after is not None and lost is not None and after != 0
     for name, terms in forms.items():
         r = page.results[name]
         sides = [Side((r.symbol,)), Side(terms)]
@@ -295,11 +298,9 @@ def energy(page: Page) -> Block:
                 sides.append(Side((r.closed,)))
             sides.append(Side((page.value_of(r.symbol),), "result"))
         else:
-            if name == "T_lost" and difference:
-                sides.append(Side((as_number(before), -as_number(after)), "numeric"))
-            sides.append(Side((as_number(r.value),), "numeric") if difference else Side((r.value,), "result"))
+            sides.append(Side((r.value,), "result"))
         lines.append(Eqn(tuple(sides), unit=r.unit))
-    sums = (((as_number(before), -as_number(after)), as_number(lost)),) if difference else ()
+    lines.append(_loss_line(page))
     r1, rl = page.results["T_1"], page.results["T_lost"]
     if r1.value is not None and rl.value is not None and r1.value != 0:
         frac = rl.value / r1.value * 100
@@ -320,4 +321,33 @@ def energy(page: Page) -> Block:
         Math(sympy.Eq(page.e, 1)),
         ", so it is never used to find the velocities.",
     )
-    return Block(text, tuple(lines), sums, answer_figures=True)
+    return Block(text, tuple(lines))
+
+
+def _loss_line(page: Page) -> Eqn:
+    """The energy lost. With letters, as T_1 - T_2; with numbers, from the loss's own
+    closed form (half the reduced mass times (1 - e^2) times the closing speed squared),
+    so that it is not read as the difference of T_1 and T_2 rounded (813 - 491 != 321)."""
+    r = page.results["T_lost"]
+    if r.value is None and r.partial.free_symbols - page.varied:  # letters, not a variant's open numbers
+        sides = [Side((r.symbol,)), Side((symbol("T_1"), -symbol("T_2")))]
+        if r.closed != r.partial and r.partial.free_symbols - page.varied:
+            sides.append(Side((r.closed,)))
+        sides.append(Side((page.value_of(r.symbol),), "result"))
+        return Eqn(tuple(sides), unit=r.unit)
+    p, e = page.p, page.e
+    a, b = (page.nm.A1n, page.nm.B1n) if p.oblique else (symbol("v_A1"), symbol("v_B1"))
+
+    def loss(a: sympy.Expr, b: sympy.Expr) -> sympy.Expr:
+        if p.fixed_B:
+            return sympy.Mul(HALF, page.m_A, 1 - e**2, a**2, evaluate=False)
+        two_sum = sympy.Mul(2, sympy.Add(page.m_A, page.m_B), evaluate=False)
+        reduced = sympy.Mul(page.m_A, page.m_B, sympy.Pow(two_sum, -1, evaluate=False), evaluate=False)
+        return sympy.Mul(reduced, 1 - e**2, sympy.Add(a, -b, evaluate=False) ** 2, evaluate=False)
+
+    sides = [Side((r.symbol,)), Side((loss(a, b),))]
+    numbers = loss(page.givens(a), page.givens(b))
+    if page.has_values(numbers) and not (numbers.free_symbols - set(page.outcome.values) - page.varied):
+        sides.append(Side((numbers,), "values"))  # every letter has its number (not a solved e)
+    sides.append(Side((page.value_of(r.symbol),), "result"))
+    return Eqn(tuple(sides), unit=r.unit)

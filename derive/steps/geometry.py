@@ -87,7 +87,7 @@ def _xy_lines(page: Page, motion: Motion, cn: sympy.Symbol, ct: sympy.Symbol) ->
         sides = [Side((s_,)), Side((expr,))]
         if page.has_values(expr):
             sides.append(Side((expr,), "values"))
-        sides.append(Side((expr,), "result"))
+        sides.append(Side((sympy.expand(page.num(expr)),), "result"))  # 0, not 0 v_A1
         lines.append(Eqn(tuple(sides), unit=page.unit_v))
     n_form = (vx * sympy.cos(phi), vy * sympy.sin(phi))
     t_form = (-vx * sympy.sin(phi), vy * sympy.cos(phi))

@@ -144,6 +144,25 @@ def collected(
     return collect(page.num(lhs), page.num(rhs), order, page.unknowns)
 
 
+def _collected_line(page: Page, terms: tuple[sympy.Expr, ...], const: tuple[sympy.Expr, ...], number: int) -> Eqn:
+    """(3) or (4) collected: unknown terms = constant; ``v_A2 = -1.6 m/s`` when one unknown is left."""
+    unit = alone(page, terms, const)
+    return Eqn(
+        (Side(terms, "numeric"), Side(const, "result" if unit else "numeric")),
+        tag=page.tags(number),
+        implies=True,
+        unit=unit,
+    )
+
+
+def alone(page: Page, terms: tuple[sympy.Expr, ...], const: tuple[sympy.Expr, ...]) -> str | None:
+    """The unit of a collected line that reads ``unknown = number`` (v_A2 = -1.6 m/s), else None."""
+    if len(terms) != 1 or not isinstance(terms[0], sympy.Symbol) or any(c.free_symbols - page.varied for c in const):
+        return None
+    r = page.results.get(terms[0].name)
+    return r.unit if r is not None and r.unit != "deg" else None
+
+
 def momentum_n(page: Page) -> tuple[Block, tuple[tuple[sympy.Expr, ...], sympy.Expr], sympy.Expr]:
     """(3): n-momentum of A + B, written out and collected; a shared mass cancels."""
     nm, m_A, m_B = page.nm, page.m_A, page.m_B
@@ -168,7 +187,7 @@ def momentum_n(page: Page) -> tuple[Block, tuple[tuple[sympy.Expr, ...], sympy.E
             lines.append(Eqn((Side(lhs_num, "numeric"), Side(g_rhs, "values")), optional=True))
             sums.append((lhs_num, sympy.Add(*lhs_num)))
     terms, const = collected(page, sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
-    lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag=page.tags(3), implies=True))
+    lines.append(_collected_line(page, terms, const, 3))
     block = Block((INTERNAL,), tuple(lines), tuple(sums))
     return block, (terms, const[0]), page.num(sympy.Add(*g_rhs) - sympy.Add(*g_lhs))
 
@@ -192,7 +211,7 @@ def restitution(page: Page) -> tuple[Block, sympy.Expr, sympy.Expr]:
         lines.append(Eqn((Side((g_lhs,), "values"), Side(g_sep, "values"))))
     order = (nm.A2n,) if page.p.fixed_B else (nm.B2n, nm.A2n)
     terms, const = collected(page, sympy.Add(*g_sep), e * sympy.Add(*g_app), order)
-    lines.append(Eqn((Side(terms, "numeric"), Side(const, "numeric")), tag=page.tags(4), implies=True))
+    lines.append(_collected_line(page, terms, const, 4))
     text: Text = (IMPACT_RULE,)
     ev = page.numeric.get(e)
     if ev == 1:

@@ -131,7 +131,7 @@ class Page:
             if r.unit != "deg" and any(g.decimal for g in self.p.givens) and r.partial.free_symbols & self.letters:
                 shown = evaluate(r.closed, self.p, decimals=True)  # 0.475 v_A1 √2, not 19 v_A1 √2/40
                 trig = shown.has(sympy.sin, sympy.cos, sympy.tan)  # simplify can take minutes on these
-                return sympy.simplify(shown) if sympy.count_ops(shown) < 150 and not trig else shown
+                return sympy.simplify(shown) if sympy.count_ops(shown) < 40 and not trig else shown
             return r.partial
         return self.num(self.imp.closed[s])
 

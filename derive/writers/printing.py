@@ -28,7 +28,7 @@ from derive.numbers import (
     structural,
     to_decimal,
 )
-from derive.problem.units import latex_unit
+from derive.problem.units import latex_unit, parse_unit
 from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
 
@@ -74,6 +74,7 @@ class Style:
     hide_optional: bool = False
     decimal: frozenset[sympy.Symbol] = frozenset()
     letters: frozenset[sympy.Symbol] = frozenset()
+    letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -96,6 +97,11 @@ def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
     if short_decimal(value):
         return power_latex(as_written(value))
     return number_latex(value, digits, extra)
+
+
+def _figures(x: Decimal) -> int:
+    """Significant figures of a decimal as written (trailing zeros of a whole number not counted)."""
+    return len(x.normalize().as_tuple().digits) if x else 1
 
 
 def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
@@ -240,6 +246,8 @@ class StepPrinter(LatexPrinter):
 
     def _print_Rational(self, expr: sympy.Rational) -> str:
         if self._decimal_rationals and not self._round_integers and self._as_decimal(expr):
+            if _figures(to_decimal(expr)) > _figures(Decimal(format_number(expr, self._digits, extra=self._extra))):
+                return number_latex(expr, self._digits, self._extra)  # exact, but too long: 9.435, not 9.43536
             return power_latex(as_written(expr))
         return super()._print_Rational(expr)
 
@@ -421,6 +429,13 @@ def latex_expr(
         expr = exactify(substitute(expr, values))
         extra = 0 if mode == "result" else extra
         decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
+        # a fraction no textbook writes (4225 v^2/724808, from g = 9.8) as a decimal: 0.005829 v^2
+        long = {
+            r: sympy.Float(r, PRECISION)
+            for r in expr.atoms(sympy.Rational)
+            if not short_decimal(r) and (r.q > (12 if decimal else 1000) or abs(r.p) > 10**4)
+        }
+        expr = expr.xreplace(long)
         if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
             printer = StepPrinter(fractions=True)
             rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
@@ -533,6 +548,50 @@ def _slot_term(
     return token + " " + printer.doprint(rest)
 
 
+def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
+    """The unit a value in letters still needs: none where its letters give its dimension
+    (v_A2 = 0.6 u), the whole unit where they are pure numbers (3.5 + 3.5 e m/s), the rest
+    where one letter gives part of it (T_1 = 22 m J/kg, m a mass in kg)."""
+    last = eqn.sides[-1]
+    if not eqn.unit or eqn.unit in ("%", "deg") or last.mode == "symbolic" or len(last.terms) != 1:
+        return None
+    term = last.terms[0].xreplace(dict(style.values))
+    letters = term.free_symbols - _UNITLESS - style.varied
+    if not letters or not letters <= style.letters | set(style.letter_units):
+        return None
+    dims = {s: parse_unit(style.letter_units[s]).dim if s in style.letter_units else (0, 0, 0, 0) for s in letters}
+    have = _dimension(term, dims)
+    if have is None or have == parse_unit(eqn.unit).dim:
+        return None
+    if not any(have):
+        return eqn.unit
+    alone = [s for s in letters if dims[s] == have and not any(c in style.letter_units[s] for c in "/*^")]
+    return f"{eqn.unit}/{style.letter_units[alone[0]]}" if alone and "/" not in eqn.unit else None
+
+
+def _dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, tuple[int, ...]]) -> tuple[int, ...] | None:
+    """The dimension of a value in letters of known dimensions (None where it cannot tell)."""
+    if expr.is_number:
+        return (0, 0, 0, 0)
+    if isinstance(expr, sympy.Symbol):
+        return tuple(dims[expr]) if expr in dims else None
+    if isinstance(expr, sympy.Add):
+        found = {_dimension(a, dims) for a in expr.args if not a.is_number}
+        return found.pop() if len(found) == 1 else None
+    if isinstance(expr, sympy.Mul):
+        total = [0, 0, 0, 0]
+        for a in expr.args:
+            d = _dimension(a, dims)
+            if d is None:
+                return None
+            total = [t + x for t, x in zip(total, d, strict=True)]
+        return tuple(total)
+    if isinstance(expr, sympy.Pow) and expr.exp.is_Rational:
+        d = _dimension(expr.base, dims)
+        return None if d is None or any(x * expr.exp % 1 for x in d) else tuple(int(x * expr.exp) for x in d)
+    return None
+
+
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
     printed: list[str] = []
@@ -545,12 +604,12 @@ def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
     )
-    if eqn.unit and not symbolic:
-        body += (
-            r"\ \%"
-            if eqn.unit == "%"
-            else (latex_unit(eqn.unit) if eqn.unit == "deg" else r"\ " + latex_unit(eqn.unit))
-        )
+    unit = eqn.unit if not symbolic else _unit_beside_letters(eqn, style)
+    if unit and symbolic and isinstance(eqn.sides[-1].terms[0].xreplace(dict(style.values)), sympy.Add):
+        head, _, tail = body.rpartition(" = ")
+        body = (head + " = " if head else "") + r"\left(" + tail + r"\right)"  # (3.5 + 3.5 e) m/s
+    if unit:
+        body += r"\ \%" if unit == "%" else (latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit))
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:

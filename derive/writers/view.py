@@ -19,7 +19,7 @@ import sympy
 from derive import escape
 from derive.errors import InputError
 from derive.numbers import format_number
-from derive.problem import Given
+from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
 from derive.steps.model import Math, Solution
@@ -156,6 +156,10 @@ _FIND_WORDS = {
 }
 
 
+#: Around an optional line of a compiled variant page, for the variant to keep or drop.
+OPTIONAL_BEGIN, OPTIONAL_END = "%%derive-optional:", "%%derive-end%%"
+
+
 def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
     """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
     blocks = []
@@ -166,6 +170,8 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
             if eqn.optional and bstyle.hide_optional:
                 continue
             body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
+            if eqn.optional and bstyle.block is not None:  # a variant's page drops it where it cannot add up
+                body = f"{OPTIONAL_BEGIN}{bstyle.block}%{body}{OPTIONAL_END}"
             if eqn.mark:
                 body += ANSWER_MARK
             bare = body.removeprefix(IMPLIES)
@@ -187,12 +193,19 @@ def view(
     *,
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
+    outer_letters: dict[sympy.Symbol, str] | None = None,
+    falls: bool = False,
+    known: dict[sympy.Symbol, sympy.Expr] | None = None,
+    plot: bool = False,
 ) -> dict[str, Any]:
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
 
     With ``slots``, every number that depends on a ``varied`` given is left open
-    (a token), so that one compiled page serves every homework variant.
+    (a token), so that one compiled page serves every homework variant. ``falls``
+    and ``known`` are for an impact inside a chain: drawn with n pointing down, and
+    the chain's numbers for symbols the impact leaves open. ``plot`` adds the plot
+    of the outcome against e (``plot_svg``, ``plot_tikz``).
     """
     p = solution.problem
     style = Style(
@@ -204,16 +217,17 @@ def view(
         slots=slots,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
+        letter_units={**(outer_letters or {}), **letter_units(p)},
     )
     stages = []
     for stage in solution.stages:
         blocks = blocks_view(stage.blocks, style)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
-            fig = figure.describe(solution, after=stage.figure == "after")
+            fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
-            entry["figure_caption"] = fig.title + ": arrows to scale with speed"
+            entry["figure_caption"] = f"{fig.title}: {fig.caption}"
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
@@ -231,10 +245,18 @@ def view(
         if extra_words:
             words += "; " + ", ".join(extra_words)
         find = [("text", words[0].upper() + words[1:] + ".")]
+    plot_svg = plot_tikz = ""
+    if plot:
+        from derive.writers import plot as plots
+
+        chart = plots.chart(p)
+        plot_svg, plot_tikz = plots.to_svg(chart), plots.to_tikz(chart)
     return {
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
+        "plot_svg": plot_svg,
+        "plot_tikz": plot_tikz,
         "statement": _statement(p, style),
         "find": find,
         "givens": givens,
@@ -379,12 +401,21 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         sol.angles,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
+        letter_units=letter_units(p),
     )
     stages = []
+    falls = figure.chain_falls(sol) if figures else {}
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:
-            v = view(st.part, digits, figures=figures)
+            v = view(
+                st.part,
+                style.digits,
+                figures=figures,
+                outer_letters=letter_units(p),
+                falls=falls.get(st.number, False),
+                known=sol.values,
+            )
             carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
             stages.append(
                 {
@@ -472,16 +503,23 @@ def _chain_json(sol: Any, digits: int | None) -> str:
     return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
 
 
-def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True) -> str:
+def render(
+    solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True, plot: bool = False
+) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
     ``digits`` overrides the significant figures (default: the problem's, else
-    the textbook rule); ``figures`` False leaves the figures out. For a PDF see
+    the textbook rule); ``figures`` False leaves the figures out; ``plot`` adds the
+    plot of the outcome against e after the answer. For a PDF see
     :func:`derive.pdf.build_pdf`.
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
     if solution.is_chain:
+        if plot:
+            raise InputError(
+                "a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot"
+            )
         if fmt == "json":
             return _chain_json(solution, digits)
         if fmt == "md":
@@ -494,7 +532,7 @@ def render(solution: Solution, fmt: str = "md", *, digits: int | None = None, fi
         return to_json(solution, digits)
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    data = view(solution, digits, figures)
+    data = view(solution, digits, figures, plot=plot and fmt != "json")
     if fmt == "html":
         return _html(data)
     if fmt == "md":
@@ -532,3 +570,8 @@ def plain_answers(solution: Solution) -> list[str]:
             unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
             out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
     return out
+
+
+def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
+    """The unit of each given kept as a letter (m in kg), for the unit a value in it still needs."""
+    return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}

@@ -1,0 +1,84 @@
+"""A number judged at the precision it is written with (or within a relative tolerance).
+
+8.4 is right for 8.398 (two figures), and so are 8.40 and 8.41: ±1 in the last
+digit written allows for rounded intermediates. Decimals inside a formula or an
+equation are allowed the same slack (:func:`literal_tolerance`).
+"""
+
+from __future__ import annotations
+
+import re
+from decimal import ROUND_HALF_UP, Decimal, InvalidOperation, localcontext
+
+import sympy
+
+from derive.checking.numeric import pct_plain
+from derive.numbers import to_decimal
+
+_LITERAL = re.compile(r"[A-Za-z_][A-Za-z0-9_]*|((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)")
+
+
+def figures(d: Decimal) -> int:
+    """The significant figures written (``8.40`` has 3; zero has none)."""
+    digits = d.as_tuple().digits
+    return len(digits) if d != 0 else 0
+
+
+def last_place(d: Decimal) -> Decimal:
+    """One unit in the last place written (0.01 for 8.40)."""
+    return Decimal(1).scaleb(d.as_tuple().exponent)
+
+
+def round_figures(d: Decimal, n: int) -> Decimal:
+    """``d`` rounded half up to ``n`` significant figures (9.996 to 3 is 10.0)."""
+    r = d.quantize(Decimal(1).scaleb(d.adjusted() - n + 1), rounding=ROUND_HALF_UP)
+    if r.adjusted() != d.adjusted():
+        r = r.quantize(Decimal(1).scaleb(r.adjusted() - n + 1), rounding=ROUND_HALF_UP)
+    return r
+
+
+def judge(u: Decimal, x: sympy.Expr, tolerance: sympy.Rational | None) -> bool:
+    """Whether the written ``u`` is the exact ``x`` at the figures written (±1 in the
+    last digit), or within the relative ``tolerance`` where one is given."""
+    xd = to_decimal(x)
+    with localcontext() as ctx:
+        ctx.prec = 60
+        if tolerance is not None:
+            tol = to_decimal(tolerance)
+            return abs(u - xd) <= tol * abs(xd) if xd != 0 else abs(u) <= tol
+        if u == 0 or xd == 0:  # a zero is judged at the last place written
+            return u == 0 if xd == 0 else abs(xd) * 2 < last_place(u)
+        try:
+            r = round_figures(xd, figures(u))
+        except InvalidOperation:
+            return False
+        # ±1 in the last digit the user wrote (not of the rounded value: "1" is not 10.65)
+        return abs(u - r) <= last_place(u)
+
+
+def method(u: Decimal, tolerance: sympy.Rational | None) -> str:
+    """How :func:`judge` decided, in words."""
+    if tolerance is not None:
+        return f"within the relative tolerance of {pct_plain(tolerance)}"
+    n = figures(u)
+    if n == 0:
+        return "as written (zero, to the last place written)"
+    return f"at the {n} significant figure{'s' if n > 1 else ''} written (±1 in the last digit)"
+
+
+def literal_tolerance(text: str, data: set[sympy.Rational]) -> float:
+    """Relative slack for the decimals written in ``text``: ±1 in the last digit of each,
+    except numbers with one significant figure and numbers that are the problem's data
+    as given (0.6 for e = 0.6); at most 5 %."""
+    tol = 0.0
+    for m in _LITERAL.finditer(text):
+        tok = m.group(1)
+        if not tok or not re.search(r"[.eE]", tok):
+            continue
+        if len(tok) > 30 or abs(Decimal(tok).adjusted()) > 30:
+            continue  # the parser has refused such numbers already
+        d = Decimal(tok)
+        if d == 0 or figures(d) < 2 or sympy.Rational(tok) in data:
+            continue  # one figure (0.5, 0.6) is data, not a rounded intermediate
+        tol += float(last_place(d) / abs(d))
+    return min(tol, 0.05)

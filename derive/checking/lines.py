@@ -1,0 +1,315 @@
+"""A typed derivation judged line by line: true, the first slip, carried, or a further slip.
+
+Each relation :mod:`.derivation` reads is put to the problem's true values (every
+given, and the velocities after the impact): true lines are correct. The first
+false line is the slip; the mistake that explains it is named (the rules of
+:mod:`.equation`, or the number judge for ``v_A2n = -1.11``), and the equations
+are solved again with that line in place of the one it stands for (the closest of
+(1)-(4)). A later line that is false for the problem but true in that world is a
+carried error, not a new mistake; one false in both is a further slip, which joins
+the first in the world. A slip with no unknowns (``79.2 - 59.5 = 29.7``) carries
+its wrong number instead.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+import sympy
+
+from derive.checking import mistakes
+from derive.checking.context import Context
+from derive.checking.derivation import MAX_LINES, Line, read_derivation
+from derive.checking.entries import Entry
+from derive.checking.equation import judge, relation
+from derive.checking.figures import literal_tolerance
+from derive.checking.mistakes import EQUATION_TITLES
+from derive.checking.number import number_item
+from derive.checking.numeric import listed, number_of
+from derive.checking.relations import Point, Values, coefficients, satisfied, shown
+from derive.checking.report import Diagnosis, Item
+from derive.errors import InputError
+from derive.numbers import format_number
+from derive.problem import units
+from derive.problem.expr import ParseError, parse
+
+TRUE = "substituting the correct values"
+_NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
+#: The notes' spellings of names a problem may spell otherwise (tried only where unknown).
+ALIASES = {"v_A": "v_A1", "v_B": "v_B1", "theta_1": "theta", "theta_2": "theta_A2", "theta": "theta_1"}
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One ``=`` of a line: its sides as written and in the unknowns (everything known in)."""
+
+    text: str
+    left: sympy.Expr
+    right: sympy.Expr
+    tol: float
+
+    @property
+    def difference(self) -> sympy.Expr:
+        return self.left - self.right
+
+
+def derivation_items(ctx: Context, text: str) -> list[Item]:
+    """One item per relation of the derivation ``text``."""
+    lines = read_derivation(text)
+    if not lines:
+        return [Item("line", "", "", "error", "", "The derivation has no relation to check (no line with '=').")]
+    trace = Trace(ctx)
+    items = [trace.item(line) for line in lines[:MAX_LINES]]
+    if len(lines) > MAX_LINES:
+        rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
+        items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
+    return items
+
+
+class Trace:
+    """The state of a derivation read so far: the student's equations and their solution."""
+
+    def __init__(self, ctx: Context) -> None:
+        base = mistakes.correct(ctx.solution)
+        if base is None:
+            raise InputError("this problem's equations cannot be set up for checking", field="--derivation")
+        self.ctx, self.base, self.U = ctx, base, base.unknowns
+        syms = set().union(*(x.free_symbols for x in (*base.post.values(), *base.equations.values()))) - set(self.U)
+        self.pts: list[Point] = ctx.sampler().points(syms, 3) if syms else [{}]
+        self.truth = [{u: base.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
+        self.equations = dict(base.equations)
+        self.world: list[Values] | None = None
+        self.slips: list[int] = []  # the line numbers of the slips
+        self.named: dict[int, set[str]] = {}  # the mistakes named at each slip
+        self.replaced: list[tuple[int, int]] = []  # (line number, the equation it took the place of)
+        self.wrong_number: tuple[str, sympy.Expr] | None = None
+        self.names = _with_aliases(ctx.equation_names())
+
+    # one line ----------------------------------------------------------------
+    def item(self, line: Line) -> Item:
+        """The verdict on ``line``."""
+        try:
+            pairs = self.pairs(line.sides)
+        except ParseError as exc:
+            return self._item(line, "error", f"Could not be read: {exc}.", "")
+        answer = self._answer(line)
+        if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
+            return self._correct(line, pairs, answer)
+        if self.world is not None and self.holds(pairs, self.world):
+            return self._carried(line)
+        if self.wrong_number is not None and self._carries_number(line):
+            self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
+            return self._carried(line)
+        return self._slip(line, pairs, answer)
+
+    def pairs(self, sides: tuple[str, ...]) -> list[Pair]:
+        """Each ``=`` of the sides, read in the problem's names."""
+        exprs = [self.ctx.in_unknowns(parse(s, self.names).expr) for s in sides]
+        out = []
+        for i in range(len(sides) - 1):
+            text = f"{sides[i]} = {sides[i + 1]}"
+            out.append(Pair(text, exprs[i], exprs[i + 1], max(literal_tolerance(text, self.ctx.data), 1e-9)))
+        return out
+
+    def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
+        """Whether every pair holds for ``values`` (at each sample point), within the
+        precision of the decimals written."""
+        return all(_holds(p, values, self.pts, self.U) for p in pairs)
+
+    # verdicts ----------------------------------------------------------------
+    def _correct(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
+        notes = ()
+        if self.world is not None and not self.holds(pairs, self.world):
+            notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
+        if answer is not None:
+            return self._item(line, "correct", answer.message, answer.method, notes=notes, expected=answer.expected)
+        return self._item(line, "correct", "True for this problem.", TRUE, notes=notes)
+
+    def _carried(self, line: Line) -> Item:
+        replaced = [f"line {n} in place of ({j})" for n, j in self.replaced]
+        how = f"solving again with {listed(replaced)}" if replaced else "with the wrong number carried"
+        msg = f"Right given {self._slips_named()}: a carried error, not a new mistake."
+        return self._item(line, "carried", msg, how)
+
+    def _slip(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
+        bad = next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
+        diags, j, detail = self._explain(line, bad, answer)
+        again = [n for n, names in self.named.items() if names & {d.mistake for d in diags}]
+        if again:
+            lead = f"False: the same mistake as in line {again[0]}, made again"
+        elif self.slips:
+            lead = f"False, and not explained by {self._slips_named()}: a further slip"
+        else:
+            lead = "The first line that is false for this problem"
+        self.named[line.number] = {d.mistake for d in diags}
+        self._replace(line, bad, j)
+        expected = answer.expected if answer is not None else ""
+        if not expected and j is not None and bad.difference.free_symbols & set(self.U):
+            nm = self.ctx.model.nm
+            expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
+        return self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
+
+    def _explain(self, line: Line, bad: Pair, answer: Item | None) -> tuple[tuple[Diagnosis, ...], int | None, str]:
+        """The mistakes that explain the slip ``bad``, the equation it stands for, and the
+        rest of the sentence that reports it."""
+        if not bad.difference.free_symbols & set(self.U):
+            return (), None, ": " + self._arithmetic(bad)
+        label = line.tag if line.tag in ("1", "2", "3", "4") else ""
+        v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
+        diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
+        together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
+        j = v.equation if v.equation is not None else self._closest(bad.difference)
+        if not diags:
+            return diags, j, ". No common mistake reproduces it."
+        said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
+        if j is None or answer is not None:
+            return diags, j, f": it {said}."
+        return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}."
+
+    def _arithmetic(self, bad: Pair) -> str:
+        left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
+        if left is None or right is None:
+            return "Its two sides are not equal."
+        sides = bad.text.split(" = ")
+        left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
+        if _NUMBER_SIDE.match(sides[1]):
+            self.wrong_number = (sides[1], bad.left)
+        elif _NUMBER_SIDE.match(sides[0]):
+            self.wrong_number = (sides[0], bad.right)
+        right_text = sides[1] if _NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
+        return f"{left_text} is {format_number(left.real, 4)}, not {right_text} (an arithmetic slip)."
+
+    # the world of the slips ------------------------------------------------
+    def _replace(self, line: Line, bad: Pair, j: int | None = None, slip: bool = True) -> None:
+        """Record ``bad`` of ``line`` (a slip, or a line that carries a wrong number on):
+        in place of (j) when it has unknowns, and solve the equations again."""
+        F = bad.difference
+        if F.free_symbols & set(self.U):
+            j = j if j is not None else self._closest(F)
+            if j is not None:
+                self.equations[j] = F
+                self.replaced.append((line.number, j))
+                world = _solve(self.equations, self.U, self.pts, self.world or self.truth)
+                if world is not None:
+                    self.world = world
+        if slip:
+            self.slips.append(line.number)
+
+    def _closest(self, F: sympy.Expr) -> int | None:
+        """The equation ``F`` most likely stands for: the most alike of (1)-(4) in its unknowns
+        whose place it can take (the others with it still determine the velocities)."""
+        cf = coefficients(F.xreplace(self.pts[0]), self.U)
+        if not cf:
+            return None
+        best, score = None, -1.0
+        for j, G in self.equations.items():
+            cg = coefficients(G.xreplace(self.pts[0]), self.U)
+            if not cg:
+                continue
+            s = _alike(cf, cg)
+            trial = {**self.equations, j: F}
+            if s > score and _solve(trial, self.U, self.pts[:1], self.truth[:1]) is not None:
+                best, score = j, s
+        return best
+
+    def _carries_number(self, line: Line) -> bool:
+        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
+        assert self.wrong_number is not None
+        wrong, right = self.wrong_number
+        value = number_of(right.xreplace(self.pts[0]))
+        if value is None:
+            return False
+        pattern = re.compile(rf"(?<![\w.]){re.escape(wrong.lstrip('+-'))}(?![\w.])")
+        fixed = tuple(pattern.sub(f"({value.real!r})", s) for s in line.sides)
+        if fixed == line.sides:
+            return False
+        try:
+            return self.holds(self.pairs(fixed), self.truth)
+        except ParseError:
+            return False
+
+    def _slips_named(self) -> str:
+        numbers = [str(n) for n in self.slips]
+        return f"the slip in line {numbers[0]}" if len(numbers) == 1 else f"the slips in lines {listed(numbers)}"
+
+    # answers -----------------------------------------------------------------
+    def _answer(self, line: Line) -> Item | None:
+        """``v_A2n = -1.11``: a result's name = a number, judged as an answer is (figures
+        written, rounding of intermediates, the mistakes that give it)."""
+        if len(line.sides) != 2 or line.sides[0] not in self.ctx.results:
+            return None
+        m = _NUMBER_SIDE.match(line.sides[1])
+        if not m:
+            return None
+        sign, number, unit = m.groups()
+        number = ("-" if sign == "-" else "") + number
+        r = self.ctx.results[line.sides[0]]
+        try:
+            u = units.parse_unit(unit) if unit else None
+            return number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
+        except InputError:
+            return None
+
+    def _item(
+        self,
+        line: Line,
+        status: str,
+        message: str,
+        method: str,
+        notes: tuple[str, ...] = (),
+        diagnosis: tuple[Diagnosis, ...] = (),
+        expected: str = "",
+    ) -> Item:
+        return Item(
+            "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
+        )
+
+
+def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
+    for pt, vals in zip(pts, values, strict=True):
+        left = number_of(p.left.xreplace(pt).xreplace(vals))
+        right = number_of(p.right.xreplace(pt).xreplace(vals))
+        if left is None or right is None:
+            return False
+        scale = max(abs(left), abs(right))
+        if abs(left - right) > 2 * p.tol * scale and not satisfied(p.difference, vals, U, [pt], p.tol):
+            return False
+    return True
+
+
+def _alike(a: dict, b: dict) -> float:
+    """|cos| of the angle between two coefficient vectors (their linear parts)."""
+    keys = [m for m in set(a) | set(b) if sum(m) == 1]
+    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
+    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
+    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
+    return abs(dot) / (na * nb) if na and nb else 0.0
+
+
+def _solve(
+    equations: dict[int, sympy.Expr], U: tuple[sympy.Symbol, ...], pts: list[Point], near: list[Values]
+) -> list[Values] | None:
+    """The velocities that satisfy ``equations`` at each point (the root nearest ``near``)."""
+    out = []
+    for pt, guide in zip(pts, near, strict=True):
+        eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
+        try:
+            roots = [r for r in sympy.solve(eqs, list(U), dict=True) if set(r) == set(U)]
+        except (NotImplementedError, ValueError, TypeError):
+            return None
+        if not roots:
+            return None
+        target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
+        roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
+        out.append(roots[0])
+    return out
+
+
+def _with_aliases(names: dict) -> dict:
+    """The problem's names, and the notes' spellings of those that are missing (v_A for v_A1)."""
+    out = dict(names)
+    for alias, name in ALIASES.items():
+        if alias not in out and name in names:
+            out[alias] = names[name]
+    return out

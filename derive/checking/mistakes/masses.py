@@ -1,0 +1,46 @@
+"""Mistakes in the masses: swapped, or a weight used as a mass."""
+
+from __future__ import annotations
+
+from derive.checking.mistakes.equations import Model
+from derive.checking.mistakes.records import Variant, mistake
+
+
+@mistake(
+    "masses_swapped",
+    "masses swapped",
+    "m_A and m_B were exchanged (in the momentum of the system and the kinetic energies).",
+    (3,),
+    "the masses in the n-momentum of the system",
+    "has the masses swapped",
+)
+def masses_swapped(model: Model) -> Variant | None:
+    """m_A and m_B exchanged."""
+    if model.problem.fixed_B or model.is_zero(model.m_A - model.m_B):
+        return None
+    return Variant(masses=(model.m_B, model.m_A))
+
+
+@mistake(
+    "weight_as_mass",
+    "weight used as mass",
+    "A weight was used as the mass, without dividing by g (m = W/g). With both masses off by the same "
+    "factor the velocities can come out right; the kinetic energies and the impulse do not.",
+    (3,),
+    "the masses, m = W/g (in the momentum and the kinetic energies)",
+    "uses the weights as masses",
+)
+def weight_as_mass(model: Model) -> Variant | None:
+    """Each mass given as W/g put in as W."""
+    p = model.problem
+    values = {}
+    for b in "AB":
+        try:
+            m, w = p.given(f"m_{b}"), p.given(f"W_{b}")
+        except KeyError:
+            continue
+        if w.value is not None and m.value is not None and not m.unknown:
+            values[m.symbol] = w.value
+    if not values:
+        return None
+    return Variant(values=values)

@@ -1,0 +1,112 @@
+"""The mistakes solved for one solution, cached: the correct outcome, each mistake's, each pair's."""
+
+from __future__ import annotations
+
+import itertools
+import weakref
+
+from derive.checking.mistakes.equations import Model, point
+from derive.checking.mistakes.pairs import MAX_PAIRS, combine
+from derive.checking.mistakes.records import Outcome
+from derive.checking.mistakes.registry import REGISTRY
+from derive.steps.model import Solution
+
+
+class _Entry:
+    """What is cached for one solution: its model, the correct outcome, the mistakes' outcomes."""
+
+    def __init__(self, solution: Solution) -> None:
+        self.ref = weakref.ref(solution)
+        self.model = Model(solution)
+        self.base = self.model.outcome(self.model.base())
+        self.found: list[Outcome] | None = None
+        self.paired: list[Outcome] | None = None
+
+    def outcomes(self) -> list[Outcome]:
+        if self.found is None:
+            found = []
+            for m in REGISTRY.values():
+                variant = m.build(self.model)
+                if variant is None:
+                    continue
+                out = self.model.outcome(variant, m)
+                if out is None or self.base is None or not changes(out, self.base):
+                    continue
+                found.append(out)
+            self.found = found
+        return self.found
+
+    def pairs(self) -> list[Outcome]:
+        if self.paired is None:
+            singles = self.outcomes()
+            found = []
+            for a, b in itertools.islice(itertools.combinations(singles, 2), MAX_PAIRS):
+                assert a.mistake is not None and b.mistake is not None
+                both = combine(a.mistake, b.mistake)
+                variant = both.build(self.model)
+                out = self.model.outcome(variant, both) if variant is not None else None
+                if out is None or self.base is None:
+                    continue
+                if all(changes(out, other) for other in (self.base, a, b)):
+                    found.append(out)
+            self.paired = found
+        return self.paired
+
+
+_CACHE: dict[int, _Entry] = {}
+
+
+def _cached(solution: Solution) -> _Entry:
+    key = id(solution)
+    hit = _CACHE.get(key)
+    if hit is not None and hit.ref() is solution:
+        return hit
+    entry = _Entry(solution)
+    weakref.finalize(solution, _CACHE.pop, key, None)
+    _CACHE[key] = entry
+    return entry
+
+
+def model(solution: Solution) -> Model:
+    """The problem's equations, ready for variants (cached per solution)."""
+    return _cached(solution).model
+
+
+def correct(solution: Solution) -> Outcome | None:
+    """The correct equations solved by this module (agrees with ``solution``)."""
+    return _cached(solution).base
+
+
+def outcomes(solution: Solution) -> list[Outcome]:
+    """Every mistake that applies to the problem and changes some result, solved (cached)."""
+    return list(_cached(solution).outcomes())
+
+
+def pair_outcomes(solution: Solution) -> list[Outcome]:
+    """Every pair of those mistakes that gives something neither gives alone, solved (cached;
+    at most :data:`~.pairs.MAX_PAIRS` pairs are tried)."""
+    return list(_cached(solution).pairs())
+
+
+def changes(out: Outcome, base: Outcome) -> bool:
+    """True when some result of ``out`` differs from ``base``'s."""
+    for name, q in out.results.items():
+        b = base.results.get(name)
+        if b is None:
+            continue
+        if (q.partial is None) != (b.partial is None):
+            return True
+        if q.partial is None or b.partial is None:
+            continue
+        d = q.partial - b.partial
+        syms = d.free_symbols
+        if syms:
+            d = d.xreplace(point(syms))
+        try:
+            x = complex(d.evalf(30))
+            scale = max(1.0, abs(complex(b.partial.xreplace(point(syms) if syms else {}).evalf(30))))
+        except (TypeError, ValueError):
+            continue
+        if abs(x) > 1e-12 * scale:
+            return True
+    return False

@@ -1,0 +1,66 @@
+"""Mistakes in the impact rule (4): reversed differences, speeds for components, energy."""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking.mistakes.equations import Model, point
+from derive.checking.mistakes.records import Variant, mistake
+
+
+@mistake(
+    "restitution_reversed",
+    "restitution with the differences reversed",
+    "The impact rule was written with the relative velocities the wrong way round, "
+    "e (v_A1n − v_B1n) = v_A2n − v_B2n: separation is v_B2n − v_A2n, approach v_A1n − v_B1n.",
+    (4,),
+    "the impact rule",
+    "has the relative velocities the wrong way round",
+)
+def restitution_reversed(model: Model) -> Variant | None:
+    """Separation written v_A2n − v_B2n."""
+    return Variant(restitution="reversed")
+
+
+@mistake(
+    "e_speeds",
+    "e applied to speeds instead of n components",
+    "The impact rule used the speeds before the impact, e (v_A1 − v_B1) = v_B2n − v_A2n, "
+    "instead of their n components: restitution relates the normal components only.",
+    (4,),
+    "the impact rule",
+    "applies e to the speeds, not to the n components",
+)
+def e_speeds(model: Model) -> Variant | None:
+    """The approach in (4) from the speeds, each with the sign of its n component."""
+    p = model.problem
+    if not p.oblique:
+        return None
+    nm = model.nm
+    signed = []
+    for motion, n, t, sense in ((p.motion_A, nm.A1n, nm.A1t, 1), (p.motion_B, nm.B1n, nm.B1t, -1)):
+        if motion.body == "B" and p.fixed_B:
+            signed.append(sympy.Integer(0))
+            continue
+        speed = motion.speed if motion.speed is not None else sympy.sqrt(model.pre[n] ** 2 + model.pre[t] ** 2)
+        sign = sympy.sign(model.num(model.pre[n]).xreplace(point(model.num(model.pre[n]).free_symbols)))
+        signed.append((sign if sign != 0 else sense) * speed)
+    if model.is_zero(signed[0] - model.pre[nm.A1n]) and model.is_zero(signed[1] - model.pre[nm.B1n]):
+        return None
+    return Variant(approach=(signed[0], signed[1]))
+
+
+@mistake(
+    "energy_conserved",
+    "kinetic energy conserved across the impact",
+    "Kinetic energy was taken as conserved across the impact, in place of the impact rule: that holds "
+    "only when e = 1, so the velocities are those of a perfectly elastic impact.",
+    (4,),
+    "the impact rule, replaced by conservation of kinetic energy",
+    "conserves kinetic energy instead of applying the impact rule",
+)
+def energy_conserved(model: Model) -> Variant | None:
+    """(4) replaced by T_1 = T_2, whose nontrivial root is that of e = 1."""
+    if model.e in model.unknowns:
+        return None
+    return Variant(e=sympy.Integer(1), energy=True)

@@ -1,0 +1,73 @@
+"""Mistakes in the velocities before the impact: a sign, sin and cos, degrees and radians."""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking.mistakes.equations import Model
+from derive.checking.mistakes.records import Variant, mistake
+from derive.problem.units import ANGLE
+
+
+@mistake(
+    "b_sign",
+    "B's velocity with the wrong sign",
+    "B's velocity before the impact was taken with the wrong sign, as if B moved the other way: "
+    "n points from A toward B, so a B moving toward A has v_B1n < 0.",
+    (2, 3, 4),
+    "B's velocity before the impact, v_B1n (and v_B1t)",
+    "has B's velocity with the wrong sign",
+)
+def b_sign(model: Model) -> Variant | None:
+    """B's components before the impact negated."""
+    if model.problem.fixed_B:
+        return None
+    pre = {k: (-x if k in (model.nm.B1n, model.nm.B1t) else x) for k, x in model.pre.items()}
+    if all(model.is_zero(model.pre[k]) for k in model.pre if k in (model.nm.B1n, model.nm.B1t)):
+        return None
+    return Variant(pre=pre)
+
+
+@mistake(
+    "sin_cos_swapped",
+    "sin and cos swapped (angle from the other axis)",
+    "The velocities before the impact were resolved with sin and cos swapped, as if the angle were "
+    "measured from the other axis (from t instead of n, or from n instead of t).",
+    (1, 2, 3, 4),
+    "the n and t components before the impact (stage 1), and through them every equation",
+    "has sin and cos swapped",
+)
+def sin_cos_swapped(model: Model) -> Variant | None:
+    """Each velocity given by a speed and an angle resolved with the complement of the angle."""
+    p = model.problem
+    motions = [m for m in (p.motion_A, p.motion_B) if m.angle is not None and m.speed is not None]
+    if not p.oblique or not motions:
+        return None
+    nm = model.nm
+    pre = dict(model.pre)
+    for motion, (n, t) in ((p.motion_A, (nm.A1n, nm.A1t)), (p.motion_B, (nm.B1n, nm.B1t))):
+        if motion in motions:
+            swap = {motion.angle: sympy.pi / 2 - motion.angle}
+            pre[n] = model.pre[n].xreplace(swap)
+            pre[t] = model.pre[t].xreplace(swap)
+    return Variant(pre=pre)
+
+
+@mistake(
+    "degrees_as_radians",
+    "degrees read as radians",
+    "An angle given in degrees was used as if it were in radians (a calculator in radian mode): "
+    "sin 37.6 instead of sin 37.6°.",
+    (1, 2, 3, 4),
+    "the n and t components before the impact (stage 1), and through them every equation",
+    "reads the angle in degrees as radians",
+)
+def degrees_as_radians(model: Model) -> Variant | None:
+    """Each angle given as a number of degrees put in as that many radians."""
+    values = {}
+    for g in model.problem.givens:
+        if g.dim == ANGLE and g.value is not None and g.definition is None and g.written is None and not g.unknown:
+            values[g.symbol] = g.value * 180 / sympy.pi
+    if not values:
+        return None
+    return Variant(values=values)

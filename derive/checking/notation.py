@@ -1,0 +1,83 @@
+"""Mathematics as students type it, rewritten into the restricted grammar of :mod:`derive.problem.expr`.
+
+``20 v_A2n + 5 v_B2n``, ``0.6(5 cos 37.6° + 15 cos 37.6°)``, ``5·sin(37.6 deg)``,
+``v_A2n(20 + 5)``: products without ``*``, functions without parentheses around a
+single number or name, degree marks (``°``, ``deg``) after a number, and a few
+Unicode signs (− × · ÷ ² ³ π θ β √). Only the text changes: the result is read by
+the same parser as everything else, so nothing is evaluated that it would refuse.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: The functions of the parser (a name followed by "(" is a call only for these).
+FUNCTIONS = frozenset({"sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log"})
+
+_UNICODE = {
+    "−": "-",
+    "–": "-",
+    "×": "*",
+    "·": "*",
+    "⋅": "*",
+    "÷": "/",
+    "²": "^2",
+    "³": "^3",
+    "π": " pi ",
+    "θ": " theta",
+    "β": " beta",
+    "√": " sqrt ",
+}
+_NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
+_BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
+_TOKEN = re.compile(rf"\s*({_NUM}|[A-Za-z][A-Za-z0-9_]*|\*\*|[-+*/^(),=]|\S)")
+
+
+def student(text: str) -> str:
+    """``text`` with students' notation written out for the parser.
+
+    >>> student("0.6(5 cos 37.6° + 15 cos 37.6°) = v_B2n − v_A2n")
+    '0.6*(5*cos(37.6*deg)+15*cos(37.6*deg))=v_B2n-v_A2n'
+    >>> student("20 v_A2n + 5 v_B2n")
+    '20*v_A2n+5*v_B2n'
+    """
+    for sign, plain in _UNICODE.items():
+        text = text.replace(sign, plain)
+    text = degree_marks(text)
+    text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
+    return implicit_products(text)
+
+
+def degree_marks(text: str) -> str:
+    """``37.6°`` and ``37.6 deg`` as ``(37.6*deg)`` (``0.5 rad`` as ``(0.5*rad)``), so that
+    the mark binds to its number: ``sin(37.6°)``, ``180/37.6 deg``."""
+    return _ANGLE_MARK.sub(lambda m: f"({m.group(1)}*{'rad' if m.group(2) else 'deg'})", text)
+
+
+def implicit_products(text: str) -> str:
+    """``*`` written where two factors stand side by side: ``20 v_A2n``, ``5(9.5 + v)``,
+    ``v_A2n(20 + 5)``, ``(a)(b)``; a function name before "(" stays a call."""
+    tokens = [m.group(1) for m in _TOKEN.finditer(text)]
+    out: list[str] = []
+    for tok in tokens:
+        if out and _ends_factor(out[-1]) and _starts_factor(tok):
+            out.append("*")
+        out.append(tok)
+    return "".join(out)
+
+
+def _ends_factor(tok: str) -> bool:
+    return tok == ")" or _is_number(tok) or (_is_name(tok) and tok not in FUNCTIONS)
+
+
+def _starts_factor(tok: str) -> bool:
+    return tok == "(" or _is_number(tok) or _is_name(tok)
+
+
+def _is_number(tok: str) -> bool:
+    return re.fullmatch(_NUM, tok) is not None
+
+
+def _is_name(tok: str) -> bool:
+    return re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", tok) is not None

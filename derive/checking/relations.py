@@ -1,0 +1,140 @@
+"""Equations as ``lhs - rhs`` in the unknowns: compared up to a factor, solved with the
+others, satisfied by a set of velocities, and shown the way the notes collect them.
+
+Every comparison is made at sample points of the symbolic givens (one empty point
+where every given has a number), with a relative tolerance for the decimals written.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking.mistakes import Outcome
+from derive.checking.numeric import coefficient, is_negative, number_of, plain
+
+Point = dict[sympy.Symbol, sympy.Expr]
+Values = dict[sympy.Symbol, sympy.Expr]
+
+
+def coefficients(expr: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> dict[tuple[int, ...], complex] | None:
+    """The numeric coefficient of each monomial of ``expr`` in ``U`` (None where not a polynomial)."""
+    try:
+        poly = sympy.Poly(sympy.expand(sympy.numer(sympy.together(expr))), *U)
+    except (sympy.PolynomialError, sympy.GeneratorsError):
+        return None
+    out = {}
+    for m, c in poly.terms():
+        x = number_of(c)
+        if x is None:
+            return None
+        out[m] = x
+    return out
+
+
+def proportional(a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...], pts: list[Point], tol: float) -> bool:
+    """Whether equations ``a = 0`` and ``b = 0`` are the same up to a nonzero factor."""
+    for pt in pts:
+        ca, cb = coefficients(a.xreplace(pt), U), coefficients(b.xreplace(pt), U)
+        if not ca or not cb:
+            return False
+        key = max(cb, key=lambda m: abs(cb[m]))
+        if abs(ca.get(key, 0)) == 0:
+            return False
+        c = ca[key] / cb[key]
+        scale = abs(cb[key])
+        for m in set(ca) | set(cb):
+            if abs(ca.get(m, 0) - c * cb.get(m, 0)) > max(tol, 1e-12) * abs(c) * scale:
+                return False
+    return True
+
+
+def solve_with(
+    F: sympy.Expr, equations: dict[int, sympy.Expr], k: int, U: tuple[sympy.Symbol, ...], pts: list[Point]
+) -> list[list[Values]] | None:
+    """Solve ``equations`` with (k) replaced by ``F = 0``, at each point: the roots there."""
+    out = []
+    for pt in pts:
+        eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
+        eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
+        try:
+            roots = sympy.solve(eqs, list(U), dict=True)
+        except (NotImplementedError, ValueError, TypeError):
+            return None
+        roots = [r for r in roots if set(r) == set(U)]
+        if not roots:
+            return None
+        out.append(roots)
+    return out
+
+
+def matches(
+    roots: list[list[Values]], outcome: Outcome, U: tuple[sympy.Symbol, ...], pts: list[Point], tol: float
+) -> bool:
+    """Whether, at every point, one of ``roots`` is ``outcome``'s velocities."""
+    slack = max(5 * tol, 1e-8)
+    for found, pt in zip(roots, pts, strict=True):
+        target = {}
+        for u in U:
+            x = number_of(outcome.post[u].xreplace(pt))
+            if x is None:
+                return False
+            target[u] = x
+        scale = max([abs(v) for v in target.values()] + [1e-12])
+        if not any(_same(r, target, U, slack * scale) for r in found):
+            return False
+    return True
+
+
+def _same(root: Values, target: dict[sympy.Symbol, complex], U: tuple[sympy.Symbol, ...], slack: float) -> bool:
+    vals = [number_of(root[u]) for u in U]
+    if any(v is None for v in vals):
+        return False
+    return all(abs(v - target[u]) <= slack for v, u in zip(vals, U, strict=True))
+
+
+def satisfied(F: sympy.Expr, post: Values, U: tuple[sympy.Symbol, ...], pts: list[Point], tol: float) -> bool:
+    """Whether the velocities ``post`` satisfy ``F = 0`` at every point, within ``tol``
+    of the largest term."""
+    for pt in pts:
+        G = sympy.expand(sympy.numer(sympy.together(F.xreplace(pt))))
+        sol = {u: post[u].xreplace(pt) for u in U}
+        terms = G.args if isinstance(G, sympy.Add) else (G,)
+        vals = [number_of(t.xreplace(sol)) for t in terms]
+        if any(v is None for v in vals):
+            return False
+        scale = max(abs(v) for v in vals) if vals else 0
+        if scale == 0:
+            return False
+        if abs(sum(vals)) > max(tol, 1e-9) * scale * 2:
+            return False
+    return True
+
+
+def shown(expr: sympy.Expr, U: tuple[sympy.Symbol, ...], first: tuple[sympy.Symbol, ...] = ()) -> str:
+    """``expr = 0`` collected as the notes write it: ``20 v_A2n + 5 v_B2n = 19.81``
+    (the unknowns in ``first`` leading; one unknown solved for)."""
+    U = list(first) + [u for u in U if u not in first]
+    try:
+        poly = sympy.Poly(sympy.expand(sympy.numer(sympy.together(expr))), *U)
+    except sympy.PolynomialError:
+        return plain(expr) + " = 0"
+    terms = [(m, c) for m, c in poly.terms() if any(m)]
+    const = poly.coeff_monomial(1)
+    if not terms:
+        return plain(expr) + " = 0"
+    terms.sort(key=lambda mc: (-sum(mc[0]), [-x for x in mc[0]]))
+    sign = -1 if is_negative(terms[0][1]) else 1
+    if len(terms) == 1:  # one unknown: solved for it
+        sign = sympy.Integer(1) / terms[0][1]
+    out = ""
+    for i, (m, c) in enumerate(terms):
+        c = sign * c
+        mono = "*".join(u.name + (f"^{p}" if p > 1 else "") for u, p in zip(U, m, strict=True) if p)
+        neg = is_negative(c)
+        mag = -c if neg else c
+        piece = f"{'' if mag == 1 else coefficient(mag) + ' '}{mono}"
+        if i == 0:
+            out = ("-" if neg else "") + piece
+        else:
+            out += (" - " if neg else " + ") + piece
+    return f"{out} = {coefficient(-sign * const) if const != 0 else '0'}"

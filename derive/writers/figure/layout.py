@@ -1,0 +1,175 @@
+"""Label placement: each label goes to the first candidate position around its anchor
+whose box meets no stroke, no body outline and no label placed before it.
+
+Text extents are estimated from the font size and the glyphs (a subscript at 70 %),
+a little wider than Computer Modern and the common serif fonts, so that a box that
+is free on paper is free in the drawing too.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass
+
+from derive.writers.figure.model import Body, Label, Point, Segment, Shape, segments
+
+EM = 0.40  # cm: the labels' font size (11 pt is 0.39 cm)
+GAP = 0.07  # cm: the clearance kept around a label
+SUB = 0.7  # a subscript's size relative to the text
+GREEK = {"theta": "θ", "phi": "φ", "alpha": "α", "beta": "β", "gamma": "γ", "psi": "ψ", "delta": "δ"}
+
+#: Distances (cm) from an anchor to a label's near edge, tried nearest first.
+DISTANCES = (0.08, 0.22, 0.4, 0.65, 0.95, 1.3, 1.75, 2.3, 3.0)
+#: Directions tried after a label's own preferences: sixteen around, from straight up.
+AROUND = tuple((math.cos(math.radians(90 + 22.5 * k)), math.sin(math.radians(90 + 22.5 * k))) for k in range(16))
+
+
+@dataclass(frozen=True)
+class Spec:
+    """A label to place: its text, its anchors (a point and the directions to try from
+    it, best first; :data:`AROUND` for all), and the body it may sit inside (its own,
+    or the one its angle is drawn in)."""
+
+    text: str
+    role: str
+    anchors: tuple[tuple[Point, tuple[Point, ...]], ...]
+    math: bool = True
+    tail: str = ""
+    home: Body | None = None
+    inside: bool = False  # try the home body's inside first (a body's own letter)
+
+
+def split(name: str) -> tuple[str, str]:
+    """``v_A1`` -> ("v", "A1"); ``theta_1`` -> ("θ", "1"); words stay whole."""
+    base, _, sub = name.partition("_")
+    return GREEK.get(base, base), sub
+
+
+def _glyphs(text: str) -> float:
+    """Width of ``text`` in em."""
+    w = 0.0
+    for ch in text:
+        if ch == " ":
+            w += 0.3
+        elif ch in "=+−-":
+            w += 0.8
+        elif ch.isupper():
+            w += 0.76
+        elif ch.isdigit():
+            w += 0.56
+        elif ch in "ilj.,":
+            w += 0.34
+        elif ch in "mw":
+            w += 0.85
+        else:
+            w += 0.58
+    return w
+
+
+def extent(text: str, math_: bool = True, tail: str = "") -> tuple[float, float]:
+    """The estimated width and height (cm) of a label."""
+    if not math_:
+        return EM * _glyphs(text) + 2 * GAP, EM * 1.05
+    base, sub = split(text)
+    w = _glyphs(base) + SUB * _glyphs(sub) + _glyphs(tail)
+    h = 1.25 if sub else 1.05
+    return EM * w + 2 * GAP, EM * h
+
+
+def _box_hits_segment(box: tuple[float, float, float, float], seg: Segment) -> bool:
+    """True when the segment crosses or lies in the box (Liang-Barsky clipping)."""
+    x0, y0, x1, y1 = box
+    (ax, ay), (bx, by) = seg
+    dx, dy = bx - ax, by - ay
+    lo, hi = 0.0, 1.0
+    for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
+        if p == 0:
+            if q < 0:
+                return False
+            continue
+        r = q / p
+        if p < 0:
+            lo = max(lo, r)
+        else:
+            hi = min(hi, r)
+        if lo > hi:
+            return False
+    return True
+
+
+def _box_vs_disc(box: tuple[float, float, float, float], b: Body) -> str:
+    """ "inside" (the whole box in the disc), "outside" (no point in it) or "across"."""
+    x0, y0, x1, y1 = box
+    nx, ny = min(max(b.x, x0), x1), min(max(b.y, y0), y1)
+    if math.hypot(nx - b.x, ny - b.y) >= b.r:
+        return "outside"
+    far = max(math.hypot(cx - b.x, cy - b.y) for cx in (x0, x1) for cy in (y0, y1))
+    return "inside" if far <= b.r else "across"
+
+
+def _boxes_meet(a: tuple[float, float, float, float], b: tuple[float, float, float, float]) -> bool:
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def _grow(box: tuple[float, float, float, float], by: float) -> tuple[float, float, float, float]:
+    return box[0] - by, box[1] - by, box[2] + by, box[3] + by
+
+
+class Board:
+    """What is drawn so far: strokes, bodies and the labels already placed."""
+
+    def __init__(self, shapes: Iterable[Shape]) -> None:
+        shapes = list(shapes)
+        self.strokes: list[tuple[float, float, float, float, Segment]] = [
+            (min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]), (a, b))
+            for s in shapes
+            for a, b in segments(s)
+        ]
+        self.bodies: list[Body] = [s for s in shapes if isinstance(s, Body)]
+        self.labels: list[Label] = []
+
+    def clashes(self, box: tuple[float, float, float, float], home: Body | None) -> Iterator[bool]:
+        """For each thing drawn, whether a label's box (clearance included) touches it."""
+        x0, y0, x1, y1 = grown = _grow(box, GAP)
+        for sx0, sy0, sx1, sy1, seg in self.strokes:
+            yield sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment(grown, seg)
+        for b in self.bodies:
+            where = _box_vs_disc(grown, b)
+            yield where == "across" or (where == "inside" and b is not home)
+        for lab in self.labels:
+            yield _boxes_meet(grown, lab.box)
+
+
+def candidates(spec: Spec, w: float, h: float) -> Iterable[Point]:
+    """Centres to try, nearest first: inside the home body, then around each anchor."""
+    if spec.inside and spec.home is not None:
+        b = spec.home
+        for k in (0.0, 0.45, 0.55):
+            for ux, uy in ((0, 1), (0, -1), (-1, 0), (1, 0), *AROUND):
+                yield b.x + k * b.r * ux, b.y + k * b.r * uy
+    for d in DISTANCES:
+        for (px, py), prefer in spec.anchors:
+            for ux, uy in prefer:
+                reach = d + abs(ux) * w / 2 + abs(uy) * h / 2
+                yield px + ux * reach, py + uy * reach
+
+
+def place(specs: Sequence[Spec], shapes: Iterable[Shape]) -> tuple[Label, ...]:
+    """Place ``specs`` in order, each at its first free candidate (else the least crowded)."""
+    board = Board(shapes)
+    for spec in specs:
+        w, h = extent(spec.text, spec.math, spec.tail)
+        tried = []
+        for cx, cy in candidates(spec, w, h):
+            box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
+            if not any(board.clashes(box, spec.home)):
+                break
+            tried.append((cx, cy))
+        else:  # nowhere free: the candidate that touches fewest things
+            cx, cy = min(
+                tried,
+                key=lambda c: sum(board.clashes((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), spec.home)),
+            )
+        board.labels.append(Label(spec.text, cx, cy, w, h, spec.role, spec.math, spec.tail))
+    return tuple(board.labels)

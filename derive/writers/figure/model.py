@@ -1,0 +1,206 @@
+"""A figure as plain geometry: shapes and placed labels, in centimetres, y up.
+
+Nothing here knows the physics or a drawing format. :mod:`.scene` fills these
+records from a solution, :mod:`.layout` places the labels, :mod:`.svg` and
+:mod:`.tikz` draw them. One drawing unit is one centimetre on the printed page.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass, field
+
+Point = tuple[float, float]
+Segment = tuple[Point, Point]
+
+HEAD = 0.28  # length of an arrowhead
+HATCH = 0.3  # depth of a wall's hatching
+
+
+@dataclass(frozen=True)
+class Body:
+    """A body drawn as a circle of radius ``r`` about its centre."""
+
+    x: float
+    y: float
+    r: float
+    name: str
+
+
+@dataclass(frozen=True)
+class Surface:
+    """A fixed wall or floor: its face from (x1, y1) to (x2, y2), hatched on the side (nx, ny)."""
+
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+    nx: float
+    ny: float
+    name: str
+
+
+@dataclass(frozen=True)
+class Axis:
+    """An axis (n, t, x or y): a line with an arrowhead at (x2, y2)."""
+
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+    name: str
+    dashed: bool = False
+
+
+@dataclass(frozen=True)
+class Arrow:
+    """A velocity, to scale with speed: from (x1, y1) to its head at (x2, y2)."""
+
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+    name: str
+
+    @property
+    def length(self) -> float:
+        """The arrow's length (the speed times the figure's scale)."""
+        return math.hypot(self.x2 - self.x1, self.y2 - self.y1)
+
+
+@dataclass(frozen=True)
+class Arc:
+    """An angle: an arc about (x, y) from ``start`` to ``end`` (degrees, counter-clockwise from +x)."""
+
+    x: float
+    y: float
+    r: float
+    start: float
+    end: float
+    name: str
+
+
+@dataclass(frozen=True)
+class Guide:
+    """A thin dotted line that an angle is measured from (an axis moved to a body's centre)."""
+
+    x1: float
+    y1: float
+    x2: float
+    y2: float
+
+
+@dataclass(frozen=True)
+class Label:
+    """A label placed at its centre (x, y) with its estimated extent w x h.
+
+    ``text`` is a symbol name (``v_A1``, ``theta_1``) when ``math`` is true, else
+    words; ``tail`` follows it (`` = 0``); ``role`` sets its style.
+    """
+
+    text: str
+    x: float
+    y: float
+    w: float
+    h: float
+    role: str
+    math: bool = True
+    tail: str = ""
+
+    @property
+    def box(self) -> tuple[float, float, float, float]:
+        """(left, bottom, right, top)."""
+        return self.x - self.w / 2, self.y - self.h / 2, self.x + self.w / 2, self.y + self.h / 2
+
+
+Shape = Body | Surface | Axis | Arrow | Arc | Guide
+
+
+@dataclass(frozen=True)
+class Figure:
+    """Shapes and labels of one figure; ``title`` names it (before or after the impact),
+    ``caption`` says how it is drawn (to what scale)."""
+
+    title: str
+    shapes: tuple[Shape, ...] = ()
+    labels: tuple[Label, ...] = field(default_factory=tuple)
+    caption: str = ""
+
+    def bounds(self, pad: float = 0.25) -> tuple[float, float, float, float]:
+        """(left, bottom, right, top) of everything drawn, with ``pad`` around."""
+        xs: list[float] = []
+        ys: list[float] = []
+        for s in self.shapes:
+            if isinstance(s, Body):
+                xs += [s.x - s.r, s.x + s.r]
+                ys += [s.y - s.r, s.y + s.r]
+            else:
+                for a, b in segments(s):
+                    xs += [a[0], b[0]]
+                    ys += [a[1], b[1]]
+        for lab in self.labels:
+            x0, y0, x1, y1 = lab.box
+            xs += [x0, x1]
+            ys += [y0, y1]
+        if not xs:
+            return -pad, -pad, pad, pad
+        return min(xs) - pad, min(ys) - pad, max(xs) + pad, max(ys) + pad
+
+    @property
+    def width(self) -> float:
+        """Width in centimetres."""
+        x0, _, x1, _ = self.bounds()
+        return x1 - x0
+
+    @property
+    def height(self) -> float:
+        """Height in centimetres."""
+        _, y0, _, y1 = self.bounds()
+        return y1 - y0
+
+
+def head(x1: float, y1: float, x2: float, y2: float) -> list[Segment]:
+    """The two sides of an arrowhead at (x2, y2) on the line from (x1, y1)."""
+    length = math.hypot(x2 - x1, y2 - y1)
+    if length == 0:
+        return []
+    size = min(HEAD, 0.6 * length)
+    ux, uy = (x2 - x1) / length, (y2 - y1) / length
+    bx, by = x2 - size * ux, y2 - size * uy
+    w = 0.4 * size
+    return [((x2, y2), (bx - w * uy, by + w * ux)), ((x2, y2), (bx + w * uy, by - w * ux))]
+
+
+def arc_points(a: Arc, steps: int = 24) -> list[Point]:
+    """Points along an arc, for drawing checks."""
+    out = []
+    for i in range(steps + 1):
+        ang = math.radians(a.start + (a.end - a.start) * i / steps)
+        out.append((a.x + a.r * math.cos(ang), a.y + a.r * math.sin(ang)))
+    return out
+
+
+def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
+    """The short slanted strokes behind a wall's face."""
+    length = math.hypot(s.x2 - s.x1, s.y2 - s.y1)
+    ux, uy = (s.x2 - s.x1) / length, (s.y2 - s.y1) / length
+    out = []
+    for i in range(count + 1):
+        px, py = s.x1 + (s.x2 - s.x1) * i / count, s.y1 + (s.y2 - s.y1) * i / count
+        out.append(((px, py), (px + HATCH * (s.nx - ux), py + HATCH * (s.ny - uy))))
+    return out
+
+
+def segments(s: Shape) -> list[Segment]:
+    """Every stroke of a shape but a body's circle, as straight segments."""
+    if isinstance(s, (Axis, Arrow)):
+        return [((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2)]
+    if isinstance(s, Guide):
+        return [((s.x1, s.y1), (s.x2, s.y2))]
+    if isinstance(s, Surface):
+        return [((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s)]
+    if isinstance(s, Arc):
+        pts = arc_points(s)
+        return list(itertools.pairwise(pts))
+    return []

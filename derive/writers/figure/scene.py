@@ -1,0 +1,297 @@
+"""From a solution to a figure: bodies at contact, the n and t axes, velocity arrows,
+angles, walls and floors, x-y axes, with every label placed.
+
+The figure reads the solution's numbers; it does no physics of its own. A symbol
+without a number (a symbolic mass or speed) is drawn as 1, so that arrows stay in
+proportion: in Example 4.C.12 every speed is a multiple of v_A1.
+
+Which way is down: :mod:`.frame`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+
+from derive.physics.impact import independent_map
+from derive.problem import Problem
+from derive.steps.model import Solution
+from derive.writers.figure.frame import Frame, chain_falls, frame, number
+from derive.writers.figure.layout import AROUND, Spec, place
+from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
+
+ARROW_MAX = 3.0  # cm: the arrow of the greatest speed, before or after
+R_MAX = 1.3  # cm: the radius of the larger body
+ARC_R = 0.75  # cm: the radius of an angle's arc
+#: The order labels are placed in: those with the least room first.
+ORDER = {"body": 0, "angle": 1, "velocity": 2, "axis": 3, "surface": 4}
+
+
+def radii(problem: Problem) -> tuple[float, float]:
+    """Drawn radii of A and B: in the ratio of the given r_A and r_B, else equal."""
+    given = {g.name: g for g in problem.givens}
+    ind = independent_map(problem)
+    values = problem.numeric()
+    found = []
+    for name in ("r_A", "r_B"):
+        g = given.get(name)
+        expr = None if g is None else (g.value if g.value is not None else g.symbol.xreplace(ind))
+        found.append(number(expr, values))
+    a, b = found
+    if a is None or b is None or a <= 0 or b <= 0:
+        return R_MAX, R_MAX
+    big = max(a, b)
+    return R_MAX * a / big, R_MAX * b / big
+
+
+def _result(solution: Solution, name: str, values: Mapping) -> float | None:
+    r = solution.results.get(name)
+    if r is not None:
+        return number(r.value if r.value is not None else r.partial, values)
+    p = solution.problem
+    for g in p.givens:  # a velocity after the impact given (an inverse problem)
+        if g.name == name:
+            return number(g.value if g.value is not None else g.symbol, values)
+    return None
+
+
+def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
+    """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
+    p = solution.problem
+    known = {**solution.values, **values}
+    ind = independent_map(p)
+    out: dict[str, tuple[float, float]] = {}
+    for b in "AB":
+        if b == "B" and p.fixed_B:
+            continue
+        motion = p.motion_A if b == "A" else p.motion_B
+        n, t = number(motion.n.xreplace(ind), known), number(motion.t.xreplace(ind), known)
+        if n is not None and t is not None:
+            out[b + "1"] = (n, t)
+        if p.oblique:
+            n2, t2 = _result(solution, f"v_{b}2n", known), _result(solution, f"v_{b}2t", known)
+        else:
+            n2, t2 = _result(solution, f"v_{b}2", known), 0.0
+        if n2 is not None and t2 is not None:
+            out[b + "2"] = (n2, t2)
+    return out
+
+
+def _perps(ux: float, uy: float, away: Point) -> tuple[Point, Point]:
+    """The two directions across (ux, uy), the one pointing along ``away`` first."""
+    left, right = (-uy, ux), (uy, -ux)
+    return (left, right) if left[0] * away[0] + left[1] * away[1] >= 0 else (right, left)
+
+
+def arrow_spec(a: Arrow, free_end: Point, outward: Point) -> Spec:
+    """Where a velocity's label may go: beside its middle (on the side away from the
+    point of contact, else above), beyond its free end, beside its quarters."""
+    ux, uy = (a.x2 - a.x1) / a.length, (a.y2 - a.y1) / a.length
+    mid = ((a.x1 + a.x2) / 2, (a.y1 + a.y2) / 2)
+    p1, p2 = _perps(ux, uy, (mid[0] + 1e-6, mid[1] + 1e-3))
+    quarter = ((3 * free_end[0] + mid[0]) / 4, (3 * free_end[1] + mid[1]) / 4)
+    return Spec(
+        a.name,
+        "velocity",
+        ((mid, (p1, p2)), (free_end, (outward, p1, p2)), (quarter, (p1, p2)), (mid, AROUND)),
+    )
+
+
+def _ring(b: Body) -> tuple[tuple[Point, tuple[Point, ...]], ...]:
+    """Anchors on a body's outline, each with its outward direction (below and above first)."""
+    order = [AROUND[k] for k in (8, 0, 4, 12, 6, 10, 2, 14)]
+    return tuple(((b.x + b.r * ux, b.y + b.r * uy), ((ux, uy),)) for ux, uy in order)
+
+
+def _frame_shapes(
+    p: Problem, fr: Frame, A: Body, B: Body | None, arrows: list[Arrow]
+) -> tuple[list[Shape], list[Spec]]:
+    """The bodies (or the wall), the line of impact n (reaching past any arrow that lies
+    along it, so that their heads stay apart) and the plane of contact t."""
+    shapes: list[Shape] = [A]
+    specs = [Spec("A", "body", _ring(A), home=A, inside=True)]
+    span = max(A.r, B.r if B else 0.0)
+    if B is not None:
+        shapes.append(B)
+        specs.append(Spec("B", "body", _ring(B), home=B, inside=True))
+        n_end, t_half = B.r * 2 + 0.8, span + 0.8
+    else:
+        half = A.r + 0.9
+        face = Surface(*fr.at(0, -half), *fr.at(0, half), *fr.n, p.name_B or "wall")
+        shapes.append(face)
+        tip = fr.at(0.5 * 0.3, half)
+        specs.append(Spec(face.name, "surface", ((tip, (fr.t, fr.n, *AROUND)),), math=False))
+        n_end, t_half = 1.0, half + 0.6
+    along = [fr.along(x, y) for a in arrows for x, y in ((a.x1, a.y1), (a.x2, a.y2)) if abs(fr.across(x, y)) < 0.3]
+    if B is not None and along:
+        n_end = max(n_end, max(along) + 0.6)
+    n_axis = Axis(*fr.at(-2 * A.r - 0.5, 0), *fr.at(n_end, 0), "n")
+    t_axis = Axis(*fr.at(0, -t_half), *fr.at(0, t_half), "t", dashed=True)
+    shapes += [n_axis, t_axis]
+    for ax, along in ((n_axis, fr.n), (t_axis, fr.t)):
+        specs.append(Spec(ax.name, "axis", (((ax.x2, ax.y2), (along, *AROUND)),)))
+    return shapes, specs
+
+
+def _blocked(a: Arrow, others: list[Body], fr: Frame, wall: bool) -> bool:
+    """True when an arrow would run into another body, or through the wall."""
+    if wall and max(fr.along(a.x1, a.y1), fr.along(a.x2, a.y2)) > -0.01:
+        return True
+    for b in others:
+        dx, dy = a.x2 - a.x1, a.y2 - a.y1
+        k = max(0.0, min(1.0, ((b.x - a.x1) * dx + (b.y - a.y1) * dy) / (dx * dx + dy * dy)))
+        if math.hypot(a.x1 + k * dx - b.x, a.y1 + k * dy - b.y) < b.r + 0.05:
+            return True
+    return False
+
+
+def _arrow(
+    body: Body, d: Point, length: float, name: str, after: bool, room: Callable[[Arrow], bool]
+) -> tuple[Arrow, int]:
+    """A velocity arrow on the ray through the body's centre, starting at its outline: after
+    the impact leaving it ahead (side +1), before it arriving from behind (side -1); the
+    other way round when that side is taken by the other body or the wall."""
+    r0, r1 = body.r + 0.06, body.r + 0.06 + length
+    ahead = Arrow(body.x + r0 * d[0], body.y + r0 * d[1], body.x + r1 * d[0], body.y + r1 * d[1], name)
+    behind = Arrow(body.x - r1 * d[0], body.y - r1 * d[1], body.x - r0 * d[0], body.y - r0 * d[1], name)
+    first, second = ((ahead, 1), (behind, -1)) if after else ((behind, -1), (ahead, 1))
+    return first if room(first[0]) or not room(second[0]) else second
+
+
+def _angle(centre: Body, ref: Point, d: Point, name: str, guide: bool) -> tuple[list[Shape], Spec | None]:
+    """The arc from direction ``ref`` to ``d`` at a body's centre, its guide line and label."""
+    start = math.degrees(math.atan2(ref[1], ref[0]))
+    sweep = (math.degrees(math.atan2(d[1], d[0])) - start + 540) % 360 - 180
+    if abs(sweep) < 1 or abs(abs(sweep) - 180) < 1:
+        return [], None
+    arc = Arc(centre.x, centre.y, ARC_R, start, start + sweep, name)
+    shapes: list[Shape] = [arc]
+    if guide:
+        reach = ARC_R + 0.45
+        shapes.append(Guide(centre.x, centre.y, centre.x + reach * ref[0], centre.y + reach * ref[1]))
+    anchors = []
+    for frac in (0.5, 0.3, 0.7):
+        a = math.radians(start + frac * sweep)
+        u = (math.cos(a), math.sin(a))
+        anchors.append(((centre.x + ARC_R * u[0], centre.y + ARC_R * u[1]), (u,)))
+    anchors.append(((centre.x, centre.y), AROUND))
+    return shapes, Spec(name, "angle", tuple(anchors), home=centre)
+
+
+def _unit(fr: Frame, vel: tuple[float, float]) -> Point:
+    dx, dy = fr.at(*vel)
+    size = math.hypot(dx, dy)
+    return dx / size, dy / size
+
+
+def scales(vel: dict[str, tuple[float, float]]) -> dict[str, float]:
+    """Centimetres per unit of speed, before ("1") and after ("2"): one scale for both,
+    unless one figure's greatest speed is under a quarter of the other's (a bullet that
+    lodges), when each figure has its own."""
+    top = {k: max((math.hypot(*v) for b, v in vel.items() if b[1] == k), default=0.0) for k in "12"}
+    both = max(top.values())
+    if both == 0:
+        return {"1": 1.0, "2": 1.0}
+    if min(top.values()) > 0 and min(top.values()) < both / 4:
+        return {k: ARROW_MAX / top[k] for k in "12"}
+    return {k: ARROW_MAX / both for k in "12"}
+
+
+def _motion_shapes(
+    solution: Solution, fr: Frame, bodies: dict[str, Body], vel: dict[str, tuple[float, float]], after: bool
+) -> tuple[list[Shape], list[Spec]]:
+    """Velocity arrows to scale, the angles of their directions, "= 0" for a body at rest."""
+    p = solution.problem
+    stage = "2" if after else "1"
+    scale = scales(vel)[stage]
+    shapes: list[Shape] = []
+    specs: list[Spec] = []
+    for b, body in bodies.items():
+        v = vel.get(b + stage)
+        name = f"v_{b}{stage}"
+        if v is None:
+            continue
+        if math.hypot(*v) * scale < 1e-6:
+            specs.append(Spec(name, "velocity", _ring(body), tail=" = 0"))
+            continue
+        others = [o for o in bodies.values() if o is not body]
+        d = _unit(fr, v)
+        arrow, side = _arrow(
+            body, d, math.hypot(*v) * scale, name, after, lambda a, o=others: not _blocked(a, o, fr, p.fixed_B)
+        )
+        shapes.append(arrow)
+        free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
+        specs.append(arrow_spec(arrow, free, outward))
+        leg = (side * d[0], side * d[1])
+        found = _after_angles(p, b, fr) if after else _before_angle(p, b, fr)
+        for ref, label, guide in found:
+            more, spec = _angle(body, (side * ref[0], side * ref[1]), leg, label, guide)
+            if more:  # the arrow's own leg of the angle, from the centre to the arrow
+                more.append(Guide(body.x, body.y, body.x + (body.r + 0.06) * leg[0], body.y + (body.r + 0.06) * leg[1]))
+            shapes += more
+            specs += [spec] if spec else []
+    return shapes, specs
+
+
+def _before_angle(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
+    """The given angle of a velocity: the axis it is measured from, its name, and whether
+    that axis needs a guide line (it is not the line of impact)."""
+    motion = p.motion_A if b == "A" else p.motion_B
+    if motion.angle is None or motion.axis_from is None:
+        return []
+    return [(fr.axis(motion.axis_from), motion.angle.name, motion.axis_from[1] != "n")]
+
+
+def _after_angles(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
+    """The directions the problem asks for: theta from +t, beta from +n."""
+    out = []
+    if f"theta_{b}2" in p.find:
+        out.append((fr.t, f"theta_{b}2", True))
+    if f"beta_{b}2" in p.find:
+        out.append((fr.n, f"beta_{b}2", False))
+    return out
+
+
+def _xy_axes(shapes: list[Shape]) -> tuple[list[Shape], list[Spec]]:
+    """Small x-y axes left of the drawing, for problems posed in x-y."""
+    x0, y0, _, _ = Figure("", tuple(shapes)).bounds(pad=0.0)
+    ox, oy = x0 - 1.9, y0 + 0.1
+    axes = [Axis(ox, oy, ox + 1.2, oy, "x"), Axis(ox, oy, ox, oy + 1.2, "y")]
+    specs = [Spec(a.name, "axis", (((a.x2, a.y2), (d, *AROUND)),)) for a, d in zip(axes, ((1, 0), (0, 1)), strict=True)]
+    return list(axes), specs
+
+
+def describe(
+    solution: Solution, after: bool = False, *, falls: bool | None = None, values: Mapping | None = None
+) -> Figure:
+    """The figure of an impact, before it or (``after``) after it.
+
+    ``falls`` draws n pointing down (see the module docstring; by default, a fixed
+    floor does); ``values`` gives numbers to symbols the solution leaves open (a
+    chain's later results). A chain gives the figure of its first impact.
+    """
+    if solution.is_chain:
+        first = next(st for st in solution.stages if st.part is not None)
+        down = chain_falls(solution)[first.number] if falls is None else falls
+        return describe(first.part, after, falls=down, values={**solution.values, **(values or {})})
+    p = solution.problem
+    known = {**solution.values, **(values or {})}
+    fr = frame(p, bool(falls), known)
+    rA, rB = radii(p)
+    A = Body(*fr.at(-rA, 0), rA, "A")
+    B = None if p.fixed_B else Body(*fr.at(rB, 0), rB, "B")
+    bodies = {"A": A} if B is None else {"A": A, "B": B}
+    vel = velocities(solution, known)
+    more, more_specs = _motion_shapes(solution, fr, bodies, vel, after)
+    shapes, specs = _frame_shapes(p, fr, A, B, [s for s in more if isinstance(s, Arrow)])
+    shapes += more
+    specs += more_specs
+    if fr.xy:
+        axes, axis_specs = _xy_axes(shapes)
+        shapes += axes
+        specs += axis_specs
+    title = "After the impact" if after else "Before the impact"
+    specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
+    own = scales(vel)
+    note = "arrows to scale with speed" + ("" if own["1"] == own["2"] else ", a scale of their own in each figure")
+    return Figure(title, tuple(shapes), place(specs, shapes), caption=note)
