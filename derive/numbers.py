@@ -123,10 +123,14 @@ def places_that_add_up(
     start = decimals_of(text) if text and "e" not in text else 2
     if each:  # every number keeps its figures (21.60 - 14.69 = 6.91), the smallest deciding
         start = max((decimals_of(format_number(x, digits, extra=extra)) for x in numbers if x != 0), default=start)
-    # no number may show more figures than an intermediate may (290.0185 in a 5-figure solution)
-    most = min((decimals_of(format_number(x, digits, extra=extra)) for x in numbers if x != 0), default=start)
+    # no number may show more figures than an intermediate may (290.0185 in a 5-figure
+    # solution), nor fewer than the answer's (0.00 for 0.0042)
+    shown = [x for x in numbers if x != 0]
+    most = min((decimals_of(format_number(x, digits, extra=extra)) for x in shown), default=start)
+    least = max((decimals_of(format_number(x, digits, extra=0)) for x in shown), default=start)
+    start = max(start, least)
     for places in range(start, start + more + 1):
-        if places > max(most, start):
+        if places > most:
             break
         if all(
             sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))

@@ -96,11 +96,8 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
     bk = sympy.Mul(as_float(-b), as_float(k), evaluate=False)
     frac_num = sympy.Add(as_float(c), bk, evaluate=False)
     fraction = show(sympy.Mul(frac_num, sympy.Pow(as_float(a + b), -1, evaluate=False), evaluate=False))
-    # the numbers of (3) and (4) are written again as (3) and (4) wrote them: the same sums
-    # decide the places (84.8, not 84.77 under a (3) that shows 84.8)
-    sums3, sums4 = _sums_of(kin, page.tags(3)), _sums_of(kin, page.tags(4))
     return [
-        Block((f"From ({page.tags(4)}):",), (Eqn((Side((y,)), Side((x, k), "numeric"))),), sums4),
+        Block((f"From ({page.tags(4)}):",), (Eqn((Side((y,)), Side((x, k), "numeric"))),)),
         Block(
             (f"Substitute into ({page.tags(3)}):",),
             (
@@ -108,22 +105,13 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
                 Eqn((Side((sympy.Mul(coef, x, evaluate=False),), "numeric"), Side((c, bk), "numeric")), implies=True),
                 Eqn((Side((x,)), Side((fraction,), "numeric"), Side((xv,), "result")), unit=page.unit_v, implies=True),
             ),
-            sums3 + sums4,
         ),
         Block(
             (f"Back into ({page.tags(4)}):",),
             (Eqn((Side((y,)), Side((xv, k), "numeric"), Side((yv,), "result")), unit=page.unit_v),),
-            ((((xv, k), yv),) if not ((xv.free_symbols | yv.free_symbols) - page.varied) else ()) + sums4,
+            (((xv, k), yv),) if not ((xv.free_symbols | yv.free_symbols) - page.varied) else (),
         ),
     ]
-
-
-def _sums_of(kin: Kinetics, tag: str) -> tuple:
-    """The sums of the kinetics block that writes equation ``tag``."""
-    for block in kin.blocks:
-        if any(ln.tag == tag for ln in block.lines):
-            return block.sums
-    return ()
 
 
 def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
