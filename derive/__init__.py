@@ -57,13 +57,34 @@ def solve(problem: Problem | ChainProblem) -> Solution:
 
 
 def render(
-    solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True, plot: bool = False
+    solution: Solution,
+    fmt: str = "md",
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    target: str = "github",
+    heading_level: int = 1,
+    title: bool = True,
+    plot: bool = False,
 ) -> str:
-    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json';
-    ``plot`` adds the plot of the outcome against e after the answer."""
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+
+    ``target`` (Markdown): 'github', 'jupyter', 'mkdocs' or 'pandoc'; ``heading_level``
+    and ``title``: the title's heading level, or no title (see docs/interop.md); ``plot``
+    adds the plot of the outcome against e after the answer.
+    """
     from derive.writers.view import render as render_text
 
-    return render_text(solution, fmt, digits=digits, figures=figures, plot=plot)
+    return render_text(
+        solution,
+        fmt,
+        digits=digits,
+        figures=figures,
+        target=target,
+        heading_level=heading_level,
+        title=title,
+        plot=plot,
+    )
 
 
 def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> Report:

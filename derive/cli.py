@@ -1,19 +1,44 @@
 """The command line: ``derive solve``, ``list``, ``check``, ``variants``, ``handout``, ``plot``. A thin layer over the library.
 
-Exit codes: 0 done, 2 bad input or usage, 1 anything else.
+Exit codes: 0 done, 2 bad input or usage, 1 anything else (a run over its time budget too).
+
+Every command has a time budget (:data:`TIME_BUDGETS`, ``--timeout SECONDS`` to change it,
+0 for none): past it the command stops with a one-line error, and its outputs are as
+they were. Whatever it prints goes through :func:`visible`: a control character from a
+file (an ESC that would recolour the terminal or set its title) is shown as ``\\u001b``,
+never sent raw; JSON stays valid, since that is how JSON writes it.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
+import functools
+import math
+import re
+import signal
 import sys
+import threading
+import time
 import traceback
+from collections.abc import Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, TextIO
 
 from derive import __version__
 from derive.errors import DeriveError, InputError
+from derive.writers.targets import FRAGMENT_PACKAGES, MARKDOWN_TARGETS
 
-FORMATS = ("md", "tex", "pdf", "html", "json")
+if TYPE_CHECKING:
+    from derive.steps.model import Solution
+
+FORMATS = ("md", "tex", "pdf", "html", "json", "docx")
+#: Seconds each command may run by default (``--timeout`` changes it).
+TIME_BUDGETS = {"solve": 60.0, "check": 60.0, "list": 60.0, "variants": 600.0, "handout": 600.0, "plot": 60.0}
+#: Characters never written raw to a terminal: C0 and C1 controls but tab and newline,
+#: DEL, and the invisible ones that reorder or break lines (bidi controls, U+2028/9).
+_HIDDEN = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
+FRAGMENT_PREAMBLE = rf"\usepackage{{{','.join(FRAGMENT_PACKAGES)}}}"
 
 
 class _Parser(argparse.ArgumentParser):
@@ -21,24 +46,49 @@ class _Parser(argparse.ArgumentParser):
         raise InputError(f"{message} (see 'derive --help')", where="usage")
 
 
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, not {text!r}") from None
+    if not math.isfinite(value) or value < 0:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, 0 or more, not {text!r}")
+    return value
+
+
+@functools.cache
 def _parser() -> argparse.ArgumentParser:
+    """The argument parser (built once: it keeps no state between runs)."""
     parser = _Parser(
-        prog="derive", description="Worked solutions of central-impact problems, in the layout of the course notes."
+        prog="derive",
+        description="Worked solutions of central-impact problems, in the layout of the course notes.",
+        epilog="Time budgets (--timeout): "
+        + ", ".join(f"{k} {v:g} s" for k, v in TIME_BUDGETS.items())
+        + "; past it a command stops with an error (exit code 1).",
     )
     parser.add_argument("--version", action="version", version=f"derive {__version__}")
     parser.add_argument("--debug", action="store_true", help="show the traceback of an error")
+    parser.add_argument(
+        "--timeout", type=_seconds, metavar="SECONDS", help="stop after this long (default: the command's budget)"
+    )
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
     p_solve = sub.add_parser("solve", help="write the worked solution of a problem")
     p_solve.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
-    p_solve.add_argument("--format", "-f", choices=FORMATS, default="md", help="output format (default: md)")
-    p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf needs -o)")
+    p_solve.add_argument(
+        "--format", "-f", choices=FORMATS, default="md", help="output format (default: md; docx through pandoc)"
+    )
+    p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf and docx need -o)")
     p_solve.add_argument(
         "--digits", type=int, help="significant figures (default: the file's, else 3, or 4 when the leading digit is 1)"
     )
     p_solve.add_argument(
-        "--fragment", action="store_true", help="with --format tex: a fragment to \\input, not a whole document"
+        "--fragment",
+        action="store_true",
+        help="with --format tex: a fragment to \\input, not a whole document; "
+        f"its preamble needs {FRAGMENT_PREAMBLE} (see docs/interop.md)",
     )
     p_solve.add_argument("--no-figure", action="store_true", help="leave the figures out")
+    _add_interop_options(p_solve)
     p_solve.add_argument("--verify", action="store_true", help="check every line; print failing lines, exit 1 if any")
     p_solve.add_argument("--plot", action="store_true", help="add the plot of the outcome against e to the answer")
     p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
@@ -86,19 +136,76 @@ def _parser() -> argparse.ArgumentParser:
     )
     p_plot.add_argument("--stage", type=int, help="in a chain, the impact stage to plot (default: the first)")
     p_plot.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+    for p in (p_solve, p_list, p_check, p_var, p_hand, p_plot):
+        p.add_argument(
+            "--timeout",
+            type=_seconds,
+            metavar="SECONDS",
+            default=argparse.SUPPRESS,
+            help=f"stop after this long (default: {TIME_BUDGETS[p.prog.split()[-1]]:g} s; 0: no limit)",
+        )
     return parser
+
+
+def _add_interop_options(p_solve: argparse.ArgumentParser) -> None:
+    """The options for putting the output into other tools (docs/interop.md)."""
+    p_solve.add_argument(
+        "--for",
+        dest="target",
+        choices=tuple(MARKDOWN_TARGETS),
+        help="with --format md: where the Markdown goes (default: github; mkdocs is the same; "
+        "jupyter loads \\cancel for MathJax 2; pandoc: for pandoc -t docx or latex)",
+    )
+    p_solve.add_argument(
+        "--heading-level",
+        type=int,
+        choices=range(1, 7),
+        default=1,
+        metavar="N",
+        help="the title at heading level N (1: # or \\section*), the stages below it (default: 1)",
+    )
+    p_solve.add_argument(
+        "--no-title", action="store_true", help="leave the title out (your heading stands); stages at --heading-level"
+    )
+
+
+def _interop_options(args: argparse.Namespace) -> dict[str, Any]:
+    """The render options of --for, --heading-level and --no-title, checked against --format."""
+    if args.target is not None and args.format != "md":
+        raise InputError("--for is for --format md (docx uses --for pandoc itself)", where="usage")
+    if (args.heading_level != 1 or args.no_title) and args.format in ("html", "json"):
+        raise InputError("--heading-level and --no-title are for md, tex, pdf and docx", where="usage")
+    options: dict[str, Any] = {"heading_level": args.heading_level, "title": not args.no_title}
+    if args.target is not None:
+        options["target"] = args.target
+    return options
+
+
+def _docx(solution: Solution, args: argparse.Namespace, options: dict[str, Any]) -> bytes:
+    from derive.writers.docx import build_docx
+
+    if not args.output:
+        raise InputError("--format docx writes a file: give one with -o FILE.docx", where="usage")
+    return build_docx(
+        solution,
+        digits=args.digits,
+        figures=not args.no_figure,
+        heading_level=options["heading_level"],
+        show_title=options["title"],
+    )
 
 
 def _solve(args: argparse.Namespace) -> int:
     import derive
     from derive.fileio import write_atomic
 
-    if args.digits is not None and not 1 <= args.digits <= 10:
+    if args.digits is not None and not 1 <= args.digits <= 10:  # as the schema's digits field
         raise InputError(
             "expected a whole number of significant figures from 1 to 10",
             where="usage",
             field=f"--digits {args.digits}",
         )
+    options = _interop_options(args)
     problem = derive.load(args.problem)
     solution = derive.solve(problem)
     inputs = (Path(problem.path),)
@@ -107,11 +214,14 @@ def _solve(args: argparse.Namespace) -> int:
 
         if not args.output:
             raise InputError("--format pdf writes a file: give one with -o FILE.pdf", where="usage")
-        tex = derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure, plot=args.plot)
-        data: str | bytes = build_pdf(tex)
+        data: str | bytes = build_pdf(
+            derive.render(solution, "tex", digits=args.digits, figures=not args.no_figure, plot=args.plot, **options)
+        )
+    elif args.format == "docx":
+        data = _docx(solution, args, options)
     else:
         fmt = "tex-fragment" if args.format == "tex" and args.fragment else args.format
-        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure, plot=args.plot)
+        data = derive.render(solution, fmt, digits=args.digits, figures=not args.no_figure, plot=args.plot, **options)
     if args.output:
         write_atomic(args.output, data, inputs=inputs)
     else:
@@ -173,10 +283,10 @@ def _check(args: argparse.Namespace) -> int:
 
 def _variants(args: argparse.Namespace) -> int:
     import derive
-    from derive.homework.variants import write_variants
+    from derive.homework.variants import MAX_COUNT, write_variants
 
-    if not 1 <= args.count <= 100_000:
-        raise InputError("expected a count from 1 to 100000", where="usage", field=f"--count {args.count}")
+    if not 1 <= args.count <= MAX_COUNT:
+        raise InputError(f"expected a count from 1 to {MAX_COUNT}", where="usage", field=f"--count {args.count}")
     problem = derive.load(args.problem)
     exports = None
     if args.moodle or args.prairielearn:  # built first: a bad --result writes nothing
@@ -247,12 +357,82 @@ def _one_line(text: str) -> str:
     return "".join(out)
 
 
+def visible(text: str) -> str:
+    """``text`` with every control character shown as an escape (``\\u001b``), not sent raw.
+
+    In JSON the escape is the character itself, written the JSON way: the document is unchanged.
+    """
+    return _HIDDEN.sub(lambda m: f"\\u{ord(m.group()):04x}", text)
+
+
+class _Visible:
+    """A text stream that passes everything written to it through :func:`visible`."""
+
+    def __init__(self, stream: TextIO) -> None:
+        self.stream = stream
+
+    def write(self, text: str) -> int:
+        self.stream.write(visible(text))
+        return len(text)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self.stream, name)
+
+
+@contextlib.contextmanager
+def _terminal_safe() -> Iterator[None]:
+    """Standard output and error, for the time of a command, show control characters escaped."""
+    out, err = sys.stdout, sys.stderr
+    sys.stdout, sys.stderr = _Visible(out), _Visible(err)  # type: ignore[assignment]
+    try:
+        yield
+    finally:
+        sys.stdout, sys.stderr = out, err
+
+
+class OutOfTime(BaseException):
+    """A command ran past its time budget. Not an Exception: no ``except Exception`` inside SymPy
+    may swallow it."""
+
+
+@contextlib.contextmanager
+def time_budget(seconds: float) -> Iterator[None]:
+    """Raise :class:`OutOfTime` in the main thread after ``seconds`` (0: no limit).
+
+    An alarm already set (by a caller) is put back afterwards, less the time spent.
+    """
+    usable = seconds > 0 and hasattr(signal, "setitimer") and threading.current_thread() is threading.main_thread()
+    if not usable:
+        yield
+        return
+
+    def alarm(signum: int, frame: object) -> None:
+        raise OutOfTime(seconds)
+
+    start = time.monotonic()
+    old_handler = signal.signal(signal.SIGALRM, alarm)
+    old_delay, _ = signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, old_handler)
+        if old_delay > 0:
+            signal.setitimer(signal.ITIMER_REAL, max(0.001, old_delay - (time.monotonic() - start)))
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the CLI; returns the exit code."""
-    argv = list(sys.argv[1:] if argv is None else argv)
+    with _terminal_safe():
+        return _main(list(sys.argv[1:] if argv is None else argv))
+
+
+def _main(argv: list[str]) -> int:
     debug = "--debug" in argv
+    command = "derive"
     try:
         args = _parser().parse_args(argv)
+        command = f"derive {args.command}"
         commands = {
             "solve": _solve,
             "list": _list,
@@ -261,7 +441,18 @@ def main(argv: list[str] | None = None) -> int:
             "handout": _handout,
             "plot": _plot,
         }
-        return commands[args.command](args)
+        budget = args.timeout if args.timeout is not None else TIME_BUDGETS[args.command]
+        with time_budget(budget):
+            return commands[args.command](args)
+    except OutOfTime as exc:
+        if debug:
+            traceback.print_exc()
+        print(
+            f"Error: {command} stopped after {exc.args[0]:g} s, its time budget (--timeout SECONDS to change it, "
+            "0 for no limit); its outputs were not changed",
+            file=sys.stderr,
+        )
+        return 1
     except DeriveError as exc:
         if debug:
             traceback.print_exc()

@@ -17,9 +17,10 @@ class DisplayedSolution(Solution):
     """A :class:`Solution` with the display hooks of Jupyter and of the REPL."""
 
     def _repr_markdown_(self) -> str:
+        """The worked solution as Markdown for notebooks (``\\require{cancel}`` where MathJax 2 needs it)."""
         from derive.writers.view import render
 
-        return render(self, "md")
+        return render(self, "md", target="jupyter")
 
     def _repr_latex_(self) -> str:
         """The boxed answers as display math (for front ends that show LaTeX, not Markdown)."""

@@ -7,6 +7,7 @@ Text from a problem file is data: nothing in it may become a LaTeX command
 from __future__ import annotations
 
 import html
+import re
 
 _TEX_SPECIAL = {
     "\\": r"\textbackslash{}",
@@ -92,28 +93,46 @@ for _i, _name in enumerate(_GREEK):
             _TEX_UNICODE[chr(0x0391 + _i)] = rf"$\{cap}$"
 
 
+#: A word longer than this (a URL) may break after any of :data:`_BREAK_AFTER`.
+LONG_WORD = 30
+_BREAK_AFTER = frozenset("/.-_?&=#:;,")
+
+
 def tex(text: str) -> str:
-    """``text`` as LaTeX that prints it literally and runs nothing."""
+    """``text`` as LaTeX that prints it literally and runs nothing; a long word (a URL) may
+    break across lines after a slash, a dot, a hyphen and the like, so it cannot run off
+    the page."""
+    return "".join(_tex_word(w, len(w) > LONG_WORD) for w in re.split(r"(\s+)", text))
+
+
+def _tex_word(word: str, breakable: bool) -> str:
     out = []
-    for ch in text:
-        if ch in _TEX_SPECIAL:
-            out.append(_TEX_SPECIAL[ch])
-        elif ch in _TEX_UNICODE:
-            out.append(_TEX_UNICODE[ch])
-        elif ord(ch) < 32 or ord(ch) == 127:
-            out.append(" ")
-        elif ord(ch) < 128 or 0xC0 <= ord(ch) <= 0xFF:
-            out.append(ch)  # ASCII and Latin-1 letters: T1 fonts have them
-        else:
-            out.append("?")
+    for ch in word:
+        out.append(_tex_char(ch))
+        if breakable and ch in _BREAK_AFTER:
+            out.append(r"\allowbreak{}")
     return "".join(out)
+
+
+def _tex_char(ch: str) -> str:
+    if ch in _TEX_SPECIAL:
+        return _TEX_SPECIAL[ch]
+    if ch in _TEX_UNICODE:
+        return _TEX_UNICODE[ch]
+    if ord(ch) < 32 or ord(ch) == 127:
+        return " "
+    if ord(ch) < 128 or 0xC0 <= ord(ch) <= 0xFF:
+        return ch  # ASCII and Latin-1 letters: T1 fonts have them
+    return "?"
 
 
 _MD_SPECIAL = set("\\`*_[]|$~#")
 
 
-def markdown(text: str) -> str:
-    """``text`` as Markdown that shows it literally (no markup, no math, no HTML)."""
+def markdown(text: str, *, caret: bool = False) -> str:
+    """``text`` as Markdown that shows it literally (no markup, no math, no HTML);
+    ``caret`` escapes ``^`` too, which pandoc's Markdown reads as a superscript."""
+    special = _MD_SPECIAL | {"^"} if caret else _MD_SPECIAL
     out = []
     for ch in text.replace("\r", " ").replace("\n", " "):
         if ch == "<":
@@ -122,7 +141,7 @@ def markdown(text: str) -> str:
             out.append("&gt;")
         elif ch == "&":
             out.append("&amp;")
-        elif ch in _MD_SPECIAL:
+        elif ch in special:
             out.append("\\" + ch)
         elif ord(ch) < 32:
             out.append(" ")

@@ -64,7 +64,19 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
             parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
             scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
             terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
+        summary = getattr(module, "FUZZ_SUMMARY", None)
+        if summary and str(getattr(module, "__file__", "")).endswith("test_fuzz_files.py"):
+            slowest = summary["slowest"][0] if summary["slowest"] else {}
+            terminalreporter.write_line(
+                f"fuzz files: {summary['files']} (seed {summary['seed']}) in {summary['seconds']} s; "
+                f"outcomes {summary['outcomes']}; errors by class {summary['errors_by_class']}; "
+                f"slowest {slowest.get('seconds')} s ({slowest.get('kind')}, {slowest.get('command')})"
+            )
         checked = getattr(module, "LINES_CHECKED", None)
         if checked and str(getattr(module, "__file__", "")).endswith("test_every_line.py"):
             parts = ", ".join(f"{k} {v}" for k, v in sorted(checked.items()))
             terminalreporter.write_line(f"verify: {sum(checked.values())} lines checked ({parts})")
+            known = getattr(module, "KNOWN_SEEN", None)
+            if known:
+                shown = ", ".join(f"{k} {v}" for k, v in sorted(known.items()))
+                terminalreporter.write_line(f"verify: pages with a known class of wrong line (issue #12): {shown}")

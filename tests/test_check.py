@@ -545,7 +545,7 @@ def test_answers_file(tmp_path: Path) -> None:
     ("body", "needle"),
     [
         ("[answers]\nv_X2 = 1\n", "answers.toml:2: [answers] v_X2: unknown result"),
-        ("[answers]\nv_A2n = true\n", "[answers] v_A2n: expected a number or text"),
+        ("[answers]\nv_A2n = true\n", "[answers] v_A2n = true: expected a number or text"),
         ('[answers]\nv_A2n = "1.2 parsecs"\n', "unknown unit 'parsecs'"),
         ('[answers]\nv_A2n = "1.2 +* 3"\n', "[answers] v_A2n"),
         ('[answers]\nv_A2n = "import os"\n', "[answers] v_A2n"),

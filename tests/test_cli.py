@@ -98,8 +98,10 @@ def test_input_errors(cli, tmp_path: Path, name: str, body: str, needles: list[s
 def test_missing_file_and_usage_errors(cli) -> None:
     r = cli("solve", "no-such-problem")
     assert r.code == 2 and "no bundled problem" in r.err
-    r = cli("solve", "notes-4c11-two-spheres", "--format", "docx")
+    r = cli("solve", "notes-4c11-two-spheres", "--format", "rtf")
     assert r.code == 2 and "invalid choice" in r.err
+    r = cli("solve", "notes-4c11-two-spheres", "--format", "docx")
+    assert r.code == 2 and "-o" in r.err
     r = cli("solve", "notes-4c11-two-spheres", "--digits", "0")
     assert r.code == 2 and "--digits" in r.err
     r = cli("solve", "notes-4c11-two-spheres", "--format", "pdf")

@@ -46,8 +46,9 @@ from derive.problem.units import ANGLE, DIMENSIONLESS, LENGTH, MASS, VELOCITY
 SCALE = float(os.environ.get("DERIVE_FUZZ_SCALE", "1"))
 #: Cases run per test, for the summary line (see conftest.py).
 FUZZ_COUNTS: Counter[str] = Counter()
-#: Seconds one case may take before it counts as a hang.
-CASE_LIMIT = 20.0
+#: Seconds one case may take before it counts as a hang: the command line's time budget for
+#: ``derive solve`` (an oblique problem takes a few seconds, more on a loaded machine).
+CASE_LIMIT = 60.0
 
 
 def examples(base: int) -> int:
@@ -236,7 +237,7 @@ def valid_direct(draw: st.DrawFn) -> tuple[dict[str, Any], dict[str, Fraction]]:
     vA_raw, _ = speed_text(vA1, draw)
     vB_raw, _ = speed_text(vB1, draw)
     doc = {
-        "title": draw(st.text(st.characters(blacklist_characters="\x00"), min_size=1, max_size=30)),
+        "title": draw(st.text(st.characters(blacklist_characters="\x00"), min_size=1, max_size=30)),  # NUL: refused
         "kind": "direct",
         "given": {"m_A": mA_raw, "m_B": mB_raw, "e": e_raw, "v_A1": vA_raw, "v_B1": vB_raw},
     }
@@ -829,8 +830,9 @@ def test_oblique_problem_in_km_per_h_solves_quickly() -> None:
 
 def test_expression_values_are_exact() -> None:
     """Was: problem._given's nsimplify(rational=False) turned sin(sin(...sin(1))) (18 deep) into
-    2**(450/553)*3**(212/553)*5**(468/553)*7**(351/553)/98, right to 19 digits only."""
-    expr = "sin(" * 18 + "1" + ")" * 18
+    2**(450/553)*3**(212/553)*5**(468/553)*7**(351/553)/98, right to 19 digits only. (Functions
+    now nest 4 deep at most: deeper, SymPy's simplification of the solution takes minutes.)"""
+    expr = "sin(" * 4 + "1" + ")" * 4
     problem = loads(REPRO_BASE + f'k = "{expr}"\n', path="exact.toml")
     exact = sympy.sympify(expr)
     assert abs(sympy.N(problem.given("k").value - exact, 50)) < sympy.Float("1e-40")

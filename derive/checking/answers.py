@@ -29,35 +29,20 @@ def load_answers(path: str | Path) -> Answers:
 
 
 def loads_answers(text: str, *, path: str = "<answers>") -> Answers:
-    """Read answers given as TOML text (``path`` only names it in messages)."""
-    from derive.problem import Source, parse_toml
+    """Read answers given as TOML text (``path`` only names it in messages); the file is
+    checked against the answers table of :mod:`derive.problem.schema` first."""
+    from derive.problem import Source, parse_toml, validate
+    from derive.problem.schema import ANSWERS
+    from derive.problem.source import printable
 
     data = parse_toml(text, path)
     lines = Source(path, text)
-
-    def where(section: str | None, key: str | None) -> str:
-        n = lines.line_of(section, key)
-        return f"{path}:{n}" if n else path
-
-    for key in data:
-        if key not in ("answers", "equations", "tolerance"):
-            raise InputError(
-                "unknown field (expected [answers], [equations] or tolerance)", where=where(None, key), field=key
-            )
+    validate.check(data, ANSWERS, lines)
     out_a, out_e = [], []
     for section, out in (("answers", out_a), ("equations", out_e)):
-        tbl = data.get(section, {})
-        if not isinstance(tbl, dict):
-            raise InputError('expected a table such as [answers] v_B2n = "8.40 m/s"', where=path, field=section)
-        for key, value in tbl.items():
-            fld = f"[{section}] {key}"
-            if isinstance(value, bool) or not isinstance(value, (str, int, float)):
-                raise InputError('expected a number or text such as "8.40 m/s"', where=where(section, key), field=fld)
-            if section == "equations" and not isinstance(value, str):
-                raise InputError(
-                    'expected an equation as text, such as "v_B2n - v_A2n = 9.5"', where=where(section, key), field=fld
-                )
-            out.append(Entry(str(key), value, where=where(section, key), field=fld))
+        for key, value in data.get(section, {}).items():
+            where = lines.where(lines.line_of(section, key))
+            out.append(Entry(str(key), value, where=where, field=f"[{section}] {printable(key)}"))
     if not out_a and not out_e:
         raise InputError("has nothing to check: give an [answers] table (or [equations])", where=path)
     return Answers(tuple(out_a), tuple(out_e), data.get("tolerance"))

@@ -7,7 +7,6 @@ checks found: it judges nothing.
 
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass
 from typing import Any
 
@@ -152,7 +151,9 @@ class Report:
 
     def json(self) -> str:
         """The report as JSON text."""
-        return json.dumps(self.as_dict(), indent=2, ensure_ascii=False) + "\n"
+        from derive.fileio import dumps_json
+
+        return dumps_json(self.as_dict())  # strict: no NaN or Infinity
 
     def summary(self) -> str:
         """One sentence: how many are right, wrong, carried, unreadable."""

@@ -38,7 +38,6 @@ from __future__ import annotations
 import copy
 import hashlib
 import html
-import json
 import pprint
 import re
 import uuid
@@ -51,6 +50,7 @@ import sympy
 
 from derive.checking import mistakes
 from derive.errors import InputError
+from derive.fileio import dumps_json
 from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
 from derive.numbers import figures_for, format_number
 from derive.problem import Problem
@@ -736,7 +736,7 @@ def prairielearn_files(
         variants=pprint.pformat(rows, width=100, sort_dicts=False),
     )
     return {
-        "info.json": json.dumps(info, indent=2, ensure_ascii=False) + "\n",
+        "info.json": dumps_json(info),
         "question.html": _clean(question),
         "server.py": server,
     }

@@ -28,6 +28,12 @@ from derive.writers.printing import SlotBook, exact_latex
 
 _TOKEN = re.compile(r"DRVSLOT(\d+)X")
 MAX_ATTEMPTS_PER_VARIANT = 200
+#: The most variants one run draws (each is a page or two on disk).
+MAX_COUNT = 10_000
+#: Draws between looks at the rate of success: where it cannot reach the count, stop.
+GIVE_UP_AFTER = 2_000
+#: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
+OWNED = ("variant-*.md", "variant-*.tex", "variant-*.pdf", "variant-*.json", "key.csv", "key.json")
 
 
 @dataclass(frozen=True)
@@ -169,8 +175,16 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
     out: list[Variant] = []
     attempts = 0
     total = math.prod(len(x) for x in pools)
-    while len(out) < count and attempts < MAX_ATTEMPTS_PER_VARIANT * count and len(seen) < total:
+    budget = MAX_ATTEMPTS_PER_VARIANT * count
+    while len(out) < count and attempts < budget and len(seen) < total:
         attempts += 1
+        if attempts % GIVE_UP_AFTER == 0 and len(out) * (budget - attempts) < (count - len(out)) * attempts:
+            raise InputError(
+                f"{len(out)} of the first {attempts:,} draws {_what_is_met(p)}; at that rate {count} variants "
+                "cannot be found: check the conditions and the [vary] ranges",
+                where=p.path,
+                field="--count",
+            )
         key = tuple(rng.randrange(len(pool)) for pool in pools)
         if key in seen:
             continue
@@ -186,6 +200,12 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
             field="--count",
         )
     return out
+
+
+def _what_is_met(problem: Problem) -> str:
+    if problem.conditions:
+        return "meet " + " and ".join(c.text for c in problem.conditions)
+    return "are physical (bodies that approach, 0 <= e <= 1, positive masses)"
 
 
 def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
@@ -301,7 +321,7 @@ def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> 
         r = compiled.solution.results[name]
         try:
             value = complex(fn(*args))
-        except (ZeroDivisionError, ValueError, TypeError):
+        except (ZeroDivisionError, ValueError, TypeError, OverflowError):
             continue
         if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)):
             continue
@@ -360,89 +380,93 @@ def write_variants(
     problem: Problem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
 ) -> list[str]:
     """Draw ``count`` variants and write each (statement and worked solution) and the
-    answer key (key.csv, key.json) into ``out_dir``, one file at a time.
+    answer key (key.csv, key.json) into ``out_dir``.
 
-    Returns the one-line errors of the variants that could not be written (a PDF
-    that did not compile); the others are written all the same.
+    The folder is written whole: into a temporary folder that then takes ``out_dir``'s
+    place, so a run stopped at any point leaves the old folder or the new one. Returns
+    the one-line errors of the variants that could not be written (a PDF that did not
+    compile); the others are written all the same.
     """
-    import csv
-    import json
-    import os
-    import tempfile
-    import textwrap
-    from pathlib import Path
-
     from derive.errors import DeriveError
+    from derive.fileio import folder_atomic
 
-    folder = Path(out_dir)
-    if folder.exists() and not folder.is_dir():
-        raise InputError("exists and is not a folder", where=str(folder), field="-o")
-    folder.mkdir(parents=True, exist_ok=True)
     compiled = compile_problem(problem, digits, fmt)
     chosen = draw(compiled, count, seed)
     width = max(2, len(str(count)))
     failures: list[str] = []
-    names = list(compiled.names)
-    result_names: list[str] = []
-    # The answer key is streamed to temporary files and renamed at the end, so
-    # memory stays flat however many variants are drawn, and no key is half-written.
-    csv_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.csv.", suffix=".tmp", delete=False, newline="")  # noqa: SIM115
-    json_tmp = tempfile.NamedTemporaryFile("w", dir=folder, prefix=".key.json.", suffix=".tmp", delete=False)  # noqa: SIM115
-    try:
-        with csv_tmp, json_tmp:
-            writer = csv.writer(csv_tmp, lineterminator="\n")
-            head = {"title": problem.title, "source": problem.source, "seed": seed, "count": count}
-            json_tmp.write(json.dumps(head, indent=2, ensure_ascii=False)[:-2] + ',\n  "variants": [\n')
-            for v in chosen:
-                stem = f"variant-{v.number:0{width}d}"
-                row = {
-                    "variant": v.number,
-                    "givens": given_values(compiled, v),
-                    "results": answers(compiled, v, digits),
-                }
-                if not result_names:
-                    result_names = list(row["results"])
-                    header = ["variant"]
-                    header += [f"{n} [{row['givens'][n]['unit']}]" for n in names]
-                    header += [f"{n} [{row['results'][n]['unit']}]" for n in result_names]
-                    writer.writerow(header)
-                cells = [v.number, *(repr(row["givens"][n]["value"]) for n in names)]
-                cells += [row["results"][n]["shown"] if n in row["results"] else "" for n in result_names]
-                writer.writerow(cells)
-                sep = ",\n" if v.number > 1 else ""
-                json_tmp.write(sep + textwrap.indent(json.dumps(row, indent=2, ensure_ascii=False), "    "))
-                try:
-                    _write_one(compiled, v, folder, stem, fmt, digits, row)
-                except DeriveError as exc:
-                    failures.append(f"{stem}: {exc}")
-                _progress(v.number, len(chosen))
-            json_tmp.write("\n  ]\n}\n")
-        os.replace(csv_tmp.name, folder / "key.csv")
-        os.replace(json_tmp.name, folder / "key.json")
-    finally:
-        for tmp in (csv_tmp.name, json_tmp.name):
-            if os.path.exists(tmp):
-                os.unlink(tmp)
+    with folder_atomic(out_dir, owned=OWNED) as folder, _Key(folder, problem, seed, count, compiled.names) as key:
+        for v in chosen:
+            stem = f"variant-{v.number:0{width}d}"
+            row = {"variant": v.number, "givens": given_values(compiled, v), "results": answers(compiled, v, digits)}
+            key.add(v.number, row)
+            try:
+                _write_one(compiled, v, folder, stem, fmt, digits, row)
+            except DeriveError as exc:
+                failures.append(f"{stem}: {exc}")
+            _progress(v.number, len(chosen))
     return failures
+
+
+class _Key:
+    """The answer key, streamed to key.csv and key.json as the variants are written
+    (memory stays flat however many are drawn)."""
+
+    def __init__(self, folder, problem: Problem, seed: int, count: int, names: tuple[str, ...]) -> None:
+        self.folder, self.names = folder, list(names)
+        self.head = {"title": problem.title, "source": problem.source, "seed": seed, "count": count}
+        self.result_names: list[str] = []
+
+    def __enter__(self) -> _Key:
+        import csv
+
+        from derive.fileio import dumps_json
+
+        self.csv_fh = open(self.folder / "key.csv", "w", newline="", encoding="utf-8")
+        self.json_fh = open(self.folder / "key.json", "w", encoding="utf-8")
+        self.writer = csv.writer(self.csv_fh, lineterminator="\n")
+        self.json_fh.write(dumps_json(self.head)[:-3] + ',\n  "variants": [\n')
+        return self
+
+    def add(self, number: int, row: dict) -> None:
+        """One variant's row: its givens and results."""
+        import textwrap
+
+        from derive.fileio import dumps_json
+
+        if not self.result_names:
+            self.result_names = list(row["results"])
+            header = ["variant"]
+            header += [f"{n} [{row['givens'][n]['unit']}]" for n in self.names]
+            header += [f"{n} [{row['results'][n]['unit']}]" for n in self.result_names]
+            self.writer.writerow(header)
+        cells = [number, *(repr(row["givens"][n]["value"]) for n in self.names)]
+        cells += [row["results"][n]["shown"] if n in row["results"] else "" for n in self.result_names]
+        self.writer.writerow(cells)
+        sep = ",\n" if number > 1 else ""
+        self.json_fh.write(sep + textwrap.indent(dumps_json(row).rstrip("\n"), "    "))
+
+    def __exit__(self, *exc: object) -> None:
+        if exc[0] is None:
+            self.json_fh.write("\n  ]\n}\n")
+        self.csv_fh.close()
+        self.json_fh.close()
 
 
 def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
     """One variant's files: statement and worked solution (md), LaTeX, PDF or JSON."""
-    import json
-
-    from derive.fileio import write_atomic
+    from derive.fileio import dumps_json
 
     if fmt == "json":
-        write_atomic(folder / f"{stem}.json", json.dumps(row, indent=2) + "\n")
+        (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
     elif fmt == "md":
         page = fill(compiled, v, "md", digits)
-        write_atomic(folder / f"{stem}-problem.md", statement_only(page))
-        write_atomic(folder / f"{stem}.md", page)
+        (folder / f"{stem}-problem.md").write_text(statement_only(page), encoding="utf-8")
+        (folder / f"{stem}.md").write_text(page, encoding="utf-8")
     else:
         tex = fill(compiled, v, "tex", digits)
         if fmt == "tex":
-            write_atomic(folder / f"{stem}.tex", tex)
+            (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
         else:
             from derive.writers.pdf import build_pdf
 
-            write_atomic(folder / f"{stem}.pdf", build_pdf(tex))
+            (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))

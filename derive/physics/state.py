@@ -63,7 +63,7 @@ class ChainState:
         self, i: int, key: str | None, what: str, value: Any = None, cls: type[InputError] = InputError
     ) -> InputError:
         """A one-line error at stage ``i``'s field ``key``."""
-        return self.chain.ctx.error(f"stage {i}: {what}", section="stage", key=key, value=value, cls=cls)
+        return self.chain.stage_source(i).error(what, key=key, value=value, cls=cls)
 
     def quantity(self, i: int, st: dict, key: str, dim: units.Dim | None, default: Any = None) -> sympy.Expr:
         """A stage field: a name or an expression of known quantities, as an exact expression."""
@@ -104,6 +104,12 @@ class ChainState:
             raise self.err(i, "result", f"{name!r} is not a new name (letters, digits and _)", name)
         val = self.value(expr)
         value = None if val.free_symbols else val
+        if value is not None and not finite_number(value):
+            raise self.err(i, "result", f"{name} works out beyond what derive computes with (at most 1e300)", name)
+        if value is not None and not real_number(value):
+            raise self.err(
+                i, "result", f"{name} works out to a complex number (a square root of a negative number?)", name
+            )
         if unit is None:
             unit = units.working_unit(dim, self.chain.system).text if dim in units.SYSTEMS[self.chain.system] else ""
         g = Given(name, symbol(name), dim, value, unit, definition=expr)
@@ -132,6 +138,24 @@ class ChainState:
             return bool(v.is_positive)
         c = complex(sympy.N(v))
         return abs(c.imag) < 1e-12 and c.real > 0
+
+
+def finite_number(value: sympy.Expr) -> bool:
+    """True when ``value`` is a number of magnitude at most 1e300 (finite in every output)."""
+    try:
+        size = abs(complex(sympy.N(value, 15)))
+    except (TypeError, ValueError, OverflowError):
+        return True  # not a plain number (a complex or undefined one): reported where it is used
+    return size <= 1e300
+
+
+def real_number(value: sympy.Expr) -> bool:
+    """False when ``value`` is a number with an imaginary part (sqrt(-1)): no output can show it."""
+    try:
+        c = complex(sympy.N(value, 15))
+    except (TypeError, ValueError, OverflowError):
+        return True  # not a plain number: reported where it is used
+    return abs(c.imag) <= 1e-12 * max(1.0, abs(c.real))
 
 
 def resolve(expr: sympy.Expr, defs: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:

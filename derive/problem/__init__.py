@@ -1,7 +1,8 @@
 """Problem files: read a TOML problem or chain, check every field, and build its record.
 
-The format is documented in ``docs/problem-format.md``. Every error names the file,
-the line where it can be found, the field and what was expected.
+The format is documented in ``docs/problem-format.md`` and declared in
+:mod:`derive.problem.schema`. Every error names the file, the line where it can be
+found, the field and what was expected.
 """
 
 from __future__ import annotations
@@ -14,27 +15,18 @@ from derive.problem.source import Source, parse_toml
 
 if TYPE_CHECKING:
     from derive.problem.chain import ChainProblem
-    from derive.problem.reader import Condition, Given, Motion, Problem, build_problem
+    from derive.problem.reader import build_problem
+    from derive.problem.records import Condition, Given, Motion, Problem
 
-#: Names this package gives, and the module each lives in (imported on first use, so
-#: that reading a title needs no SymPy).
+#: Names imported on first use: the records need SymPy, the schema and the TOML reader do not.
 _LAZY = {
-    "ChainProblem": "chain",
-    "Condition": "reader",
-    "Given": "reader",
-    "Motion": "reader",
-    "Problem": "reader",
-    "build_problem": "reader",
+    "ChainProblem": "derive.problem.chain",
+    "build_problem": "derive.problem.reader",
+    "Condition": "derive.problem.records",
+    "Given": "derive.problem.records",
+    "Motion": "derive.problem.records",
+    "Problem": "derive.problem.records",
 }
-
-
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        import importlib
-
-        return getattr(importlib.import_module(f"derive.problem.{_LAZY[name]}"), name)
-    raise AttributeError(f"module 'derive.problem' has no attribute {name!r}")
-
 
 __all__ = [
     "ChainProblem",
@@ -47,6 +39,8 @@ __all__ = [
     "find",
     "load",
     "loads",
+    "parse_toml",
+    "title",
 ]
 
 
@@ -86,18 +80,34 @@ def loads(text: str, *, path: str = "<string>", name: str = "") -> Problem | Cha
 
     source = Source(path, text)
     data = parse_toml(text, path)
-    if isinstance(data, dict) and data.get("kind") == "chain":
+    if data.get("kind") == "chain":
         return build_chain(data, source, name)
     return build_problem(data, source, name)
 
 
+def __getattr__(name: str) -> Any:
+    """The records and the builder, imported when first asked for (they import SymPy)."""
+    if name in _LAZY:
+        import importlib
+
+        return getattr(importlib.import_module(_LAZY[name]), name)
+    raise AttributeError(f"module 'derive.problem' has no attribute {name!r}")
+
+
 def title(path: str | Path) -> str:
-    """A problem file's title, read without checking the rest (for ``derive list``)."""
+    """A problem file's title, read and checked against the schema's ``title`` field
+    without building the rest (for ``derive list``: no SymPy)."""
     from derive.fileio import read_user_text
+    from derive.problem.schema import PROBLEM
+    from derive.problem.validate import check_value, missing
 
     path = Path(path)
-    data = parse_toml(read_user_text(path, "a problem file"), str(path))
-    value = data.get("title")
-    if not isinstance(value, str):
-        raise InputError("expected a title (a line of text)", where=str(path), field="title")
-    return value
+    text = read_user_text(path, "a problem file")
+    source = Source(str(path), text)
+    data = parse_toml(text, str(path))
+    field = PROBLEM.get("title")
+    assert field is not None
+    if "title" not in data:
+        raise missing(field, source)
+    check_value(data["title"], field, source, ("title",))
+    return data["title"]

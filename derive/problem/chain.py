@@ -1,8 +1,11 @@
 """Chain files (``kind = "chain"``): givens and a list of ``[[stage]]`` tables, checked.
 
-The stages are solved by :mod:`derive.physics.chain`; an impact stage is read as a
-problem of its own (:func:`derive.problem.reader.build_problem`) once the earlier
-stages have given the quantities it names.
+Every stage is checked against its type's table in the schema when the file is read:
+its fields' types, the syntax of its expressions, and the names it gives its results
+(new names only: a stage may not overwrite a given or an earlier result). What its
+expressions mean is known only when the earlier stages are solved, so the stages are
+solved by :mod:`derive.physics.chain`; an impact stage is read as a problem of its own
+(:func:`derive.problem.reader.build_problem`) once the quantities it names are known.
 """
 
 from __future__ import annotations
@@ -12,14 +15,14 @@ from typing import Any
 
 import sympy
 
-from derive.problem import units
-from derive.problem.reader import Given, build_givens, infer_system
-from derive.problem.source import Source, text_field, type_name
+from derive.problem.expr import ParseError, number_with_unit, scan
+from derive.problem.givens import build_givens, infer_system
+from derive.problem.records import Given, RecordError
+from derive.problem.schema import CHAIN, STAGES
+from derive.problem.source import Source
+from derive.problem.validate import check
 
-STAGE_TYPES = ("fall", "rise", "slide", "spring", "impact", "bounces", "again", "define", "solve")
-
-
-CHAIN_FIELDS = ("title", "kind", "source", "statement", "question", "digits", "units", "given", "stage", "find")
+STAGE_TYPES = tuple(STAGES)
 
 
 @dataclass(frozen=True)
@@ -40,53 +43,81 @@ class ChainProblem:
     ctx: Any = field(default=None, compare=False, repr=False)
     kind: str = "chain"
 
+    def __post_init__(self) -> None:
+        if self.digits is not None and (isinstance(self.digits, bool) or not 1 <= self.digits <= 10):
+            raise RecordError("expected a whole number of significant figures from 1 to 10", key="digits")
+        if not self.stages or any(st.get("type") not in STAGE_TYPES for st in self.stages):
+            raise RecordError(f"expected stages of the types {', '.join(STAGE_TYPES)}", key="stage")
+
     def symbols(self) -> dict[str, sympy.Symbol]:
+        """Name -> symbol for every given."""
         return {g.name: g.symbol for g in self.givens}
+
+    def stage_source(self, i: int) -> Source:
+        """Where stage ``i`` (from 1) is in the file, for its messages: ``file:line: [stage i] key``."""
+        return self.ctx.within("stage", i - 1, label=f"stage {i}")
 
 
 def build_chain(data: dict[str, Any], ctx: Source, name: str) -> ChainProblem:
-    """Check a chain file's fields (the stages are checked as they are solved)."""
-    for key in data:
-        if key not in CHAIN_FIELDS:
-            raise ctx.error(f"unknown field (expected one of: {', '.join(CHAIN_FIELDS)})", key=key)
-    title = text_field(data, "title", ctx, required=True)
-    digits = data.get("digits")
-    if digits is not None and (isinstance(digits, bool) or not isinstance(digits, int) or not 1 <= digits <= 10):
-        raise ctx.error("expected a whole number of significant figures from 1 to 10", key="digits", value=digits)
+    """Check a chain file: its fields, and each stage's fields, expressions and result names."""
+    check(data, CHAIN, ctx)
     given_tbl = data.get("given", {})
-    if not isinstance(given_tbl, dict):
-        raise ctx.error(f"expected a table, not {type_name(given_tbl)}", key="given")
     system = data.get("units") or infer_system(given_tbl)
-    if system not in units.SYSTEMS:
-        raise ctx.error('expected "SI" or "US"', key="units", value=system)
     givens = build_givens(given_tbl, ctx, True, system)
-    stages = data.get("stage")
-    if not isinstance(stages, list) or not stages or not all(isinstance(s, dict) for s in stages):
-        raise ctx.error("is missing: a chain needs [[stage]] tables", key="stage")
-    if len(stages) > 30:
-        raise ctx.error("has too many stages (at most 30)", key="stage")
-    for i, st in enumerate(stages, 1):
-        if st.get("type") not in STAGE_TYPES:
-            raise ctx.error(
-                f"stage {i}: expected type one of {', '.join(STAGE_TYPES)}",
-                section="stage",
-                key="type",
-                value=st.get("type"),
-            )
-    find = data.get("find", [])
-    if not isinstance(find, list) or not all(isinstance(f, str) for f in find):
-        raise ctx.error("expected a list of names", key="find", value=find)
+    used = {g.name for g in givens}
+    for i, st in enumerate(data["stage"], 1):
+        stage_ctx = ctx.within("stage", i - 1, label=f"stage {i}")
+        _check_condition(st, stage_ctx)
+        for key, new in _results(i, st):
+            if new in used:
+                raise stage_ctx.error(
+                    f"{new!r} is used already (a given or an earlier stage's result): choose a new name",
+                    key=key,
+                    value=new,
+                )
+            used.add(new)
     return ChainProblem(
         path=ctx.path,
-        title=title or "",
+        title=data["title"],
         givens=tuple(givens),
-        stages=tuple(stages),
+        stages=tuple(data["stage"]),
         system=system,
-        digits=digits,
-        source=text_field(data, "source", ctx),
-        statement=text_field(data, "statement", ctx),
-        question=text_field(data, "question", ctx),
-        find=tuple(find),
+        digits=data.get("digits"),
+        source=data.get("source"),
+        statement=data.get("statement"),
+        question=data.get("question"),
+        find=tuple(data.get("find", [])),
         name=name,
         ctx=ctx,
     )
+
+
+def _results(i: int, st: dict[str, Any]) -> list[tuple[str, str]]:
+    """(field, name) of each name stage ``i`` gives its results (defaults from the schema)."""
+    kind = st["type"]
+    if kind == "impact":
+        return [(f"results.{k}", v) for k, v in st.get("results", {}).items()]
+    if kind == "bounces":
+        n = st.get("count", 3)
+        return [("count", f"{x}_b{k}") for k in range(1, n + 1) for x in "vh"] + [("count", "s_total")]
+    f = STAGES[kind].get("result")
+    if f is None:
+        return []
+    return [("result", st.get("result", f.default.replace("<stage>", str(i))))]
+
+
+def _check_condition(st: dict[str, Any], ctx: Source) -> None:
+    """A solve stage's condition: one equation, each side a well-formed expression (or a
+    number with its unit), its numbers in range."""
+    text = st.get("condition")
+    if st["type"] != "solve" or text is None:
+        return
+    if text.count("=") != 1:
+        raise ctx.error('expected one equation such as "h_2 = 40 m"', key="condition", value=text)
+    left, right = text.split("=")
+    try:
+        scan(left)
+        if number_with_unit(right) is None:
+            scan(right)
+    except ParseError as exc:
+        raise ctx.error(str(exc), key="condition", value=text) from None

@@ -27,6 +27,7 @@ MAX_EXPONENT = 64
 MAX_DECIMAL_EXPONENT = 30
 MAX_DEGREE = 128  # highest total power of the names in an expression (x^64 * y^64)
 MAX_MAGNITUDE = 1e300  # largest computed value of a function or irrational power of numbers
+MAX_FUNCTION_NESTING = 4  # sin(sin(sin(sin(x)))): SymPy's simplification grows exponentially with more
 
 #: function name -> (SymPy function, number of arguments)
 FUNCTIONS = {
@@ -49,6 +50,7 @@ _TOKEN = re.compile(
     r"|(?P<op>\*\*|[-+*/^(),]))"
 )
 NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
 class ParseError(ValueError):
@@ -89,6 +91,7 @@ class _Parser:
         self.i = 0
         self.names = names
         self.depth = 0
+        self.calls = 0
 
     def peek(self) -> str | None:
         return self.toks[self.i][1] if self.i < len(self.toks) else None
@@ -171,11 +174,7 @@ class _Parser:
     def atom(self) -> Parsed:
         kind, val = self.take()
         if kind == "num":
-            if len(val) > 30:
-                raise ParseError(f"the number {val[:20]}… is too long")
-            if "e" in val.lower() and abs(int(val.lower().split("e")[1])) > MAX_DECIMAL_EXPONENT:
-                raise ParseError(f"the number {val} is out of range")
-            return Parsed(sympy.Rational(val), DIMENSIONLESS)
+            return Parsed(number(val), DIMENSIONLESS)
         if kind == "name":
             if self.peek() == "(":
                 return self.call(val)
@@ -199,14 +198,85 @@ class _Parser:
             raise ParseError(f"unknown function {name!r} (allowed: {allowed})")
         func, nargs = FUNCTIONS[name]
         self.expect("(")
+        self.calls += name != "sqrt"
+        if self.calls > MAX_FUNCTION_NESTING:
+            raise ParseError(f"functions are nested too deeply (at most {MAX_FUNCTION_NESTING} levels)")
         args = [self.sum()]
         while self.peek() == ",":
             self.take()
             args.append(self.sum())
         self.expect(")")
+        self.calls -= name != "sqrt"
         if len(args) != nargs:
             raise ParseError(f"{name} takes {nargs} argument{'s' if nargs > 1 else ''}, not {len(args)}")
         return _apply(name, func, args)
+
+
+def _check_number(text: str) -> None:
+    if len(text) > 30:
+        raise ParseError(f"the number {text[:20]}… is too long")
+    if "e" in text.lower() and abs(int(text.lower().split("e")[1][:6] or "0")) > MAX_DECIMAL_EXPONENT:
+        raise ParseError(
+            f"the number {text[:30]} is out of range (exponents from -{MAX_DECIMAL_EXPONENT} to {MAX_DECIMAL_EXPONENT})"
+        )
+
+
+def number(text: str) -> sympy.Rational:
+    """A decimal number written in a file, exactly; its length and exponent are checked before
+    it is built (``1e99999999`` would take for ever)."""
+    if not _NUMBER.fullmatch(text.strip()):
+        raise ParseError(f"{text[:30]!r} is not a number")
+    _check_number(text.strip())
+    return sympy.Rational(text.strip())
+
+
+_NUMBER_UNIT = re.compile(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-z].*)$")
+
+
+def number_with_unit(text: str) -> tuple[sympy.Rational, str] | None:
+    """``"40 m"`` -> (40, "m"); None when ``text`` is not a number followed by a unit.
+    Raises :class:`ParseError` for a malformed or out-of-range number (``1.2.3 m``, ``1e999 m``)."""
+    m = _NUMBER_UNIT.match(text)
+    if not m:
+        return None
+    return number(m.group(1)), m.group(2).strip()
+
+
+def scan(text: str) -> None:
+    """Check ``text``'s syntax without knowing its names: characters, length, numbers,
+    parentheses. A file's stage fields are scanned when it is read; the names they use
+    are known only when the chain is solved."""
+    depth = calls = 0
+    stack: list[bool] = []
+    toks = _tokens(text)
+    if not toks:
+        raise ParseError("the expression is empty")
+    for i, (kind, val) in enumerate(toks):
+        if kind == "num":
+            _check_number(val)
+        elif val == "(":
+            call = i > 0 and toks[i - 1][0] == "name" and toks[i - 1][1] in FUNCTIONS and toks[i - 1][1] != "sqrt"
+            stack.append(call)
+            calls += call
+            depth = max(depth, len(stack))
+            if depth > MAX_DEPTH:
+                raise ParseError(f"the expression is nested too deeply (at most {MAX_DEPTH} levels)")
+            if calls > MAX_FUNCTION_NESTING:
+                raise ParseError(f"functions are nested too deeply (at most {MAX_FUNCTION_NESTING} levels)")
+        elif val == ")":
+            if not stack:
+                raise ParseError("a ')' has no '(' before it")
+            calls -= stack.pop()
+    if stack:
+        raise ParseError("a '(' is not closed")
+
+
+def function_nesting(expr: sympy.Basic) -> int:
+    """How deeply functions (sin, exp, atan2, ...) nest in ``expr``; powers and sqrt do not count."""
+    if not expr.args:
+        return 0
+    inner = max(function_nesting(a) for a in expr.args)
+    return inner + 1 if isinstance(expr, sympy.Function) else inner
 
 
 def _known(names: Mapping[str, object]) -> str:

@@ -66,23 +66,21 @@ def _add_and_subtract(page: Page, kin: Kinetics, a1: sympy.Expr) -> list[Block]:
         sub = (f"Multiply ({four}) by ", Math(as_float(a1)), f" and subtract it from ({three}): ", Math(y), " cancels.")
         ak = a1 * k
     return [
-        Block(
-            add,
-            (
-                Eqn((Side((sympy.Mul(2 * a1, y, evaluate=False),), "numeric"), Side((c, ak), "numeric"))),
-                Eqn((Side((y,)), Side((yv,), "result")), unit=page.unit_v, tag=page.tags(5), implies=True),
-            ),
-            _sum_check(page, (c, ak)),
-        ),
-        Block(
-            sub,
-            (
-                Eqn((Side((sympy.Mul(2 * a1, x, evaluate=False),), "numeric"), Side((c, -ak), "numeric"))),
-                Eqn((Side((x,)), Side((xv,), "result")), unit=page.unit_v, tag=page.tags(6), implies=True),
-            ),
-            _sum_check(page, (c, -ak)),
-        ),
+        Block(add, _sum_lines(page, a1, y, (c, ak), yv, page.tags(5)), _sum_check(page, (c, ak))),
+        Block(sub, _sum_lines(page, a1, x, (c, -ak), xv, page.tags(6)), _sum_check(page, (c, -ak))),
     ]
+
+
+def _sum_lines(
+    page: Page, a1: sympy.Expr, u: sympy.Symbol, terms: tuple[sympy.Expr, ...], value: sympy.Expr, tag: str
+) -> tuple[Eqn, ...]:
+    """``2 a1 u = c + a1 k`` then ``u = value``; one line ``u = c + a1 k = value`` when 2 a1 is 1."""
+    if 2 * a1 == 1:
+        return (Eqn((Side((u,)), Side(terms, "numeric"), Side((value,), "result")), unit=page.unit_v, tag=tag),)
+    return (
+        Eqn((Side((sympy.Mul(2 * a1, u, evaluate=False),), "numeric"), Side(terms, "numeric"))),
+        Eqn((Side((u,)), Side((value,), "result")), unit=page.unit_v, tag=tag, implies=True),
+    )
 
 
 def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list[Block]:

@@ -59,6 +59,7 @@ class _Page:
         self.block += 1
 
     def add(self, number: int, kind: str, latex: str) -> None:
+        latex = _unaligned(latex) if kind == "display" else latex
         self.lines.append(Line(number, kind, latex.strip(), self.scope, self.section, self.sentence, self.block))
 
     def inline(self, number: int, text: str) -> None:
@@ -131,6 +132,15 @@ def _tex_text(row: str) -> str:
     for pattern, repl in _TEX_TEXT:
         row = re.sub(pattern, repl, row)
     return row.strip()
+
+
+def _unaligned(latex: str) -> str:
+    r"""A line set in ``aligned`` rows because it was too wide (``T &= a \\ &= b``, ``&\quad + c``), as one line."""
+    if r"\begin{aligned}" not in latex:
+        return latex
+    body = re.sub(r"\\(?:begin|end)\{aligned\}", " ", latex)
+    body = re.sub(r"\\\\\s*&\s*(?:\\quad\s*)?", " ", body)  # a row break and the next row's alignment
+    return re.sub(r"[ \t]*\n[ \t]*", "\n", body.replace("&", " ")).strip()
 
 
 def read_latex(text: str) -> list[Line]:

@@ -2,7 +2,9 @@
 
 latexmk runs in a private temporary folder, with shell escape off, TeX's file
 access restricted to that folder (``openin_any=p``/``openout_any=p``) and a time
-limit; a missing TeX installation or a TeX error is a one-line error.
+limit; a missing TeX installation or a TeX error is a one-line error. TeX's output
+and log are read as bytes (TeX writes a line's bytes as they come, even half a UTF-8
+character) and decoded leniently.
 """
 
 from __future__ import annotations
@@ -48,11 +50,8 @@ def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
             raise RenderError(f"LaTeX did not finish within {time_limit:g} s") from None
         pdf = Path(tmp) / "solution.pdf"
         if proc.returncode != 0 or not pdf.exists():
-            log = (
-                (Path(tmp) / "solution.log").read_text(errors="replace")
-                if (Path(tmp) / "solution.log").exists()
-                else proc.stdout
-            )
+            log_file = Path(tmp) / "solution.log"
+            log = (log_file.read_bytes() if log_file.exists() else proc.stdout).decode("utf-8", errors="replace")
             first = next(
                 # "! Undefined control sequence." or, with -file-line-error, "./solution.tex:12: ..."
                 # (not the banner "file:line:error style messages enabled.")
@@ -63,7 +62,7 @@ def build_pdf(tex_source: str, *, time_limit: float = TIME_LIMIT) -> bytes:
         return pdf.read_bytes()
 
 
-def _run(cmd: list[str], cwd: str, env: dict[str, str], time_limit: float) -> subprocess.CompletedProcess[str]:
+def _run(cmd: list[str], cwd: str, env: dict[str, str], time_limit: float) -> subprocess.CompletedProcess[bytes]:
     """Run latexmk in its own process group; on a timeout kill the whole group, pdflatex too
     (subprocess.run would kill latexmk alone and leave pdflatex looping in a deleted folder)."""
     proc = subprocess.Popen(
@@ -73,7 +72,6 @@ def _run(cmd: list[str], cwd: str, env: dict[str, str], time_limit: float) -> su
         stdin=subprocess.DEVNULL,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
-        text=True,
         start_new_session=True,
     )
     try:

@@ -31,6 +31,7 @@ from derive.numbers import (
 from derive.problem.units import latex_unit, parse_unit
 from derive.steps.model import Block, Eqn, Side
 from derive.symbols import latex_name, vector_latex
+from derive.writers.width import width_pt
 
 
 @dataclass(frozen=True)
@@ -61,7 +62,9 @@ class SlotBook:
 @dataclass(frozen=True)
 class Style:
     """How numbers print: the answer's figures (None: textbook rule) and the extra
-    figures intermediates carry; ``values`` and ``angles`` feed substitution lines."""
+    figures intermediates carry; ``values`` and ``angles`` feed substitution lines;
+    ``strike`` False prints a cancelled symbol without its stroke (for converters
+    that have no ``\\cancel``)."""
 
     digits: int | None
     extra: int = 1
@@ -72,6 +75,7 @@ class Style:
     slots: SlotBook | None = field(default=None, compare=False)
     block: int | None = None
     hide_optional: bool = False
+    strike: bool = True
     decimal: frozenset[sympy.Symbol] = frozenset()
     letters: frozenset[sympy.Symbol] = frozenset()
     letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
@@ -231,9 +235,14 @@ class StepPrinter(LatexPrinter):
         if self._decimals is not None:
             return format_fixed(expr, self._decimals)
         if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
-            mantissa, _, power = format_number(expr, self._digits, extra=self._extra).partition("e")
-            mantissa = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
-            return power_latex(mantissa + ("e" + power if power else ""))
+            text = format_number(expr, self._digits, extra=self._extra)
+            mantissa, _, power = text.partition("e")
+            trimmed = mantissa.rstrip("0").rstrip(".") if "." in mantissa else mantissa
+            short = trimmed + ("e" + power if power else "")
+            value = to_decimal(expr)
+            if abs(Decimal(short) - value) > abs(value) * Decimal("1e-12"):
+                return power_latex(text)  # rounded: 1.00 v, 49.0 m (not 1 v, 49 m, read as exact)
+            return power_latex(short)
         return number_latex(expr, self._digits, self._extra)
 
     def _as_decimal(self, r: sympy.Rational) -> bool:
@@ -255,11 +264,18 @@ class StepPrinter(LatexPrinter):
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
         if abs(expr.p) >= 10**6:
+            if _figures(to_decimal(expr)) > _figures(Decimal(format_number(expr, self._digits, extra=self._extra))):
+                return number_latex(expr, self._digits, self._extra)  # 7.350 x 10^22, not all its digits
             return power_latex(as_written(expr))
         return str(expr.p)
 
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
-        out = ""
+        return join_terms(self.add_terms(expr))
+
+    def add_terms(self, expr: sympy.Add) -> list[tuple[str, str]]:
+        """The terms of a sum as printed, each with its sign: ``("+", "m v")``, ``("-", "3")``
+        (a sign ``""`` when the text carries its own, as an open number does)."""
+        out: list[tuple[str, str]] = []
         terms = expr.args
         if len(terms) > 1 and terms[0].is_Rational and any(t.free_symbols for t in terms):
             terms = terms[1:] + terms[:1]  # e - 1, not -1 + e
@@ -275,19 +291,21 @@ class StepPrinter(LatexPrinter):
                 and term.free_symbols <= self._varied
             ):
                 role = "lead" if i == 0 else "signed"
-                out += self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block)
+                out.append(
+                    ("", self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block))
+                )
                 continue
             if is_negative_term(term):
                 s = self._print(negate(term))
                 s = self._paren_if_sum(negate(term), s)
                 if s.startswith("-"):
                     s = r"\left(" + s + r"\right)"
-                out += ("-" if i == 0 else " - ") + s
+                out.append(("-", s))
             else:
                 s = self._print(term)
                 if i and s.startswith("-"):
                     s = r"\left(" + s + r"\right)"
-                out += ("" if i == 0 else " + ") + s
+                out.append(("+", s))
         return out
 
     def _paren_if_sum(self, expr: sympy.Expr, s: str) -> str:
@@ -407,19 +425,19 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
     return out
 
 
-def latex_expr(
-    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
-) -> str:
-    """One expression printed in ``mode`` (see :data:`derive.solution.Mode`)."""
+def _prepared(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol]
+) -> tuple[StepPrinter, sympy.Expr]:
+    """The printer for ``mode`` (see :data:`derive.steps.model.Mode`) and ``expr`` made ready for it."""
     book, varied = style.slots, style.varied
     if mode == "symbolic":
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra).doprint(expr)
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra), expr
     if mode == "values":
         vals = values_map(style, style.digits, extra, expr.free_symbols)
         printer = StepPrinter(
             vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
         )
-        return printer.doprint(expr)
+        return printer, expr
     if mode in ("numeric", "result") and _letters(expr, style):
         # letters remain: numbers exact where the data are (u (1 - 2e)/3), decimals
         # where the data are decimal (0.6 u), never 1.000 e
@@ -443,7 +461,7 @@ def latex_expr(
         printer = StepPrinter(
             cancel=cancel, digits=style.digits, extra=extra, trim_floats=True, decimal_rationals=decimal, fractions=True
         )
-        return printer.doprint(expr)
+        return printer, expr
     if mode == "numeric":
         expr = substitute(expr, style.values)
         printer = StepPrinter(
@@ -456,7 +474,7 @@ def latex_expr(
             varied=varied,
             block=style.block,
         )
-        return printer.doprint(floatify(expr))
+        return printer, floatify(expr)
     if mode == "result":
         expr = substitute(expr, style.values)
         if expr.is_number and not isinstance(expr, sympy.UnevaluatedExpr):
@@ -470,7 +488,7 @@ def latex_expr(
             varied=varied,
             slot_kind="result",
         )
-        return printer.doprint(floatify(expr, keep_integers=False))
+        return printer, floatify(expr, keep_integers=False)
     raise ValueError(mode)
 
 
@@ -482,9 +500,44 @@ def _letters(expr: sympy.Expr, style: Style) -> bool:
     return bool(substitute(expr, style.values).free_symbols & style.letters)
 
 
-def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
-    """A side of an equation: its terms joined with their signs, in order."""
+def latex_expr(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> str:
+    """One expression printed in ``mode`` (see :data:`derive.steps.model.Mode`)."""
+    printer, ready = _prepared(expr, mode, style, extra, cancel)
+    return printer.doprint(ready)
+
+
+def latex_terms(
+    expr: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol] = frozenset()
+) -> list[tuple[str, str]]:
+    """``expr`` printed as :func:`latex_expr` prints it, as its terms with their signs
+    (one term, sign ``"+"``, unless it is a sum); :func:`join_terms` gives the line back."""
+    printer, ready = _prepared(expr, mode, style, extra, cancel)
+    if isinstance(ready, sympy.UnevaluatedExpr):
+        ready = ready.args[0]
+    if isinstance(ready, sympy.Add) and style.slots is None:
+        return printer.add_terms(ready)
+    return [("+", printer.doprint(ready))]
+
+
+def join_terms(terms: list[tuple[str, str]]) -> str:
+    """Signed terms as one sum: ``a - b + c``; a sign ``""`` leaves the text as it is."""
     out = ""
+    for i, (sign, text) in enumerate(terms):
+        if not sign:
+            out += text
+        elif i == 0:
+            out = ("-" if sign == "-" else "") + text
+        else:
+            out += f" {sign} {text}"
+    return out
+
+
+def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> list[tuple[str, str]]:
+    """A side of an equation as its printed terms with their signs, in order; a side
+    of one term that is a sum gives that sum's terms."""
+    out: list[tuple[str, str]] = []
     for i, term in enumerate(side.terms):
         if side.mode in ("numeric", "result") and not _letters(term, style):
             term = substitute(term, style.values)
@@ -496,28 +549,34 @@ def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
             if style.slots is not None and term.free_symbols & style.varied:
                 token = _slot_term(term, side.mode, style, extra, cancel, first=i == 0)
                 if token is not None:
-                    out += token
+                    out.append(("", token))
                     continue
         neg = is_negative_term(term)
         body = negate(term) if neg else term
         if side.mode in ("numeric", "result") and _letters(term, style):
+            if len(side.terms) == 1:  # the printer picks the sign; a sum gives its terms
+                return latex_terms(term, side.mode, style, extra, cancel)
             s = latex_expr(term, side.mode, style, extra, cancel)  # the printer picks the sign: u (1 - 2e)/3
             neg, body = s.startswith("-"), term
             s = s[1:].lstrip() if neg else s
+        elif len(side.terms) == 1 and not neg and isinstance(body, sympy.Add):
+            return latex_terms(body, side.mode, style, extra, cancel)
         else:
             s = latex_expr(body, side.mode, style, extra, cancel)
         if neg and s.startswith("-"):
             neg, s = False, s[1:].lstrip()
         if isinstance(body, sympy.Add) and len(side.terms) > 1:
             s = r"\left(" + s + r"\right)"
-        if i == 0:
-            out = ("-" if neg else "") + s
-        else:
-            if not neg and s.startswith("-"):
-                s = s[1:].lstrip()
-                neg = True
-            out += (" - " if neg else " + ") + s
+        if i and not neg and s.startswith("-"):
+            s = s[1:].lstrip()
+            neg = True
+        out.append(("-" if neg else "+", s))
     return out
+
+
+def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
+    """A side of an equation: its terms joined with their signs, in order."""
+    return join_terms(side_terms(side, style, extra, cancel))
 
 
 _UNITLESS = {sympy.Symbol(f"vec:e_{a}", commutative=True) for a in "tnxy"}
@@ -565,6 +624,9 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
         return None
     if not any(have):
         return eqn.unit
+    if have == tuple(w - m for w, m in zip(parse_unit(eqn.unit).dim, (1, 0, 0, 0), strict=True)):
+        # a mass short (T_1 = 4.8 v_A1^2 with the masses in numbers): the mass unit
+        return "slug" if any("ft" in u for u in style.letter_units.values()) else "kg"
     alone = [s for s in letters if dims[s] == have and not any(c in style.letter_units[s] for c in "/*^")]
     return f"{eqn.unit}/{style.letter_units[alone[0]]}" if alone and "/" not in eqn.unit else None
 
@@ -592,29 +654,118 @@ def _dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, tuple[int, ...]]) -
     return None
 
 
-def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
-    """The line's LaTeX (without delimiters) and its tag."""
-    printed: list[str] = []
-    for s in eqn.sides:
-        text = latex_side(s, style, extra, eqn.cancel)
-        if not printed or text != printed[-1]:  # v_2 = -u, not v_2 = -u = -u
-            printed.append(text)
-    body = " = ".join(printed)
+def _struck(eqn: Eqn, style: Style) -> frozenset[sympy.Symbol]:
+    """The symbols the line strikes out, unless the style prints no strokes."""
+    return eqn.cancel if style.strike else frozenset()
+
+
+def _line_unit(eqn: Eqn, style: Style) -> tuple[str | None, bool]:
+    """The unit after the line's last side, and whether that side, a sum in letters, goes in
+    brackets before it ((3.5 + 3.5 e) m/s)."""
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
         t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
     )
-    unit = eqn.unit if not symbolic else _unit_beside_letters(eqn, style)
-    if unit and symbolic and isinstance(eqn.sides[-1].terms[0].xreplace(dict(style.values)), sympy.Add):
-        head, _, tail = body.rpartition(" = ")
-        body = (head + " = " if head else "") + r"\left(" + tail + r"\right)"  # (3.5 + 3.5 e) m/s
-    if unit:
-        body += r"\ \%" if unit == "%" else (latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit))
+    if not symbolic:
+        return eqn.unit, False
+    unit = _unit_beside_letters(eqn, style)
+    return unit, bool(unit) and isinstance(last.terms[0].xreplace(dict(style.values)), sympy.Add)
+
+
+def unit_latex(eqn: Eqn, style: Style) -> str:
+    """The unit after the line's last side ('' where that side is still in symbols and its
+    letters give its dimension)."""
+    unit, _ = _line_unit(eqn, style)
+    if not unit:
+        return ""
+    if unit == "%":
+        return r"\ \%"
+    return latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit)
+
+
+def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, str]]]:
+    """Each side's printed terms; a side printed the same as the one before it is shown
+    once (v_2 = -u, not v_2 = -u = -u)."""
+    printed: list[list[tuple[str, str]]] = []
+    for side in eqn.sides:
+        terms = side_terms(side, style, extra, _struck(eqn, style))
+        if not printed or join_terms(terms) != join_terms(printed[-1]):
+            printed.append(terms)
+    return printed
+
+
+def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
+    """The line's LaTeX (without delimiters) and its tag."""
+    texts = [join_terms(terms) for terms in _printed_sides(eqn, style, extra)]
+    if _line_unit(eqn, style)[1]:
+        texts[-1] = r"\left(" + texts[-1] + r"\right)"
+    body = " = ".join(texts) + unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
-        body = r"\Rightarrow\quad " + body
+        body = IMPLIES + body
     return body, eqn.tag
+
+
+IMPLIES = r"\Rightarrow\quad "
+_RELATION_PT = 13.33  # '=' with its spaces (Computer Modern, 10 pt)
+_CONTINUED_PT = 10.0 + 12.22  # '\quad +' at the start of a continued row
+_BOX_PT = 6.8  # what \boxed adds
+
+
+@dataclass(frozen=True)
+class Row:
+    """One row of an equation line too wide for the page: ``lhs rel rhs``.
+
+    The first row holds the left side (``lhs``) and ``=``; each later side starts a
+    row of its own (``lhs`` empty, ``rel`` "="); a side still too wide goes on in
+    rows that start with its next sign (``rel`` "+" or "-", ``continued``).
+    """
+
+    lhs: str
+    rel: str
+    rhs: str
+    continued: bool = False
+
+
+def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: float = 0.0) -> tuple[Row, ...]:
+    """The line set on rows that each fit ``width`` pt (10 pt type, display style), as
+    :func:`derive.writers.width.width_pt` estimates it; ``reserve`` pt more go beside it
+    (the ANSWER mark). Empty when the line fits on one row, or has one side only.
+
+    One side per row after the first (``T_2 = a``, ``= b``, ``= c``); a side still too
+    wide is broken before one of its own terms' signs, never inside a term.
+    """
+    sides = _printed_sides(eqn, style, extra)
+    if len(sides) < 2:
+        return ()
+    unit = unit_latex(eqn, style)
+    if unit:
+        sign, text = sides[-1][-1]
+        sides[-1][-1] = (sign, text + unit)
+    room = width - reserve - (_BOX_PT if eqn.boxed else 0.0)
+    lhs = (IMPLIES if eqn.implies else "") + join_terms(sides[0])
+    if width_pt(lhs + " = " + " = ".join(join_terms(t) for t in sides[1:])) <= room:
+        return ()
+    left = width_pt(lhs)
+    rows: list[Row] = []
+    for terms in sides[1:]:
+        chunks = [terms[:1]]
+        for term in terms[1:]:
+            trial = [*chunks[-1], term]
+            lead = _RELATION_PT if len(chunks) == 1 else _CONTINUED_PT
+            if term[0] in "+-" and left + lead + width_pt(_continued(trial)) > room:
+                chunks.append([term])
+            else:
+                chunks[-1] = trial
+        rows.append(Row(lhs if not rows else "", "=", join_terms(chunks[0])))
+        rows.extend(Row("", chunk[0][0], _continued(chunk), continued=True) for chunk in chunks[1:])
+    return tuple(rows)
+
+
+def _continued(terms: list[tuple[str, str]]) -> str:
+    """Terms joined, the first without its sign (the row's ``rel`` shows it)."""
+    return join_terms([("+", terms[0][1]), *terms[1:]])
 
 
 def block_style(block: Block, style: Style) -> Style:

@@ -7,7 +7,7 @@ A renderer never does physics.
 
 from __future__ import annotations
 
-import json
+import base64
 import re
 from dataclasses import replace
 from functools import cache
@@ -18,14 +18,17 @@ import sympy
 
 from derive import escape
 from derive.errors import InputError
+from derive.fileio import dumps_json
 from derive.numbers import format_number
 from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
-from derive.steps.model import Math, Solution
+from derive.steps.model import Eqn, Math, Solution
 from derive.symbols import latex_name, symbol
 from derive.writers import figure
 from derive.writers.printing import (
+    IMPLIES,
+    Row,
     SlotBook,
     StepPrinter,
     Style,
@@ -34,11 +37,13 @@ from derive.writers.printing import (
     latex_eqn,
     latex_expr,
     latex_inline,
+    latex_rows,
 )
+from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
+from derive.writers.width import width_pt
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
-IMPLIES = r"\Rightarrow\quad "
 
 
 @cache
@@ -65,10 +70,44 @@ def environment(kind: str) -> jinja2.Environment:
         lstrip_blocks=True,
         **options,
     )
-    env.filters["md"] = escape.markdown
+    env.filters["md"] = _markdown_text
     env.filters["tex"] = escape.tex
     env.filters["html"] = escape.html_text
     return env
+
+
+@jinja2.pass_context
+def _markdown_text(context: jinja2.runtime.Context, text: str) -> str:
+    """User text as Markdown; ``^`` escaped too where the page is for pandoc (``escape_caret``)."""
+    return escape.markdown(text, caret=bool(context.get("escape_caret", False)))
+
+
+_URL = re.compile(r"https?://[A-Za-z0-9\-._~:/?#\[\]@!&'()*+,;=%]+")
+
+
+def source_parts(text: str | None) -> list[tuple[str, str]]:
+    """A source line as text and web addresses: ``[("text", "read at "), ("url", "https://…")]``.
+
+    An address ends before trailing punctuation (``.,;:!?'``) and before a ``)`` it did
+    not open, so that "(see https://x.org/a)." keeps its bracket and full stop as text.
+    """
+    if not text:
+        return []
+    parts: list[tuple[str, str]] = []
+    last = 0
+    for m in _URL.finditer(text):
+        url = m.group(0)
+        while url and (url[-1] in ".,;:!?'" or (url[-1] == ")" and url.count(")") > url.count("("))):
+            url = url[:-1]
+        if len(url) <= len("https://"):
+            continue
+        if m.start() > last:
+            parts.append(("text", text[last : m.start()]))
+        parts.append(("url", url))
+        last = m.start() + len(url)
+    if last < len(text):
+        parts.append(("text", text[last:]))
+    return parts
 
 
 def _given_latex(g: Given, style: Style) -> tuple[str, str]:
@@ -156,11 +195,31 @@ _FIND_WORDS = {
 }
 
 
+def line_view(eqn: Eqn, style: Style, layout: Layout, *, answer: bool = False, extra: int = 1) -> dict[str, Any]:
+    """One equation line as the templates need it: ``latex`` on one row (with ⇒, box
+    and ANSWER mark), its ``tag``, and, where the layout sets a width the line does
+    not fit, ``rows`` to lay out (``before`` and ``after`` them: the box and the mark)."""
+    body, tag = latex_eqn(eqn, style, extra)
+    mark = ANSWER_MARK if answer else ""
+    rows: tuple[Row, ...] = ()
+    if layout.width is not None and (layout.long_lines == "aligned" or not eqn.boxed):
+        rows = latex_rows(eqn, style, layout.width, extra, reserve=width_pt(mark) if mark else 0.0)
+    return {
+        "latex": body + mark,
+        "tag": tag,
+        "boxed": eqn.boxed,
+        "rows": rows,
+        "before": r"\boxed{" if eqn.boxed else "",
+        "after": ("}" if eqn.boxed else "") + mark,
+        "cancels": bool(eqn.cancel) and style.strike,
+    }
+
+
 #: Around an optional line of a compiled variant page, for the variant to keep or drop.
 OPTIONAL_BEGIN, OPTIONAL_END = "%%derive-optional:", "%%derive-end%%"
 
 
-def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
+def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list[dict[str, Any]]:
     """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
     blocks = []
     for block in blocks_in:
@@ -169,16 +228,15 @@ def blocks_view(blocks_in: tuple, style: Style) -> list[dict[str, Any]]:
         for eqn in block.lines:
             if eqn.optional and bstyle.hide_optional:
                 continue
-            body, tag = latex_eqn(eqn, bstyle, bstyle.extra)
+            line = line_view(eqn, bstyle, layout, answer=eqn.mark, extra=bstyle.extra)
             if eqn.optional and bstyle.block is not None:  # a variant's page drops it where it cannot add up
-                body = f"{OPTIONAL_BEGIN}{bstyle.block}%{body}{OPTIONAL_END}"
-            if eqn.mark:
-                body += ANSWER_MARK
-            bare = body.removeprefix(IMPLIES)
+                line["latex"] = f"{OPTIONAL_BEGIN}{bstyle.block}%{line['latex']}{OPTIONAL_END}"
+            bare = line["latex"].removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
-                lines[-1] = {"latex": lines[-1]["latex"], "tag": tag or lines[-1]["tag"], "boxed": eqn.boxed}
+                kept = lines[-1]
+                lines[-1] = {**kept, "tag": line["tag"] or kept["tag"], "boxed": eqn.boxed}
                 continue  # the same line again (numbers in, but none to put in): once is enough
-            lines.append({"latex": body, "tag": tag, "boxed": eqn.boxed})
+            lines.append(line)
         text = None
         if block.text is not None:
             text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
@@ -193,6 +251,7 @@ def view(
     *,
     slots: SlotBook | None = None,
     varied: frozenset[sympy.Symbol] = frozenset(),
+    layout: Layout = GITHUB,
     outer_letters: dict[sympy.Symbol, str] | None = None,
     falls: bool = False,
     known: dict[sympy.Symbol, sympy.Expr] | None = None,
@@ -202,10 +261,12 @@ def view(
     figures of stage 1 and of the answer as SVG and TikZ.
 
     With ``slots``, every number that depends on a ``varied`` given is left open
-    (a token), so that one compiled page serves every homework variant. ``falls``
-    and ``known`` are for an impact inside a chain: drawn with n pointing down, and
-    the chain's numbers for symbols the impact leaves open. ``plot`` adds the plot
-    of the outcome against e (``plot_svg``, ``plot_tikz``).
+    (a token), so that one compiled page serves every homework variant. ``layout``
+    says where the page goes (:mod:`derive.writers.targets`): how wide a line may
+    be, and whether cancelled terms are struck out. ``falls`` and ``known`` are for
+    an impact inside a chain: drawn with n pointing down, and the chain's numbers for
+    symbols the impact leaves open. ``plot`` adds the plot of the outcome against e
+    (``plot_svg``, ``plot_tikz``).
     """
     p = solution.problem
     style = Style(
@@ -215,13 +276,14 @@ def view(
         solution.angles,
         varied=varied,
         slots=slots,
+        strike=layout.strike,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
         letter_units={**(outer_letters or {}), **letter_units(p)},
     )
     stages = []
     for stage in solution.stages:
-        blocks = blocks_view(stage.blocks, style)
+        blocks = blocks_view(stage.blocks, style, layout)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
             fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
@@ -255,6 +317,7 @@ def view(
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
+        "source_parts": source_parts(p.source),
         "plot_svg": plot_svg,
         "plot_tikz": plot_tikz,
         "statement": _statement(p, style),
@@ -388,10 +451,12 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
             for s in v["stages"]
         ],
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
-def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True) -> dict[str, Any]:
+def chain_view(
+    sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True, layout: Layout = GITHUB
+) -> dict[str, Any]:
     """The data the chain templates need: the chain's givens, each stage printed."""
     p = sol.problem
     style = Style(
@@ -401,6 +466,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
         sol.angles,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
+        strike=layout.strike,
         letter_units=letter_units(p),
     )
     stages = []
@@ -412,6 +478,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
                 st.part,
                 style.digits,
                 figures=figures,
+                layout=layout,
                 outer_letters=letter_units(p),
                 falls=falls.get(st.number, False),
                 known=sol.values,
@@ -429,16 +496,22 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
             )
         else:
             stages.append(
-                {"number": st.number, "title": st.title, "impact": False, "blocks": blocks_view(st.blocks, stage_style)}
+                {
+                    "number": st.number,
+                    "title": st.title,
+                    "impact": False,
+                    "blocks": blocks_view(st.blocks, stage_style, layout),
+                }
             )
     answers = []
-    for a in sol.answers:
+    for i, a in enumerate(sol.answers):
+        last = i == len(sol.answers) - 1
         if a.verdict is not None:
-            answers.append({"latex": rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"})
+            verdict = rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"
+            answers.append({"latex": verdict + (ANSWER_MARK if last else ""), "tag": None, "boxed": True})
         else:
-            answers.append({"latex": latex_eqn(a.line, style)[0]})
-    if answers:
-        answers[-1]["latex"] += ANSWER_MARK
+            assert a.line is not None
+            answers.append({**line_view(a.line, style, layout, answer=last), "tag": None})
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     g_sym = symbol("g", "positive")
     if g_sym in sol.values and "g" not in {g.name for g in p.givens}:
@@ -450,6 +523,7 @@ def chain_view(sol: Any, digits: int | None = None, figures: bool = True, standa
     return {
         "title": p.title,
         "source": p.source,
+        "source_parts": source_parts(p.source),
         "statement": p.statement,
         "givens": givens,
         "find": find,
@@ -500,45 +574,127 @@ def _chain_json(sol: Any, digits: int | None) -> str:
         "results": results,
         "stages": stages,
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    return dumps_json(doc)
 
 
 def render(
-    solution: Solution, fmt: str = "md", *, digits: int | None = None, figures: bool = True, plot: bool = False
+    solution: Solution,
+    fmt: str = "md",
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    target: str = "github",
+    heading_level: int = 1,
+    title: bool = True,
+    plot: bool = False,
 ) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
     ``digits`` overrides the significant figures (default: the problem's, else
-    the textbook rule); ``figures`` False leaves the figures out; ``plot`` adds the
-    plot of the outcome against e after the answer. For a PDF see
-    :func:`derive.pdf.build_pdf`.
+    the textbook rule); ``figures`` False leaves the figures out. ``target`` names
+    where Markdown goes: 'github' (also KaTeX, MkDocs), 'jupyter', 'mkdocs' or
+    'pandoc' (see :mod:`derive.writers.targets`). ``heading_level`` puts the title at
+    that level (1: ``#``/``\\section*``) and the stages below it; ``title`` False
+    leaves the title out (the caller's heading stands) and starts the stages at
+    ``heading_level``. For a PDF see :func:`derive.writers.pdf.build_pdf`, for Word
+    :func:`derive.writers.docx.build_docx`; ``plot`` adds the plot of the outcome against e after the answer.
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    tex_vars = {**_headings(heading_level, title), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+    if solution.is_chain and plot:
+        raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
+    if fmt == "md":
+        page, _ = markdown(
+            solution,
+            markdown_target(target),
+            digits=digits,
+            figures=figures,
+            heading_level=heading_level,
+            show_title=title,
+            plot=plot,
+        )
+        return page
     if solution.is_chain:
-        if plot:
-            raise InputError(
-                "a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot"
-            )
         if fmt == "json":
             return _chain_json(solution, digits)
-        if fmt == "md":
-            return environment("md").get_template("chain.md.j2").render(**chain_view(solution, digits, figures))
         if fmt in ("tex", "tex-fragment"):
-            data = chain_view(solution, digits, figures, standalone=fmt == "tex")
-            return environment("tex").get_template("chain.tex.j2").render(**data)
+            layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
+            data = chain_view(solution, digits, figures, standalone=fmt == "tex", layout=layout)
+            return environment("tex").get_template("chain.tex.j2").render(**data, **tex_vars)
         raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
     if fmt == "json":
         return to_json(solution, digits)
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    data = view(solution, digits, figures, plot=plot and fmt != "json")
     if fmt == "html":
-        return _html(data)
-    if fmt == "md":
-        return environment("md").get_template("solution.md.j2").render(**data)
+        return _html(view(solution, digits, figures, plot=plot))
+    layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
+    data = view(solution, digits, figures, layout=layout, plot=plot)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
-    return environment("tex").get_template(template).render(**data)
+    return environment("tex").get_template(template).render(**data, **tex_vars)
+
+
+def _headings(level: int, title: bool) -> dict[str, Any]:
+    """The template variables for headings: the title's level, and whether it is shown."""
+    if not (isinstance(level, int) and 1 <= level <= 6):
+        raise InputError("expected a heading level from 1 to 6", field="--heading-level")
+    return {"heading_level": level, "show_title": bool(title)}
+
+
+def markdown(
+    solution: Solution,
+    layout: Layout = GITHUB,
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    heading_level: int = 1,
+    show_title: bool = True,
+    plot: bool = False,
+) -> tuple[str, dict[str, str]]:
+    """The Markdown for ``layout``, and the figure files it names (``figure-1.svg``: SVG
+    text) when the layout writes figures as files for the caller to put beside it."""
+    data = (
+        chain_view(solution, digits, figures, layout=layout)
+        if solution.is_chain
+        else view(solution, digits, figures, layout=layout, plot=plot)
+    )
+    files = _figure_images(data, layout)
+    page = (
+        environment("md")
+        .get_template("chain.md.j2" if solution.is_chain else "solution.md.j2")
+        .render(
+            **data,
+            heading_level=heading_level,
+            show_title=show_title,
+            figure_images=layout.figures != "inline",
+            tags_as_text=layout.tags == "text",
+            require_cancel=layout.require_cancel,
+            long_lines=layout.long_lines,
+            escape_caret=layout.escape_caret,
+        )
+    )
+    return page, files
+
+
+def _figure_images(data: dict[str, Any], layout: Layout) -> dict[str, str]:
+    """Give each figure of the page (a chain's included) the address of its image:
+    a data URI, or a file name; the files to write, by name."""
+    files: dict[str, str] = {}
+    if layout.figures == "inline":
+        return files
+    stages = [sub for st in data["stages"] for sub in st.get("stages", [st])]
+    for stage in stages:
+        svg = stage.get("figure_svg")
+        if not svg:
+            continue
+        if layout.figures == "files":
+            name = f"figure-{len(files) + 1}.svg"
+            files[name] = svg
+            stage["figure_src"] = name
+        else:
+            stage["figure_src"] = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
+    return files
 
 
 def boxed_lines(solution: Solution) -> list[str]:

@@ -10,8 +10,7 @@ import sympy
 
 from derive.physics.asks import drop_positive
 from derive.physics.state import ChainState, StageOutcome, resolve
-from derive.problem import Given, units
-from derive.symbols import symbol
+from derive.problem import units
 
 
 @dataclass(frozen=True)
@@ -39,9 +38,7 @@ def again(state: ChainState, i: int, st: dict) -> StageOutcome:
     if not diff.free_symbols:
         verdict = bool(diff > 0)
         flag = sympy.Integer(int(verdict))
-        name = st.get("result", "again")
-        g = Given(name, symbol(name), units.DIMENSIONLESS, flag, "", definition=flag)
-        state.known[g.name] = g
+        g = state.define(i, st.get("result", "again"), flag, units.DIMENSIONLESS, "")
         outputs.append(g.name)
     data = Again(va, vb, diff, verdict)
     param = st.get("range_of")

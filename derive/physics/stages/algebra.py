@@ -3,7 +3,6 @@ the chain, a given marked "?", from a condition such as ``h_2 = 40 m``)."""
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, replace
 
 import sympy
@@ -11,7 +10,7 @@ import sympy
 from derive.errors import ExpressionError, SolveError
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import Given, units
-from derive.problem.expr import ParseError, parse
+from derive.problem.expr import ParseError, number_with_unit, parse
 
 
 @dataclass(frozen=True)
@@ -61,10 +60,10 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
     try:
         lhs = parse(left.strip(), state.names())
         rhs_text = right.strip()
-        m = re.match(r"^\s*([-+]?[\d.]+(?:[eE][-+]?\d+)?)\s*([A-Za-z].*)$", rhs_text)
-        if m:  # a number with a unit
-            u = units.parse_unit(m.group(2))
-            rhs_expr = sympy.Rational(m.group(1)) * u.factor / units.working_unit(u.dim, state.chain.system).factor
+        quantity = number_with_unit(rhs_text)
+        if quantity is not None:  # a number with a unit
+            u = units.parse_unit(quantity[1])
+            rhs_expr = quantity[0] * u.factor / units.working_unit(u.dim, state.chain.system).factor
         else:
             rhs_expr = parse(rhs_text, state.names()).expr
     except (ParseError, ValueError) as exc:

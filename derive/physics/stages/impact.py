@@ -41,9 +41,9 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
     # a chain's unknowns are symbols inside the stage: a later stage finds them
     seed = {n: (replace(g, unknown=False) if g.unknown else g) for n, g in state.known.items()}
     try:
-        problem = build_problem(data, state.chain.ctx, f"stage-{i}", seed=seed)
+        problem = build_problem(data, state.chain.stage_source(i), f"stage-{i}", seed=seed)
     except InputError as exc:
-        raise InputError(f"stage {i}: {exc.what}", where=exc.where, field=exc.field) from None
+        raise type(exc)(exc.what, where=exc.where, field=exc.field or f"[stage {i}]") from None
     outcome = solve_impact(problem)
     results = st.get("results", {})
     if not isinstance(results, dict):

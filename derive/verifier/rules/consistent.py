@@ -51,16 +51,22 @@ def check(judge: Judge) -> Iterator[Failure]:
             continue
         scopes = judge.chain_of(step.claim.line.scope)
         theirs = [(n, s.display.tag) for s in sources for n in _intermediates(judge, s)]
+        # a number written exactly as another equation wrote it is that equation's (1.25 of (4)
+        # under "Substitute into (3)", beside a 1.2 of (3))
+        anywhere = {n.mantissa for c in tagged.values() for n in _intermediates(judge, c)}
         for claim in judge.claims:
             if claim.line.block != step.claim.line.block:
                 continue
+            own = {n.mantissa for n in _intermediates(judge, claim)}
             for mine in _intermediates(judge, claim):
-                if mine.degrees:
+                if mine.degrees or mine.mantissa in anywhere:
                     continue
                 near = [(abs(mine.value - o.value), o, tag) for o, tag in theirs if not o.degrees]
                 if not near:
                     continue
                 gap, other, tag = min(near, key=lambda x: x[0])
+                if other.mantissa in own:  # the line writes that number as it was: mine is another
+                    continue
                 h = max(judge.halfwidth(mine, scopes), judge.halfwidth(other, scopes))
                 if gap <= Decimal(str(h)) and mine.mantissa != other.mantissa:
                     line = claim.line

@@ -1,0 +1,49 @@
+"""The declared schema of derive's files: every field's type, range and meaning, in one place.
+
+Problem files, chain files (each stage type) and answers files are described here as
+:class:`Table` records of :class:`Field` records. :mod:`derive.problem.validate` checks a
+file against them before anything is built from it; :mod:`derive.problem.export`
+writes the field tables of ``docs/problem-format.md`` and the JSON Schema that
+editors use (``docs/derive-problem.schema.json``) from them. Pure Python: no SymPy.
+"""
+
+from derive.problem.schema.answers import ANSWERS
+from derive.problem.schema.base import MAGNITUDE, MAX_LINE, MAX_TEXT, NAME_PATTERN, TYPES, Field, Table
+from derive.problem.schema.chain import CHAIN, RESULTS, STAGE, STAGES
+from derive.problem.schema.problem import (
+    ANSWER_UNITS,
+    ASSUME,
+    ASSUMPTIONS,
+    BODY,
+    GEOMETRY,
+    GIVEN,
+    IMPACT_FIELDS,
+    PROBLEM,
+    RANGE,
+    VARY,
+)
+
+__all__ = [
+    "ANSWERS",
+    "ANSWER_UNITS",
+    "ASSUME",
+    "ASSUMPTIONS",
+    "BODY",
+    "CHAIN",
+    "GEOMETRY",
+    "GIVEN",
+    "IMPACT_FIELDS",
+    "MAGNITUDE",
+    "MAX_LINE",
+    "MAX_TEXT",
+    "NAME_PATTERN",
+    "PROBLEM",
+    "RANGE",
+    "RESULTS",
+    "STAGE",
+    "STAGES",
+    "TYPES",
+    "VARY",
+    "Field",
+    "Table",
+]
