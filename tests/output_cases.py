@@ -12,6 +12,7 @@ from functools import cache
 from pathlib import Path
 
 import pytest
+from pending_syntax import pending_reason
 
 import derive
 from derive import resources
@@ -46,8 +47,12 @@ def missing_tool(reason: str) -> None:
 
 
 def bundled_names() -> list[str]:
-    """Names of the bundled problems (the test ids)."""
-    return list(resources.bundled())
+    """Names of the bundled problems (the test ids).
+
+    Problems written in the issue #14 syntax before derive reads it are left out until it
+    does (tests/pending_syntax.py; test_symbolic_library.py reports them as skipped).
+    """
+    return [name for name in resources.bundled() if pending_reason(name) is None]
 
 
 @cache

@@ -2,7 +2,8 @@
 
 Each ``expr`` is SymPy text written by derive itself (not user input), so
 ``sympy.sympify`` is fine here. Givens in the JSON carry numbers, angles in degrees;
-angle symbols are substituted in radians. A numeric result whose expr still has a
+angle symbols are substituted in radians (an angle's ``expr`` is in radians, its ``value``
+and ``value_expr`` in degrees). A numeric result whose expr still has a
 symbol (a given kept as a symbol, e.g. the cue ball's speed) must not depend on it:
 it is checked at several positive values of that symbol.
 """
@@ -93,7 +94,11 @@ def _check_results(doc: dict) -> list[str]:
                 partial = sympy.sympify(r["value_expr"], locals=syms)
                 for probe in PROBES:
                     at = dict.fromkeys(free, probe)
-                    a, b = float(sympy.N(expr.subs(at), 30)), float(sympy.N(partial.subs(at), 30))
+                    a, b = sympy.N(expr.subs(at), 30), sympy.N(partial.subs(at), 30)
+                    if not (a.is_real and b.is_real and a.is_finite and b.is_finite):
+                        continue  # a pole of the letters (lam = 1 in (1 + k lam)/(k(1 - lam)))
+                    # value_expr is in the value's unit: an angle's in degrees, its expr in radians
+                    a, b = (math.degrees(float(a)) if r["unit"] == "deg" else float(a)), float(b)
                     if not _close(a, b):
                         problems.append(
                             f"{key}: expr gives {a!r} but value_expr {r['value_expr']!r} gives {b!r} at {at}"

@@ -33,6 +33,8 @@ from functools import cache
 
 import pytest
 import sympy
+from pending_syntax import pending_reason, skip_if_pending
+from symbolic_published import PUBLISHED as SYMBOLIC
 
 import derive
 from derive import resources
@@ -153,9 +155,18 @@ PUBLISHED = [
 ]
 
 
-@cache
 def solved(stem: str) -> derive.Solution:
-    """Each bundled problem is loaded and solved once per test session."""
+    """Each bundled problem is loaded and solved once per test session.
+
+    A problem written in the issue #14 syntax before derive reads it is skipped, saying
+    which part derive refuses (tests/pending_syntax.py).
+    """
+    skip_if_pending(stem)
+    return _solved(stem)
+
+
+@cache
+def _solved(stem: str) -> derive.Solution:
     return derive.solve(derive.load(stem))
 
 
@@ -213,7 +224,8 @@ def test_at_least_25_problems_reproduce_a_published_answer() -> None:
 def test_every_bundled_problem_is_checked_against_its_source() -> None:
     checked = {p.values[0] for p in PUBLISHED}
     chains = {s for s in resources.bundled() if s.startswith("chain-")}  # checked in test_chains.py
-    missing = set(resources.bundled()) - checked - NOTES - chains
+    symbolic = set(SYMBOLIC)  # checked in test_symbolic_library.py
+    missing = set(resources.bundled()) - checked - NOTES - chains - symbolic
     assert not missing, f"bundled problems with no published answer checked: {sorted(missing)}"
 
 
@@ -224,7 +236,8 @@ def test_every_bundled_problem_cites_its_source(stem: str) -> None:
 
 
 def test_the_library_spans_every_case() -> None:
-    problems = {stem: solved(stem).problem for stem in resources.bundled() if not stem.startswith("chain-")}
+    stems = [s for s in resources.bundled() if not s.startswith("chain-") and pending_reason(s) is None]
+    problems = {stem: solved(stem).problem for stem in stems}
     direct = [p for p in problems.values() if not p.oblique]
     oblique = [p for p in problems.values() if p.oblique]
     assert direct and oblique

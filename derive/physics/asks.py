@@ -59,6 +59,9 @@ def in_letters(expr: sympy.Expr, problem: Problem, results: dict[str, Result]) -
             s = r.symbol
             expr = expr.replace(sympy.tan(s), y / x).replace(sympy.sin(s), y / speed).replace(sympy.cos(s), x / speed)
     subs = {r.symbol: r.closed for r in results.values()}
+    for g in problem.givens:  # an unknown given (e = "?") is its result, found by name
+        if g.unknown and g.name in results:
+            subs.setdefault(g.symbol, results[g.name].closed)
     for g in problem.givens:
         if g.value is None and g.definition is not None:
             subs.setdefault(g.symbol, g.definition)

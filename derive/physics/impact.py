@@ -330,6 +330,8 @@ def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: d
             return False
         if g is not None and g.unit == "deg" and not (-math.pi < x <= math.pi):
             return False
+        if g is not None and problem.assume.get(g.name) == "acute" and not (0 < x < math.pi / 2):
+            return False
     approach = (
         (problem.motion_A.n - problem.motion_B.n).xreplace(independent_map(problem)).xreplace(root).xreplace(numeric)
     )
