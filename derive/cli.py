@@ -275,9 +275,10 @@ def _check(args: argparse.Namespace) -> int:
         args.problem, args.answer, args.answers, args.equation, args.tolerance, args.format, args.derivation
     )
     sys.stdout.write(text)
-    for item in report.items:  # an item that could not be read is in the report, and named here
-        if item.status == "error":
-            print(f"Error: {_one_line(item.message)}", file=sys.stderr)
+    errors = [item for item in report.items if item.status == "error"]
+    if errors:  # items that could not be read are in the report; the first is named here, in one line
+        more = f" (and {len(errors) - 1} more, in the report)" if len(errors) > 1 else ""
+        print(f"Error: {_one_line(errors[0].message)}{more}", file=sys.stderr)
     return report.exit_code
 
 

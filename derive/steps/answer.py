@@ -84,11 +84,20 @@ def _boxed(block: Block | None) -> bool:
     return block is not None and any(ln.boxed for ln in block.lines)
 
 
+def _about(line: Eqn, find: tuple[str, ...]) -> bool:
+    """True when the line states a quantity asked for (v_A2, or its vector for v_A2n)."""
+    first = line.sides[0].terms[0] if line.sides and line.sides[0].terms else None
+    name = getattr(first, "name", "").removeprefix("vec:")
+    return bool(name) and any(f == name or f.startswith(name) for f in find)
+
+
 def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
     """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
     if block is None or not asked or not page.marks:
         return block
-    last = max((i for i, ln in enumerate(block.lines) if ln.boxed), default=-1)
+    boxed = [i for i, ln in enumerate(block.lines) if ln.boxed]
+    asked = [i for i in boxed if _about(block.lines[i], page.p.find)]
+    last = max(asked or boxed, default=-1)  # the last line asked for, else the last boxed
     if last < 0:
         return block
     lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))

@@ -23,7 +23,7 @@ from derive.verifier.tokens import LatexError
 from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Vec
 
 TOLERANCE = CTX.mpf(10) ** -20
-TINY = CTX.mpf(10) ** -300
+TINY = CTX.mpf(10) ** -20  # an absolute floor: 25 cos 90° at 40 digits is 1e-42, not 0
 
 
 def tolerance(*values: Value) -> object:
@@ -148,7 +148,10 @@ class Judge:
         the Given list writes it (0.15, not 0.150; a result is never one)."""
         if num.value == 0 and num.integer:
             return True
-        if num.integer and len(num.mantissa) < self.rule_figures(num.value):
+        # 100 may be 99.99... rounded (a leading 9 allows three figures): exact only if no
+        # value just below it would be shown so
+        rule = min(self.rule_figures(num.value), self.rule_figures(abs(num.value) - Decimal("0.5")))
+        if num.integer and len(num.mantissa) < rule:
             return True
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:

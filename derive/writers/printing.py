@@ -103,6 +103,22 @@ def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
     return number_latex(value, digits, extra)
 
 
+def _as_angle(expr: sympy.Expr) -> sympy.Expr:
+    """An angle in letters as a textbook writes it, tan^-1(...), not (180/pi) tan^-1(...) =
+    57.3 tan^-1(...): the inverse function gives the angle, whatever its unit."""
+    arcs = (sympy.atan, sympy.atan2, sympy.asin, sympy.acos)
+
+    def degrees(e: sympy.Expr) -> bool:
+        return e.is_Mul and (1 / sympy.pi) in e.args and any(isinstance(a, arcs) for a in e.args)
+
+    def radians(e: sympy.Expr) -> sympy.Expr:
+        factor = sympy.Mul(*[a for a in e.args if not isinstance(a, arcs)]) * sympy.pi / 180
+        arc = sympy.Mul(*[a for a in e.args if isinstance(a, arcs)])
+        return arc if factor == 1 else (-arc if factor == -1 else e)
+
+    return expr.replace(degrees, radians) if expr.has(sympy.pi) else expr
+
+
 def _figures(x: Decimal) -> int:
     """Significant figures of a decimal as written (trailing zeros of a whole number not counted)."""
     return len(x.normalize().as_tuple().digits) if x else 1
@@ -444,7 +460,7 @@ def _prepared(
         values = {
             s: sympy.Float(v.evalf(PRECISION), PRECISION) if s in style.decimal else v for s, v in style.values.items()
         }
-        expr = exactify(substitute(expr, values))
+        expr = exactify(substitute(_as_angle(expr), values))
         extra = 0 if mode == "result" else extra
         decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
         # a fraction no textbook writes (4225 v^2/724808, from g = 9.8) as a decimal: 0.005829 v^2
