@@ -72,11 +72,20 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
                 f"outcomes {summary['outcomes']}; errors by class {summary['errors_by_class']}; "
                 f"slowest {slowest.get('seconds')} s ({slowest.get('kind')}, {slowest.get('command')})"
             )
-        checked = getattr(module, "LINES_CHECKED", None)
-        if checked and str(getattr(module, "__file__", "")).endswith("test_every_line.py"):
-            parts = ", ".join(f"{k} {v}" for k, v in sorted(checked.items()))
-            terminalreporter.write_line(f"verify: {sum(checked.values())} lines checked ({parts})")
-            known = getattr(module, "KNOWN_SEEN", None)
-            if known:
-                shown = ", ".join(f"{k} {v}" for k, v in sorted(known.items()))
-                terminalreporter.write_line(f"verify: pages with a known class of wrong line (issue #12): {shown}")
+    # the verifier's corpus: lines checked, and pages with a known class of wrong line, as
+    # the tests recorded them (user properties reach the summary from xdist workers too)
+    lines: dict[str, int] = {}
+    known: dict[str, int] = {}
+    for reports in terminalreporter.stats.values():
+        for rep in reports:
+            for key, value in getattr(rep, "user_properties", ()):
+                if key == "verify_lines":
+                    lines[value[0]] = value[1]
+                elif key == "verify_known":
+                    known[value[0]] = value[1]
+    if lines:
+        parts = ", ".join(f"{k} {v}" for k, v in sorted(lines.items()))
+        terminalreporter.write_line(f"verify: {sum(lines.values())} lines checked ({parts})")
+    if known:
+        shown = ", ".join(f"{k} {v}" for k, v in sorted(known.items()))
+        terminalreporter.write_line(f"verify: pages with a known class of wrong line (issue #12): {shown}")

@@ -17,6 +17,7 @@ import os
 from collections import Counter, defaultdict
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import pytest
 import sympy
@@ -109,14 +110,16 @@ def _check_text(name: str, text: str, formats: tuple[str, ...]) -> Tally:
 KNOWN = {"sums": 0.12, "figures": 0.06, "unit": 0.01}
 
 
-def _assert_clean(test: str, tally: Tally, known: dict[str, float] | None = None) -> None:
+def _assert_clean(test: str, tally: Tally, record: Any, known: dict[str, float] | None = None) -> None:
     _record(test, tally)
+    record("verify_lines", (test, tally.lines))  # for the summary line, also from xdist workers
     assert tally.lines > 0
     failures = tally.failures
     for rule, share in (known or {}).items():
         pages = {(name, fmt) for name, fmt, f in failures if f.rule == rule}
         if len(pages) <= share * tally.pages:
             KNOWN_SEEN[f"{test} {rule}"] = len(pages)
+            record("verify_known", (f"{test} {rule}", len(pages)))
             failures = [x for x in failures if x[2].rule != rule]
     if failures:
         pytest.fail(tally.summary(), pytrace=False)
@@ -126,22 +129,22 @@ def _assert_clean(test: str, tally: Tally, known: dict[str, float] | None = None
 
 
 @pytest.mark.parametrize("name", ["notes-4c11-two-spheres", "notes-4c12-cue-ball"])
-def test_the_notes_examples(name: str) -> None:
+def test_the_notes_examples(name: str, record_property: Any) -> None:
     """The notes' worked examples, as derive writes them, in Markdown and LaTeX."""
     solution = derive.solve(derive.load(name))
-    _assert_clean(f"notes:{name}", _check_solution(name, solution))
+    _assert_clean(f"notes:{name}", _check_solution(name, solution), record_property)
 
 
 # ---------------------------------------------------------------- slow
 
 
 @pytest.mark.slow
-def test_every_bundled_problem_and_chain() -> None:
+def test_every_bundled_problem_and_chain(record_property: Any) -> None:
     """Every bundled problem and chain, in Markdown and LaTeX."""
     tally = Tally()
     for name in bundled():
         tally.merge(_check_solution(name, derive.solve(derive.load(name))))
-    _assert_clean("bundled", tally)
+    _assert_clean("bundled", tally, record_property)
 
 
 def _with_values(problem: object, values: dict[str, sympy.Expr]) -> object:
@@ -166,7 +169,7 @@ def _variant_cases() -> list[tuple[str, str]]:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name,text", _variant_cases(), ids=[n for n, _ in _variant_cases()])
-def test_every_variant(name: str, text: str) -> None:
+def test_every_variant(name: str, text: str, record_property: Any) -> None:
     """200 homework variants of each [vary] table, each page as derive variants writes it."""
     problem = loads(text, path=f"{name}.toml", name=name)
     tally = Tally()
@@ -177,11 +180,11 @@ def test_every_variant(name: str, text: str) -> None:
             mine = _with_values(problem, v.values)
             facts = facts_of(derive.solve(mine) if any(g.unknown for g in mine.givens) else mine)
             tally.add(f"{name} variant {v.number:03d}", fmt, verify_text(page, facts, fmt))
-    _assert_clean(f"variants:{name}", tally, KNOWN)
+    _assert_clean(f"variants:{name}", tally, record_property, KNOWN)
 
 
 @pytest.mark.slow
-def test_generated_problems() -> None:
+def test_generated_problems(record_property: Any) -> None:
     """2,000 generated physical problems (direct, oblique, walls, symbolic, inverse, chains),
     in Markdown; one in five in LaTeX as well."""
     cases = list(verify_corpus.cases(GENERATED))
@@ -191,4 +194,4 @@ def test_generated_problems() -> None:
         for part in pool.map(_check_text, *zip(*jobs, strict=True), chunksize=8):
             tally.merge(part)
     assert tally.pages >= GENERATED, f"only {tally.pages} pages: derive refused too many generated problems"
-    _assert_clean("generated", tally, KNOWN)
+    _assert_clean("generated", tally, record_property, KNOWN)
