@@ -216,13 +216,41 @@ def test_title_reaches_the_terminal_escaped(cli, here: Path, fmt: str) -> None:
         assert json.loads(r.out)["title"] == "Evil \x1b]0;PWNED\x07\x1b[2J\x1b[31mRED"  # the text itself, kept
 
 
-@pytest.mark.xfail(
-    strict=True, reason="issue 18's LMS text escaping belongs to the LMS exports (derive/homework/lms.py)"
-)
 def test_lms_statement_math_is_not_typeset(cli, here: Path) -> None:
-    r = run(cli, "variants", "lms-math-delimiters.toml", "--count", "2", "-o", "hw", "--moodle", "q.xml")
+    """The file's $ and \\( reach no LMS HTML as delimiters: Moodle's TeX filter reads the
+    HTML source (character references hide them), MathJax reads the decoded text (a span
+    with its ignore classes hides them); derive's own math stays \\( \\) and \\[ \\]."""
+    import xml.etree.ElementTree as ET
+
+    r = run(
+        cli,
+        "variants",
+        "lms-math-delimiters.toml",
+        "--count",
+        "2",
+        "-o",
+        "hw",
+        "--moodle",
+        "q.xml",
+        "--prairielearn",
+        "pl",
+    )
     assert r.code == 0, r.err
-    assert "$x^2$" not in (here / "q.xml").read_text(encoding="utf-8")
+    root = ET.parse(here / "q.xml").getroot()
+    pages = [t.text or "" for t in root.iter("text") if (t.text or "").lstrip().startswith("<")]
+    pages += [f.read_text(encoding="utf-8") for f in (here / "pl").rglob("question.html")]
+    assert len(pages) >= 4
+    for page in pages:
+        for delimiter in ("$", "\\(", "\\[", "\\input"):
+            outside = re.sub(r"\\\((.*?)\\\)|\\\[(.*?)\\\]", "", page, flags=re.S)  # derive's own math
+            assert delimiter not in outside, (delimiter, page[:300])
+    statements = [p for p in pages if "It costs" in p]
+    assert statements, "the statement reaches the question text"
+    for page in statements:
+        assert '<span class="mathjax_ignore tex2jax_ignore"> It costs &#36;5 or &#36;10' in page
+        assert "&#92;(&#92;frac{1}{2}&#92;) of &#36;&#36;&#92;input{x}&#36;&#36;." in page
+    info = [p for p in pages if "variants drawn by derive" in p]
+    assert info and "Price &#36;x^2&#36;" in info[0]
 
 
 def test_lms_run_itself_is_clean(cli, here: Path) -> None:

@@ -150,6 +150,22 @@ def _esc(text: str) -> str:
     return html.escape(text, quote=False)
 
 
+#: Classes MathJax 3 (PrairieLearn, Moodle 4.5+) and MathJax 2 (older Moodle) skip.
+_NO_MATH = "mathjax_ignore tex2jax_ignore"
+
+
+def _words(text: str) -> str:
+    """A file's text (a title, a statement's words) as HTML that never turns into math:
+    ``$`` and ``\\`` as character references, so a filter reading the HTML source (Moodle's
+    TeX filter) finds no delimiter, and inside a span MathJax is told to skip, so the
+    decoded text (``$5 or $10``, ``\\(x\\)``) is not typeset either."""
+    out = _esc(text)
+    if "$" not in out and "\\" not in out:
+        return out
+    out = out.replace("$", "&#36;").replace("\\", "&#92;")
+    return f'<span class="{_NO_MATH}">{out}</span>'
+
+
 def _inline(text: str) -> str:
     """One line of Markdown text: escapes undone, math kept as TeX, bold and italics."""
     out: list[str] = []
@@ -158,7 +174,7 @@ def _inline(text: str) -> str:
 
     def flush_run() -> None:
         if run:
-            out.append(_esc(html.unescape("".join(run))))
+            out.append(_words(html.unescape("".join(run))))
             run.clear()
 
     i, n = 0, len(text)
@@ -534,7 +550,7 @@ def moodle_xml(
     quiz = ET.Element("quiz")
     cat = ET.SubElement(quiz, "question", {"type": "category"})
     _text(cat, "category", category)
-    _text(cat, "info", f"<p>{_esc(p.title)}: {len(variants)} variants drawn by derive.</p>", format="html")
+    _text(cat, "info", f"<p>{_words(p.title)}: {len(variants)} variants drawn by derive.</p>", format="html")
     width = max(2, len(str(len(variants))))
     symbol = latex_name(result)
     for v in variants:
