@@ -43,6 +43,21 @@ def kind_of(name: str, oblique: bool) -> str:
     return "real"
 
 
+#: The notes' names of a body's quantities (v_A1n, m_B, theta_A2); a chain's own names
+#: (u_B, w_B) are not a body's and keep their letters.
+_BODY_NAME = re.compile(r"(?P<head>(?:vec:)?(?:v|m|W|r|theta|beta)_)(?P<body>[AB])(?P<tail>[12]?[nt]?[xy]?)")
+
+
+def relabel(name: str, labels: tuple[str, str]) -> str:
+    """A body's symbol under the page's letters: ``v_A1n`` -> ``v_B1n`` when A is called B."""
+    if labels == ("A", "B"):
+        return name
+    m = _BODY_NAME.fullmatch(name)
+    if m is None:
+        return name
+    return m["head"] + labels["AB".index(m["body"])] + m["tail"]
+
+
 def latex_name(name: str) -> str:
     """LaTeX for a symbol name: ``v_A1n`` -> ``v_{A1n}``, ``theta_1`` -> ``\\theta_{1}``."""
     base, _, sub = name.partition("_")

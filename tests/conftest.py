@@ -53,6 +53,18 @@ def problem_from() -> Callable[[str], derive.Problem]:
 # ---------------------------------------------------------------- fuzz summary (tests/test_fuzz.py)
 
 
+def _fuzz_files_line(terminalreporter, summary: dict) -> None:
+    """The file fuzzer's figures (tests/test_fuzz_files.py): files, outcomes, errors, slowest."""
+    slowest = summary["slowest"][0] if summary["slowest"] else {}
+    terminalreporter.write_line(
+        f"fuzz files: {summary['files']} (seed {summary['seed']}) in {summary['seconds']} s; "
+        f"by kind {summary['kinds']}; by command {summary['commands']}; "
+        f"outcomes {summary['outcomes']}; errors by class {summary['errors_by_class']}; "
+        f"failures {summary['failures']}; "
+        f"slowest {slowest.get('seconds')} s ({slowest.get('kind')}, {slowest.get('command')})"
+    )
+
+
 def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     """One line: how many cases the fuzz tests ran (DERIVE_FUZZ_SCALE scales them)."""
     import os
@@ -64,18 +76,11 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
             parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
             scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
             terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
-        summary = getattr(module, "FUZZ_SUMMARY", None)
-        if summary and str(getattr(module, "__file__", "")).endswith("test_fuzz_files.py"):
-            slowest = summary["slowest"][0] if summary["slowest"] else {}
-            terminalreporter.write_line(
-                f"fuzz files: {summary['files']} (seed {summary['seed']}) in {summary['seconds']} s; "
-                f"outcomes {summary['outcomes']}; errors by class {summary['errors_by_class']}; "
-                f"slowest {slowest.get('seconds')} s ({slowest.get('kind')}, {slowest.get('command')})"
-            )
     # the verifier's corpus: lines checked, and pages with a known class of wrong line, as
     # the tests recorded them (user properties reach the summary from xdist workers too)
     lines: dict[str, int] = {}
     known: dict[str, int] = {}
+    fuzz: dict | None = None
     for reports in terminalreporter.stats.values():
         for rep in reports:
             for key, value in getattr(rep, "user_properties", ()):
@@ -83,6 +88,10 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
                     lines[value[0]] = value[1]
                 elif key == "verify_known":
                     known[value[0]] = value[1]
+                elif key == "fuzz_files":
+                    fuzz = value  # on the call and teardown reports alike: shown once below
+    if fuzz is not None:
+        _fuzz_files_line(terminalreporter, fuzz)
     if lines:
         parts = ", ".join(f"{k} {v}" for k, v in sorted(lines.items()))
         terminalreporter.write_line(f"verify: {sum(lines.values())} lines checked ({parts})")

@@ -189,3 +189,79 @@ def test_a_stage_error_names_the_stage() -> None:
             height = "h"
             """
         )
+
+
+# ---------------------------------------------------------------- stage letters (issues 16, 17)
+
+
+def _stage(md: str, number: int) -> str:
+    """One stage of a chain's Markdown page, heading to the next heading of its level."""
+    start = md.index(f"## Stage {number}:")
+    end = md.find("\n## ", start + 1)
+    return md[start : end if end > 0 else len(md)]
+
+
+def test_a_stage_calls_its_bodies_by_the_stage_s_letters() -> None:
+    """AQA 2007 Q4, stage 2: sphere B (0.2 kg, 3.4 m/s) strikes the wall. The page, its
+    figure and its answer call it B and the wall W; the numbers stay the mark scheme's
+    (B rebounds at 0.7 x 3.4 = 2.38 m/s)."""
+    sol = solved("chain-aqa-m3-2007-collide-again")
+    stage = _stage(derive.render(sol, "md"), 2)
+    words = re.sub(r"<svg.*?</svg>", "", stage, flags=re.S)
+    assert not re.search(r"[vm]_\{A", stage), "no symbol of A on B's stage"
+    assert r"**Given.** $m_{B} = 0.2\ \mathrm{kg}$" in stage  # m_B said once, not "m_B = m_B"
+    assert r"$v_{B1} = u_{B} = 3.4\ \mathrm{m/s}$" in stage
+    assert r"e = \frac{v_{W2} - v_{B2}}{v_{B1} - v_{W1}}" in stage
+    assert "positive from B toward the wall" in words and "W is the fixed wall" in words
+    assert "The velocity of B immediately after the impact" in words
+    assert not re.search(r"\bA\b", words.replace("## Stage 2: B strikes the wall", "")), "the word A on B's stage"
+    assert r"\boxed{v_{B2} = -2.38\ \mathrm{m/s}}" in stage
+    assert r"$w_{B} = v_{B2} = -2.38\ \mathrm{m/s}$" in stage  # carried in the stage's letters
+    # the figure: the body is labelled B, its arrows v_B1 (before) and v_B2 (after)
+    labels = re.findall(r'font-weight="bold">(\w+)</text>', stage)
+    assert labels == ["B", "B"]
+    assert re.findall(r'font-size="[\d.]+">(\w+)</tspan>', stage) == ["B1", "B2"]
+    # JSON keeps the notes' names (the contract): the stage's result is still carried as w_B
+    assert float(sol.results["w_B"].value) == pytest.approx(-2.38, abs=1e-12)
+    tex = _stage_tex(derive.render(sol, "tex"), 2)
+    assert "v_{B1}" in tex and not re.search(r"[vm]_\{A", tex)
+
+
+def _stage_tex(tex: str, number: int) -> str:
+    start = tex.index(rf"Stage {number}:")
+    end = tex.find(r"Stage ", start + 10)
+    return tex[start:end]
+
+
+def test_three_particles_stage_two_is_b_strikes_c() -> None:
+    """Edexcel M2: in stage 2 B (moving at u_B) strikes C at rest: B and C on the page."""
+    stage = _stage(derive.render(solved("chain-edexcel-m2-three-particles"), "md"), 2)
+    assert r"$m_{B} = m$, $m_{C} = m$" in stage
+    assert "from the centre of B toward the centre of C" in stage
+    assert "system B + C" in stage
+    assert not re.search(r"[vm]_\{A", stage)
+
+
+@pytest.mark.parametrize(
+    ("tables", "message"),
+    [
+        ('A = { label = "b" }', "label.*a capital letter"),
+        ('A = { label = "B" }\nB = { label = "B" }', "both called"),
+    ],
+)
+def test_a_stage_letter_is_a_capital_and_each_body_has_its_own(tables: str, message: str) -> None:
+    text = textwrap.dedent(
+        """
+        title = "letters"
+        kind = "chain"
+        [given]
+        m = "1 kg"
+        [[stage]]
+        type = "impact"
+        kind = "direct"
+        given = { m_A = "m", m_B = "m", e = 0.5, v_A1 = "2 m/s", v_B1 = "0 m/s" }
+        """
+    ) + textwrap.dedent(tables)
+    with pytest.raises(derive.InputError, match=message) as err:
+        derive.solve(loads(text, path="letters.toml"))
+    assert "letters.toml" in str(err.value) and "\n" not in str(err.value)

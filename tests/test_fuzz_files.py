@@ -25,6 +25,7 @@ import random
 import re
 import time
 from collections import Counter
+from collections.abc import Callable
 from pathlib import Path
 
 import fuzz_files
@@ -38,7 +39,7 @@ _SEED = os.environ.get("DERIVE_FUZZ_SEED", "18")
 SEED = random.SystemRandom().randrange(2**32) if _SEED == "random" else int(_SEED)
 #: Each run's time budget: the command's default (solve and check 60 s, variants 600 s).
 RAW = re.compile("[\x00-\x08\x0b-\x1f\x7f-\x9f\u200e\u200f\u2028\u2029\u202a-\u202e\u2066-\u2069]")
-#: The figures of the last run, for the summary line (conftest.py).
+#: The figures of the last run (the summary line in conftest.py reads its record_property).
 FUZZ_SUMMARY: dict[str, object] = {}
 
 
@@ -76,7 +77,9 @@ def problems_with(case: fuzz_files.Case, code: int, out: str, err: str, seconds:
 
 
 @pytest.mark.slow
-def test_ten_thousand_hostile_files(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_ten_thousand_hostile_files(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, record_property: Callable[[str, object], None]
+) -> None:
     last_error: list[str] = []
     real_str = DeriveError.__str__
 
@@ -124,6 +127,7 @@ def test_ten_thousand_hostile_files(tmp_path: Path, monkeypatch: pytest.MonkeyPa
         slowest=[{"seconds": round(s, 2), "case": n, "kind": k, "command": c} for s, n, k, c in slowest],
         failures=len(failures),
     )
+    record_property("fuzz_files", dict(FUZZ_SUMMARY))  # the summary line, from an xdist worker too
     if os.environ.get("DERIVE_FUZZ_REPORT"):
         Path(os.environ["DERIVE_FUZZ_REPORT"]).write_text(json.dumps(FUZZ_SUMMARY, indent=2) + "\n")
     assert not failures, f"{len(failures)} of {FILES} files (seed {SEED}) went wrong:\n" + "\n".join(failures[:20])

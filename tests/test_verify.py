@@ -137,7 +137,7 @@ BUGS = [
         "chain-edexcel",
         "Add (9) and (10)",
         "Add (15) and (10)",
-        "2 v_{B2} =",
+        "2 v_{C2} =",
         {"references"},
     ),
     (
@@ -145,7 +145,7 @@ BUGS = [
         "chain-edexcel",
         "Subtract (10) from (9)",
         "Subtract (10) from (3)",
-        "2 v_{A2} =",
+        "2 v_{B2} =",
         {"references"},
     ),
     ("reference-that-means-otherwise", "notes-4c11", "From (4):", "From (3):", "v_{B2n} = v_{A2n} +", {"references"}),

@@ -9,6 +9,8 @@ physics as it is built; its errors get their place in the file here.
 
 from __future__ import annotations
 
+import re
+
 from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
@@ -87,6 +89,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             name=name,
             fixed_B=fixed_B,
             name_B=bodies["B"].get("name"),
+            labels=_labels(bodies, fixed_B, ctx),
             phi=phi,
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
@@ -154,6 +157,26 @@ def _take_from_seed(
         if key in needed and key not in by_name:
             givens.append(g)
             by_name[key] = g
+
+
+_LABEL = re.compile(r"[A-Z][0-9]?")
+
+
+def _labels(bodies: Mapping[str, Mapping[str, Any]], fixed_B: bool, ctx: Source) -> tuple[str, str]:
+    """The letters the page calls A and B by: the file's ``label``; a fixed B not
+    labelled whose letter A took is called by its name's initial (W for a wall)."""
+    for b in "AB":
+        label = bodies[b].get("label")
+        if label is not None and not _LABEL.fullmatch(label):
+            raise ctx.error('expected a capital letter, optionally with a digit ("B", "C", "P1")', b, "label", label)
+    a = bodies["A"].get("label", "A")
+    b = bodies["B"].get("label")
+    if b is None:
+        initial = (bodies["B"].get("name") or "wall")[:1].upper() if fixed_B else ""
+        b = "B" if a != "B" else (initial if _LABEL.fullmatch(initial) and initial != a else "W")
+    if a == b:
+        raise ctx.error(f'A and B are both called "{a}": give each body its own letter', "B", "label", b)
+    return a, b
 
 
 def _check_fixed(bodies: Mapping[str, Mapping[str, Any]], by_name: Mapping[str, Given], ctx: Source) -> None:

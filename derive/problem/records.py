@@ -137,6 +137,9 @@ class Problem:
     name: str = ""
     fixed_B: bool = False
     name_B: str | None = None
+    #: The letters the page calls body A and body B by (a chain stage where sphere B
+    #: strikes a wall: ("B", "W")); the physics and the JSON keep the notes' A and B.
+    labels: tuple[str, str] = ("A", "B")
     phi: sympy.Symbol | None = None
     answer_units: Mapping[str, str] = field(default_factory=dict)
     vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)

@@ -125,7 +125,7 @@ def _velocities(page: Page) -> Block:
             value = page.value_of(symbol(f"v_{b}2"))
             boxed = f"v_{b}2" not in given_names
             lines.append(Eqn((Side((symbol(f"v_{b}2"),)), Side((value,), "result")), unit=page.unit_v, boxed=boxed))
-    heading = "The velocity of A" if p.fixed_B else "The velocities"
+    heading = f"The velocity of {page.a}" if p.fixed_B else "The velocities"
     return Block((heading + " immediately after the impact:",), tuple(lines))
 
 
@@ -183,7 +183,7 @@ def _asked(page: Page) -> Block | None:
     text: Text = ("As asked:",)
     if "J_n" in p.find:
         J = symbol("J_n")
-        text = ("As asked (", Math(J), " is the impulse along +n on B; on A it is ", Math(-J), "):")
+        text = ("As asked (", Math(J), f" is the impulse along +n on {page.b}; on {page.a} it is ", Math(-J), "):")
     return Block(text, tuple(extra))
 
 

@@ -17,13 +17,17 @@ from derive.physics.algebra import collect, common_factor
 from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.steps.page import Page, nonzero
 
-SMOOTH = (
-    "Linear momentum in the t-direction is conserved for each particle: "
-    "no impulsive force acts on A or on B along t (the surfaces are smooth)."
-)
-INTERNAL = (
-    "Linear momentum in the n-direction is conserved for the system A + B: the contact forces are internal to it."
-)
+def smooth(a: str, b: str) -> str:
+    """Why (1) and (2) hold, for bodies the page calls ``a`` and ``b``."""
+    return (
+        "Linear momentum in the t-direction is conserved for each particle: "
+        f"no impulsive force acts on {a} or on {b} along t (the surfaces are smooth)."
+    )
+
+
+def internal(a: str, b: str) -> str:
+    """Why (3) holds."""
+    return f"Linear momentum in the n-direction is conserved for the system {a} + {b}: the contact forces are internal to it."
 #: A direction after the impact, by name: the components (y, x) whose ratio is its tangent.
 DIRECTIONS = {
     "theta_A2": ("A2n", "A2t"),
@@ -59,10 +63,10 @@ def kinetics(page: Page) -> Kinetics:
     shown: set[sympy.Symbol] = set()
     nm, p = page.nm, page.p
     if p.oblique:
-        blocks.append(Block((SMOOTH,)))
+        blocks.append(Block((smooth(page.a, page.b),)))
         for k, b, m, c1, c2 in ((1, "A", page.m_A, nm.A1t, nm.A2t), (2, "B", page.m_B, nm.B1t, nm.B2t)):
             if b == "B" and p.fixed_B:
-                blocks.append(Block((f"B, the {page.surface}, does not move: (2) says nothing.",)))
+                blocks.append(Block((f"{page.b}, the {page.surface}, does not move: (2) says nothing.",)))
                 continue
             block, left = t_momentum(page, k, b, m, c1, c2)
             blocks.append(block)
@@ -81,7 +85,7 @@ def kinetics(page: Page) -> Kinetics:
         blocks.append(
             Block(
                 (
-                    f"Linear momentum along n is not conserved for A and the {page.surface}: its supports exert an "
+                    f"Linear momentum along n is not conserved for {page.a} and the {page.surface}: its supports exert an "
                     "impulsive reaction, so equation (3) does not apply. The impact rule alone gives the n component.",
                 )
             )
@@ -134,7 +138,7 @@ def t_momentum(
         lines.append(Eqn((Side((pre,)), Side((c2,))), implies=True))
         lines.append(Eqn((Side((pre,), "values"), Side((c2,), "values")), tag=page.tags(k)))
         left = page.num(pre - c2)
-    return Block((f"System {b}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)), left
+    return Block((f"System {page.label(b)}: ", Math(sympy.Symbol(r"\Sigma F_t = 0")), ","), tuple(lines)), left
 
 
 def collected(
@@ -188,7 +192,7 @@ def momentum_n(page: Page) -> tuple[Block, tuple[tuple[sympy.Expr, ...], sympy.E
             sums.append((lhs_num, sympy.Add(*lhs_num)))
     terms, const = collected(page, sympy.Add(*g_rhs), sympy.Add(*g_lhs), (nm.A2n, nm.B2n))
     lines.append(_collected_line(page, terms, const, 3))
-    block = Block((INTERNAL,), tuple(lines), tuple(sums))
+    block = Block((internal(page.a, page.b),), tuple(lines), tuple(sums))
     return block, (terms, const[0]), page.num(sympy.Add(*g_rhs) - sympy.Add(*g_lhs))
 
 

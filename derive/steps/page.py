@@ -85,6 +85,20 @@ class Page:
     def unknowns(self) -> tuple[sympy.Symbol, ...]:
         return self.imp.unknowns
 
+    def label(self, body: str) -> str:
+        """The letter the page calls ``body`` ("A" or "B") by."""
+        return self.p.labels["AB".index(body)]
+
+    @property
+    def a(self) -> str:
+        """The letter the page calls body A by (``B`` in a stage where sphere B strikes a wall)."""
+        return self.p.labels[0]
+
+    @property
+    def b(self) -> str:
+        """The letter the page calls body B by."""
+        return self.p.labels[1]
+
     @property
     def surface(self) -> str:
         return self.p.name_B or "surface"

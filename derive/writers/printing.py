@@ -30,7 +30,7 @@ from derive.numbers import (
 )
 from derive.problem.units import latex_unit, parse_unit
 from derive.steps.model import Block, Eqn, Side
-from derive.symbols import latex_name, vector_latex
+from derive.symbols import latex_name, relabel, vector_latex
 from derive.writers.width import width_pt
 
 
@@ -79,6 +79,7 @@ class Style:
     decimal: frozenset[sympy.Symbol] = frozenset()
     letters: frozenset[sympy.Symbol] = frozenset()
     letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
+    labels: tuple[str, str] = ("A", "B")
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -198,8 +199,10 @@ class StepPrinter(LatexPrinter):
         block: int | None = None,
         trim_floats: bool = False,
         fractions: bool = False,
+        labels: tuple[str, str] = ("A", "B"),
     ) -> None:
         super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._labels = labels
         self._trim_floats = trim_floats
         self._fractions = fractions
         self._slots = slots
@@ -241,7 +244,7 @@ class StepPrinter(LatexPrinter):
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
         if expr in self._values:
             return self._values[expr]
-        name = expr.name
+        name = relabel(expr.name, self._labels)
         tex = vector_latex(name) or (name if name.startswith("\\") else latex_name(name))
         if expr in self._cancel:
             return r"\cancel{" + tex + "}"
@@ -447,11 +450,19 @@ def _prepared(
     """The printer for ``mode`` (see :data:`derive.steps.model.Mode`) and ``expr`` made ready for it."""
     book, varied = style.slots, style.varied
     if mode == "symbolic":
-        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra), expr
+        return StepPrinter(cancel=cancel, digits=style.digits, extra=extra, labels=style.labels), expr
     if mode == "values":
         vals = values_map(style, style.digits, extra, expr.free_symbols)
         printer = StepPrinter(
-            vals, cancel, style.digits, extra, decimal_rationals=True, slots=book, varied=varied, slot_kind="given"
+            vals,
+            cancel,
+            style.digits,
+            extra,
+            decimal_rationals=True,
+            slots=book,
+            varied=varied,
+            slot_kind="given",
+            labels=style.labels,
         )
         return printer, expr
     if mode in ("numeric", "result") and _letters(expr, style):
@@ -475,7 +486,13 @@ def _prepared(
             rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
             expr = expr.xreplace(rounded)
         printer = StepPrinter(
-            cancel=cancel, digits=style.digits, extra=extra, trim_floats=True, decimal_rationals=decimal, fractions=True
+            cancel=cancel,
+            digits=style.digits,
+            extra=extra,
+            trim_floats=True,
+            decimal_rationals=decimal,
+            fractions=True,
+            labels=style.labels,
         )
         return printer, expr
     if mode == "numeric":
@@ -489,6 +506,7 @@ def _prepared(
             slots=book,
             varied=varied,
             block=style.block,
+            labels=style.labels,
         )
         return printer, floatify(expr)
     if mode == "result":
@@ -503,6 +521,7 @@ def _prepared(
             slots=book,
             varied=varied,
             slot_kind="result",
+            labels=style.labels,
         )
         return printer, floatify(expr, keep_integers=False)
     raise ValueError(mode)
@@ -619,7 +638,7 @@ def _slot_term(
     if not (coeff.free_symbols & style.varied):
         return None
     token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
-    printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True)
+    printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True, labels=style.labels)
     return token + " " + printer.doprint(rest)
 
 
@@ -817,9 +836,9 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
     if isinstance(expr, sympy.Interval):
         lo = "(" if expr.left_open else "["
         hi = ")" if expr.right_open else "]"
-        p = StepPrinter(digits=style.digits)
+        p = StepPrinter(digits=style.digits, labels=style.labels)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
-    printer = StepPrinter(digits=style.digits, decimal_rationals=True, fractions=True)
+    printer = StepPrinter(digits=style.digits, decimal_rationals=True, fractions=True, labels=style.labels)
     if isinstance(expr, sympy.Eq):
         return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
     return printer.doprint(expr)

@@ -24,7 +24,7 @@ from derive.problem import ChainProblem, Given, Problem
 from derive.problem.units import latex_unit, plain_unit
 from derive.resources import templates_dir
 from derive.steps.model import Eqn, Math, Solution
-from derive.symbols import latex_name, symbol
+from derive.symbols import latex_name, relabel, symbol
 from derive.writers import figure
 from derive.writers.printing import (
     IMPLIES,
@@ -112,7 +112,7 @@ def source_parts(text: str | None) -> list[tuple[str, str]]:
 
 def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
-    name = latex_name(g.name)
+    name = latex_name(relabel(g.name, style.labels))
     if g.unknown:
         return name + r" = \,?", "unknown: derive finds it"
     if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
@@ -143,7 +143,9 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
             value += r"\ " + latex_unit(g.unit)
     parts = [name]
     if g.definition is not None:
-        parts.append(StepPrinter().doprint(g.definition))
+        defined = StepPrinter().doprint(g.definition)  # in the chain's names
+        if defined != name:  # m_B = m_B when the page calls A "B": said once
+            parts.append(defined)
         shown = latex_expr(g.definition, "values", style, 1)
         if shown != parts[-1] and not g.definition.is_Symbol and g.definition.free_symbols:
             parts.append(shown)
@@ -179,6 +181,11 @@ def _statement(p, style: Style) -> str | None:
         return text + (" " + plain_unit(g.unit) if g.unit else "")
 
     return re.sub(r"\{([A-Za-z][A-Za-z0-9_]*)\}", one, p.statement)
+
+
+def _named(words: str, labels: tuple[str, str]) -> str:
+    """Words about body A or B (``the speed of A``) under the page's letters."""
+    return re.sub(r"\b([AB])\b", lambda m: labels["AB".index(m[1])], words) if labels != ("A", "B") else words
 
 
 _FIND_WORDS = {
@@ -280,6 +287,7 @@ def view(
         decimal=frozenset(g.symbol for g in p.givens if g.decimal),
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
         letter_units={**(outer_letters or {}), **letter_units(p)},
+        labels=p.labels,
     )
     stages = []
     for stage in solution.stages:
@@ -297,12 +305,14 @@ def view(
     else:
         unknown = [g.name for g in p.givens if g.unknown]
         words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
-            "the velocity of A immediately after the impact"
+            f"the velocity of {p.labels[0]} immediately after the impact"
             if p.fixed_B
-            else "the velocities of A and B immediately after the impact"
+            else f"the velocities of {p.labels[0]} and {p.labels[1]} immediately after the impact"
         )
         extra_words = [
-            _FIND_WORDS[f] for f in p.find if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
+            _named(_FIND_WORDS[f], p.labels)
+            for f in p.find
+            if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
         ]
         if extra_words:
             words += "; " + ", ".join(extra_words)
@@ -483,7 +493,8 @@ def chain_view(
                 falls=falls.get(st.number, False),
                 known=sol.values,
             )
-            carried = [latex_eqn(eqn, stage_style)[0] for eqn in st.carried]
+            own = replace(stage_style, labels=st.part.problem.labels)  # v_A2 of a stage that calls A "B"
+            carried = [latex_eqn(eqn, own)[0] for eqn in st.carried]
             stages.append(
                 {
                     "number": st.number,

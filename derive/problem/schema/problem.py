@@ -49,6 +49,15 @@ BODY = Table(
             max_length=MAX_LINE,
             expected='a short name such as "wall" or "floor"',
         ),
+        Field(
+            "label",
+            "line",
+            "the letter the page calls the body by, in its symbols, sentences and figure "
+            '(a chain stage where sphere B strikes a wall: A = { label = "B" })',
+            default='"A", "B"',
+            max_length=3,
+            expected='a capital letter, optionally with a digit ("B", "C", "P1")',
+        ),
     ),
 )
 GEOMETRY = Table(

@@ -28,6 +28,7 @@ def facts_of(solution: Any, digits: int | None = None) -> Facts:
     else:
         table = Table()
         notes = impact(table, solution)
+        table.relabel(getattr(problem, "labels", ("A", "B")))
         asked = frozenset(problem.find) | frozenset(g.name for g in problem.givens if g.unknown)
         scope = table.scope("", system=problem.system, asked=asked)
         facts = Facts({"": scope}, problem.digits, False, tuple(notes))

@@ -145,6 +145,7 @@ class _Chain:
         for g in problem.givens:
             if g.unknown and g.name not in self.table.exprs:
                 self.define(i, g.name, table.exprs[g.name], dim_of(g))
+        table.relabel(getattr(problem, "labels", ("A", "B")))  # the page's letters for the stage's bodies
 
     def stage_bounces(self, i: int, raw: dict, st: Any, stage: _Stage) -> None:
         h0, _ = self.quantity(raw.get("height"))

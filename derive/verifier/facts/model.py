@@ -10,6 +10,8 @@ is checked at one ``m``.
 
 from __future__ import annotations
 
+import re
+
 import zlib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -129,6 +131,10 @@ def exact_decimal(value: sympy.Expr | None) -> Decimal | None:
     return (Decimal(int(value.p)) / Decimal(int(value.q))).normalize()
 
 
+#: A body's quantity in the notes' names (v_A1n, m_B, theta_A2).
+_BODY = re.compile(r"((?:v|m|W|r|theta|beta)_)([AB])([12]?[nt]?[xy]?)")
+
+
 @dataclass
 class Table:
     """Names collected at one sample point, each as a 45-digit number (a SymPy Float).
@@ -168,6 +174,21 @@ class Table:
         if d is not None:
             self.exact.add(d)
             self.exact.add(-d)
+
+    def relabel(self, labels: tuple[str, str]) -> None:
+        """Rename the bodies' quantities to the letters the page calls A and B by
+        (``v_A1`` is read as ``v_B1`` on a page where sphere B strikes a wall)."""
+        if tuple(labels) == ("A", "B"):
+            return
+
+        def new(name: str) -> str:
+            m = _BODY.fullmatch(name)
+            return name if m is None else m[1] + labels["AB".index(m[2])] + m[3]
+
+        for book in (self.exprs, self.dims, self.roles, self.vectors):
+            moved = {new(k): v for k, v in book.items()}
+            book.clear()
+            book.update(moved)
 
     def scope(self, key: str, names: list[str] | None = None, **kw: object) -> Scope:
         """The names (all, or those listed) as a :class:`Scope`."""

@@ -16,6 +16,7 @@ from collections.abc import Callable, Mapping
 from derive.physics.impact import independent_map
 from derive.problem import Problem
 from derive.steps.model import Solution
+from derive.symbols import relabel
 from derive.writers.figure.frame import Frame, chain_falls, frame, number
 from derive.writers.figure.layout import AROUND, Spec, place
 from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
@@ -83,7 +84,7 @@ def _perps(ux: float, uy: float, away: Point) -> tuple[Point, Point]:
     return (left, right) if left[0] * away[0] + left[1] * away[1] >= 0 else (right, left)
 
 
-def arrow_spec(a: Arrow, free_end: Point, outward: Point) -> Spec:
+def arrow_spec(a: Arrow, free_end: Point, outward: Point, text: str | None = None) -> Spec:
     """Where a velocity's label may go: beside its middle (on the side away from the
     point of contact, else above), beyond its free end, beside its quarters."""
     ux, uy = (a.x2 - a.x1) / a.length, (a.y2 - a.y1) / a.length
@@ -91,7 +92,7 @@ def arrow_spec(a: Arrow, free_end: Point, outward: Point) -> Spec:
     p1, p2 = _perps(ux, uy, (mid[0] + 1e-6, mid[1] + 1e-3))
     quarter = ((3 * free_end[0] + mid[0]) / 4, (3 * free_end[1] + mid[1]) / 4)
     return Spec(
-        a.name,
+        a.name if text is None else text,
         "velocity",
         ((mid, (p1, p2)), (free_end, (outward, p1, p2)), (quarter, (p1, p2)), (mid, AROUND)),
     )
@@ -109,11 +110,11 @@ def _frame_shapes(
     """The bodies (or the wall), the line of impact n (reaching past any arrow that lies
     along it, so that their heads stay apart) and the plane of contact t."""
     shapes: list[Shape] = [A]
-    specs = [Spec("A", "body", _ring(A), home=A, inside=True)]
+    specs = [Spec(p.labels[0], "body", _ring(A), home=A, inside=True)]
     span = max(A.r, B.r if B else 0.0)
     if B is not None:
         shapes.append(B)
-        specs.append(Spec("B", "body", _ring(B), home=B, inside=True))
+        specs.append(Spec(p.labels[1], "body", _ring(B), home=B, inside=True))
         n_end, t_half = B.r * 2 + 0.8, span + 0.8
     else:
         half = A.r + 0.9
@@ -212,7 +213,7 @@ def _motion_shapes(
         if v is None:
             continue
         if math.hypot(*v) * scale < 1e-6:
-            specs.append(Spec(name, "velocity", _ring(body), tail=" = 0"))
+            specs.append(Spec(relabel(name, p.labels), "velocity", _ring(body), tail=" = 0"))
             continue
         others = [o for o in bodies.values() if o is not body]
         d = _unit(fr, v)
@@ -221,7 +222,7 @@ def _motion_shapes(
         )
         shapes.append(arrow)
         free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
-        specs.append(arrow_spec(arrow, free, outward))
+        specs.append(arrow_spec(arrow, free, outward, relabel(name, p.labels)))
         leg = (side * d[0], side * d[1])
         found = _after_angles(p, b, fr) if after else _before_angle(p, b, fr)
         for ref, label, guide in found:
