@@ -10,7 +10,6 @@ physics as it is built; its errors get their place in the file here.
 from __future__ import annotations
 
 import re
-
 from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any

@@ -16,7 +16,9 @@ def geometry(page: Page) -> list[Block]:
     p = page.p
     blocks = [_axes(page)]
     if p.fixed_B:
-        blocks.append(Block((f"{page.b} is the fixed {page.surface}: infinite mass, at rest before and after the impact.",)))
+        blocks.append(
+            Block((f"{page.b} is the fixed {page.surface}: infinite mass, at rest before and after the impact.",))
+        )
     if not p.oblique:
         lines = []
         for s_ in (page.nm.A1n,) + (() if p.fixed_B else (page.nm.B1n,)):
@@ -35,9 +37,7 @@ def _axes(page: Page) -> Block:
     p = page.p
     turned = " (n turned 90° counter-clockwise)." if p.oblique else "."
     if p.fixed_B:
-        where = (
-            f" along the line of impact, normal to the {page.surface}, positive from {page.a} toward the {page.surface}, and "
-        )
+        where = f" along the line of impact, normal to the {page.surface}, positive from {page.a} toward the {page.surface}, and "
         tail = " along the " + page.surface + turned
     else:
         where = f" along the line of impact, positive from the centre of {page.a} toward the centre of {page.b}, and "
@@ -49,7 +49,9 @@ def _resolved(page: Page, motion: Motion, comps: tuple[sympy.Symbol, sympy.Symbo
     """One body's velocity before the impact, resolved along n and t."""
     b, (cn, ct) = motion.body, comps
     if motion.speed is not None and motion.angle is None:
-        return Block((f"{page.label(b)} is at rest before the impact: ", Math(sympy.Eq(cn, 0)), ", ", Math(sympy.Eq(ct, 0)), "."))
+        return Block(
+            (f"{page.label(b)} is at rest before the impact: ", Math(sympy.Eq(cn, 0)), ", ", Math(sympy.Eq(ct, 0)), ".")
+        )
     if motion.angle is not None:
         text: Text = (
             f"{page.label(b)} moves at ",

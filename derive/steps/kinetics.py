@@ -17,6 +17,7 @@ from derive.physics.algebra import collect, common_factor
 from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.steps.page import Page, nonzero
 
+
 def smooth(a: str, b: str) -> str:
     """Why (1) and (2) hold, for bodies the page calls ``a`` and ``b``."""
     return (
@@ -28,6 +29,8 @@ def smooth(a: str, b: str) -> str:
 def internal(a: str, b: str) -> str:
     """Why (3) holds."""
     return f"Linear momentum in the n-direction is conserved for the system {a} + {b}: the contact forces are internal to it."
+
+
 #: A direction after the impact, by name: the components (y, x) whose ratio is its tangent.
 DIRECTIONS = {
     "theta_A2": ("A2n", "A2t"),

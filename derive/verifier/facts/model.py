@@ -11,7 +11,6 @@ is checked at one ``m``.
 from __future__ import annotations
 
 import re
-
 import zlib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
