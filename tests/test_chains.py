@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 import textwrap
+import tomllib
 from decimal import ROUND_HALF_UP, Decimal
 from functools import cache
 
@@ -265,3 +266,18 @@ def test_a_stage_letter_is_a_capital_and_each_body_has_its_own(tables: str, mess
     with pytest.raises(derive.InputError, match=message) as err:
         derive.solve(loads(text, path="letters.toml"))
     assert "letters.toml" in str(err.value) and "\n" not in str(err.value)
+
+
+# the stage types that are physics of their own (an impact, or motion between impacts);
+# define, solve and again work on results and add no physics
+PHYSICS_STAGES = {"impact", "fall", "rise", "slide", "spring", "bounces"}
+
+
+def test_no_single_impact_problem_in_the_library_is_a_chain() -> None:
+    """Issue 14: a problem with one impact and nothing before or after it is stated as a
+    problem file (letters, show-that, defined quantities); a chain only where the physics
+    has more than one stage."""
+    for stem in sorted(s for s in bundled() if s.startswith("chain-")):
+        stages = tomllib.loads(bundled()[stem].read_text(encoding="utf-8"))["stage"]
+        physics = [s["type"] for s in stages if s["type"] in PHYSICS_STAGES]
+        assert len(physics) >= 2, f"{stem} has one stage of physics ({physics}): state it as a problem file"
