@@ -205,3 +205,16 @@ def test_example_4c12_keeps_the_notes_root_two_over_two() -> None:
     md = derive.render(derive.solve(derive.load("notes-4c12-cue-ball")), "md")
     assert r"v_{A2t} = \frac{\sqrt{2}}{2} v_{A1} \tag{1}" in md
     assert "0.7071" not in md and "0.707 v" not in md
+
+
+def test_parts_of_a_nested_radical_are_one_term() -> None:
+    """Edexcel M4 2018 Q2 (issue 14): the ball leaves the wall with the normal component
+    3/4 U sin(alpha), sin^2(alpha) = 32/35 (the mark scheme's tan^2 alpha = 32/3), so
+    v_A2n = -0.75 sqrt(32/35) U = -0.717 U; the page wrote it as -0.555 U - 0.1624 U."""
+    import math
+
+    md = derive.render(derive.solve(derive.load("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke")), "md")
+    want = f"{-0.75 * math.sqrt(32 / 35):.3f} U"
+    assert want == "-0.717 U"
+    assert f"v_{{A2n}} = {want}" in md
+    assert not re.search(r"-?\d\.\d+ U [-+] \d\.\d+ U", md), "two rounded parts of one coefficient"

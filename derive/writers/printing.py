@@ -471,7 +471,7 @@ def _prepared(
         values = {
             s: sympy.Float(v.evalf(PRECISION), PRECISION) if s in style.decimal else v for s, v in style.values.items()
         }
-        expr = exactify(substitute(_as_angle(expr), values))
+        expr = _one_term_per_letters(exactify(substitute(_as_angle(expr), values)))
         extra = 0 if mode == "result" else extra
         decimal = bool(style.decimal)  # with decimal data, 2.4 u; with exact data, 12 u/5
         # a fraction no textbook writes (4225 v^2/724808, from g = 9.8) as a decimal: 0.005829 v^2
@@ -525,6 +525,35 @@ def _prepared(
         )
         return printer, floatify(expr, keep_integers=False)
     raise ValueError(mode)
+
+
+def _one_term_per_letters(expr: sympy.Expr) -> sympy.Expr:
+    """Terms that differ only in an irrational number as one term: -0.717 U, not
+    -0.555 U - 0.1624 U (the parts of a nested radical, each rounded); in a sum at any
+    depth (a component beside its unit vector too)."""
+    if expr.is_Atom or not expr.args:
+        return expr
+    args = tuple(_one_term_per_letters(a) for a in expr.args)
+    if args != expr.args:
+        expr = expr.func(*args)
+    return _one_sum(expr) if isinstance(expr, sympy.Add) else expr
+
+
+def _one_sum(expr: sympy.Expr) -> sympy.Expr:
+    groups: dict[sympy.Expr, list[sympy.Expr]] = {}
+    for term in expr.args:
+        number, letters = term.as_independent(*term.free_symbols, as_Add=False)
+        groups.setdefault(letters, []).append(number)
+    totals = {letters: sympy.Add(*numbers) for letters, numbers in groups.items() if len(numbers) > 1}
+    if not totals or all(t.is_Rational for t in totals.values()):
+        return expr  # nothing to join (2 u + u is left as the page wrote it)
+    out = []
+    for letters, numbers in groups.items():
+        total = totals.get(letters, numbers[0])
+        if not total.is_Rational and len(numbers) > 1:
+            total = sympy.Float(total.evalf(PRECISION), PRECISION)
+        out.append(total * letters)
+    return sympy.Add(*out)
 
 
 def _letters(expr: sympy.Expr, style: Style) -> bool:
