@@ -140,6 +140,24 @@ def test_a_body_that_stops_has_no_arrow() -> None:
     assert "v_A2" not in after.caption
 
 
+def test_a_velocity_the_problem_asks_for_is_drawn_at_its_value() -> None:
+    """A given left unknown ("?") is drawn at the value the solution finds, not as 1.
+    OCR MEI 2024: A arrives at v_A1n = 9 m/s, B at 2 m/s. Edexcel M2 2017: P and Q move in
+    opposite directions, v_A1 = 8v and v_B1 = -4.5v. Edexcel M4 2018: alpha = 72.98 deg
+    from the wall."""
+    disc = derive.solve(derive.load("ocr-mei-fmm-2024-disc-a-stops"))
+    figures = {"1": describe(disc), "2": describe(disc, after=True)}
+    speeds = {"v_A1": 9.0, "v_B1": 2.0, "v_A2": 0.0, "v_B2": math.hypot(6.4, math.sqrt(3))}
+    assert check_scale(figures, speeds) == set()
+    pq = describe(derive.solve(derive.load("edexcel-m2-2017-january-q5-both-reverse-find-speeds-before")))
+    a1, b1 = (s for s in pq.shapes if isinstance(s, Arrow))
+    assert a1.x2 > a1.x1 and b1.x2 < b1.x1 and a1.length / b1.length == pytest.approx(8 / 4.5)
+    wall = describe(derive.solve(derive.load("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke")))
+    (ball,) = (s for s in wall.shapes if isinstance(s, Arrow))
+    angle = math.degrees(math.atan2(abs(ball.x2 - ball.x1), abs(ball.y2 - ball.y1)))  # from the wall (t is up)
+    assert angle == pytest.approx(72.976, abs=0.01)
+
+
 def test_a_bullet_that_lodges_gets_a_scale_per_figure() -> None:
     """MSU: 300 m/s before, 1.5 m/s after (0.02 kg into 4.0 kg): on one scale the arrows after
     would be 0.015 cm long, so each figure has its own, and the caption says so."""

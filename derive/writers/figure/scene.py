@@ -83,9 +83,22 @@ def _components(solution: Solution) -> dict[str, tuple[object, object]]:
     return out
 
 
+def _known(solution: Solution, values: Mapping) -> dict:
+    """Every number the figure may use: the solution's, ``values``, and the givens the
+    problem left unknown and the solution found (v_A1n = "?" is 9 m/s, not 1; an angle's
+    result is in degrees, its symbol in radians)."""
+    found = {}
+    for g in solution.problem.givens:
+        r = solution.results.get(g.name) if g.unknown else None
+        if r is not None:
+            value = r.value if r.value is not None else r.partial
+            found[g.symbol] = value * sympy.pi / 180 if g.unit == "deg" else value
+    return {**found, **solution.values, **values}
+
+
 def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
     """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
-    known = {**solution.values, **values}
+    known = _known(solution, values)
     out: dict[str, tuple[float, float]] = {}
     for key, (en, et) in _components(solution).items():
         n, t = number(en, known), number(et, known)
@@ -97,7 +110,7 @@ def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, fl
 def speed_words(solution: Solution, key: str, speed: float, values: Mapping) -> str:
     """A drawn speed in words for a caption ("0.2 m/s"), or "" when it is a symbol's
     (drawn as if each symbol were 1, so its number means nothing to the reader)."""
-    known = {**solution.values, **values}
+    known = _known(solution, values)
     if any(sympy.sympify(c).xreplace(known).free_symbols for c in _components(solution)[key] if c is not None):
         return ""
     return f"{Decimal(f'{speed:.3g}').normalize():f} {working_unit(solution.problem, 'velocity')}"
