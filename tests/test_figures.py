@@ -131,6 +131,18 @@ def test_a_slow_arrow_is_drawn_longer_and_the_caption_says_so() -> None:
     assert all("drawn longer" not in text for text in plain.values())
 
 
+def test_the_caption_names_each_lengthened_arrow_in_the_page_s_notation() -> None:
+    """One arrow or two, a speed in numbers or a symbol's (no number), each page's names."""
+    fig = Figure("After the impact", own_scale=True, lengthened=(("v_A2", "0.2 m/s"), ("v_B2", "")))
+    assert fig.caption == (
+        "arrows to scale with speed, a scale of their own in each figure, "
+        "except v_A2 (0.2 m/s) and v_B2, drawn longer to show their directions"
+    )
+    tex = fig.scale_note(lambda n: f"${n}$", lambda t: t.replace("%", r"\%"))
+    assert "except $v_A2$ (0.2 m/s) and $v_B2$, drawn" in tex
+    assert Figure("x").caption == "arrows to scale with speed"
+
+
 def test_a_body_that_stops_has_no_arrow() -> None:
     """OCR MEI 2024: disc A stops. No arrow, however short the minimum makes arrows: the
     label v_A2 = 0, and the caption names no lengthened arrow."""

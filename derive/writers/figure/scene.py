@@ -335,8 +335,8 @@ def describe(
     title = "After the impact" if after else "Before the impact"
     specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
     own = scales(vel)
-    longer = tuple(
-        (a.name, speed_words(solution, a.name[2:], math.hypot(*vel[a.name[2:]]), known))
+    longer = tuple(  # named as the labels name them (a chain stage that calls A "B")
+        (relabel(a.name, p.labels), speed_words(solution, a.name[2:], math.hypot(*vel[a.name[2:]]), known))
         for a in more
         if isinstance(a, Arrow) and a.lengthened
     )
