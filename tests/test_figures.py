@@ -20,7 +20,8 @@ from pending_syntax import skip_if_pending
 import derive
 import derive.resources
 from derive.writers.figure import Arrow, Axis, Body, Figure, Surface, describe, setup_svg, setup_tikz, to_svg, to_tikz
-from derive.writers.figure.model import segments
+from derive.writers.figure.model import HEAD, segments
+from derive.writers.figure.scene import ARROW_MAX, ARROW_MIN
 
 SVG = "{http://www.w3.org/2000/svg}"
 A4_TEXT_WIDTH = 21.0 - 2 * 2.2  # cm: A4 less the templates' 2.2 cm margins (Letter: 17.2 cm)
@@ -58,18 +59,115 @@ def test_example_4c11_arrows_point_as_the_notes_say() -> None:
     assert same_direction(after[1], (8.40 / math.hypot(8.40, 9.15), -9.15 / math.hypot(8.40, 9.15)))
 
 
+def check_scale(figures: dict[str, Figure], speeds: dict[str, float], rel: float = 1e-6) -> set[str]:
+    """Arrows against their speeds (``speeds`` by name, ``figures`` by stage "1" and "2"):
+    one arrow per non-zero speed; the greatest speed ARROW_MAX long (in its own figure when
+    the figures have scales of their own); every other arrow speed x scale long, except
+    exactly those that would be under ARROW_MIN: drawn ARROW_MIN long, flagged, and named in
+    the caption. Returns the names of the lengthened arrows."""
+    arrows = {s.name: s for fig in figures.values() for s in fig.shapes if isinstance(s, Arrow)}
+    moving = {n: v for n, v in speeds.items() if v > 1e-9}
+    assert set(arrows) == set(moving)
+    top = {k: max((v for n, v in moving.items() if n[3] == k), default=0.0) for k in "12"}
+    own = min(top.values()) > 0 and min(top.values()) < max(top.values()) / 4
+    longer = set()
+    for name, speed in moving.items():
+        fig, arrow = figures[name[3]], arrows[name]
+        scale = ARROW_MAX / (top[name[3]] if own else max(top.values()))
+        if speed * scale < ARROW_MIN:
+            longer.add(name)
+            assert arrow.lengthened and arrow.length == pytest.approx(ARROW_MIN), name
+            assert re.search(rf"except .*\b{name}\b.*drawn longer", fig.caption), (name, fig.caption)
+        else:
+            assert not arrow.lengthened and arrow.length == pytest.approx(speed * scale, rel=rel), name
+            assert not re.search(rf"\b{name}\b", fig.caption), (name, fig.caption)
+    for k, fig in figures.items():
+        assert ("drawn longer" in fig.caption) == any(n[3] == k for n in longer), fig.caption
+    return longer
+
+
 def test_arrows_and_bodies_are_to_scale() -> None:
     """Example 4.C.11: arrow length / speed is one scale for all four velocities (the notes'
-    speeds: 5 and 15 m/s before; 3.05 e_t - 1.11 e_n and -9.15 e_t + 8.40 e_n after), and
-    the spheres are in the ratio of the radii the notes give, 75 mm to 48 mm."""
+    speeds: 5 and 15 m/s before; 3.05 e_t - 1.11 e_n and -9.15 e_t + 8.40 e_n after; the
+    least, v_A2, is 0.65 cm long, over ARROW_MIN: none is lengthened), and the spheres are
+    in the ratio of the radii the notes give, 75 mm to 48 mm."""
     sol = derive.solve(derive.load("notes-4c11-two-spheres"))
     speeds = {"v_A1": 5.0, "v_B1": 15.0, "v_A2": math.hypot(3.05, 1.11), "v_B2": math.hypot(9.15, 8.40)}
-    arrows = {s.name: s for after in (False, True) for s in describe(sol, after).shapes if isinstance(s, Arrow)}
-    assert set(arrows) == set(speeds)
-    scales = [arrows[name].length / speed for name, speed in speeds.items()]
-    assert max(scales) / min(scales) == pytest.approx(1.0, abs=0.01)  # the notes' figures are rounded to 3
+    figures = {"1": describe(sol), "2": describe(sol, after=True)}
+    assert check_scale(figures, speeds, rel=0.01) == set()  # the notes' figures are rounded to 3
+    assert figures["2"].caption == "arrows to scale with speed"
     bodies = {s.name: s.r for s in describe(sol).shapes if isinstance(s, Body)}
     assert bodies["A"] / bodies["B"] == pytest.approx(75 / 48)
+
+
+def test_a_slow_arrow_is_drawn_longer_and_the_caption_says_so() -> None:
+    """OCR MEI 2023 Q2: after the impact A moves at 0.2 m/s, back or on; to scale (6 m/s is
+    3 cm) its arrow would be 0.1 cm, its head shrunk to nothing, the two cases alike. Drawn
+    ARROW_MIN long with a full head, it points back (-n) in one figure and on (+n) in the
+    other, and the caption names it with its speed."""
+    drawn = {}
+    for case, sign in (("backward", -1), ("forward", 1)):
+        sol = derive.solve(derive.load(f"ocr-mei-fmm-2023-a-speed-0p2-{case}"))
+        before, after = describe(sol), describe(sol, after=True)
+        v_B2 = 3.55 if case == "backward" else 3.45  # the mark scheme's
+        longer = check_scale({"1": before, "2": after}, {"v_A1": 6, "v_B1": 2, "v_A2": 0.2, "v_B2": v_B2})
+        assert longer == {"v_A2"}
+        assert "except v_A2 (0.2 m/s), drawn longer to show its direction" in after.caption
+        (a2,) = (s for s in after.shapes if isinstance(s, Arrow) and s.name == "v_A2")
+        assert a2.length >= ARROW_MIN and (a2.x2 - a2.x1) * sign > 0 and a2.y1 == pytest.approx(a2.y2)
+        svg = ET.fromstring(to_svg(after))  # the drawn arrow: its direction, and a full-size head
+        direction = arrows_in_svg(to_svg(after))[0]
+        head = next(g for g in svg.iter(f"{SVG}g") if g.get("class") == "velocity").find(f"{SVG}polygon")
+        (tx, ty), *wings = [tuple(map(float, p.split(","))) for p in head.get("points").split()]
+        base = ((wings[0][0] + wings[1][0]) / 2, (wings[0][1] + wings[1][1]) / 2)
+        assert math.hypot(tx - base[0], ty - base[1]) == pytest.approx(HEAD * 40, abs=0.2)
+        drawn[case] = direction
+        page = {fmt: derive.render(sol, fmt) for fmt in ("md", "tex", "html")}
+        assert "drawn longer to show its direction" in page["md"] and "<i>v</i><sub>A2</sub> (0.2 m/s)" in page["md"]
+        assert r"except $v_{A2}$ (0.2 m/s), drawn longer" in page["tex"]
+        assert "After the impact: arrows to scale with speed, except <i>v</i><sub>A2</sub>" in page["html"]
+    assert same_direction(drawn["backward"], (-1, 0)) and same_direction(drawn["forward"], (1, 0))
+    plain = {fmt: derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), fmt) for fmt in ("md", "tex")}
+    assert all("drawn longer" not in text for text in plain.values())
+
+
+def test_the_caption_names_each_lengthened_arrow_in_the_page_s_notation() -> None:
+    """One arrow or two, a speed in numbers or a symbol's (no number), each page's names."""
+    fig = Figure("After the impact", own_scale=True, lengthened=(("v_A2", "0.2 m/s"), ("v_B2", "")))
+    assert fig.caption == (
+        "arrows to scale with speed, a scale of their own in each figure, "
+        "except v_A2 (0.2 m/s) and v_B2, drawn longer to show their directions"
+    )
+    tex = fig.scale_note(lambda n: f"${n}$", lambda t: t.replace("%", r"\%"))
+    assert "except $v_A2$ (0.2 m/s) and $v_B2$, drawn" in tex
+    assert Figure("x").caption == "arrows to scale with speed"
+
+
+def test_a_body_that_stops_has_no_arrow() -> None:
+    """OCR MEI 2024: disc A stops. No arrow, however short the minimum makes arrows: the
+    label v_A2 = 0, and the caption names no lengthened arrow."""
+    after = describe(derive.solve(derive.load("ocr-mei-fmm-2024-disc-a-stops")), after=True)
+    assert [s.name for s in after.shapes if isinstance(s, Arrow)] == ["v_B2"]
+    assert any(lab.text == "v_A2" and lab.tail == " = 0" for lab in after.labels)
+    assert "v_A2" not in after.caption
+
+
+def test_a_velocity_the_problem_asks_for_is_drawn_at_its_value() -> None:
+    """A given left unknown ("?") is drawn at the value the solution finds, not as 1.
+    OCR MEI 2024: A arrives at v_A1n = 9 m/s, B at 2 m/s. Edexcel M2 2017: P and Q move in
+    opposite directions, v_A1 = 8v and v_B1 = -4.5v. Edexcel M4 2018: alpha = 72.98 deg
+    from the wall."""
+    disc = derive.solve(derive.load("ocr-mei-fmm-2024-disc-a-stops"))
+    figures = {"1": describe(disc), "2": describe(disc, after=True)}
+    speeds = {"v_A1": 9.0, "v_B1": 2.0, "v_A2": 0.0, "v_B2": math.hypot(6.4, math.sqrt(3))}
+    assert check_scale(figures, speeds) == set()
+    pq = describe(derive.solve(derive.load("edexcel-m2-2017-january-q5-both-reverse-find-speeds-before")))
+    a1, b1 = (s for s in pq.shapes if isinstance(s, Arrow))
+    assert a1.x2 > a1.x1 and b1.x2 < b1.x1 and a1.length / b1.length == pytest.approx(8 / 4.5)
+    wall = describe(derive.solve(derive.load("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke")))
+    (ball,) = (s for s in wall.shapes if isinstance(s, Arrow))
+    angle = math.degrees(math.atan2(abs(ball.x2 - ball.x1), abs(ball.y2 - ball.y1)))  # from the wall (t is up)
+    assert angle == pytest.approx(72.976, abs=0.01)
 
 
 def test_a_bullet_that_lodges_gets_a_scale_per_figure() -> None:
@@ -222,23 +320,23 @@ def test_no_label_overlaps_in_500_generated_figures() -> None:
 
 def test_generated_arrows_are_to_scale() -> None:
     """Length / speed is one number in each figure, and the same before and after unless
-    one figure's greatest speed is under a quarter of the other's (then each has its own)."""
+    one figure's greatest speed is under a quarter of the other's (then each has its own);
+    an arrow is drawn longer, and named in the caption, exactly when it would be under
+    ARROW_MIN (:func:`check_scale`)."""
+    longer = 0
     for seed in range(0, figure_cases.CASES, 5):
         c = figure_cases.case(seed)
         sol = figure_cases.solution(c)
-        arrows = {s.name: s for after in (False, True) for s in describe(sol, after).shapes if isinstance(s, Arrow)}
+        figures = {"1": describe(sol), "2": describe(sol, after=True)}
         out = figure_cases.outcome(c)
         speeds = {"v_A1": math.hypot(*c.A1), "v_B1": math.hypot(*c.B1), "v_A2": math.hypot(out["A2n"], out["A2t"])}
         if not c.fixed:
             speeds["v_B2"] = math.hypot(out["B2n"], out["B2t"])
-        moving = {n: v for n, v in speeds.items() if v > 1e-9}
-        assert set(moving) == set(arrows), seed
-        scale = {k: [arrows[n].length / v for n, v in moving.items() if n[3] == k] for k in "12"}
-        for k in "12":
-            assert max(scale[k]) == pytest.approx(min(scale[k])), seed
-        top = [max((v for n, v in moving.items() if n[3] == k), default=0.0) for k in "12"]
-        if min(top) > 0 and min(top) >= max(top) / 4:
-            assert scale["1"][0] == pytest.approx(scale["2"][0]), seed
+        try:
+            longer += len(check_scale(figures, speeds))
+        except AssertionError as exc:
+            raise AssertionError(f"case {seed}") from exc
+    assert longer >= 5  # the generated cases do reach the minimum
 
 
 def test_figures_fit_the_page() -> None:

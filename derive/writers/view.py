@@ -76,6 +76,17 @@ def environment(kind: str) -> jinja2.Environment:
     return env
 
 
+def _sentence(text: str) -> str:
+    """A caption standing alone under its figure: its first letter a capital."""
+    return text[:1].upper() + text[1:]
+
+
+def _html_name(name: str) -> str:
+    """A symbol's name in HTML: ``v_A2`` -> ``<i>v</i><sub>A2</sub>``."""
+    base, _, sub = name.partition("_")
+    return f"<i>{escape.html_text(base)}</i>" + (f"<sub>{escape.html_text(sub)}</sub>" if sub else "")
+
+
 @jinja2.pass_context
 def _markdown_text(context: jinja2.runtime.Context, text: str) -> str:
     """User text as Markdown; ``^`` escaped too where the page is for pandoc (``escape_caret``)."""
@@ -298,6 +309,12 @@ def view(
             entry["figure_svg"] = figure.to_svg(fig)
             entry["figure_tikz"] = figure.to_tikz(fig)
             entry["figure_caption"] = f"{fig.title}: {fig.caption}"
+            html_note = fig.scale_note(_html_name, escape.html_text)
+            entry["figure_caption_html"] = escape.html_text(f"{fig.title}: ") + html_note
+            # Markdown and LaTeX print no caption, but say which arrows are drawn longer than to scale
+            entry["figure_note_html"] = _sentence(html_note) if fig.lengthened else ""
+            tex_note = fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex)
+            entry["figure_note_tex"] = _sentence(tex_note) if fig.lengthened else ""
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 Point = tuple[float, float]
@@ -55,17 +56,22 @@ class Axis:
 
 @dataclass(frozen=True)
 class Arrow:
-    """A velocity, to scale with speed: from (x1, y1) to its head at (x2, y2)."""
+    """A velocity, to scale with speed: from (x1, y1) to its head at (x2, y2).
+
+    ``lengthened``: the speed to scale would be shorter than the least length an arrow
+    is drawn at (its direction unreadable), so it is drawn at that length instead.
+    """
 
     x1: float
     y1: float
     x2: float
     y2: float
     name: str
+    lengthened: bool = False
 
     @property
     def length(self) -> float:
-        """The arrow's length (the speed times the figure's scale)."""
+        """The arrow's length (the speed times the figure's scale, unless ``lengthened``)."""
         return math.hypot(self.x2 - self.x1, self.y2 - self.y1)
 
 
@@ -119,13 +125,36 @@ Shape = Body | Surface | Axis | Arrow | Arc | Guide
 
 @dataclass(frozen=True)
 class Figure:
-    """Shapes and labels of one figure; ``title`` names it (before or after the impact),
-    ``caption`` says how it is drawn (to what scale)."""
+    """Shapes and labels of one figure; ``title`` names it (before or after the impact).
+
+    How it is drawn, for its caption: ``own_scale`` when the figures before and after
+    each have a scale of their own; ``lengthened`` the arrows drawn longer than to
+    scale, each as (name, speed in words, "" when the speed is a symbol's).
+    """
 
     title: str
     shapes: tuple[Shape, ...] = ()
     labels: tuple[Label, ...] = field(default_factory=tuple)
-    caption: str = ""
+    own_scale: bool = False
+    lengthened: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def caption(self) -> str:
+        """How the figure is drawn, in plain text: "arrows to scale with speed, ..."."""
+        return self.scale_note()
+
+    def scale_note(self, name: Callable[[str], str] = str, text: Callable[[str], str] = str) -> str:
+        """The caption, with ``name`` writing a velocity's name (``v_A2``) and ``text``
+        escaping the words around it, for the page the caption goes on."""
+        out = text("arrows to scale with speed")
+        if self.own_scale:
+            out += text(", a scale of their own in each figure")
+        if self.lengthened:
+            each = [name(n) + (text(f" ({speed})") if speed else "") for n, speed in self.lengthened]
+            listed = each[0] if len(each) == 1 else ", ".join(each[:-1]) + text(" and ") + each[-1]
+            whose = "its direction" if len(each) == 1 else "their directions"
+            out += text(", except ") + listed + text(f", drawn longer to show {whose}")
+        return out
 
     def bounds(self, pad: float = 0.25) -> tuple[float, float, float, float]:
         """(left, bottom, right, top) of everything drawn, with ``pad`` around."""

@@ -12,16 +12,25 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
+from decimal import Decimal
+
+import sympy
 
 from derive.physics.impact import independent_map
+from derive.physics.results import working_unit
 from derive.problem import Problem
 from derive.steps.model import Solution
 from derive.symbols import relabel
 from derive.writers.figure.frame import Frame, chain_falls, frame, number
 from derive.writers.figure.layout import AROUND, Spec, place
-from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
+from derive.writers.figure.model import HEAD, Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
 
 ARROW_MAX = 3.0  # cm: the arrow of the greatest speed, before or after
+#: cm: the least length an arrow is drawn at, two arrowheads: the head at full size (it
+#: shrinks below HEAD / 0.6) and a shaft as long as the head, so that the direction reads
+#: at a glance. A slower speed's arrow is drawn this long, not to scale, and the caption
+#: names it.
+ARROW_MIN = 2 * HEAD
 R_MAX = 1.3  # cm: the radius of the larger body
 ARC_R = 0.75  # cm: the radius of an angle's arc
 #: The order labels are placed in: those with the least room first.
@@ -45,37 +54,66 @@ def radii(problem: Problem) -> tuple[float, float]:
     return R_MAX * a / big, R_MAX * b / big
 
 
-def _result(solution: Solution, name: str, values: Mapping) -> float | None:
+def _result(solution: Solution, name: str) -> object | None:
+    """A velocity component after the impact: found, or given (an inverse problem)."""
     r = solution.results.get(name)
     if r is not None:
-        return number(r.value if r.value is not None else r.partial, values)
-    p = solution.problem
-    for g in p.givens:  # a velocity after the impact given (an inverse problem)
+        return r.value if r.value is not None else r.partial
+    for g in solution.problem.givens:
         if g.name == name:
-            return number(g.value if g.value is not None else g.symbol, values)
+            return g.value if g.value is not None else g.symbol
     return None
 
 
-def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
-    """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
+def _components(solution: Solution) -> dict[str, tuple[object, object]]:
+    """(n, t) components of each moving body's velocity as expressions: ``A1``, ``B1``,
+    ``A2``, ``B2``."""
     p = solution.problem
-    known = {**solution.values, **values}
     ind = independent_map(p)
-    out: dict[str, tuple[float, float]] = {}
+    out: dict[str, tuple[object, object]] = {}
     for b in "AB":
         if b == "B" and p.fixed_B:
             continue
         motion = p.motion_A if b == "A" else p.motion_B
-        n, t = number(motion.n.xreplace(ind), known), number(motion.t.xreplace(ind), known)
-        if n is not None and t is not None:
-            out[b + "1"] = (n, t)
+        out[b + "1"] = (motion.n.xreplace(ind), motion.t.xreplace(ind))
         if p.oblique:
-            n2, t2 = _result(solution, f"v_{b}2n", known), _result(solution, f"v_{b}2t", known)
+            out[b + "2"] = (_result(solution, f"v_{b}2n"), _result(solution, f"v_{b}2t"))
         else:
-            n2, t2 = _result(solution, f"v_{b}2", known), 0.0
-        if n2 is not None and t2 is not None:
-            out[b + "2"] = (n2, t2)
+            out[b + "2"] = (_result(solution, f"v_{b}2"), 0.0)
     return out
+
+
+def _known(solution: Solution, values: Mapping) -> dict:
+    """Every number the figure may use: the solution's, ``values``, and the givens the
+    problem left unknown and the solution found (v_A1n = "?" is 9 m/s, not 1; an angle's
+    result is in degrees, its symbol in radians)."""
+    found = {}
+    for g in solution.problem.givens:
+        r = solution.results.get(g.name) if g.unknown else None
+        if r is not None:
+            value = r.value if r.value is not None else r.partial
+            found[g.symbol] = value * sympy.pi / 180 if g.unit == "deg" else value
+    return {**found, **solution.values, **values}
+
+
+def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
+    """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
+    known = _known(solution, values)
+    out: dict[str, tuple[float, float]] = {}
+    for key, (en, et) in _components(solution).items():
+        n, t = number(en, known), number(et, known)
+        if n is not None and t is not None:
+            out[key] = (n, t)
+    return out
+
+
+def speed_words(solution: Solution, key: str, speed: float, values: Mapping) -> str:
+    """A drawn speed in words for a caption ("0.2 m/s"), or "" when it is a symbol's
+    (drawn as if each symbol were 1, so its number means nothing to the reader)."""
+    known = _known(solution, values)
+    if any(sympy.sympify(c).xreplace(known).free_symbols for c in _components(solution)[key] if c is not None):
+        return ""
+    return f"{Decimal(f'{speed:.3g}').normalize():f} {working_unit(solution.problem, 'velocity')}"
 
 
 def _perps(ux: float, uy: float, away: Point) -> tuple[Point, Point]:
@@ -151,10 +189,12 @@ def _arrow(
 ) -> tuple[Arrow, int]:
     """A velocity arrow on the ray through the body's centre, starting at its outline: after
     the impact leaving it ahead (side +1), before it arriving from behind (side -1); the
-    other way round when that side is taken by the other body or the wall."""
-    r0, r1 = body.r + 0.06, body.r + 0.06 + length
-    ahead = Arrow(body.x + r0 * d[0], body.y + r0 * d[1], body.x + r1 * d[0], body.y + r1 * d[1], name)
-    behind = Arrow(body.x - r1 * d[0], body.y - r1 * d[1], body.x - r0 * d[0], body.y - r0 * d[1], name)
+    other way round when that side is taken by the other body or the wall. A ``length``
+    under :data:`ARROW_MIN` is drawn at it, the arrow marked ``lengthened``."""
+    longer = length < ARROW_MIN
+    r0, r1 = body.r + 0.06, body.r + 0.06 + max(length, ARROW_MIN)
+    ahead = Arrow(body.x + r0 * d[0], body.y + r0 * d[1], body.x + r1 * d[0], body.y + r1 * d[1], name, longer)
+    behind = Arrow(body.x - r1 * d[0], body.y - r1 * d[1], body.x - r0 * d[0], body.y - r0 * d[1], name, longer)
     first, second = ((ahead, 1), (behind, -1)) if after else ((behind, -1), (ahead, 1))
     return first if room(first[0]) or not room(second[0]) else second
 
@@ -201,7 +241,8 @@ def scales(vel: dict[str, tuple[float, float]]) -> dict[str, float]:
 def _motion_shapes(
     solution: Solution, fr: Frame, bodies: dict[str, Body], vel: dict[str, tuple[float, float]], after: bool
 ) -> tuple[list[Shape], list[Spec]]:
-    """Velocity arrows to scale, the angles of their directions, "= 0" for a body at rest."""
+    """Velocity arrows to scale (none shorter than :data:`ARROW_MIN`), the angles of their
+    directions, "= 0" for a body at rest."""
     p = solution.problem
     stage = "2" if after else "1"
     scale = scales(vel)[stage]
@@ -294,5 +335,9 @@ def describe(
     title = "After the impact" if after else "Before the impact"
     specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
     own = scales(vel)
-    note = "arrows to scale with speed" + ("" if own["1"] == own["2"] else ", a scale of their own in each figure")
-    return Figure(title, tuple(shapes), place(specs, shapes), caption=note)
+    longer = tuple(  # named as the labels name them (a chain stage that calls A "B")
+        (relabel(a.name, p.labels), speed_words(solution, a.name[2:], math.hypot(*vel[a.name[2:]]), known))
+        for a in more
+        if isinstance(a, Arrow) and a.lengthened
+    )
+    return Figure(title, tuple(shapes), place(specs, shapes), own_scale=own["1"] != own["2"], lengthened=longer)
