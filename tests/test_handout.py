@@ -5,6 +5,7 @@ The PDF tests need TeX Live with latexmk (in CI a missing latexmk fails instead 
 
 from __future__ import annotations
 
+import re
 import shutil
 import subprocess
 from functools import cache
@@ -116,7 +117,31 @@ def test_markdown_has_each_title_and_no_answer_in_problems_mode() -> None:
     assert "ANSWER" not in doc
     assert "\\boxed" not in doc
     assert doc.count("**Find.**") == 3
-    assert "**Solution.**" not in doc and "<svg" not in doc
+    assert "**Solution.**" not in doc
+    # the set-up figure, before the impact only (+n shown; no velocity after it)
+    figures = re.findall(r"<svg.*?</svg>", doc, re.S)
+    assert len(figures) == 3
+    assert all("Before the impact" in f and ">A2<" not in f and ">B2<" not in f for f in figures)
+
+
+def test_a_students_sheet_has_no_source_line() -> None:
+    """Issue 15: most sources quote the published answers (AQA's "v_B = 3.4, v_A = -0.6")."""
+    names = ["notes-4c11-two-spheres", "chain-aqa-m3-2007-collide-again"]
+    doc, _ = build_handout(names, title="Sheet", theory=False, mode="problems", fmt="md")
+    assert "Source" not in doc and "3.4, v" not in doc
+    key, _ = build_handout(names, title="Key", theory=False, mode="answers", fmt="md")
+    assert key.count("*Source:") == 2  # the key keeps its citations
+
+
+def test_a_chain_in_solutions_mode_has_its_givens_carried_results_and_answer() -> None:
+    """Issue 15: the handout dropped each impact stage's givens, the results it carries on
+    and the chain's final answers (AQA 2007 Q4: they collide again)."""
+    doc, _ = build_handout(["chain-aqa-m3-2007-collide-again"], title="S", theory=False, mode="solutions", fmt="md")
+    assert r"Given: $m_{A} = 0.3\ \mathrm{kg}$" in doc
+    assert r"Carried to the next stages: $u_{A} = v_{A2} = -0.600\ \mathrm{m/s}$" in doc
+    assert r"Carried to the next stages: $w_{B} = v_{B2} = -2.38\ \mathrm{m/s}$" in doc
+    tail = doc[doc.index(") Answer") :]
+    assert r"\boxed{\text{Do they collide again? yes}}" in tail and "ANSWER" in tail
 
 
 def test_answers_mode_has_the_boxed_lines_of_stage_4_only() -> None:

@@ -68,32 +68,47 @@ def _problem_view(name: str | Path, mode: str, digits: int | None, plot: bool = 
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = solve(load(name))
     if solution.is_chain:
-        return _chain_view(solution, mode, digits)
-    data = view(solution, digits, figures=mode == "solutions", plot=plot and mode == "solutions")
-    data["answers"] = [
-        line
-        for stage in data["stages"]
-        if stage["number"] == 4
-        for block in stage["blocks"]
-        for line in block["lines"]
-        if line["boxed"]
-    ]
+        data = _chain_view(solution, mode, digits)
+    else:
+        data = view(solution, digits, figures=mode != "answers", plot=plot and mode == "solutions")
+        data["answers"] = [
+            line
+            for stage in data["stages"]
+            if stage["number"] == 4
+            for block in stage["blocks"]
+            for line in block["lines"]
+            if line["boxed"]
+        ]
+    if mode == "problems":
+        # a student's sheet: the set-up figure (before the impact: which way +n points), and
+        # no Source line (citations quote the published answers)
+        data["setup_svg"] = next((st["figure_svg"] for st in data["stages"] if st.get("figure_svg")), "")
+        data["setup_tikz"] = next((st["figure_tikz"] for st in data["stages"] if st.get("figure_tikz")), "")
+        data["source"], data["source_parts"] = None, []
     return data
 
 
 def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
     """A chain in the shape of one problem: its stages in order (an impact's own
-    stages numbered k.1, k.2, ...), its boxed answers."""
+    stages numbered k.1, k.2, ..., with the impact's givens first and the results it
+    carries on last), then its boxed answers as a last stage."""
     from derive.writers.view import chain_view
 
-    data = chain_view(solution, digits, figures=mode == "solutions")
+    data = chain_view(solution, digits, figures=mode != "answers")
     stages = []
     for st in data["stages"]:
         if st["impact"]:
-            for sub in st["stages"]:
-                stages.append(
-                    {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
-                )
+            subs = [
+                {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
+                for sub in st["stages"]
+            ]
+            givens = _sentence("Given: ", [g["latex"] for g in st["givens"]], ", ")
+            carried = _sentence("Carried to the next stages: ", st["carried"], "; ")
+            if subs:
+                subs[0] = {**subs[0], "blocks": [givens, *subs[0]["blocks"]]}
+                if st["carried"]:
+                    subs[-1] = {**subs[-1], "blocks": [*subs[-1]["blocks"], carried]}
+            stages += subs
         else:
             stages.append(
                 {
@@ -104,6 +119,17 @@ def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
                     "figure_tikz": "",
                 }
             )
+    if data["answers"]:
+        number = len(data["stages"]) + 1
+        stages.append(
+            {
+                "number": number,
+                "title": "Answer",
+                "blocks": [{"text": [], "lines": data["answers"]}],
+                "figure_svg": "",
+                "figure_tikz": "",
+            }
+        )
     return {
         **data,
         "find": [("text", data["find"])],
@@ -111,6 +137,16 @@ def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
         "kind": "chain",
         "system": solution.problem.system,
     }
+
+
+def _sentence(lead: str, maths: list[str], between: str) -> dict[str, Any]:
+    """A block of one sentence: ``lead`` then each piece of mathematics."""
+    text: list[tuple[str, str]] = [("text", lead)]
+    for i, m in enumerate(maths):
+        text += [("text", between)] if i else []
+        text.append(("math", m))
+    text.append(("text", "."))
+    return {"text": text, "lines": []}
 
 
 def build_handout(
