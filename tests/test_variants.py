@@ -150,8 +150,27 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     assert len(csv_lines) == 7 and csv_lines[0].startswith("variant,")
     student = (out / "variant-01-problem.md").read_text()
     assert "ANSWER" not in student and "**Find.**" in student
+    assert "Source" not in student and student.endswith(".\n")  # no citation (it may quote answers)
     again = tmp_path / "again"
     assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
     assert (again / "key.json").read_text() == (out / "key.json").read_text()
     r = cli("variants", "notes-4c12-cue-ball", "--count", "2", "-o", str(tmp_path / "x"))
     assert r.code == 2 and "[vary]" in r.err
+
+
+def test_cli_writes_a_latex_statement_beside_each_latex_solution(cli, tmp_path: Path) -> None:
+    """Issue 15: ``variants -f tex`` (and pdf) wrote only the worked solutions."""
+    out = tmp_path / "hw"
+    r = cli("variants", "notes-4c11-two-spheres", "--count", "2", "--seed", "4", "-f", "tex", "-o", str(out))
+    assert r.code == 0, r.err
+    assert sorted(p.name for p in out.glob("*.tex")) == [
+        "variant-01-problem.tex",
+        "variant-01.tex",
+        "variant-02-problem.tex",
+        "variant-02.tex",
+    ]
+    sheet = (out / "variant-01-problem.tex").read_text(encoding="utf-8")
+    full = (out / "variant-01.tex").read_text(encoding="utf-8")
+    assert r"\textbf{Find.}" in sheet and sheet.rstrip().endswith(r"\end{document}")
+    assert r"\boxed" not in sheet and "Kinetics" not in sheet and "Source:" not in sheet
+    assert r"\boxed" in full and "Source:" in full

@@ -345,10 +345,22 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
     return out
 
 
+#: The line a LaTeX page has where its solution starts (templates/problem-body.tex.j2).
+TEX_SOLUTION = "% derive: the solution\n"
+
+
 def statement_only(page: str) -> str:
-    """The part of a worked page a student gets: up to the solution."""
+    """The part of a worked page a student gets: up to the solution (Markdown, or a
+    LaTeX document, which is then closed), without the Source line (citations quote
+    the published answers)."""
+    if TEX_SOLUTION in page:
+        head = page[: page.index(TEX_SOLUTION)]
+        head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
+        return head.rstrip() + "\n\n\\end{document}\n"
     cut = page.find("**Solution.**")
-    return page if cut < 0 else page[:cut].rstrip() + "\n"
+    head = page if cut < 0 else page[:cut]
+    head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
+    return head.rstrip() + "\n"
 
 
 def iterate(
@@ -465,8 +477,10 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
     else:
         tex = fill(compiled, v, "tex", digits)
         if fmt == "tex":
+            (folder / f"{stem}-problem.tex").write_text(statement_only(tex), encoding="utf-8")
             (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
         else:
             from derive.writers.pdf import build_pdf
 
+            (folder / f"{stem}-problem.pdf").write_bytes(build_pdf(statement_only(tex)))
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
