@@ -19,7 +19,7 @@ from decimal import Decimal
 import sympy
 
 from derive.errors import InputError
-from derive.numbers import format_fixed, format_number, places_that_add_up
+from derive.numbers import format_number, format_places, places_that_add_up
 from derive.physics.impact import independent_map
 from derive.problem import Given, Problem
 from derive.problem.units import plain_unit
@@ -239,8 +239,8 @@ def _number(x: float, digits: int | None, extra: int, integers: bool, places: in
                     break  # exact, but more figures than an intermediate shows: 857.3, not 857.25
                 return str(exact) if k else str(round(x))
     d = Decimal(repr(float(x)))
-    if places is not None:
-        return format_fixed(d, places)
+    if places is not None:  # the block's places, never more figures than the rule (-121.2, not -121.22)
+        return format_places(d, places, digits, extra)
     text = format_number(d, digits, extra=extra)
     if "e" in text:
         mant, exp = text.split("e")

@@ -21,8 +21,8 @@ from derive.numbers import (
     as_written,
     exactify,
     floatify,
-    format_fixed,
     format_number,
+    format_places,
     places_that_add_up,
     short_decimal,
     structural,
@@ -64,7 +64,8 @@ class Style:
     """How numbers print: the answer's figures (None: textbook rule) and the extra
     figures intermediates carry; ``values`` and ``angles`` feed substitution lines;
     ``strike`` False prints a cancelled symbol without its stroke (for converters
-    that have no ``\\cancel``)."""
+    that have no ``\\cancel``); ``derived`` symbols have numbers worked out, not
+    written in the file (a chain's carried values), rounded where long."""
 
     digits: int | None
     extra: int = 1
@@ -79,6 +80,7 @@ class Style:
     decimal: frozenset[sympy.Symbol] = frozenset()
     letters: frozenset[sympy.Symbol] = frozenset()
     letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
+    derived: frozenset[sympy.Symbol] = frozenset()
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -94,13 +96,22 @@ def power_latex(text: str) -> str:
     return text
 
 
-def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
-    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded."""
+def exact_latex(value: sympy.Expr, digits: int | None, extra: int, *, derived: bool = False) -> str:
+    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded.
+
+    A ``derived`` number was worked out, not written (a value carried from an earlier
+    stage of a chain): exact and short, it is still rounded where it has more figures
+    than an intermediate shows (4.538, not the 4.5375 of 8.25 · 0.55)."""
     if value.is_Integer and abs(value) < 10**6:
         return str(value)
-    if short_decimal(value):
+    if short_decimal(value) and not (derived and _longer(value, digits, extra)):
         return power_latex(as_written(value))
     return number_latex(value, digits, extra)
+
+
+def _longer(value: sympy.Expr, digits: int | None, extra: int) -> bool:
+    """True when ``value`` written out exactly shows more figures than ``digits`` (+``extra``)."""
+    return _figures(to_decimal(value)) > _figures(Decimal(format_number(value, digits, extra=extra)))
 
 
 def _as_angle(expr: sympy.Expr) -> sympy.Expr:
@@ -249,7 +260,7 @@ class StepPrinter(LatexPrinter):
 
     def _print_Float(self, expr: sympy.Float) -> str:
         if self._decimals is not None:
-            return format_fixed(expr, self._decimals)
+            return power_latex(format_places(expr, self._decimals, self._digits, self._extra))
         if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
             text = format_number(expr, self._digits, extra=self._extra)
             mantissa, _, power = text.partition("e")
@@ -433,11 +444,12 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
         if s not in style.values:
             continue
         v = style.values[s]
+        derived = s in style.derived
         if s in style.angles:
             deg = v * 180 / sympy.pi
-            out[s] = exact_latex(deg, digits, extra) + r"^\circ"
+            out[s] = exact_latex(deg, digits, extra, derived=derived) + r"^\circ"
         else:
-            out[s] = exact_latex(v, digits, extra)
+            out[s] = exact_latex(v, digits, extra, derived=derived)
     return out
 
 
