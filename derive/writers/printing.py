@@ -9,6 +9,7 @@ equations were written. Renderers call :func:`latex_eqn` and
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from decimal import Decimal
@@ -711,23 +712,68 @@ def unit_latex(eqn: Eqn, style: Style) -> str:
     return latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit)
 
 
-def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, str]]]:
-    """Each side's printed terms; a side printed the same as the one before it is shown
-    once (v_2 = -u, not v_2 = -u = -u)."""
-    printed: list[list[tuple[str, str]]] = []
-    for side in eqn.sides:
-        terms = side_terms(side, style, extra, _struck(eqn, style))
-        if not printed or join_terms(terms) != join_terms(printed[-1]):
-            printed.append(terms)
+#: Around an optional side of a compiled variant page (with the " = " before it), for
+#: the variant to keep where its numbers add up to the total after it (:func:`adds_up`).
+SIDE_BEGIN, SIDE_END = "%%derive-side%", "%%derive-side-end%"
+
+_NUMBER = re.compile(r"(?:\\left\()?(-?\d+(?:\.\d+)?)(?: \\times 10\^\{(-?\d+)\})?(?:\\right\))?")
+
+
+def printed_number(text: str) -> Decimal | None:
+    """The number a printed term shows (``-5.926``, ``1.6 \\times 10^{-3}``, ``\\left(-3\\right)``);
+    None for anything else (letters, a product)."""
+    m = _NUMBER.fullmatch(text.strip())
+    if m is None:
+        return None
+    return Decimal(m.group(1)).scaleb(int(m.group(2) or 0))
+
+
+def adds_up(terms: str, total: str) -> bool:
+    """True when the printed sum ``terms`` (``-5.926 + 15.21``), added as written, gives
+    the printed ``total`` to the total's last figure, as a reader checks it; True also
+    where a term or the total is not a plain number (nothing to add)."""
+    parts = re.split(r" ([+-]) ", terms.strip())
+    value = printed_number(parts[0])
+    shown = printed_number(total)
+    if value is None or shown is None:
+        return True
+    for sign, text in zip(parts[1::2], parts[2::2], strict=True):
+        term = printed_number(text)
+        if term is None:
+            return True
+        value += term if sign == "+" else -term
+    m = _NUMBER.fullmatch(total.strip())
+    assert m is not None
+    places = len(m.group(1).partition(".")[2]) - int(m.group(2) or 0)
+    return abs(value - shown) <= Decimal(1).scaleb(-places) / 2
+
+
+def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[tuple[list[tuple[str, str]], bool]]:
+    """Each side's printed terms, and whether a variant's page decides to keep it; a side
+    printed the same as the one before it is shown once (v_2 = -u, not v_2 = -u = -u). An
+    optional side whose terms do not add up to the total after it is left out."""
+    texts = [side_terms(side, style, extra, _struck(eqn, style)) for side in eqn.sides]
+    printed: list[tuple[list[tuple[str, str]], bool]] = []
+    for side, terms in zip(eqn.sides, texts, strict=True):
+        open_ = side.optional and style.slots is not None
+        if side.optional and not open_ and not adds_up(join_terms(terms), join_terms(texts[-1])):
+            continue
+        if not printed or join_terms(terms) != join_terms(printed[-1][0]):
+            printed.append((terms, open_))
     return printed
 
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    texts = [join_terms(terms) for terms in _printed_sides(eqn, style, extra)]
+    printed = _printed_sides(eqn, style, extra)
+    texts = [join_terms(terms) for terms, _ in printed]
     if _line_unit(eqn, style)[1]:
         texts[-1] = r"\left(" + texts[-1] + r"\right)"
-    body = " = ".join(texts) + unit_latex(eqn, style)
+    body = ""
+    for i, (text, (_, open_)) in enumerate(zip(texts, printed, strict=True)):
+        piece = (" = " if i else "") + text
+        body += SIDE_BEGIN + piece + SIDE_END if open_ else piece
+    body += unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
@@ -764,7 +810,7 @@ def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: fl
     One side per row after the first (``T_2 = a``, ``= b``, ``= c``); a side still too
     wide is broken before one of its own terms' signs, never inside a term.
     """
-    sides = _printed_sides(eqn, style, extra)
+    sides = [terms for terms, _ in _printed_sides(eqn, style, extra)]
     if len(sides) < 2:
         return ()
     unit = unit_latex(eqn, style)
