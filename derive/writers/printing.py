@@ -631,8 +631,16 @@ def _slot_term(
     coeff, rest = term.as_independent(*others, as_Add=False)
     if not (coeff.free_symbols & style.varied):
         return None
-    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
     printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True)
+    if first and isinstance(coeff, sympy.Add) and all(a.free_symbols <= style.varied for a in coeff.args):
+        # a sum of coefficients stays a sum, v_A2n (12 + 6) as the notes write v_A2n (20 + 5):
+        # one number there would read v_A2n = 2.25 + 0, a velocity without its unit, where it is 1
+        parts = [
+            style.slots.token(a, ("lead" if i == 0 else "signed") + ":" + kind, digits, ext, style.block)
+            for i, a in enumerate(coeff.args)
+        ]
+        return printer.doprint(rest) + r" \left(" + "".join(parts) + r"\right)"
+    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
     return token + " " + printer.doprint(rest)
 
 
