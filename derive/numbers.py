@@ -97,6 +97,21 @@ def format_fixed(value: sympy.Expr | Decimal, decimals: int) -> str:
     return format(r, "f")
 
 
+def shown_figures(text: str) -> int:
+    """Significant figures a number written as ``text`` shows (trailing zeros count:
+    4.500 shows four, 0.0270 three)."""
+    return len(Decimal(text).as_tuple().digits)
+
+
+def format_places(value: sympy.Expr | Decimal, decimals: int, digits: int | None, extra: int) -> str:
+    """``value`` at ``decimals`` places after the point (the places a block's sums share),
+    unless that shows more figures than the rule lets the number show (-121.22 where an
+    intermediate shows four): then at the rule's figures (-121.2)."""
+    fixed = format_fixed(value, decimals)
+    ruled = format_number(value, digits, extra=extra)
+    return ruled if shown_figures(fixed) > shown_figures(ruled) else fixed
+
+
 def decimals_of(text: str) -> int:
     """Places after the point in a plain-notation number string."""
     return len(text.split(".")[1]) if "." in text else 0

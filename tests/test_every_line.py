@@ -6,9 +6,9 @@ homework variants drawn from each ``[vary]`` table (bundled and generated), and
 2,000 generated physical problems (tests/verify_corpus.py, a fixed seed).
 
 A failing test lists the wrong lines grouped by rule, with a few examples each
-(problem, format, line, reason). Today derive prints such lines: these tests
-fail until the classes listed in issue #12 are fixed. The number of lines
-checked is printed in the summary at the end of the run (see conftest.py).
+(problem, format, line, reason); no class of wrong line is allowed (KNOWN is
+empty). The number of lines checked is printed in the summary at the end of the
+run (see conftest.py).
 """
 
 from __future__ import annotations
@@ -100,14 +100,12 @@ def _check_text(name: str, text: str, formats: tuple[str, ...]) -> Tally:
     return _check_solution(name, solution, formats)
 
 
-#: Classes of wrong line still printed on homework variants and generated problems
-#: (issue #12 stays open for them): where no single count of places lets the terms of
-#: "Back into (4)" add up within the figures allowed, the line shows them at their own
-#: figures (-5.926 + 15.21 = 9.29) or one figure too many (-121.22/18); a value
-#: carried into a chain stage shown as exact (u_B = 4.5375); a variant with e = 0 whose
-#: compiled line "v_A2 (a + b) = c + b k" reads "v_A2 = 2.25 + 0", without a unit.
-#: Bounded: at most this share of the pages may show them; every other rule must hold.
-KNOWN = {"sums": 0.12, "figures": 0.06, "unit": 0.01}
+#: Classes of wrong line still printed on homework variants and generated problems,
+#: each with the share of pages that may show it. None is left: the sums of "Back into
+#: (4)" that did not add up at the figures shown, the numbers with a figure too many
+#: (-121.22/18, a chain's carried 4.5375) and the velocity without a unit of an e = 0
+#: variant (v_A2 = 2.25 + 0) are fixed (issue #12), so any wrong line fails these tests.
+KNOWN: dict[str, float] = {}
 
 
 def _assert_clean(test: str, tally: Tally, record: Any, known: dict[str, float] | None = None) -> None:

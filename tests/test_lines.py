@@ -8,10 +8,16 @@ from __future__ import annotations
 
 import re
 import textwrap
+from dataclasses import replace
+from decimal import Decimal
+
+import sympy
 
 import derive
 import derive.resources
+from derive.numbers import format_places
 from derive.problem import loads
+from derive.writers.printing import adds_up
 
 
 def page(text: str, fmt: str = "md") -> str:
@@ -218,3 +224,138 @@ def test_parts_of_a_nested_radical_are_one_term() -> None:
     assert want == "-0.717 U"
     assert f"v_{{A2n}} = {want}" in md
     assert not re.search(r"-?\d\.\d+ U [-+] \d\.\d+ U", md), "two rounded parts of one coefficient"
+
+
+# ---------------------------------------------------------------- sums, figures and units (#12)
+
+
+def _sums_add_up(md: str) -> list[str]:
+    """Lines ``x = a ± b = c`` (plain numbers) whose a ± b, added by hand, does not round to c."""
+    wrong = []
+    for a, sign, b, c in re.findall(r"= (-?\d+\.?\d*) ([+-]) (\d+\.?\d*) = (-?\d+\.?\d*)", md):
+        total = Decimal(a) + (Decimal(b) if sign == "+" else -Decimal(b))
+        places = len(c.partition(".")[2])
+        if abs(total - Decimal(c)) > Decimal(1).scaleb(-places) / 2:
+            wrong.append(f"{a} {sign} {b} = {c}")
+    return wrong
+
+
+def _variant(text: str, values: dict[str, sympy.Expr], fmt: str = "md") -> tuple[str, list]:
+    """One homework variant's page with ``values``, and the verifier's failures on it."""
+    from derive.homework import variants
+    from derive.verifier import verify_text
+    from derive.verifier.facts import facts_of
+
+    problem = loads(text, path="t.toml")
+    compiled = variants.compile_problem(problem, None, fmt)
+    filled = variants.fill(compiled, variants.Variant(1, values), fmt)
+    known = {g.symbol: values[g.name] for g in problem.givens if g.name in values}
+    mine = replace(
+        problem,
+        givens=tuple(replace(g, value=known[g.symbol]) if g.symbol in known else g for g in problem.givens),
+    )
+    return filled, verify_text(filled, facts_of(mine), fmt).failures
+
+
+def _notes_4c11(**given: str) -> str:
+    text = derive.resources.problems_dir().joinpath("notes-4c11-two-spheres.toml").read_text()
+    for name, value in given.items():
+        text = re.sub(rf"^{name} = .*$", f"{name} = {value}", text, count=1, flags=re.M)
+    return text
+
+
+def test_back_into_4_shows_its_sum_only_where_the_rounded_terms_add_up() -> None:
+    # 4.C.11 with m_A = 16 kg, m_B = 6.5 kg, e = 0.8, v_A1 = 5 m/s, v_B1 = 19 m/s. With
+    # c = cos 37.6°: (3) 16 x + 6.5 y = 80c - 123.5c, (4) y - x = 0.8 (5c + 19c) = 19.2c, so
+    # 22.5 x = -43.5c - 6.5 (19.2c) and x = -7.48c = -5.9263, y = 11.72c = 9.2856 -> 9.29.
+    # At the figures an intermediate shows, -5.926 + 15.21 = 9.284 is 9.28, not 9.29: the
+    # notes' 79.2 - 59.5 = 19.8 again. The line goes straight to the value.
+    text = _notes_4c11(m_A='"16 kg"', m_B='"6.5 kg"', e="0.8", v_A1='"5 m/s"', v_B1='"19 m/s"')
+    md = derive.render(derive.solve(loads(text, path="t.toml")), "md")
+    back = md.split("Back into (4):")[1].split("##")[0]
+    assert r"= 9.29\ \mathrm{m/s}" in back
+    assert not _sums_add_up(md)
+    values = {"m_A": sympy.Integer(16), "m_B": sympy.Rational(13, 2), "e": sympy.Rational(4, 5)}
+    values |= {"v_A1": sympy.Integer(5), "v_B1": sympy.Integer(19)}
+    for fmt in ("md", "tex"):
+        page, failures = _variant(text, values, fmt)
+        assert not failures, failures
+        assert r"v_{B2n} = 9.29\ \mathrm{m/s}" in page
+        assert "-5.926 + 15.21" not in page and not _sums_add_up(page)
+
+
+def test_the_notes_sum_back_into_4_is_kept_where_it_adds_up() -> None:
+    # the notes' own line: -1.11 + 9.51 = 8.40
+    md = derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
+    assert r"v_{B2n} = -1.11 + 9.51 = 8.40\ \mathrm{m/s}" in md
+
+
+def test_a_variants_fraction_shows_no_more_figures_than_the_rule() -> None:
+    # 4.C.11 with m_A = 12 kg, m_B = 6 kg, e = 0.5, v_A1 = 3 m/s, v_B1 = 20 m/s; c = cos 37.6°:
+    # (3) gives 36c - 120c = -84c, (4) 0.5 (23c) = 11.5c; the numerator -84c - 6 (11.5c) =
+    # -153c = -121.22, at the four figures of an intermediate -121.2.
+    values = {"m_A": sympy.Integer(12), "m_B": sympy.Integer(6), "e": sympy.Rational(1, 2)}
+    values |= {"v_A1": sympy.Integer(3), "v_B1": sympy.Integer(20)}
+    page, failures = _variant(_notes_4c11(), values)
+    assert not failures, failures
+    assert r"\frac{-121.2}{18}" in page and "121.22" not in page
+    assert r"v_{A2n} \left(12 + 6\right) = -66.55 - 54.67" in page  # as the notes: v_A2n (20 + 5)
+
+
+def test_a_variant_whose_masses_add_to_one_keeps_the_unit_of_each_velocity() -> None:
+    # m_A = m_B = 0.5 kg, e = 0, v_A1 = 5.5 m/s, v_B1 = -1 m/s: they move together at
+    # (0.5 * 5.5 - 0.5 * 1) / 1 = 2.25 m/s. "v_A2 = 2.25 + 0" would be a velocity without a unit.
+    import verify_corpus
+
+    text = verify_corpus.VARY[0].text
+    values = {"m_A": sympy.Rational(1, 2), "m_B": sympy.Rational(1, 2), "e": sympy.Integer(0)}
+    values |= {"v_A1": sympy.Rational(11, 2)}
+    for fmt in ("md", "tex"):
+        page, failures = _variant(text, values, fmt)
+        assert not failures, failures
+        assert r"v_{A2} \left(0.5 + 0.5\right) = 2.25 + 0" in page
+        assert r"\boxed{v_{A2} = 2.25\ \mathrm{m/s}}" in page
+
+
+def test_a_value_carried_into_a_chain_stage_is_rounded_like_any_intermediate() -> None:
+    # equal masses, e = 0.1, A at 8.25 m/s onto B at rest: v_B2 = (1 + e) v_A1 / 2 =
+    # 0.55 * 8.25 = 4.5375 m/s exactly; stage 2 is not given 4.5375 in a file, so it shows
+    # 4.538 (four figures for an intermediate), never all five.
+    md = page(
+        """
+        title = "three particles"
+        kind = "chain"
+        [given]
+        m = "5 kg"
+        e = 0.1
+        [[stage]]
+        type = "impact"
+        kind = "direct"
+        given = { m_A = "m", m_B = "m", e = "e", v_A1 = "8.25 m/s", v_B1 = "0 m/s" }
+        results = { v_B2 = "u_B" }
+        [[stage]]
+        type = "impact"
+        kind = "direct"
+        given = { m_A = "m", m_B = "2*m", e = "e", v_A1 = "u_B", v_B1 = "0 m/s" }
+        results = { v_B2 = "u_C" }
+        """
+    )
+    assert "4.5375" not in md
+    assert r"v_{A1} = u_{B} = 4.538\ \mathrm{m/s}" in md
+    assert r"4.538 \cdot 5 + 0 \cdot 10 = 5 v_{A2} + 10 v_{B2}" in md
+
+
+def test_numbers_at_shared_places_keep_to_the_rule() -> None:
+    assert format_places(Decimal("-121.2166"), 2, 3, 1) == "-121.2"  # five figures at 2 places
+    assert format_places(Decimal("19.8133"), 2, 3, 1) == "19.81"
+    assert format_places(Decimal("0.5"), 3, 3, 1) == "0.500"
+
+
+def test_a_printed_sum_adds_up_as_a_reader_adds_it() -> None:
+    assert adds_up("-1.11 + 9.51", "8.40")  # the notes, 4.C.11
+    assert adds_up("79.23 - 59.42", "19.81")
+    assert not adds_up("79.2 - 59.5", "19.8")  # the notes' slip: 79.2 - 59.5 is 19.7
+    assert not adds_up("-5.926 + 15.21", "9.29")
+    assert not adds_up(r"-8.971 \times 10^{6} + 9 \times 10^{6}", "28800")  # 29000
+    assert adds_up(r"\left(-3\right) + 5", "2")
+    assert adds_up("x + 3", "4")  # letters: nothing to add

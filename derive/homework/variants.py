@@ -19,12 +19,12 @@ from decimal import Decimal
 import sympy
 
 from derive.errors import InputError
-from derive.numbers import format_fixed, format_number, places_that_add_up
+from derive.numbers import format_number, format_places, places_that_add_up
 from derive.physics.impact import independent_map
 from derive.problem import Given, Problem
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
-from derive.writers.printing import SlotBook, exact_latex
+from derive.writers.printing import SIDE_BEGIN, SIDE_END, SlotBook, adds_up, exact_latex, printed_number
 
 _TOKEN = re.compile(r"DRVSLOT(\d+)X")
 MAX_ATTEMPTS_PER_VARIANT = 200
@@ -239,8 +239,8 @@ def _number(x: float, digits: int | None, extra: int, integers: bool, places: in
                     break  # exact, but more figures than an intermediate shows: 857.3, not 857.25
                 return str(exact) if k else str(round(x))
     d = Decimal(repr(float(x)))
-    if places is not None:
-        return format_fixed(d, places)
+    if places is not None:  # the block's places, never more figures than the rule (-121.2, not -121.22)
+        return format_places(d, places, digits, extra)
     text = format_number(d, digits, extra=extra)
     if "e" in text:
         mant, exp = text.split("e")
@@ -293,7 +293,7 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
             out.append(("-" if x < 0 else "") + text)
         else:
             out.append(text)
-    return _optional_lines("".join(out), places)
+    return _optional_sides(_optional_lines("".join(out), places))
 
 
 def _optional_lines(page: str, places: dict[int, int | None]) -> str:
@@ -309,6 +309,23 @@ def _optional_lines(page: str, places: dict[int, int | None]) -> str:
     display = rf"(?:\$\$\n|\\begin\{{equation\*\}}\n){begin}(\d+)%.*?{end}.*?(?:\$\$\n\n|\\end\{{equation\*\}}\n)"
     page = re.sub(display, drop, page, flags=re.S)
     return re.sub(rf"{begin}\d+%(.*?){end}", r"\1", page, flags=re.S)
+
+
+_SIDE = re.compile(re.escape(SIDE_BEGIN) + r" = (.*?)" + re.escape(SIDE_END) + r" = ([^\n]*)")
+
+
+def _optional_sides(page: str) -> str:
+    """The page with each optional side (a sum shown term by term) kept where its numbers,
+    as this variant prints them, add up to the total after it, and dropped where not."""
+
+    def one(m: re.Match[str]) -> str:
+        terms, rest = m.group(1), m.group(2)
+        total = re.match(r"[^=]*?(?=\\ |\s*\\tag|\s*\}|\s*\\quad|\s*$)", rest)
+        lone = total is not None and printed_number(total.group(0)) is not None
+        keep = not lone or adds_up(terms, total.group(0))
+        return (f" = {terms}" if keep else "") + f" = {rest}"
+
+    return _SIDE.sub(one, page)
 
 
 def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:

@@ -76,7 +76,8 @@ def _sum_lines(
 ) -> tuple[Eqn, ...]:
     """``2 a1 u = c + a1 k`` then ``u = value``; one line ``u = c + a1 k = value`` when 2 a1 is 1."""
     if 2 * a1 == 1:
-        return (Eqn((Side((u,)), Side(terms, "numeric"), Side((value,), "result")), unit=page.unit_v, tag=tag),)
+        sides = (Side((u,)), Side(terms, "numeric", optional=True), Side((value,), "result"))
+        return (Eqn(sides, unit=page.unit_v, tag=tag),)
     return (
         Eqn((Side((sympy.Mul(2 * a1, u, evaluate=False),), "numeric"), Side(terms, "numeric"))),
         Eqn((Side((u,)), Side((value,), "result")), unit=page.unit_v, tag=tag, implies=True),
@@ -106,7 +107,7 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
         ),
         Block(
             (f"Back into ({page.tags(4)}):",),
-            (Eqn((Side((y,)), Side((xv, k), "numeric"), Side((yv,), "result")), unit=page.unit_v),),
+            (Eqn((Side((y,)), Side((xv, k), "numeric", optional=True), Side((yv,), "result")), unit=page.unit_v),),
             (((xv, k), yv),) if not ((xv.free_symbols | yv.free_symbols) - page.varied) else (),
         ),
     ]

@@ -35,10 +35,17 @@ Text = tuple["str | Math", ...]
 
 @dataclass(frozen=True)
 class Side:
-    """One side of an equation: its terms in the order the notes write them."""
+    """One side of an equation: its terms in the order the notes write them.
+
+    An ``optional`` side is a sum shown term by term before the total after it
+    (v_B2n = -1.11 + 9.51 = 8.40): a renderer leaves it out where its terms, as
+    printed, do not add up to the total as printed (v_B2n = 9.29, not
+    -5.926 + 15.21 = 9.29).
+    """
 
     terms: tuple[sympy.Expr, ...]
     mode: Mode = "symbolic"
+    optional: bool = False
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,7 @@ equations were written. Renderers call :func:`latex_eqn` and
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from decimal import Decimal
@@ -21,8 +22,8 @@ from derive.numbers import (
     as_written,
     exactify,
     floatify,
-    format_fixed,
     format_number,
+    format_places,
     places_that_add_up,
     short_decimal,
     structural,
@@ -64,7 +65,8 @@ class Style:
     """How numbers print: the answer's figures (None: textbook rule) and the extra
     figures intermediates carry; ``values`` and ``angles`` feed substitution lines;
     ``strike`` False prints a cancelled symbol without its stroke (for converters
-    that have no ``\\cancel``)."""
+    that have no ``\\cancel``); ``derived`` symbols have numbers worked out, not
+    written in the file (a chain's carried values), rounded where long."""
 
     digits: int | None
     extra: int = 1
@@ -80,6 +82,7 @@ class Style:
     letters: frozenset[sympy.Symbol] = frozenset()
     letter_units: Mapping[sympy.Symbol, str] = field(default_factory=dict)
     labels: tuple[str, str] = ("A", "B")
+    derived: frozenset[sympy.Symbol] = frozenset()
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:
@@ -95,13 +98,22 @@ def power_latex(text: str) -> str:
     return text
 
 
-def exact_latex(value: sympy.Expr, digits: int | None, extra: int) -> str:
-    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded."""
+def exact_latex(value: sympy.Expr, digits: int | None, extra: int, *, derived: bool = False) -> str:
+    """A given's number as the file wrote it when short and exact (0.6, 20, 1.67e-27), else rounded.
+
+    A ``derived`` number was worked out, not written (a value carried from an earlier
+    stage of a chain): exact and short, it is still rounded where it has more figures
+    than an intermediate shows (4.538, not the 4.5375 of 8.25 · 0.55)."""
     if value.is_Integer and abs(value) < 10**6:
         return str(value)
-    if short_decimal(value):
+    if short_decimal(value) and not (derived and _longer(value, digits, extra)):
         return power_latex(as_written(value))
     return number_latex(value, digits, extra)
+
+
+def _longer(value: sympy.Expr, digits: int | None, extra: int) -> bool:
+    """True when ``value`` written out exactly shows more figures than ``digits`` (+``extra``)."""
+    return _figures(to_decimal(value)) > _figures(Decimal(format_number(value, digits, extra=extra)))
 
 
 def _as_angle(expr: sympy.Expr) -> sympy.Expr:
@@ -252,7 +264,7 @@ class StepPrinter(LatexPrinter):
 
     def _print_Float(self, expr: sympy.Float) -> str:
         if self._decimals is not None:
-            return format_fixed(expr, self._decimals)
+            return power_latex(format_places(expr, self._decimals, self._digits, self._extra))
         if self._trim_floats:  # a decimal beside letters: 0.2 u, not 0.2000 u
             text = format_number(expr, self._digits, extra=self._extra)
             mantissa, _, power = text.partition("e")
@@ -436,11 +448,12 @@ def values_map(style: Style, digits: int | None, extra: int, symbols: set[sympy.
         if s not in style.values:
             continue
         v = style.values[s]
+        derived = s in style.derived
         if s in style.angles:
             deg = v * 180 / sympy.pi
-            out[s] = exact_latex(deg, digits, extra) + r"^\circ"
+            out[s] = exact_latex(deg, digits, extra, derived=derived) + r"^\circ"
         else:
-            out[s] = exact_latex(v, digits, extra)
+            out[s] = exact_latex(v, digits, extra, derived=derived)
     return out
 
 
@@ -666,8 +679,16 @@ def _slot_term(
     coeff, rest = term.as_independent(*others, as_Add=False)
     if not (coeff.free_symbols & style.varied):
         return None
-    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
     printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True, labels=style.labels)
+    if first and isinstance(coeff, sympy.Add) and all(a.free_symbols <= style.varied for a in coeff.args):
+        # a sum of coefficients stays a sum, v_A2n (12 + 6) as the notes write v_A2n (20 + 5):
+        # one number there would read v_A2n = 2.25 + 0, a velocity without its unit, where it is 1
+        parts = [
+            style.slots.token(a, ("lead" if i == 0 else "signed") + ":" + kind, digits, ext, style.block)
+            for i, a in enumerate(coeff.args)
+        ]
+        return printer.doprint(rest) + r" \left(" + "".join(parts) + r"\right)"
+    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
     return token + " " + printer.doprint(rest)
 
 
@@ -747,23 +768,68 @@ def unit_latex(eqn: Eqn, style: Style) -> str:
     return latex_unit(unit) if unit == "deg" else r"\ " + latex_unit(unit)
 
 
-def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, str]]]:
-    """Each side's printed terms; a side printed the same as the one before it is shown
-    once (v_2 = -u, not v_2 = -u = -u)."""
-    printed: list[list[tuple[str, str]]] = []
-    for side in eqn.sides:
-        terms = side_terms(side, style, extra, _struck(eqn, style))
-        if not printed or join_terms(terms) != join_terms(printed[-1]):
-            printed.append(terms)
+#: Around an optional side of a compiled variant page (with the " = " before it), for
+#: the variant to keep where its numbers add up to the total after it (:func:`adds_up`).
+SIDE_BEGIN, SIDE_END = "%%derive-side%", "%%derive-side-end%"
+
+_NUMBER = re.compile(r"(?:\\left\()?(-?\d+(?:\.\d+)?)(?: \\times 10\^\{(-?\d+)\})?(?:\\right\))?")
+
+
+def printed_number(text: str) -> Decimal | None:
+    """The number a printed term shows (``-5.926``, ``1.6 \\times 10^{-3}``, ``\\left(-3\\right)``);
+    None for anything else (letters, a product)."""
+    m = _NUMBER.fullmatch(text.strip())
+    if m is None:
+        return None
+    return Decimal(m.group(1)).scaleb(int(m.group(2) or 0))
+
+
+def adds_up(terms: str, total: str) -> bool:
+    """True when the printed sum ``terms`` (``-5.926 + 15.21``), added as written, gives
+    the printed ``total`` to the total's last figure, as a reader checks it; True also
+    where a term or the total is not a plain number (nothing to add)."""
+    parts = re.split(r" ([+-]) ", terms.strip())
+    value = printed_number(parts[0])
+    shown = printed_number(total)
+    if value is None or shown is None:
+        return True
+    for sign, text in zip(parts[1::2], parts[2::2], strict=True):
+        term = printed_number(text)
+        if term is None:
+            return True
+        value += term if sign == "+" else -term
+    m = _NUMBER.fullmatch(total.strip())
+    assert m is not None
+    places = len(m.group(1).partition(".")[2]) - int(m.group(2) or 0)
+    return abs(value - shown) <= Decimal(1).scaleb(-places) / 2
+
+
+def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[tuple[list[tuple[str, str]], bool]]:
+    """Each side's printed terms, and whether a variant's page decides to keep it; a side
+    printed the same as the one before it is shown once (v_2 = -u, not v_2 = -u = -u). An
+    optional side whose terms do not add up to the total after it is left out."""
+    texts = [side_terms(side, style, extra, _struck(eqn, style)) for side in eqn.sides]
+    printed: list[tuple[list[tuple[str, str]], bool]] = []
+    for side, terms in zip(eqn.sides, texts, strict=True):
+        open_ = side.optional and style.slots is not None
+        if side.optional and not open_ and not adds_up(join_terms(terms), join_terms(texts[-1])):
+            continue
+        if not printed or join_terms(terms) != join_terms(printed[-1][0]):
+            printed.append((terms, open_))
     return printed
 
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
-    texts = [join_terms(terms) for terms in _printed_sides(eqn, style, extra)]
+    printed = _printed_sides(eqn, style, extra)
+    texts = [join_terms(terms) for terms, _ in printed]
     if _line_unit(eqn, style)[1]:
         texts[-1] = r"\left(" + texts[-1] + r"\right)"
-    body = " = ".join(texts) + unit_latex(eqn, style)
+    body = ""
+    for i, (text, (_, open_)) in enumerate(zip(texts, printed, strict=True)):
+        piece = (" = " if i else "") + text
+        body += SIDE_BEGIN + piece + SIDE_END if open_ else piece
+    body += unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
@@ -800,7 +866,7 @@ def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: fl
     One side per row after the first (``T_2 = a``, ``= b``, ``= c``); a side still too
     wide is broken before one of its own terms' signs, never inside a term.
     """
-    sides = _printed_sides(eqn, style, extra)
+    sides = [terms for terms, _ in _printed_sides(eqn, style, extra)]
     if len(sides) < 2:
         return ()
     unit = unit_latex(eqn, style)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import base64
 import re
+from collections.abc import Mapping
 from dataclasses import replace
 from functools import cache
 from typing import Any
@@ -121,6 +122,13 @@ def source_parts(text: str | None) -> list[tuple[str, str]]:
     return parts
 
 
+def worked_out(p: Any, values: Mapping[sympy.Symbol, sympy.Expr]) -> frozenset[sympy.Symbol]:
+    """The symbols whose numbers were worked out (defined from others, carried from an
+    earlier stage of a chain, solved for) rather than written in the file."""
+    written = {g.symbol for g in p.givens if g.definition is None and g.value is not None}
+    return frozenset(values) - written
+
+
 def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
     name = latex_name(relabel(g.name, style.labels))
@@ -147,9 +155,9 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
         return name, f"kept as a symbol ({unit})"
     if g.unit == "deg":
         deg = g.value * 180 / sympy.pi
-        value = exact_latex(deg, style.digits, 1) + r"^\circ"
+        value = exact_latex(deg, style.digits, 1, derived=g.symbol in style.derived) + r"^\circ"
     else:
-        value = exact_latex(g.value, style.digits, 1)
+        value = exact_latex(g.value, style.digits, 1, derived=g.symbol in style.derived)
         if g.unit:
             value += r"\ " + latex_unit(g.unit)
     parts = [name]
@@ -299,6 +307,7 @@ def view(
         letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
         letter_units={**(outer_letters or {}), **letter_units(p)},
         labels=p.labels,
+        derived=worked_out(p, solution.values),
     )
     stages = []
     for stage in solution.stages:
@@ -495,6 +504,7 @@ def chain_view(
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
         strike=layout.strike,
         letter_units=letter_units(p),
+        derived=worked_out(p, sol.values),
     )
     stages = []
     falls = figure.chain_falls(sol) if figures else {}
