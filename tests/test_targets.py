@@ -193,3 +193,39 @@ def test_docx_with_something_else_than_pandoc(monkeypatch: pytest.MonkeyPatch, t
     monkeypatch.setenv("DERIVE_PANDOC", str(tmp_path / "nothing-here"))
     with pytest.raises(RenderError, match="does not run"):
         docx.build_docx(solution(NOTES[0]))
+
+
+# ---------------------------------------------------------------- long lines on every page
+
+
+LOST = r"T_{\mathrm{lost}}"
+
+
+def _lost_row(text: str) -> str:
+    """The T_lost line of 4.C.11 as written (with its rows, if set on rows)."""
+    start = text.index(LOST + " ")
+    return text[start : text.index("321", start)]
+
+
+def test_a_long_line_is_on_rows_in_mkdocs_html_handouts_and_variants(tmp_path: Path) -> None:
+    """4.C.11's T_lost line is wider than a course site's column (the helper's MkDocs page
+    cut it off behind a scroll bar), derive's HTML page, and a handout's or a variant's text
+    (8-17 pt into the margin): each sets it on rows, as a solve's LaTeX page does."""
+    from derive.homework import variants
+    from derive.homework.handout import build_handout
+    from derive.problem import load
+
+    sol = derive.solve(derive.load("notes-4c11-two-spheres"))
+    assert "&=" in _lost_row(derive.render(sol, "tex"))  # the reference: a solve's LaTeX page
+    assert "&=" in _lost_row(markdown(sol, layout=derive.writers.targets.MKDOCS)[0])
+    assert "&=" not in _lost_row(derive.render(sol, "md"))  # GitHub's page scrolls a wide display
+    html = derive.render(sol, "html")
+    annotations = re.findall(r'<annotation encoding="application/x-tex">(.*?)</annotation>', html, re.S)
+    lost = [a for a in annotations if "T_{\\mathrm{lost}} &amp;=" in a or "T_{\\mathrm{lost}} &=" in a]
+    assert lost and "aligned" in lost[0]
+    handout, _ = build_handout(["notes-4c11-two-spheres"], title="S", theory=False, mode="solutions", fmt="tex")
+    assert "&=" in _lost_row(handout)
+    compiled = variants.compile_problem(load("notes-4c11-two-spheres"), fmt="tex")
+    page = variants.fill(compiled, variants.draw(compiled, 1, seed=1)[0], "tex")
+    start = page.index(LOST + " ")
+    assert "&=" in page[start : page.index(r"\end", start)]

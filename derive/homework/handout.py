@@ -26,6 +26,7 @@ from derive.homework import theory as theory_page
 from derive.problem import load
 from derive.steps import solve
 from derive.writers.pdf import build_pdf
+from derive.writers.targets import GITHUB, TEX_DOCUMENT, Layout
 from derive.writers.view import environment, view
 
 Mode = Literal["problems", "answers", "solutions"]
@@ -64,13 +65,15 @@ def _one_line(text: str) -> str:
     return " ".join(text.split())
 
 
-def _problem_view(name: str | Path, mode: str, digits: int | None, plot: bool = False) -> dict[str, Any]:
+def _problem_view(
+    name: str | Path, mode: str, digits: int | None, plot: bool = False, layout: Layout = GITHUB
+) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = solve(load(name))
     if solution.is_chain:
-        data = _chain_view(solution, mode, digits)
+        data = _chain_view(solution, mode, digits, layout)
     else:
-        data = view(solution, digits, figures=mode != "answers", plot=plot and mode == "solutions")
+        data = view(solution, digits, figures=mode != "answers", plot=plot and mode == "solutions", layout=layout)
         data["answers"] = [
             line
             for stage in data["stages"]
@@ -88,13 +91,13 @@ def _problem_view(name: str | Path, mode: str, digits: int | None, plot: bool = 
     return data
 
 
-def _chain_view(solution: Any, mode: str, digits: int | None) -> dict[str, Any]:
+def _chain_view(solution: Any, mode: str, digits: int | None, layout: Layout = GITHUB) -> dict[str, Any]:
     """A chain in the shape of one problem: its stages in order (an impact's own
     stages numbered k.1, k.2, ..., with the impact's givens first and the results it
     carries on last), then its boxed answers as a last stage."""
     from derive.writers.view import chain_view
 
-    data = chain_view(solution, digits, figures=mode != "answers")
+    data = chain_view(solution, digits, figures=mode != "answers", layout=layout)
     stages = []
     for st in data["stages"]:
         if st["impact"]:
@@ -200,7 +203,8 @@ def build_handout(
     views, failures = [], []
     for name in problems:
         try:
-            views.append(_problem_view(name, mode, digits, plot))
+            layout = GITHUB if fmt == "md" else TEX_DOCUMENT  # long lines on rows, as a solve's page
+            views.append(_problem_view(name, mode, digits, plot, layout))
         except DeriveError as exc:
             failures.append(Failure(str(name), _one_line(str(exc))))
         except Exception as exc:  # a bug with one problem must not lose the others

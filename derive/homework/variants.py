@@ -80,6 +80,7 @@ def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> obj
 def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
     """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
     from derive.steps import solve
+    from derive.writers.targets import GITHUB, TEX_DOCUMENT
     from derive.writers.view import environment, view
 
     if not problem.vary:
@@ -90,7 +91,8 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     givens = {g.name: g for g in problem.givens}
     symbols = tuple(givens[n].symbol for n in names)
     book = SlotBook()
-    data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols))
+    layout = TEX_DOCUMENT if fmt in ("tex", "pdf") else GITHUB  # long lines on rows, as a solve's page
+    data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols), layout=layout)
     templates = {}
     if fmt in ("md", "json"):
         page = environment("md").get_template("solution.md.j2").render(**data)

@@ -62,8 +62,13 @@ JUPYTER = Layout(require_cancel=True)
 PANDOC = Layout(
     width=ARTICLE_WIDTH_PT, long_lines="displays", strike=False, tags="text", figures="image", escape_caret=True
 )
+#: A course site's narrower column (mkdocs-material: about 700 px at a 1,440 px window) and
+#: derive's HTML page (52 rem): a line wider than ``article``'s text (about 600 px of KaTeX
+#: or MathJax) is set on rows, not cut off behind a scroll bar.
+MKDOCS = Layout(width=ARTICLE_WIDTH_PT)
+HTML = Layout(width=ARTICLE_WIDTH_PT)
 #: Markdown targets by the name ``--for`` takes.
-MARKDOWN_TARGETS: dict[str, Layout] = {"github": GITHUB, "jupyter": JUPYTER, "mkdocs": GITHUB, "pandoc": PANDOC}
+MARKDOWN_TARGETS: dict[str, Layout] = {"github": GITHUB, "jupyter": JUPYTER, "mkdocs": MKDOCS, "pandoc": PANDOC}
 TEX_FRAGMENT = Layout(width=ARTICLE_WIDTH_PT)
 TEX_DOCUMENT = Layout(width=DOCUMENT_WIDTH_PT)
 #: The packages a LaTeX fragment needs, as its first line, ``--help`` and docs/interop.md name them.

@@ -40,7 +40,7 @@ from derive.writers.printing import (
     latex_inline,
     latex_rows,
 )
-from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
+from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
 from derive.writers.width import width_pt
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
@@ -364,6 +364,20 @@ def view(
     }
 
 
+def _aligned(line: dict[str, Any]) -> str:
+    """A line as one display: on one row, or its rows (a long line) as an ``aligned``."""
+    rows = line.get("rows") or ()
+    if not rows:
+        return line["latex"]
+    body = []
+    for row in rows:
+        if row.continued:
+            body.append(rf"&\quad {row.rel} {row.rhs}")
+        else:
+            body.append((f"{row.lhs} " if row.lhs else "") + f"&{row.rel} {row.rhs}")
+    return line["before"] + r"\begin{aligned}" + r" \\ ".join(body) + r"\end{aligned}" + line["after"]
+
+
 def _html(data: dict[str, Any]) -> str:
     """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
     from derive.writers import katex as html_mod
@@ -381,7 +395,7 @@ def _html(data: dict[str, Any]) -> str:
             if block["text"]:
                 block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"]]
             for line in block["lines"]:
-                line["slot"] = slot(line["latex"], True)
+                line["slot"] = slot(_aligned(line), True)
     rendered = html_mod.render_math(items)
     if rendered is None:  # no Node.js: the page typesets itself, offline, with the inlined script
         rendered = [
@@ -666,7 +680,7 @@ def render(
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
     if fmt == "html":
-        return _html(view(solution, digits, figures, plot=plot))
+        return _html(view(solution, digits, figures, plot=plot, layout=HTML))
     layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
     data = view(solution, digits, figures, layout=layout, plot=plot)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
