@@ -83,6 +83,9 @@ _TEX_UNICODE = {
     "'": r"\textquotesingle{}",
     '"': r"{\ttfamily\char34}",  # a straight double quote in any font encoding
 }
+for _i in range(10):  # θ₂, x⁴: the digits written below and above the line
+    _TEX_UNICODE[chr(0x2080 + _i)] = rf"\textsubscript{{{_i}}}"
+    _TEX_UNICODE.setdefault("⁰¹²³⁴⁵⁶⁷⁸⁹"[_i], rf"\textsuperscript{{{_i}}}")
 for _i, _name in enumerate(_GREEK):
     if _name == "omicron":
         continue

@@ -113,3 +113,28 @@ def test_jupyter_representations() -> None:
     assert sol._repr_markdown_().startswith("# Example 4.C.11")
     latex = sol._repr_latex_()
     assert latex.startswith("$$\\boxed{") and r"\hat{e}_{t}" in latex
+
+
+def test_a_statement_writes_names_as_symbols() -> None:
+    """Issue 15: 4.C.12's statement printed "theta_1" and "v_A1" literally. ``{name}`` of a
+    given with a value is its value; of a letter or a result, its symbol; ``{@name}`` the symbol."""
+    sol = derive.solve(derive.load("notes-4c12-cue-ball"))
+    md = derive.render(sol, "md")
+    given = md[md.index("**Given.**") : md.index("\n", md.index("**Given.**"))]
+    assert r"speed $v_{A1}$, its velocity at $\theta_{1}$ = 45° to" in given
+    assert r"at angle $\theta_{2}$" in given and "theta_" not in given.replace(r"\theta_", "")
+    assert r"**Find.** Determine the rebound angle $\theta_{2}$ of A." in md
+    tex = derive.render(sol, "tex")
+    assert r"at $\theta_{1}$ = 45\textdegree{} to" in tex
+    html = derive.render(sol, "html")
+    given_html = html[html.index("<strong>Given.</strong>") : html.index("</p>", html.index("<strong>Given.</strong>"))]
+    shown = re.sub(r"<annotation.*?</annotation>", "", given_html, flags=re.S)  # KaTeX keeps the TeX there
+    assert "theta" not in shown and "katex" in shown  # typeset, not the letters
+
+
+def test_unicode_subscripts_reach_latex_as_subscripts() -> None:
+    """A statement's θ₂ came out of LaTeX as θ? (issue 15)."""
+    from derive.escape import tex
+
+    assert tex("θ₂") == r"$\theta$\textsubscript{2}"
+    assert "?" not in tex("x₀ y₉ m² t⁴")

@@ -179,27 +179,44 @@ def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     return " = ".join(parts), ""
 
 
-def _statement(p, style: Style) -> str | None:
-    """The statement with each ``{name}`` replaced by that given's value and unit."""
-    if not p.statement:
-        return p.statement
+def _statement(p: Any, style: Style, text: str | None = None) -> list[tuple[str, str]] | None:
+    """The statement (or ``text``, the question) as text and mathematics: each ``{name}``
+    of a given becomes its value and unit, or its symbol when it is kept as a letter;
+    ``{@name}``, any name (a given, a result, a name of the notes), its symbol, as
+    mathematics (``{@theta_1} = {theta_1}``: θ₁ = 45°). Other braces stay as typed."""
+    source = p.statement if text is None else text
+    if not source:
+        return None
     by_name = {g.name: g for g in p.givens}
 
-    def one(m: re.Match[str]) -> str:
-        g = by_name.get(m.group(1))
-        if g is None:
-            return m.group(0)
-        if style.slots is not None and g.symbol in style.varied:
+    def one(name: str) -> tuple[str, str]:
+        g = by_name.get(name)
+        if g is not None and style.slots is not None and g.symbol in style.varied:  # a variant's number
             token = style.slots.token(g.symbol, "text", style.digits, 1, None)
-            return token + ("°" if g.unit == "deg" else (" " + plain_unit(g.unit) if g.unit else ""))
-        if g.value is None:
-            return g.name
+            return "text", token + ("°" if g.unit == "deg" else (" " + plain_unit(g.unit) if g.unit else ""))
+        if name.startswith("@") or (g is not None and g.value is None):
+            return "math", latex_name(name.removeprefix("@"))
+        if g is None:
+            return "text", "{" + name + "}"
         if g.unit == "deg":
-            return exact_latex(g.value * 180 / sympy.pi, style.digits, 1) + "°"
+            return "text", exact_latex(g.value * 180 / sympy.pi, style.digits, 1) + "°"
         text = exact_latex(g.value, style.digits, 1)
-        return text + (" " + plain_unit(g.unit) if g.unit else "")
+        return "text", text + (" " + plain_unit(g.unit) if g.unit else "")
 
-    return re.sub(r"\{([A-Za-z][A-Za-z0-9_]*)\}", one, p.statement)
+    parts: list[tuple[str, str]] = []
+    pos = 0
+    for m in re.finditer(r"\{(@?[A-Za-z][A-Za-z0-9_]*)\}", source):
+        parts.append(("text", source[pos : m.start()]))
+        parts.append(one(m.group(1)))
+        pos = m.end()
+    parts.append(("text", source[pos:]))
+    merged: list[tuple[str, str]] = []  # neighbouring texts as one (a value joins its sentence)
+    for kind, text in parts:
+        if merged and kind == "text" and merged[-1][0] == "text":
+            merged[-1] = ("text", merged[-1][1] + text)
+        elif text:
+            merged.append((kind, text))
+    return merged
 
 
 def _named(words: str, labels: tuple[str, str]) -> str:
@@ -327,7 +344,7 @@ def view(
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
-        find = [("text", p.question)]
+        find = _statement(p, style, p.question) or []
     else:
         unknown = [g.name for g in p.givens if g.unknown]
         words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
@@ -390,6 +407,8 @@ def _html(data: dict[str, Any]) -> str:
 
     for g in data["givens"]:
         g["slot"] = slot(g["latex"], False)
+    statement = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["statement"] or ()]
+    find = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["find"]]
     for stage in data["stages"]:
         for block in stage["blocks"]:
             if block["text"]:
@@ -406,6 +425,7 @@ def _html(data: dict[str, Any]) -> str:
         script = ""
     for g in data["givens"]:
         g["html"] = rendered[g.pop("slot")]
+    data["statement"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in statement]
     for stage in data["stages"]:
         stage["figure"] = stage.get("figure_svg", "")
         for block in stage["blocks"]:
@@ -413,7 +433,7 @@ def _html(data: dict[str, Any]) -> str:
                 block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
             for line in block["lines"]:
                 line["html"] = rendered[line.pop("slot")]
-    data["find"] = [("text", s_) if k == "text" else ("math", s_) for k, s_ in data["find"]]
+    data["find"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in find]
     return (
         environment("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
     )
@@ -576,7 +596,7 @@ def chain_view(
         "title": p.title,
         "source": p.source,
         "source_parts": source_parts(p.source),
-        "statement": p.statement,
+        "statement": _statement(p, style),
         "givens": givens,
         "find": find,
         "stages": stages,
