@@ -15,6 +15,7 @@ import derive
 from derive.errors import InputError
 from derive.homework import variants
 from derive.problem import loads
+from derive.resources import bundled
 
 
 @pytest.fixture(scope="module")
@@ -150,7 +151,7 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     assert len(csv_lines) == 7 and csv_lines[0].startswith("variant,")
     student = (out / "variant-01-problem.md").read_text()
     assert "ANSWER" not in student and "**Find.**" in student
-    assert "Source" not in student and student.endswith(".\n")  # no citation (it may quote answers)
+    assert "Source" not in student and student.endswith("</div>\n")  # no citation (it may quote answers)
     again = tmp_path / "again"
     assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
     assert (again / "key.json").read_text() == (out / "key.json").read_text()
@@ -174,3 +175,27 @@ def test_cli_writes_a_latex_statement_beside_each_latex_solution(cli, tmp_path: 
     assert r"\textbf{Find.}" in sheet and sheet.rstrip().endswith(r"\end{document}")
     assert r"\boxed" not in sheet and "Kinetics" not in sheet and "Source:" not in sheet
     assert r"\boxed" in full and "Source:" in full
+
+
+def test_each_variant_is_drawn_with_its_own_numbers(cli, tmp_path: Path) -> None:
+    """Issues 15 and 16: variants had no figures; a student's sheet had none to work from.
+    Each variant's page has its figures before and after the impact, its sheet the one before,
+    drawn from the variant's own speeds (arrow lengths in their ratio: no solve)."""
+    from derive.writers.figure.model import Arrow
+
+    compiled = variants.compile_problem(loads(bundled()["notes-4c11-two-spheres"].read_text()))
+    for v in variants.draw(compiled, 5, seed=3):
+        arrows = {a.name: a for a in variants.drawing(compiled, v, "before").shapes if isinstance(a, Arrow)}
+        ratio = arrows["v_B1"].length / arrows["v_A1"].length
+        if not (arrows["v_A1"].lengthened or arrows["v_B1"].lengthened):
+            assert ratio == pytest.approx(abs(float(v.values["v_B1"]) / float(v.values["v_A1"])), rel=1e-9)
+    out = tmp_path / "hw"
+    assert cli("variants", "notes-4c11-two-spheres", "--count", "2", "-o", str(out)).code == 0
+    page = (out / "variant-01.md").read_text(encoding="utf-8")
+    sheet = (out / "variant-01-problem.md").read_text(encoding="utf-8")
+    assert page.count("<svg") == 2 and "DRVFIGURE" not in page
+    assert sheet.count("<svg") == 1 and 'aria-label="Before the impact"' in sheet
+    tex = tmp_path / "tex"
+    assert cli("variants", "notes-4c11-two-spheres", "--count", "1", "-f", "tex", "-o", str(tex)).code == 0
+    assert (tex / "variant-01.tex").read_text(encoding="utf-8").count(r"\begin{tikzpicture}") == 2
+    assert (tex / "variant-01-problem.tex").read_text(encoding="utf-8").count(r"\begin{tikzpicture}") == 1

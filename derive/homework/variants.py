@@ -15,6 +15,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 from decimal import Decimal
+from typing import Any
 
 import sympy
 
@@ -93,6 +94,10 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     book = SlotBook()
     layout = TEX_DOCUMENT if fmt in ("tex", "pdf") else GITHUB  # long lines on rows, as a solve's page
     data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols), layout=layout)
+    for entry, stage in zip(data["stages"], solution.stages, strict=True):
+        if stage.figure is not None:  # each variant's own figure goes here when it is filled in
+            entry["figure_svg"] = entry["figure_tikz"] = FIGURE.format("", stage.figure)
+            entry["figure_note_html"] = entry["figure_note_tex"] = FIGURE.format("NOTE", stage.figure)
     templates = {}
     if fmt in ("md", "json"):
         page = environment("md").get_template("solution.md.j2").render(**data)
@@ -295,7 +300,39 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
             out.append(("-" if x < 0 else "") + text)
         else:
             out.append(text)
-    return _optional_sides(_optional_lines("".join(out), places))
+    page = _optional_sides(_optional_lines("".join(out), places))
+    return _figures(compiled, variant, page, fmt)
+
+
+#: Where a stage's figure ("before" or "after" the impact), and the note under it, go in
+#: a compiled page.
+FIGURE = "DRVFIGURE{}-{}-X"
+
+
+def _figures(compiled: Compiled, variant: Variant, page: str, fmt: str) -> str:
+    """The variant's figures put in: drawn from its own numbers (the figure reads the
+    compiled solution's closed forms at them; no solve), each with its note, if any (a
+    line with an empty note is left out)."""
+    from derive.writers.view import figure_entry
+
+    tex = fmt in ("tex", "pdf")
+    for when in ("before", "after"):
+        if FIGURE.format("", when) not in page:
+            continue
+        entry = figure_entry(drawing(compiled, variant, when))
+        page = page.replace(FIGURE.format("", when), entry["figure_tikz" if tex else "figure_svg"])
+        note = entry["figure_note_tex" if tex else "figure_note_html"]
+        marker = FIGURE.format("NOTE", when)
+        page = page.replace(marker, note) if note else re.sub(rf"^.*{marker}.*\n", "", page, flags=re.M)
+    return page
+
+
+def drawing(compiled: Compiled, variant: Variant, when: str = "before") -> Any:
+    """One variant's figure (a :class:`derive.writers.figure.Figure`), before or after the impact."""
+    from derive.writers import figure
+
+    values = {compiled.givens[n].symbol: variant.values[n] for n in compiled.names}
+    return figure.describe(compiled.solution, when == "after", values=values)
 
 
 def _optional_lines(page: str, places: dict[int, int | None]) -> str:
@@ -368,18 +405,31 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
 TEX_SOLUTION = "% derive: the solution\n"
 
 
-def statement_only(page: str) -> str:
+def statement_only(page: str, figure: str = "") -> str:
     """The part of a worked page a student gets: up to the solution (Markdown, or a
     LaTeX document, which is then closed), without the Source line (citations quote
-    the published answers)."""
+    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find."""
     if TEX_SOLUTION in page:
         head = page[: page.index(TEX_SOLUTION)]
         head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
-        return head.rstrip() + "\n\n\\end{document}\n"
+        shown = f"\n\n\\begin{{center}}\n{figure}\n\\end{{center}}" if figure else ""
+        return head.rstrip() + shown + "\n\n\\end{document}\n"
     cut = page.find("**Solution.**")
     head = page if cut < 0 else page[:cut]
     head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
-    return head.rstrip() + "\n"
+    shown = f'\n\n<div align="center">{figure}</div>' if figure else ""
+    return head.rstrip() + shown + "\n"
+
+
+def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
+    """A variant's figure before the impact (which way +n points, its own speeds) as SVG
+    or (tex, pdf) TikZ, for the student's statement; empty when its page has none."""
+    if not any(s.figure == "before" for s in compiled.solution.stages):
+        return ""
+    from derive.writers import figure
+
+    drawn = drawing(compiled, variant, "before")
+    return figure.to_tikz(drawn) if fmt in ("tex", "pdf") else figure.to_svg(drawn)
 
 
 def iterate(
@@ -491,15 +541,19 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
         (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
     elif fmt == "md":
         page = fill(compiled, v, "md", digits)
-        (folder / f"{stem}-problem.md").write_text(statement_only(page), encoding="utf-8")
+        sheet = statement_only(page, setup_figure(compiled, v, "md"))
+        (folder / f"{stem}-problem.md").write_text(sheet, encoding="utf-8")
         (folder / f"{stem}.md").write_text(page, encoding="utf-8")
     else:
         tex = fill(compiled, v, "tex", digits)
         if fmt == "tex":
-            (folder / f"{stem}-problem.tex").write_text(statement_only(tex), encoding="utf-8")
+            sheet = statement_only(tex, setup_figure(compiled, v, "tex"))
+            (folder / f"{stem}-problem.tex").write_text(sheet, encoding="utf-8")
             (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
         else:
             from derive.writers.pdf import build_pdf
 
-            (folder / f"{stem}-problem.pdf").write_bytes(build_pdf(statement_only(tex)))
+            (folder / f"{stem}-problem.pdf").write_bytes(
+                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex")))
+            )
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))

@@ -129,6 +129,21 @@ def worked_out(p: Any, values: Mapping[sympy.Symbol, sympy.Expr]) -> frozenset[s
     return frozenset(values) - written
 
 
+def figure_entry(fig: figure.Figure) -> dict[str, str]:
+    """A stage's figure as the templates take it: SVG and TikZ, the caption, and the note
+    Markdown and LaTeX print under it when an arrow is drawn longer than to scale."""
+    html_note = fig.scale_note(_html_name, escape.html_text)
+    tex_note = fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex)
+    return {
+        "figure_svg": figure.to_svg(fig),
+        "figure_tikz": figure.to_tikz(fig),
+        "figure_caption": f"{fig.title}: {fig.caption}",
+        "figure_caption_html": escape.html_text(f"{fig.title}: ") + html_note,
+        "figure_note_html": _sentence(html_note) if fig.lengthened else "",
+        "figure_note_tex": _sentence(tex_note) if fig.lengthened else "",
+    }
+
+
 def _given_latex(g: Given, style: Style) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
     name = latex_name(relabel(g.name, style.labels))
@@ -332,15 +347,7 @@ def view(
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
             fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
-            entry["figure_svg"] = figure.to_svg(fig)
-            entry["figure_tikz"] = figure.to_tikz(fig)
-            entry["figure_caption"] = f"{fig.title}: {fig.caption}"
-            html_note = fig.scale_note(_html_name, escape.html_text)
-            entry["figure_caption_html"] = escape.html_text(f"{fig.title}: ") + html_note
-            # Markdown and LaTeX print no caption, but say which arrows are drawn longer than to scale
-            entry["figure_note_html"] = _sentence(html_note) if fig.lengthened else ""
-            tex_note = fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex)
-            entry["figure_note_tex"] = _sentence(tex_note) if fig.lengthened else ""
+            entry.update(figure_entry(fig))
         stages.append(entry)
     givens = [dict(zip(("latex", "note"), _given_latex(g, style), strict=False)) for g in p.givens]
     if p.question:
