@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import textwrap
+from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -66,21 +67,14 @@ def _fuzz_files_line(terminalreporter, summary: dict) -> None:
 
 
 def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
-    """One line: how many cases the fuzz tests ran (DERIVE_FUZZ_SCALE scales them)."""
-    import os
-    import sys
-
-    for module in list(sys.modules.values()):
-        counts = getattr(module, "FUZZ_COUNTS", None)
-        if counts and str(getattr(module, "__file__", "")).endswith("test_fuzz.py"):
-            parts = ", ".join(f"{k} {v}" for k, v in sorted(counts.items()))
-            scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
-            terminalreporter.write_line(f"fuzz cases run: {sum(counts.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
+    """Lines of figures: the fuzz cases run (DERIVE_FUZZ_SCALE scales them), the file
+    fuzzer's figures, the verifier's lines."""
     # the verifier's corpus: lines checked, and pages with a known class of wrong line, as
     # the tests recorded them (user properties reach the summary from xdist workers too)
     lines: dict[str, int] = {}
     known: dict[str, int] = {}
     fuzz: dict | None = None
+    cases: Counter[str] = Counter()
     for reports in terminalreporter.stats.values():
         for rep in reports:
             for key, value in getattr(rep, "user_properties", ()):
@@ -88,8 +82,14 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
                     lines[value[0]] = value[1]
                 elif key == "verify_known":
                     known[value[0]] = value[1]
+                elif key == "fuzz_cases" and rep.when == "teardown":  # recorded as the test ends
+                    cases.update(value)
                 elif key == "fuzz_files":
                     fuzz = value  # on the call and teardown reports alike: shown once below
+    if cases:
+        parts = ", ".join(f"{k} {v}" for k, v in sorted(cases.items()))
+        scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
+        terminalreporter.write_line(f"fuzz cases run: {sum(cases.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
     if fuzz is not None:
         _fuzz_files_line(terminalreporter, fuzz)
     if lines:

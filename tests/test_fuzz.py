@@ -27,7 +27,7 @@ import re
 import signal
 import traceback
 from collections import Counter
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -46,6 +46,16 @@ from derive.problem.units import ANGLE, DIMENSIONLESS, LENGTH, MASS, VELOCITY
 SCALE = float(os.environ.get("DERIVE_FUZZ_SCALE", "1"))
 #: Cases run per test, for the summary line (see conftest.py).
 FUZZ_COUNTS: Counter[str] = Counter()
+
+
+@pytest.fixture(autouse=True)
+def _count_cases(record_property: Callable[[str, object], None]) -> Iterator[None]:
+    """The cases a test ran, for the summary line (a property reaches it from an xdist worker)."""
+    before = Counter(FUZZ_COUNTS)
+    yield
+    record_property("fuzz_cases", dict(FUZZ_COUNTS - before))
+
+
 #: Seconds one case may take before it counts as a hang: the command line's time budget for
 #: ``derive solve`` (an oblique problem takes a few seconds, more on a loaded machine).
 CASE_LIMIT = 60.0
