@@ -75,7 +75,11 @@ def _parser() -> argparse.ArgumentParser:
     p_solve = sub.add_parser("solve", help="write the worked solution of a problem")
     p_solve.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
     p_solve.add_argument(
-        "--format", "-f", choices=FORMATS, default="md", help="output format (default: md; docx through pandoc)"
+        "--format",
+        "-f",
+        choices=FORMATS,
+        default=None,
+        help="output format (default: the extension of -o, else md; docx through pandoc)",
     )
     p_solve.add_argument("-o", "--output", help="write to this file (default: standard output; pdf and docx need -o)")
     p_solve.add_argument(
@@ -195,9 +199,20 @@ def _docx(solution: Solution, args: argparse.Namespace, options: dict[str, Any])
     )
 
 
+def _format_of(args: argparse.Namespace) -> str:
+    """The output format: --format, else the extension of -o when it names one (out.pdf:
+    pdf, out.tex: tex), else md (out.txt, out.markdown, standard output)."""
+    if args.format is not None:
+        return args.format
+    suffix = Path(args.output).suffix.lower().lstrip(".") if args.output else ""
+    return suffix if suffix in FORMATS else "md"
+
+
 def _solve(args: argparse.Namespace) -> int:
     import derive
     from derive.fileio import write_atomic
+
+    args.format = _format_of(args)
 
     if args.digits is not None and not 1 <= args.digits <= 10:  # as the schema's digits field
         raise InputError(

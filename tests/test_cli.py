@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 from pathlib import Path
 
 import pytest
@@ -120,3 +121,32 @@ def test_output_never_overwrites_the_input(cli, tmp_path: Path) -> None:
     r = cli("solve", str(path), "-o", str(path))
     assert r.code == 2 and "refusing to overwrite the input" in r.err
     assert path.read_text() == BASE
+
+
+def test_a_misspelled_bundled_name_gets_a_suggestion_not_the_whole_list(cli) -> None:
+    """Issue 15: a typo printed all the bundled names on one line."""
+    r = cli("solve", "notes-4c11-two-sphere")
+    assert r.code == 2 and r.err.count("\n") == 1
+    assert "did you mean notes-4c11-two-spheres?" in r.err
+    assert "aqa-fm-specimen" not in r.err  # not the list
+    r = cli("solve", "zzzz")
+    assert r.code == 2 and "'derive list' names them" in r.err
+
+
+@pytest.mark.parametrize(
+    ("name", "starts"), [("out.pdf", b"%PDF"), ("out.json", b"{"), ("out.tex", b"\\"), ("out.txt", b"#")]
+)
+def test_the_output_format_follows_the_extension(cli, tmp_path: Path, name: str, starts: bytes) -> None:
+    """Issue 15: -o out.pdf without --format wrote Markdown into out.pdf."""
+    if name.endswith(".pdf") and shutil.which("pdflatex") is None:
+        pytest.skip("no pdflatex")
+    out = tmp_path / name
+    r = cli("solve", "notes-4c11-two-spheres", "-o", str(out))
+    assert r.code == 0, r.err
+    assert out.read_bytes().lstrip().startswith(starts)
+
+
+def test_variants_of_a_chain_is_a_clear_error(cli, tmp_path: Path) -> None:
+    """Issue 15: an internal error (AttributeError: 'ChainProblem' object has no attribute 'vary')."""
+    r = cli("variants", "chain-aqa-m3-2007-collide-again", "--count", "2", "-o", str(tmp_path / "v"))
+    assert r.code == 2 and "is a chain" in r.err and "internal error" not in r.err

@@ -84,6 +84,10 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     from derive.writers.targets import GITHUB, TEX_DOCUMENT
     from derive.writers.view import environment, view
 
+    if getattr(problem, "kind", None) == "chain":
+        raise InputError(
+            "is a chain: derive draws variants of a single impact's [vary] table only", where=problem.path, field="kind"
+        )
     if not problem.vary:
         raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
     names = tuple(sorted(problem.vary))

@@ -66,10 +66,11 @@ def find(path: str | Path) -> Path:
         bundled = resources.bundled()
         if path in bundled:
             return bundled[path]
-        raise InputError(
-            f"no such file, and no bundled problem of that name (try 'derive list'); bundled: {', '.join(bundled)}",
-            where=str(path),
-        )
+        import difflib
+
+        close = difflib.get_close_matches(path, list(bundled), n=3, cutoff=0.6)
+        hint = f"did you mean {' or '.join(close)}?" if close else "'derive list' names them"
+        raise InputError(f"no such file, and no bundled problem of that name; {hint}", where=str(path))
     return p
 
 
