@@ -150,3 +150,15 @@ def test_variants_of_a_chain_is_a_clear_error(cli, tmp_path: Path) -> None:
     """Issue 15: an internal error (AttributeError: 'ChainProblem' object has no attribute 'vary')."""
     r = cli("variants", "chain-aqa-m3-2007-collide-again", "--count", "2", "-o", str(tmp_path / "v"))
     assert r.code == 2 and "is a chain" in r.err and "internal error" not in r.err
+
+
+def test_a_missing_given_names_the_key_that_looks_like_it(cli, tmp_path: Path) -> None:
+    """Issue 15: a typo inside [given] (v_b1) was reported as "v_B1 is missing" alone."""
+    path = tmp_path / "typo.toml"
+    path.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "2 kg"\nm_B = "3 kg"\ne = 0.5\nv_A1 = "4 m/s"\nv_b1 = "0 m/s"\n',
+        encoding="utf-8",
+    )
+    r = cli("solve", str(path))
+    assert r.code == 2 and r.err.count("\n") == 1
+    assert "v_B1: is missing" in r.err and "(the file gives v_b1: did you mean v_B1?)" in r.err

@@ -129,6 +129,15 @@ def _xy_components(b: str, by_name: Mapping[str, Given], ctx: Source, phi: sympy
     return Motion(b, n, t, x=vx, y=vy)
 
 
+def misspelt(name: str, by_name: Mapping[str, Any]) -> str:
+    """A note naming a given that looks like ``name`` mistyped (v_b1 for v_B1), or ''."""
+    import difflib
+
+    near = [k for k in by_name if k != name and k.lower() == name.lower()]
+    near = near or difflib.get_close_matches(name, [k for k in by_name if k != name], n=1, cutoff=0.8)
+    return f" (the file gives {near[0]}: did you mean {name}?)" if near else ""
+
+
 def _direct(b: str, tbl: Mapping[str, Any], by_name: Mapping[str, Given], ctx: Source) -> Motion:
     speed_name, n_name, t_name = f"v_{b}1", f"v_{b}1n", f"v_{b}1t"
     if n_name in by_name or t_name in by_name or set(DIRECTION) & set(tbl):
@@ -140,7 +149,9 @@ def _direct(b: str, tbl: Mapping[str, Any], by_name: Mapping[str, Given], ctx: S
         )
     if speed_name not in by_name:
         raise ctx.error(
-            f"is missing: give the velocity of {b} before the impact, signed along +n", section="given", key=speed_name
+            f"is missing: give the velocity of {b} before the impact, signed along +n{misspelt(speed_name, by_name)}",
+            section="given",
+            key=speed_name,
         )
     return Motion(b, by_name[speed_name].symbol, sympy.Integer(0))
 

@@ -18,7 +18,7 @@ import sympy
 
 from derive.problem import fields, units
 from derive.problem.givens import GRAVITY, build_givens, given_value, infer_system, quantity, read_assume
-from derive.problem.motion import geometry, motion
+from derive.problem.motion import geometry, misspelt, motion
 from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
 from derive.problem.source import Source
@@ -229,7 +229,7 @@ def _check_needs(by_name: Mapping[str, Given], kind: str, fixed_B: bool, ctx: So
             what = {"e": "the coefficient of restitution e"}.get(
                 need, f"the mass of {need[-1]} (or its weight W_{need[-1]})"
             )
-            raise ctx.error(f"is missing: give {what}", section="given", key=need)
+            raise ctx.error(f"is missing: give {what}{misspelt(need, by_name)}", section="given", key=need)
     post = POST[kind]
     for k in by_name:
         if k.startswith(("v_A2", "v_B2")) and k not in post:
