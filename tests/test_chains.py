@@ -281,3 +281,24 @@ def test_no_single_impact_problem_in_the_library_is_a_chain() -> None:
         stages = tomllib.loads(bundled()[stem].read_text(encoding="utf-8"))["stage"]
         physics = [s["type"] for s in stages if s["type"] in PHYSICS_STAGES]
         assert len(physics) >= 2, f"{stem} has one stage of physics ({physics}): state it as a problem file"
+
+
+@pytest.mark.parametrize("stem", sorted(s for s in bundled() if s.startswith("chain-")))
+def test_every_chain_has_an_html_page(stem: str) -> None:
+    """Issue 15: chains had no HTML. The page has each stage, each impact's own stages and
+    figures, every formula typeset (KaTeX: no TeX left outside its annotations), the results
+    carried on and the answers of the Markdown page."""
+    sol = solved(stem)
+    html = derive.render(sol, "html")
+    md = derive.render(sol, "md")
+    assert html.startswith("<!DOCTYPE html>") and html.rstrip().endswith("</html>")
+    for n in range(1, len(sol.problem.stages) + 1):
+        assert f"<h2>Stage {n}: " in html
+    assert html.count('<div class="figure"><svg') == md.count('<div align="center"><svg') > 0
+    shown = re.sub(r"<annotation.*?</annotation>", "", html, flags=re.S)
+    shown = re.sub(r"<script>.*?</script>|<style>.*?</style>", "", shown, flags=re.S)
+    assert "\\frac" not in shown and "\\mathrm" not in shown and "$" not in shown
+    assert html.count("Carried to the next stages") == md.count("Carried to the next stages")
+    answers = md[md.rindex("Answer") :].count(r"\boxed")
+    tail = html[html.rindex("<h2>Answer</h2>") :] if answers else ""
+    assert tail.count('class="eq"') == answers

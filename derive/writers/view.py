@@ -446,6 +446,68 @@ def _html(data: dict[str, Any]) -> str:
     )
 
 
+def _chain_html(data: dict[str, Any]) -> str:
+    """A chain's HTML page: every formula typeset by KaTeX, as :func:`_html` does for one impact."""
+    from derive.writers import katex as html_mod
+
+    items: list[tuple[str, bool]] = []
+
+    def slot(tex: str, display: bool) -> int:
+        items.append((tex, display))
+        return len(items) - 1
+
+    def slot_blocks(blocks: list[dict[str, Any]]) -> None:
+        for block in blocks:
+            block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"] or ()]
+            for line in block["lines"]:
+                line["slot"] = slot(_aligned(line), True)
+
+    def fill_blocks(blocks: list[dict[str, Any]]) -> None:
+        for block in blocks:
+            block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
+            for line in block["lines"]:
+                line["html"] = rendered[line.pop("slot")]
+
+    for g in data["givens"]:
+        g["slot"] = slot(g["latex"], False)
+    statement = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["statement"] or ()]
+    for st in data["stages"]:
+        if st["impact"]:
+            for g in st["givens"]:
+                g["slot"] = slot(g["latex"], False)
+            for sub in st["stages"]:
+                slot_blocks(sub["blocks"])
+            st["carried"] = [slot(c, False) for c in st["carried"]]
+        else:
+            slot_blocks(st["blocks"])
+    for line in data["answers"]:
+        line["slot"] = slot(_aligned(line), True)
+    rendered = html_mod.render_math(items)
+    if rendered is None:  # no Node.js: the page typesets itself, offline, with the inlined script
+        rendered = [
+            f'<span class="math{" display" if disp else ""}">{escape.html_text(tex)}</span>' for tex, disp in items
+        ]
+        script = html_mod.katex_script()
+    else:
+        script = ""
+    for g in data["givens"]:
+        g["html"] = rendered[g.pop("slot")]
+    data["statement"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in statement]
+    for st in data["stages"]:
+        if st["impact"]:
+            for g in st["givens"]:
+                g["html"] = rendered[g.pop("slot")]
+            for sub in st["stages"]:
+                sub["figure"] = sub.get("figure_svg", "")
+                fill_blocks(sub["blocks"])
+            st["carried"] = [rendered[c] for c in st["carried"]]
+        else:
+            fill_blocks(st["blocks"])
+    for line in data["answers"]:
+        line["html"] = rendered[line.pop("slot")]
+    return environment("md").get_template("chain.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+
+
 def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
     if not parts:
         return ""
@@ -701,7 +763,9 @@ def render(
             layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
             data = chain_view(solution, digits, figures, standalone=fmt == "tex", layout=layout)
             return environment("tex").get_template("chain.tex.j2").render(**data, **tex_vars)
-        raise InputError(f"a chain is written as md, tex, pdf or json, not {fmt}", field="--format")
+        if fmt == "html":
+            return _chain_html(chain_view(solution, digits, figures, layout=HTML))
+        raise InputError(f"a chain is written as md, tex, pdf, html or json, not {fmt}", field="--format")
     if fmt == "json":
         return to_json(solution, digits)
     if fmt not in FORMATS:
