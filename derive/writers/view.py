@@ -129,6 +129,14 @@ def worked_out(p: Any, values: Mapping[sympy.Symbol, sympy.Expr]) -> frozenset[s
     return frozenset(values) - written
 
 
+def _letters_of(p: Any, values: Mapping[sympy.Symbol, sympy.Expr]) -> frozenset[sympy.Symbol]:
+    """The givens kept as letters (u, m, e); in a chain's impact, also the chain's own
+    letters its givens are defined from (m_A = m, v_A1 = u_B) that have no number yet."""
+    own = {g.symbol for g in p.givens if g.value is None and not g.unknown}
+    outer = set().union(*(g.definition.free_symbols for g in p.givens if g.definition is not None))
+    return frozenset(own | {s for s in outer if not getattr(values.get(s), "is_number", False)})
+
+
 def figure_entry(fig: figure.Figure) -> dict[str, str]:
     """A stage's figure as the templates take it: SVG and TikZ, the caption, and the note
     Markdown and LaTeX print under it when an arrow is drawn longer than to scale."""
@@ -311,6 +319,7 @@ def view(
     varied: frozenset[sympy.Symbol] = frozenset(),
     layout: Layout = GITHUB,
     outer_letters: dict[sympy.Symbol, str] | None = None,
+    outer_decimal: frozenset[sympy.Symbol] = frozenset(),
     falls: bool = False,
     known: dict[sympy.Symbol, sympy.Expr] | None = None,
     plot: bool = False,
@@ -335,8 +344,8 @@ def view(
         varied=varied,
         slots=slots,
         strike=layout.strike,
-        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
-        letters=frozenset(g.symbol for g in p.givens if g.value is None and not g.unknown) - varied,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal) | outer_decimal,
+        letters=_letters_of(p, solution.values) - varied,
         letter_units={**(outer_letters or {}), **letter_units(p)},
         labels=p.labels,
         derived=worked_out(p, solution.values),
@@ -619,7 +628,8 @@ def chain_view(
                 style.digits,
                 figures=figures,
                 layout=layout,
-                outer_letters=letter_units(p),
+                outer_letters={**letter_units(p), **_result_units(sol)},
+                outer_decimal=frozenset(g.symbol for g in p.givens if g.decimal),  # g = 9.8: 6.26 e, not 14√5/5 e
                 falls=falls.get(st.number, False),
                 known=sol.values,
             )
@@ -869,6 +879,17 @@ def plain_answers(solution: Solution) -> list[str]:
             unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
             out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
     return out
+
+
+def _result_units(sol: Any) -> dict[sympy.Symbol, str]:
+    """The unit of each result of a chain (u_B in m/s), for an impact that keeps it a letter
+    (its value waits on an unknown a later stage finds)."""
+    by_name = {getattr(s, "name", ""): s for s in sol.values}
+    return {
+        by_name.get(name, symbol(name)): r.unit
+        for name, r in sol.results.items()
+        if getattr(r, "unit", None) and r.unit != "deg"
+    }
 
 
 def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
