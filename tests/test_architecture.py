@@ -23,7 +23,7 @@ LAYERS = (
     ("derive.steps",),
     ("derive.writers",),
     ("derive.checking", "derive.homework", "derive.verifier"),
-    ("derive.display", "derive.cli", "derive.__main__", "derive"),
+    ("derive.display", "derive.commands", "derive.cli", "derive.__main__", "derive"),
 )
 
 
