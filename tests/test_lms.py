@@ -110,7 +110,7 @@ def test_moodle_xml_has_the_common_mistakes_as_wrong_answers(moodle: str) -> Non
             assert abs(x - r) > tol  # never a right answer marked wrong
             assert Decimal(_text(a, "tolerance")) > 0
             feedback = _text(a, "feedback/text")
-            assert feedback.strip() and any(lms._esc(h) in feedback for h in hints)
+            assert feedback.strip() and any(lms.esc(h) in feedback for h in hints)
         total += len(wrong)
     assert total >= COUNT
 
@@ -241,7 +241,7 @@ def test_prairielearn_statement_as_one_parameter_when_no_template(
     compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str, tmp_path: Path, monkeypatch
 ) -> None:
     """A statement with a number that is no varied given's goes whole into the params."""
-    monkeypatch.setattr(lms, "_statement_template", lambda compiled: None)
+    monkeypatch.setattr(lms.pl, "_statement_template", lambda compiled: None)
     lms.prairielearn(compiled, chosen[:2], tmp_path, result=RESULT)
     assert "{{{params.derive_statement}}}" in (tmp_path / "question.html").read_text()
     data: dict = {"variant_seed": 1}

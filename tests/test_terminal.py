@@ -122,7 +122,7 @@ def test_a_bad_timeout_is_a_usage_error(cli, value: str) -> None:
 
 
 def test_every_command_has_a_budget() -> None:
-    commands = next(a for a in cli_module._parser()._actions if a.dest == "command").choices
+    commands = next(a for a in cli_module.build_parser()._actions if a.dest == "command").choices
     assert set(cli_module.TIME_BUDGETS) == set(commands) == {"solve", "check", "list", "variants", "handout", "plot"}
     assert all(0 < s <= 600 for s in cli_module.TIME_BUDGETS.values())
 

@@ -92,122 +92,141 @@ def _one_body(body: str, force: str, m: sympy.Symbol, before: sympy.Symbol, afte
 
 def sections() -> tuple[Section, ...]:
     """The page, in the order of the notes."""
-    return (
-        Section(
-            "",
-            (
-                Block(
-                    (
-                        "An impact is a collision with large contact forces acting over a very short time. The plane "
-                        "of contact is tangent to the contact surfaces of A and B; the line of impact is normal to it; "
-                        "in a central impact it passes through the mass centres of both bodies. Axes: ",
-                        Math(symbol("n")),
-                        " along the line of impact, positive from the centre of A toward the centre of B; ",
-                        Math(symbol("t")),
-                        " in the plane of contact. Index 1 means immediately before the impact, 2 immediately after (",
-                        Math(v["A1n"]),
-                        ": the n component of the velocity of A before the impact).",
-                    )
-                ),
-            ),
-        ),
-        Section(
-            "Three systems: A alone, B alone, A and B together",
-            table=(
-                (("System",), ("along n",), ("along t",)),
-                (("A alone",), ("not conserved: ", _raw(r"\Sigma F_n = F_{AB}")), ("conserved: (1)",)),
-                (("B alone",), ("not conserved: ", _raw(r"\Sigma F_n = -F_{AB}")), ("conserved: (2)",)),
-                (("A + B together",), ("conserved: (3)",), ("conserved, the sum of (1) and (2)",)),
-            ),
-            columns=(
-                _one_body("A", r"F_{AB}", m_A, v["A1t"], v["A2t"], "1"),
-                _one_body("B", r"-F_{AB}", m_B, v["B1t"], v["B2t"], "2"),
-            ),
-            blocks=(
-                Block(
-                    (
-                        "System A + B: ",
-                        _raw(r"\Sigma F_n = 0"),
-                        " (the contact forces are internal to it):",
-                    ),
-                    (EQUATION_LINES[3],),
-                ),
-            ),
-        ),
-        Section(
-            "Coefficient of restitution",
-            (
-                Block(
-                    (
-                        "Equation (3) has two unknowns, ",
-                        Math(v["A2n"]),
-                        " and ",
-                        Math(v["B2n"]),
-                        ". The coefficient of restitution ",
-                        Math(e),
-                        ", the ratio of the restoration impulse to the deformation impulse, gives the other: the "
-                        "relative velocity of separation over that of approach,",
-                    ),
-                    (EQUATION_LINES[4],),
-                ),
-                Block(
-                    (
-                        _raw(r"0 \le e \le 1"),
-                        ": ",
-                        Math(sympy.Eq(e, 1)),
-                        " perfectly elastic, ",
-                        Math(sympy.Eq(e, 0)),
-                        " perfectly plastic (the bodies move on together). An impact needs approach: ",
-                        Math(sympy.StrictGreaterThan(_APPROACH, 0)),
-                        ".",
-                    )
-                ),
-            ),
-        ),
-        Section(
-            "Summary: central impact",
-            (
-                Block(
-                    (
-                        "Four equations for the four unknowns ",
-                        Math(v["A2t"]),
-                        ", ",
-                        Math(v["B2t"]),
-                        ", ",
-                        Math(v["A2n"]),
-                        ", ",
-                        Math(v["B2n"]),
-                        ":",
-                    ),
-                    tuple(EQUATION_LINES[k] for k in (1, 2, 3, 4)),
-                ),
-            ),
-        ),
-        Section(
-            "Remarks",
-            items=(
+    return (_impact(), _three_systems(), _restitution(), _summary(), _remarks())
+
+
+def _impact() -> Section:
+    """The opening: impact, the plane of contact, the line of impact, the axes."""
+    return Section(
+        "",
+        (
+            Block(
                 (
-                    "Impulsive forces are large in magnitude and short in duration. Reaction forces (of a wall, a "
-                    "floor, a support) can be impulsive; spring and gravitational forces are not.",
-                ),
-                ("Define the n–t axes clearly at the beginning of every solution.",),
-                ("The restitution equation (4) is valid only for the velocity components along the line of impact.",),
+                    "An impact is a collision with large contact forces acting over a very short time. The plane "
+                    "of contact is tangent to the contact surfaces of A and B; the line of impact is normal to it; "
+                    "in a central impact it passes through the mass centres of both bodies. Axes: ",
+                    Math(symbol("n")),
+                    " along the line of impact, positive from the centre of A toward the centre of B; ",
+                    Math(symbol("t")),
+                    " in the plane of contact. Index 1 means immediately before the impact, 2 immediately after (",
+                    Math(v["A1n"]),
+                    ": the n component of the velocity of A before the impact).",
+                )
+            ),
+        ),
+    )
+
+
+def _three_systems() -> Section:
+    """The three systems (A, B, A and B together) and what each conserves."""
+    return Section(
+        "Three systems: A alone, B alone, A and B together",
+        table=(
+            (("System",), ("along n",), ("along t",)),
+            (("A alone",), ("not conserved: ", _raw(r"\Sigma F_n = F_{AB}")), ("conserved: (1)",)),
+            (("B alone",), ("not conserved: ", _raw(r"\Sigma F_n = -F_{AB}")), ("conserved: (2)",)),
+            (("A + B together",), ("conserved: (3)",), ("conserved, the sum of (1) and (2)",)),
+        ),
+        columns=(
+            _one_body("A", r"F_{AB}", m_A, v["A1t"], v["A2t"], "1"),
+            _one_body("B", r"-F_{AB}", m_B, v["B1t"], v["B2t"], "2"),
+        ),
+        blocks=(
+            Block(
                 (
-                    "Mechanical energy is not conserved during an impact (unless ",
+                    "System A + B: ",
+                    _raw(r"\Sigma F_n = 0"),
+                    " (the contact forces are internal to it):",
+                ),
+                (EQUATION_LINES[3],),
+            ),
+        ),
+    )
+
+
+def _restitution() -> Section:
+    """The coefficient of restitution, equation (4)."""
+    return Section(
+        "Coefficient of restitution",
+        (
+            Block(
+                (
+                    "Equation (3) has two unknowns, ",
+                    Math(v["A2n"]),
+                    " and ",
+                    Math(v["B2n"]),
+                    ". The coefficient of restitution ",
+                    Math(e),
+                    ", the ratio of the restoration impulse to the deformation impulse, gives the other: the "
+                    "relative velocity of separation over that of approach,",
+                ),
+                (EQUATION_LINES[4],),
+            ),
+            Block(
+                (
+                    _raw(r"0 \le e \le 1"),
+                    ": ",
                     Math(sympy.Eq(e, 1)),
-                    "): do not use the work–energy equation across an impact.",
-                ),
+                    " perfectly elastic, ",
+                    Math(sympy.Eq(e, 0)),
+                    " perfectly plastic (the bodies move on together). An impact needs approach: ",
+                    Math(sympy.StrictGreaterThan(_APPROACH, 0)),
+                    ".",
+                )
+            ),
+        ),
+    )
+
+
+def _summary() -> Section:
+    """The four equations for the four unknowns."""
+    return Section(
+        "Summary: central impact",
+        (
+            Block(
                 (
-                    "Direct impact: the velocities lie along n, and (1), (2) drop out. Oblique impact: resolve each "
-                    "velocity into n and t first; after the impact, ",
-                    Math(sympy.Eq(_s("theta_A2"), sympy.atan(v["A2n"] / v["A2t"]), evaluate=False)),
-                    " from the plane of contact.",
+                    "Four equations for the four unknowns ",
+                    Math(v["A2t"]),
+                    ", ",
+                    Math(v["B2t"]),
+                    ", ",
+                    Math(v["A2n"]),
+                    ", ",
+                    Math(v["B2n"]),
+                    ":",
                 ),
-                (
-                    "A fixed surface (a wall, the floor) is a body B of infinite mass at rest: (4) gives ",
-                    Math(sympy.Eq(v["A2n"], sympy.Mul(-1, e, v["A1n"], evaluate=False), evaluate=False)),
-                    ", and (3) does not apply.",
-                ),
+                tuple(EQUATION_LINES[k] for k in (1, 2, 3, 4)),
+            ),
+        ),
+    )
+
+
+def _remarks() -> Section:
+    """The remarks at the end of the notes."""
+    return Section(
+        "Remarks",
+        items=(
+            (
+                "Impulsive forces are large in magnitude and short in duration. Reaction forces (of a wall, a "
+                "floor, a support) can be impulsive; spring and gravitational forces are not.",
+            ),
+            ("Define the n–t axes clearly at the beginning of every solution.",),
+            ("The restitution equation (4) is valid only for the velocity components along the line of impact.",),
+            (
+                "Mechanical energy is not conserved during an impact (unless ",
+                Math(sympy.Eq(e, 1)),
+                "): do not use the work–energy equation across an impact.",
+            ),
+            (
+                "Direct impact: the velocities lie along n, and (1), (2) drop out. Oblique impact: resolve each "
+                "velocity into n and t first; after the impact, ",
+                Math(sympy.Eq(_s("theta_A2"), sympy.atan(v["A2n"] / v["A2t"]), evaluate=False)),
+                " from the plane of contact.",
+            ),
+            (
+                "A fixed surface (a wall, the floor) is a body B of infinite mass at rest: (4) gives ",
+                Math(sympy.Eq(v["A2n"], sympy.Mul(-1, e, v["A1n"], evaluate=False), evaluate=False)),
+                ", and (3) does not apply.",
             ),
         ),
     )

@@ -37,21 +37,44 @@ class Result:
 
 
 def results(imp: Impact) -> dict[str, Result]:
-    p, nm = imp.problem, imp.names
-    out: dict[str, Result] = {}
-    unit_v = working_unit(p, "velocity")
-    solved = dict(imp.closed)
-    varied = {g.symbol for g in p.givens if g.name in p.vary}
+    """Every result of the impact, in order: unknowns named in the file, velocities after
+    the impact (and their speeds and directions), kinetic energies, the impulse, and the
+    quantities the file defines from them."""
+    r = _Collector(imp)
+    for g in r.p.givens:
+        if g.unknown:
+            r.add(g.name, r.solved[g.symbol], g.unit, f"{g.name}, unknown in the file", degrees=g.unit == "deg")
+    _velocities(r)
+    m_A, m_B = _masses(r)
+    _energies(r, m_A, m_B)
+    nm, p = imp.names, r.p
+    J = -m_A * (r.full(nm.A2n) - r.full(nm.A1n))
+    r.add("J_n", sympy.factor_terms(J), working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
+    for d in p.asks.defined:  # quantities the file defines from the results (F_avg = J_n/dt)
+        closed = d.expr.xreplace({res.symbol: res.closed for res in r.out.values()})
+        r.add(d.name, closed, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
+    return r.out
 
-    def full(expr: sympy.Expr) -> sympy.Expr:
+
+class _Collector:
+    """The results of one impact as they are worked out, in order."""
+
+    def __init__(self, imp: Impact) -> None:
+        self.imp, self.p = imp, imp.problem
+        self.out: dict[str, Result] = {}
+        self.solved = dict(imp.closed)
+        self.varied = {g.symbol for g in self.p.givens if g.name in self.p.vary}
+
+    def full(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
-        return imp.in_givens(expr).xreplace(solved)
+        return self.imp.in_givens(expr).xreplace(self.solved)
 
-    def add(name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
-        partial = evaluate(closed, p)
+    def add(self, name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
+        """A result from its closed form: evaluated, simplified where symbols stay, in degrees for an angle."""
+        partial = evaluate(closed, self.p)
         # simplify what stays symbolic for the reader; a homework variant's givens are
         # numbers later, so their expressions need no simplifying
-        if partial.free_symbols - varied and sympy.count_ops(partial) < 150:
+        if partial.free_symbols - self.varied and sympy.count_ops(partial) < 150:
             partial = sympy.simplify(partial)
         if degrees and partial.free_symbols and isinstance(partial, sympy.atan2):
             partial = _atan2_number(*partial.args)
@@ -60,49 +83,64 @@ def results(imp: Impact) -> dict[str, Result]:
             value = partial * 180 / sympy.pi if degrees else partial
         elif degrees:
             partial = partial * 180 / sympy.pi
-        out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
+        self.out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
 
-    for g in p.givens:
-        if g.unknown:
-            add(g.name, solved[g.symbol], g.unit, f"{g.name}, unknown in the file", degrees=g.unit == "deg")
-    if p.oblique:
-        comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
-        for name, s_ in comps.items():
-            body, axis = name[2], name[-1]
-            add(name, full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
+
+def _velocities(r: _Collector) -> None:
+    """The velocities after the impact: along n (direct), or by components with speeds and
+    directions (oblique), and in x and y where the line of impact is at an angle phi."""
+    p, nm = r.p, r.imp.names
+    unit_v = working_unit(p, "velocity")
+    if not p.oblique:
+        r.add("v_A2", r.full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
+        if not p.fixed_B:
+            r.add("v_B2", r.full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
+        return
+    comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
+    for name, s_ in comps.items():
+        body, axis = name[2], name[-1]
+        r.add(name, r.full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
+    for b in "AB":
+        if b == "B" and p.fixed_B:
+            continue
+        n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+        r.add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
+        ang = _angle(n, t, p)
+        if ang is not None:
+            r.add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
+            r.add(
+                f"beta_{b}2",
+                sympy.atan2(t, n),
+                "deg",
+                f"direction of {b} after the impact, from +n toward +t",
+                degrees=True,
+            )
+    if p.phi is not None:
         for b in "AB":
             if b == "B" and p.fixed_B:
                 continue
-            n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
-            add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
-            ang = _angle(n, t, p)
-            if ang is not None:
-                add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
-                add(
-                    f"beta_{b}2",
-                    sympy.atan2(t, n),
-                    "deg",
-                    f"direction of {b} after the impact, from +n toward +t",
-                    degrees=True,
-                )
-        if p.phi is not None:
-            for b in "AB":
-                if b == "B" and p.fixed_B:
-                    continue
-                n, t = full(comps[f"v_{b}2n"]), full(comps[f"v_{b}2t"])
-                c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
-                add(f"v_{b}2x", n * c - t * s_, unit_v, f"velocity of {b} after the impact, x component")
-                add(f"v_{b}2y", n * s_ + t * c, unit_v, f"velocity of {b} after the impact, y component")
-    else:
-        add("v_A2", full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
-        if not p.fixed_B:
-            add("v_B2", full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
+            n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+            c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
+            r.add(f"v_{b}2x", n * c - t * s_, unit_v, f"velocity of {b} after the impact, x component")
+            r.add(f"v_{b}2y", n * s_ + t * c, unit_v, f"velocity of {b} after the impact, y component")
+
+
+def _masses(r: _Collector) -> tuple[sympy.Expr, sympy.Expr]:
+    """The masses in the givens (a fixed B: 0, it has no kinetic energy)."""
+    p = r.p
     ind = independent_map(p)
     sym = p.symbols()
-    m_A = full(sym["m_A"].xreplace(ind))
-    m_B = sympy.Integer(0) if p.fixed_B else full(sym["m_B"].xreplace(ind))
-    # Kinetic energy. Worked in the component symbols it is polynomial, so it
-    # factors quickly and exactly; then the givens go in. (A fixed B has none.)
+    m_A = r.full(sym["m_A"].xreplace(ind))
+    m_B = sympy.Integer(0) if p.fixed_B else r.full(sym["m_B"].xreplace(ind))
+    return m_A, m_B
+
+
+def _energies(r: _Collector, m_A: sympy.Expr, m_B: sympy.Expr) -> None:
+    """The kinetic energies before and after the impact, and the energy lost.
+
+    Worked in the component symbols the loss is polynomial, so it factors quickly and
+    exactly; then the givens go in."""
+    p, nm, imp = r.p, r.imp.names, r.imp
     sq = {}
     for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
         n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
@@ -110,10 +148,10 @@ def results(imp: Impact) -> dict[str, Result]:
         pre_sq = n1**2 + (t1**2 if p.oblique else 0)
         post_sq = n2**2 + (t2**2 if p.oblique else 0)
         speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
-        sq[b] = (pre_sq, post_sq, full(speed_sq))
+        sq[b] = (pre_sq, post_sq, r.full(speed_sq))
     unit_T = working_unit(p, "energy")
     T1 = HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2]
-    T2 = HALF * m_A * full(sq["A"][1]) + HALF * m_B * full(sq["B"][1])
+    T2 = HALF * m_A * r.full(sq["A"][1]) + HALF * m_B * r.full(sq["B"][1])
     if imp.inverse:
         lost = T1 - T2
     else:
@@ -122,15 +160,9 @@ def results(imp: Impact) -> dict[str, Result]:
         lost = sympy.factor_terms(
             imp.in_givens(sympy.factor(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
         )
-    add("T_1", T1, unit_T, "kinetic energy before the impact")
-    add("T_2", T2, unit_T, "kinetic energy after the impact")
-    add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
-    J = -m_A * (full(nm.A2n) - full(nm.A1n))
-    add("J_n", sympy.factor_terms(J), working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
-    for d in p.asks.defined:  # quantities the file defines from the results (F_avg = J_n/dt)
-        closed = d.expr.xreplace({r.symbol: r.closed for r in out.values()})
-        add(d.name, closed, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
-    return out
+    r.add("T_1", T1, unit_T, "kinetic energy before the impact")
+    r.add("T_2", T2, unit_T, "kinetic energy after the impact")
+    r.add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
 
 
 def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:

@@ -112,91 +112,93 @@ def width_pt(latex: str, scale: float = 1.0, *, text: bool = False) -> float:
     """The estimated width in pt of ``latex`` set in display style at 10 pt."""
     w, i, operand_before = 0.0, 0, False
     while i < len(latex):
-        c = latex[i]
-        if c == "\\":
-            m = _NAME.match(latex, i)
-            assert m is not None
-            name, i = m.group(0), m.end()
-            if name in _SPACES:
-                w += _SPACES[name] * scale
-            elif name in _RELATIONS and not text:
-                w += _RELATIONS[name] * scale if scale == 1.0 else 7.78 * scale
-                operand_before = False
-                continue
-            elif name in _BINARY and not text:
-                w += (_BINARY[name] if operand_before and scale == 1.0 else 7.78) * scale
-                operand_before = False
-                continue
-            elif name in _OPERATORS:
-                w += (_OPERATORS[name] + 1.67) * scale
-            elif name in (r"\frac", r"\dfrac", r"\tfrac"):
-                top, i = _argument(latex, i)
-                bottom, i = _argument(latex, i)
-                inner = scale if name == r"\dfrac" or scale == 1.0 else scale * _SCRIPT
-                w += max(width_pt(top, inner), width_pt(bottom, inner)) + 2.4 * scale
-            elif name == r"\sqrt":
-                arg, i = _argument(latex, i)
-                w += width_pt(arg, scale) + 8.33 * scale
-            elif name in _TEXT:
-                arg, i = _argument(latex, i)
-                w += width_pt(arg, scale, text=True)
-            elif name == r"\boxed":
-                arg, i = _argument(latex, i)
-                w += width_pt(arg, scale) + 6.8 * scale
-            elif name in _KEEP_WIDTH:
-                arg, i = _argument(latex, i)
-                w += width_pt(arg, scale, text=text)
-            elif name in (r"\left", r"\right"):
-                if i < len(latex) and latex[i] == "\\":
-                    m2 = _NAME.match(latex, i)
-                    assert m2 is not None
-                    i = m2.end()
-                else:
-                    i += 1
-                rest = latex[i:] if name == r"\left" else latex[:i]
-                w += (5.8 if _tall(rest) else 3.89) * scale
-            elif name in (r"\begin", r"\end"):
-                _, i = _argument(latex, i)
-            elif name in _SYMBOLS:
-                w += _SYMBOLS[name] * scale
-            else:
-                w += 7.5 * scale  # a symbol not in the table
-            operand_before = True
-        elif c in "^_":
-            arg, i = _argument(latex, i + 1)
-            w += width_pt(arg, scale * _SCRIPT if scale == 1.0 else scale * 0.7 / 0.8)
-        elif c == "{":
-            arg, i = _group(latex, i)
-            w += width_pt(arg, scale, text=text)
-            operand_before = True
-        elif c == " ":
-            i += 1
-            w += 3.33 * scale if text else 0.0
-        elif c in "=<>" and not text:
-            i += 1
-            w += (13.33 if scale == 1.0 else 7.78) * scale
-            operand_before = False
-        elif c in "+-" and not text:
-            i += 1
-            w += (12.22 if operand_before and scale == 1.0 else 7.78) * scale
-            operand_before = False
-        elif c == "&":
-            i += 1
+        if latex[i] == "\\":
+            dw, i, operand_before = _command(latex, i, scale, text, operand_before)
+        else:
+            dw, i, operand_before = _character(latex, i, scale, text, operand_before)
+        w += dw
+    return w
+
+
+def _command(latex: str, i: int, scale: float, text: bool, operand_before: bool) -> tuple[float, int, bool]:
+    """The width of the command at ``i`` (with its arguments), where the text goes on, and
+    whether an operand is now before (a binary sign after it is spaced as one)."""
+    m = _NAME.match(latex, i)
+    assert m is not None
+    name, i = m.group(0), m.end()
+    if name in _RELATIONS and not text:
+        return (_RELATIONS[name] * scale if scale == 1.0 else 7.78 * scale), i, False
+    if name in _BINARY and not text:
+        return (_BINARY[name] if operand_before and scale == 1.0 else 7.78) * scale, i, False
+    w = 0.0
+    if name in _SPACES:
+        w = _SPACES[name] * scale
+    elif name in _OPERATORS:
+        w = (_OPERATORS[name] + 1.67) * scale
+    elif name in (r"\frac", r"\dfrac", r"\tfrac"):
+        top, i = _argument(latex, i)
+        bottom, i = _argument(latex, i)
+        inner = scale if name == r"\dfrac" or scale == 1.0 else scale * _SCRIPT
+        w = max(width_pt(top, inner), width_pt(bottom, inner)) + 2.4 * scale
+    elif name == r"\sqrt":
+        arg, i = _argument(latex, i)
+        w = width_pt(arg, scale) + 8.33 * scale
+    elif name in _TEXT:
+        arg, i = _argument(latex, i)
+        w = width_pt(arg, scale, text=True)
+    elif name == r"\boxed":
+        arg, i = _argument(latex, i)
+        w = width_pt(arg, scale) + 6.8 * scale
+    elif name in _KEEP_WIDTH:
+        arg, i = _argument(latex, i)
+        w = width_pt(arg, scale, text=text)
+    elif name in (r"\left", r"\right"):
+        if i < len(latex) and latex[i] == "\\":
+            m2 = _NAME.match(latex, i)
+            assert m2 is not None
+            i = m2.end()
         else:
             i += 1
-            if c in "()[]":
-                w += 3.89 * scale
-                operand_before = c in ")]"
-                continue
-            if c in ",.;:":
-                w += 2.78 * scale
-            elif c in "/|":
-                w += (5.0 if c == "/" else 2.78) * scale
-            elif c.isdigit():
-                w += 5.0 * scale
-            elif text:
-                w += _UPRIGHT.get(c, 5.0) * scale
-            else:
-                w += _ITALIC.get(c, 5.5) * scale
-            operand_before = True
-    return w
+        rest = latex[i:] if name == r"\left" else latex[:i]
+        w = (5.8 if _tall(rest) else 3.89) * scale
+    elif name in (r"\begin", r"\end"):
+        _, i = _argument(latex, i)
+    elif name in _SYMBOLS:
+        w = _SYMBOLS[name] * scale
+    else:
+        w = 7.5 * scale  # a symbol not in the table
+    return w, i, True
+
+
+def _character(latex: str, i: int, scale: float, text: bool, operand_before: bool) -> tuple[float, int, bool]:
+    """The width of what starts at ``i`` when it is not a command: a script, a group, a space,
+    a sign, a bracket or a letter; where the text goes on; whether an operand is now before."""
+    c = latex[i]
+    if c in "^_":
+        arg, i = _argument(latex, i + 1)
+        return width_pt(arg, scale * _SCRIPT if scale == 1.0 else scale * 0.7 / 0.8), i, operand_before
+    if c == "{":
+        arg, i = _group(latex, i)
+        return width_pt(arg, scale, text=text), i, True
+    i += 1
+    if c == " ":
+        return (3.33 * scale if text else 0.0), i, operand_before
+    if c in "=<>" and not text:
+        return (13.33 if scale == 1.0 else 7.78) * scale, i, False
+    if c in "+-" and not text:
+        return (12.22 if operand_before and scale == 1.0 else 7.78) * scale, i, False
+    if c == "&":
+        return 0.0, i, operand_before
+    if c in "()[]":
+        return 3.89 * scale, i, c in ")]"
+    if c in ",.;:":
+        w = 2.78 * scale
+    elif c in "/|":
+        w = (5.0 if c == "/" else 2.78) * scale
+    elif c.isdigit():
+        w = 5.0 * scale
+    elif text:
+        w = _UPRIGHT.get(c, 5.0) * scale
+    else:
+        w = _ITALIC.get(c, 5.5) * scale
+    return w, i, True

@@ -1,0 +1,71 @@
+"""``derive variants`` and ``derive handout``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from derive.commands.terminal import one_line
+from derive.errors import InputError
+
+
+def run_variants(args: argparse.Namespace) -> int:
+    """derive variants: the variants, their answer key, and the Moodle and PrairieLearn exports asked for."""
+    import derive
+    from derive.homework.variants import MAX_COUNT, write_variants
+
+    if not 1 <= args.count <= MAX_COUNT:
+        raise InputError(f"expected a count from 1 to {MAX_COUNT}", where="usage", field=f"--count {args.count}")
+    problem = derive.load(args.problem)
+    exports = None
+    if args.moodle or args.prairielearn:  # built first: a bad --result writes nothing
+        from derive.homework.lms import build_exports
+
+        exports = build_exports(
+            problem,
+            count=args.count,
+            seed=args.seed,
+            digits=args.digits,
+            result=args.result,
+            moodle=args.moodle,
+            prairielearn=args.prairielearn,
+        )
+    elif args.result:
+        raise InputError("--result is for --moodle or --prairielearn", where="usage")
+    failures = write_variants(
+        problem, args.output, count=args.count, seed=args.seed, fmt=args.format, digits=args.digits
+    )
+    if exports is not None:
+        exports.write(inputs=(Path(problem.path),))
+    for line in failures:
+        print(f"Error: {line}", file=sys.stderr)
+    return 1 if failures else 0
+
+
+def run_handout(args: argparse.Namespace) -> int:
+    """Write the handout; a problem that fails is left out and reported at the end (exit 1)."""
+    from derive.fileio import write_atomic
+    from derive.homework.handout import DEFAULT_TITLES, NoProblemsError, build_handout
+    from derive.homework.handout import FORMATS as HANDOUT_FORMATS
+
+    fmt = Path(args.output).suffix.lower().lstrip(".")
+    if fmt not in HANDOUT_FORMATS:
+        raise InputError(
+            "the extension sets the format: give -o FILE.pdf, FILE.tex or FILE.md", where="usage", field=args.output
+        )
+    title = args.title if args.title is not None else DEFAULT_TITLES[args.mode]
+    try:
+        data, failures = build_handout(
+            args.problems, title=title, theory=args.theory, mode=args.mode, fmt=fmt, digits=args.digits, plot=args.plot
+        )
+    except NoProblemsError as exc:
+        for failure in exc.failures:
+            print(f"Error: {one_line(failure.line())}", file=sys.stderr)
+        raise
+    write_atomic(args.output, data, inputs=tuple(Path(p) for p in args.problems if Path(p).is_file()))
+    for failure in failures:
+        print(f"Error: {one_line(failure.line())}", file=sys.stderr)
+    if failures:
+        print(f"Error: {len(failures)} of {len(args.problems)} problems left out of {args.output}", file=sys.stderr)
+    return 1 if failures else 0

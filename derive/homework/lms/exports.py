@@ -1,0 +1,54 @@
+"""What ``derive variants --moodle/--prairielearn`` writes, built in memory first."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from derive.errors import InputError
+from derive.homework.lms.files import Exports, folder_exports
+from derive.homework.lms.grading import resolve_result
+from derive.homework.lms.mistake_model import MistakeModel
+from derive.homework.lms.moodle import moodle_xml
+from derive.homework.lms.pl import prairielearn_files
+from derive.problem import Problem
+
+
+def build_exports(
+    problem: Problem,
+    *,
+    count: int,
+    seed: int,
+    digits: int | None = None,
+    result: str | None = None,
+    moodle: str | None = None,
+    prairielearn: str | None = None,
+) -> Exports:
+    """What ``derive variants --moodle/--prairielearn`` writes, built in memory first so
+    that a bad ``--result`` writes nothing. The variants are those ``write_variants``
+    draws for the same file and seed."""
+    from derive.homework.variants import compile_problem, draw
+
+    if moodle:
+        # the folder is made when the files are written (it may be the -o folder, not made yet)
+        parent = Path(moodle).parent
+        for folder in (parent, *parent.parents):
+            if folder.exists() and not folder.is_dir():
+                raise InputError("a folder on the way is a file", where=str(folder), field="--moodle")
+        if Path(moodle).is_dir():
+            raise InputError("is a folder, not a file", where=moodle, field="--moodle")
+    if prairielearn and Path(prairielearn).exists() and not Path(prairielearn).is_dir():
+        raise InputError("exists and is not a folder", where=prairielearn, field="--prairielearn")
+    compiled = compile_problem(problem, digits, "md")
+    chosen = draw(compiled, count, seed)
+    result = resolve_result(compiled, chosen, result, digits)
+    model = MistakeModel(compiled)  # shared: each variant's mistakes are worked out once
+    out = Exports([], [])
+    if moodle:
+        out.files.append((Path(moodle), moodle_xml(compiled, chosen, result=result, digits=digits, model=model)))
+        out.folders.append(Path(moodle).parent)
+    if prairielearn:
+        files = prairielearn_files(compiled, chosen, result=result, digits=digits, seed=seed, model=model)
+        pl = folder_exports(prairielearn, files)
+        out.files += pl.files
+        out.folders += pl.folders
+    return out

@@ -1,0 +1,135 @@
+"""Moodle XML: a category, then one numerical question per variant, with the worked solution
+as general feedback and the common mistakes' values as wrong answers with their hints."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from decimal import Decimal
+from pathlib import Path
+
+from derive.homework.lms.grading import Answer, asked_answer, resolve_result
+from derive.homework.lms.markup import clean_xml, esc, md_to_html, solution_md, statement_html, words
+from derive.homework.lms.mistake_model import MistakeModel, mistake_ranges
+from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
+from derive.symbols import latex_name
+
+#: Units a student may write instead of the one asked, with how many of them make one of it
+#: (Moodle converts a response in one of these by its multiplier).
+OTHER_UNITS: dict[str, tuple[tuple[str, Decimal], ...]] = {
+    "m/s": (("km/h", Decimal("3.6")), ("ft/s", 1 / Decimal("0.3048")), ("cm/s", Decimal(100))),
+    "ft/s": (("m/s", Decimal("0.3048")), ("mph", Decimal(3600) / 5280), ("in/s", Decimal(12))),
+    "J": (("kJ", Decimal("0.001")),),
+    "N·s": (("kg·m/s", Decimal(1)), ("kN·s", Decimal("0.001"))),
+}
+DEFAULT_GRADE = "1.0000000"
+PENALTY = "0.3333333"
+
+
+def _plain(d: Decimal) -> str:
+    text = format(d, "f")
+    return "0" if text.strip("-0.") == "" else text
+
+
+def _text(parent: ET.Element, tag: str, text: str, **attrs: str) -> ET.Element:
+    el = ET.SubElement(parent, tag, attrs)
+    ET.SubElement(el, "text").text = clean_xml(text)
+    return el
+
+
+def _ask(compiled: Compiled, answer: Answer) -> str:
+    """The sentence that says what to enter, as HTML."""
+    r = compiled.solution.results[answer.name]
+    unit = "degrees" if answer.unit == "deg" else answer.unit
+    where = f", in {esc(unit)}" if unit else ""
+    figs = answer.figures
+    return (
+        f"<p>Enter \\({latex_name(answer.name)}\\), the {esc(r.description)}{where}, "
+        f"to {figs} significant figure{'s' if figs != 1 else ''}.</p>"
+    )
+
+
+def _units(question: ET.Element, unit: str) -> None:
+    """Units optional (``showunits`` 0, ``unitgradingtype`` 0): the asked unit, or one of
+    :data:`OTHER_UNITS` that Moodle converts by its multiplier (units per asked unit)."""
+    ET.SubElement(question, "unitgradingtype").text = "0"
+    ET.SubElement(question, "unitpenalty").text = "0.1000000"
+    ET.SubElement(question, "showunits").text = "0" if unit else "3"
+    ET.SubElement(question, "unitsleft").text = "0"
+    if not unit:
+        return
+    units = ET.SubElement(question, "units")
+    names = [(unit, Decimal(1)), ("°", Decimal(1))] if unit == "deg" else [(unit, Decimal(1))]
+    for name, multiplier in [*names, *OTHER_UNITS.get(unit, ())]:
+        u = ET.SubElement(units, "unit")
+        ET.SubElement(u, "multiplier").text = (
+            _plain(multiplier.normalize()) if multiplier == 1 else f"{multiplier:.15g}"
+        )
+        ET.SubElement(u, "unit_name").text = name
+
+
+def problem_name(compiled: Compiled) -> str:
+    """The problem's name (else its file's stem) for categories, tags and uuids."""
+    p = compiled.problem
+    return p.name or Path(p.path).stem or "problem"
+
+
+def moodle_xml(
+    compiled: Compiled,
+    variants: list[Variant],
+    *,
+    result: str | None = None,
+    digits: int | None = None,
+    category: str | None = None,
+    with_mistakes: bool = True,
+    model: MistakeModel | None = None,
+) -> str:
+    """The variants as Moodle XML: a category, then one numerical question per variant.
+
+    ``category`` defaults to ``$course$/derive/<problem name>``; ``result`` to
+    :func:`default_result`. With ``with_mistakes`` each question also has the values
+    common mistakes give, as wrong answers whose feedback is the mistake's hint, in
+    the ranges of :func:`mistake_ranges` (``model``: a :class:`MistakeModel` to share).
+    """
+    result = resolve_result(compiled, variants, result, digits)
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    name = problem_name(compiled)
+    if category is None:
+        category = f"$course$/derive/{name}"
+    if not with_mistakes:
+        model = None
+    elif model is None:
+        model = MistakeModel(compiled)
+    quiz = ET.Element("quiz")
+    cat = ET.SubElement(quiz, "question", {"type": "category"})
+    _text(cat, "category", category)
+    _text(cat, "info", f"<p>{words(p.title)}: {len(variants)} variants drawn by derive.</p>", format="html")
+    width = max(2, len(str(len(variants))))
+    symbol = latex_name(result)
+    for v in variants:
+        page = fill(compiled, v, "md", digits)
+        right = asked_answer(result, answers(compiled, v, digits)[result], d)
+        q = ET.SubElement(quiz, "question", {"type": "numerical"})
+        _text(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
+        _text(q, "questiontext", statement_html(statement_only(page)) + "\n" + _ask(compiled, right), format="html")
+        _text(q, "generalfeedback", md_to_html(solution_md(page)), format="html")
+        ET.SubElement(q, "defaultgrade").text = DEFAULT_GRADE
+        ET.SubElement(q, "penalty").text = PENALTY
+        ET.SubElement(q, "hidden").text = "0"
+        unit = f" {right.unit}" if right.unit and right.unit != "deg" else ("°" if right.unit else "")
+        a = ET.SubElement(q, "answer", {"fraction": "100", "format": "moodle_auto_format"})
+        ET.SubElement(a, "text").text = _plain(right.value)
+        _text(a, "feedback", f"<p>Right: \\({symbol} = {esc(right.shown)}\\){esc(unit)}.</p>", format="html")
+        ET.SubElement(a, "tolerance").text = _plain(right.tolerance)
+        for r in mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []:
+            a = ET.SubElement(q, "answer", {"fraction": "0", "format": "moodle_auto_format"})
+            ET.SubElement(a, "text").text = _plain(r.center)
+            lead = (
+                "A common mistake gives this value." if len(r.wrong.hints) == 1 else "Common mistakes give this value."
+            )
+            body = "".join(f"<p>{esc(h)}</p>" for h in r.wrong.hints)
+            _text(a, "feedback", f"<p>{lead}</p>{body}", format="html")
+            ET.SubElement(a, "tolerance").text = _plain(r.half_width)
+        _units(q, right.unit)
+    ET.indent(quiz, space="  ")
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(quiz, encoding="unicode") + "\n"

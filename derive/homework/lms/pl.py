@@ -1,0 +1,224 @@
+"""A PrairieLearn question folder (``info.json``, ``question.html``, ``server.py``) whose
+``generate()`` picks one of derive's variants and whose ``grade()`` gives the mistakes' hints."""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import pprint
+import re
+import uuid
+from pathlib import Path
+
+from derive.fileio import dumps_json
+from derive.homework.lms.files import folder_exports
+from derive.homework.lms.grading import EDGE, asked_answer, resolve_result
+from derive.homework.lms.markup import SOLUTION, clean_xml, esc, md_to_html, solution_md, statement_html
+from derive.homework.lms.mistake_model import MistakeModel, hint_text, mistake_ranges
+from derive.homework.lms.moodle import problem_name
+from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
+from derive.symbols import latex_name
+
+TOPIC = "Central impact"
+
+_PARAM = "DRVPARAM{}X"
+
+
+def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, str]]] | None:
+    """The statement as HTML with ``{{params.NAME}}`` where each varied given's number
+    goes, and what each parameter is (given name, slot kind); None when the statement
+    holds a number that is not a varied given's."""
+    parts = compiled.templates.get("md")
+    if parts is None:
+        return None
+    by_symbol = {compiled.givens[n].symbol: n for n in compiled.names}
+    keys: dict[str, tuple[str, str]] = {}
+    out: list[str] = []
+    for part in parts:
+        if isinstance(part, str):
+            cut = part.find(SOLUTION)
+            out.append(part if cut < 0 else part[:cut])
+            if cut >= 0:
+                break
+            continue
+        slot = compiled.book.slots[part]
+        given = by_symbol.get(slot.expr)
+        if given is None or slot.kind not in ("given", "text"):
+            return None
+        key = given if slot.kind == "text" else f"derive_given_{given}"
+        keys[key] = (given, slot.kind)
+        out.append(_PARAM.format(list(keys).index(key)))
+    page = statement_html("".join(out))
+    page = re.sub(r"\{(?=\{)", "{ ", page)  # literal {{ in TeX is not Mustache
+    page = re.sub(r"\}(?=\})", "} ", page)
+    for i, key in enumerate(keys):
+        page = page.replace(_PARAM.format(i), "{{params." + key + "}}")
+    return page, keys
+
+
+def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
+    from derive.homework.variants import given_text
+
+    d = digits if digits is not None else compiled.problem.digits
+    out = {}
+    for key, (name, kind) in keys.items():
+        text = given_text(compiled.givens[name], variant.values[name], d)
+        out[key] = rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text
+    return out
+
+
+def _uuid(compiled: Compiled, result: str, seed: int | None, variants: list[Variant]) -> str:
+    if seed is None:  # the variants themselves stand for the seed
+        seed_text = hashlib.sha256(
+            repr([sorted((k, str(x)) for k, x in v.values.items()) for v in variants]).encode()
+        ).hexdigest()
+    else:
+        seed_text = str(seed)
+    return str(uuid.uuid5(uuid.NAMESPACE_URL, f"derive:{problem_name(compiled)}:seed={seed_text}:result={result}"))
+
+
+_SERVER = '''"""PrairieLearn question server, written by derive (derive variants --prairielearn).
+
+generate() gives each PrairieLearn variant one of the homework variants drawn by
+derive, by data["variant_seed"] modulo their number: the same numbers, answers and
+worked solutions as the answer key. Regenerate it with derive rather than edit it.
+"""
+
+TITLE = {title}
+RESULT = {result}
+VARIANTS = {variants}
+
+
+def generate(data):
+    variant = VARIANTS[int(data.get("variant_seed", 0)) % len(VARIANTS)]
+    data.setdefault("params", {{}}).update(variant["params"])
+    data.setdefault("correct_answers", {{}})[RESULT] = variant["answer"]
+
+
+def grade(data):
+    """A wrong answer near a value a common mistake gives gets that mistake's hint, in place
+    of pl-number-input's "does not have precision" message (which rtol="0" gives every
+    wrong answer); the score stays the element's."""
+    part = data.get("partial_scores", {{}}).get(RESULT)
+    if not part or part.get("score", 0) >= 1:
+        return
+    variant = VARIANTS[int(data.get("variant_seed", 0)) % len(VARIANTS)]
+    hint = None
+    try:
+        x = float(data["submitted_answers"][RESULT])
+    except (KeyError, TypeError, ValueError):
+        x = None
+    if x is not None:
+        for low, high, text in variant["mistakes"]:
+            if low <= x <= high:
+                hint = text
+                break
+    part["feedback"] = hint
+'''
+
+
+def prairielearn_files(
+    compiled: Compiled,
+    variants: list[Variant],
+    *,
+    result: str | None = None,
+    digits: int | None = None,
+    seed: int | None = None,
+    with_mistakes: bool = True,
+    model: MistakeModel | None = None,
+) -> dict[str, str]:
+    """The files of a PrairieLearn question (name -> text): info.json, question.html, server.py.
+
+    pl-number-input grades with ``rtol="0"`` and ``atol`` the tolerance, widened by
+    :data:`EDGE` so that the ends of the range are right in floating point; server.py's
+    ``grade()`` gives the mistakes' hints in the ranges Moodle uses."""
+    result = resolve_result(compiled, variants, result, digits)
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    if not with_mistakes:
+        model = None
+    elif model is None:
+        model = MistakeModel(compiled)
+    template = _statement_template(compiled)
+    rows = [_row(compiled, v, result, digits, d, template, model) for v in variants]
+    statement = template[0] if template is not None else "{{{params.derive_statement}}}"
+    question = _question_html(compiled, variants, result, digits, statement)
+    info = {
+        "uuid": _uuid(compiled, result, seed, variants),
+        "title": f"{p.title} ({result})",
+        "topic": TOPIC,
+        "tags": ["derive", p.kind, problem_name(compiled)],
+        "type": "v3",
+    }
+    server = _SERVER.format(
+        title=repr(p.title),
+        result=repr(result),
+        variants=pprint.pformat(rows, width=100, sort_dicts=False),
+    )
+    return {
+        "info.json": dumps_json(info),
+        "question.html": clean_xml(question),
+        "server.py": server,
+    }
+
+
+def _row(
+    compiled: Compiled,
+    v: Variant,
+    result: str,
+    digits: int | None,
+    d: int,
+    template: tuple[str, dict[str, tuple[str, str]]] | None,
+    model: MistakeModel | None,
+) -> dict:
+    """One variant as server.py's VARIANTS hold it: parameters, answer, mistakes' ranges."""
+    page = fill(compiled, v, "md", digits)
+    right = asked_answer(result, answers(compiled, v, digits)[result], d)
+    ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
+    if template is not None:
+        params = _params(compiled, v, template[1], digits)
+    else:
+        params = {"derive_statement": statement_html(statement_only(page))}
+    params.update(
+        {
+            "derive_variant": v.number,
+            "derive_figures": right.figures,
+            "derive_atol": float(right.tolerance + EDGE * max(abs(right.value), right.tolerance)),
+            "derive_solution": md_to_html(solution_md(page)),
+        }
+    )
+    mistake_rows = [[float(r.low), float(r.high), hint_text(r.wrong)] for r in ranges]
+    return {"number": v.number, "params": params, "answer": float(right.value), "mistakes": mistake_rows}
+
+
+def _question_html(compiled: Compiled, variants: list[Variant], result: str, digits: int | None, statement: str) -> str:
+    """question.html: the statement, what to enter, the number input and the solution panel."""
+    r = compiled.solution.results[result]
+    unit = answers(compiled, variants[0], digits)[result]["unit"] if variants else ""
+    unit_words = "degrees" if unit == "deg" else unit
+    where = f", in {esc(unit_words)}" if unit_words else ""
+    symbol = latex_name(result)
+    suffix = f' suffix="{html.escape("°" if unit == "deg" else unit)}"' if unit else ""
+    return (
+        "<pl-question-panel>\n"
+        f"{statement}\n"
+        f"<p>Enter \\({symbol}\\), the {esc(r.description)}{where}, "
+        "to {{params.derive_figures}} significant figures.</p>\n"
+        "</pl-question-panel>\n\n"
+        f'<pl-number-input answers-name="{html.escape(result)}" label="\\({symbol} =\\)"{suffix} '
+        'comparison="relabs" rtol="0" atol="{{params.derive_atol}}"></pl-number-input>\n\n'
+        "<pl-answer-panel>\n{{{params.derive_solution}}}\n</pl-answer-panel>\n"
+    )
+
+
+def prairielearn(
+    compiled: Compiled,
+    variants: list[Variant],
+    folder: str | Path,
+    *,
+    result: str | None = None,
+    digits: int | None = None,
+    seed: int | None = None,
+) -> None:
+    """Write a PrairieLearn question folder for the variants (each file atomically)."""
+    folder_exports(folder, prairielearn_files(compiled, variants, result=result, digits=digits, seed=seed)).write()

@@ -1,0 +1,162 @@
+"""A problem derived once with its varied givens symbolic, its page printed once with open
+numbers (slots), each slot, result and check compiled to a plain Python function."""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, replace
+
+import sympy
+
+from derive.errors import InputError
+from derive.physics.impact import independent_map
+from derive.problem import Given, Problem
+from derive.steps.model import Solution
+from derive.writers.printing import SlotBook
+
+_TOKEN = re.compile(r"DRVSLOT(\d+)X")
+
+#: Where a stage's figure ("before" or "after" the impact), and the note under it, go in
+#: a compiled page.
+FIGURE = "DRVFIGURE{}-{}-X"
+
+
+@dataclass(frozen=True)
+class Variant:
+    """One drawn variant: its number (1, 2, ...) and the varied givens' exact values."""
+
+    number: int
+    values: dict[str, sympy.Expr]
+
+
+@dataclass
+class Compiled:
+    """A problem derived once, ready to print any variant."""
+
+    problem: Problem
+    solution: Solution
+    names: tuple[str, ...]
+    givens: dict[str, Given]
+    templates: dict[str, list[str | int]]
+    book: SlotBook
+    slot_fn: object
+    claim_fns: dict[int, list[tuple[list[object], object]]]
+    result_fns: dict[str, object]
+    check_fn: object
+
+
+def _symbolic(problem: Problem) -> Problem:
+    """The problem with its varied givens (and givens defined from them) made symbolic."""
+    varied = set(problem.vary)
+    givens = []
+    changed: set[sympy.Symbol] = set()
+    for g in problem.givens:
+        if g.name in varied or (g.definition is not None and g.definition.free_symbols & changed):
+            g = replace(g, value=None)
+            changed.add(g.symbol)
+        givens.append(g)
+    return replace(problem, givens=tuple(givens))
+
+
+def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> object:
+    return sympy.lambdify(symbols, exprs, modules=["math"], cse=True)
+
+
+def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
+    """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
+    from derive.steps import solve
+    from derive.writers.targets import GITHUB, TEX_DOCUMENT
+    from derive.writers.view import environment, view
+
+    if getattr(problem, "kind", None) == "chain":
+        raise InputError(
+            "is a chain: derive draws variants of a single impact's [vary] table only", where=problem.path, field="kind"
+        )
+    if not problem.vary:
+        raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
+    names = tuple(sorted(problem.vary))
+    symbolic = _symbolic(problem)
+    solution = solve(symbolic)
+    givens = {g.name: g for g in problem.givens}
+    symbols = tuple(givens[n].symbol for n in names)
+    book = SlotBook()
+    layout = TEX_DOCUMENT if fmt in ("tex", "pdf") else GITHUB  # long lines on rows, as a solve's page
+    data = view(solution, digits, figures=False, slots=book, varied=frozenset(symbols), layout=layout)
+    for entry, stage in zip(data["stages"], solution.stages, strict=True):
+        if stage.figure is not None:  # each variant's own figure goes here when it is filled in
+            entry["figure_svg"] = entry["figure_tikz"] = FIGURE.format("", stage.figure)
+            entry["figure_note_html"] = entry["figure_note_tex"] = FIGURE.format("NOTE", stage.figure)
+    templates = {}
+    if fmt in ("md", "json"):
+        page = environment("md").get_template("solution.md.j2").render(**data)
+        templates["md"] = _split(page)
+    if fmt in ("tex", "pdf"):
+        page = environment("tex").get_template("solution.tex.j2").render(**data)
+        templates["tex"] = _split(page)
+    fixed = {k: v for k, v in symbolic.numeric().items()}
+    ind = independent_map(symbolic)
+
+    def prep(expr: sympy.Expr) -> sympy.Expr:
+        return sympy.sympify(expr).xreplace(ind).xreplace(fixed)
+
+    slot_fn = _lambdify(symbols, [prep(s.expr) for s in book.slots]) if book.slots else None
+    claim_fns = {
+        block: [
+            (_lambdify(symbols, [prep(t) for t in terms]), _lambdify(symbols, prep(total))) for terms, total in claims
+        ]
+        for block, claims in book.claims.items()
+    }
+    # a result that needs no varied given is a number already: ``value`` (an angle in degrees;
+    # its ``partial`` would be radians, atan2(x, 0) = pi/2)
+    results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
+    result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
+    check_fn = _checks(symbolic, symbols, results, prep)
+    return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn)
+
+
+def _split(page: str) -> list[str | int]:
+    parts: list[str | int] = []
+    pos = 0
+    for m in _TOKEN.finditer(page):
+        parts.append(page[pos : m.start()])
+        parts.append(int(m.group(1)))
+        pos = m.end()
+    parts.append(page[pos:])
+    return parts
+
+
+def _checks(problem: Problem, symbols: tuple[sympy.Symbol, ...], results: dict[str, sympy.Expr], prep) -> object:
+    """One function of the varied values that is True for a physical variant: the
+    bodies approach, e in [0, 1], masses positive, and the file's conditions hold."""
+    exprs = [prep(problem.motion_A.n - problem.motion_B.n)]
+    sym = problem.symbols()
+    lower = [(exprs[0], ">")]
+    for name in ("m_A", "m_B"):
+        if name in sym:
+            lower.append((prep(sym[name]), ">"))
+    e = prep(sym["e"])
+    lower += [(e, ">="), (1 - e, ">=")]
+    from derive.symbols import symbol
+
+    to_results = {symbol(n): prep(expr) for n, expr in results.items()}
+    for c in problem.conditions:
+        diff = prep(c.lhs.xreplace(to_results) - c.rhs.xreplace(to_results))
+        lower.append((diff if c.op in (">", ">=") else -diff, ">" if c.op in ("<", ">") else ">="))
+    fn = _lambdify(symbols, [x for x, _ in lower])
+    ops = [op for _, op in lower]
+
+    def ok(*args: float) -> bool:
+        try:
+            vals = fn(*args)
+        except (ZeroDivisionError, ValueError, OverflowError):
+            return False
+        for v, op in zip(vals, ops, strict=True):
+            v = complex(v)
+            if abs(v.imag) > 1e-12 or not math.isfinite(v.real):
+                return False
+            if (op == ">" and not v.real > 1e-12) or (op == ">=" and not v.real >= -1e-12):
+                return False
+        return True
+
+    return ok

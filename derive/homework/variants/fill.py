@@ -1,0 +1,238 @@
+"""A variant's page: the compiled page with its numbers, figures and optional lines filled
+in; its answers and givens; the statement alone."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from decimal import Decimal
+from typing import Any
+
+import sympy
+
+from derive.homework.variants.compile import FIGURE, Compiled, Variant
+from derive.numbers import format_number, format_places, places_that_add_up
+from derive.problem import Given
+from derive.problem.units import plain_unit
+from derive.writers.printing import SIDE_BEGIN, SIDE_END, adds_up, exact_latex, printed_number
+
+
+def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
+    """A varied given's value as its page prints it (an angle in degrees)."""
+    if g.unit == "deg":
+        return exact_latex(value * 180 / sympy.pi, digits, 1)
+    return exact_latex(value, digits, 1)
+
+
+def _places(claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int) -> int:
+    """Places after the point for a block, so that its sums add up (as printing does)."""
+    sums = []
+    for terms_fn, total_fn in claims:
+        terms = [Decimal(repr(float(t))) for t in terms_fn(*args)]
+        sums.append((terms, Decimal(repr(float(total_fn(*args))))))
+    # a compiled page shows every line, so a variant may carry up to three more places
+    return places_that_add_up(sums, digits, extra, more=3)
+
+
+def _allowed(x: float, digits: int | None, extra: int) -> int:
+    """Significant figures a number at ``digits`` (+``extra``) shows."""
+    return len(Decimal(format_number(Decimal(repr(float(x))), digits, extra=extra).split("e")[0]).as_tuple().digits)
+
+
+def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
+    if integers and abs(x) < 1e9:
+        for k in range(3):  # an exact short number (20, 7.5, 0.25), as a given is printed
+            scaled = x * 10**k
+            if abs(scaled - round(scaled)) < 1e-9 * max(1.0, abs(scaled)):
+                exact = Decimal(round(scaled)).scaleb(-k) if k else Decimal(round(x))
+                if k and len(exact.normalize().as_tuple().digits) > _allowed(x, digits, extra):
+                    break  # exact, but more figures than an intermediate shows: 857.3, not 857.25
+                return str(exact) if k else str(round(x))
+    d = Decimal(repr(float(x)))
+    if places is not None:  # the block's places, never more figures than the rule (-121.2, not -121.22)
+        return format_places(d, places, digits, extra)
+    text = format_number(d, digits, extra=extra)
+    if "e" in text:
+        mant, exp = text.split("e")
+        return rf"{mant} \times 10^{{{int(exp)}}}"
+    return text
+
+
+def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
+    """The worked solution of one variant, from the compiled page."""
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    args = [float(variant.values[n]) for n in compiled.names]
+    numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
+    places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
+    texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    angles = {compiled.givens[n].symbol for n in compiled.names if compiled.givens[n].unit == "deg"}
+    out = []
+    for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
+        if isinstance(part, str):
+            out.append(part)
+            continue
+        slot = compiled.book.slots[part]
+        kind = slot.kind
+        if kind in ("given", "text"):
+            text = texts[slot.expr]
+            if kind == "given" and slot.expr in angles:
+                text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
+            out.append(rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text)
+            continue
+        if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
+            text = texts[slot.expr]  # a given's own number, as written
+            neg = text.startswith("-")
+            role = kind.partition(":")[0] if ":" in kind else ""
+            if role.startswith("signed"):
+                out.append((" - " if neg else " + ") + text.lstrip("-"))
+            elif role.startswith("lead") or not neg:
+                out.append(text)
+            else:
+                out.append(rf"\left({text}\right)")
+            continue
+        x = complex(numbers[part]).real
+        role, _, what = kind.partition(":") if ":" in kind else ("", "", kind)
+        result = what == "result"
+        text = _number(abs(x) if role else x, d, slot.extra, not result, None if result else places.get(slot.block))
+        if role.endswith("coef") and text == "1":
+            text = ""
+        if role.startswith("signed"):
+            out.append((" - " if x < 0 else " + ") + text)
+        elif role.startswith("lead"):
+            out.append(("-" if x < 0 else "") + text)
+        else:
+            out.append(text)
+    page = _optional_sides(_optional_lines("".join(out), places))
+    return _figures(compiled, variant, page, fmt)
+
+
+def _figures(compiled: Compiled, variant: Variant, page: str, fmt: str) -> str:
+    """The variant's figures put in: drawn from its own numbers (the figure reads the
+    compiled solution's closed forms at them; no solve), each with its note, if any (a
+    line with an empty note is left out)."""
+    from derive.writers.view import figure_entry
+
+    tex = fmt in ("tex", "pdf")
+    for when in ("before", "after"):
+        if FIGURE.format("", when) not in page:
+            continue
+        entry = figure_entry(drawing(compiled, variant, when))
+        page = page.replace(FIGURE.format("", when), entry["figure_tikz" if tex else "figure_svg"])
+        note = entry["figure_note_tex" if tex else "figure_note_html"]
+        marker = FIGURE.format("NOTE", when)
+        page = page.replace(marker, note) if note else re.sub(rf"^.*{marker}.*\n", "", page, flags=re.M)
+    return page
+
+
+def drawing(compiled: Compiled, variant: Variant, when: str = "before") -> Any:
+    """One variant's figure (a :class:`derive.writers.figure.Figure`), before or after the impact."""
+    from derive.writers import figure
+
+    values = {compiled.givens[n].symbol: variant.values[n] for n in compiled.names}
+    return figure.describe(compiled.solution, when == "after", values=values)
+
+
+def _optional_lines(page: str, places: dict[int, int | None]) -> str:
+    """The page with each optional line (a sum shown term by term) kept where its block's
+    numbers add up at fixed places, and dropped with its display where they do not."""
+    from derive.writers.view import OPTIONAL_BEGIN, OPTIONAL_END
+
+    begin, end = re.escape(OPTIONAL_BEGIN), re.escape(OPTIONAL_END)
+
+    def drop(m: re.Match[str]) -> str:
+        return "" if places.get(int(m.group(1))) is None else m.group(0)
+
+    display = rf"(?:\$\$\n|\\begin\{{equation\*\}}\n){begin}(\d+)%.*?{end}.*?(?:\$\$\n\n|\\end\{{equation\*\}}\n)"
+    page = re.sub(display, drop, page, flags=re.S)
+    return re.sub(rf"{begin}\d+%(.*?){end}", r"\1", page, flags=re.S)
+
+
+_SIDE = re.compile(re.escape(SIDE_BEGIN) + r" = (.*?)" + re.escape(SIDE_END) + r" = ([^\n]*)")
+
+
+def _optional_sides(page: str) -> str:
+    """The page with each optional side (a sum shown term by term) kept where its numbers,
+    as this variant prints them, add up to the total after it, and dropped where not."""
+
+    def one(m: re.Match[str]) -> str:
+        terms, rest = m.group(1), m.group(2)
+        total = re.match(r"[^=]*?(?=\\ |\s*\\tag|\s*\}|\s*\\quad|\s*$)", rest)
+        lone = total is not None and printed_number(total.group(0)) is not None
+        keep = not lone or adds_up(terms, total.group(0))
+        return (f" = {terms}" if keep else "") + f" = {rest}"
+
+    return _SIDE.sub(one, page)
+
+
+def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:
+    """The answer key of one variant: each result's value, unit and shown text."""
+    p = compiled.problem
+    d = digits if digits is not None else p.digits
+    args = [float(variant.values[n]) for n in compiled.names]
+    out = {}
+    for name, fn in compiled.result_fns.items():
+        r = compiled.solution.results[name]
+        try:
+            value = complex(fn(*args))
+        except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+            continue
+        if abs(value.imag) > 1e-9 * max(1.0, abs(value.real)):
+            continue
+        x = value.real
+        out[name] = {
+            "value": x,
+            "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
+            "shown": format_number(Decimal(repr(x)), d),
+        }
+    return out
+
+
+def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
+    """The varied givens of a variant, in the problem's units (angles in degrees)."""
+    out = {}
+    for n in compiled.names:
+        g = compiled.givens[n]
+        v = variant.values[n]
+        value = float(v * 180 / sympy.pi) if g.unit == "deg" else float(v)
+        out[n] = {"value": value, "unit": "deg" if g.unit == "deg" else plain_unit(g.unit)}
+    return out
+
+
+#: The line a LaTeX page has where its solution starts (templates/problem-body.tex.j2).
+TEX_SOLUTION = "% derive: the solution\n"
+
+
+def statement_only(page: str, figure: str = "") -> str:
+    """The part of a worked page a student gets: up to the solution (Markdown, or a
+    LaTeX document, which is then closed), without the Source line (citations quote
+    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find."""
+    if TEX_SOLUTION in page:
+        head = page[: page.index(TEX_SOLUTION)]
+        head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
+        shown = f"\n\n\\begin{{center}}\n{figure}\n\\end{{center}}" if figure else ""
+        return head.rstrip() + shown + "\n\n\\end{document}\n"
+    cut = page.find("**Solution.**")
+    head = page if cut < 0 else page[:cut]
+    head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
+    shown = f'\n\n<div align="center">{figure}</div>' if figure else ""
+    return head.rstrip() + shown + "\n"
+
+
+def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
+    """A variant's figure before the impact (which way +n points, its own speeds) as SVG
+    or (tex, pdf) TikZ, for the student's statement; empty when its page has none."""
+    if not any(s.figure == "before" for s in compiled.solution.stages):
+        return ""
+    from derive.writers import figure
+
+    drawn = drawing(compiled, variant, "before")
+    return figure.to_tikz(drawn) if fmt in ("tex", "pdf") else figure.to_svg(drawn)
+
+
+def iterate(
+    compiled: Compiled, variants: list[Variant], fmt: str = "md", digits: int | None = None
+) -> Iterator[tuple[Variant, str]]:
+    """Each variant with its page, one at a time (nothing kept in memory)."""
+    for v in variants:
+        yield v, fill(compiled, v, fmt, digits)

@@ -1,0 +1,62 @@
+"""LaTeX for the mathematics of a solution: SymPy's printer, set up for the notes.
+
+A :class:`StepPrinter` prints symbols with the notes' names, numbers at the
+problem's significant figures, a given's number in place of its symbol on a
+substitution line, struck-out (cancelled) masses, and sums in the order the
+equations were written. Renderers call :func:`latex_eqn` and
+:func:`latex_inline`; no LaTeX string is patched afterwards.
+"""
+
+from __future__ import annotations
+
+from derive.writers.printing.expressions import (
+    latex_expr,
+    latex_inline,
+    latex_side,
+    latex_terms,
+    side_terms,
+    values_map,
+)
+from derive.writers.printing.numerals import (
+    SIDE_BEGIN,
+    SIDE_END,
+    adds_up,
+    exact_latex,
+    number_latex,
+    power_latex,
+    printed_number,
+)
+from derive.writers.printing.printer import StepPrinter, is_negative_term, join_terms, negate, substitute
+from derive.writers.printing.rows import IMPLIES, Row, block_style, latex_eqn, latex_rows
+from derive.writers.printing.style import Slot, SlotBook, Style
+from derive.writers.printing.units import unit_latex
+
+__all__ = [
+    "IMPLIES",
+    "SIDE_BEGIN",
+    "SIDE_END",
+    "Row",
+    "Slot",
+    "SlotBook",
+    "StepPrinter",
+    "Style",
+    "adds_up",
+    "block_style",
+    "exact_latex",
+    "is_negative_term",
+    "join_terms",
+    "latex_eqn",
+    "latex_expr",
+    "latex_inline",
+    "latex_rows",
+    "latex_side",
+    "latex_terms",
+    "negate",
+    "number_latex",
+    "power_latex",
+    "printed_number",
+    "side_terms",
+    "substitute",
+    "unit_latex",
+    "values_map",
+]
