@@ -155,7 +155,7 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     again = tmp_path / "again"
     assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
     assert (again / "key.json").read_text() == (out / "key.json").read_text()
-    r = cli("variants", "notes-4c12-cue-ball", "--count", "2", "-o", str(tmp_path / "x"))
+    r = cli("variants", "openstax-cp-8-train-cars-couple", "--count", "2", "-o", str(tmp_path / "x"))
     assert r.code == 2 and "[vary]" in r.err
 
 
@@ -199,3 +199,81 @@ def test_each_variant_is_drawn_with_its_own_numbers(cli, tmp_path: Path) -> None
     assert cli("variants", "notes-4c11-two-spheres", "--count", "1", "-f", "tex", "-o", str(tex)).code == 0
     assert (tex / "variant-01.tex").read_text(encoding="utf-8").count(r"\begin{tikzpicture}") == 2
     assert (tex / "variant-01-problem.tex").read_text(encoding="utf-8").count(r"\begin{tikzpicture}") == 1
+
+
+def _single_impact_tables() -> list[str]:
+    """The bundled single-impact problems with a [vary] table."""
+    return sorted(
+        name
+        for name, path in bundled().items()
+        if "\n[vary]" in path.read_text() and not re.search(r'^kind = "chain"', path.read_text(), re.M)
+    )
+
+
+#: Issue 15: bundled problems with a [vary] table (4.C.11 and the 19 added).
+BUNDLED_TABLES = 20
+
+
+def test_bundled_problems_have_vary_tables() -> None:
+    assert len(_single_impact_tables()) >= BUNDLED_TABLES
+
+
+def _rewritten(text: str, givens: dict[str, dict]) -> str:
+    """The file's text with each varied given's line holding the variant's number."""
+    for name, g in givens.items():
+        shown = format(Decimal(repr(g["value"])).normalize(), "f")
+        new = f'"{shown} {g["unit"]}"' if g["unit"] else shown
+        text, n = re.subn(rf"^{name} = .*$", f"{name} = {new}", text, count=1, flags=re.M)
+        assert n == 1, name
+    return text
+
+
+@pytest.mark.parametrize("name", _single_impact_tables())
+def test_each_bundled_table_draws_variants_a_fresh_solve_agrees_with(name: str) -> None:
+    """Each bundled [vary] table compiles and draws 3 variants; each variant's key is
+    what solving its numbers from scratch gives, and it meets the physical checks."""
+    text = bundled()[name].read_text()
+    compiled = variants.compile_problem(loads(text, path=f"{name}.toml", name=name))
+    chosen = variants.draw(compiled, 3, seed=2)
+    assert len({tuple(sorted(v.values.items())) for v in chosen}) == 3
+    for v in chosen:
+        fresh = derive.solve(loads(_rewritten(text, variants.given_values(compiled, v)), path="variant.toml"))
+        key = variants.answers(compiled, v)
+        compared = 0
+        for result, r in fresh.results.items():
+            value = r.value if r.value is not None else r.partial
+            if value is None or value.free_symbols:  # a result in letters (4.C.12's speeds)
+                continue
+            assert key[result]["value"] == pytest.approx(float(value), rel=1e-9, abs=1e-12), result
+            compared += 1
+        assert compared >= 1
+        if "e" in key:
+            assert -1e-12 <= key["e"]["value"] <= 1 + 1e-12
+        for mass in ("m_A", "m_B"):
+            if mass in key:
+                assert key[mass]["value"] > 0
+
+
+def test_inverse_draws_keep_the_unknown_physical() -> None:
+    """An unknown e is checked as each draw solves it (it was compared with math.e, and
+    every draw of an inverse problem failed or passed unchecked)."""
+    text = textwrap.dedent(
+        """
+        title = "find e"
+        kind = "direct"
+        [given]
+        m_A = "2 kg"
+        m_B = "1 kg"
+        e = "?"
+        v_A1 = "5 m/s"
+        v_B1 = 0
+        v_A2 = "2 m/s"
+        [vary]
+        m_A = { min = "1 kg", max = "4 kg", step = "0.5 kg" }
+        v_A2 = { min = "0.5 m/s", max = "4 m/s", step = "0.5 m/s" }
+        """
+    )
+    compiled = variants.compile_problem(loads(text, path="inverse.toml"))
+    chosen = variants.draw(compiled, 20, seed=1)
+    es = [variants.answers(compiled, v)["e"]["value"] for v in chosen]
+    assert all(-1e-12 <= x <= 1 + 1e-12 for x in es) and max(es) > 0.5

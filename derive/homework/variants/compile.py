@@ -128,21 +128,36 @@ def _split(page: str) -> list[str | int]:
 
 def _checks(problem: Problem, symbols: tuple[sympy.Symbol, ...], results: dict[str, sympy.Expr], prep) -> object:
     """One function of the varied values that is True for a physical variant: the
-    bodies approach, e in [0, 1], masses positive, and the file's conditions hold."""
-    exprs = [prep(problem.motion_A.n - problem.motion_B.n)]
+    bodies approach, e in [0, 1], masses positive, and the file's conditions hold.
+
+    An unknown of an inverse problem (``e = "?"``, ``m_B = "? kg"``) is checked as the
+    variant solves it, so a draw that makes it unphysical (e > 1, a negative mass) is
+    refused. A built-in check on a given kept as a letter (``m = "kg"``: positive by
+    its assumptions) is left out: it has no number to check."""
+    allowed = set(symbols)
+
+    def solved(expr: sympy.Expr) -> sympy.Expr:
+        # by name: an unknown's symbol (e, with its assumptions) is not the condition's e
+        expr = sympy.sympify(expr)
+        to_results = {s: results[s.name] for s in expr.free_symbols if s.name in results and s not in allowed}
+        return prep(expr.xreplace(to_results))
+
     sym = problem.symbols()
-    lower = [(exprs[0], ">")]
+    built_in = [(solved(problem.motion_A.n - problem.motion_B.n), ">")]
     for name in ("m_A", "m_B"):
         if name in sym:
-            lower.append((prep(sym[name]), ">"))
-    e = prep(sym["e"])
-    lower += [(e, ">="), (1 - e, ">=")]
-    from derive.symbols import symbol
-
-    to_results = {symbol(n): prep(expr) for n, expr in results.items()}
+            built_in.append((solved(sym[name]), ">"))
+    e = solved(sym["e"])
+    built_in += [(e, ">="), (1 - e, ">=")]
+    lower = [(x, op) for x, op in built_in if x.free_symbols <= allowed]
     for c in problem.conditions:
-        diff = prep(c.lhs.xreplace(to_results) - c.rhs.xreplace(to_results))
+        diff = solved(c.lhs - c.rhs)
+        if not diff.free_symbols <= allowed:
+            names = ", ".join(sorted(str(s) for s in diff.free_symbols - allowed))
+            raise InputError(f"{c.text} depends on {names}, which no variant gives a number", field="conditions")
         lower.append((diff if c.op in (">", ">=") else -diff, ">" if c.op in ("<", ">") else ">="))
+    if not lower:
+        return lambda *args: True
     fn = _lambdify(symbols, [x for x, _ in lower])
     ops = [op for _, op in lower]
 
