@@ -127,7 +127,7 @@ ENERGY = ["T_1", "T_2", "T_lost", "J_n"]
 @dataclass(frozen=True)
 class Spec:
     """A problem to export: a bundled file, or a copy of one with a [vary] table and a
-    statement that names the varied givens (only notes-4c11 ships with [vary])."""
+    statement that names the varied givens (in place of the file's own [vary] table, if any)."""
 
     id: str
     bundled: str
@@ -153,7 +153,8 @@ class Spec:
                 flags=re.S | re.M,
             )
             assert n == 1
-        if self.vary is not None:
+        if self.vary is not None:  # this table, in place of the file's own (if it has one)
+            text = re.sub(r"^\[vary\]\n(?:(?!\[).*\n?)*", "", text, flags=re.M)
             text += "\n[vary]\n" + self.vary
         return text
 
