@@ -629,7 +629,7 @@ def chain_view(
                 figures=figures,
                 layout=layout,
                 outer_letters={**letter_units(p), **_result_units(sol)},
-                outer_decimal=frozenset(g.symbol for g in p.givens if g.decimal),  # g = 9.8: 6.26 e, not 14√5/5 e
+                outer_decimal=frozenset(g.symbol for g in p.givens if g.decimal),  # g = 9.8: -6.26 e_floor
                 falls=falls.get(st.number, False),
                 known=sol.values,
             )
