@@ -314,3 +314,15 @@ def test_cli_refuses_to_overwrite_a_problem(cli, tmp_path: Path) -> None:
     r = cli("handout", str(src), "-o", str(src))
     assert r.code == 2
     assert "refusing to overwrite" in r.err
+
+
+def test_a_chains_answer_key_says_what_its_names_stand_for() -> None:
+    """Issue 15: the key gave u_A, u_B and w_B with no word on what they are (AQA 2007 Q4:
+    u_A and u_B after the first impact, w_B after B's rebound from the wall)."""
+    key, _ = build_handout(["chain-aqa-m3-2007-collide-again"], title="K", theory=False, mode="answers", fmt="md")
+    assert (
+        r"**Answer.** Where $u_{A}$ is $v_{A2}$ after A and B collide; $u_{B}$ is $v_{B2}$ after A and B "
+        r"collide; $w_{B}$ is $v_{B2}$ after B strikes the wall." in key
+    )
+    tex, _ = build_handout(["chain-aqa-m3-2007-collide-again"], title="K", theory=False, mode="answers", fmt="tex")
+    assert r"Where $u_{A}$ is $v_{A2}$ after A and B collide" in tex

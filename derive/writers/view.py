@@ -672,6 +672,7 @@ def chain_view(
     names = [a.name for a in sol.answers]
     find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
     return {
+        "answer_names": _answer_names(sol, names),
         "title": p.title,
         "source": p.source,
         "source_parts": source_parts(p.source),
@@ -682,6 +683,28 @@ def chain_view(
         "answers": answers,
         "standalone": standalone,
     }
+
+
+def _answer_names(sol: Any, names: list[str]) -> list[tuple[str, str]]:
+    """What each answer's name stands for where an impact stage carried it on (u_A is
+    v_A2 after A and B collide), as text and mathematics for the answer key's sentence."""
+    said: dict[str, tuple[str, str]] = {}
+    parts = {st.number: st for st in sol.stages if st.part is not None}
+    for number, raw in enumerate(sol.problem.stages, 1):
+        if raw.get("type") != "impact" or number not in parts:
+            continue
+        labels = parts[number].part.problem.labels
+        title = str(parts[number].title or f"stage {number}")
+        title = "t" + title[1:] if title.startswith("The ") else title
+        for slot_name, new in (raw.get("results") or {}).items():
+            said.setdefault(str(new), (latex_name(relabel(str(slot_name), labels)), title))
+    out: list[tuple[str, str]] = []
+    for name in names:
+        if name in said:
+            slot_tex, title = said[name]
+            out += [("text", "; " if out else "Where "), ("math", latex_name(name)), ("text", " is ")]
+            out += [("math", slot_tex), ("text", f" after {title}")]
+    return [*out, ("text", ".")] if out else []
 
 
 def _chain_json(sol: Any, digits: int | None) -> str:
