@@ -1,0 +1,200 @@
+"""Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+
+Layout lives in the Jinja2 templates (``templates/``); the mathematics is
+printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
+A renderer never does physics.
+"""
+
+from __future__ import annotations
+
+import base64
+from typing import Any
+
+from derive.errors import InputError
+from derive.numbers import format_number
+from derive.problem.units import plain_unit
+from derive.steps.model import Solution
+from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
+from derive.writers.view.chain import chain_view
+from derive.writers.view.givens import letter_units, source_parts, worked_out
+from derive.writers.view.html import chain_html_page, html_page
+from derive.writers.view.jinja import environment
+from derive.writers.view.json import chain_json, to_json
+from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
+from derive.writers.view.problem import figure_entry, view
+
+__all__ = [
+    "ANSWER_MARK",
+    "FORMATS",
+    "OPTIONAL_BEGIN",
+    "OPTIONAL_END",
+    "blocks_view",
+    "boxed_lines",
+    "chain_view",
+    "environment",
+    "figure_entry",
+    "letter_units",
+    "line_view",
+    "markdown",
+    "plain_answers",
+    "render",
+    "source_parts",
+    "to_json",
+    "view",
+    "worked_out",
+]
+
+FORMATS = ("md", "tex", "tex-fragment", "html", "json")
+
+
+def render(
+    solution: Solution,
+    fmt: str = "md",
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    target: str = "github",
+    heading_level: int = 1,
+    title: bool = True,
+    plot: bool = False,
+) -> str:
+    """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
+
+    ``digits`` overrides the significant figures (default: the problem's, else
+    the textbook rule); ``figures`` False leaves the figures out. ``target`` names
+    where Markdown goes: 'github' (also KaTeX, MkDocs), 'jupyter', 'mkdocs' or
+    'pandoc' (see :mod:`derive.writers.targets`). ``heading_level`` puts the title at
+    that level (1: ``#``/``\\section*``) and the stages below it; ``title`` False
+    leaves the title out (the caller's heading stands) and starts the stages at
+    ``heading_level``. For a PDF see :func:`derive.writers.pdf.build_pdf`, for Word
+    :func:`derive.writers.docx.build_docx`; ``plot`` adds the plot of the outcome against e after the answer.
+    """
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    tex_vars = {**_headings(heading_level, title), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+    if solution.is_chain and plot:
+        raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
+    if fmt == "md":
+        page, _ = markdown(
+            solution,
+            markdown_target(target),
+            digits=digits,
+            figures=figures,
+            heading_level=heading_level,
+            show_title=title,
+            plot=plot,
+        )
+        return page
+    if solution.is_chain:
+        if fmt == "json":
+            return chain_json(solution, digits)
+        if fmt in ("tex", "tex-fragment"):
+            layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
+            data = chain_view(solution, digits, figures, standalone=fmt == "tex", layout=layout)
+            return environment("tex").get_template("chain.tex.j2").render(**data, **tex_vars)
+        if fmt == "html":
+            return chain_html_page(chain_view(solution, digits, figures, layout=HTML))
+        raise InputError(f"a chain is written as md, tex, pdf, html or json, not {fmt}", field="--format")
+    if fmt == "json":
+        return to_json(solution, digits)
+    if fmt not in FORMATS:
+        raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
+    if fmt == "html":
+        return html_page(view(solution, digits, figures, plot=plot, layout=HTML))
+    layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
+    data = view(solution, digits, figures, layout=layout, plot=plot)
+    template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
+    return environment("tex").get_template(template).render(**data, **tex_vars)
+
+
+def _headings(level: int, title: bool) -> dict[str, Any]:
+    """The template variables for headings: the title's level, and whether it is shown."""
+    if not (isinstance(level, int) and 1 <= level <= 6):
+        raise InputError("expected a heading level from 1 to 6", field="--heading-level")
+    return {"heading_level": level, "show_title": bool(title)}
+
+
+def markdown(
+    solution: Solution,
+    layout: Layout = GITHUB,
+    *,
+    digits: int | None = None,
+    figures: bool = True,
+    heading_level: int = 1,
+    show_title: bool = True,
+    plot: bool = False,
+) -> tuple[str, dict[str, str]]:
+    """The Markdown for ``layout``, and the figure files it names (``figure-1.svg``: SVG
+    text) when the layout writes figures as files for the caller to put beside it."""
+    data = (
+        chain_view(solution, digits, figures, layout=layout)
+        if solution.is_chain
+        else view(solution, digits, figures, layout=layout, plot=plot)
+    )
+    files = _figure_images(data, layout)
+    page = (
+        environment("md")
+        .get_template("chain.md.j2" if solution.is_chain else "solution.md.j2")
+        .render(
+            **data,
+            heading_level=heading_level,
+            show_title=show_title,
+            figure_images=layout.figures != "inline",
+            tags_as_text=layout.tags == "text",
+            require_cancel=layout.require_cancel,
+            long_lines=layout.long_lines,
+            escape_caret=layout.escape_caret,
+        )
+    )
+    return page, files
+
+
+def _figure_images(data: dict[str, Any], layout: Layout) -> dict[str, str]:
+    """Give each figure of the page (a chain's included) the address of its image:
+    a data URI, or a file name; the files to write, by name."""
+    files: dict[str, str] = {}
+    if layout.figures == "inline":
+        return files
+    stages = [sub for st in data["stages"] for sub in st.get("stages", [st])]
+    for stage in stages:
+        svg = stage.get("figure_svg")
+        if not svg:
+            continue
+        if layout.figures == "files":
+            name = f"figure-{len(files) + 1}.svg"
+            files[name] = svg
+            stage["figure_src"] = name
+        else:
+            stage["figure_src"] = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
+    return files
+
+
+def boxed_lines(solution: Solution) -> list[str]:
+    """The LaTeX of the solution's boxed lines (its answers)."""
+    if solution.is_chain:
+        return [a["latex"] for a in chain_view(solution, figures=False)["answers"]]
+    stages = view(solution, figures=False)["stages"]
+    return [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+
+
+def plain_answers(solution: Solution) -> list[str]:
+    """The answers the problem asks for, as short plain text: ``v_A2 = 3.05 e_t - 1.11 e_n m/s``."""
+    p = solution.problem
+    verdicts = {a.name: a.verdict for a in solution.answers if a.verdict is not None}
+    names = [a.name for a in solution.answers] if solution.is_chain else list(p.find)
+    out = []
+    for name in names:
+        if name in verdicts:
+            out.append(f"{name}: {verdicts[name]}")
+            continue
+        t, n = solution.results.get(name + "t"), solution.results.get(name + "n")
+        r = solution.results.get(name)
+        if not solution.is_chain and p.oblique and name in ("v_A2", "v_B2") and t and n:
+            if t.value is not None and n.value is not None:
+                sign = "-" if n.value < 0 else "+"
+                shown_n = format_number(abs(n.value), p.digits)
+                out.append(f"{name} = {format_number(t.value, p.digits)} e_t {sign} {shown_n} e_n {plain_unit(t.unit)}")
+        elif r is not None and r.value is not None:
+            unit = "°" if r.unit == "deg" else (" " + plain_unit(r.unit) if r.unit else "")
+            out.append(f"{name} = {format_number(r.value, p.digits)}{unit}")
+    return out

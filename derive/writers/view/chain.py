@@ -1,0 +1,143 @@
+"""The view of a chain of stages: the chain's givens, each stage printed, the answers."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Any
+
+from derive.problem.units import latex_unit
+from derive.symbols import latex_name, relabel, symbol
+from derive.writers import figure
+from derive.writers.printing import Style, exact_latex, latex_eqn
+from derive.writers.targets import GITHUB, Layout
+from derive.writers.view.givens import given_latex, letter_units, result_units, source_parts, statement, worked_out
+from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
+from derive.writers.view.problem import view
+
+
+def chain_view(
+    sol: Any, digits: int | None = None, figures: bool = True, standalone: bool = True, layout: Layout = GITHUB
+) -> dict[str, Any]:
+    """The data the chain templates need: the chain's givens, each stage printed."""
+    p = sol.problem
+    style = Style(
+        digits if digits is not None else p.digits,
+        1,
+        sol.values,
+        sol.angles,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
+        strike=layout.strike,
+        letter_units=letter_units(p),
+        derived=worked_out(p, sol.values),
+    )
+    stages = _stages(sol, style, layout, figures)
+    answers = _answers(sol, style, layout)
+    givens = _givens(sol, style)
+    names = [a.name for a in sol.answers]
+    find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
+    return {
+        "answer_names": _answer_names(sol, names),
+        "title": p.title,
+        "source": p.source,
+        "source_parts": source_parts(p.source),
+        "statement": statement(p, style),
+        "givens": givens,
+        "find": find,
+        "stages": stages,
+        "answers": answers,
+        "standalone": standalone,
+    }
+
+
+def _stages(sol: Any, style: Style, layout: Layout, figures: bool) -> list[dict[str, Any]]:
+    """Each stage of the chain printed: an impact as its own view, any other stage as blocks."""
+    stages = []
+    falls = figure.chain_falls(sol) if figures else {}
+    for st in sol.stages:
+        stage_style = style if st.values is None else replace(style, values=st.values)
+        if st.part is not None:
+            stages.append(_impact_stage(sol, st, stage_style, layout, figures, falls.get(st.number, False)))
+        else:
+            stages.append(
+                {
+                    "number": st.number,
+                    "title": st.title,
+                    "impact": False,
+                    "blocks": blocks_view(st.blocks, stage_style, layout),
+                }
+            )
+    return stages
+
+
+def _impact_stage(sol: Any, st: Any, stage_style: Style, layout: Layout, figures: bool, falls: bool) -> dict[str, Any]:
+    """An impact stage: its givens and stages as one impact's view, and the lines that carry its results on."""
+    p = sol.problem
+    v = view(
+        st.part,
+        stage_style.digits,
+        figures=figures,
+        layout=layout,
+        outer_letters={**letter_units(p), **result_units(sol)},
+        outer_decimal=frozenset(g.symbol for g in p.givens if g.decimal),  # g = 9.8: -6.26 e_floor
+        falls=falls,
+        known=sol.values,
+    )
+    own = replace(stage_style, labels=st.part.problem.labels)  # v_A2 of a stage that calls A "B"
+    carried = [latex_eqn(eqn, own)[0] for eqn in st.carried]
+    return {
+        "number": st.number,
+        "title": st.title,
+        "impact": True,
+        "givens": v["givens"],
+        "stages": v["stages"],
+        "carried": carried,
+    }
+
+
+def _answers(sol: Any, style: Style, layout: Layout) -> list[dict[str, Any]]:
+    """The chain's answers, boxed, the last with the ANSWER mark."""
+    answers = []
+    for i, a in enumerate(sol.answers):
+        last = i == len(sol.answers) - 1
+        if a.verdict is not None:
+            verdict = rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"
+            answers.append({"latex": verdict + (ANSWER_MARK if last else ""), "tag": None, "boxed": True})
+        else:
+            assert a.line is not None
+            answers.append({**line_view(a.line, style, layout, answer=last), "tag": None})
+    return answers
+
+
+def _givens(sol: Any, style: Style) -> list[dict[str, str]]:
+    """The chain's Given list, with standard gravity where a stage uses it and the file does not give it."""
+    p = sol.problem
+    givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
+    g_sym = symbol("g", "positive")
+    if g_sym in sol.values and "g" not in {g.name for g in p.givens}:
+        shown = exact_latex(sol.values[g_sym], style.digits, 1)
+        unit = "m/s^2" if p.system == "SI" else "ft/s^2"
+        givens.append({"latex": rf"g = {shown}\ {latex_unit(unit)}", "note": "standard gravity, not given"})
+    return givens
+
+
+def _answer_names(sol: Any, names: list[str]) -> list[tuple[str, str]]:
+    """What each answer's name stands for where an impact stage carried it on (u_A is
+    v_A2 after A and B collide), as text and mathematics for the answer key's sentence."""
+    said: dict[str, tuple[str, str]] = {}
+    parts = {st.number: st for st in sol.stages if st.part is not None}
+    for number, raw in enumerate(sol.problem.stages, 1):
+        if raw.get("type") != "impact" or number not in parts:
+            continue
+        labels = parts[number].part.problem.labels
+        title = str(parts[number].title or f"stage {number}")
+        title = "t" + title[1:] if title.startswith("The ") else title
+        for slot_name, new in (raw.get("results") or {}).items():
+            said.setdefault(str(new), (latex_name(relabel(str(slot_name), labels)), title))
+    out: list[tuple[str, str]] = []
+    for name in names:
+        if name in said:
+            slot_tex, title = said[name]
+            out += [("text", "; " if out else "Where "), ("math", latex_name(name)), ("text", " is ")]
+            out += [("math", slot_tex), ("text", f" after {title}")]
+    return [*out, ("text", ".")] if out else []

@@ -1,0 +1,184 @@
+"""The view of one impact: the data its templates need, every formula printed as LaTeX."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import sympy
+
+from derive import escape
+from derive.steps.model import Solution
+from derive.symbols import latex_name
+from derive.writers import figure
+from derive.writers.printing import SlotBook, Style
+from derive.writers.targets import GITHUB, Layout
+from derive.writers.view.givens import given_latex, letter_units, letters_of, source_parts, statement, worked_out
+from derive.writers.view.lines import blocks_view
+
+
+def _sentence(text: str) -> str:
+    """A caption standing alone under its figure: its first letter a capital."""
+    return text[:1].upper() + text[1:]
+
+
+def _html_name(name: str) -> str:
+    """A symbol's name in HTML: ``v_A2`` -> ``<i>v</i><sub>A2</sub>``."""
+    base, _, sub = name.partition("_")
+    return f"<i>{escape.html_text(base)}</i>" + (f"<sub>{escape.html_text(sub)}</sub>" if sub else "")
+
+
+def figure_entry(fig: figure.Figure) -> dict[str, str]:
+    """A stage's figure as the templates take it: SVG and TikZ, the caption, and the note
+    Markdown and LaTeX print under it when an arrow is drawn longer than to scale."""
+    html_note = fig.scale_note(_html_name, escape.html_text)
+    tex_note = fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex)
+    return {
+        "figure_svg": figure.to_svg(fig),
+        "figure_tikz": figure.to_tikz(fig),
+        "figure_caption": f"{fig.title}: {fig.caption}",
+        "figure_caption_html": escape.html_text(f"{fig.title}: ") + html_note,
+        "figure_note_html": _sentence(html_note) if fig.lengthened else "",
+        "figure_note_tex": _sentence(tex_note) if fig.lengthened else "",
+    }
+
+
+def _named(words: str, labels: tuple[str, str]) -> str:
+    """Words about body A or B (``the speed of A``) under the page's letters."""
+    return re.sub(r"\b([AB])\b", lambda m: labels["AB".index(m[1])], words) if labels != ("A", "B") else words
+
+
+_FIND_WORDS = {
+    "v_A2": "the speed of A",
+    "v_B2": "the speed of B",
+    "theta_A2": "the direction of A (from +t)",
+    "theta_B2": "the direction of B (from +t)",
+    "beta_A2": "the direction of A (from +n)",
+    "beta_B2": "the direction of B (from +n)",
+    "J_n": "the impulse along n",
+    "T_1": "the kinetic energy before the impact",
+    "T_2": "the kinetic energy after the impact",
+    "T_lost": "the kinetic energy lost",
+}
+
+
+def view(
+    solution: Solution,
+    digits: int | None = None,
+    figures: bool = True,
+    *,
+    slots: SlotBook | None = None,
+    varied: frozenset[sympy.Symbol] = frozenset(),
+    layout: Layout = GITHUB,
+    outer_letters: dict[sympy.Symbol, str] | None = None,
+    outer_decimal: frozenset[sympy.Symbol] = frozenset(),
+    falls: bool = False,
+    known: dict[sympy.Symbol, sympy.Expr] | None = None,
+    plot: bool = False,
+) -> dict[str, Any]:
+    """The data a template needs: every formula already printed as LaTeX, and the
+    figures of stage 1 and of the answer as SVG and TikZ.
+
+    With ``slots``, every number that depends on a ``varied`` given is left open
+    (a token), so that one compiled page serves every homework variant. ``layout``
+    says where the page goes (:mod:`derive.writers.targets`): how wide a line may
+    be, and whether cancelled terms are struck out. ``falls`` and ``known`` are for
+    an impact inside a chain: drawn with n pointing down, and the chain's numbers for
+    symbols the impact leaves open. ``plot`` adds the plot of the outcome against e
+    (``plot_svg``, ``plot_tikz``).
+    """
+    p = solution.problem
+    style = _style(solution, digits, layout, slots, varied, outer_letters, outer_decimal)
+    stages = _stages(solution, style, layout, figures=figures, falls=falls, known=known)
+    givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
+    find = _find(p, style)
+    plot_svg, plot_tikz = _plot(p) if plot else ("", "")
+    return {
+        "title": p.title,
+        "kind": p.kind,
+        "source": p.source,
+        "source_parts": source_parts(p.source),
+        "plot_svg": plot_svg,
+        "plot_tikz": plot_tikz,
+        "statement": statement(p, style),
+        "find": find,
+        "givens": givens,
+        "stages": stages,
+        "system": p.system,
+    }
+
+
+def _style(
+    solution: Solution,
+    digits: int | None,
+    layout: Layout,
+    slots: SlotBook | None,
+    varied: frozenset[sympy.Symbol],
+    outer_letters: dict[sympy.Symbol, str] | None,
+    outer_decimal: frozenset[sympy.Symbol],
+) -> Style:
+    """How the impact's page prints: its digits, its letters and decimals, its variant's slots."""
+    p = solution.problem
+    return Style(
+        digits if digits is not None else p.digits,
+        1,
+        solution.values,
+        solution.angles,
+        varied=varied,
+        slots=slots,
+        strike=layout.strike,
+        decimal=frozenset(g.symbol for g in p.givens if g.decimal) | outer_decimal,
+        letters=letters_of(p, solution.values) - varied,
+        letter_units={**(outer_letters or {}), **letter_units(p)},
+        labels=p.labels,
+        derived=worked_out(p, solution.values),
+    )
+
+
+def _stages(
+    solution: Solution,
+    style: Style,
+    layout: Layout,
+    *,
+    figures: bool,
+    falls: bool,
+    known: dict[sympy.Symbol, sympy.Expr] | None,
+) -> list[dict[str, Any]]:
+    """Each stage's blocks, printed, and its figure (SVG and TikZ) where it has one."""
+    stages = []
+    for stage in solution.stages:
+        blocks = blocks_view(stage.blocks, style, layout)
+        entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
+        if figures and stage.figure is not None:
+            fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
+            entry.update(figure_entry(fig))
+        stages.append(entry)
+    return stages
+
+
+def _find(p: Any, style: Style) -> list[tuple[str, str]]:
+    """What the problem asks for: its question, else words made from what it finds."""
+    if p.question:
+        return statement(p, style, p.question) or []
+    unknown = [g.name for g in p.givens if g.unknown]
+    words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
+        f"the velocity of {p.labels[0]} immediately after the impact"
+        if p.fixed_B
+        else f"the velocities of {p.labels[0]} and {p.labels[1]} immediately after the impact"
+    )
+    extra_words = [
+        _named(_FIND_WORDS[f], p.labels)
+        for f in p.find
+        if f in _FIND_WORDS and not (f in ("v_A2", "v_B2") and not p.oblique)
+    ]
+    if extra_words:
+        words += "; " + ", ".join(extra_words)
+    return [("text", words[0].upper() + words[1:] + ".")]
+
+
+def _plot(p: Any) -> tuple[str, str]:
+    """The plot of the outcome against e, as SVG and TikZ."""
+    from derive.writers import plot as plots
+
+    chart = plots.chart(p)
+    return plots.to_svg(chart), plots.to_tikz(chart)
