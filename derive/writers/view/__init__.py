@@ -62,7 +62,7 @@ def render(
 
     ``digits`` overrides the significant figures (default: the problem's, else
     the textbook rule); ``figures`` False leaves the figures out. ``target`` names
-    where Markdown goes: 'github' (also KaTeX, MkDocs), 'jupyter', 'mkdocs' or
+    where Markdown goes: 'github' (also KaTeX), 'jupyter', 'mkdocs' (long lines on rows) or
     'pandoc' (see :mod:`derive.writers.targets`). ``heading_level`` puts the title at
     that level (1: ``#``/``\\section*``) and the stages below it; ``title`` False
     leaves the title out (the caller's heading stands) and starts the stages at
