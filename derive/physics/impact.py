@@ -68,6 +68,7 @@ class Impact:
     closed: dict[sympy.Symbol, sympy.Expr]
     by_components: dict[sympy.Symbol, sympy.Expr]
     inverse: bool = False
+    others: tuple[dict[sympy.Symbol, sympy.Expr], ...] = ()
 
     def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` (in component symbols) with the pre-impact components in the givens."""
@@ -162,9 +163,9 @@ def setup(problem: Problem) -> Impact:
         closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
         return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
     full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
-    by_comp = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
+    by_comp, *others = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
-    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True)
+    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True, others=tuple(others))
 
 
 def general_solution(
@@ -219,10 +220,13 @@ def _solve_inverse(
     system: list[sympy.Expr],
     unknowns: tuple[sympy.Symbol, ...],
     directions: list[tuple[sympy.Expr, sympy.Expr, sympy.Expr]] = (),  # type: ignore[assignment]
-) -> dict[sympy.Symbol, sympy.Expr]:
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
     """Solve a system that may be nonlinear (an unknown angle, e times a velocity)
-    and keep the one physical root; a direction given after the impact, (y, x, angle),
-    keeps only the roots that point that way (not the opposite way)."""
+    and keep the physical roots; a direction given after the impact, (y, x, angle),
+    keeps only the roots that point that way (not the opposite way).
+
+    Where several distinct roots are physical the data do not choose: all are kept
+    (listed, not refused), the one with the smallest unknowns first."""
     numeric = problem.numeric()
     try:
         roots = sympy.solve(system, unknowns, dict=True)
@@ -252,14 +256,26 @@ def _solve_inverse(
             + (shown or " (check the signs and the numbers)"),
             where=problem.path,
         )
-    if len(kept) > 1:
-        distinct = {tuple(sympy.N(r[u].xreplace(numeric), 12) for u in unknowns) for r in kept}
-        if len(distinct) > 1:
-            raise SolveError(
-                f"equations (1)-(4) have {len(distinct)} physical solutions for these givens; give one more value",
-                where=problem.path,
-            )
-    return kept[0]
+    asked = set(problem.unknowns())
+    return _distinct(kept, tuple(sorted(unknowns, key=lambda u: u not in asked)), numeric)
+
+
+def _distinct(
+    kept: list[dict[sympy.Symbol, sympy.Expr]],
+    unknowns: tuple[sympy.Symbol, ...],
+    numeric: dict[sympy.Symbol, sympy.Expr],
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """The physical roots, one per distinct set of values, ordered by the values of the
+    unknowns (the first root SymPy gave where a value still holds a letter)."""
+    if len(kept) == 1:
+        return kept
+    seen: dict[tuple, dict[sympy.Symbol, sympy.Expr]] = {}
+    for root in kept:
+        key = tuple(sympy.N(root[u].xreplace(numeric), 12) for u in unknowns)
+        seen.setdefault(key, root)
+    if any(x.free_symbols or not x.is_real for key in seen for x in key):
+        return list(seen.values())
+    return [seen[key] for key in sorted(seen, key=lambda k: [float(x) for x in k])]
 
 
 def _points(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr], direction: tuple) -> bool:
@@ -335,7 +351,9 @@ def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: d
     approach = (
         (problem.motion_A.n - problem.motion_B.n).xreplace(independent_map(problem)).xreplace(root).xreplace(numeric)
     )
-    return bool(approach.free_symbols) or complex(sympy.N(approach)).real > 0
+    if approach.free_symbols:  # letters: physical unless their assumptions say they part (U sin(-73°) < 0)
+        return sympy.sympify(approach).is_positive is not False
+    return complex(sympy.N(approach)).real > 0
 
 
 def evaluate(expr: sympy.Expr, problem: Problem, *, decimals: bool = False) -> sympy.Expr:

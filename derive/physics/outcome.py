@@ -7,7 +7,7 @@ impact stage.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -22,7 +22,8 @@ from derive.symbols import symbol
 class ImpactOutcome:
     """An impact solved: ``values`` maps each symbol with a number (givens, and the
     n-t components of velocities given in x-y axes) to its exact value; ``angles``
-    are the givens held in radians and shown in degrees."""
+    are the givens held in radians and shown in degrees; ``others`` the results of each
+    other physical solution where the data do not choose one (listed, not refused)."""
 
     problem: Problem
     impact: Impact
@@ -31,6 +32,7 @@ class ImpactOutcome:
     angles: frozenset[sympy.Symbol]
     shown: tuple[Shown, ...] = ()
     ranges: tuple[Found, ...] = ()
+    others: tuple[dict[str, Result], ...] = ()
 
 
 def xy_motions(imp: Impact) -> list[tuple[Motion, tuple[sympy.Symbol, sympy.Symbol]]]:
@@ -67,4 +69,11 @@ def solve_impact(problem: Problem) -> ImpactOutcome:
             angles.add(rel.lhs)
     shown = tuple(decide(rel, problem, found) for rel in problem.asks.show)
     ranges = tuple(solve_range(rng, problem, found) for rng in problem.asks.ranges)
-    return ImpactOutcome(problem, imp, found, values, frozenset(angles), shown, ranges)
+    others = tuple(results(_case(imp, root)) for root in imp.others)
+    return ImpactOutcome(problem, imp, found, values, frozenset(angles), shown, ranges, others)
+
+
+def _case(imp: Impact, root: dict[sympy.Symbol, sympy.Expr]) -> Impact:
+    """``imp`` with another of its physical roots in place of the first."""
+    closed = {u: sympy.factor_terms(c) for u, c in root.items()}
+    return replace(imp, closed=closed, by_components=root, others=())

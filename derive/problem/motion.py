@@ -73,10 +73,24 @@ def geometry(
     for b in "AB":
         raw = geo[f"centre_{b}"]
         for axis, value in zip("xy", raw, strict=True):
+            if _bare_zero(value):  # the origin needs no unit: "0" beside "0.1 m" is 0 m
+                value = f"0 {units.working_unit(units.LENGTH, system).text}"
             g = add(f"{axis}_{b}", value, f"centre_{b}")
             if g.dim != units.LENGTH:
                 raise ctx.error("expected lengths", section="geometry", key=f"centre_{b}", value=raw, cls=UnitError)
     return add("phi", "atan2(y_B - y_A, x_B - x_A)", "centre_B").symbol
+
+
+def _bare_zero(value: Any) -> bool:
+    """True for a coordinate written as a bare zero: 0, 0.0, "0", "0.0"."""
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, (int, float)):
+        return value == 0
+    try:
+        return isinstance(value, str) and float(value.strip()) == 0
+    except ValueError:
+        return False
 
 
 def motion(

@@ -16,7 +16,7 @@ import sympy
 
 from derive.errors import ExpressionError, UnitError
 from derive.problem import units
-from derive.problem.expr import NAME_RE, ParseError, parse
+from derive.problem.expr import NAME_RE, Parsed, ParseError, parse
 from derive.problem.source import Source, type_name
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 from derive.symbols import symbol
@@ -84,7 +84,7 @@ def read_asks(
     return Asks(
         show=_relations(data.get("show"), scope, ctx, "show"),
         ranges=_ranges(data.get("range"), scope, letters, ctx),
-        equations=_relations(data.get("equations"), scope, ctx, "equations"),
+        equations=_relations(data.get("equations"), scope, ctx, "equations", system),
         defined=defined,
         answers=_answers(data.get("answers"), scope, system, ctx),
     )
@@ -102,20 +102,43 @@ def _listed(raw: Any, key: str, ctx: Source) -> list[str]:
     return raw
 
 
-def _side(text: str, scope: Mapping[str, tuple[sympy.Symbol, Dim]], ctx: Source, key: str, whole: str):
+def _side(
+    text: str, scope: Mapping[str, tuple[sympy.Symbol, Dim]], ctx: Source, key: str, whole: str, system: str = ""
+) -> Parsed:
+    """One side of a relation: an expression in the problem's names or, with ``system``,
+    also a number with its unit ("-2 m/s", "5 ft"), in the working unit."""
+    m = _QUANTITY.match(text) if system else None
+    if m and m.group(2).strip() not in scope:
+        try:
+            unit = units.parse_unit(m.group(2))
+        except ValueError as exc:
+            raise ctx.error(str(exc), key=key, value=whole, cls=UnitError) from None
+        if unit.dim == ANGLE:
+            raise ctx.error(
+                'an angle here has no unit; give a direction after the impact in [given] (theta_A2 = "10 deg")',
+                key=key,
+                value=whole,
+                cls=UnitError,
+            )
+        value = sympy.Rational(m.group(1))
+        if unit.dim != DIMENSIONLESS:
+            value = units.convert(value, unit, units.working_unit(unit.dim, system))
+        return Parsed(value, unit.dim)
     try:
         return parse(text.strip(), scope)
     except ParseError as exc:
         raise ctx.error(str(exc), key=key, value=whole, cls=ExpressionError) from None
 
 
-def _relations(raw: Any, scope: Mapping[str, tuple[sympy.Symbol, Dim]], ctx: Source, key: str) -> tuple[Relation, ...]:
+def _relations(
+    raw: Any, scope: Mapping[str, tuple[sympy.Symbol, Dim]], ctx: Source, key: str, system: str = ""
+) -> tuple[Relation, ...]:
     out = []
     for text in _listed(raw, key, ctx):
         if text.count("=") != 1 or re.search(r"[<>]", text):
             raise ctx.error('expected one equation such as "T_2 = 3/4*T_1"', key=key, value=text)
         left, right = text.split("=")
-        lhs, rhs = _side(left, scope, ctx, key, text), _side(right, scope, ctx, key, text)
+        lhs, rhs = _side(left, scope, ctx, key, text, system), _side(right, scope, ctx, key, text, system)
         _same_dim(lhs, rhs, ctx, key, text)
         out.append(Relation(text, lhs.expr, rhs.expr))
     return tuple(out)

@@ -28,5 +28,12 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     outcome = solve_impact(problem)
     stages = write_impact(outcome)
     return Solution(
-        problem, outcome.results, stages, outcome.values, outcome.angles, shown=outcome.shown, ranges=outcome.ranges
+        problem,
+        outcome.results,
+        stages,
+        outcome.values,
+        outcome.angles,
+        shown=outcome.shown,
+        ranges=outcome.ranges,
+        others=outcome.others,
     )

@@ -35,6 +35,7 @@ def answer(page: Page) -> list[Block]:
         (_asked(page), True),
         *((shown(page, s), True) for s in page.outcome.shown),
         *((ranged(page, f), False) for f in page.outcome.ranges),
+        (others(page), False),
     ]
     # one mark, as in the notes: on the last boxed line of the last block that answers
     last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
@@ -59,6 +60,40 @@ def shown(page: Page, s: Shown) -> Block:
         f" it does not follow. The results above give the left side; at {values} it is {left}, the right side {right}.",
     )
     return Block(text, (Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"))),))
+
+
+def others(page: Page) -> Block | None:
+    """The other physical solutions, where the data do not choose one: listed, not refused."""
+    cases = page.outcome.others
+    if not cases:
+        return None
+    p = page.p
+    asked = [g.name for g in p.givens if g.unknown]
+    comps = tuple(f"v_{b}2{c}" for b in _bodies(page) for c in (("t", "n") if p.oblique else ("",)))
+    given = {g.name for g in p.givens}
+    names = [*asked, *(c for c in comps if c not in given), *p.find]
+    text: Text = (
+        f"These givens allow {len(cases) + 1} physical solutions, and the data do not choose between them; "
+        "the steps above follow the first. ",
+    )
+    for i, results in enumerate(cases, start=2):
+        text += (f"Solution {i}: " if len(cases) > 1 else "The other: ",)
+        listed = [results[n] for n in dict.fromkeys(names) if n in results]
+        for j, r in enumerate(listed):
+            text += (Math(r.symbol), " = ", *_valued(r, p.digits), ", " if j < len(listed) - 1 else ". ")
+    return Block((*text[:-1], text[-1].rstrip()))
+
+
+def _valued(r: Result, digits: int | None) -> Text:
+    """A result's value as text, with its unit (107.0°, -3.586 m/s), or its closed form."""
+    if r.value is None or r.value.free_symbols:
+        x = sympy.factor_terms(sympy.radsimp(r.partial))
+        coeff, letters = x.as_independent(*x.free_symbols, as_Add=False)
+        if coeff.is_number and sympy.count_ops(coeff) > 6:  # a nested radical: its value, as the boxed lines
+            x = sympy.Mul(sympy.Symbol(format_number(coeff, digits)), letters, evaluate=False)
+        return (Math(x),)
+    unit = "°" if r.unit == "deg" else f" {r.unit}" if r.unit else ""
+    return (format_number(r.value, digits) + unit,)
 
 
 def ranged(page: Page, f: Found) -> Block:

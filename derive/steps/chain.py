@@ -159,7 +159,8 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     sides.append(Side((c.rhs,), "result"))
     unit = g.unit or None
     root = Eqn((Side((u,)), Side((_in_unit(c.root, g.unit),), "result")), unit=unit, implies=True, tag=numbers.next())
-    text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), " fixes the unknown ", Math(u), ":")
+    said = f" {c.lhs_unit}" if c.lhs_unit and c.rhs.is_number and c.rhs != 0 else ""  # h_2 = 40 m, not 40
+    text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), said + " fixes the unknown ", Math(u), ":")
     blocks = [Block(text, (Eqn(tuple(sides), unit=c.lhs_unit), root))]
     if c.roots > 1:
         if u.name.startswith("e"):
@@ -178,7 +179,15 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
             for q, before, now in c.updated
         )
         blocks.append(
-            Block(("With ", Math(sympy.Eq(u, as_float(c.root))), ", the quantities that waited for it:"), lines)
+            Block(
+                (
+                    "With ",
+                    Math(sympy.Eq(u, as_float(_in_unit(c.root, g.unit)))),
+                    "°" if g.unit == "deg" else "",  # th = -30.0°, not its radians
+                    ", the quantities that waited for it:",
+                ),
+                lines,
+            )
         )
     return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
 

@@ -131,7 +131,8 @@ def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
                 Eqn((Side((u,)), Side((page.value_of(u),), "result")), unit=page.unit_of(u)) for u in remaining
             )
             listed = " and ".join(f"({page.tags(k)})" for k in eqs)
-            blocks.append(Block((f"Solve {listed} together:",), lines))
+            cases = _cases_note(page)
+            blocks.append(Block((f"Solve {listed} together" + (f"; {cases}" if cases else ":"),), lines))
             break
         k, u = step
         sides = [Side((u,))]
@@ -145,7 +146,10 @@ def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
         sides.append(Side((page.value_of(u),), "result"))
         why = _root_reason(page, u)
         text: Text = (f"From ({page.tags(k)}):" + (f" {why}" if why else ""),)
-        blocks.append(Block(text, (Eqn(tuple(sides), unit=page.unit_of(u)),)))
+        lines = (Eqn(tuple(sides), unit=page.unit_of(u)),)
+        if len(sides) == 2 and root_rule(page.imp, u) is not None:  # the equation in u first, then its root
+            lines = (_in_one_unknown(eqs[k].xreplace(known), u), *lines)
+        blocks.append(Block(text, lines))
         known[u] = page.value_of(u)
         remaining.remove(u)
         del eqs[k]
@@ -169,9 +173,27 @@ def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.E
 def _root_reason(page: Page, u: sympy.Symbol) -> str:
     """Why the root shown is the one kept, where the equations have several."""
     rule = root_rule(page.imp, u)
+    if page.outcome.others:
+        return _cases_note(page)
     if rule == "sign":
         return f"the root with {u.name} ≥ 0 is the physical one."
     return ROOT_REASONS.get(rule, "") if rule else ""
+
+
+def _in_one_unknown(ex: sympy.Expr, u: sympy.Symbol) -> Eqn:
+    """``ex = 0`` as the terms in ``u`` = the rest (4 sin th = -2), before its root is taken."""
+    terms = sympy.Add.make_args(sympy.expand(ex))
+    left = sympy.Add(*(t for t in terms if t.has(u)))
+    return Eqn((Side((left,), "numeric"), Side((-(ex - left),), "numeric")))
+
+
+def _cases_note(page: Page) -> str:
+    """Where several roots are physical: that the data do not choose, and what the page does."""
+    if not page.outcome.others:
+        return ""
+    n = len(page.outcome.others) + 1
+    other = "the other" if n == 2 else "the others"
+    return f"{n} sets of roots are physical and the data do not choose between them: the steps follow the first, and the answer lists {other}."
 
 
 def _sum_check(page: Page, terms: tuple[sympy.Expr, ...]) -> tuple[tuple[tuple[sympy.Expr, ...], sympy.Expr], ...]:

@@ -9,6 +9,7 @@ the way.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import sympy
 
@@ -115,12 +116,22 @@ def condition(page: Page, k: int, eq: sympy.Eq) -> tuple[Block, sympy.Expr]:
         rhs = sympy.Symbol(as_written(tidy(rhs)) + r"^\circ")
         y, x = (getattr(page.nm, c) for c in direction)
         lhs, rhs_ = y * sympy.cos(rel.lhs), x * sympy.sin(rel.lhs)
-    text: Text = ("The problem gives ", Math(sympy.Eq(rel.lhs, rhs, evaluate=False)), ": one more equation.")
-    lines = [Eqn((Side((lhs,)), Side((rhs_,))))]
+    unit = _unit_of_number(page, rel) if direction is None else None
+    text: Text = ("The problem gives ", Math(sympy.Eq(rel.lhs, rhs, evaluate=False)), *((f" {unit}",) if unit else ()))
+    text += (": one more equation.",)
+    lines = [Eqn((Side((lhs,)), Side((rhs_,), "values" if unit else "symbolic")))]
     if page.has_values(lhs) or page.has_values(rhs_):
         lines.append(Eqn((Side((lhs,), "values"), Side((rhs_,), "values"))))
-    lines[-1] = Eqn(lines[-1].sides, tag=page.tags(k))
+    lines[-1] = Eqn(lines[-1].sides, tag=page.tags(k), unit=unit)
     return Block(text, tuple(lines)), page.num(lhs - rhs_)
+
+
+def _unit_of_number(page: Page, rel: Any) -> str | None:
+    """The unit of ``name = number`` (v_A2t = -2 m/s), where the number has one."""
+    if not (isinstance(rel.lhs, sympy.Symbol) and rel.rhs.is_number and rel.rhs != 0):
+        return None
+    r = page.results.get(rel.lhs.name)
+    return (r.unit or None) if r is not None else page.unit_of(rel.lhs)
 
 
 def t_momentum(

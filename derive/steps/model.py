@@ -122,7 +122,8 @@ class Solution:
     ``values`` maps each symbol with a number to its exact value, for substitution
     lines; ``angles`` are the symbols held in radians and shown in degrees;
     ``answers`` closes a chain; ``shown`` and ``ranges`` are the problem's "show that"
-    results and ranges as the physics decided them.
+    results and ranges as the physics decided them; ``others`` the results of each other
+    physical solution, where the data do not choose one.
     """
 
     problem: Problem | ChainProblem
@@ -133,6 +134,7 @@ class Solution:
     answers: tuple[Answer, ...] = ()
     shown: tuple[Any, ...] = ()
     ranges: tuple[Any, ...] = ()
+    others: tuple[dict[str, Result], ...] = ()
 
     @property
     def is_chain(self) -> bool:

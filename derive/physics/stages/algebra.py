@@ -77,7 +77,11 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
     found = sympy.solve(in_unknown - rhs_expr, u)
     roots = [r for r in found if admissible(state, u, r)]
     if len(roots) != 1:
-        raise SolveError(f"stage {i}: {raw} gives {len(roots)} admissible values of {u.name}", where=state.chain.path)
+        listed = f" ({', '.join(_shown(state.value(r)) for r in roots)})" if roots else ""
+        hint = "; the data do not choose between them: give one more value" if len(roots) > 1 else ""
+        raise SolveError(
+            f"stage {i}: {raw} gives {len(roots)} admissible values of {u.name}{listed}{hint}", where=state.chain.path
+        )
     waiting = {n: state.value(g.symbol) for n, g in state.known.items() if g.value is None and g.definition is not None}
     state.solved[u] = roots[0]
     updated = []
@@ -93,6 +97,11 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
         lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim, in_unknown, len(found), lhs_unit, tuple(updated)
     )
     return StageOutcome(i, "solve", f"Solve for {u.name}", data, (u.name,))
+
+
+def _shown(v: sympy.Expr) -> str:
+    """A root as a reader would quote it: 4 figures where it is a number."""
+    return f"{float(sympy.N(v)):.4g}" if v.is_number and v.is_real else str(v)
 
 
 def admissible(state: ChainState, u: sympy.Symbol, r: sympy.Expr) -> bool:

@@ -8,6 +8,7 @@ import sympy
 
 from derive.fileio import dumps_json
 from derive.numbers import format_number
+from derive.physics.results import Result
 from derive.problem import Given
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
@@ -35,11 +36,11 @@ def _givens_json(givens: tuple[Given, ...]) -> dict[str, dict[str, Any]]:
     }
 
 
-def _results(solution: Solution, d: int) -> dict[str, dict[str, Any]]:
+def _results(found: dict[str, Result], d: int) -> dict[str, dict[str, Any]]:
     """Each result of one impact: its number, unit, expression (text and LaTeX) and description."""
     results = {}
     printer = StepPrinter()
-    for name, r in solution.results.items():
+    for name, r in found.items():
         value = None if r.value is None else float(sympy.N(r.value, 17))
         entry: dict[str, Any] = {
             "value": value,
@@ -60,7 +61,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
     """The JSON contract of DESIGN.md: title, kind, results (+ givens and steps)."""
     p = solution.problem
     d = digits if digits is not None else p.digits
-    results = _results(solution, d)
+    results = _results(solution.results, d)
     printer = StepPrinter()
     v = view(solution, digits)
     doc = {
@@ -105,6 +106,8 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
             for s in v["stages"]
         ],
     }
+    if solution.others:  # the data allow more than one physical solution: the others, in order
+        doc["others"] = [_results(found, d) for found in solution.others]
     return dumps_json(doc)
 
 
