@@ -63,6 +63,12 @@ def round_value(value: sympy.Expr | Decimal | int | str, digits: int | None = No
     return _round_sig(d, figures_for(d, digits))
 
 
+def float_decimal(x: object) -> Decimal:
+    """A float computed from rounded data, to 12 significant figures: its binary noise gone,
+    so that 53.15 rounds half up to 53.2, not as 53.149999999999995 to 53.1."""
+    return Decimal(f"{float(x):.12g}")
+
+
 def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = None, *, extra: int = 0) -> str:
     """``value`` as text at ``digits`` (+``extra`` for intermediates) significant figures.
 

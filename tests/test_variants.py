@@ -277,3 +277,27 @@ def test_inverse_draws_keep_the_unknown_physical() -> None:
     chosen = variants.draw(compiled, 20, seed=1)
     es = [variants.answers(compiled, v)["e"]["value"] for v in chosen]
     assert all(-1e-12 <= x <= 1 + 1e-12 for x in es) and max(es) > 0.5
+
+
+def test_the_key_rounds_exact_halves_up_as_the_page_does() -> None:
+    """A value that is exactly half way (T_2 = 2.185 J) is rounded half up, as the textbook
+    rule says, not as its float (2.18499999...) would be: each energy of the key equals the
+    exact value, worked with fractions from the variant's numbers, rounded half up."""
+    from fractions import Fraction
+
+    from derive.numbers import format_number
+
+    compiled = variants.compile_problem(derive.load("aqa-m3-2007-spheres-approach-head-on"))
+    ties = 0
+    for v in variants.draw(compiled, 40, seed=1):
+        g = {k: Fraction(str(float(x))) for k, x in v.values.items()}
+        mA, mB, u, w, e = g["m_A"], g["m_B"], g["v_A1"], Fraction(-2), Fraction(8, 10)
+        vA = (mA * u + mB * w - e * mB * (u - w)) / (mA + mB)  # (3) and (4)
+        vB = vA + e * (u - w)
+        exact = {"T_1": (mA * u * u + mB * w * w) / 2, "T_2": (mA * vA * vA + mB * vB * vB) / 2}
+        key = variants.answers(compiled, v)
+        for name, x in exact.items():
+            d = Decimal(x.numerator) / Decimal(x.denominator)
+            assert key[name]["shown"] == format_number(d, compiled.problem.digits), (v.values, name)
+            ties += format_number(d, 3) != format_number(Decimal(float(x)), 3)
+    assert ties  # the draw has values where the float alone would round the other way

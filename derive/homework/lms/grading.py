@@ -8,7 +8,7 @@ from decimal import Decimal
 
 from derive.errors import InputError
 from derive.homework.variants import Compiled, Variant, answers
-from derive.numbers import figures_for
+from derive.numbers import figures_for, float_decimal
 
 #: The tolerance in units of the last digit shown: ½ (rounding) + 1 (the checker's allowance).
 TOLERANCE_UNITS = Decimal("1.5")
@@ -57,7 +57,7 @@ def tolerance(shown: str, figures: int | None = None) -> Decimal:
 
 def figures_of(value: float, digits: int | None) -> int:
     """The figures ``format_number(value, digits)`` rounds to (as the key shows numbers)."""
-    return figures_for(Decimal(repr(float(value))), digits)
+    return figures_for(float_decimal(value), digits)
 
 
 def asked_answer(name: str, row: dict, digits: int | None) -> Answer:

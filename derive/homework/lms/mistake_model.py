@@ -12,7 +12,7 @@ import sympy
 from derive.checking import mistakes
 from derive.homework.lms.grading import Answer, figures_of, tolerance
 from derive.homework.variants import Compiled, Variant
-from derive.numbers import format_number
+from derive.numbers import float_decimal, format_number
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,7 @@ class MistakeModel:
         found: dict[str, list[str]] = {}
         figs: dict[str, int] = {}
         for name, x in self.values(variant, right.name):
-            shown = format_number(Decimal(repr(x)), d)
+            shown = format_number(float_decimal(x), d)
             if abs(Decimal(shown) - right.value) <= right.tolerance:
                 continue  # within the right answer's tolerance: it grades as right
             found.setdefault(shown, []).append(name)

@@ -11,7 +11,7 @@ from typing import Any
 import sympy
 
 from derive.homework.variants.compile import FIGURE, Compiled, Variant
-from derive.numbers import format_number, format_places, places_that_add_up
+from derive.numbers import float_decimal, format_number, format_places, places_that_add_up
 from derive.problem import Given
 from derive.problem.units import plain_unit
 from derive.writers.printing import SIDE_BEGIN, SIDE_END, adds_up, exact_latex, printed_number
@@ -28,15 +28,15 @@ def _places(claims: list[tuple[object, object]], args: list[float], digits: int 
     """Places after the point for a block, so that its sums add up (as printing does)."""
     sums = []
     for terms_fn, total_fn in claims:
-        terms = [Decimal(repr(float(t))) for t in terms_fn(*args)]
-        sums.append((terms, Decimal(repr(float(total_fn(*args))))))
+        terms = [float_decimal(t) for t in terms_fn(*args)]
+        sums.append((terms, float_decimal(total_fn(*args))))
     # a compiled page shows every line, so a variant may carry up to three more places
     return places_that_add_up(sums, digits, extra, more=3)
 
 
 def _allowed(x: float, digits: int | None, extra: int) -> int:
     """Significant figures a number at ``digits`` (+``extra``) shows."""
-    return len(Decimal(format_number(Decimal(repr(float(x))), digits, extra=extra).split("e")[0]).as_tuple().digits)
+    return len(Decimal(format_number(float_decimal(x), digits, extra=extra).split("e")[0]).as_tuple().digits)
 
 
 def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
@@ -48,7 +48,7 @@ def _number(x: float, digits: int | None, extra: int, integers: bool, places: in
                 if k and len(exact.normalize().as_tuple().digits) > _allowed(x, digits, extra):
                     break  # exact, but more figures than an intermediate shows: 857.3, not 857.25
                 return str(exact) if k else str(round(x))
-    d = Decimal(repr(float(x)))
+    d = float_decimal(x)
     if places is not None:  # the block's places, never more figures than the rule (-121.2, not -121.22)
         return format_places(d, places, digits, extra)
     text = format_number(d, digits, extra=extra)
@@ -183,7 +183,7 @@ def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> 
         out[name] = {
             "value": x,
             "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
-            "shown": format_number(Decimal(repr(x)), d),
+            "shown": format_number(float_decimal(x), d),
         }
     return out
 
