@@ -56,16 +56,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     _masses_from_weights(givens, by_name, fixed_B, system, ctx)
     _check_needs(by_name, kind, fixed_B, ctx)
     phi = geometry(data.get("geometry"), givens, by_name, ctx, oblique, system)
-    motions = []
-    for b in "AB":
-        if b == "B" and fixed_B:
-            motions.append(Motion("B", sympy.Integer(0), sympy.Integer(0)))
-            continue
-        found, extra = motion(b, bodies[b], by_name, ctx, oblique, phi)
-        if extra is not None:
-            givens.append(extra)
-            by_name[extra.name] = extra
-        motions.append(found)
+    motions = _motions(bodies, givens, by_name, ctx, oblique, phi, fixed_B)
     unknown = tuple(g.name for g in givens if g.unknown)
     asks = _asks(data, givens, by_name, after, ctx, oblique, system)
     extra_names = tuple(d.name for d in asks.defined) + (
@@ -99,6 +90,29 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     except RecordError as exc:
         raw = data.get(exc.section, {}).get(exc.key) if exc.section else data.get(exc.key or "")
         raise ctx.error(exc.what, section=exc.section, key=exc.key, value=raw, cls=exc.cls) from exc
+
+
+def _motions(
+    bodies: Mapping[str, Any],
+    givens: list[Given],
+    by_name: dict[str, Given],
+    ctx: Source,
+    oblique: bool,
+    phi: sympy.Symbol | None,
+    fixed_B: bool,
+) -> list[Motion]:
+    """A's and B's velocities before the impact; an angle they need is added to the givens."""
+    motions = []
+    for b in "AB":
+        if b == "B" and fixed_B:
+            motions.append(Motion("B", sympy.Integer(0), sympy.Integer(0)))
+            continue
+        found, extra = motion(b, bodies[b], by_name, ctx, oblique, phi)
+        if extra is not None:
+            givens.append(extra)
+            by_name[extra.name] = extra
+        motions.append(found)
+    return motions
 
 
 #: Results after the impact a file may give as knowns (each becomes an equation).
