@@ -112,7 +112,9 @@ class ChainState:
             )
         if unit is None:
             unit = units.working_unit(dim, self.chain.system).text if dim in units.SYSTEMS[self.chain.system] else ""
-        g = Given(name, symbol(name), dim, value, unit, definition=expr)
+        used = [k for k in self.known.values() if k.symbol in sympy.sympify(expr).free_symbols]
+        inexact = any(k.decimal or k.inexact for k in used)  # from decimal data: shown as decimals
+        g = Given(name, symbol(name), dim, value, unit, definition=expr, inexact=inexact)
         self.known[name] = g
         return g
 

@@ -321,7 +321,8 @@ def _from_expression(
         if parsed.dim in units.SYSTEMS[system]
         else units.Unit("", sympy.Integer(1), parsed.dim)
     )
-    return Given(key, sym, parsed.dim, value, work.text, definition=parsed.expr)
+    inexact = any(g.inexact for g in done.values() if g.symbol in parsed.expr.free_symbols)
+    return Given(key, sym, parsed.dim, value, work.text, definition=parsed.expr, inexact=inexact)
 
 
 def _checked_value(value: sympy.Expr, err: Err) -> sympy.Expr:

@@ -54,12 +54,16 @@ class Given:
     written: str | None = None
     definition: sympy.Expr | None = None
     unknown: bool = False
+    inexact: bool = False
 
     @property
     def decimal(self) -> bool:
         """True for a number that is not whole and was not written as an expression (0.6,
-        37.6 deg, 22 g as 0.022 kg): where it meets letters the worked lines show decimals;
-        exact data (integers, 3/5, sqrt(2)) stay exact."""
+        37.6 deg, 22 g as 0.022 kg), or one worked out from such numbers (``inexact``: a
+        chain's v_1 = sqrt(2 g h) with g = 9.8): where it meets letters the worked lines
+        show decimals; exact data (integers, 3/5, sqrt(2)) stay exact."""
+        if self.value is not None and self.inexact:
+            return not self.value.is_Integer
         if self.value is None or self.definition is not None:
             return False
         if self.unit == "deg":

@@ -173,7 +173,11 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     if c.updated:
         lines = tuple(
             Eqn(
-                (Side((q.symbol,)), Side((before,), "numeric"), Side((_in_unit(now, q.unit),), "result")),
+                (
+                    Side((q.symbol,)),
+                    Side((sympy.N(before, 15) if q.decimal else before,), "numeric"),  # -6.261 e_floor, from g = 9.8
+                    Side((_in_unit(now, q.unit),), "result"),
+                ),
                 unit=q.unit or None,
             )
             for q, before, now in c.updated

@@ -132,7 +132,9 @@ class Page:
         """``expr`` with the pre-impact components and every numeric given put in; where a
         letter stays, those the file wrote as decimals go in as decimals (0.9 u, not 9u/10)."""
         exact = evaluate(expr.xreplace(self.imp.pre), self.p)
-        if exact.free_symbols & self.letters:
+        if (
+            exact.free_symbols | expr.xreplace(self.imp.pre).free_symbols
+        ) & self.letters:  # e, or e_floor it stands for
             return evaluate(expr.xreplace(self.imp.pre), self.p, decimals=True)
         return exact
 
@@ -142,7 +144,11 @@ class Page:
         if r is not None:
             if r.value is not None:
                 return r.value
-            if r.unit != "deg" and any(g.decimal for g in self.p.givens) and r.partial.free_symbols & self.letters:
+            if (
+                r.unit != "deg"
+                and any(g.decimal for g in self.p.givens)
+                and (r.partial.free_symbols | r.closed.free_symbols) & self.letters
+            ):
                 shown = evaluate(r.closed, self.p, decimals=True)  # 0.475 v_A1 √2, not 19 v_A1 √2/40
                 trig = shown.has(sympy.sin, sympy.cos, sympy.tan)  # simplify can take minutes on these
                 return sympy.simplify(shown) if sympy.count_ops(shown) < 40 and not trig else shown
