@@ -301,3 +301,16 @@ def test_the_key_rounds_exact_halves_up_as_the_page_does() -> None:
             assert key[name]["shown"] == format_number(d, compiled.problem.digits), (v.values, name)
             ties += format_number(d, 3) != format_number(Decimal(float(x)), 3)
     assert ties  # the draw has values where the float alone would round the other way
+
+
+@pytest.mark.parametrize("fmt", ["md", "tex"])
+def test_a_students_sheet_says_which_way_n_points(fmt: str) -> None:
+    """Issue #15: the sheet asks for signed components, so it says in words which way +n
+    (and +t) points, as the worked page does, besides the figure."""
+    compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"), fmt=fmt)
+    (v,) = variants.draw(compiled, 1, seed=2)
+    page = variants.fill(compiled, v, fmt)
+    sheet = variants.statement_only(page, variants.setup_figure(compiled, v, fmt))
+    assert "Take $n$ along the line of impact, positive from the centre of A toward the centre of B" in sheet
+    assert "Components are signed: positive along +n and +t." in sheet
+    assert "Solution" not in sheet and "boxed" not in sheet

@@ -203,20 +203,37 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
 TEX_SOLUTION = "% derive: the solution\n"
 
 
+#: The sentences of a worked page that say which way the axes point (its geometry stage).
+_CONVENTION = re.compile(r"^(?:\\noindent )?(Take \$n\$ along .*|The impact is direct: every velocity .*)$", re.M)
+
+
+def convention(page: str) -> list[str]:
+    """The sign convention in words, as the worked page states it: which way +n (and +t)
+    points, and that the components asked for are signed along them."""
+    found = [m.group(1).removesuffix("\\par") for m in _CONVENTION.finditer(page)]
+    if found and not any(f.startswith("The impact is direct") for f in found):
+        found.append("Components are signed: positive along +n and +t.")
+    return found
+
+
 def statement_only(page: str, figure: str = "") -> str:
     """The part of a worked page a student gets: up to the solution (Markdown, or a
     LaTeX document, which is then closed), without the Source line (citations quote
-    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find."""
+    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find and
+    the sign convention in words after it."""
+    words = convention(page)
     if TEX_SOLUTION in page:
         head = page[: page.index(TEX_SOLUTION)]
         head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
         shown = f"\n\n\\begin{{center}}\n{figure}\n\\end{{center}}" if figure else ""
-        return head.rstrip() + shown + "\n\n\\end{document}\n"
+        said = "".join(f"\n\n\\noindent {w}\\par" for w in words)
+        return head.rstrip() + shown + said + "\n\n\\end{document}\n"
     cut = page.find("**Solution.**")
     head = page if cut < 0 else page[:cut]
     head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
     shown = f'\n\n<div align="center">{figure}</div>' if figure else ""
-    return head.rstrip() + shown + "\n"
+    said = "".join(f"\n\n{w}" for w in words)
+    return head.rstrip() + shown + said + "\n"
 
 
 def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
