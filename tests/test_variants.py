@@ -277,3 +277,20 @@ def test_inverse_draws_keep_the_unknown_physical() -> None:
     chosen = variants.draw(compiled, 20, seed=1)
     es = [variants.answers(compiled, v)["e"]["value"] for v in chosen]
     assert all(-1e-12 <= x <= 1 + 1e-12 for x in es) and max(es) > 0.5
+
+
+def test_a_variant_page_gives_a_defined_component_its_number_and_a_component_one_number() -> None:
+    """ocr-m3-2013: B's components are defined from varied givens (v_B1n = -u_B cos(alpha)).
+    A variant's page printed a bare "v_B1n" line, and boxed v_A2 as a sum of three numbers,
+    ê_n (0.800 - 0.846 - 0.1120), where the solve shows one number."""
+    compiled = variants.compile_problem(derive.load("ocr-m3-2013-b-turns-through-right-angle"))
+    for v in variants.draw(compiled, 5, seed=1):
+        page = variants.fill(compiled, v)
+        u, a = float(v.values["u_B"]), float(v.values["alpha"])
+        line = re.search(r"^v_\{B1n\} = (.*)$", page, flags=re.M)
+        assert line is not None and line.group(1).startswith(r"-u_{B} \cos {\alpha} = "), page
+        shown = re.search(r"= (-?[\d.]+)\\ \\mathrm\{m/s\}$", line.group(1))
+        assert shown is not None and float(shown.group(1)) == pytest.approx(-u * math.cos(a), rel=2e-3)
+        box = re.search(r"\\boxed\{\\vec\{v\}_\{A2\} = (-?[\d.]+) \\hat\{e\}_\{n\}\\ \\mathrm\{m/s\}\}", page)
+        assert box is not None, page
+        assert float(box.group(1)) == pytest.approx(variants.answers(compiled, v)["v_A2n"]["value"], rel=2e-3)
