@@ -72,8 +72,10 @@ def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
     return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}
 
 
-def given_latex(g: Given, style: Style) -> tuple[str, str]:
-    """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
+def given_latex(g: Given, style: Style, opened: Mapping[sympy.Symbol, sympy.Expr] | None = None) -> tuple[str, str]:
+    """A given as LaTeX, and a note in words (symbolic, converted, defined). ``opened``: the
+    definitions of the givens whose numbers a variant leaves open (v_B1t = u_B sin(alpha)),
+    for a given defined from one of them (v_B2n = v_B1t tan(alpha))."""
     name = latex_name(relabel(g.name, style.labels))
     if g.unknown:
         return name + r" = \,?", "unknown: derive finds it"
@@ -87,8 +89,16 @@ def given_latex(g: Given, style: Style) -> tuple[str, str]:
         and g.definition is not None
         and g.definition.free_symbols & style.varied
     ):  # defined from a varied given (m_A = W_A/g)
-        parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
-        value = latex_expr(g.definition, "numeric", style, 1)
+        expr = g.definition
+        for _ in range(
+            len(opened or ())
+        ):  # in the varied givens themselves: v_B1t tan(alpha) = u_B sin(alpha) tan(alpha)
+            if not expr.free_symbols & set(opened or ()):
+                break
+            expr = expr.xreplace(opened or {})
+        shown = [g.definition] if expr == g.definition else [g.definition, expr]
+        parts = [name, *(StepPrinter().doprint(x) for x in shown), latex_expr(expr, "values", style, 1)]
+        value = latex_expr(expr, "numeric", style, 1)
         unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
         return " = ".join([*parts, value]) + unit, ""
     if g.value is None:

@@ -90,7 +90,8 @@ def view(
     p = solution.problem
     style = _style(solution, digits, layout, slots, varied, outer_letters, outer_decimal)
     stages = _stages(solution, style, layout, figures=figures, falls=falls, known=known)
-    givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
+    opened = {g.symbol: g.definition for g in p.givens if g.value is None and g.definition is not None}
+    givens = [dict(zip(("latex", "note"), given_latex(g, style, opened), strict=False)) for g in p.givens]
     find = _find(p, style)
     plot_svg, plot_tikz = _plot(p) if plot else ("", "")
     return {
