@@ -76,7 +76,6 @@ def test_a_bundled_statement_reads_as_before_with_placeholders() -> None:
     """The bundled files whose statements now use placeholders read as they were typed."""
     cases = {
         "openstax-cp-8-train-cars-couple": "velocity 0.300 m/s; the other has mass 110,000 kg and velocity -0.120 m/s",
-        "uoguelph-8-34-superballs-grams": "A superball of mass 22 g rolls at 3.5 m/s",
         "gramoll-ecourses-two-balls-elastic": "ball B moves at 3 m/s straight along",
         "young-freedman-8-96-pucks-find-mass": "blue puck of mass 0.0400 kg slides at 0.200 m/s",
     }
