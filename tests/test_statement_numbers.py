@@ -81,3 +81,22 @@ def test_a_bundled_statement_reads_as_before_with_placeholders() -> None:
     }
     for name, text in cases.items():
         assert text in _given_paragraph(derive.render(derive.solve(derive.load(name)), "md")), name
+
+
+def test_a_question_can_state_the_value_derive_finds() -> None:
+    """aqa-fm: "show that e = {=e}" reads "show that e = 0.8" in the solve (as typed before)
+    and, in each variant, the e that variant's numbers give, as its key shows it."""
+    problem = derive.load("aqa-fm-specimen-discs-show-e-0p8")
+    md = derive.render(derive.solve(problem), "md")
+    assert "**Find.** Find the velocity of B after the collision and show that e = 0.8." in md
+    compiled = variants.compile_problem(problem)
+    for v in variants.draw(compiled, 6, seed=3):
+        page = variants.fill(compiled, v)
+        shown = variants.answers(compiled, v)["e"]["shown"]
+        assert f"show that e = {shown}." in page, page[:2000]
+
+
+def test_a_found_value_placeholder_of_no_result_stays_as_typed() -> None:
+    text = CARTS.replace("; e = {e}.", "; {=nothing} and {=m_A}.")
+    said = _given_paragraph(derive.render(derive.solve(loads(text, path="c.toml")), "md"))
+    assert said.endswith(r"; {=nothing} and {=m\_A}.")  # a given is no found value (Markdown escapes _)

@@ -137,6 +137,18 @@ def _converted(g: Given) -> bool:
     return g.written is not None and g.typed is not None and sympy.Rational(g.typed) != 0
 
 
+def _found(name: str, found: Mapping[str, sympy.Expr], style: Style) -> str:
+    """``{=name}``: the number the solution finds for an unknown or a result (exact and short
+    as found, 0.8; a variant's at the page's figures, 0.361), without a unit; the placeholder
+    as typed where there is no such number."""
+    value = found.get(name)
+    if value is None or (not getattr(value, "is_number", True) and style.slots is None):
+        return "{=" + name + "}"
+    if style.slots is not None and not value.is_number:
+        return style.slots.token(value, "result", style.digits, 0, None)
+    return exact_latex(value, style.digits, 0)
+
+
 def statement_unit(g: Given) -> str:
     """The unit after a given's number in a statement: the one the file typed it in."""
     if g.unit == "deg":
@@ -164,21 +176,26 @@ def statement_number(g: Given, value: sympy.Expr, digits: int | None, magnitude:
     return text
 
 
-_PLACEHOLDER = re.compile(r"\{(@?[A-Za-z][A-Za-z0-9_]*|\|[A-Za-z][A-Za-z0-9_]*\|)\}")
+_PLACEHOLDER = re.compile(r"\{([@=]?[A-Za-z][A-Za-z0-9_]*|\|[A-Za-z][A-Za-z0-9_]*\|)\}")
 
 
-def statement(p: Any, style: Style, text: str | None = None) -> list[tuple[str, str]] | None:
+def statement(
+    p: Any, style: Style, text: str | None = None, found: Mapping[str, Any] | None = None
+) -> list[tuple[str, str]] | None:
     """The statement (or ``text``, the question) as text and mathematics: each ``{name}``
     of a given becomes its value and unit (as the file typed it: :func:`statement_number`),
     or its symbol when it is kept as a letter; ``{|name|}`` its magnitude (a speed given as
     a signed component); ``{@name}``, any name (a given, a result, a name of the notes), its
-    symbol, as mathematics (``{@theta_1} = {theta_1}``: θ₁ = 45°). Other braces stay as typed."""
+    symbol, as mathematics (``{@theta_1} = {theta_1}``: θ₁ = 45°); ``{=name}`` the number the
+    solution ``found`` for an unknown or a result ("show that e = {=e}"). Other braces stay as typed."""
     source = p.statement if text is None else text
     if not source:
         return None
     by_name = {g.name: g for g in p.givens}
 
     def one(name: str) -> tuple[str, str]:
+        if name.startswith("="):  # the value derive finds: "show that e = {=e}"
+            return "text", _found(name[1:], found or {}, style)
         bare = name.strip("|")
         g = by_name.get(bare)
         if g is not None and style.slots is not None and g.symbol in style.varied:  # a variant's number
