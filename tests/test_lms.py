@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+import textwrap
 import uuid
 import xml.etree.ElementTree as ET
 from decimal import Decimal
@@ -281,3 +282,40 @@ def test_cli_bad_result_writes_nothing(cli, tmp_path: Path) -> None:
     assert not out.exists() and not xml.exists()
     r = cli("variants", NAME, "--count", "2", "-o", str(out), "--result", "v_A2n")
     assert r.code == 2 and "--moodle" in r.err
+
+
+def test_prairielearn_statement_prints_numbers_as_typed(tmp_path: Path) -> None:
+    """A statement's 2.50 m/s, 22 g and {|v_B1|} read in PrairieLearn as in the Moodle
+    question and the student's sheet: the places and unit typed, a speed's magnitude."""
+    text = textwrap.dedent(
+        """
+        title = "Two carts"
+        kind = "direct"
+        statement = "Cart A ({m_A}) at {v_A1} meets cart B coming the other way at {|v_B1|}."
+        [given]
+        m_A = "22 g"
+        m_B = "2.0 kg"
+        e = 0.5
+        v_A1 = "2.50 m/s"
+        v_B1 = "-1.20 m/s"
+        [vary]
+        v_A1 = { min = "2 m/s", max = "4 m/s", step = "0.5 m/s" }
+        v_B1 = { choices = ["-1 m/s", "-1.5 m/s"] }
+        m_A = { choices = ["20 g", "36 g"] }
+        """
+    )
+    compiled = variants.compile_problem(loads(text, path="carts.toml"))
+    chosen = variants.draw(compiled, 4, seed=2)
+    lms.prairielearn(compiled, chosen, tmp_path, result="v_A2")
+    moodle = _numerical(lms.moodle_xml(compiled, chosen, result="v_A2"))
+    page = (tmp_path / "question.html").read_text()
+    assert "{{params.derive_speed_v_B1}}" in page  # a template, not the whole statement
+    server = _server(tmp_path)
+    for i, v in enumerate(chosen):
+        data: dict = {"params": {}, "correct_answers": {}, "variant_seed": i}
+        server["generate"](data)
+        panel = _mustache(page, data["params"]).split("<pl-question-panel>\n")[1].split("\n<p>Enter")[0]
+        assert panel == _text(moodle[i], "questiontext/text").split("\n<p>Enter")[0]
+        speed = f"{abs(float(v.values['v_B1'])):.2f}"
+        assert f"({int(v.values['m_A'] * 1000)} g) at {float(v.values['v_A1']):.2f} m/s" in panel, panel
+        assert f"the other way at {speed} m/s." in panel, panel

@@ -43,6 +43,8 @@ RESERVED: dict[str, Dim] = {
     "g": units.ACCELERATION,
     "phi": ANGLE,
 }
+#: A number typed as a plain decimal before its unit ("2.50 m/s", "-0.120 m/s", "37.6 deg").
+_TYPED = re.compile(r"([-+]?(?:\d+\.?\d*|\.\d+))(?:\s+\S.*|°)?$")
 #: Standard gravity as textbooks use it, by unit system (for mass = W/g).
 GRAVITY = {"SI": ("9.81", "m/s^2"), "US": ("32.2", "ft/s^2")}
 #: Names a file may not give: the results derive computes (the velocities after
@@ -203,7 +205,11 @@ def given_value(
             raise err(
                 'is empty: expected a number with a unit ("5 m/s"), a unit alone for a symbol ("m/s"), or an expression'
             )
-        return _from_text(key, sym, letter, text, done, system, err)
+        given = _from_text(key, sym, letter, text, done, system, err)
+        typed = _TYPED.match(text)
+        if typed and given.value is not None and given.definition is None:
+            return replace(given, typed=typed.group(1))
+        return given
     except RecordError as exc:
         raise err(exc.what, exc.cls) from exc
 

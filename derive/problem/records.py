@@ -43,7 +43,9 @@ class Given:
     """One given: its symbol, dimension and exact value in the problem's working unit.
 
     ``value`` is None for a symbolic given. Angles are held in radians (shown in
-    degrees); ``written`` is the text as the file gave it when it was converted.
+    degrees); ``written`` is the text as the file gave it when it was converted;
+    ``typed`` the number as the file typed it ("2.50" of "2.50 m/s"), for a statement
+    to print a value with the places the file gave it.
     """
 
     name: str
@@ -55,6 +57,7 @@ class Given:
     definition: sympy.Expr | None = None
     unknown: bool = False
     inexact: bool = False
+    typed: str | None = None
 
     @property
     def decimal(self) -> bool:

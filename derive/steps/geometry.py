@@ -65,8 +65,12 @@ def _resolved(page: Page, motion: Motion, comps: tuple[sympy.Symbol, sympy.Symbo
     if motion.x is not None:
         return Block(text, tuple(_xy_lines(page, motion, cn, ct)))
     lines = []
+    defined = {g.symbol: g.definition for g in page.p.givens if g.definition is not None}
+    open_ = {g.symbol for g in page.p.givens if g.value is None} & page.varied  # a variant's numbers, not yet in
     for c in (cn, ct):
         expr = page.imp.pre[c]
+        if expr == c and c in defined and defined[c].free_symbols & open_:  # a variant's v_B1n = -u_B cos(alpha)
+            expr = defined[c]  # (its number is open, so the line shows where it comes from)
         sides = [Side((c,))]
         if expr != c:
             sides.append(Side((expr,)))

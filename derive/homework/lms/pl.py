@@ -43,9 +43,9 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
             continue
         slot = compiled.book.slots[part]
         given = by_symbol.get(slot.expr)
-        if given is None or slot.kind not in ("given", "text"):
+        if given is None or slot.kind not in ("given", "text", "text:abs"):
             return None
-        key = given if slot.kind == "text" else f"derive_given_{given}"
+        key = {"text": given, "text:abs": f"derive_speed_{given}"}.get(slot.kind, f"derive_given_{given}")
         keys[key] = (given, slot.kind)
         out.append(_PARAM.format(list(keys).index(key)))
     page = statement_html("".join(out))
@@ -58,12 +58,17 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
 
 def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
     from derive.homework.variants import given_text
+    from derive.writers.view.givens import statement_number
 
     d = digits if digits is not None else compiled.problem.digits
     out = {}
     for key, (name, kind) in keys.items():
-        text = given_text(compiled.givens[name], variant.values[name], d)
-        out[key] = rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text
+        g, value = compiled.givens[name], variant.values[name]
+        if kind.startswith("text"):  # as the statement prints it: 2.50, 22 (g), |v_B1|
+            out[key] = statement_number(g, value, d, magnitude=kind == "text:abs")
+            continue
+        text = given_text(g, value, d)
+        out[key] = rf"\left({text}\right)" if text.startswith("-") else text
     return out
 
 

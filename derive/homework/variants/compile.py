@@ -59,6 +59,15 @@ def _symbolic(problem: Problem) -> Problem:
     return replace(problem, givens=tuple(givens))
 
 
+def _exact_zero(expr: sympy.Expr) -> sympy.Expr:
+    """0 for a polynomial in the varied givens that is 0 (T_lost = T_1 - T_2 at e = 1, with
+    m_B found: m_A v_A1²/2 - m_A v_A2²/2 - m_A (v_A1 - v_A2)(v_A1 + v_A2)/2), which floating
+    point would print as 4.34 × 10⁻¹⁹; any other expression as it is."""
+    if isinstance(expr, sympy.Expr) and expr.free_symbols and expr.is_polynomial() and sympy.expand(expr) == 0:
+        return sympy.Integer(0)
+    return expr
+
+
 def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> object:
     return sympy.lambdify(symbols, exprs, modules=["math"], cse=True)
 
@@ -98,7 +107,7 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     ind = independent_map(symbolic)
 
     def prep(expr: sympy.Expr) -> sympy.Expr:
-        return sympy.sympify(expr).xreplace(ind).xreplace(fixed)
+        return _exact_zero(sympy.sympify(expr).xreplace(ind).xreplace(fixed))
 
     slot_fn = _lambdify(symbols, [prep(s.expr) for s in book.slots]) if book.slots else None
     claim_fns = {

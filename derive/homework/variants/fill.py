@@ -15,6 +15,7 @@ from derive.numbers import float_decimal, format_number, format_places, places_t
 from derive.problem import Given
 from derive.problem.units import plain_unit
 from derive.writers.printing import SIDE_BEGIN, SIDE_END, adds_up, exact_latex, printed_number
+from derive.writers.view.givens import statement_number
 
 
 def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
@@ -66,6 +67,7 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
     places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
     texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    by_symbol = {compiled.givens[n].symbol: compiled.givens[n] for n in compiled.names}
     angles = {compiled.givens[n].symbol for n in compiled.names if compiled.givens[n].unit == "deg"}
     out = []
     for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
@@ -74,11 +76,15 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
             continue
         slot = compiled.book.slots[part]
         kind = slot.kind
-        if kind in ("given", "text"):
+        if kind.startswith("text"):  # a statement's {name} or {|name|}
+            g = by_symbol[slot.expr]
+            out.append(statement_number(g, variant.values[g.name], d, magnitude=kind == "text:abs"))
+            continue
+        if kind == "given":
             text = texts[slot.expr]
-            if kind == "given" and slot.expr in angles:
+            if slot.expr in angles:
                 text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
-            out.append(rf"\left({text}\right)" if kind == "given" and text.startswith("-") else text)
+            out.append(rf"\left({text}\right)" if text.startswith("-") else text)
             continue
         if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
             text = texts[slot.expr]  # a given's own number, as written

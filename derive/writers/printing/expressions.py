@@ -274,7 +274,13 @@ def _slot_term(
     if not (coeff.free_symbols & style.varied):
         return None
     printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True, labels=style.labels)
-    if first and isinstance(coeff, sympy.Add) and all(a.free_symbols <= style.varied for a in coeff.args):
+    unit_vector = all(str(x).startswith("vec:e_") for x in rest.free_symbols)  # 0.158 ê_n: a component, one number
+    if (
+        first
+        and not unit_vector
+        and isinstance(coeff, sympy.Add)
+        and all(a.free_symbols <= style.varied for a in coeff.args)
+    ):
         # a sum of coefficients stays a sum, v_A2n (12 + 6) as the notes write v_A2n (20 + 5):
         # one number there would read v_A2n = 2.25 + 0, a velocity without its unit, where it is 1
         parts = [

@@ -26,6 +26,8 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
     if not letters or not letters <= style.letters | set(style.letter_units):
         return None
     dims = {s: parse_unit(style.letter_units[s]).dim if s in style.letter_units else (0, 0, 0, 0) for s in letters}
+    if term.free_symbols & style.varied:  # a variant's open numbers: numbers (square roots of primes: none cancel)
+        term = term.xreplace({s: sympy.sqrt(sympy.prime(i + 2)) for i, s in enumerate(sorted(style.varied, key=str))})
     have = _dimension(term, dims)
     if have is None or have == parse_unit(eqn.unit).dim:
         return None

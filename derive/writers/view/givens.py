@@ -72,8 +72,10 @@ def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
     return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}
 
 
-def given_latex(g: Given, style: Style) -> tuple[str, str]:
-    """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
+def given_latex(g: Given, style: Style, opened: Mapping[sympy.Symbol, sympy.Expr] | None = None) -> tuple[str, str]:
+    """A given as LaTeX, and a note in words (symbolic, converted, defined). ``opened``: the
+    definitions of the givens whose numbers a variant leaves open (v_B1t = u_B sin(alpha)),
+    for a given defined from one of them (v_B2n = v_B1t tan(alpha))."""
     name = latex_name(relabel(g.name, style.labels))
     if g.unknown:
         return name + r" = \,?", "unknown: derive finds it"
@@ -87,8 +89,16 @@ def given_latex(g: Given, style: Style) -> tuple[str, str]:
         and g.definition is not None
         and g.definition.free_symbols & style.varied
     ):  # defined from a varied given (m_A = W_A/g)
-        parts = [name, StepPrinter().doprint(g.definition), latex_expr(g.definition, "values", style, 1)]
-        value = latex_expr(g.definition, "numeric", style, 1)
+        expr = g.definition
+        for _ in range(
+            len(opened or ())
+        ):  # in the varied givens themselves: v_B1t tan(alpha) = u_B sin(alpha) tan(alpha)
+            if not expr.free_symbols & set(opened or ()):
+                break
+            expr = expr.xreplace(opened or {})
+        shown = [g.definition] if expr == g.definition else [g.definition, expr]
+        parts = [name, *(StepPrinter().doprint(x) for x in shown), latex_expr(expr, "values", style, 1)]
+        value = latex_expr(expr, "numeric", style, 1)
         unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
         return " = ".join([*parts, value]) + unit, ""
     if g.value is None:
@@ -122,33 +132,84 @@ def given_latex(g: Given, style: Style) -> tuple[str, str]:
     return " = ".join(parts), ""
 
 
-def statement(p: Any, style: Style, text: str | None = None) -> list[tuple[str, str]] | None:
+def _converted(g: Given) -> bool:
+    """True for a given typed in a unit other than the working one, as a nonzero number."""
+    return g.written is not None and g.typed is not None and sympy.Rational(g.typed) != 0
+
+
+def _found(name: str, found: Mapping[str, sympy.Expr], style: Style) -> str:
+    """``{=name}``: the number the solution finds for an unknown or a result (exact and short
+    as found, 0.8; a variant's at the page's figures, 0.361), without a unit; the placeholder
+    as typed where there is no such number."""
+    value = found.get(name)
+    if value is None or (not getattr(value, "is_number", True) and style.slots is None):
+        return "{=" + name + "}"
+    if style.slots is not None and not value.is_number:
+        return style.slots.token(value, "result", style.digits, 0, None)
+    return exact_latex(value, style.digits, 0)
+
+
+def statement_unit(g: Given) -> str:
+    """The unit after a given's number in a statement: the one the file typed it in."""
+    if g.unit == "deg":
+        return "°"
+    if _converted(g):  # 36 km/h, 22 g
+        return " " + plain_unit(g.written.partition(" ")[2])
+    return " " + plain_unit(g.unit) if g.unit else ""
+
+
+def statement_number(g: Given, value: sympy.Expr, digits: int | None, magnitude: bool = False) -> str:
+    """A given's number (``value``, in the working unit) as a statement prints it: in the
+    unit the file typed it in, with at least the places after the point it was typed with
+    (2.50 of "2.50 m/s" prints a drawn 3.1 as 3.10); its magnitude with ``magnitude``."""
+    value = abs(value) if magnitude else value
+    if g.unit == "deg":
+        value = value * 180 / sympy.pi
+    elif _converted(g) and g.value:
+        value = value * sympy.Rational(g.typed) / g.value  # back into the typed unit
+    text = exact_latex(value, digits, 1)
+    places = len(g.typed.partition(".")[2]) if g.typed is not None else 0
+    if re.fullmatch(r"-?\d+(\.\d*)?", text):
+        have = len(text.partition(".")[2])
+        if have < places:
+            text += ("" if "." in text else ".") + "0" * (places - have)
+    return text
+
+
+_PLACEHOLDER = re.compile(r"\{([@=]?[A-Za-z][A-Za-z0-9_]*|\|[A-Za-z][A-Za-z0-9_]*\|)\}")
+
+
+def statement(
+    p: Any, style: Style, text: str | None = None, found: Mapping[str, Any] | None = None
+) -> list[tuple[str, str]] | None:
     """The statement (or ``text``, the question) as text and mathematics: each ``{name}``
-    of a given becomes its value and unit, or its symbol when it is kept as a letter;
-    ``{@name}``, any name (a given, a result, a name of the notes), its symbol, as
-    mathematics (``{@theta_1} = {theta_1}``: θ₁ = 45°). Other braces stay as typed."""
+    of a given becomes its value and unit (as the file typed it: :func:`statement_number`),
+    or its symbol when it is kept as a letter; ``{|name|}`` its magnitude (a speed given as
+    a signed component); ``{@name}``, any name (a given, a result, a name of the notes), its
+    symbol, as mathematics (``{@theta_1} = {theta_1}``: θ₁ = 45°); ``{=name}`` the number the
+    solution ``found`` for an unknown or a result ("show that e = {=e}"). Other braces stay as typed."""
     source = p.statement if text is None else text
     if not source:
         return None
     by_name = {g.name: g for g in p.givens}
 
     def one(name: str) -> tuple[str, str]:
-        g = by_name.get(name)
+        if name.startswith("="):  # the value derive finds: "show that e = {=e}"
+            return "text", _found(name[1:], found or {}, style)
+        bare = name.strip("|")
+        g = by_name.get(bare)
         if g is not None and style.slots is not None and g.symbol in style.varied:  # a variant's number
-            token = style.slots.token(g.symbol, "text", style.digits, 1, None)
-            return "text", token + ("°" if g.unit == "deg" else (" " + plain_unit(g.unit) if g.unit else ""))
-        if name.startswith("@") or (g is not None and g.value is None):
+            token = style.slots.token(g.symbol, "text:abs" if bare != name else "text", style.digits, 1, None)
+            return "text", token + statement_unit(g)
+        if name.startswith("@") or (g is not None and g.value is None and bare == name):
             return "math", latex_name(name.removeprefix("@"))
-        if g is None:
+        if g is None or g.value is None:
             return "text", "{" + name + "}"
-        if g.unit == "deg":
-            return "text", exact_latex(g.value * 180 / sympy.pi, style.digits, 1) + "°"
-        text = exact_latex(g.value, style.digits, 1)
-        return "text", text + (" " + plain_unit(g.unit) if g.unit else "")
+        return "text", statement_number(g, g.value, style.digits, bare != name) + statement_unit(g)
 
     parts: list[tuple[str, str]] = []
     pos = 0
-    for m in re.finditer(r"\{(@?[A-Za-z][A-Za-z0-9_]*)\}", source):
+    for m in _PLACEHOLDER.finditer(source):
         parts.append(("text", source[pos : m.start()]))
         parts.append(one(m.group(1)))
         pos = m.end()

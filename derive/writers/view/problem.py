@@ -90,8 +90,10 @@ def view(
     p = solution.problem
     style = _style(solution, digits, layout, slots, varied, outer_letters, outer_decimal)
     stages = _stages(solution, style, layout, figures=figures, falls=falls, known=known)
-    givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
-    find = _find(p, style)
+    opened = {g.symbol: g.definition for g in p.givens if g.value is None and g.definition is not None}
+    givens = [dict(zip(("latex", "note"), given_latex(g, style, opened), strict=False)) for g in p.givens]
+    found = {n: r.value if r.value is not None else r.partial for n, r in solution.results.items()}
+    find = _find(p, style, found)
     plot_svg, plot_tikz = _plot(p) if plot else ("", "")
     return {
         "title": p.title,
@@ -100,7 +102,7 @@ def view(
         "source_parts": source_parts(p.source),
         "plot_svg": plot_svg,
         "plot_tikz": plot_tikz,
-        "statement": statement(p, style),
+        "statement": statement(p, style, found=found),
         "find": find,
         "givens": givens,
         "stages": stages,
@@ -156,10 +158,10 @@ def _stages(
     return stages
 
 
-def _find(p: Any, style: Style) -> list[tuple[str, str]]:
+def _find(p: Any, style: Style, found: dict[str, Any]) -> list[tuple[str, str]]:
     """What the problem asks for: its question, else words made from what it finds."""
     if p.question:
-        return statement(p, style, p.question) or []
+        return statement(p, style, p.question, found) or []
     unknown = [g.name for g in p.givens if g.unknown]
     words = ("the unknown " + ", ".join(unknown) + "; " if unknown else "") + (
         f"the velocity of {p.labels[0]} immediately after the impact"
