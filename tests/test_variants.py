@@ -368,3 +368,18 @@ def test_a_variant_given_defined_through_another_shows_its_number() -> None:
         last = re.search(r"= ([\d.]+)\\ \\mathrm\{m/s\}\$$", line)
         assert last is not None, line
         assert float(last.group(1)) == pytest.approx(u * math.sin(a) * math.tan(a), rel=1e-3)
+
+
+def test_notes_4c12_variants_give_the_rebound_angle_with_v_A1_a_letter() -> None:
+    """Example 4.C.12 keeps m and v_A1 as letters; each variant draws e and theta_1. Equal
+    masses, B at rest: v_A2t = v_A1 cos theta_1, v_A2n = v_A1 sin theta_1 (1 - e)/2, so
+    tan theta_A2 = (1 - e) tan(theta_1)/2 whatever v_A1 (it cancels inside atan2)."""
+    compiled = variants.compile_problem(derive.load("notes-4c12-cue-ball"))
+    for v in variants.draw(compiled, 10, seed=3):
+        e, th = float(v.values["e"]), float(v.values["theta_1"])
+        key = variants.answers(compiled, v)
+        want = math.degrees(math.atan((1 - e) * math.tan(th) / 2))
+        assert key["theta_A2"]["value"] == pytest.approx(want, rel=1e-12)
+        page = variants.fill(compiled, v)
+        assert r"^\circ^\circ" not in page and "atan2(v" not in page.replace(r"\left", "")
+        assert f"\\theta_{{1}} = {round(math.degrees(th))}^\\circ$" in page

@@ -174,7 +174,14 @@ def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:
 
 
 def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
-    """atan2(y, x) as a number when y/x is one and the sign of x is known (4.C.12: v_A1 cancels)."""
+    """atan2(y, x) as a number when y/x is one and the sign of x is known (4.C.12: v_A1 cancels);
+    else with the positive letters both share taken out (a variant's angle in its own numbers)."""
+    shared = y.free_symbols & x.free_symbols if x != 0 and y != 0 else y.free_symbols | x.free_symbols
+    for s in sorted(shared, key=str):
+        if s.is_positive:
+            ys, xs = sympy.cancel(y / s), sympy.cancel(x / s)
+            if not (ys.has(s) or xs.has(s)):
+                y, x = ys, xs
     ratio = sympy.simplify(y / x) if x != 0 else None
     if ratio is not None and ratio.is_number:
         if x.is_positive:

@@ -81,7 +81,7 @@ def given_latex(g: Given, style: Style, opened: Mapping[sympy.Symbol, sympy.Expr
         return name + r" = \,?", "unknown: derive finds it"
     if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
         token = style.slots.token(g.symbol, "given", style.digits, 1, None)
-        tail = r"^\circ" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")
+        tail = "" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")  # a variant fills in 50^\circ
         return f"{name} = {token}{tail}", ""
     if (
         style.slots is not None
