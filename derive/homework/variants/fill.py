@@ -111,16 +111,17 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
 def _figures(compiled: Compiled, variant: Variant, page: str, fmt: str) -> str:
     """The variant's figures put in: drawn from its own numbers (the figure reads the
     compiled solution's closed forms at them; no solve), each with its note, if any (a
-    line with an empty note is left out)."""
-    from derive.writers.view import figure_entry
+    line with an empty note is left out). Only the format written is drawn."""
+    from derive.writers import figure
+    from derive.writers.view import figure_note
 
     tex = fmt in ("tex", "pdf")
     for when in ("before", "after"):
         if FIGURE.format("", when) not in page:
             continue
-        entry = figure_entry(drawing(compiled, variant, when))
-        page = page.replace(FIGURE.format("", when), entry["figure_tikz" if tex else "figure_svg"])
-        note = entry["figure_note_tex" if tex else "figure_note_html"]
+        drawn = drawing(compiled, variant, when)
+        page = page.replace(FIGURE.format("", when), figure.to_tikz(drawn) if tex else figure.to_svg(drawn))
+        note = figure_note(drawn, tex)
         marker = FIGURE.format("NOTE", when)
         page = page.replace(marker, note) if note else re.sub(rf"^.*{marker}.*\n", "", page, flags=re.M)
     return page

@@ -19,7 +19,7 @@ from derive.writers.view.chain import chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import chain_json, to_json
 from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
-from derive.writers.view.problem import figure_entry, view
+from derive.writers.view.problem import figure_entry, figure_note, view
 
 __all__ = [
     "ANSWER_MARK",
@@ -31,6 +31,7 @@ __all__ = [
     "chain_view",
     "environment",
     "figure_entry",
+    "figure_note",
     "letter_units",
     "line_view",
     "markdown",
