@@ -80,7 +80,7 @@ def run(
             "nothing to check: give answers with --answer NAME=VALUE or --answers FILE, or --derivation FILE",
             where="usage",
         )
-    solution = solve(load(problem))
+    solution = solve(load(problem), steps=False)  # the results alone: no worked steps
     report = check(solution, given, tolerance=tol, derivation=work)
     return report, report.render(fmt)
 

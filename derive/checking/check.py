@@ -50,7 +50,7 @@ def check(
     if isinstance(solution, Problem):
         from derive.steps import solve
 
-        solution = solve(solution)
+        solution = solve(solution, steps=False)
     given = as_answers(answers, equations)
     tol = parse_tolerance(tolerance if tolerance is not None else given.tolerance, "tolerance")
     if not given.answers and not given.equations and derivation is None:

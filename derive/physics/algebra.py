@@ -29,11 +29,53 @@ def collect(
     for u in us:
         c = expr.coeff(u)
         if c != 0:
-            terms.append(sympy.simplify(c) * u)
-    const = sympy.simplify(-(expr - sum(terms)))
+            terms.append(_simplified(c) * u)
+    const = _simplified(-(expr - sum(terms)))
     if len(terms) == 1 and terms[0].could_extract_minus_sign():
         return (-terms[0],), (-const,)  # v_A2n = -4.8, not -v_A2n = 4.8
     return tuple(terms) or (sympy.Integer(0),), (const,)
+
+
+def _simplified(expr: sympy.Expr) -> sympy.Expr:
+    """``sympy.simplify(expr)``, skipped for a number it returns as it is (:func:`_plain`):
+    the first ``simplify`` of a process imports sympy.physics.units, about 0.2 s."""
+    return expr if _plain(expr) else sympy.simplify(expr)
+
+
+def _plain(expr: sympy.Expr) -> bool:
+    """True for a number already in its simplest form: a rational, k sqrt(n), k cos(q pi)
+    or k sin(q pi) with k rational and 0 < q <= 1/4 (an angle up to 45°: beyond it,
+    ``simplify`` may write cos(15 pi/32) as sin(pi/32)), or a rational plus one k sqrt(n)
+    (tests/test_algebra.py)."""
+    if expr.is_Rational:
+        return True
+    if expr.is_Add:
+        parts = [a for a in expr.args if not a.is_Rational]
+        return len(expr.args) - len(parts) == 1 and len(parts) == 1 and _root(parts[0])
+    return _root(expr) or _trig(expr)
+
+
+def _factors(expr: sympy.Expr) -> list[sympy.Expr] | None:
+    """The factors of ``expr`` other than its one rational coefficient (None when it has more)."""
+    args = list(expr.args) if expr.is_Mul else [expr]
+    rest = [a for a in args if not a.is_Rational]
+    return rest if len(args) - len(rest) <= 1 and len(rest) == 1 else None
+
+
+def _root(expr: sympy.Expr) -> bool:
+    """k sqrt(n), k rational, n a whole number."""
+    rest = _factors(expr)
+    return rest is not None and rest[0].is_Pow and rest[0].base.is_Integer and rest[0].exp == sympy.Rational(1, 2)
+
+
+def _trig(expr: sympy.Expr) -> bool:
+    """k cos(q pi) or k sin(q pi), k rational, 0 < q <= 1/4."""
+    rest = _factors(expr)
+    if rest is None or not isinstance(rest[0], (sympy.cos, sympy.sin)):
+        return False
+    arg = rest[0].args[0]
+    q = arg.args[0] if arg.is_Mul and len(arg.args) == 2 and arg.args[1] is sympy.pi else None
+    return q is not None and q.is_Rational and 0 < q <= sympy.Rational(1, 4)
 
 
 def common_factor(

@@ -22,6 +22,7 @@ from typing import Any
 import sympy
 
 from derive.errors import SolveError
+from derive.physics.forms import factored
 from derive.problem import Problem
 from derive.symbols import symbol
 
@@ -108,29 +109,8 @@ def setup(problem: Problem) -> Impact:
     sym = problem.symbols()
     m_A, e = sym["m_A"], sym["e"]
     m_B = sym.get("m_B", symbol("m_B", "positive"))
-    eqs: dict[int, sympy.Eq] = {}
-    nums = equation_numbers(problem)
-    if 1 in nums:
-        eqs[1] = sympy.Eq(m_A * nm.A1t, m_A * nm.A2t, evaluate=False)
-    if 2 in nums:
-        eqs[2] = sympy.Eq(m_B * nm.B1t, m_B * nm.B2t, evaluate=False)
-    if 3 in nums:
-        eqs[3] = sympy.Eq(m_A * nm.A1n + m_B * nm.B1n, m_A * nm.A2n + m_B * nm.B2n, evaluate=False)
-    eqs[4] = sympy.Eq(e, (nm.B2n - nm.A2n) / (nm.A1n - nm.B1n), evaluate=False)
-    pre: dict[sympy.Symbol, sympy.Expr] = {}
-    if problem.oblique:
-        pre = {
-            nm.A1n: problem.motion_A.n,
-            nm.A1t: problem.motion_A.t,
-            nm.B1n: problem.motion_B.n,
-            nm.B1t: problem.motion_B.t,
-        }
-    elif problem.fixed_B:
-        pre = {nm.B1n: sympy.Integer(0)}
-    if problem.fixed_B:
-        pre[nm.B2n] = sympy.Integer(0)
-        if problem.oblique:
-            pre[nm.B2t] = sympy.Integer(0)
+    eqs = _equations(problem, nm, m_A, m_B, e)
+    pre = _pre(problem, nm)
     ind = independent_map(problem)
     post_all = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
     given_names = {g.name for g in problem.givens}
@@ -156,16 +136,51 @@ def setup(problem: Problem) -> Impact:
     )
     if not inverse:
         # Solved in the component symbols, the system is linear with rational
-        # coefficients: fast and exact. The givens go in afterwards.
+        # coefficients: fast and exact. The givens go in afterwards; the factored
+        # forms depend on the problem's structure only (derive.physics.forms).
         forms = general_solution(nm, m_A, m_B, e, problem.fixed_B)
         zero = {k: v for k, v in pre.items() if v == 0}
-        by_comp = {u: sympy.factor(forms[u].xreplace(ind).xreplace(zero)) for u in unknowns}
+        by_comp = {u: factored(forms[u].xreplace(ind).xreplace(zero)) for u in unknowns}
         closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
         return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
     full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
     by_comp, *others = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
     return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True, others=tuple(others))
+
+
+def _equations(problem: Problem, nm: Names, m_A: sympy.Expr, m_B: sympy.Expr, e: sympy.Expr) -> dict[int, sympy.Eq]:
+    """Equations (1)-(4), those of them that carry information (:func:`equation_numbers`)."""
+    eqs: dict[int, sympy.Eq] = {}
+    nums = equation_numbers(problem)
+    if 1 in nums:
+        eqs[1] = sympy.Eq(m_A * nm.A1t, m_A * nm.A2t, evaluate=False)
+    if 2 in nums:
+        eqs[2] = sympy.Eq(m_B * nm.B1t, m_B * nm.B2t, evaluate=False)
+    if 3 in nums:
+        eqs[3] = sympy.Eq(m_A * nm.A1n + m_B * nm.B1n, m_A * nm.A2n + m_B * nm.B2n, evaluate=False)
+    eqs[4] = sympy.Eq(e, (nm.B2n - nm.A2n) / (nm.A1n - nm.B1n), evaluate=False)
+    return eqs
+
+
+def _pre(problem: Problem, nm: Names) -> dict[sympy.Symbol, sympy.Expr]:
+    """Each component known before the solve -> its expression in the givens: the
+    pre-impact components, and a fixed B's (0, before and after)."""
+    pre: dict[sympy.Symbol, sympy.Expr] = {}
+    if problem.oblique:
+        pre = {
+            nm.A1n: problem.motion_A.n,
+            nm.A1t: problem.motion_A.t,
+            nm.B1n: problem.motion_B.n,
+            nm.B1t: problem.motion_B.t,
+        }
+    elif problem.fixed_B:
+        pre = {nm.B1n: sympy.Integer(0)}
+    if problem.fixed_B:
+        pre[nm.B2n] = sympy.Integer(0)
+        if problem.oblique:
+            pre[nm.B2t] = sympy.Integer(0)
+    return pre
 
 
 def general_solution(

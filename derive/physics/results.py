@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import sympy
 
 from derive.errors import SolveError
+from derive.physics import forms
 from derive.physics.energy import HALF
 from derive.physics.impact import Impact, evaluate, independent_map
 from derive.problem import Problem, units
@@ -158,7 +159,7 @@ def _energies(r: _Collector, m_A: sympy.Expr, m_B: sympy.Expr) -> None:
         lost_c = HALF * m_A * (sq["A"][0] - sq["A"][1].xreplace(imp.by_components))
         lost_c += HALF * m_B * (sq["B"][0] - sq["B"][1].xreplace(imp.by_components))
         lost = sympy.factor_terms(
-            imp.in_givens(sympy.factor(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
+            imp.in_givens(forms.factored(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
         )
     r.add("T_1", T1, unit_T, "kinetic energy before the impact")
     r.add("T_2", T2, unit_T, "kinetic energy after the impact")

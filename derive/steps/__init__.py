@@ -10,8 +10,11 @@ from derive.problem import ChainProblem, Problem
 from derive.steps.model import Solution
 
 
-def solve(problem: Problem | ChainProblem) -> Solution:
+def solve(problem: Problem | ChainProblem, *, steps: bool = True) -> Solution:
     """Solve ``problem`` (or a chain, stage by stage) in closed form and write its worked solution.
+
+    ``steps=False`` (a single impact) leaves the worked stages out: the results alone, which
+    is all that ``derive check`` reads.
 
     >>> from derive import load, solve  # doctest: +SKIP
     >>> solve(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
@@ -26,7 +29,7 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     from derive.steps.impact import write_impact
 
     outcome = solve_impact(problem)
-    stages = write_impact(outcome)
+    stages = write_impact(outcome) if steps else ()
     return Solution(
         problem,
         outcome.results,

@@ -44,6 +44,8 @@ class Compiled:
     claim_fns: dict[int, list[tuple[list[object], object]]]
     result_fns: dict[str, object]
     check_fn: object
+    #: The figures' numbers, compiled as they are first needed (:class:`~.fill.FigureNumbers`).
+    figure_numbers: object = None
 
 
 def _symbolic(problem: Problem) -> Problem:

@@ -3,6 +3,7 @@ in; its answers and givens; the statement alone."""
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterator
 from decimal import Decimal
@@ -116,27 +117,68 @@ def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | No
 def _figures(compiled: Compiled, variant: Variant, page: str, fmt: str) -> str:
     """The variant's figures put in: drawn from its own numbers (the figure reads the
     compiled solution's closed forms at them; no solve), each with its note, if any (a
-    line with an empty note is left out)."""
-    from derive.writers.view import figure_entry
+    line with an empty note is left out). Only the format written is drawn."""
+    from derive.writers import figure
+    from derive.writers.view import figure_note
 
     tex = fmt in ("tex", "pdf")
     for when in ("before", "after"):
         if FIGURE.format("", when) not in page:
             continue
-        entry = figure_entry(drawing(compiled, variant, when))
-        page = page.replace(FIGURE.format("", when), entry["figure_tikz" if tex else "figure_svg"])
-        note = entry["figure_note_tex" if tex else "figure_note_html"]
+        drawn = drawing(compiled, variant, when)
+        page = page.replace(FIGURE.format("", when), figure.to_tikz(drawn) if tex else figure.to_svg(drawn))
+        note = figure_note(drawn, tex)
         marker = FIGURE.format("NOTE", when)
         page = page.replace(marker, note) if note else re.sub(rf"^.*{marker}.*\n", "", page, flags=re.M)
     return page
 
 
 def drawing(compiled: Compiled, variant: Variant, when: str = "before") -> Any:
-    """One variant's figure (a :class:`derive.writers.figure.Figure`), before or after the impact."""
+    """One variant's figure (a :class:`derive.writers.figure.Figure`), before or after the
+    impact; its numbers come from functions compiled once per problem (:class:`FigureNumbers`)."""
     from derive.writers import figure
 
     values = {compiled.givens[n].symbol: variant.values[n] for n in compiled.names}
-    return figure.describe(compiled.solution, when == "after", values=values)
+    if compiled.figure_numbers is None:
+        compiled.figure_numbers = FigureNumbers(tuple(compiled.givens[n].symbol for n in compiled.names))
+    numbers = compiled.figure_numbers
+    args = [float(variant.values[n]) for n in compiled.names]
+    return figure.describe(
+        compiled.solution, when == "after", values=values, numbers=lambda expr, known: numbers(expr, known, args)
+    )
+
+
+class FigureNumbers:
+    """A figure's numbers for the variants of one problem: each expression the figure
+    evaluates is compiled once to a float function of the varied givens, read as
+    :func:`derive.writers.figure.frame.number` reads it (the numbers known put in at once,
+    any other symbol taken as 1). Where the function cannot give a number (a root of a
+    negative number), the expression is evaluated as a figure of a solve does."""
+
+    def __init__(self, varied: tuple[sympy.Symbol, ...]) -> None:
+        self.dummies = {s: sympy.Dummy(s.name) for s in varied}
+        self.fns: dict[tuple, Any] = {}
+
+    def __call__(self, expr: object, known: Any, args: list[float]) -> float | None:
+        from derive.writers.figure.frame import number
+
+        if expr is None:
+            return None
+        key = (expr, frozenset(k for k in known if k not in self.dummies))
+        fn = self.fns.get(key)
+        if fn is None:
+            fn = self.fns[key] = self._compile(expr, known)
+        try:
+            z = complex(fn(*args))
+        except (ArithmeticError, ValueError, TypeError):
+            return number(expr, known)
+        return z.real if abs(z.imag) < 1e-9 and math.isfinite(z.real) else None
+
+    def _compile(self, expr: object, known: Any) -> Any:
+        e = sympy.sympify(expr).xreplace({k: self.dummies.get(k, v) for k, v in known.items()})
+        inner = set(self.dummies.values())
+        e = e.xreplace({s: sympy.Integer(1) for s in e.free_symbols if s not in inner})
+        return sympy.lambdify(tuple(self.dummies.values()), e, modules=["math"])
 
 
 def _optional_lines(page: str, places: dict[int, int | None]) -> str:

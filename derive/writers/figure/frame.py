@@ -11,7 +11,7 @@ phi from +x, x to the right, y up.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -93,11 +93,16 @@ def chain_falls(solution: Solution) -> dict[int, bool]:
     return out
 
 
-def frame(problem: Problem, falls: bool, values: Mapping[sympy.Symbol, sympy.Expr]) -> Frame:
-    """Where n points in the drawing."""
+def frame(
+    problem: Problem,
+    falls: bool,
+    values: Mapping[sympy.Symbol, sympy.Expr],
+    numbers: Callable[[object, Mapping], float | None] | None = None,
+) -> Frame:
+    """Where n points in the drawing (``numbers``: how to evaluate, :func:`number` by default)."""
     if falls or is_floor(problem):
         return Frame((0.0, -1.0), falls=True)
     if problem.phi is not None:
-        phi = number(values.get(problem.phi, problem.phi), values) or 0.0
+        phi = (numbers or number)(values.get(problem.phi, problem.phi), values) or 0.0
         return Frame((math.cos(phi), math.sin(phi)), xy=True)
     return Frame((1.0, 0.0))

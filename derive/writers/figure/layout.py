@@ -129,6 +129,19 @@ class Board:
         self.bodies: list[Body] = [s for s in shapes if isinstance(s, Body)]
         self.labels: list[Label] = []
 
+    def hits(self, box: tuple[float, float, float, float], home: Body | None) -> bool:
+        """True when a label's box (clearance included) touches anything drawn: ``any(clashes)``,
+        without a generator (a figure tries thousands of boxes)."""
+        x0, y0, x1, y1 = grown = _grow(box, GAP)
+        for sx0, sy0, sx1, sy1, seg in self.strokes:
+            if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment(grown, seg):
+                return True
+        for b in self.bodies:
+            where = _box_vs_disc(grown, b)
+            if where == "across" or (where == "inside" and b is not home):
+                return True
+        return any(_boxes_meet(grown, lab.box) for lab in self.labels)
+
     def clashes(self, box: tuple[float, float, float, float], home: Body | None) -> Iterator[bool]:
         """For each thing drawn, whether a label's box (clearance included) touches it."""
         x0, y0, x1, y1 = grown = _grow(box, GAP)
@@ -163,7 +176,7 @@ def place(specs: Sequence[Spec], shapes: Iterable[Shape]) -> tuple[Label, ...]:
         tried = []
         for cx, cy in candidates(spec, w, h):
             box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
-            if not any(board.clashes(box, spec.home)):
+            if not board.hits(box, spec.home):
                 break
             tried.append((cx, cy))
         else:  # nowhere free: the candidate that touches fewest things

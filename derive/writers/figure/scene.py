@@ -37,7 +37,12 @@ ARC_R = 0.75  # cm: the radius of an angle's arc
 ORDER = {"body": 0, "angle": 1, "velocity": 2, "axis": 3, "surface": 4}
 
 
-def radii(problem: Problem) -> tuple[float, float]:
+#: How a figure turns an expression into a float, given the numbers known
+#: (:func:`~derive.writers.figure.frame.number`; homework variants pass a compiled one).
+Numbers = Callable[[object, Mapping], "float | None"]
+
+
+def radii(problem: Problem, numbers: Numbers = number) -> tuple[float, float]:
     """Drawn radii of A and B: in the ratio of the given r_A and r_B, else equal."""
     given = {g.name: g for g in problem.givens}
     ind = independent_map(problem)
@@ -46,7 +51,7 @@ def radii(problem: Problem) -> tuple[float, float]:
     for name in ("r_A", "r_B"):
         g = given.get(name)
         expr = None if g is None else (g.value if g.value is not None else g.symbol.xreplace(ind))
-        found.append(number(expr, values))
+        found.append(numbers(expr, values))
     a, b = found
     if a is None or b is None or a <= 0 or b <= 0:
         return R_MAX, R_MAX
@@ -96,12 +101,12 @@ def _known(solution: Solution, values: Mapping) -> dict:
     return {**found, **solution.values, **values}
 
 
-def velocities(solution: Solution, values: Mapping) -> dict[str, tuple[float, float]]:
+def velocities(solution: Solution, values: Mapping, numbers: Numbers = number) -> dict[str, tuple[float, float]]:
     """(n, t) components of each moving body's velocity: ``A1``, ``B1``, ``A2``, ``B2``."""
     known = _known(solution, values)
     out: dict[str, tuple[float, float]] = {}
     for key, (en, et) in _components(solution).items():
-        n, t = number(en, known), number(et, known)
+        n, t = numbers(en, known), numbers(et, known)
         if n is not None and t is not None:
             out[key] = (n, t)
     return out
@@ -304,26 +309,32 @@ def _xy_axes(shapes: list[Shape]) -> tuple[list[Shape], list[Spec]]:
 
 
 def describe(
-    solution: Solution, after: bool = False, *, falls: bool | None = None, values: Mapping | None = None
+    solution: Solution,
+    after: bool = False,
+    *,
+    falls: bool | None = None,
+    values: Mapping | None = None,
+    numbers: Numbers = number,
 ) -> Figure:
     """The figure of an impact, before it or (``after``) after it.
 
     ``falls`` draws n pointing down (see the module docstring; by default, a fixed
     floor does); ``values`` gives numbers to symbols the solution leaves open (a
-    chain's later results). A chain gives the figure of its first impact.
+    chain's later results); ``numbers`` turns an expression into a float (default
+    :func:`~derive.writers.figure.frame.number`). A chain gives the figure of its first impact.
     """
     if solution.is_chain:
         first = next(st for st in solution.stages if st.part is not None)
         down = chain_falls(solution)[first.number] if falls is None else falls
-        return describe(first.part, after, falls=down, values={**solution.values, **(values or {})})
+        return describe(first.part, after, falls=down, values={**solution.values, **(values or {})}, numbers=numbers)
     p = solution.problem
     known = {**solution.values, **(values or {})}
-    fr = frame(p, bool(falls), known)
-    rA, rB = radii(p)
+    fr = frame(p, bool(falls), known, numbers)
+    rA, rB = radii(p, numbers)
     A = Body(*fr.at(-rA, 0), rA, "A")
     B = None if p.fixed_B else Body(*fr.at(rB, 0), rB, "B")
     bodies = {"A": A} if B is None else {"A": A, "B": B}
-    vel = velocities(solution, known)
+    vel = velocities(solution, known, numbers)
     more, more_specs = _motion_shapes(solution, fr, bodies, vel, after)
     shapes, specs = _frame_shapes(p, fr, A, B, [s for s in more if isinstance(s, Arrow)])
     shapes += more

@@ -17,11 +17,9 @@ from derive.steps.model import Solution
 from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
 from derive.writers.view.chain import chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
-from derive.writers.view.html import chain_html_page, html_page
-from derive.writers.view.jinja import environment
 from derive.writers.view.json import chain_json, to_json
 from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
-from derive.writers.view.problem import figure_entry, view
+from derive.writers.view.problem import figure_entry, figure_note, view
 
 __all__ = [
     "ANSWER_MARK",
@@ -33,6 +31,7 @@ __all__ = [
     "chain_view",
     "environment",
     "figure_entry",
+    "figure_note",
     "letter_units",
     "line_view",
     "markdown",
@@ -93,6 +92,8 @@ def render(
             data = chain_view(solution, digits, figures, standalone=fmt == "tex", layout=layout)
             return environment("tex").get_template("chain.tex.j2").render(**data, **tex_vars)
         if fmt == "html":
+            from derive.writers.view.html import chain_html_page
+
             return chain_html_page(chain_view(solution, digits, figures, layout=HTML))
         raise InputError(f"a chain is written as md, tex, pdf, html or json, not {fmt}", field="--format")
     if fmt == "json":
@@ -100,11 +101,20 @@ def render(
     if fmt not in FORMATS:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
     if fmt == "html":
+        from derive.writers.view.html import html_page
+
         return html_page(view(solution, digits, figures, plot=plot, layout=HTML))
     layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
     data = view(solution, digits, figures, layout=layout, plot=plot)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
     return environment("tex").get_template(template).render(**data, **tex_vars)
+
+
+def environment(kind: str) -> Any:
+    """The Jinja environment of ``kind`` ('md', also HTML; 'tex'): jinja2 is imported on first use."""
+    from derive.writers.view.jinja import environment as jinja_environment
+
+    return jinja_environment(kind)
 
 
 def _headings(level: int, title: bool) -> dict[str, Any]:

@@ -1,22 +1,32 @@
-"""The Jinja environments the page templates render in (Markdown and HTML; LaTeX)."""
+"""The Jinja environments the page templates render in (Markdown and HTML; LaTeX).
+
+jinja2 is imported on first use (``derive solve -f json`` and ``derive check`` never need
+it). Compiled templates are kept in Jinja's bytecode cache (a private folder under the
+system's temporary folder), so that a process does not compile them again: Jinja checks
+each template's source against the cache (a changed template is compiled afresh), and the
+cache files are named by the environment's options and Jinja's version, so an
+environment never reads another's code. ``DERIVE_NO_TEMPLATE_CACHE=1`` turns it off.
+"""
 
 from __future__ import annotations
 
+import hashlib
+import os
 from functools import cache
-from typing import Any
-
-import jinja2
+from typing import TYPE_CHECKING, Any
 
 from derive import escape
 from derive.resources import templates_dir
 
+if TYPE_CHECKING:
+    import jinja2
 
-@cache
-def environment(kind: str) -> jinja2.Environment:
-    """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
-    options: dict[str, Any] = {}
+
+def _options(kind: str) -> dict[str, Any]:
+    """The environment's syntax options: LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
+    options: dict[str, Any] = dict(autoescape=False, keep_trailing_newline=True, trim_blocks=True, lstrip_blocks=True)
     if kind == "tex":
-        options = dict(
+        options.update(
             block_start_string=r"\BLOCK{",
             block_end_string="}",
             variable_start_string=r"\VAR{",
@@ -26,22 +36,40 @@ def environment(kind: str) -> jinja2.Environment:
             line_statement_prefix=None,
             line_comment_prefix=None,
         )
+    return options
+
+
+@cache
+def environment(kind: str) -> jinja2.Environment:
+    """The strict Jinja environment; LaTeX templates use \\BLOCK{} / \\VAR{} delimiters."""
+    import jinja2
+
+    options = _options(kind)
     env = jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(templates_dir())),
         undefined=jinja2.StrictUndefined,
-        autoescape=False,
-        keep_trailing_newline=True,
-        trim_blocks=True,
-        lstrip_blocks=True,
+        bytecode_cache=_bytecode_cache(kind, options),
         **options,
     )
-    env.filters["md"] = _markdown_text
+    env.filters["md"] = jinja2.pass_context(_markdown_text)
     env.filters["tex"] = escape.tex
     env.filters["html"] = escape.html_text
     return env
 
 
-@jinja2.pass_context
-def _markdown_text(context: jinja2.runtime.Context, text: str) -> str:
+def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache | None:
+    """Jinja's file cache of compiled templates, one set of files per environment's options."""
+    import jinja2
+
+    if os.environ.get("DERIVE_NO_TEMPLATE_CACHE"):
+        return None
+    key = hashlib.sha256(repr((kind, sorted(options.items()), jinja2.__version__)).encode()).hexdigest()[:16]
+    try:
+        return jinja2.FileSystemBytecodeCache(pattern=f"__derive_{key}_%s.cache")
+    except (OSError, RuntimeError):  # no private temporary folder: compile each time
+        return None
+
+
+def _markdown_text(context: Any, text: str) -> str:
     """User text as Markdown; ``^`` escaped too where the page is for pandoc (``escape_caret``)."""
     return escape.markdown(text, caret=bool(context.get("escape_caret", False)))

@@ -32,15 +32,24 @@ def figure_entry(fig: figure.Figure) -> dict[str, str]:
     """A stage's figure as the templates take it: SVG and TikZ, the caption, and the note
     Markdown and LaTeX print under it when an arrow is drawn longer than to scale."""
     html_note = fig.scale_note(_html_name, escape.html_text)
-    tex_note = fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex)
     return {
         "figure_svg": figure.to_svg(fig),
         "figure_tikz": figure.to_tikz(fig),
         "figure_caption": f"{fig.title}: {fig.caption}",
         "figure_caption_html": escape.html_text(f"{fig.title}: ") + html_note,
-        "figure_note_html": _sentence(html_note) if fig.lengthened else "",
-        "figure_note_tex": _sentence(tex_note) if fig.lengthened else "",
+        "figure_note_html": figure_note(fig, tex=False),
+        "figure_note_tex": figure_note(fig, tex=True),
     }
+
+
+def figure_note(fig: figure.Figure, tex: bool) -> str:
+    """The note under a figure (HTML for Markdown, or LaTeX) when an arrow is drawn longer
+    than to scale; else empty."""
+    if not fig.lengthened:
+        return ""
+    if tex:
+        return _sentence(fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex))
+    return _sentence(fig.scale_note(_html_name, escape.html_text))
 
 
 def _named(words: str, labels: tuple[str, str]) -> str:

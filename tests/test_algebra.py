@@ -1,0 +1,49 @@
+"""derive.physics.algebra skips ``sympy.simplify`` on a number already in its simplest form
+(issue #19: the first ``simplify`` of a process imports sympy.physics.units); the skip must
+never change a result."""
+
+from __future__ import annotations
+
+import sympy
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from derive.physics.algebra import _plain, collect
+
+rationals = st.fractions(min_value=-1000, max_value=1000, max_denominator=200).map(sympy.Rational)
+whole = st.integers(min_value=2, max_value=5000).map(sympy.Integer)
+
+
+def _numbers(draw: st.DrawFn) -> sympy.Expr:
+    k, n, c = draw(rationals), draw(whole), draw(rationals)
+    q = draw(st.fractions(min_value=-1, max_value=1, max_denominator=500).map(sympy.Rational))
+    kind = draw(st.sampled_from(["rational", "root", "cos", "sin", "sum"]))
+    return {
+        "rational": k,
+        "root": k * sympy.sqrt(n),
+        "cos": k * sympy.cos(q * sympy.pi),
+        "sin": k * sympy.sin(q * sympy.pi),
+        "sum": c + k * sympy.sqrt(n),
+    }[kind]
+
+
+@settings(max_examples=200, derandomize=True, deadline=None)
+@given(st.composite(_numbers)())
+def test_a_plain_number_is_what_simplify_returns(x: sympy.Expr) -> None:
+    if _plain(x):
+        assert sympy.srepr(sympy.simplify(x)) == sympy.srepr(x)
+
+
+def test_what_simplify_may_rewrite_is_not_plain() -> None:
+    pi = sympy.pi
+    assert not _plain(-sympy.cos(sympy.Rational(15, 32) * pi))  # simplify: -sin(pi/32)
+    assert not _plain(sympy.cos(pi / 9) + sympy.sin(pi / 9))  # simplify: sqrt(2) sin(13 pi/36)
+    assert not _plain(1 / (1 + sympy.sqrt(2)))
+    assert not _plain(sympy.sqrt(2) + sympy.sqrt(6))
+    assert _plain(sympy.Rational(-9, 10)) and _plain(25 * sympy.cos(sympy.Rational(47, 225) * pi))
+
+
+def test_collect_with_numbers_and_letters() -> None:
+    x, y, m = sympy.symbols("x y m")
+    assert collect(3 * sympy.sqrt(2) * x + 1, y, (x,), ()) == ((3 * sympy.sqrt(2) * x,), (y - 1,))
+    assert collect(m * x + m * y, 2 * m, (x, y), ()) == ((m * x, m * y), (2 * m,))
