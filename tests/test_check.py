@@ -646,3 +646,18 @@ def test_cli_bad_input_exit_2(cli, args: list[str], needle: str) -> None:
 def test_cli_bad_problem_exit_2(cli) -> None:
     r = cli("check", "no-such-problem", "--answer", "v_A2=1")
     assert r.code == 2 and r.err.startswith("Error: ")
+
+
+def test_a_chains_answers_are_checked_as_numbers() -> None:
+    """Once an internal error ('ChainProblem' object has no attribute 'numeric'). The AQA
+    mark scheme's answers (M3 June 2007 Q4: v_A = -0.6, v_B = 3.4, then 2.38 m/s off the
+    wall; momentum 0.3*3 - 0.2*2 = 0.3*(-0.6) + 0.2*3.4) are right; a sign slip is wrong."""
+    sol = derive.solve(derive.load("chain-aqa-m3-2007-collide-again"))
+    report = derive.check(sol, {"u_A": "-0.6 m/s", "u_B": "3.4 m/s", "w_B": "-2.38 m/s"})
+    assert report.all_correct and report.exit_code == 0
+    wrong = derive.check(sol, {"w_B": "2.38 m/s"})
+    assert not wrong.all_correct and wrong.exit_code == 1
+    with pytest.raises(derive.InputError, match="checked for a single impact"):
+        derive.check(sol, {"u_A": "-0.6 m/s"}, equations={"3": "0.3*v_A2 + 0.2*v_B2 = 0.5"})
+    formula = derive.check(sol, {"u_A": "-0.6 m/s", "w_B": "-2.38*u"})
+    assert [i.status for i in formula.items] == ["correct", "error"]

@@ -55,6 +55,12 @@ def check(
     tol = parse_tolerance(tolerance if tolerance is not None else given.tolerance, "tolerance")
     if not given.answers and not given.equations and derivation is None:
         raise InputError("nothing to check: give answers (--answer NAME=VALUE or --answers FILE)", field="answers")
+    if solution.is_chain and (given.equations or derivation is not None):
+        field = "equations" if given.equations else "derivation"
+        raise InputError(
+            "equations and derivations are checked for a single impact; a chain's answers are checked as numbers",
+            field=field,
+        )
     ctx = Context(solution, tol)
     items: list[Item] = []
     errors: list[InputError] = []
@@ -91,6 +97,8 @@ def answer_item(ctx: Context, e: Entry) -> Item:
             unit_problem = str(exc) if _looks_like_unit(unit_text) else None
         else:
             return number_item(ctx, e, r, text, number, unit)
+    if ctx.chain:
+        raise e.error(f"a chain's answers are checked as numbers with their units, such as {e.name}=-2.38 m/s")
     return expression_item(ctx, e, r, text, unit_problem)
 
 

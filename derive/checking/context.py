@@ -41,7 +41,8 @@ class Context:
         self.problem = solution.problem
         self.tolerance = tolerance
         self.results = solution.results
-        self.numeric = self.problem.numeric()
+        self.chain = solution.is_chain  # a chain: its values as worked out; no mistake model (a single impact's)
+        self.numeric = dict(solution.values) if self.chain else self.problem.numeric()
         self._model: mistakes.Model | None = None
         self.data = _data(self.problem)
 
@@ -82,7 +83,7 @@ class Context:
             return r
         names = ", ".join(self.results)
         hint = ""
-        if not self.problem.oblique and re.fullmatch(r"v_[AB]2[nt]", e.name):
+        if not getattr(self.problem, "oblique", True) and re.fullmatch(r"v_[AB]2[nt]", e.name):
             hint = f" (a direct impact has one component: {e.name[:-1]})"
         raise e.error(f"unknown result{hint}; expected one of: {names}")
 
@@ -122,12 +123,12 @@ class Context:
         )
 
     def singles(self) -> list[mistakes.Outcome]:
-        """Every common mistake that applies here, solved."""
-        return mistakes.outcomes(self.solution)
+        """Every common mistake that applies here, solved (none are modelled for a chain)."""
+        return [] if self.chain else mistakes.outcomes(self.solution)
 
     def pairs(self) -> list[mistakes.Outcome]:
         """Every pair of common mistakes that applies here, solved (bounded; slower)."""
-        return mistakes.pair_outcomes(self.solution)
+        return [] if self.chain else mistakes.pair_outcomes(self.solution)
 
     def diagnose(
         self, fits: Callable[[mistakes.Outcome], str | None], found: list[mistakes.Outcome]

@@ -32,8 +32,10 @@ def rounded_values(ctx: Context, name: str) -> list[sympy.Expr]:
     intermediates is rounded: the components before the impact (with masses worked
     out from weights), the numbers of the collected equations, the velocities after
     the impact. Empty for an inverse problem or one with symbolic givens."""
+    if ctx.chain or ctx.results[name].value is None:  # a chain: its stages' roundings are not modelled
+        return []
     m, p = ctx.model, ctx.problem
-    if m.inverse or ctx.results[name].value is None:
+    if m.inverse:
         return []
     pre = {c: m.num(x) for c, x in m.pre.items()}
     masses = (m.num(m.m_A), m.num(m.m_B))
