@@ -277,3 +277,31 @@ def test_inverse_draws_keep_the_unknown_physical() -> None:
     chosen = variants.draw(compiled, 20, seed=1)
     es = [variants.answers(compiled, v)["e"]["value"] for v in chosen]
     assert all(-1e-12 <= x <= 1 + 1e-12 for x in es) and max(es) > 0.5
+
+
+def test_cli_writes_an_html_sheet_and_worked_solution_per_variant(cli, tmp_path: Path) -> None:
+    """Issue 15: ``variants -f html``: each variant's sheet (its own numbers, the set-up before the
+    impact, the sign convention; no Source line, no answer) and its worked solution (every answer)."""
+    from output_cases import html_text
+
+    out = tmp_path / "hw"
+    r = cli("variants", "notes-4c11-two-spheres", "--count", "3", "--seed", "4", "-f", "html", "-o", str(out))
+    assert r.code == 0, r.err
+    assert sorted(p.name for p in out.glob("*.html")) == [
+        f"variant-0{i}{part}.html" for i in (1, 2, 3) for part in ("-problem", "")
+    ]
+    compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"))
+    key = json.loads((out / "key.json").read_text())
+    for v, row in zip(variants.draw(compiled, 3, seed=4), key["variants"], strict=True):
+        raw = (out / f"variant-0{v.number}-problem.html").read_text(encoding="utf-8")
+        sheet = html_text(raw)
+        full = html_text((out / f"variant-0{v.number}.html").read_text(encoding="utf-8"))
+        for name in compiled.names:
+            number = variants.given_text(compiled.givens[name], v.values[name], None)
+            assert f"= {number}" in sheet and f"= {number}" in full, (name, number)
+        assert "Sign convention." in sheet and "Source" not in sheet and "ANSWER" not in sheet
+        assert raw.count("<svg") == 1 and 'aria-label="Before the impact"' in raw
+        for name in ("v_A2", "v_B2", "v_A2n", "v_B2n", "v_A2t", "v_B2t"):
+            shown = row["results"][name]["shown"]
+            assert shown not in sheet and shown in full, (name, shown)
+        assert "Source:" in full and "ANSWER" in full

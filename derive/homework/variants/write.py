@@ -4,11 +4,19 @@ from __future__ import annotations
 
 from derive.homework.variants.compile import Compiled, Variant, compile_problem
 from derive.homework.variants.draw import draw
-from derive.homework.variants.fill import answers, fill, given_values, setup_figure, statement_only
+from derive.homework.variants.fill import answers, fill, fill_view, given_values, setup_figure, statement_only
 from derive.problem import Problem
 
 #: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
-OWNED = ("variant-*.md", "variant-*.tex", "variant-*.pdf", "variant-*.json", "key.csv", "key.json")
+OWNED = (
+    "variant-*.md",
+    "variant-*.tex",
+    "variant-*.pdf",
+    "variant-*.json",
+    "variant-*.html",
+    "key.csv",
+    "key.json",
+)
 
 
 def _progress(done: int, total: int) -> None:
@@ -102,11 +110,15 @@ class _Key:
 
 
 def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
-    """One variant's files: statement and worked solution (md), LaTeX, PDF or JSON."""
+    """One variant's files: statement and worked solution (md, html), LaTeX, PDF or JSON."""
     from derive.fileio import dumps_json
 
     if fmt == "json":
         (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
+    elif fmt == "html":
+        sheet, page = html_pages(compiled, v, stem, digits)
+        (folder / f"{stem}-problem.html").write_text(sheet, encoding="utf-8")
+        (folder / f"{stem}.html").write_text(page, encoding="utf-8")
     elif fmt == "md":
         page = fill(compiled, v, "md", digits)
         sheet = statement_only(page, setup_figure(compiled, v, "md"))
@@ -125,3 +137,18 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
                 build_pdf(statement_only(tex, setup_figure(compiled, v, "tex")))
             )
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
+
+
+def html_pages(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
+    """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
+    the impact, the sign convention in words; no Source line, no answers) and the worked solution."""
+    import copy
+
+    from derive.writers.view import student_sheet
+    from derive.writers.view.html import html_pages as typeset
+
+    page = fill_view(compiled, v, digits)
+    student = student_sheet(copy.deepcopy(page))
+    student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
+    sheet = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
+    return tuple(typeset([("handout", {**sheet, "numbered": False}), ("solution", page)]))  # type: ignore[return-value]

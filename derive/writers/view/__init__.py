@@ -21,7 +21,7 @@ from derive.writers.view.html import chain_html_page, html_page
 from derive.writers.view.jinja import environment
 from derive.writers.view.json import chain_json, to_json
 from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
-from derive.writers.view.problem import figure_entry, view
+from derive.writers.view.problem import convention, figure_entry, student_sheet, view
 
 __all__ = [
     "ANSWER_MARK",
@@ -31,6 +31,7 @@ __all__ = [
     "blocks_view",
     "boxed_lines",
     "chain_view",
+    "convention",
     "environment",
     "figure_entry",
     "letter_units",
@@ -39,6 +40,7 @@ __all__ = [
     "plain_answers",
     "render",
     "source_parts",
+    "student_sheet",
     "to_json",
     "view",
     "worked_out",
