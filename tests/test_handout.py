@@ -388,3 +388,17 @@ def test_cli_handout_html_from_the_extension_or_format(cli, tmp_path: Path) -> N
     assert other.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
     r = cli("handout", "notes-4c11-two-spheres", "-o", str(tmp_path / "x.md"), "--format", "html")
     assert r.code == 2 and "--format html" in r.err and not (tmp_path / "x.md").exists()
+
+
+def test_html_handout_carries_no_markup_from_the_file(tmp_path: Path) -> None:
+    """A title, source and statement with HTML, TeX and Markdown in them come out as text."""
+    from output_cases import html_text
+
+    path = hostile_problem(tmp_path)
+    for mode in MODES:
+        doc, failures = build_handout([str(path)], title="<i>T</i>", theory=False, mode=mode, fmt="html")
+        assert failures == [] and isinstance(doc, str)
+        assert "<i>T</i>" not in doc and "<b> |" not in doc and "&lt;b&gt; |" in doc
+        text = html_text(doc)  # well formed: nothing of the file opened an element
+        assert "<b> | `code` *bold* [l](u) café θ" in text
+        assert ("Made up" in text) == (mode != "problems")
