@@ -122,6 +122,7 @@ def test_markdown_has_each_title_and_no_answer_in_problems_mode() -> None:
     figures = re.findall(r"<svg.*?</svg>", doc, re.S)
     assert len(figures) == 3
     assert all("Before the impact" in f and ">A2<" not in f and ">B2<" not in f for f in figures)
+    assert doc.count("**Sign convention.** Take $n$ along the line of impact") == 3
 
 
 def test_a_students_sheet_has_no_source_line() -> None:

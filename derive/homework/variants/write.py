@@ -116,7 +116,7 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
     if fmt == "json":
         (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
     elif fmt == "html":
-        sheet, page = html_pages(compiled, v, stem, digits)
+        sheet, page = variant_html(compiled, v, stem, digits)
         (folder / f"{stem}-problem.html").write_text(sheet, encoding="utf-8")
         (folder / f"{stem}.html").write_text(page, encoding="utf-8")
     elif fmt == "md":
@@ -139,7 +139,7 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
 
 
-def html_pages(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
+def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
     """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
     the impact, the sign convention in words; no Source line, no answers) and the worked solution."""
     import copy
@@ -151,4 +151,5 @@ def html_pages(compiled: Compiled, v: Variant, stem: str, digits: int | None = N
     student = student_sheet(copy.deepcopy(page))
     student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
     sheet = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
-    return tuple(typeset([("handout", {**sheet, "numbered": False}), ("solution", page)]))  # type: ignore[return-value]
+    student_page, worked = typeset([("handout", {**sheet, "numbered": False}), ("solution", page)])
+    return student_page, worked
