@@ -151,7 +151,7 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     assert len(csv_lines) == 7 and csv_lines[0].startswith("variant,")
     student = (out / "variant-01-problem.md").read_text()
     assert "ANSWER" not in student and "**Find.**" in student
-    assert "Source" not in student and student.endswith("</div>\n")  # no citation (it may quote answers)
+    assert "Source" not in student and "</svg></div>\n\n**Sign convention.** Take $n$" in student  # no citation
     again = tmp_path / "again"
     assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
     assert (again / "key.json").read_text() == (out / "key.json").read_text()
@@ -174,6 +174,7 @@ def test_cli_writes_a_latex_statement_beside_each_latex_solution(cli, tmp_path: 
     full = (out / "variant-01.tex").read_text(encoding="utf-8")
     assert r"\textbf{Find.}" in sheet and sheet.rstrip().endswith(r"\end{document}")
     assert r"\boxed" not in sheet and "Kinetics" not in sheet and "Source:" not in sheet
+    assert r"\textbf{Sign convention.} Take $n$ along the line of impact" in sheet
     assert r"\boxed" in full and "Source:" in full
 
 
@@ -305,3 +306,12 @@ def test_cli_writes_an_html_sheet_and_worked_solution_per_variant(cli, tmp_path:
             shown = row["results"][name]["shown"]
             assert shown not in sheet and shown in full, (name, shown)
         assert "Source:" in full and "ANSWER" in full
+
+
+def test_an_inverse_variants_sheet_marks_the_unknown_to_find(cli, tmp_path: Path) -> None:
+    """Issue 15: the sheet showed "(unknown: derive finds it)"."""
+    out = tmp_path / "hw"
+    r = cli("variants", "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", "-n", "1", "-o", str(out))
+    assert r.code == 0, r.err
+    sheet = (out / "variant-01-problem.md").read_text(encoding="utf-8")
+    assert r"- $e = \,?$ (to find)" in sheet and "derive finds it" not in sheet

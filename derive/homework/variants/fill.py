@@ -210,20 +210,37 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
 TEX_SOLUTION = "% derive: the solution\n"
 
 
-def statement_only(page: str, figure: str = "") -> str:
+def statement_only(page: str, figure: str = "", convention: str = "") -> str:
     """The part of a worked page a student gets: up to the solution (Markdown, or a
     LaTeX document, which is then closed), without the Source line (citations quote
-    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find."""
+    the published answers), a given left to find marked "to find", with ``figure`` (SVG or
+    TikZ: the set-up) after Find and then ``convention`` (:func:`sign_convention`)."""
+    from derive.writers.view.givens import UNKNOWN_NOTE
+
+    page = page.replace(f"({UNKNOWN_NOTE})", "(to find)")
     if TEX_SOLUTION in page:
         head = page[: page.index(TEX_SOLUTION)]
         head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
         shown = f"\n\n\\begin{{center}}\n{figure}\n\\end{{center}}" if figure else ""
+        shown += f"\n\n\\noindent\\textbf{{Sign convention.}} {convention}" if convention else ""
         return head.rstrip() + shown + "\n\n\\end{document}\n"
     cut = page.find("**Solution.**")
     head = page if cut < 0 else page[:cut]
     head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
     shown = f'\n\n<div align="center">{figure}</div>' if figure else ""
+    shown += f"\n\n**Sign convention.** {convention}" if convention else ""
     return head.rstrip() + shown + "\n"
+
+
+def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
+    """The sign convention in words (stage 1's sentence: where +n and +t point) as Markdown
+    or (tex, pdf) LaTeX text, for a student's sheet; empty when the page has none."""
+    from derive import escape
+    from derive.writers.view import convention
+
+    parts = convention(compiled.view["stages"]) if compiled.view is not None else []
+    text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
+    return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in parts)
 
 
 def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:

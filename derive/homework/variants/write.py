@@ -4,7 +4,15 @@ from __future__ import annotations
 
 from derive.homework.variants.compile import Compiled, Variant, compile_problem
 from derive.homework.variants.draw import draw
-from derive.homework.variants.fill import answers, fill, fill_view, given_values, setup_figure, statement_only
+from derive.homework.variants.fill import (
+    answers,
+    fill,
+    fill_view,
+    given_values,
+    setup_figure,
+    sign_convention,
+    statement_only,
+)
 from derive.problem import Problem
 
 #: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
@@ -121,20 +129,20 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
         (folder / f"{stem}.html").write_text(page, encoding="utf-8")
     elif fmt == "md":
         page = fill(compiled, v, "md", digits)
-        sheet = statement_only(page, setup_figure(compiled, v, "md"))
+        sheet = statement_only(page, setup_figure(compiled, v, "md"), sign_convention(compiled, "md"))
         (folder / f"{stem}-problem.md").write_text(sheet, encoding="utf-8")
         (folder / f"{stem}.md").write_text(page, encoding="utf-8")
     else:
         tex = fill(compiled, v, "tex", digits)
         if fmt == "tex":
-            sheet = statement_only(tex, setup_figure(compiled, v, "tex"))
+            sheet = statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex"))
             (folder / f"{stem}-problem.tex").write_text(sheet, encoding="utf-8")
             (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
         else:
             from derive.writers.pdf import build_pdf
 
             (folder / f"{stem}-problem.pdf").write_bytes(
-                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex")))
+                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex")))
             )
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
 
