@@ -403,3 +403,16 @@ def test_html_handout_carries_no_markup_from_the_file(tmp_path: Path) -> None:
         text = html_text(doc)  # well formed: nothing of the file opened an element
         assert "<b> | `code` *bold* [l](u) café θ" in text
         assert ("Made up" in text) == (mode != "problems")
+
+
+def test_html_handout_without_node_typesets_itself(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without Node.js each formula stays TeX in a span and KaTeX's script comes inline."""
+    from output_cases import html_text
+
+    from derive.writers import katex
+
+    monkeypatch.setattr(katex, "render_math", lambda items: None)
+    doc, _ = build_handout(["notes-4c11-two-spheres"], title="S", theory=True, mode="problems", fmt="html")
+    assert '<span class="math">m_{A} = 20\\ \\mathrm{kg}</span>' in doc
+    assert "katex.render(el.textContent" in doc and 'class="katex"' not in doc
+    assert "Sign convention." in html_text(doc)
