@@ -315,3 +315,21 @@ def test_an_inverse_variants_sheet_marks_the_unknown_to_find(cli, tmp_path: Path
     assert r.code == 0, r.err
     sheet = (out / "variant-01-problem.md").read_text(encoding="utf-8")
     assert r"- $e = \,?$ (to find)" in sheet and "derive finds it" not in sheet
+
+
+@pytest.mark.parametrize(
+    "name", ["notes-4c11-two-spheres", "hibbeler-15-58-suitcases", "ocr-mei-fmm-2021-b-at-45deg-find-e"]
+)
+def test_a_variants_data_is_the_page_fill_prints(name: str) -> None:
+    """The data the HTML writer gets for a variant (fill_view: numbers, optional lines and
+    sides, figures) laid out by the Markdown template is the page fill() prints (figures aside):
+    the LMS's HTML and the variant's HTML page show the numbers of its Markdown page."""
+    from derive.writers.view import environment
+
+    compiled = variants.compile_problem(derive.load(name))
+    for v in variants.draw(compiled, 4, seed=3):
+        data = variants.fill_view(compiled, v)
+        laid_out = environment("md").get_template("solution.md.j2").render(**data)
+        assert "DRVSLOT" not in laid_out and "derive-optional" not in laid_out
+        figures = re.compile(r'<div align="center">.*?</div>\n')
+        assert figures.sub("", laid_out) == figures.sub("", variants.fill(compiled, v, "md"))
