@@ -59,7 +59,9 @@ def _number(x: float, digits: int | None, extra: int, integers: bool, places: in
     return text
 
 
-def slot_texts(compiled: Compiled, variant: Variant, digits: int | None = None) -> tuple[dict[int, str], dict]:
+def slot_texts(
+    compiled: Compiled, variant: Variant, digits: int | None = None
+) -> tuple[dict[int, str], dict[int, int | None]]:
     """The text of each slot of the compiled page for one variant (by slot number), and the
     places after the point of each block whose sums must add up (None: they cannot)."""
     p = compiled.problem
@@ -74,7 +76,15 @@ def slot_texts(compiled: Compiled, variant: Variant, digits: int | None = None) 
     }, places
 
 
-def _slot_text(compiled: Compiled, part: int, numbers, texts, angles, places, d) -> str:
+def _slot_text(
+    compiled: Compiled,
+    part: int,
+    numbers: Any,
+    texts: dict[sympy.Symbol, str],
+    angles: set[sympy.Symbol],
+    places: dict[int, int | None],
+    d: int | None,
+) -> str:
     """One slot's text: a given as written, or a number at the figures its place shows."""
     slot = compiled.book.slots[part]
     kind = slot.kind
