@@ -156,3 +156,8 @@ def markdown(text: str, *, caret: bool = False) -> str:
 def html_text(text: str) -> str:
     """``text`` as HTML text content."""
     return html.escape(text, quote=True)
+
+
+def html_body(text: str) -> str:
+    """``text`` as HTML element content (``<``, ``>``, ``&`` escaped; quotes as they are)."""
+    return html.escape(text, quote=False)

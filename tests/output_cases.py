@@ -8,6 +8,7 @@ escaping of user text is checked by KaTeX and by TeX as well.
 from __future__ import annotations
 
 import os
+import re
 from functools import cache
 from pathlib import Path
 
@@ -66,3 +67,38 @@ def hostile_problem(tmp_dir: Path) -> Path:
     path = tmp_dir / "hostile-direct.toml"
     path.write_text(HOSTILE_DIRECT, encoding="utf-8")
     return path
+
+
+_VOID = {"area", "base", "br", "col", "embed", "hr", "img", "input", "link", "meta", "source", "track", "wbr"}
+
+
+def html_text(page: str) -> str:
+    """An HTML page's text content, checked to be well formed on the way (every element
+    closed, in order), without its figures (SVG coordinates are numbers too), its scripts,
+    its styles and KaTeX's copies of the TeX (``<annotation>``); minus signs as ``-``, next to their number."""
+    from html.parser import HTMLParser
+
+    class Reader(HTMLParser):
+        def __init__(self) -> None:
+            super().__init__(convert_charrefs=True)
+            self.stack: list[str] = []
+            self.text: list[str] = []
+
+        def handle_starttag(self, tag: str, attrs: list) -> None:
+            if tag not in _VOID:
+                self.stack.append(tag)
+
+        def handle_endtag(self, tag: str) -> None:
+            assert self.stack and self.stack[-1] == tag, f"</{tag}> closes <{self.stack[-1:]}>"
+            self.stack.pop()
+
+        def handle_data(self, data: str) -> None:
+            if not {"svg", "script", "style", "annotation"} & set(self.stack):
+                self.text.append(data)
+
+    reader = Reader()
+    reader.feed(page)
+    reader.close()
+    assert reader.stack == [], f"unclosed: {reader.stack}"
+    text = " ".join(reader.text).replace("\u2212", "-")  # KaTeX's minus sign
+    return re.sub(r"-\s+(?=\d)", "-", text)  # MathML's "- 9.15" as printed: -9.15

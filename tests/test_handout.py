@@ -122,6 +122,7 @@ def test_markdown_has_each_title_and_no_answer_in_problems_mode() -> None:
     figures = re.findall(r"<svg.*?</svg>", doc, re.S)
     assert len(figures) == 3
     assert all("Before the impact" in f and ">A2<" not in f and ">B2<" not in f for f in figures)
+    assert doc.count("**Sign convention.** Take $n$ along the line of impact") == 3
 
 
 def test_a_students_sheet_has_no_source_line() -> None:
@@ -326,3 +327,92 @@ def test_a_chains_answer_key_says_what_its_names_stand_for() -> None:
     )
     tex, _ = build_handout(["chain-aqa-m3-2007-collide-again"], title="K", theory=False, mode="answers", fmt="tex")
     assert r"Where $u_{A}$ is $v_{A2}$ after A and B collide" in tex
+
+
+# --- HTML: a student's sheet and a key, in the page's style ----------------------------------
+
+
+def _shown_answers(name: str) -> list[str]:
+    """The numbers of a problem's answers as its page shows them (3.25 of v_A2 = 3.25 m/s)."""
+    from derive.writers.view import plain_answers
+
+    text = " ".join(plain_answers(derive.solve(derive.load(name))))
+    return re.findall(r"(?<![\w.])-?\d+\.\d+", text)
+
+
+HTML_NAMES = ["notes-4c11-two-spheres", "ocr-m2-2012-particle-hits-wall", "chain-ocr-m2-2006-drop-rebound"]
+
+
+def test_html_sheet_has_statements_figures_convention_and_no_answers() -> None:
+    """Issue 15: a student's sheet as HTML: each statement with its set-up before the impact
+    and the sign convention in words; no Source line, no answer, no worked solution."""
+    from output_cases import html_text
+
+    doc, failures = build_handout(HTML_NAMES, title="Sheet <1>", theory=False, mode="problems", fmt="html")
+    assert failures == [] and isinstance(doc, str)
+    assert doc.startswith("<!DOCTYPE html>") and "<title>Sheet &lt;1&gt;</title>" in doc
+    text = html_text(doc)
+    for title in titles(tuple(HTML_NAMES)):
+        assert title in text
+    assert text.count("Find.") == 3 and text.count("Sign convention.") == 3
+    assert "positive from the centre of A toward the centre of B" in text
+    assert "positive from A toward the wall" in text and "signed along +n" in text
+    assert "Source" not in text and "Solution." not in text and "ANSWER" not in text
+    assert "derive finds it" not in text and "(to find)" in text
+    for name in HTML_NAMES:
+        for shown in _shown_answers(name):
+            assert shown not in text, (name, shown)
+    figures = re.findall(r"<svg.*?</svg>", doc, re.S)
+    assert len(figures) == 3 and all(">A2<" not in f and ">B2<" not in f for f in figures)
+
+
+def test_html_keys_have_every_answer() -> None:
+    """The key (answers mode) and the worked solutions hold each problem's answers and its Source."""
+    from output_cases import html_text
+
+    for mode in ("answers", "solutions"):
+        doc, _ = build_handout(HTML_NAMES, title="Key", theory=mode == "solutions", mode=mode, fmt="html")
+        text = html_text(doc)
+        assert text.count("Source:") == 3 and "ANSWER" in text
+        for name in HTML_NAMES:
+            for shown in _shown_answers(name):
+                assert shown in text, (mode, name, shown)
+    assert "Kinetics" in text and "Three systems" in text and text.count("Solution.") == 3
+
+
+def test_cli_handout_html_from_the_extension_or_format(cli, tmp_path: Path) -> None:
+    out = tmp_path / "sheet.html"
+    assert cli("handout", "notes-4c11-two-spheres", "-o", str(out), "--mode", "problems").code == 0
+    assert out.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    other = tmp_path / "sheet.page"
+    assert cli("handout", "notes-4c11-two-spheres", "-o", str(other), "--format", "html").code == 0
+    assert other.read_text(encoding="utf-8").startswith("<!DOCTYPE html>")
+    r = cli("handout", "notes-4c11-two-spheres", "-o", str(tmp_path / "x.md"), "--format", "html")
+    assert r.code == 2 and "--format html" in r.err and not (tmp_path / "x.md").exists()
+
+
+def test_html_handout_carries_no_markup_from_the_file(tmp_path: Path) -> None:
+    """A title, source and statement with HTML, TeX and Markdown in them come out as text."""
+    from output_cases import html_text
+
+    path = hostile_problem(tmp_path)
+    for mode in MODES:
+        doc, failures = build_handout([str(path)], title="<i>T</i>", theory=False, mode=mode, fmt="html")
+        assert failures == [] and isinstance(doc, str)
+        assert "<i>T</i>" not in doc and "<b> |" not in doc and "&lt;b&gt; |" in doc
+        text = html_text(doc)  # well formed: nothing of the file opened an element
+        assert "<b> | `code` *bold* [l](u) café θ" in text
+        assert ("Made up" in text) == (mode != "problems")
+
+
+def test_html_handout_without_node_typesets_itself(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without Node.js each formula stays TeX in a span and KaTeX's script comes inline."""
+    from output_cases import html_text
+
+    from derive.writers import katex
+
+    monkeypatch.setattr(katex, "render_math", lambda items: None)
+    doc, _ = build_handout(["notes-4c11-two-spheres"], title="S", theory=True, mode="problems", fmt="html")
+    assert '<span class="math">m_{A} = 20\\ \\mathrm{kg}</span>' in doc
+    assert "katex.render(el.textContent" in doc and 'class="katex"' not in doc
+    assert "Sign convention." in html_text(doc)

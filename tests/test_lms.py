@@ -165,18 +165,56 @@ def test_tolerance_rule() -> None:
     assert lms.tolerance("0") == lms.tolerance("0", 3) == lms.ZERO_TOLERANCE
 
 
-def test_markdown_to_html() -> None:
-    md = (
-        "# Title\n\n*Source: A \\& B &lt;x&gt;*\n\n**Given.** m = 2 \\*kg\\* and $a < b$.\n\n"
-        "- $m_{A} = 2$\n- $e = 0.5$\n\n## 1) Stage\n\n$$\nx = \\frac{1}{2} \\tag{1}\n$$\n\n<div>svg</div>\n"
+def _lms_data() -> dict:
+    """Page data (the writers' shape) with hostile text: markup, dollars, backslashes."""
+    line = {"latex": r"x = \frac{1}{2}", "tag": "1", "rows": (), "before": "", "after": "", "boxed": False}
+    return {
+        "title": "Title",
+        "statement": [("text", "m = 2 *kg* costs $5 <b>or</b> "), ("math", "a < b"), ("text", r" \(y\).")],
+        "givens": [{"latex": "m_{A} = 2", "note": None}, {"latex": "e = 0.5", "note": "a <guess>"}],
+        "find": [("text", "x & y")],
+        "stages": [{"number": 1, "title": "Stage <1>", "blocks": [{"text": [("text", "Take ")], "lines": [line]}]}],
+    }
+
+
+def test_lms_html_is_the_page_writer_with_mathjax_delimiters() -> None:
+    """The LMS's statement and solution come from the page's data through the HTML writer
+    (no Markdown parsed): math in \\( \\) and \\[ \\] with its number inside, text that
+    never turns into math, no Source line, no <html> wrapper."""
+    statement = lms.statement_html(_lms_data())
+    assert statement.startswith(
+        '<p><strong>Given.</strong> <span class="mathjax_ignore tex2jax_ignore">m = 2 *kg* costs &#36;5 &lt;b&gt;or&lt;/b&gt; </span>'
     )
-    out = lms.md_to_html(md)
-    assert "<h3>Title</h3>" in out and "<h4>1) Stage</h4>" in out
-    assert "<em>Source: A &amp; B &lt;x&gt;</em>" in out
-    assert r"<strong>Given.</strong> m = 2 *kg* and \(a &lt; b\)." in out
-    assert r"<ul><li>\(m_{A} = 2\)</li><li>\(e = 0.5\)</li></ul>" in out
-    assert r"<p>\[ x = \frac{1}{2} \tag{1} \]</p>" in out
-    assert "svg" not in out and "$" not in out
+    assert r"\(a &lt; b\)" in statement and "&#92;(y&#92;)" in statement
+    assert r"<li>\(m_{A} = 2\)</li>" in statement and r"<li>\(e = 0.5\) (a &lt;guess&gt;)</li>" in statement
+    assert "<p><strong>Find.</strong> x &amp; y</p>" in statement
+    solution = lms.solution_html(_lms_data())
+    assert solution.startswith("<p><strong>Solution.</strong></p>")
+    assert "<h4>1) Stage &lt;1&gt;</h4>" in solution
+    assert r"<p>\[ x = \frac{1}{2} \tag{1} \]</p>" in solution
+    for out in (statement, solution):
+        assert "<html" not in out and "$" not in out and "Title" not in out
+        ET.fromstring(f"<div>{out.replace('&#36;', '').replace('&#92;', '')}</div>")  # well-formed
+
+
+def _numbers(text: str) -> list[str]:
+    return sorted(re.findall(r"-?\d+(?:\.\d+)?", text))
+
+
+def test_lms_feedback_has_the_numbers_of_the_variant_page(
+    compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str
+) -> None:
+    """Moodle's general feedback shows every number of the variant's worked solution (the
+    Markdown page, figures aside), and its question text every number of the statement."""
+    for v, q in zip(chosen, _numerical(moodle), strict=True):
+        page = variants.fill(compiled, v, "md")
+        page = re.sub(r"<div align=\"center\">.*?</div>\n", "", page)
+        head, _, solution = page.partition("**Solution.**")
+        feedback = re.sub(r"<[^>]+>", " ", _text(q, "generalfeedback/text"))
+        assert _numbers(feedback) == _numbers(solution)
+        question = re.sub(r"<[^>]+>", " ", _text(q, "questiontext/text")).rsplit("Enter", 1)[0]
+        head = re.sub(r"^# .*\n|^\*Source: .*\n", "", head, flags=re.M)
+        assert _numbers(question) == _numbers(head)
 
 
 # ---------------------------------------------------------------- PrairieLearn

@@ -247,7 +247,7 @@ def test_lms_statement_math_is_not_typeset(cli, here: Path) -> None:
     statements = [p for p in pages if "It costs" in p]
     assert statements, "the statement reaches the question text"
     for page in statements:
-        assert '<span class="mathjax_ignore tex2jax_ignore"> It costs &#36;5 or &#36;10' in page
+        assert '<strong>Given.</strong> <span class="mathjax_ignore tex2jax_ignore">It costs &#36;5 or &#36;10' in page
         assert "&#92;(&#92;frac{1}{2}&#92;) of &#36;&#36;&#92;input{x}&#36;&#36;." in page
     info = [p for p in pages if "variants drawn by derive" in p]
     assert info and "Price &#36;x^2&#36;" in info[0]

@@ -151,9 +151,7 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     assert len(csv_lines) == 7 and csv_lines[0].startswith("variant,")
     student = (out / "variant-01-problem.md").read_text()
     assert "ANSWER" not in student and "**Find.**" in student
-    assert "Source" not in student  # no citation (it may quote answers)
-    assert "</div>\n\nTake $n$ along the line of impact" in student  # the figure, then the axes in words
-    assert student.endswith("Components are signed: positive along +n and +t.\n")
+    assert "Source" not in student and "</svg></div>\n\n**Sign convention.** Take $n$" in student  # no citation
     again = tmp_path / "again"
     assert cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(again)).code == 0
     assert (again / "key.json").read_text() == (out / "key.json").read_text()
@@ -176,6 +174,7 @@ def test_cli_writes_a_latex_statement_beside_each_latex_solution(cli, tmp_path: 
     full = (out / "variant-01.tex").read_text(encoding="utf-8")
     assert r"\textbf{Find.}" in sheet and sheet.rstrip().endswith(r"\end{document}")
     assert r"\boxed" not in sheet and "Kinetics" not in sheet and "Source:" not in sheet
+    assert r"\textbf{Sign convention.} Take $n$ along the line of impact" in sheet
     assert r"\boxed" in full and "Source:" in full
 
 
@@ -312,9 +311,11 @@ def test_a_students_sheet_says_which_way_n_points(fmt: str) -> None:
     compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"), fmt=fmt)
     (v,) = variants.draw(compiled, 1, seed=2)
     page = variants.fill(compiled, v, fmt)
-    sheet = variants.statement_only(page, variants.setup_figure(compiled, v, fmt))
+    sheet = variants.statement_only(
+        page, variants.setup_figure(compiled, v, fmt), variants.sign_convention(compiled, fmt)
+    )
+    assert "Sign convention." in sheet
     assert "Take $n$ along the line of impact, positive from the centre of A toward the centre of B" in sheet
-    assert "Components are signed: positive along +n and +t." in sheet
     assert "Solution" not in sheet and "boxed" not in sheet
 
 
@@ -383,3 +384,58 @@ def test_notes_4c12_variants_give_the_rebound_angle_with_v_A1_a_letter() -> None
         page = variants.fill(compiled, v)
         assert r"^\circ^\circ" not in page and "atan2(v" not in page.replace(r"\left", "")
         assert f"\\theta_{{1}} = {round(math.degrees(th))}^\\circ$" in page
+
+
+def test_cli_writes_an_html_sheet_and_worked_solution_per_variant(cli, tmp_path: Path) -> None:
+    """Issue 15: ``variants -f html``: each variant's sheet (its own numbers, the set-up before the
+    impact, the sign convention; no Source line, no answer) and its worked solution (every answer)."""
+    from output_cases import html_text
+
+    out = tmp_path / "hw"
+    r = cli("variants", "notes-4c11-two-spheres", "--count", "3", "--seed", "4", "-f", "html", "-o", str(out))
+    assert r.code == 0, r.err
+    assert sorted(p.name for p in out.glob("*.html")) == [
+        f"variant-0{i}{part}.html" for i in (1, 2, 3) for part in ("-problem", "")
+    ]
+    compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"))
+    key = json.loads((out / "key.json").read_text())
+    for v, row in zip(variants.draw(compiled, 3, seed=4), key["variants"], strict=True):
+        raw = (out / f"variant-0{v.number}-problem.html").read_text(encoding="utf-8")
+        sheet = html_text(raw)
+        full = html_text((out / f"variant-0{v.number}.html").read_text(encoding="utf-8"))
+        for name in compiled.names:
+            number = variants.given_text(compiled.givens[name], v.values[name], None)
+            assert f"= {number}" in sheet and f"= {number}" in full, (name, number)
+        assert "Sign convention." in sheet and "Source" not in sheet and "ANSWER" not in sheet
+        assert raw.count("<svg") == 1 and 'aria-label="Before the impact"' in raw
+        for name in ("v_A2", "v_B2", "v_A2n", "v_B2n", "v_A2t", "v_B2t"):
+            shown = row["results"][name]["shown"]
+            assert shown not in sheet and shown in full, (name, shown)
+        assert "Source:" in full and "ANSWER" in full
+
+
+def test_an_inverse_variants_sheet_marks_the_unknown_to_find(cli, tmp_path: Path) -> None:
+    """Issue 15: the sheet showed "(unknown: derive finds it)"."""
+    out = tmp_path / "hw"
+    r = cli("variants", "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", "-n", "1", "-o", str(out))
+    assert r.code == 0, r.err
+    sheet = (out / "variant-01-problem.md").read_text(encoding="utf-8")
+    assert r"- $e = \,?$ (to find)" in sheet and "derive finds it" not in sheet
+
+
+@pytest.mark.parametrize(
+    "name", ["notes-4c11-two-spheres", "hibbeler-15-58-suitcases", "ocr-mei-fmm-2021-b-at-45deg-find-e"]
+)
+def test_a_variants_data_is_the_page_fill_prints(name: str) -> None:
+    """The data the HTML writer gets for a variant (fill_view: numbers, optional lines and
+    sides, figures) laid out by the Markdown template is the page fill() prints (figures aside):
+    the LMS's HTML and the variant's HTML page show the numbers of its Markdown page."""
+    from derive.writers.view import environment
+
+    compiled = variants.compile_problem(derive.load(name))
+    for v in variants.draw(compiled, 4, seed=3):
+        data = variants.fill_view(compiled, v)
+        laid_out = environment("md").get_template("solution.md.j2").render(**data)
+        assert "DRVSLOT" not in laid_out and "derive-optional" not in laid_out
+        figures = re.compile(r'<div align="center">.*?</div>\n')
+        assert figures.sub("", laid_out) == figures.sub("", variants.fill(compiled, v, "md"))

@@ -49,11 +49,16 @@ def run_handout(args: argparse.Namespace) -> int:
     from derive.homework.handout import DEFAULT_TITLES, NoProblemsError, build_handout
     from derive.homework.handout import FORMATS as HANDOUT_FORMATS
 
-    fmt = Path(args.output).suffix.lower().lstrip(".")
+    suffix = Path(args.output).suffix.lower().lstrip(".")
+    fmt = args.format or suffix
     if fmt not in HANDOUT_FORMATS:
         raise InputError(
-            "the extension sets the format: give -o FILE.pdf, FILE.tex or FILE.md", where="usage", field=args.output
+            "the extension sets the format: give -o FILE.pdf, FILE.tex, FILE.md or FILE.html (or --format)",
+            where="usage",
+            field=args.output,
         )
+    if args.format and suffix in HANDOUT_FORMATS and suffix != args.format:
+        raise InputError(f"--format {args.format} but -o names a .{suffix} file", where="usage", field=args.output)
     title = args.title if args.title is not None else DEFAULT_TITLES[args.mode]
     try:
         data, failures = build_handout(

@@ -114,7 +114,13 @@ def _add_variants(sub: argparse._SubParsersAction) -> None:
     p_var.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
     p_var.add_argument("--count", "-n", type=int, default=40, help="how many variants (default: 40)")
     p_var.add_argument("--seed", type=int, default=1, help="the same seed and file give the same variants")
-    p_var.add_argument("--format", "-f", choices=("md", "tex", "pdf", "json"), default="md")
+    p_var.add_argument(
+        "--format",
+        "-f",
+        choices=("md", "tex", "pdf", "html", "json"),
+        default="md",
+        help="each variant's sheet and worked solution as md, tex, pdf or html; json: its numbers (default: md)",
+    )
     p_var.add_argument("-o", "--output", required=True, help="the folder to write into")
     p_var.add_argument("--digits", type=int, help="significant figures")
     p_var.add_argument("--moodle", metavar="FILE.xml", help="also write Moodle XML: one numerical question per variant")
@@ -130,7 +136,15 @@ def _add_handout(sub: argparse._SubParsersAction) -> None:
     """The options of ``derive handout``."""
     p_hand = sub.add_parser("handout", help="gather problems into one document: problems, answers or solutions")
     p_hand.add_argument("problems", nargs="+", metavar="PROBLEM", help="problem files (.toml) or bundled names")
-    p_hand.add_argument("-o", "--output", required=True, help="the file to write: FILE.pdf, FILE.tex or FILE.md")
+    p_hand.add_argument(
+        "-o", "--output", required=True, help="the file to write: FILE.pdf, FILE.tex, FILE.md or FILE.html"
+    )
+    p_hand.add_argument(
+        "--format",
+        "-f",
+        choices=("md", "tex", "pdf", "html"),
+        help="the format (default: the extension of -o)",
+    )
     p_hand.add_argument("--title", help="the handout's title (default: after the mode)")
     p_hand.add_argument(
         "--theory", action=argparse.BooleanOptionalAction, default=True, help="a theory page first (default: yes)"

@@ -4,7 +4,8 @@ A handout has a title, an optional theory page in the notes' layout (the three
 systems and equations (1)-(4), from :mod:`derive.theory`), then each problem as
 a section, in one of three modes:
 
-- ``problems``: the heading, Given and Find only (a problem sheet);
+- ``problems``: the heading, Given and Find, the set-up before the impact and (HTML)
+  the sign convention in words; no Source line, no answers (a student's sheet);
 - ``answers``: the same, followed by the boxed answer lines of stage 4;
 - ``solutions``: the full worked solution, stages 1-4 with their figures.
 
@@ -26,13 +27,16 @@ from derive.homework import theory as theory_page
 from derive.problem import load
 from derive.steps import solve
 from derive.writers.pdf import build_pdf
-from derive.writers.targets import GITHUB, TEX_DOCUMENT, Layout
-from derive.writers.view import environment, view
+from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
+from derive.writers.view import environment, student_sheet, view
+from derive.writers.view.html import handout_html
 
 Mode = Literal["problems", "answers", "solutions"]
-Format = Literal["md", "tex", "pdf"]
+Format = Literal["md", "tex", "pdf", "html"]
 MODES: tuple[str, ...] = ("problems", "answers", "solutions")
-FORMATS: tuple[str, ...] = ("md", "tex", "pdf")
+FORMATS: tuple[str, ...] = ("md", "tex", "pdf", "html")
+#: The layout of each format's pages: long lines on rows as a solve's page of that format.
+LAYOUTS = {"md": GITHUB, "html": HTML, "tex": TEX_DOCUMENT, "pdf": TEX_DOCUMENT}
 
 #: The title of a handout when none is given, by mode.
 DEFAULT_TITLES = {
@@ -87,7 +91,7 @@ def _problem_view(
         # no Source line (citations quote the published answers)
         data["setup_svg"] = next((st["figure_svg"] for st in data["stages"] if st.get("figure_svg")), "")
         data["setup_tikz"] = next((st["figure_tikz"] for st in data["stages"] if st.get("figure_tikz")), "")
-        data["source"], data["source_parts"] = None, []
+        student_sheet(data)
     return data
 
 
@@ -175,7 +179,8 @@ def build_handout(
     mode
         ``"problems"``, ``"answers"`` or ``"solutions"`` (see the module docstring).
     fmt
-        ``"md"`` or ``"tex"`` (text), or ``"pdf"`` (bytes, compiled by LaTeX).
+        ``"md"``, ``"tex"`` or ``"html"`` (text: HTML is one self-contained page in the
+        style of ``derive solve -f html``), or ``"pdf"`` (bytes, compiled by LaTeX).
     digits
         Significant figures (default: each problem's own, else the textbook rule).
     plot
@@ -192,6 +197,23 @@ def build_handout(
         A bad mode, format or ``digits``; :class:`NoProblemsError` when no problem
         could be included.
     """
+    _check(problems, mode, fmt, digits)
+    views, failures = [], []
+    for name in problems:
+        try:
+            views.append(_problem_view(name, mode, digits, plot, LAYOUTS[fmt]))
+        except DeriveError as exc:
+            failures.append(Failure(str(name), _one_line(str(exc))))
+        except Exception as exc:  # a bug with one problem must not lose the others
+            failures.append(Failure(str(name), _one_line(f"internal error ({type(exc).__name__}: {exc})")))
+    if not views:
+        raise NoProblemsError(failures)
+    data = {"title": title, "mode": mode, "problems": views, "theory": theory_page.view() if theory else None}
+    return _document(data, fmt), failures
+
+
+def _check(problems: list[str | Path], mode: str, fmt: str, digits: int | None) -> None:
+    """A handout's options, checked before any problem is solved."""
     if mode not in MODES:
         raise InputError(f"unknown mode {mode!r} (expected one of: {', '.join(MODES)})", field="--mode")
     if fmt not in FORMATS:
@@ -200,21 +222,13 @@ def build_handout(
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
     if not problems:
         raise InputError("a handout needs at least one problem")
-    views, failures = [], []
-    for name in problems:
-        try:
-            layout = GITHUB if fmt == "md" else TEX_DOCUMENT  # long lines on rows, as a solve's page
-            views.append(_problem_view(name, mode, digits, plot, layout))
-        except DeriveError as exc:
-            failures.append(Failure(str(name), _one_line(str(exc))))
-        except Exception as exc:  # a bug with one problem must not lose the others
-            failures.append(Failure(str(name), _one_line(f"internal error ({type(exc).__name__}: {exc})")))
-    if not views:
-        raise NoProblemsError(failures)
-    data = {"title": title, "mode": mode, "problems": views, "theory": theory_page.view() if theory else None}
+
+
+def _document(data: dict[str, Any], fmt: str) -> str | bytes:
+    """The handout's data as a document: Markdown, HTML, LaTeX or (bytes) PDF."""
     if fmt == "md":
-        return environment("md").get_template("handout.md.j2").render(**data), failures
+        return environment("md").get_template("handout.md.j2").render(**data)
+    if fmt == "html":
+        return handout_html(data)
     tex = environment("tex").get_template("handout.tex.j2").render(**data)
-    if fmt == "tex":
-        return tex, failures
-    return build_pdf(tex), failures
+    return tex if fmt == "tex" else build_pdf(tex)

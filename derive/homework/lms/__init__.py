@@ -47,7 +47,7 @@ from derive.homework.lms.grading import (
     significant_figures,
     tolerance,
 )
-from derive.homework.lms.markup import esc, md_to_html
+from derive.homework.lms.markup import esc, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel, Range, Wrong, mistake_ranges
 from derive.homework.lms.moodle import DEFAULT_GRADE, OTHER_UNITS, PENALTY, moodle_xml
 from derive.homework.lms.pl import TOPIC, prairielearn, prairielearn_files
@@ -68,12 +68,14 @@ __all__ = [
     "build_exports",
     "default_result",
     "esc",
-    "md_to_html",
     "mistake_ranges",
     "moodle_xml",
     "prairielearn",
     "prairielearn_files",
     "resolve_result",
     "significant_figures",
+    "solution_html",
+    "statement_html",
     "tolerance",
+    "words",
 ]

@@ -8,9 +8,9 @@ from decimal import Decimal
 from pathlib import Path
 
 from derive.homework.lms.grading import Answer, asked_answer, resolve_result
-from derive.homework.lms.markup import clean_xml, esc, md_to_html, solution_md, statement_html, words
+from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel, mistake_ranges
-from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
+from derive.homework.variants import Compiled, Variant, answers, fill_view
 from derive.symbols import latex_name
 
 #: Units a student may write instead of the one asked, with how many of them make one of it
@@ -107,12 +107,12 @@ def moodle_xml(
     width = max(2, len(str(len(variants))))
     symbol = latex_name(result)
     for v in variants:
-        page = fill(compiled, v, "md", digits)
+        page = fill_view(compiled, v, digits)
         right = asked_answer(result, answers(compiled, v, digits)[result], d)
         q = ET.SubElement(quiz, "question", {"type": "numerical"})
         _text(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
-        _text(q, "questiontext", statement_html(statement_only(page)) + "\n" + _ask(compiled, right), format="html")
-        _text(q, "generalfeedback", md_to_html(solution_md(page)), format="html")
+        _text(q, "questiontext", statement_html(page) + "\n" + _ask(compiled, right), format="html")
+        _text(q, "generalfeedback", solution_html(page), format="html")
         ET.SubElement(q, "defaultgrade").text = DEFAULT_GRADE
         ET.SubElement(q, "penalty").text = PENALTY
         ET.SubElement(q, "hidden").text = "0"

@@ -13,10 +13,10 @@ from pathlib import Path
 from derive.fileio import dumps_json
 from derive.homework.lms.files import folder_exports
 from derive.homework.lms.grading import EDGE, asked_answer, resolve_result
-from derive.homework.lms.markup import SOLUTION, clean_xml, esc, md_to_html, solution_md, statement_html
+from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html
 from derive.homework.lms.mistake_model import MistakeModel, hint_text, mistake_ranges
 from derive.homework.lms.moodle import problem_name
-from derive.homework.variants import Compiled, Variant, answers, fill, statement_only
+from derive.homework.variants import Compiled, Variant, answers, fill_view, statement_view
 from derive.symbols import latex_name
 
 TOPIC = "Central impact"
@@ -28,27 +28,23 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
     """The statement as HTML with ``{{params.NAME}}`` where each varied given's number
     goes, and what each parameter is (given name, slot kind); None when the statement
     holds a number that is not a varied given's."""
-    parts = compiled.templates.get("md")
-    if parts is None:
-        return None
     by_symbol = {compiled.givens[n].symbol: n for n in compiled.names}
     keys: dict[str, tuple[str, str]] = {}
-    out: list[str] = []
-    for part in parts:
-        if isinstance(part, str):
-            cut = part.find(SOLUTION)
-            out.append(part if cut < 0 else part[:cut])
-            if cut >= 0:
-                break
-            continue
-        slot = compiled.book.slots[part]
+    other: list[int] = []
+
+    def param(number: int) -> str:
+        slot = compiled.book.slots[number]
         given = by_symbol.get(slot.expr)
         if given is None or slot.kind not in ("given", "text", "text:abs"):
-            return None
+            other.append(number)
+            return ""
         key = {"text": given, "text:abs": f"derive_speed_{given}"}.get(slot.kind, f"derive_given_{given}")
         keys[key] = (given, slot.kind)
-        out.append(_PARAM.format(list(keys).index(key)))
-    page = statement_html("".join(out))
+        return _PARAM.format(list(keys).index(key))
+
+    page = statement_html(statement_view(compiled, param))
+    if other:
+        return None
     page = re.sub(r"\{(?=\{)", "{ ", page)  # literal {{ in TeX is not Mustache
     page = re.sub(r"\}(?=\})", "} ", page)
     for i, key in enumerate(keys):
@@ -177,19 +173,19 @@ def _row(
     model: MistakeModel | None,
 ) -> dict:
     """One variant as server.py's VARIANTS hold it: parameters, answer, mistakes' ranges."""
-    page = fill(compiled, v, "md", digits)
+    page = fill_view(compiled, v, digits)
     right = asked_answer(result, answers(compiled, v, digits)[result], d)
     ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
     if template is not None:
         params = _params(compiled, v, template[1], digits)
     else:
-        params = {"derive_statement": statement_html(statement_only(page))}
+        params = {"derive_statement": statement_html(page)}
     params.update(
         {
             "derive_variant": v.number,
             "derive_figures": right.figures,
             "derive_atol": float(right.tolerance + EDGE * max(abs(right.value), right.tolerance)),
-            "derive_solution": md_to_html(solution_md(page)),
+            "derive_solution": solution_html(page),
         }
     )
     mistake_rows = [[float(r.low), float(r.high), hint_text(r.wrong)] for r in ranges]

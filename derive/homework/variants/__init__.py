@@ -19,11 +19,15 @@ from derive.homework.variants.fill import (
     answers,
     drawing,
     fill,
+    fill_view,
     given_text,
     given_values,
     iterate,
     setup_figure,
+    sign_convention,
+    slot_texts,
     statement_only,
+    statement_view,
 )
 from derive.homework.variants.write import OWNED, write_variants
 
@@ -41,10 +45,14 @@ __all__ = [
     "draw",
     "drawing",
     "fill",
+    "fill_view",
     "given_text",
     "given_values",
     "iterate",
     "setup_figure",
+    "sign_convention",
+    "slot_texts",
     "statement_only",
+    "statement_view",
     "write_variants",
 ]

@@ -46,6 +46,9 @@ class Compiled:
     check_fn: object
     #: The figures' numbers, compiled as they are first needed (:class:`~.fill.FigureNumbers`).
     figure_numbers: object = None
+    #: The page's data (:func:`derive.writers.view.view`) with the slots open, for a variant's
+    #: HTML (see :func:`derive.homework.variants.fill_view`).
+    view: dict | None = None
 
 
 def _symbolic(problem: Problem) -> Problem:
@@ -99,7 +102,7 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
             entry["figure_svg"] = entry["figure_tikz"] = FIGURE.format("", stage.figure)
             entry["figure_note_html"] = entry["figure_note_tex"] = FIGURE.format("NOTE", stage.figure)
     templates = {}
-    if fmt in ("md", "json"):
+    if fmt in ("md", "json", "html"):
         page = environment("md").get_template("solution.md.j2").render(**data)
         templates["md"] = _split(page)
     if fmt in ("tex", "pdf"):
@@ -123,7 +126,7 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
     result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
     check_fn = _checks(symbolic, symbols, results, prep)
-    return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn)
+    return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn, data)
 
 
 def _split(page: str) -> list[str | int]:

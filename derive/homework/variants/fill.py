@@ -3,9 +3,10 @@ in; its answers and givens; the statement alone."""
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from decimal import Decimal
 from typing import Any
 
@@ -60,57 +61,73 @@ def _number(x: float, digits: int | None, extra: int, integers: bool, places: in
     return text
 
 
-def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
-    """The worked solution of one variant, from the compiled page."""
+def slot_texts(
+    compiled: Compiled, variant: Variant, digits: int | None = None
+) -> tuple[dict[int, str], dict[int, int | None]]:
+    """The text of each slot of the compiled page for one variant (by slot number), and the
+    places after the point of each block whose sums must add up (None: they cannot)."""
     p = compiled.problem
     d = digits if digits is not None else p.digits
     args = [float(variant.values[n]) for n in compiled.names]
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
     places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
     texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
-    by_symbol = {compiled.givens[n].symbol: compiled.givens[n] for n in compiled.names}
     angles = {compiled.givens[n].symbol for n in compiled.names if compiled.givens[n].unit == "deg"}
-    out = []
-    for part in compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]:
-        if isinstance(part, str):
-            out.append(part)
-            continue
-        slot = compiled.book.slots[part]
-        kind = slot.kind
-        if kind.startswith("text"):  # a statement's {name} or {|name|}
-            g = by_symbol[slot.expr]
-            out.append(statement_number(g, variant.values[g.name], d, magnitude=kind == "text:abs"))
-            continue
-        if kind == "given":
-            text = texts[slot.expr]
-            if slot.expr in angles:
-                text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
-            out.append(rf"\left({text}\right)" if text.startswith("-") else text)
-            continue
-        if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
-            text = texts[slot.expr]  # a given's own number, as written
-            neg = text.startswith("-")
-            role = kind.partition(":")[0] if ":" in kind else ""
-            if role.startswith("signed"):
-                out.append((" - " if neg else " + ") + text.lstrip("-"))
-            elif role.startswith("lead") or not neg:
-                out.append(text)
-            else:
-                out.append(rf"\left({text}\right)")
-            continue
-        x = complex(numbers[part]).real
-        role, _, what = kind.partition(":") if ":" in kind else ("", "", kind)
-        result = what == "result"
-        text = _number(abs(x) if role else x, d, slot.extra, not result, None if result else places.get(slot.block))
-        if role.endswith("coef") and text == "1":
-            text = ""
+    values = variant.values
+    return {
+        i: _slot_text(compiled, i, numbers, texts, angles, places, d, values) for i in range(len(compiled.book.slots))
+    }, places
+
+
+def _slot_text(
+    compiled: Compiled,
+    part: int,
+    numbers: Any,
+    texts: dict[sympy.Symbol, str],
+    angles: set[sympy.Symbol],
+    places: dict[int, int | None],
+    d: int | None,
+    values: dict[str, sympy.Expr],
+) -> str:
+    """One slot's text: a given as written, or a number at the figures its place shows."""
+    slot = compiled.book.slots[part]
+    kind = slot.kind
+    if kind.startswith("text"):  # a statement's {name} or {|name|}
+        g = next(g for g in compiled.givens.values() if g.symbol == slot.expr)
+        return statement_number(g, values[g.name], d, magnitude=kind == "text:abs")
+    if kind == "given":
+        text = texts[slot.expr]
+        if slot.expr in angles:
+            text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
+        return rf"\left({text}\right)" if text.startswith("-") else text
+    if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
+        text = texts[slot.expr]  # a given's own number, as written
+        neg = text.startswith("-")
+        role = kind.partition(":")[0] if ":" in kind else ""
         if role.startswith("signed"):
-            out.append((" - " if x < 0 else " + ") + text)
-        elif role.startswith("lead"):
-            out.append(("-" if x < 0 else "") + text)
-        else:
-            out.append(text)
-    page = _optional_sides(_optional_lines("".join(out), places))
+            return (" - " if neg else " + ") + text.lstrip("-")
+        if role.startswith("lead") or not neg:
+            return text
+        return rf"\left({text}\right)"
+    x = complex(numbers[part]).real
+    role, _, what = kind.partition(":") if ":" in kind else ("", "", kind)
+    result = what == "result"
+    text = _number(abs(x) if role else x, d, slot.extra, not result, None if result else places.get(slot.block))
+    if role.endswith("coef") and text == "1":
+        text = ""
+    if role.startswith("signed"):
+        return (" - " if x < 0 else " + ") + text
+    if role.startswith("lead"):
+        return ("-" if x < 0 else "") + text
+    return text
+
+
+def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
+    """The worked solution of one variant, from the compiled page."""
+    texts, places = slot_texts(compiled, variant, digits)
+    parts = compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]
+    page = "".join(texts[part] if isinstance(part, int) else part for part in parts)
+    page = _optional_sides(_optional_lines(page, places))
     return _figures(compiled, variant, page, fmt)
 
 
@@ -251,37 +268,37 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
 TEX_SOLUTION = "% derive: the solution\n"
 
 
-#: The sentences of a worked page that say which way the axes point (its geometry stage).
-_CONVENTION = re.compile(r"^(?:\\noindent )?(Take \$n\$ along .*|The impact is direct: every velocity .*)$", re.M)
-
-
-def convention(page: str) -> list[str]:
-    """The sign convention in words, as the worked page states it: which way +n (and +t)
-    points, and that the components asked for are signed along them."""
-    found = [m.group(1).removesuffix("\\par") for m in _CONVENTION.finditer(page)]
-    if found and not any(f.startswith("The impact is direct") for f in found):
-        found.append("Components are signed: positive along +n and +t.")
-    return found
-
-
-def statement_only(page: str, figure: str = "") -> str:
+def statement_only(page: str, figure: str = "", convention: str = "") -> str:
     """The part of a worked page a student gets: up to the solution (Markdown, or a
     LaTeX document, which is then closed), without the Source line (citations quote
-    the published answers), with ``figure`` (SVG or TikZ: the set-up) after Find and
-    the sign convention in words after it."""
-    words = convention(page)
+    the published answers), a given left to find marked "to find", with ``figure`` (SVG or
+    TikZ: the set-up) after Find and then ``convention`` (:func:`sign_convention`)."""
+    from derive.writers.view.givens import UNKNOWN_NOTE
+
+    page = page.replace(f"({UNKNOWN_NOTE})", "(to find)")
     if TEX_SOLUTION in page:
         head = page[: page.index(TEX_SOLUTION)]
         head = re.sub(r"^\{\\raggedright\\noindent\{\\itshape Source: .*\n", "", head, flags=re.M)
         shown = f"\n\n\\begin{{center}}\n{figure}\n\\end{{center}}" if figure else ""
-        said = "".join(f"\n\n\\noindent {w}\\par" for w in words)
-        return head.rstrip() + shown + said + "\n\n\\end{document}\n"
+        shown += f"\n\n\\noindent\\textbf{{Sign convention.}} {convention}" if convention else ""
+        return head.rstrip() + shown + "\n\n\\end{document}\n"
     cut = page.find("**Solution.**")
     head = page if cut < 0 else page[:cut]
     head = re.sub(r"^\*Source: .*\n\n?", "", head, flags=re.M)
     shown = f'\n\n<div align="center">{figure}</div>' if figure else ""
-    said = "".join(f"\n\n{w}" for w in words)
-    return head.rstrip() + shown + said + "\n"
+    shown += f"\n\n**Sign convention.** {convention}" if convention else ""
+    return head.rstrip() + shown + "\n"
+
+
+def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
+    """The sign convention in words (stage 1's sentence: where +n and +t point) as Markdown
+    or (tex, pdf) LaTeX text, for a student's sheet; empty when the page has none."""
+    from derive import escape
+    from derive.writers.view import convention
+
+    parts = convention(compiled.view["stages"]) if compiled.view is not None else []
+    text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
+    return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in parts)
 
 
 def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
@@ -301,3 +318,75 @@ def iterate(
     """Each variant with its page, one at a time (nothing kept in memory)."""
     for v in variants:
         yield v, fill(compiled, v, fmt, digits)
+
+
+_SLOT = re.compile(r"DRVSLOT(\d+)X")
+
+
+def fill_view(
+    compiled: Compiled, variant: Variant, digits: int | None = None, slot: Callable[[int], str] | None = None
+) -> dict[str, Any]:
+    """One variant's page as data for the writers (:func:`derive.writers.view.view`'s
+    shape): the compiled page's data with its numbers, optional lines and sides and its
+    figures filled in, as :func:`fill` fills the printed page. ``slot`` (a slot's number
+    to its text) replaces the variant's numbers (PrairieLearn's ``{{params.NAME}}``)."""
+    from derive.writers.view import figure_entry
+
+    if compiled.view is None:
+        raise ValueError("compiled without its page data")
+    texts, places = slot_texts(compiled, variant, digits)
+    put = slot if slot is not None else texts.__getitem__
+
+    def one(text: str) -> str:
+        return _SLOT.sub(lambda m: put(int(m.group(1))), text)
+
+    data = _filled(compiled.view, one)
+    for stage in data["stages"]:
+        for block in stage["blocks"]:
+            block["lines"] = [ln for ln in (_optional(ln, places) for ln in block["lines"]) if ln is not None]
+        marker = stage.get("figure_svg", "")
+        if marker:
+            when = "after" if marker == FIGURE.format("", "after") else "before"
+            stage.update(figure_entry(drawing(compiled, variant, when)))
+    return data
+
+
+def _filled(obj: Any, one: Callable[[str], str]) -> Any:
+    """A copy of the page data with each string's slots filled in."""
+    if isinstance(obj, str):
+        return one(obj) if "DRVSLOT" in obj else obj
+    if isinstance(obj, dict):
+        return {k: _filled(v, one) for k, v in obj.items()}
+    if isinstance(obj, list):
+        return [_filled(v, one) for v in obj]
+    if isinstance(obj, tuple) and not hasattr(obj, "_fields"):
+        return tuple(_filled(v, one) for v in obj)
+    if dataclasses.is_dataclass(obj) and not isinstance(obj, type):
+        return dataclasses.replace(obj, **{f.name: _filled(getattr(obj, f.name), one) for f in dataclasses.fields(obj)})
+    return obj
+
+
+def _optional(line: dict[str, Any], places: dict) -> dict[str, Any] | None:
+    """An equation line of a variant: an optional line dropped where its block's numbers do not
+    add up at fixed places, else its markers taken out; an optional side kept where it adds up."""
+    from derive.writers.view import OPTIONAL_BEGIN, OPTIONAL_END
+
+    latex = line["latex"]
+    m = re.match(re.escape(OPTIONAL_BEGIN) + r"(\d+)%(.*)" + re.escape(OPTIONAL_END) + r"(.*)", latex, flags=re.S)
+    if m is not None:
+        if places.get(int(m.group(1))) is None:
+            return None
+        latex = m.group(2) + m.group(3)
+    return {**line, "latex": _optional_sides(latex)}
+
+
+def statement_view(compiled: Compiled, slot: Callable[[int], str]) -> dict[str, Any]:
+    """The statement part of the compiled page's data (title, statement, Given list, Find),
+    each slot's text from ``slot`` (a slot's number to its text): a template of the statement."""
+    if compiled.view is None:
+        raise ValueError("compiled without its page data")
+
+    def one(text: str) -> str:
+        return _SLOT.sub(lambda m: slot(int(m.group(1))), text)
+
+    return {k: _filled(compiled.view[k], one) for k in ("title", "statement", "givens", "find")}

@@ -4,11 +4,27 @@ from __future__ import annotations
 
 from derive.homework.variants.compile import Compiled, Variant, compile_problem
 from derive.homework.variants.draw import draw
-from derive.homework.variants.fill import answers, fill, given_values, setup_figure, statement_only
+from derive.homework.variants.fill import (
+    answers,
+    fill,
+    fill_view,
+    given_values,
+    setup_figure,
+    sign_convention,
+    statement_only,
+)
 from derive.problem import Problem
 
 #: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
-OWNED = ("variant-*.md", "variant-*.tex", "variant-*.pdf", "variant-*.json", "key.csv", "key.json")
+OWNED = (
+    "variant-*.md",
+    "variant-*.tex",
+    "variant-*.pdf",
+    "variant-*.json",
+    "variant-*.html",
+    "key.csv",
+    "key.json",
+)
 
 
 def _progress(done: int, total: int) -> None:
@@ -102,26 +118,46 @@ class _Key:
 
 
 def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
-    """One variant's files: statement and worked solution (md), LaTeX, PDF or JSON."""
+    """One variant's files: statement and worked solution (md, html), LaTeX, PDF or JSON."""
     from derive.fileio import dumps_json
 
     if fmt == "json":
         (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
+    elif fmt == "html":
+        sheet, page = variant_html(compiled, v, stem, digits)
+        (folder / f"{stem}-problem.html").write_text(sheet, encoding="utf-8")
+        (folder / f"{stem}.html").write_text(page, encoding="utf-8")
     elif fmt == "md":
         page = fill(compiled, v, "md", digits)
-        sheet = statement_only(page, setup_figure(compiled, v, "md"))
+        sheet = statement_only(page, setup_figure(compiled, v, "md"), sign_convention(compiled, "md"))
         (folder / f"{stem}-problem.md").write_text(sheet, encoding="utf-8")
         (folder / f"{stem}.md").write_text(page, encoding="utf-8")
     else:
         tex = fill(compiled, v, "tex", digits)
         if fmt == "tex":
-            sheet = statement_only(tex, setup_figure(compiled, v, "tex"))
+            sheet = statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex"))
             (folder / f"{stem}-problem.tex").write_text(sheet, encoding="utf-8")
             (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
         else:
             from derive.writers.pdf import build_pdf
 
             (folder / f"{stem}-problem.pdf").write_bytes(
-                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex")))
+                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex")))
             )
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
+
+
+def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
+    """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
+    the impact, the sign convention in words; no Source line, no answers) and the worked solution."""
+    import copy
+
+    from derive.writers.view import student_sheet
+    from derive.writers.view.html import html_pages as typeset
+
+    page = fill_view(compiled, v, digits)
+    student = student_sheet(copy.deepcopy(page))
+    student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
+    sheet = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
+    student_page, worked = typeset([("handout", {**sheet, "numbered": False}), ("solution", page)])
+    return student_page, worked

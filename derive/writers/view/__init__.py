@@ -19,7 +19,7 @@ from derive.writers.view.chain import chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import chain_json, to_json
 from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
-from derive.writers.view.problem import figure_entry, figure_note, view
+from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet, view
 
 __all__ = [
     "ANSWER_MARK",
@@ -29,6 +29,7 @@ __all__ = [
     "blocks_view",
     "boxed_lines",
     "chain_view",
+    "convention",
     "environment",
     "figure_entry",
     "figure_note",
@@ -38,6 +39,7 @@ __all__ = [
     "plain_answers",
     "render",
     "source_parts",
+    "student_sheet",
     "to_json",
     "view",
     "worked_out",

@@ -72,13 +72,17 @@ def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
     return {g.symbol: g.unit for g in p.givens if g.value is None and g.unit and g.unit != "deg"}
 
 
+#: The note beside a given the problem leaves to find (``e = "?"``); a student's sheet says ``to find``.
+UNKNOWN_NOTE = "unknown: derive finds it"
+
+
 def given_latex(g: Given, style: Style, opened: Mapping[sympy.Symbol, sympy.Expr] | None = None) -> tuple[str, str]:
     """A given as LaTeX, and a note in words (symbolic, converted, defined). ``opened``: the
     definitions of the givens whose numbers a variant leaves open (v_B1t = u_B sin(alpha)),
     for a given defined from one of them (v_B2n = v_B1t tan(alpha))."""
     name = latex_name(relabel(g.name, style.labels))
     if g.unknown:
-        return name + r" = \,?", "unknown: derive finds it"
+        return name + r" = \,?", UNKNOWN_NOTE
     if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
         token = style.slots.token(g.symbol, "given", style.digits, 1, None)
         tail = "" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")  # a variant fills in 50^\circ

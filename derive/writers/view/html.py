@@ -25,55 +25,80 @@ def _aligned(line: dict[str, Any]) -> str:
 
 def html_page(data: dict[str, Any]) -> str:
     """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
-    from derive.writers import katex as html_mod
-
-    items: list[tuple[str, bool]] = []
-
-    def slot(tex: str, display: bool) -> int:
-        items.append((tex, display))
-        return len(items) - 1
-
-    for g in data["givens"]:
-        g["slot"] = slot(g["latex"], False)
-    statement = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["statement"] or ()]
-    find = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["find"]]
-    for stage in data["stages"]:
-        for block in stage["blocks"]:
-            if block["text"]:
-                block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"]]
-            for line in block["lines"]:
-                line["slot"] = slot(_aligned(line), True)
-    rendered, script = _typeset(items)
-    for g in data["givens"]:
-        g["html"] = rendered[g.pop("slot")]
-    data["statement"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in statement]
-    for stage in data["stages"]:
-        stage["figure"] = stage.get("figure_svg", "")
-        for block in stage["blocks"]:
-            if block["text"]:
-                block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
-            for line in block["lines"]:
-                line["html"] = rendered[line.pop("slot")]
-    data["find"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in find]
-    return (
-        environment("md").get_template("solution.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
-    )
+    return html_pages([("solution", data)])[0]
 
 
 def chain_html_page(data: dict[str, Any]) -> str:
     """A chain's HTML page: every formula typeset by KaTeX, as :func:`html_page` does for one impact."""
+    return html_pages([("chain", data)])[0]
+
+
+def handout_html(data: dict[str, Any]) -> str:
+    """A handout (``title``, ``mode``, ``problems``, ``theory``; ``numbered`` False: no problem
+    numbers) as one self-contained HTML page in the page's style: a student's sheet (mode
+    "problems") or a key ("answers", "solutions")."""
+    return html_pages([("handout", data)])[0]
+
+
+def html_pages(pages: list[tuple[str, dict[str, Any]]]) -> list[str]:
+    """Several pages, each ("solution" | "chain" | "handout", its data), typeset together: one
+    KaTeX call for all their formulas (a variant's sheet and worked solution)."""
+    formulas = _Formulas()
+    for kind, data in pages:
+        _GATHER[kind](formulas, data)
+    script = formulas.run(_typeset)
+    out = []
+    for kind, data in pages:
+        if kind == "chain":
+            for st in data["stages"]:
+                if st["impact"]:
+                    st["carried"] = [c for _, c in st["carried"]]
+        out.append(_page(f"{kind}.html.j2", data, script))
+    return out
+
+
+def _gather_solution(formulas: _Formulas, data: dict[str, Any]) -> None:
+    formulas.problem(data)
+    for stage in data["stages"]:
+        stage["figure"] = stage.get("figure_svg", "")
+
+
+def _gather_chain(formulas: _Formulas, data: dict[str, Any]) -> None:
+    for g in data["givens"]:
+        formulas.given(g)
+    data["statement"] = formulas.parts(data["statement"])
+    for st in data["stages"]:
+        if st["impact"]:
+            for g in st["givens"]:
+                formulas.given(g)
+            for sub in st["stages"]:
+                sub["figure"] = sub.get("figure_svg", "")
+                formulas.blocks(sub["blocks"])
+            st["carried"] = formulas.parts([("math", c) for c in st["carried"]])
+        else:
+            formulas.blocks(st["blocks"])
+    for line in data["answers"]:
+        formulas.line(line)
+
+
+def _gather_handout(formulas: _Formulas, data: dict[str, Any]) -> None:
+    for p in data["problems"]:
+        formulas.problem(p, solution=data["mode"] == "solutions")
+        for stage in p["stages"]:
+            stage["figure"] = stage.get("figure_svg", "")
+    if data.get("theory"):
+        formulas.theory(data["theory"])
+
+
+def _page(template: str, data: dict[str, Any], script: str) -> str:
+    """A whole page in the page's style (templates/page-style.html.j2), its text HTML-escaped."""
     from derive.writers import katex as html_mod
 
-    items: list[tuple[str, bool]] = []
-
-    def slot(tex: str, display: bool) -> int:
-        items.append((tex, display))
-        return len(items) - 1
-
-    statement = _slot_chain(data, slot)
-    rendered, script = _typeset(items)
-    _fill_chain(data, statement, rendered)
-    return environment("md").get_template("chain.html.j2").render(**data, katex_css=html_mod.katex_css(), script=script)
+    return (
+        environment("md")
+        .get_template(template)
+        .render(**data, katex_css=html_mod.katex_css(), script=script, text=escape.html_text)
+    )
 
 
 def _typeset(items: list[tuple[str, bool]]) -> tuple[list[str], str]:
@@ -90,55 +115,94 @@ def _typeset(items: list[tuple[str, bool]]) -> tuple[list[str], str]:
     return rendered, ""
 
 
-def _slot_blocks(blocks: list[dict[str, Any]], slot: Callable[[str, bool], int]) -> None:
-    """Give each formula of the blocks its place in the list to typeset."""
-    for block in blocks:
-        block["text"] = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in block["text"] or ()]
-        for line in block["lines"]:
-            line["slot"] = slot(_aligned(line), True)
+def mathjax(items: list[tuple[str, bool]]) -> tuple[list[str], str]:
+    """Each formula as TeX for MathJax (Moodle's MathJax filter, PrairieLearn): ``\\( \\)``
+    inline, ``\\[ \\]`` on its own; HTML-escaped, typeset where the page is shown."""
+    out = [rf"\[ {escape.html_body(tex)} \]" if display else rf"\({escape.html_body(tex)}\)" for tex, display in items]
+    return out, ""
 
 
-def _fill_blocks(blocks: list[dict[str, Any]], rendered: list[str]) -> None:
-    """Put each formula of the blocks, typeset, in its place."""
-    for block in blocks:
-        block["text"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in block["text"]]
-        for line in block["lines"]:
-            line["html"] = rendered[line.pop("slot")]
+class _Formulas:
+    """Every formula of a page, gathered, typeset in one go (one KaTeX call, or MathJax's
+    delimiters) and put back in its place."""
+
+    def __init__(self, inline_tags: bool = False) -> None:
+        self.items: list[tuple[str, bool]] = []
+        self.puts: list[Callable[[str], None]] = []
+        self.inline_tags = inline_tags
+
+    def add(self, tex: str, display: bool, put: Callable[[str], None]) -> None:
+        self.items.append((tex, display))
+        self.puts.append(put)
+
+    def parts(self, parts: list[tuple[str, str]] | None) -> list[tuple[str, str]]:
+        """A sentence (text and math parts); its math typeset when :meth:`run` runs."""
+        out = list(parts or ())
+        for i, (kind, s_) in enumerate(out):
+            if kind == "math":
+                self.add(s_, False, lambda h, i=i: out.__setitem__(i, ("math", h)))
+        return out
+
+    def given(self, g: dict[str, Any]) -> None:
+        """A given: ``g["html"]``."""
+        self.add(g["latex"], False, lambda h: g.__setitem__("html", h))
+
+    def line(self, line: dict[str, Any]) -> None:
+        """An equation line: ``line["html"]``; with ``inline_tags`` its number in the display."""
+        tex = _aligned(line)
+        if self.inline_tags and line.get("tag"):
+            tex += rf" \tag{{{line['tag']}}}"
+        self.add(tex, True, lambda h: line.__setitem__("html", h))
+
+    def blocks(self, blocks: list[dict[str, Any]]) -> None:
+        """Blocks of sentences and equation lines."""
+        for block in blocks:
+            block["text"] = self.parts(block["text"])
+            for line in block["lines"]:
+                self.line(line)
+
+    def problem(self, data: dict[str, Any], solution: bool = True) -> None:
+        """A problem's page: its givens, statement and Find, and (``solution``) its stages and answers."""
+        for g in data["givens"]:
+            self.given(g)
+        data["statement"] = self.parts(data["statement"])
+        data["find"] = self.parts(data["find"])
+        data["convention"] = self.parts(data.get("convention"))
+        data["answer_names"] = self.parts(data.get("answer_names"))
+        for line in data.get("answers", []):
+            self.line(line)
+        if solution:
+            for stage in data["stages"]:
+                self.blocks(stage["blocks"])
+
+    def theory(self, page: dict[str, Any]) -> None:
+        """A handout's theory page: its tables, blocks and bullets."""
+        for sec in page["sections"]:
+            sec["table"] = [[self.parts(cell) for cell in row] for row in sec["table"]]
+            self.blocks(sec["columns"])
+            self.blocks(sec["blocks"])
+            sec["bullets"] = [self.parts(item) for item in sec["bullets"]]
+
+    def run(self, math: Callable[[list[tuple[str, bool]]], tuple[list[str], str]]) -> str:
+        """Typeset them all and put each in its place; the script the page then needs."""
+        rendered, script = math(self.items)
+        for put, h in zip(self.puts, rendered, strict=True):
+            put(h)
+        return script
 
 
-def _slot_chain(data: dict[str, Any], slot: Callable[[str, bool], int]) -> list[tuple[str, Any]]:
-    """Give each formula of a chain's page its place in the list to typeset; the statement's parts."""
-    for g in data["givens"]:
-        g["slot"] = slot(g["latex"], False)
-    statement = [(k, slot(s_, False) if k == "math" else s_) for k, s_ in data["statement"] or ()]
-    for st in data["stages"]:
-        if st["impact"]:
-            for g in st["givens"]:
-                g["slot"] = slot(g["latex"], False)
-            for sub in st["stages"]:
-                _slot_blocks(sub["blocks"], slot)
-            st["carried"] = [slot(c, False) for c in st["carried"]]
-        else:
-            _slot_blocks(st["blocks"], slot)
-    for line in data["answers"]:
-        line["slot"] = slot(_aligned(line), True)
-    return statement
+def lms_html(data: dict[str, Any], part: str, text: Callable[[str], str]) -> str:
+    """A problem's statement (``part`` "statement": Given, Find) or worked solution ("solution")
+    as the HTML fragment an LMS shows (no ``<html>``): the page's pieces, the math as TeX in
+    MathJax's delimiters with each number in its display, text escaped by ``text``."""
+    formulas = _Formulas(inline_tags=True)
+    formulas.problem(data, solution=part == "solution")
+    formulas.run(mathjax)
+    return environment("md").get_template("lms.html.j2").render(**data, part=part, text=text)
 
 
-def _fill_chain(data: dict[str, Any], statement: list[tuple[str, Any]], rendered: list[str]) -> None:
-    """Put each formula of a chain's page, typeset, in its place."""
-    for g in data["givens"]:
-        g["html"] = rendered[g.pop("slot")]
-    data["statement"] = [("math", rendered[s_]) if k == "math" else (k, s_) for k, s_ in statement]
-    for st in data["stages"]:
-        if st["impact"]:
-            for g in st["givens"]:
-                g["html"] = rendered[g.pop("slot")]
-            for sub in st["stages"]:
-                sub["figure"] = sub.get("figure_svg", "")
-                _fill_blocks(sub["blocks"], rendered)
-            st["carried"] = [rendered[c] for c in st["carried"]]
-        else:
-            _fill_blocks(st["blocks"], rendered)
-    for line in data["answers"]:
-        line["html"] = rendered[line.pop("slot")]
+_GATHER: dict[str, Callable[[_Formulas, dict[str, Any]], None]] = {
+    "solution": _gather_solution,
+    "chain": _gather_chain,
+    "handout": _gather_handout,
+}

@@ -193,3 +193,30 @@ def _plot(p: Any) -> tuple[str, str]:
 
     chart = plots.chart(p)
     return plots.to_svg(chart), plots.to_tikz(chart)
+
+
+def convention(stages: list[dict[str, Any]]) -> list[tuple[str, str]]:
+    """The sign convention in words, as stage 1 of the solution states it (where n and t
+    point; a direct impact's velocities signed along +n): a sentence for a student's sheet."""
+    for stage in stages:
+        for i, block in enumerate(stage["blocks"]):
+            text = block["text"] or []
+            if text[:1] == [("text", "Take ")]:
+                more = [
+                    b["text"] for b in stage["blocks"][i + 1 :] if b["text"] and "signed along +n" in str(b["text"])
+                ]
+                return [*text, *(part for m in more for part in [("text", " "), *m])]
+    return []
+
+
+def student_sheet(data: dict[str, Any]) -> dict[str, Any]:
+    """A problem's page data made a student's sheet (in place): no Source line (citations quote
+    the published answers), an unknown given marked "to find", and the sign convention in words."""
+    from derive.writers.view.givens import UNKNOWN_NOTE
+
+    data["source"], data["source_parts"] = None, []
+    for g in data["givens"]:
+        if g.get("note") == UNKNOWN_NOTE:
+            g["note"] = "to find"
+    data["convention"] = convention(data["stages"])
+    return data
