@@ -126,7 +126,9 @@ def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md"
     results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
     result_fns = {name: _lambdify(symbols, prep(expr)) for name, expr in results.items()}
     check_fn = _checks(symbolic, symbols, results, prep)
-    return Compiled(problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn, data)
+    return Compiled(
+        problem, solution, names, givens, templates, book, slot_fn, claim_fns, result_fns, check_fn, view=data
+    )
 
 
 def _split(page: str) -> list[str | int]:
