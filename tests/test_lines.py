@@ -167,7 +167,7 @@ def test_a_chain_carries_no_number_before_the_unknown_it_depends_on_is_found() -
     assert r"h_{2} = 62.5 e_{\mathrm{floor}}^{2} = 40.0\ \mathrm{m}" in after  # the algebra of the solve stage
     assert r"e_{\mathrm{floor}} = 0.800" in after
     assert r"u = -35 e_{\mathrm{floor}} = -28.0\ \mathrm{m/s}" in after
-    assert r"J = 7 e_{\mathrm{floor}} + 7 = 12.6\ \mathrm{N\cdot s}" in after
+    assert r"J = 7 + 7 e_{\mathrm{floor}} = 12.6\ \mathrm{N\cdot s}" in after  # 7 (1 + 0.8)
     assert md.count("ANSWER") == 1 and "## Answer" in md.split("ANSWER")[0]
 
 
