@@ -56,6 +56,12 @@ def _numerical(xml: str) -> list[ET.Element]:
     return [q for q in root.findall("question") if q.get("type") == "numerical"]
 
 
+def _statement(q: ET.Element) -> str:
+    """A Moodle question's statement: its text before the set-up figure and what to enter
+    (PrairieLearn's panel has the same statement, without the figure)."""
+    return _text(q, "questiontext/text").split("\n<p><img")[0].split("\n<p>Enter")[0]
+
+
 def _ulp(shown: str) -> Decimal:
     return Decimal(1).scaleb(Decimal(shown).as_tuple().exponent)
 
@@ -267,10 +273,16 @@ def test_prairielearn_question_and_server(
         for name, given in variants.given_values(compiled, v).items():
             assert float(data["params"][name]) == pytest.approx(given["value"])
         # the statement PrairieLearn shows is the Moodle question's, with the same numbers
-        panel = _mustache(html, data["params"]).split("<pl-question-panel>\n")[1].split("\n<p>Enter")[0]
-        moodle_text = _text(questions[index], "questiontext/text").split("\n<p>Enter")[0]
+        panel = (
+            _mustache(html, data["params"]).split("<pl-question-panel>\n")[1].split('\n<div class="derive-figure">')[0]
+        )
+        moodle_text = _statement(questions[index])
         assert panel == moodle_text
         assert "ANSWER" in data["params"]["derive_solution"]
+        # and its figure before the impact, the variant's own (issue #15: there was none)
+        assert data["params"]["derive_figure"] == variants.setup_figure(compiled, v, "md")
+        shown = _mustache(html, data["params"])
+        assert '<div class="derive-figure"><svg' in shown and 'aria-label="Before the impact"' in shown
     bare: dict = {"variant_seed": 1}
     server["generate"](bare)  # a plain dict works too
     assert bare["correct_answers"][RESULT] == float(variants.answers(compiled, chosen[1])[RESULT]["shown"])
@@ -285,7 +297,7 @@ def test_prairielearn_statement_as_one_parameter_when_no_template(
     assert "{{{params.derive_statement}}}" in (tmp_path / "question.html").read_text()
     data: dict = {"variant_seed": 1}
     _server(tmp_path)["generate"](data)
-    moodle_text = _text(_numerical(moodle)[1], "questiontext/text").split("\n<p>Enter")[0]
+    moodle_text = _statement(_numerical(moodle)[1])
     assert data["params"]["derive_statement"] == moodle_text
 
 
@@ -352,8 +364,31 @@ def test_prairielearn_statement_prints_numbers_as_typed(tmp_path: Path) -> None:
     for i, v in enumerate(chosen):
         data: dict = {"params": {}, "correct_answers": {}, "variant_seed": i}
         server["generate"](data)
-        panel = _mustache(page, data["params"]).split("<pl-question-panel>\n")[1].split("\n<p>Enter")[0]
-        assert panel == _text(moodle[i], "questiontext/text").split("\n<p>Enter")[0]
+        panel = (
+            _mustache(page, data["params"]).split("<pl-question-panel>\n")[1].split('\n<div class="derive-figure">')[0]
+        )
+        assert panel == _statement(moodle[i])
         speed = f"{abs(float(v.values['v_B1'])):.2f}"
         assert f"({int(v.values['m_A'] * 1000)} g) at {float(v.values['v_A1']):.2f} m/s" in panel, panel
         assert f"the other way at {speed} m/s." in panel, panel
+
+
+def test_moodle_question_text_has_the_variants_set_up_figure(
+    compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str
+) -> None:
+    """Issue #15: the question text showed no figure. Each question carries its variant's
+    figure before the impact as a file of its text, as Moodle's XML importer reads one
+    (qformat_xml::import_files_as_draft: questiontext/file, @name, @path, base64), and the
+    text shows it through @@PLUGINFILE@@."""
+    import base64
+
+    questions = _numerical(moodle)
+    assert len(questions) == len(chosen)
+    for q, v in zip(questions, chosen, strict=True):
+        text = q.find("questiontext")
+        (file,) = text.findall("file")
+        assert file.attrib == {"name": "setup.svg", "path": "/", "encoding": "base64"}
+        svg = base64.b64decode(file.text).decode("utf-8")
+        assert svg == variants.setup_figure(compiled, v, "md")
+        assert svg.startswith("<svg") and 'aria-label="Before the impact"' in svg
+        assert '<img src="@@PLUGINFILE@@/setup.svg"' in text.find("text").text

@@ -3,6 +3,7 @@ as general feedback and the common mistakes' values as wrong answers with their 
 
 from __future__ import annotations
 
+import base64
 import xml.etree.ElementTree as ET
 from decimal import Decimal
 from pathlib import Path
@@ -10,7 +11,7 @@ from pathlib import Path
 from derive.homework.lms.grading import Answer, asked_answer, resolve_result
 from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel, mistake_ranges
-from derive.homework.variants import Compiled, Variant, answers, fill_view
+from derive.homework.variants import Compiled, Variant, answers, fill_view, setup_figure
 from derive.symbols import latex_name
 
 #: Units a student may write instead of the one asked, with how many of them make one of it
@@ -34,6 +35,22 @@ def _text(parent: ET.Element, tag: str, text: str, **attrs: str) -> ET.Element:
     el = ET.SubElement(parent, tag, attrs)
     ET.SubElement(el, "text").text = clean_xml(text)
     return el
+
+
+#: The set-up figure's file inside a question (Moodle's importer stores each ``<file>`` of a
+#: text, base64, and the text reaches it as ``@@PLUGINFILE@@/<name>``).
+FIGURE_FILE = "setup.svg"
+
+
+def _question_text(q: ET.Element, compiled: Compiled, v: Variant, statement: str, ask: str) -> None:
+    """The question text: the variant's statement, its figure before the impact (an SVG file
+    of the question, drawn to the variant's speeds) and what to enter."""
+    figure = setup_figure(compiled, v, "md")
+    shown = f'<p><img src="@@PLUGINFILE@@/{FIGURE_FILE}" alt="The set-up before the impact" /></p>\n' if figure else ""
+    el = _text(q, "questiontext", statement + "\n" + shown + ask, format="html")
+    if figure:
+        f = ET.SubElement(el, "file", {"name": FIGURE_FILE, "path": "/", "encoding": "base64"})
+        f.text = base64.b64encode(figure.encode("utf-8")).decode("ascii")
 
 
 def _ask(compiled: Compiled, answer: Answer) -> str:
@@ -111,7 +128,7 @@ def moodle_xml(
         right = asked_answer(result, answers(compiled, v, digits)[result], d)
         q = ET.SubElement(quiz, "question", {"type": "numerical"})
         _text(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
-        _text(q, "questiontext", statement_html(page) + "\n" + _ask(compiled, right), format="html")
+        _question_text(q, compiled, v, statement_html(page), _ask(compiled, right))
         _text(q, "generalfeedback", solution_html(page), format="html")
         ET.SubElement(q, "defaultgrade").text = DEFAULT_GRADE
         ET.SubElement(q, "penalty").text = PENALTY

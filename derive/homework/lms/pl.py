@@ -16,7 +16,7 @@ from derive.homework.lms.grading import EDGE, asked_answer, resolve_result
 from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html
 from derive.homework.lms.mistake_model import MistakeModel, hint_text, mistake_ranges
 from derive.homework.lms.moodle import problem_name
-from derive.homework.variants import Compiled, Variant, answers, fill_view, statement_view
+from derive.homework.variants import Compiled, Variant, answers, fill_view, setup_figure, statement_view
 from derive.symbols import latex_name
 
 TOPIC = "Central impact"
@@ -186,6 +186,7 @@ def _row(
             "derive_figures": right.figures,
             "derive_atol": float(right.tolerance + EDGE * max(abs(right.value), right.tolerance)),
             "derive_solution": solution_html(page),
+            "derive_figure": setup_figure(compiled, v, "md"),  # the set-up before the impact, SVG
         }
     )
     mistake_rows = [[float(r.low), float(r.high), hint_text(r.wrong)] for r in ranges]
@@ -203,6 +204,7 @@ def _question_html(compiled: Compiled, variants: list[Variant], result: str, dig
     return (
         "<pl-question-panel>\n"
         f"{statement}\n"
+        '<div class="derive-figure">{{{params.derive_figure}}}</div>\n'
         f"<p>Enter \\({symbol}\\), the {esc(r.description)}{where}, "
         "to {{params.derive_figures}} significant figures.</p>\n"
         "</pl-question-panel>\n\n"
