@@ -172,9 +172,9 @@ def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.E
 
 def _root_reason(page: Page, u: sympy.Symbol) -> str:
     """Why the root shown is the one kept, where the equations have several."""
-    rule = root_rule(page.imp, u)
     if page.outcome.others:
         return _cases_note(page)
+    rule = root_rule(page.imp, u)
     if rule == "sign":
         return f"the root with {u.name} ≥ 0 is the physical one."
     return ROOT_REASONS.get(rule, "") if rule else ""

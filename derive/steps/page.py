@@ -131,11 +131,10 @@ class Page:
     def num(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` with the pre-impact components and every numeric given put in; where a
         letter stays, those the file wrote as decimals go in as decimals (0.9 u, not 9u/10)."""
-        exact = evaluate(expr.xreplace(self.imp.pre), self.p)
-        if (
-            exact.free_symbols | expr.xreplace(self.imp.pre).free_symbols
-        ) & self.letters:  # e, or e_floor it stands for
-            return evaluate(expr.xreplace(self.imp.pre), self.p, decimals=True)
+        resolved = expr.xreplace(self.imp.pre)
+        exact = evaluate(resolved, self.p)
+        if (exact.free_symbols | resolved.free_symbols) & self.letters:  # e, or e_floor it stands for
+            return evaluate(resolved, self.p, decimals=True)
         return exact
 
     def value_of(self, s: sympy.Symbol) -> sympy.Expr:
