@@ -575,12 +575,14 @@ def test_hostile_pdf_compiles_and_writes_nothing_outside(
     hostile: derive.Solution, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     from derive.writers.pdf import build_pdf
+    from derive.writers.view.jinja import environment
 
     work, tmp = tmp_path / "cwd", tmp_path / "tmp"
     work.mkdir()
     tmp.mkdir()
     monkeypatch.chdir(work)
     monkeypatch.setattr(tempfile, "tempdir", str(tmp))
+    environment.cache_clear()  # a fresh environment: its template cache is made here, too
     pdf = build_pdf(derive.render(hostile, "tex"))
     assert pdf.startswith(b"%PDF")
     assert list(work.iterdir()) == []

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import pytest
 
@@ -138,3 +139,31 @@ def test_unicode_subscripts_reach_latex_as_subscripts() -> None:
 
     assert tex("θ₂") == r"$\theta$\textsubscript{2}"
     assert "?" not in tex("x₀ y₉ m² t⁴")
+
+
+def test_compiled_templates_are_cached_in_the_users_cache_folder_not_the_temporary_one(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A page writes nothing into the temporary folder or the working folder (CI, #19's cache)."""
+    import tempfile
+
+    from derive.writers.view.jinja import environment
+
+    work, tmp, cache = tmp_path / "cwd", tmp_path / "tmp", tmp_path / "cache"
+    work.mkdir()
+    tmp.mkdir()
+    monkeypatch.chdir(work)
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp))
+    monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+    monkeypatch.delenv("DERIVE_NO_TEMPLATE_CACHE", raising=False)
+    environment.cache_clear()
+    try:
+        derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
+        assert list(work.iterdir()) == [] and list(tmp.iterdir()) == []
+        assert list((cache / "derive" / "templates").glob("__derive_*.cache"))
+        monkeypatch.setenv("XDG_CACHE_HOME", "relative")  # XDG: a relative path is ignored
+        environment.cache_clear()
+        derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
+        assert list(work.iterdir()) == []
+    finally:
+        environment.cache_clear()

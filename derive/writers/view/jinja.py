@@ -1,8 +1,9 @@
 """The Jinja environments the page templates render in (Markdown and HTML; LaTeX).
 
 jinja2 is imported on first use (``derive solve -f json`` and ``derive check`` never need
-it). Compiled templates are kept in Jinja's bytecode cache (a private folder under the
-system's temporary folder), so that a process does not compile them again: Jinja checks
+it). Compiled templates are kept in Jinja's bytecode cache (``$XDG_CACHE_HOME/derive``, by
+default ``~/.cache/derive``: never the temporary folder or the folder a command writes to),
+so that a process does not compile them again: Jinja checks
 each template's source against the cache (a changed template is compiled afresh), and the
 cache files are named by the environment's options and Jinja's version, so an
 environment never reads another's code. ``DERIVE_NO_TEMPLATE_CACHE=1`` turns it off.
@@ -13,6 +14,7 @@ from __future__ import annotations
 import hashlib
 import os
 from functools import cache
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from derive import escape
@@ -65,9 +67,19 @@ def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache 
         return None
     key = hashlib.sha256(repr((kind, sorted(options.items()), jinja2.__version__)).encode()).hexdigest()[:16]
     try:
-        return jinja2.FileSystemBytecodeCache(pattern=f"__derive_{key}_%s.cache")
-    except (OSError, RuntimeError):  # no private temporary folder: compile each time
+        folder = _cache_folder()
+        folder.mkdir(mode=0o700, parents=True, exist_ok=True)
+        return jinja2.FileSystemBytecodeCache(str(folder), pattern=f"__derive_{key}_%s.cache")
+    except (OSError, RuntimeError):  # no home, or a read-only one: compile each time
         return None
+
+
+def _cache_folder() -> Path:
+    """The user's cache folder for derive (XDG), not shared with other users."""
+    base = Path(os.environ.get("XDG_CACHE_HOME", ""))
+    if not base.is_absolute():  # unset, or relative (which XDG says to ignore)
+        base = Path.home() / ".cache"
+    return base / "derive" / "templates"
 
 
 def _markdown_text(context: Any, text: str) -> str:
