@@ -165,5 +165,15 @@ def test_compiled_templates_are_cached_in_the_users_cache_folder_not_the_tempora
         environment.cache_clear()
         derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
         assert list(work.iterdir()) == []
+        for old in (cache / "derive" / "templates").iterdir():  # a cache it cannot write
+            old.unlink()  # (a full disk; root writes a read-only folder) never stops a page
+
+        def full_disk(*args: object, **kwargs: object) -> None:
+            raise OSError(28, "No space left on device")
+
+        monkeypatch.setattr(tempfile, "NamedTemporaryFile", full_disk)
+        monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
+        environment.cache_clear()
+        assert "\\tag{4}" in derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
     finally:
         environment.cache_clear()

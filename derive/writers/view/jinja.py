@@ -11,6 +11,7 @@ environment never reads another's code. ``DERIVE_NO_TEMPLATE_CACHE=1`` turns it 
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import os
 from functools import cache
@@ -69,9 +70,21 @@ def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache 
     try:
         folder = _cache_folder()
         folder.mkdir(mode=0o700, parents=True, exist_ok=True)
-        return jinja2.FileSystemBytecodeCache(str(folder), pattern=f"__derive_{key}_%s.cache")
     except (OSError, RuntimeError):  # no home, or a read-only one: compile each time
         return None
+
+    class Cache(jinja2.FileSystemBytecodeCache):
+        """A cache that never stops a page: a file it cannot read or write is compiled afresh."""
+
+        def load_bytecode(self, bucket: jinja2.bccache.Bucket) -> None:
+            with contextlib.suppress(OSError):
+                super().load_bytecode(bucket)
+
+        def dump_bytecode(self, bucket: jinja2.bccache.Bucket) -> None:
+            with contextlib.suppress(OSError):  # a read-only or full disk
+                super().dump_bytecode(bucket)
+
+    return Cache(str(folder), pattern=f"__derive_{key}_%s.cache")
 
 
 def _cache_folder() -> Path:
