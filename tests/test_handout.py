@@ -246,10 +246,11 @@ def test_broken_problem_is_left_out_and_reported_at_the_end(cli, tmp_path: Path)
     for title in titles(three()):
         assert escape.markdown(title) in doc
     assert "Broken" not in doc
-    lines = r.err.splitlines()
+    *lines, summary = r.err.splitlines()
     assert lines and all(ln.startswith("Error: ") for ln in lines)
     assert str(broken) in lines[0] and "m_B" in lines[0]
     assert "1 of 4" in lines[-1]
+    assert summary == f"wrote {out} (md, answers): 3 problems"  # issue 15: one line says what was written
     assert r.out == ""
 
 
@@ -303,7 +304,7 @@ def test_cli_title_and_no_theory(cli, tmp_path: Path) -> None:
     out = tmp_path / "h.md"
     r = cli("handout", "notes-4c12-cue-ball", "--title", "Week 9 & more", "--no-theory", "-o", str(out))
     assert r.code == 0, r.err
-    assert r.err == ""
+    assert r.err == f"wrote {out} (md, solutions): 1 problem\n"
     doc = out.read_text(encoding="utf-8")
     assert doc.startswith("# Week 9 &amp; more\n")
     assert "Central impact: the equations" not in doc

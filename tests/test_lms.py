@@ -311,6 +311,7 @@ def test_cli_writes_moodle_and_prairielearn(cli, tmp_path: Path) -> None:
         "--moodle", str(xml), "--prairielearn", str(pl), "--result", "v_B2n",
     )  # fmt: skip
     assert r.code == 0, r.err
+    assert r.err == f"wrote 3 variants (md) to {out}, key.csv, key.json, {xml}, {pl} (PrairieLearn question)\n"
     key = json.loads((out / "key.json").read_text())
     questions = _numerical(xml.read_text())
     assert len(questions) == len(key["variants"]) == 3

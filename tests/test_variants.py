@@ -142,6 +142,7 @@ def test_cli_writes_variants_and_key(cli, tmp_path: Path) -> None:
     out = tmp_path / "hw"
     r = cli("variants", "notes-4c11-two-spheres", "--count", "6", "--seed", "4", "-o", str(out))
     assert r.code == 0, r.err
+    assert r.err == f"wrote 6 variants (md) to {out}, key.csv, key.json\n"  # issue 15: one summary line
     names = sorted(p.name for p in out.iterdir())
     assert "key.csv" in names and "key.json" in names
     assert sum(n.endswith("-problem.md") for n in names) == 6

@@ -40,7 +40,21 @@ def run_variants(args: argparse.Namespace) -> int:
         exports.write(inputs=(Path(problem.path),))
     for line in failures:
         print(f"Error: {line}", file=sys.stderr)
+    print(_variants_summary(args, len(failures)), file=sys.stderr)
     return 1 if failures else 0
+
+
+def _variants_summary(args: argparse.Namespace, failed: int) -> str:
+    """What ``derive variants`` wrote, on one line: the folder, the key and the exports."""
+    written = args.count - failed
+    count = f"{written} of {args.count}" if failed else f"{written}"
+    parts = [f"wrote {count} variant{'s' if args.count != 1 else ''} ({args.format}) to {args.output}"]
+    parts.append("key.csv, key.json")
+    if args.moodle:
+        parts.append(str(args.moodle))
+    if args.prairielearn:
+        parts.append(f"{args.prairielearn} (PrairieLearn question)")
+    return ", ".join(parts)
 
 
 def run_handout(args: argparse.Namespace) -> int:
@@ -73,4 +87,6 @@ def run_handout(args: argparse.Namespace) -> int:
         print(f"Error: {one_line(failure.line())}", file=sys.stderr)
     if failures:
         print(f"Error: {len(failures)} of {len(args.problems)} problems left out of {args.output}", file=sys.stderr)
+    done = len(args.problems) - len(failures)
+    print(f"wrote {args.output} ({fmt}, {args.mode}): {done} problem{'s' if done != 1 else ''}", file=sys.stderr)
     return 1 if failures else 0
