@@ -162,3 +162,27 @@ def test_a_missing_given_names_the_key_that_looks_like_it(cli, tmp_path: Path) -
     r = cli("solve", str(path))
     assert r.code == 2 and r.err.count("\n") == 1
     assert "v_B1: is missing" in r.err and "(the file gives v_b1: did you mean v_B1?)" in r.err
+
+
+@pytest.mark.parametrize(
+    ("given", "missing", "typed"),
+    [
+        ('v_A1 = "4 m/s"\nv_b1 = "2 m/s"\n', "v_B1", "v_b1"),  # a speed with [B] angle, from, toward
+        ('v_A1 = "4 m/s"\nv_B1n = "-1 m/s"\nv_B1T = "1 m/s"\n', "v_B1t", "v_B1T"),  # n-t components
+        ('v_A1 = "4 m/s"\nv_B1x = "-1 m/s"\nv_B1Y = "1 m/s"\n', "v_B1y", "v_B1Y"),  # x-y components
+    ],
+    ids=["oblique-speed", "n-t", "x-y"],
+)
+def test_a_missing_oblique_given_names_the_key_that_looks_like_it(
+    cli, tmp_path: Path, given: str, missing: str, typed: str
+) -> None:
+    """Issue 15: the oblique forms of the v_b1 typo name the unused key too."""
+    path = tmp_path / "typo.toml"
+    head = 'title = "t"\nkind = "oblique"\n[given]\nm_A = "2 kg"\nm_B = "3 kg"\ne = 0.5\n'
+    angles = '[A]\nangle = "30 deg"\nfrom = "+n"\ntoward = "+t"\n[B]\nangle = "10 deg"\nfrom = "-n"\ntoward = "+t"\n'
+    tables = angles if typed == "v_b1" else angles.split("[B]")[0]
+    tables += '[geometry]\nn_angle = "20 deg"\n' if typed == "v_B1Y" else ""
+    path.write_text(head + given + tables, encoding="utf-8")
+    r = cli("solve", str(path))
+    assert r.code == 2 and r.err.count("\n") == 1, r.err
+    assert f"{missing}: is missing" in r.err and f"(the file gives {typed}: did you mean {missing}?)" in r.err

@@ -124,7 +124,9 @@ def motion(
         missing = [k for k in (n_name, t_name) if k not in by_name]
         if missing:
             raise ctx.error(
-                f"is missing: with components give both {n_name} and {t_name}", section="given", key=missing[0]
+                f"is missing: with components give both {n_name} and {t_name}{misspelt(missing[0], by_name)}",
+                section="given",
+                key=missing[0],
             )
         return Motion(b, by_name[n_name].symbol, by_name[t_name].symbol), None
     return _speed_and_direction(b, tbl, by_name, ctx, phi)
@@ -136,7 +138,11 @@ def _xy_components(b: str, by_name: Mapping[str, Given], ctx: Source, phi: sympy
         raise ctx.error(f"give the velocity of {b} one way only", section="given", key=x_name)
     missing = [k for k in (x_name, y_name) if k not in by_name]
     if missing:
-        raise ctx.error(f"is missing: with components give both {x_name} and {y_name}", section="given", key=missing[0])
+        raise ctx.error(
+            f"is missing: with components give both {x_name} and {y_name}{misspelt(missing[0], by_name)}",
+            section="given",
+            key=missing[0],
+        )
     vx, vy = by_name[x_name].symbol, by_name[y_name].symbol
     n = vx * sympy.cos(phi) + vy * sympy.sin(phi)
     t = -vx * sympy.sin(phi) + vy * sympy.cos(phi)
@@ -177,7 +183,7 @@ def _speed_and_direction(
     if speed_name not in by_name:
         raise ctx.error(
             f"is missing: give the speed {speed_name} with [{b}] angle, from and toward, "
-            f"or the components v_{b}1n and v_{b}1t",
+            f"or the components v_{b}1n and v_{b}1t{misspelt(speed_name, by_name)}",
             section="given",
             key=speed_name,
         )
