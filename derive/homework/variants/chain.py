@@ -64,7 +64,7 @@ class ChainCompiled:
         try:
             sol = self.solved(values)
         except DeriveError as exc:
-            self.refusal = " ".join(str(exc).split())
+            self.refusal = " ".join(str(exc).split()).removeprefix(f"{self.problem.path}: ")
             return False
         for c in self.conditions:
             if not holds(c, sol):
@@ -159,7 +159,8 @@ def written_value(g: Given, value: sympy.Expr, raw: object, where: str | None = 
     text = _decimal(sympy.nsimplify(number))
     if text is None:
         raise InputError(
-            f"{g.name} = {sympy.N(number, 8)} {unit}: a value of [vary] that is no decimal number in {unit}",
+            f"{sympy.N(number, 8)} {unit} is no decimal number in {unit}, the unit [given] types "
+            f"{g.name} in: a variant's [given] could not hold it (give [vary] in {unit})",
             where=where,
             field=f"[vary] {g.name}",
         )
