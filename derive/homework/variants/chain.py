@@ -14,7 +14,7 @@ from __future__ import annotations
 import functools
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from decimal import Decimal, localcontext
 from typing import Any, ClassVar
 
@@ -43,9 +43,8 @@ class ChainCompiled:
     names: tuple[str, ...]
     givens: dict[str, Given]
     conditions: tuple[Condition, ...]
-    #: Why the last draw refused was refused (for the message when too few are physical).
+    #: Why the last refused draw was refused (for the message when too few are physical).
     refusal: str = ""
-    templates: dict[str, Any] = field(default_factory=dict)
     is_chain: ClassVar[bool] = True
 
     def written(self, values: dict[str, sympy.Expr]) -> tuple[tuple[str, str | int | float], ...]:
