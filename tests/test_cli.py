@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 
 DATA = Path(__file__).parent / "data"
+PROBLEMS = Path(__file__).parent.parent / "problems"
 
 
 def test_solve_bundled_to_stdout(cli) -> None:
@@ -146,10 +147,16 @@ def test_the_output_format_follows_the_extension(cli, tmp_path: Path, name: str,
     assert out.read_bytes().lstrip().startswith(starts)
 
 
-def test_variants_of_a_chain_is_a_clear_error(cli, tmp_path: Path) -> None:
-    """Issue 15: an internal error (AttributeError: 'ChainProblem' object has no attribute 'vary')."""
-    r = cli("variants", "chain-aqa-m3-2007-collide-again", "--count", "2", "-o", str(tmp_path / "v"))
-    assert r.code == 2 and "is a chain" in r.err and "internal error" not in r.err
+def test_variants_of_a_chain_without_a_vary_table_is_a_clear_error(cli, tmp_path: Path) -> None:
+    """Issue 15: an internal error (AttributeError: 'ChainProblem' object has no attribute 'vary');
+    a chain's [vary] table now draws variants, and a chain without one says so."""
+    text = (PROBLEMS / "chain-aqa-m3-2007-collide-again.toml").read_text(encoding="utf-8")
+    path = tmp_path / "no-vary.toml"
+    path.write_text(text[: text.index("\n[vary]")] + "\n", encoding="utf-8")
+    r = cli("variants", str(path), "--count", "2", "-o", str(tmp_path / "v"))
+    assert r.code == 2 and "has no [vary] table" in r.err and "internal error" not in r.err
+    r = cli("variants", "chain-aqa-m3-2007-collide-again", "--count", "2", "-o", str(tmp_path / "w"))
+    assert r.code == 0, r.err
 
 
 def test_a_missing_given_names_the_key_that_looks_like_it(cli, tmp_path: Path) -> None:

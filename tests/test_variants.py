@@ -246,6 +246,9 @@ def test_each_bundled_table_draws_variants_a_fresh_solve_agrees_with(name: str) 
             value = r.value if r.value is not None else r.partial
             if value is None or value.free_symbols:  # a result in letters (4.C.12's speeds)
                 continue
+            if result not in key:  # a given of the file (v_A2 of an inverse problem): no answer
+                assert result in {g.name for g in fresh.problem.givens if not g.unknown}, result
+                continue
             assert key[result]["value"] == pytest.approx(float(value), rel=1e-9, abs=1e-12), result
             compared += 1
         assert compared >= 1

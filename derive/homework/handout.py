@@ -28,7 +28,7 @@ from derive.problem import load
 from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
-from derive.writers.view import environment, student_sheet, view
+from derive.writers.view import chain_as_problem, environment, student_sheet, view
 from derive.writers.view.html import handout_html
 
 Mode = Literal["problems", "answers", "solutions"]
@@ -75,7 +75,7 @@ def _problem_view(
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = solve(load(name))
     if solution.is_chain:
-        data = _chain_view(solution, mode, digits, layout)
+        data = chain_as_problem(solution, digits, figures=mode != "answers", layout=layout)
     else:
         data = view(solution, digits, figures=mode != "answers", plot=plot and mode == "solutions", layout=layout)
         data["answers"] = [
@@ -93,67 +93,6 @@ def _problem_view(
         data["setup_tikz"] = next((st["figure_tikz"] for st in data["stages"] if st.get("figure_tikz")), "")
         student_sheet(data)
     return data
-
-
-def _chain_view(solution: Any, mode: str, digits: int | None, layout: Layout = GITHUB) -> dict[str, Any]:
-    """A chain in the shape of one problem: its stages in order (an impact's own
-    stages numbered k.1, k.2, ..., with the impact's givens first and the results it
-    carries on last), then its boxed answers as a last stage."""
-    from derive.writers.view import chain_view
-
-    data = chain_view(solution, digits, figures=mode != "answers", layout=layout)
-    stages = []
-    for st in data["stages"]:
-        if st["impact"]:
-            subs = [
-                {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
-                for sub in st["stages"]
-            ]
-            givens = _sentence("Given: ", [g["latex"] for g in st["givens"]], ", ")
-            carried = _sentence("Carried to the next stages: ", st["carried"], "; ")
-            if subs:
-                subs[0] = {**subs[0], "blocks": [givens, *subs[0]["blocks"]]}
-                if st["carried"]:
-                    subs[-1] = {**subs[-1], "blocks": [*subs[-1]["blocks"], carried]}
-            stages += subs
-        else:
-            stages.append(
-                {
-                    "number": st["number"],
-                    "title": st["title"],
-                    "blocks": st["blocks"],
-                    "figure_svg": "",
-                    "figure_tikz": "",
-                }
-            )
-    if data["answers"]:
-        number = len(data["stages"]) + 1
-        stages.append(
-            {
-                "number": number,
-                "title": "Answer",
-                "blocks": [{"text": [], "lines": data["answers"]}],
-                "figure_svg": "",
-                "figure_tikz": "",
-            }
-        )
-    return {
-        **data,
-        "find": [("text", data["find"])],
-        "stages": stages,
-        "kind": "chain",
-        "system": solution.problem.system,
-    }
-
-
-def _sentence(lead: str, maths: list[str], between: str) -> dict[str, Any]:
-    """A block of one sentence: ``lead`` then each piece of mathematics."""
-    text: list[tuple[str, str]] = [("text", lead)]
-    for i, m in enumerate(maths):
-        text += [("text", between)] if i else []
-        text.append(("math", m))
-    text.append(("text", "."))
-    return {"text": text, "lines": []}
 
 
 def build_handout(

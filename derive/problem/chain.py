@@ -10,17 +10,22 @@ solved by :mod:`derive.physics.chain`; an impact stage is read as a problem of i
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
 
-from derive.problem.expr import ParseError, number_with_unit, scan
+from derive.errors import ExpressionError
+from derive.problem import fields
+from derive.problem.expr import ParseError, number_with_unit, parse, scan
 from derive.problem.givens import build_givens, infer_system
 from derive.problem.records import Given, RecordError
 from derive.problem.schema import CHAIN, STAGES
 from derive.problem.source import Source
+from derive.problem.units import DIMENSIONLESS
 from derive.problem.validate import check
+from derive.symbols import symbol
 
 STAGE_TYPES = tuple(STAGES)
 
@@ -42,6 +47,11 @@ class ChainProblem:
     name: str = ""
     ctx: Any = field(default=None, compare=False, repr=False)
     kind: str = "chain"
+    #: Homework variants: the values each varied given may take (``[vary]``), and the
+    #: conditions every variant meets, as typed (their names are checked; their dimensions
+    #: are known once the chain is solved).
+    vary: Mapping[str, tuple[sympy.Expr, ...]] = field(default_factory=dict)
+    conditions: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         if self.digits is not None and (isinstance(self.digits, bool) or not 1 <= self.digits <= 10):
@@ -68,7 +78,7 @@ def build_chain(data: dict[str, Any], ctx: Source, name: str) -> ChainProblem:
     for i, st in enumerate(data["stage"], 1):
         stage_ctx = ctx.within("stage", i - 1, label=f"stage {i}")
         _check_condition(st, stage_ctx)
-        for key, new in _results(i, st):
+        for key, new in stage_results(i, st):
             if new in used:
                 raise stage_ctx.error(
                     f"{new!r} is used already (a given or an earlier stage's result): choose a new name",
@@ -76,6 +86,9 @@ def build_chain(data: dict[str, Any], ctx: Source, name: str) -> ChainProblem:
                     value=new,
                 )
             used.add(new)
+        if st["type"] == "impact":  # an unknown an impact finds (m_A = "? kg") is known after it
+            stage_given = st.get("given", {})
+            used |= {k for k, v in stage_given.items() if isinstance(v, str) and v.strip().startswith("?")}
     return ChainProblem(
         path=ctx.path,
         title=data["title"],
@@ -89,10 +102,28 @@ def build_chain(data: dict[str, Any], ctx: Source, name: str) -> ChainProblem:
         find=tuple(data.get("find", [])),
         name=name,
         ctx=ctx,
+        vary=fields.vary(data.get("vary"), {g.name: g for g in givens}, ctx, False, system),
+        conditions=_conditions(data.get("conditions"), used | {"g"}, ctx),
     )
 
 
-def _results(i: int, st: dict[str, Any]) -> list[tuple[str, str]]:
+def _conditions(raw: list[str] | None, names: set[str], ctx: Source) -> tuple[str, ...]:
+    """A chain's conditions, as typed: each a comparison of expressions in its givens and
+    its stages' results (checked here: the form and the names)."""
+    known = {n: (symbol(n), DIMENSIONLESS) for n in names}
+    for text in raw or ():
+        m = fields.CONDITION.match(text)
+        if not m:
+            raise ctx.error("expected a comparison with <, <=, > or >=", key="conditions", value=text)
+        try:
+            parse(m.group(1).strip(), known)
+            parse(m.group(3).strip(), known)
+        except ParseError as exc:
+            raise ctx.error(str(exc), key="conditions", value=text, cls=ExpressionError) from None
+    return tuple(raw or ())
+
+
+def stage_results(i: int, st: dict[str, Any]) -> list[tuple[str, str]]:
     """(field, name) of each name stage ``i`` gives its results (defaults from the schema)."""
     kind = st["type"]
     if kind == "impact":

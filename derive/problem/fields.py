@@ -37,7 +37,8 @@ RESULT_DIMS: dict[str, Dim] = {
     "J_n": units.IMPULSE,
 }
 MAX_CHOICES = 100_000
-_CONDITION = re.compile(r"^(.*?)(<=|>=|<|>)(.*)$")
+#: A condition's form: "lhs op rhs".
+CONDITION = re.compile(r"^(.*?)(<=|>=|<|>)(.*)$")
 
 
 def find(
@@ -106,13 +107,23 @@ def _vary_value(name: str, g: Given, v: Any, field_: str, ctx: Source, oblique: 
     return item.value
 
 
-def conditions(raw: list[str] | None, by_name: Mapping[str, Given], ctx: Source) -> tuple[Condition, ...]:
-    """Conditions on givens and results, each "lhs < rhs" (< <= > >=), parsed safely."""
+def conditions(
+    raw: list[str] | None,
+    by_name: Mapping[str, Given],
+    ctx: Source,
+    results: Mapping[str, tuple[sympy.Symbol, Dim]] | None = None,
+) -> tuple[Condition, ...]:
+    """Conditions on givens and results, each "lhs < rhs" (< <= > >=), parsed safely.
+    ``results``: the results a condition may name, with their dimensions (default: an
+    impact's, :data:`RESULT_DIMS`; a chain's are known once it is solved)."""
     names = {g.name: (g.symbol, g.dim) for g in by_name.values()}
-    names.update({n: (symbol(n), d) for n, d in RESULT_DIMS.items()})
+    if results is None:
+        names.update({n: (symbol(n), d) for n, d in RESULT_DIMS.items()})
+    else:
+        names.update(results)
     out = []
     for text in raw or ():
-        m = _CONDITION.match(text)
+        m = CONDITION.match(text)
         if not m:
             raise ctx.error("expected a comparison with <, <=, > or >=", key="conditions", value=text)
         try:

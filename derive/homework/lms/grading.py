@@ -79,16 +79,25 @@ def default_result(compiled: Compiled, variants: list[Variant], digits: int | No
 
 
 def _numeric_results(compiled: Compiled, variants: list[Variant], digits: int | None) -> list[str]:
+    """The results shown as a number in every variant (not a chain's yes or no)."""
     names: list[str] | None = None
     for v in variants:
-        have = list(answers(compiled, v, digits))
+        have = [n for n, row in answers(compiled, v, digits).items() if _is_number(row["shown"])]
         names = have if names is None else [n for n in names if n in have]
     return names or []
 
 
+def _is_number(text: str) -> bool:
+    try:
+        Decimal(text)
+    except ArithmeticError:
+        return False
+    return True
+
+
 def resolve_result(compiled: Compiled, variants: list[Variant], result: str | None, digits: int | None = None) -> str:
     """``result`` checked (a result with a number in every variant), or the default."""
-    if "md" not in compiled.templates:
+    if not compiled.is_chain and "md" not in compiled.templates:
         raise ValueError(
             "the LMS exports need the problem compiled for Markdown: compile_problem(problem, digits, 'md')"
         )

@@ -41,6 +41,19 @@ def solution_html(data: dict[str, Any]) -> str:
     return lms_html(data, "solution", words).strip()
 
 
+def result_html(compiled: Any, name: str) -> str:
+    """What the asked result is, as HTML for the sentence that asks for it: "the " and its
+    description; a chain's as :func:`~derive.homework.variants.chain.chain_result_words` says
+    it (\\(v_{A2}\\) after A and B collide), its mathematics for MathJax."""
+    from derive.homework.variants.chain import chain_result_words
+
+    if compiled.is_chain:
+        parts = chain_result_words(compiled, name)
+    else:
+        parts = [("text", "the " + compiled.solution.results[name].description)]
+    return "".join(rf"\({esc(s)}\)" if kind == "math" else esc(s) for kind, s in parts)
+
+
 def clean_xml(text: str) -> str:
     """Text that XML 1.0 can hold (control characters dropped)."""
     return _XML_BAD.sub("", text)

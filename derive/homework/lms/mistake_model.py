@@ -35,7 +35,8 @@ class MistakeModel:
 
     def __init__(self, compiled: Compiled) -> None:
         self.compiled = compiled
-        self.base = mistakes.Model(compiled.solution)
+        # the mistakes are a single impact's: a chain's questions have no mistake answers
+        self.base = None if compiled.is_chain else mistakes.Model(compiled.solution)
         self.registry = mistakes.REGISTRY
         self._wrong: dict[tuple, list[Wrong]] = {}
 
@@ -83,6 +84,8 @@ class MistakeModel:
     def wrong(self, variant: Variant, right: Answer, digits: int | None) -> list[Wrong]:
         """The mistakes' values for ``right.name`` that a student would not get right anyway,
         one per value shown (mistakes that give the same value share it), in order of value."""
+        if self.base is None:
+            return []
         d = digits if digits is not None else self.compiled.problem.digits
         key = (variant.number, tuple(sorted((k, str(x)) for k, x in variant.values.items())), right, d)
         if key in self._wrong:

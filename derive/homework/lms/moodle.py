@@ -9,7 +9,7 @@ from decimal import Decimal
 from pathlib import Path
 
 from derive.homework.lms.grading import Answer, asked_answer, resolve_result
-from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html, words
+from derive.homework.lms.markup import clean_xml, esc, result_html, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel, mistake_ranges
 from derive.homework.variants import Compiled, Variant, answers, fill_view, setup_figure
 from derive.symbols import latex_name
@@ -55,12 +55,11 @@ def _question_text(q: ET.Element, compiled: Compiled, v: Variant, statement: str
 
 def _ask(compiled: Compiled, answer: Answer) -> str:
     """The sentence that says what to enter, as HTML."""
-    r = compiled.solution.results[answer.name]
     unit = "degrees" if answer.unit == "deg" else answer.unit
     where = f", in {esc(unit)}" if unit else ""
     figs = answer.figures
     return (
-        f"<p>Enter \\({latex_name(answer.name)}\\), the {esc(r.description)}{where}, "
+        f"<p>Enter \\({latex_name(answer.name)}\\), {result_html(compiled, answer.name)}{where}, "
         f"to {figs} significant figure{'s' if figs != 1 else ''}.</p>"
     )
 

@@ -13,7 +13,7 @@ from pathlib import Path
 from derive.fileio import dumps_json
 from derive.homework.lms.files import folder_exports
 from derive.homework.lms.grading import EDGE, asked_answer, resolve_result
-from derive.homework.lms.markup import clean_xml, esc, solution_html, statement_html
+from derive.homework.lms.markup import clean_xml, esc, result_html, solution_html, statement_html
 from derive.homework.lms.mistake_model import MistakeModel, hint_text, mistake_ranges
 from derive.homework.lms.moodle import problem_name
 from derive.homework.variants import Compiled, Variant, answers, fill_view, setup_figure, statement_view
@@ -27,7 +27,10 @@ _PARAM = "DRVPARAM{}X"
 def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, str]]] | None:
     """The statement as HTML with ``{{params.NAME}}`` where each varied given's number
     goes, and what each parameter is (given name, slot kind); None when the statement
-    holds a number that is not a varied given's."""
+    holds a number that is not a varied given's, and for a chain (solved per variant: its
+    statement is a parameter of each variant)."""
+    if compiled.is_chain:
+        return None
     by_symbol = {compiled.givens[n].symbol: n for n in compiled.names}
     keys: dict[str, tuple[str, str]] = {}
     other: list[int] = []
@@ -195,7 +198,6 @@ def _row(
 
 def _question_html(compiled: Compiled, variants: list[Variant], result: str, digits: int | None, statement: str) -> str:
     """question.html: the statement, what to enter, the number input and the solution panel."""
-    r = compiled.solution.results[result]
     unit = answers(compiled, variants[0], digits)[result]["unit"] if variants else ""
     unit_words = "degrees" if unit == "deg" else unit
     where = f", in {esc(unit_words)}" if unit_words else ""
@@ -205,7 +207,7 @@ def _question_html(compiled: Compiled, variants: list[Variant], result: str, dig
         "<pl-question-panel>\n"
         f"{statement}\n"
         '<div class="derive-figure">{{{params.derive_figure}}}</div>\n'
-        f"<p>Enter \\({symbol}\\), the {esc(r.description)}{where}, "
+        f"<p>Enter \\({symbol}\\), {result_html(compiled, result)}{where}, "
         "to {{params.derive_figures}} significant figures.</p>\n"
         "</pl-question-panel>\n\n"
         f'<pl-number-input answers-name="{html.escape(result)}" label="\\({symbol} =\\)"{suffix} '

@@ -12,7 +12,8 @@ prints a variant's page and answers, ``write`` writes the folder and its answer 
 
 from __future__ import annotations
 
-from derive.homework.variants.compile import FIGURE, Compiled, Variant, compile_problem
+from derive.homework.variants.chain import ChainCompiled
+from derive.homework.variants.compile import FIGURE, Compiled, compile_problem
 from derive.homework.variants.draw import GIVE_UP_AFTER, MAX_ATTEMPTS_PER_VARIANT, MAX_COUNT, draw
 from derive.homework.variants.fill import (
     TEX_SOLUTION,
@@ -29,6 +30,7 @@ from derive.homework.variants.fill import (
     statement_only,
     statement_view,
 )
+from derive.homework.variants.record import Variant
 from derive.homework.variants.write import OWNED, write_variants
 
 __all__ = [
@@ -38,6 +40,7 @@ __all__ = [
     "MAX_COUNT",
     "OWNED",
     "TEX_SOLUTION",
+    "ChainCompiled",
     "Compiled",
     "Variant",
     "answers",

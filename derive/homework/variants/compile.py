@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING, ClassVar
 
 import sympy
 
@@ -15,19 +16,14 @@ from derive.problem import Given, Problem
 from derive.steps.model import Solution
 from derive.writers.printing import SlotBook
 
+if TYPE_CHECKING:
+    from derive.homework.variants.chain import ChainCompiled
+
 _TOKEN = re.compile(r"DRVSLOT(\d+)X")
 
 #: Where a stage's figure ("before" or "after" the impact), and the note under it, go in
 #: a compiled page.
 FIGURE = "DRVFIGURE{}-{}-X"
-
-
-@dataclass(frozen=True)
-class Variant:
-    """One drawn variant: its number (1, 2, ...) and the varied givens' exact values."""
-
-    number: int
-    values: dict[str, sympy.Expr]
 
 
 @dataclass
@@ -49,6 +45,12 @@ class Compiled:
     #: The page's data (:func:`derive.writers.view.view`) with the slots open, for a variant's
     #: HTML (see :func:`derive.homework.variants.fill_view`).
     view: dict | None = None
+    is_chain: ClassVar[bool] = False
+
+    def accepts(self, values: dict[str, sympy.Expr]) -> bool:
+        """True for a physical variant (bodies that approach, 0 <= e <= 1, positive masses,
+        the file's conditions met); ``values`` in the order of :attr:`names`."""
+        return bool(self.check_fn(*(float(values[n]) for n in self.names)))
 
 
 def _symbolic(problem: Problem) -> Problem:
@@ -77,16 +79,17 @@ def _lambdify(symbols: tuple[sympy.Symbol, ...], exprs: list[sympy.Expr]) -> obj
     return sympy.lambdify(symbols, exprs, modules=["math"], cse=True)
 
 
-def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled:
-    """Derive ``problem`` once (its varied givens symbolic) and compile its page."""
+def compile_problem(problem: Problem, digits: int | None = None, fmt: str = "md") -> Compiled | ChainCompiled:
+    """Derive ``problem`` once (its varied givens symbolic) and compile its page; a chain
+    is solved once, and each of its variants again (:mod:`derive.homework.variants.chain`)."""
     from derive.steps import solve
     from derive.writers.targets import GITHUB, TEX_DOCUMENT
     from derive.writers.view import environment, view
 
     if getattr(problem, "kind", None) == "chain":
-        raise InputError(
-            "is a chain: derive draws variants of a single impact's [vary] table only", where=problem.path, field="kind"
-        )
+        from derive.homework.variants.chain import compile_chain
+
+        return compile_chain(problem)  # type: ignore[arg-type]
     if not problem.vary:
         raise InputError("has no [vary] table: nothing to draw variants from", where=problem.path, field="[vary]")
     names = tuple(sorted(problem.vary))

@@ -5,21 +5,29 @@ from __future__ import annotations
 
 import math
 import random
+from typing import TYPE_CHECKING
 
 from derive.errors import InputError
-from derive.homework.variants.compile import Compiled, Variant
-from derive.problem import Problem
+from derive.homework.variants.compile import Compiled
+from derive.homework.variants.record import Variant
+from derive.problem import ChainProblem, Problem
+
+if TYPE_CHECKING:
+    from derive.homework.variants.chain import ChainCompiled
 
 MAX_ATTEMPTS_PER_VARIANT = 200
 #: The most variants one run draws (each is a page or two on disk).
 MAX_COUNT = 10_000
 #: Draws between looks at the rate of success: where it cannot reach the count, stop.
 GIVE_UP_AFTER = 2_000
+#: The same for a chain, whose every draw is a solve of the chain (tenths of a second).
+CHAIN_GIVE_UP_AFTER = 50
 
 
-def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
+def draw(compiled: Compiled | ChainCompiled, count: int, seed: int) -> list[Variant]:
     """``count`` distinct physical variants, the same for the same seed and file anywhere."""
     p = compiled.problem
+    look = CHAIN_GIVE_UP_AFTER if compiled.is_chain else GIVE_UP_AFTER
     rng = random.Random(seed)
     pools = [p.vary[n] for n in compiled.names]
     seen: set[tuple[int, ...]] = set()
@@ -29,10 +37,10 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
     budget = MAX_ATTEMPTS_PER_VARIANT * count
     while len(out) < count and attempts < budget and len(seen) < total:
         attempts += 1
-        if attempts % GIVE_UP_AFTER == 0 and len(out) * (budget - attempts) < (count - len(out)) * attempts:
+        if attempts % look == 0 and len(out) * (budget - attempts) < (count - len(out)) * attempts:
             raise InputError(
                 f"{len(out)} of the first {attempts:,} draws {_what_is_met(p)}; at that rate {count} variants "
-                "cannot be found: check the conditions and the [vary] ranges",
+                f"cannot be found: check the conditions and the [vary] ranges{_last_refusal(compiled)}",
                 where=p.path,
                 field="--count",
             )
@@ -41,19 +49,28 @@ def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
             continue
         seen.add(key)
         values = {n: pool[i] for n, pool, i in zip(compiled.names, pools, key, strict=True)}
-        if compiled.check_fn(*(float(v) for v in values.values())):
+        if compiled.accepts(values):
             out.append(Variant(len(out) + 1, values))
     if len(out) < count:
         raise InputError(
             f"only {len(out)} distinct physical variants found for {count} asked "
-            "(widen the [vary] ranges or relax the conditions)",
+            f"(widen the [vary] ranges or relax the conditions){_last_refusal(compiled)}",
             where=p.path,
             field="--count",
         )
     return out
 
 
-def _what_is_met(problem: Problem) -> str:
+def _what_is_met(problem: Problem | ChainProblem) -> str:
     if problem.conditions:
-        return "meet " + " and ".join(c.text for c in problem.conditions)
+        texts = [c if isinstance(c, str) else c.text for c in problem.conditions]
+        return "meet " + " and ".join(texts)
+    if problem.kind == "chain":
+        return "are physical (every stage solves: bodies that approach, one admissible root)"
     return "are physical (bodies that approach, 0 <= e <= 1, positive masses)"
+
+
+def _last_refusal(compiled: Compiled | ChainCompiled) -> str:
+    """Why the last refused draw of a chain was refused (a chain says why it does not solve)."""
+    reason = getattr(compiled, "refusal", "")
+    return f"; the last refused: {reason}" if reason else ""

@@ -12,7 +12,10 @@ from typing import Any
 
 import sympy
 
-from derive.homework.variants.compile import FIGURE, Compiled, Variant
+from derive.homework.variants import chain
+from derive.homework.variants.chain import ChainCompiled
+from derive.homework.variants.compile import FIGURE, Compiled
+from derive.homework.variants.record import Variant
 from derive.numbers import float_decimal, format_number, format_places, places_that_add_up
 from derive.problem import Given
 from derive.problem.units import plain_unit
@@ -122,8 +125,10 @@ def _slot_text(
     return text
 
 
-def fill(compiled: Compiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
-    """The worked solution of one variant, from the compiled page."""
+def fill(compiled: Compiled | ChainCompiled, variant: Variant, fmt: str = "md", digits: int | None = None) -> str:
+    """The worked solution of one variant, from the compiled page (a chain's: solved again)."""
+    if compiled.is_chain:
+        return chain.chain_fill(compiled, variant, fmt, digits)
     texts, places = slot_texts(compiled, variant, digits)
     parts = compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]
     page = "".join(texts[part] if isinstance(part, int) else part for part in parts)
@@ -230,13 +235,20 @@ def _optional_sides(page: str) -> str:
     return _SIDE.sub(one, page)
 
 
-def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:
-    """The answer key of one variant: each result's value, unit and shown text."""
+def answers(compiled: Compiled | ChainCompiled, variant: Variant, digits: int | None = None) -> dict[str, dict]:
+    """The answer key of one variant: each result's value, unit and shown text. A result that
+    is a given of the file (v_A2 given in an inverse problem) is no answer: the key has it once,
+    among the givens."""
+    if compiled.is_chain:
+        return chain.chain_answers(compiled, variant, digits)
     p = compiled.problem
+    givens = {g.name for g in p.givens if not g.unknown}
     d = digits if digits is not None else p.digits
     args = [float(variant.values[n]) for n in compiled.names]
     out = {}
     for name, fn in compiled.result_fns.items():
+        if name in givens:
+            continue
         r = compiled.solution.results[name]
         try:
             value = complex(fn(*args))
@@ -253,7 +265,7 @@ def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> 
     return out
 
 
-def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
+def given_values(compiled: Compiled | ChainCompiled, variant: Variant) -> dict[str, dict]:
     """The varied givens of a variant, in the problem's units (angles in degrees)."""
     out = {}
     for n in compiled.names:
@@ -290,9 +302,12 @@ def statement_only(page: str, figure: str = "", convention: str = "") -> str:
     return head.rstrip() + shown + "\n"
 
 
-def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
-    """The sign convention in words (stage 1's sentence: where +n and +t point) as Markdown
-    or (tex, pdf) LaTeX text, for a student's sheet; empty when the page has none."""
+def sign_convention(compiled: Compiled | ChainCompiled, fmt: str = "md") -> str:
+    """The sign convention in words (stage 1's sentence: where +n and +t point; a chain's
+    of every impact stage) as Markdown or (tex, pdf) LaTeX text, for a student's sheet;
+    empty when the page has none."""
+    if compiled.is_chain:
+        return chain.chain_sign_convention(compiled, fmt)
     from derive import escape
     from derive.writers.view import convention
 
@@ -301,9 +316,12 @@ def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
     return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in parts)
 
 
-def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
-    """A variant's figure before the impact (which way +n points, its own speeds) as SVG
-    or (tex, pdf) TikZ, for the student's statement; empty when its page has none."""
+def setup_figure(compiled: Compiled | ChainCompiled, variant: Variant, fmt: str = "md") -> str:
+    """A variant's figure before the impact (a chain's: its first impact; which way +n points,
+    its own speeds) as SVG or (tex, pdf) TikZ, for the student's statement; empty when its
+    page has none."""
+    if compiled.is_chain:
+        return chain.chain_setup_figure(compiled, variant, fmt)
     if not any(s.figure == "before" for s in compiled.solution.stages):
         return ""
     from derive.writers import figure
@@ -313,7 +331,7 @@ def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
 
 
 def iterate(
-    compiled: Compiled, variants: list[Variant], fmt: str = "md", digits: int | None = None
+    compiled: Compiled | ChainCompiled, variants: list[Variant], fmt: str = "md", digits: int | None = None
 ) -> Iterator[tuple[Variant, str]]:
     """Each variant with its page, one at a time (nothing kept in memory)."""
     for v in variants:
@@ -324,13 +342,20 @@ _SLOT = re.compile(r"DRVSLOT(\d+)X")
 
 
 def fill_view(
-    compiled: Compiled, variant: Variant, digits: int | None = None, slot: Callable[[int], str] | None = None
+    compiled: Compiled | ChainCompiled,
+    variant: Variant,
+    digits: int | None = None,
+    slot: Callable[[int], str] | None = None,
 ) -> dict[str, Any]:
     """One variant's page as data for the writers (:func:`derive.writers.view.view`'s
     shape): the compiled page's data with its numbers, optional lines and sides and its
     figures filled in, as :func:`fill` fills the printed page. ``slot`` (a slot's number
-    to its text) replaces the variant's numbers (PrairieLearn's ``{{params.NAME}}``)."""
+    to its text) replaces the variant's numbers (PrairieLearn's ``{{params.NAME}}``).
+    A chain's: its page in one problem's shape, without figures (no slots)."""
     from derive.writers.view import figure_entry
+
+    if compiled.is_chain:
+        return chain.chain_view_of(compiled, variant, digits)
 
     if compiled.view is None:
         raise ValueError("compiled without its page data")

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from derive.homework.variants.compile import Compiled, Variant, compile_problem
+from derive.homework.variants.chain import ChainCompiled, chain_html
+from derive.homework.variants.compile import Compiled, compile_problem
 from derive.homework.variants.draw import draw
 from derive.homework.variants.fill import (
     answers,
@@ -13,7 +14,8 @@ from derive.homework.variants.fill import (
     sign_convention,
     statement_only,
 )
-from derive.problem import Problem
+from derive.homework.variants.record import Variant
+from derive.problem import ChainProblem, Problem
 
 #: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
 OWNED = (
@@ -42,7 +44,7 @@ def _progress(done: int, total: int) -> None:
 
 
 def write_variants(
-    problem: Problem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
+    problem: Problem | ChainProblem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
 ) -> list[str]:
     """Draw ``count`` variants and write each (statement and worked solution) and the
     answer key (key.csv, key.json) into ``out_dir``.
@@ -117,7 +119,9 @@ class _Key:
         self.json_fh.close()
 
 
-def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict) -> None:
+def _write_one(
+    compiled: Compiled | ChainCompiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict
+) -> None:
     """One variant's files: statement and worked solution (md, html), LaTeX, PDF or JSON."""
     from derive.fileio import dumps_json
 
@@ -147,10 +151,15 @@ def _write_one(compiled: Compiled, v: Variant, folder, stem: str, fmt: str, digi
             (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
 
 
-def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
+def variant_html(
+    compiled: Compiled | ChainCompiled, v: Variant, stem: str, digits: int | None = None
+) -> tuple[str, str]:
     """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
     the impact, the sign convention in words; no Source line, no answers) and the worked solution."""
     import copy
+
+    if compiled.is_chain:
+        return chain_html(compiled, v, stem, digits)
 
     from derive.writers.view import student_sheet
     from derive.writers.view.html import html_pages as typeset

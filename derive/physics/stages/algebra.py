@@ -74,7 +74,8 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
         raise state.err(i, "for", 'expected exactly one unknown (a given marked "?") to solve for', target)
     u = unknown[0]
     in_unknown = state.value(lhs.expr)
-    found = sympy.solve(in_unknown - rhs_expr, u)
+    # the right side in its numbers too (h_2 = h_0: the roots are numbers, each checked)
+    found = sympy.solve(in_unknown - state.value(rhs_expr), u)
     roots = [r for r in found if admissible(state, u, r)]
     if len(roots) != 1:
         listed = f" ({', '.join(_shown(state.value(r)) for r in roots)})" if roots else ""

@@ -15,7 +15,7 @@ from derive.numbers import format_number
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
 from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
-from derive.writers.view.chain import chain_view
+from derive.writers.view.chain import chain_as_problem, chain_convention, chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import chain_json, to_json
 from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
@@ -28,6 +28,8 @@ __all__ = [
     "OPTIONAL_END",
     "blocks_view",
     "boxed_lines",
+    "chain_as_problem",
+    "chain_convention",
     "chain_view",
     "convention",
     "environment",

@@ -12,7 +12,7 @@ from derive.writers.printing import Style, exact_latex, latex_eqn
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.view.givens import given_latex, letter_units, result_units, source_parts, statement, worked_out
 from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
-from derive.writers.view.problem import view
+from derive.writers.view.problem import convention, view
 
 
 def chain_view(
@@ -141,3 +141,85 @@ def _answer_names(sol: Any, names: list[str]) -> list[tuple[str, str]]:
             out += [("text", "; " if out else "Where "), ("math", latex_name(name)), ("text", " is ")]
             out += [("math", slot_tex), ("text", f" after {title}")]
     return [*out, ("text", ".")] if out else []
+
+
+def chain_convention(data: dict[str, Any]) -> list[tuple[str, str]]:
+    """The sign convention of every impact stage of a chain's view (:func:`chain_view`), in
+    words, for a student's sheet: each impact's sentence (where n and t point), after the
+    impact's title where the chain has more than one ("B strikes the wall: take n ...")."""
+    impacts = [st for st in data["stages"] if st["impact"]]
+    out: list[tuple[str, str]] = []
+    for st in impacts:
+        parts = list(convention(st["stages"]))
+        if not parts:
+            continue
+        if len(impacts) > 1:
+            kind, first = parts[0]
+            if kind == "text" and first.startswith("Take "):
+                parts[0] = (kind, "take " + first[len("Take ") :])
+            parts.insert(0, ("text", f"{st['title']}: "))
+        out += ([("text", " ")] if out else []) + parts
+    return out
+
+
+def chain_as_problem(
+    sol: Any, digits: int | None = None, figures: bool = True, layout: Layout = GITHUB
+) -> dict[str, Any]:
+    """A chain in the shape of one problem's view (for a handout, a variant's sheet and an LMS):
+    its stages in order (an impact's own stages numbered k.1, k.2, ..., with the impact's givens
+    first and the results it carries on last), then its boxed answers as a last stage;
+    ``chain_convention`` holds the sign convention of each impact stage."""
+    data = chain_view(sol, digits, figures=figures, layout=layout)
+    stages = []
+    for st in data["stages"]:
+        if st["impact"]:
+            subs = [
+                {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
+                for sub in st["stages"]
+            ]
+            givens = _sentence("Given: ", [g["latex"] for g in st["givens"]], ", ")
+            carried = _sentence("Carried to the next stages: ", st["carried"], "; ")
+            if subs:
+                subs[0] = {**subs[0], "blocks": [givens, *subs[0]["blocks"]]}
+                if st["carried"]:
+                    subs[-1] = {**subs[-1], "blocks": [*subs[-1]["blocks"], carried]}
+            stages += subs
+        else:
+            stages.append(
+                {
+                    "number": st["number"],
+                    "title": st["title"],
+                    "blocks": st["blocks"],
+                    "figure_svg": "",
+                    "figure_tikz": "",
+                }
+            )
+    if data["answers"]:
+        number = len(data["stages"]) + 1
+        stages.append(
+            {
+                "number": number,
+                "title": "Answer",
+                "blocks": [{"text": [], "lines": data["answers"]}],
+                "figure_svg": "",
+                "figure_tikz": "",
+            }
+        )
+    return {
+        **data,
+        "find": [("text", data["find"])],
+        "stages": stages,
+        "kind": "chain",
+        "system": sol.problem.system,
+        "chain_convention": chain_convention(data),
+    }
+
+
+def _sentence(lead: str, maths: list[str], between: str) -> dict[str, Any]:
+    """A block of one sentence: ``lead`` then each piece of mathematics."""
+    text: list[tuple[str, str]] = [("text", lead)]
+    for i, m in enumerate(maths):
+        text += [("text", between)] if i else []
+        text.append(("math", m))
+    text.append(("text", "."))
+    return {"text": text, "lines": []}

@@ -218,5 +218,6 @@ def student_sheet(data: dict[str, Any]) -> dict[str, Any]:
     for g in data["givens"]:
         if g.get("note") == UNKNOWN_NOTE:
             g["note"] = "to find"
-    data["convention"] = convention(data["stages"])
+    # a chain's sheet gives the convention of each impact stage (chain_as_problem)
+    data["convention"] = data.pop("chain_convention", None) or convention(data["stages"])
     return data
