@@ -157,6 +157,15 @@ PHYSICS = {
 }
 
 
+@pytest.mark.slow
+@pytest.mark.parametrize("name", _chains_with_tables())
+def test_each_chain_table_gives_a_class_of_forty_distinct_variants(name: str) -> None:
+    """As for the single-impact tables (tests/test_variants.py): 40 students, 40 variants."""
+    compiled = variants.compile_problem(derive.load(name))
+    chosen = variants.draw(compiled, 40, seed=1)
+    assert len({tuple(sorted(v.values.items())) for v in chosen}) == 40
+
+
 def test_every_chain_table_has_its_physics_here() -> None:
     assert set(_chains_with_tables()) <= set(PHYSICS)
 
