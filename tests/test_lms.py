@@ -220,7 +220,7 @@ def test_lms_feedback_has_the_numbers_of_the_variant_page(
         assert _numbers(feedback) == _numbers(solution)
         question = re.sub(r"<[^>]+>", " ", _text(q, "questiontext/text")).rsplit("Enter", 1)[0]
         head = re.sub(r"^# .*\n|^\*Source: .*\n", "", head, flags=re.M)
-        assert _numbers(question) == _numbers(head)
+        assert _numbers(question) == _numbers(head + variants.sign_convention(compiled))  # as the sheet
 
 
 # ---------------------------------------------------------------- PrairieLearn
@@ -393,3 +393,22 @@ def test_moodle_question_text_has_the_variants_set_up_figure(
         assert svg == variants.setup_figure(compiled, v, "md")
         assert svg.startswith("<svg") and 'aria-label="Before the impact"' in svg
         assert '<img src="@@PLUGINFILE@@/setup.svg"' in text.find("text").text
+
+
+@pytest.mark.parametrize("name", [NAME, "young-freedman-8-96-pucks-find-mass"])
+def test_an_lms_question_reads_as_the_students_sheet(name: str, cli, tmp_path: Path) -> None:
+    """Issue 15: a single impact's LMS question gave no sign convention (the answer is a signed
+    component) and marked an inverse problem's unknown "(unknown: derive finds it)"."""
+    xml, pl = tmp_path / "q.xml", tmp_path / "pl"
+    r = cli("variants", name, "-n", "2", "-o", str(tmp_path / "hw"), "--moodle", str(xml), "--prairielearn", str(pl))
+    assert r.code == 0, r.err
+    compiled = variants.compile_problem(derive.load(name))
+    words = variants.sign_convention(compiled)
+    assert words.startswith("Take $n$ along the line of impact")
+    texts = [_text(q, "questiontext/text") for q in _numerical(xml.read_text())]
+    texts.append((pl / "question.html").read_text())
+    for text in texts:
+        assert "<strong>Sign convention.</strong> Take \\(n\\) along the line of impact" in text
+        assert "derive finds it" not in text
+    if name != NAME:  # the mass of the inverse problem is the unknown
+        assert all("to find" in text for text in texts)

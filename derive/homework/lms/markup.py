@@ -7,6 +7,7 @@ import re
 from typing import Any
 
 from derive import escape
+from derive.writers.view import student_sheet
 from derive.writers.view.html import lms_html
 
 _XML_BAD = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
@@ -31,8 +32,11 @@ def words(text: str) -> str:
 
 
 def statement_html(data: dict[str, Any]) -> str:
-    """A variant's statement (Given, Find) as LMS HTML: no title, and no Source line
-    (citations quote the published answers)."""
+    """A variant's statement (Given, Find) as LMS HTML, as a student's sheet reads: no title,
+    no Source line (citations quote the published answers), an unknown given "to find", and
+    the sign convention in words (which way +n points: the answer is a signed component)."""
+    if "convention" not in data:  # a page's data (fill_view): its sheet, the page left as it was
+        data = student_sheet({**data, "givens": [dict(g) for g in data["givens"]]})
     return lms_html(data, "statement", words).strip()
 
 

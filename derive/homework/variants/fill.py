@@ -414,4 +414,10 @@ def statement_view(compiled: Compiled, slot: Callable[[int], str]) -> dict[str, 
     def one(text: str) -> str:
         return _SLOT.sub(lambda m: slot(int(m.group(1))), text)
 
-    return {k: _filled(compiled.view[k], one) for k in ("title", "statement", "givens", "find")}
+    from derive.writers.view import student_sheet
+
+    data = {k: _filled(compiled.view[k], one) for k in ("title", "statement", "givens", "find")}
+    data["stages"] = compiled.view["stages"]  # read for the sign convention's words only
+    sheet = student_sheet(data)
+    del sheet["stages"]
+    return sheet
