@@ -302,3 +302,9 @@ def test_every_chain_has_an_html_page(stem: str) -> None:
     answers = md[md.rindex("Answer") :].count(r"\boxed")
     tail = html[html.rindex("<h2>Answer</h2>") :] if answers else ""
     assert tail.count('class="eq"') == answers
+
+
+def test_a_stage_title_keeps_the_body_as_typed() -> None:
+    """The Hibbeler chain's stage read "Suitcase a falls through the height" (str.capitalize)."""
+    md = derive.render(derive.solve(derive.load("chain-hibbeler-15-58-suitcases")), "md")
+    assert "## Stage 1: Suitcase A falls through the height" in md

@@ -51,8 +51,8 @@ def fall(state: ChainState, i: int, st: dict) -> StageOutcome:
     out = state.define(i, st.get("result", f"v_{i}"), speed, units.VELOCITY)
     lhs = (HALF * m * v0**2, m * g * h) if v0 != 0 else (m * g * h,)
     data = Balance(lhs, (HALF * m * out.symbol**2,), speed, out, frozenset({m}), value=state.value(speed))
-    body = st.get("body", "the body")
-    return StageOutcome(i, "fall", f"{str(body).capitalize()} falls through the height", data, (out.name,))
+    body = str(st.get("body", "the body"))  # "suitcase A": the first letter up, the rest as typed
+    return StageOutcome(i, "fall", f"{body[:1].upper()}{body[1:]} falls through the height", data, (out.name,))
 
 
 def rise(state: ChainState, i: int, st: dict) -> StageOutcome:
