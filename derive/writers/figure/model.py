@@ -7,6 +7,7 @@ records from a solution, :mod:`.layout` places the labels, :mod:`.svg` and
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Callable
@@ -203,11 +204,16 @@ def head(x1: float, y1: float, x2: float, y2: float) -> list[Segment]:
 
 def arc_points(a: Arc, steps: int = 24) -> list[Point]:
     """Points along an arc, for drawing checks."""
+    return list(_arc_points(a, steps))
+
+
+@functools.lru_cache(maxsize=64)  # a figure's arcs are met by its layout, its bounds and its drawing
+def _arc_points(a: Arc, steps: int) -> tuple[Point, ...]:
     out = []
     for i in range(steps + 1):
         ang = math.radians(a.start + (a.end - a.start) * i / steps)
         out.append((a.x + a.r * math.cos(ang), a.y + a.r * math.sin(ang)))
-    return out
+    return tuple(out)
 
 
 def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
@@ -223,13 +229,17 @@ def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
 
 def segments(s: Shape) -> list[Segment]:
     """Every stroke of a shape but a body's circle, as straight segments."""
+    return list(_segments(s))
+
+
+@functools.lru_cache(maxsize=256)  # a figure's shapes are met by its layout and its bounds
+def _segments(s: Shape) -> tuple[Segment, ...]:
     if isinstance(s, (Axis, Arrow)):
-        return [((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2)]
+        return (((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2))
     if isinstance(s, Guide):
-        return [((s.x1, s.y1), (s.x2, s.y2))]
+        return (((s.x1, s.y1), (s.x2, s.y2)),)
     if isinstance(s, Surface):
-        return [((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s)]
+        return (((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s))
     if isinstance(s, Arc):
-        pts = arc_points(s)
-        return list(itertools.pairwise(pts))
-    return []
+        return tuple(itertools.pairwise(arc_points(s)))
+    return ()

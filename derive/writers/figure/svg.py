@@ -32,7 +32,8 @@ class _Canvas:
         return f"{(self.y1 - y) * PX:.1f}"
 
     def pts(self, points: list[tuple[float, float]]) -> str:
-        return " ".join(f"{self.x(px)},{self.y(py)}" for px, py in points)
+        x0, y1 = self.x0, self.y1  # :meth:`x` and :meth:`y` written out (an arc has 25 points)
+        return " ".join([f"{(px - x0) * PX:.1f},{(y1 - py) * PX:.1f}" for px, py in points])
 
 
 def _line(c: _Canvas, x1: float, y1: float, x2: float, y2: float, attrs: str) -> str:
