@@ -229,17 +229,17 @@ def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
 
 def segments(s: Shape) -> list[Segment]:
     """Every stroke of a shape but a body's circle, as straight segments."""
-    return list(_segments(s))
-
-
-@functools.lru_cache(maxsize=256)  # a figure's shapes are met by its layout and its bounds
-def _segments(s: Shape) -> tuple[Segment, ...]:
     if isinstance(s, (Axis, Arrow)):
-        return (((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2))
+        return [((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2)]
     if isinstance(s, Guide):
-        return (((s.x1, s.y1), (s.x2, s.y2)),)
+        return [((s.x1, s.y1), (s.x2, s.y2))]
+    if isinstance(s, (Surface, Arc)):
+        return list(_many_segments(s))
+    return []
+
+
+@functools.lru_cache(maxsize=64)  # a figure's arcs and walls are met by its layout and its bounds
+def _many_segments(s: Surface | Arc) -> tuple[Segment, ...]:
     if isinstance(s, Surface):
         return (((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s))
-    if isinstance(s, Arc):
-        return tuple(itertools.pairwise(arc_points(s)))
-    return ()
+    return tuple(itertools.pairwise(arc_points(s)))
