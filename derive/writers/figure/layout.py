@@ -85,18 +85,23 @@ def _box_hits_segment(box: tuple[float, float, float, float], seg: Segment) -> b
     (ax, ay), (bx, by) = seg
     dx, dy = bx - ax, by - ay
     lo, hi = 0.0, 1.0
+    # the four sides in turn: where p < 0 the segment enters (lo rises), where p > 0 it leaves
     for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
         if p == 0:
             if q < 0:
                 return False
-            continue
-        r = q / p
-        if p < 0:
-            lo = max(lo, r)
+        elif p < 0:
+            r = q / p
+            if r > lo:  # lo = max(lo, r)
+                lo = r
+                if lo > hi:
+                    return False
         else:
-            hi = min(hi, r)
-        if lo > hi:
-            return False
+            r = q / p
+            if r < hi:  # hi = min(hi, r)
+                hi = r
+                if lo > hi:
+                    return False
     return True
 
 
@@ -116,16 +121,6 @@ def _boxes_meet(a: tuple[float, float, float, float], b: tuple[float, float, flo
 
 def _grow(box: tuple[float, float, float, float], by: float) -> tuple[float, float, float, float]:
     return box[0] - by, box[1] - by, box[2] + by, box[3] + by
-
-
-def _group_hits(group: tuple, x0: float, y0: float, x1: float, y1: float) -> bool:
-    """True when a grown box meets one of a shape's strokes (``group``: their box, the strokes)."""
-    gx0, gy0, gx1, gy1, strokes = group
-    if gx0 <= x1 and x0 <= gx1 and gy0 <= y1 and y0 <= gy1:
-        for sx0, sy0, sx1, sy1, seg in strokes:
-            if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment((x0, y0, x1, y1), seg):
-                return True
-    return False
 
 
 class Board:
@@ -155,7 +150,7 @@ class Board:
         self.discs = [(b.x, b.y, b.r, b) for b in self.bodies]
         self.labels: list[Label] = []
         self.boxes: list[tuple[float, float, float, float]] = []  # the labels' boxes
-        self.last: tuple | None = None  # the group that met the last box tried: tried first
+        self.last: tuple | None = None  # the stroke that met the last box tried: tried first
 
     def add(self, label: Label) -> None:
         """A label placed: later labels keep clear of it."""
@@ -168,11 +163,13 @@ class Board:
 
     def _hit(self, x0: float, y0: float, x1: float, y1: float, home: Body | None) -> bool:
         """:meth:`hits` for the grown box (x0, y0, x1, y1): the likeliest and cheapest tests
-        first (a figure tries thousands of boxes): the strokes that met the box tried last,
+        first (a figure tries thousands of boxes): the stroke that met the box tried last,
         labels, bodies, strokes."""
         last = self.last
-        if last is not None and _group_hits(last, x0, y0, x1, y1):
-            return True
+        if last is not None:
+            sx0, sy0, sx1, sy1, seg = last
+            if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment((x0, y0, x1, y1), seg):
+                return True
         for a0, b0, a1, b1 in self.boxes:
             if x0 < a1 and a0 < x1 and y0 < b1 and b0 < y1:
                 return True
@@ -191,12 +188,12 @@ class Board:
                 or hypot(x1 - bx, y1 - by) > r
             ):
                 return True
-        for group in self.groups:  # _group_hits written out: it is called most of all
-            gx0, gy0, gx1, gy1, strokes = group
-            if gx0 <= x1 and x0 <= gx1 and gy0 <= y1 and y0 <= gy1 and group is not last:
-                for sx0, sy0, sx1, sy1, seg in strokes:
+        for gx0, gy0, gx1, gy1, strokes in self.groups:
+            if gx0 <= x1 and x0 <= gx1 and gy0 <= y1 and y0 <= gy1:
+                for stroke in strokes:
+                    sx0, sy0, sx1, sy1, seg = stroke
                     if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment((x0, y0, x1, y1), seg):
-                        self.last = group
+                        self.last = stroke
                         return True
         return False
 
