@@ -30,14 +30,23 @@ def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
     return exact_latex(value, digits, 1)
 
 
-def _places(claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int) -> int:
-    """Places after the point for a block, so that its sums add up (as printing does)."""
+def _places(
+    claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int, seen: dict | None = None
+) -> int:
+    """Places after the point for a block, so that its sums add up (as printing does);
+    ``seen``: the places of the sums met before (a block printed again has the same)."""
     sums = []
     for terms_fn, total_fn in claims:
         terms = [float_decimal(t) for t in terms_fn(*args)]
         sums.append((terms, float_decimal(total_fn(*args))))
+    key = (digits, extra, *((*terms, None, total) for terms, total in sums))
+    if seen is not None and key in seen:
+        return seen[key]
     # a compiled page shows every line, so a variant may carry up to three more places
-    return places_that_add_up(sums, digits, extra, more=3)
+    places = places_that_add_up(sums, digits, extra, more=3)
+    if seen is not None:
+        seen[key] = places
+    return places
 
 
 def _allowed(x: float, digits: int | None, extra: int) -> int:
@@ -75,7 +84,8 @@ def slot_texts(
     d = digits if digits is not None else p.digits
     args = [_float(variant.values[n]) for n in compiled.names]
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
-    places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
+    seen: dict = {}
+    places = {b: _places(c, args, d, 1, seen) for b, c in compiled.claim_fns.items()}
     memo = _memo(compiled)
     texts = {
         compiled.givens[n].symbol: memo.text(given_text, compiled.givens[n], variant.values[n], d)
