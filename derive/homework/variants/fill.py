@@ -35,13 +35,11 @@ def _places(
 ) -> int:
     """Places after the point for a block, so that its sums add up (as printing does);
     ``seen``: the places of the sums met before (a block printed again has the same)."""
-    sums = []
-    for terms_fn, total_fn in claims:
-        terms = [float_decimal(t) for t in terms_fn(*args)]
-        sums.append((terms, float_decimal(total_fn(*args))))
-    key = (digits, extra, *((*terms, None, total) for terms, total in sums))
+    found = [(tuple(terms_fn(*args)), total_fn(*args)) for terms_fn, total_fn in claims]
+    key = (digits, extra, *found)  # (-0.0 and 0.0 alike: a zero is left out either way)
     if seen is not None and key in seen:
         return seen[key]
+    sums = [([float_decimal(t) for t in terms], float_decimal(total)) for terms, total in found]
     # a compiled page shows every line, so a variant may carry up to three more places
     places = places_that_add_up(sums, digits, extra, more=3)
     if seen is not None:
@@ -152,14 +150,14 @@ def _slot_text(
     slot = compiled.book.slots[part]
     kind = slot.kind
     expr = memo.exprs[part]  # slot.expr
-    if kind.startswith("text"):  # a statement's {name} or {|name|}
-        g = by_symbol[expr]
-        return memo.text(statement_number, g, values[g.name], d, kind == "text:abs")
     if kind == "given":
         text = texts[expr]
         if expr in angles:
             text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
         return rf"\left({text}\right)" if text.startswith("-") else text
+    if kind.startswith("text"):  # a statement's {name} or {|name|}
+        g = by_symbol[expr]
+        return memo.text(statement_number, g, values[g.name], d, kind == "text:abs")
     if kind.endswith("number") and isinstance(expr, sympy.Symbol) and expr in texts:
         text = texts[expr]  # a given's own number, as written
         neg = text.startswith("-")
