@@ -92,10 +92,9 @@ def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = 
     '-1.109'
     """
     d = to_decimal(value)
-    figures = figures_for(d, digits) + extra
     if d == 0:
         return "0"
-    r = _round_sig(d, figures)
+    r = _round_sig(d, figures_for(d, digits) + extra)
     if -4 <= r.adjusted() < 6:
         text = format(r, "f")
     else:

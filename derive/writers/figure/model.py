@@ -166,9 +166,9 @@ class Figure:
                 xs += [s.x - s.r, s.x + s.r]
                 ys += [s.y - s.r, s.y + s.r]
             else:
-                for a, b in segments(s):
-                    xs += [a[0], b[0]]
-                    ys += [a[1], b[1]]
+                for (ax, ay), (bx, by) in segments(s):
+                    xs += (ax, bx)
+                    ys += (ay, by)
         for lab in self.labels:
             x0, y0, x1, y1 = lab.box
             xs += [x0, x1]
