@@ -165,6 +165,10 @@ class Figure:
             if isinstance(s, Body):
                 xs += [s.x - s.r, s.x + s.r]
                 ys += [s.y - s.r, s.y + s.r]
+            elif isinstance(s, Arc):  # its points: each inner one ends two of its strokes
+                for px, py in _arc_points(s, 24):
+                    xs.append(px)
+                    ys.append(py)
             else:
                 for (ax, ay), (bx, by) in segments(s):
                     xs += (ax, bx)
