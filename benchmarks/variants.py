@@ -3,6 +3,11 @@ re-solving each variant with SymPy, and peak memory as the count grows.
 
     python benchmarks/variants.py [--count 1000] [--resolve 20]
 
+Both sides write the same page: a variant's worked solution in Markdown with its figures
+before and after the impact (``variants.fill`` draws each variant's own; the re-solve
+baseline is ``derive.render(derive.solve(...), "md")`` of the problem file with the
+variant's numbers written in, figures on, as a re-solved variant's page is).
+
 Its last line reads ``variants/s: md=<n> json=<n> resolve=<n> ratio=<md/resolve>``.
 """
 
@@ -69,7 +74,7 @@ def main() -> None:
     base = bundled()[PROBLEM].read_text(encoding="utf-8")
     t0 = time.perf_counter()
     for v in chosen[: args.resolve]:
-        derive.render(derive.solve(loads(resolve_text(base, v.values), path="v.toml")), "md", figures=False)
+        derive.render(derive.solve(loads(resolve_text(base, v.values), path="v.toml")), "md")
     t_resolve = time.perf_counter() - t0
 
     md_rate = args.count / t_md

@@ -7,7 +7,7 @@ of figures instead. Trailing zeros are kept (8.40, not 8.4).
 
 from __future__ import annotations
 
-from decimal import ROUND_FLOOR, ROUND_HALF_UP, Decimal, localcontext
+from decimal import ROUND_FLOOR, ROUND_HALF_UP, Context, Decimal
 
 import sympy
 
@@ -31,17 +31,25 @@ def to_decimal(value: sympy.Expr | int | float | str | Decimal) -> Decimal:
     return Decimal(text)
 
 
+#: The context numbers are rounded in: the default one, carrying more digits than any
+#: number here (made once: a variant's page rounds hundreds of numbers).
+_ROUNDING = Context(prec=WORKING_PRECISION + 10)
+#: 1 and 2 times the powers of ten met most (a quantum to round to, the bound of a leading 1).
+_ONES = {e: Decimal((0, (1,), e)) for e in range(-60, 61)}
+_TWOS = {e: Decimal((0, (2,), e)) for e in range(-60, 61)}
+
+
 def _round_sig(d: Decimal, figures: int) -> Decimal:
     """``d`` rounded half up to ``figures`` significant figures."""
     if d == 0:
         return Decimal(0).quantize(Decimal(1).scaleb(-(figures - 1)))
-    with localcontext() as ctx:
-        ctx.prec = WORKING_PRECISION + 10
-        exp = d.adjusted() - figures + 1
-        r = d.quantize(Decimal(1).scaleb(exp), rounding=ROUND_HALF_UP)
-        if r.adjusted() != d.adjusted():  # 9.995 -> 10.0: one figure fewer after the point
-            r = r.quantize(Decimal(1).scaleb(exp + 1), rounding=ROUND_HALF_UP)
-        return r
+    adjusted = d.adjusted()
+    exp = adjusted - figures + 1
+    r = d.quantize(_ONES.get(exp) or Decimal((0, (1,), exp)), ROUND_HALF_UP, _ROUNDING)
+    if r.adjusted() != adjusted:  # 9.995 -> 10.0: one figure fewer after the point
+        exp += 1
+        r = r.quantize(_ONES.get(exp) or Decimal((0, (1,), exp)), ROUND_HALF_UP, _ROUNDING)
+    return r
 
 
 def figures_for(value: Decimal, digits: int | None) -> int:
@@ -53,6 +61,10 @@ def figures_for(value: Decimal, digits: int | None) -> int:
         return digits
     if value == 0:
         return 3
+    if value.is_finite():  # the leading digit of |value| (at the context's precision) is 1
+        a = abs(value)
+        adjusted = a.adjusted()
+        return 4 if a < (_TWOS.get(adjusted) or Decimal((0, (2,), adjusted))) else 3
     leading = abs(value).scaleb(-abs(value).adjusted()).to_integral_value(rounding=ROUND_FLOOR)
     return 4 if leading == 1 else 3
 
@@ -80,10 +92,9 @@ def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = 
     '-1.109'
     """
     d = to_decimal(value)
-    figures = figures_for(d, digits) + extra
     if d == 0:
         return "0"
-    r = _round_sig(d, figures)
+    r = _round_sig(d, figures_for(d, digits) + extra)
     if -4 <= r.adjusted() < 6:
         text = format(r, "f")
     else:
@@ -92,15 +103,28 @@ def format_number(value: sympy.Expr | Decimal | int | str, digits: int | None = 
     return text
 
 
+#: The contexts :func:`format_fixed` rounds in, by precision.
+_FIXED: dict[int, Context] = {}
+
+
 def format_fixed(value: sympy.Expr | Decimal, decimals: int) -> str:
     """``value`` rounded half up to ``decimals`` places after the point."""
+    return format(_fixed(value, decimals), "f")
+
+
+def _fixed(value: sympy.Expr | Decimal, decimals: int) -> Decimal:
+    """:func:`format_fixed`'s number, not yet written out."""
     d = to_decimal(value)
-    with localcontext() as ctx:  # enough digits for numbers far apart in size
-        ctx.prec = max(WORKING_PRECISION, d.adjusted() + decimals + 5)
-        r = d.quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_HALF_UP)
+    prec = max(WORKING_PRECISION, d.adjusted() + decimals + 5)  # enough digits for numbers far apart in size
+    ctx = _FIXED.get(prec)
+    if ctx is None:
+        ctx = Context(prec=prec)
+        if len(_FIXED) < 64:
+            _FIXED[prec] = ctx
+    r = d.quantize(_ONES.get(-decimals) or Decimal((0, (1,), -decimals)), ROUND_HALF_UP, ctx)
     if r == 0:
         r = abs(r)
-    return format(r, "f")
+    return r
 
 
 def shown_figures(text: str) -> int:
@@ -142,23 +166,43 @@ def places_that_add_up(
     biggest = max((abs(x) for x in numbers), default=Decimal(0))
     text = format_number(biggest, digits, extra=extra) if biggest else ""
     start = decimals_of(text) if text and "e" not in text else 2
+    shown = [_places_shown(x, digits, extra) for x in numbers if x != 0]  # (at +extra, at the rule)
+    ruled = [at_extra for at_extra, _ in shown]
     if each:  # every number keeps its figures (21.60 - 14.69 = 6.91), the smallest deciding
-        start = max((decimals_of(format_number(x, digits, extra=extra)) for x in numbers if x != 0), default=start)
+        start = max(ruled, default=start)
     # no number may show more figures than an intermediate may (290.0185 in a 5-figure
     # solution), nor fewer than the answer's (0.00 for 0.0042)
-    shown = [x for x in numbers if x != 0]
-    most = min((decimals_of(format_number(x, digits, extra=extra)) for x in shown), default=start)
-    least = max((decimals_of(format_number(x, digits, extra=0)) for x in shown), default=start)
+    most = min(ruled, default=start)
+    least = max((at_rule for _, at_rule in shown), default=start)
     start = max(start, least)
     for places in range(start, start + more + 1):
         if places > most:
             break
-        if all(
-            sum(Decimal(format_fixed(t, places)) for t in terms) == Decimal(format_fixed(total, places))
-            for terms, total in sums
-        ):
+        # the rounded numbers as the text :func:`format_fixed` writes them reads back
+        if all(sum(_fixed(t, places) for t in terms) == _fixed(total, places) for terms, total in sums):
             return places
     return None
+
+
+def _places_shown(x: Decimal, digits: int | None, extra: int) -> tuple[int, int]:
+    """``decimals_of(format_number(x, digits, extra=k))`` for k = ``extra`` and 0, x not 0,
+    read off the rounding (its exponent) where the text would be plain notation."""
+    if not x.is_finite():
+        return decimals_of(format_number(x, digits, extra=extra)), decimals_of(format_number(x, digits))
+    figures = figures_for(x, digits)
+    out = []
+    adjusted = x.adjusted()
+    for k in (extra, 0):
+        exp = adjusted - (figures + k) + 1  # as _round_sig rounds
+        r = x.quantize(_ONES.get(exp) or Decimal((0, (1,), exp)), ROUND_HALF_UP, _ROUNDING)
+        if r.adjusted() != adjusted:
+            exp += 1
+            r = r.quantize(_ONES.get(exp) or Decimal((0, (1,), exp)), ROUND_HALF_UP, _ROUNDING)
+        if -4 <= r.adjusted() < 6:  # format(r, "f"): -exp places after the point
+            out.append(-exp if exp < 0 else 0)
+        else:
+            out.append(decimals_of(format_number(x, digits, extra=k)))
+    return out[0], out[1]
 
 
 def short_decimal(value: sympy.Expr) -> bool:

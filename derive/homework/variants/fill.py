@@ -4,8 +4,9 @@ in; its answers and givens; the statement alone."""
 from __future__ import annotations
 
 import dataclasses
-import math
+import functools
 import re
+import weakref
 from collections.abc import Callable, Iterator
 from decimal import Decimal
 from typing import Any
@@ -15,6 +16,8 @@ import sympy
 from derive.homework.variants import chain
 from derive.homework.variants.chain import ChainCompiled
 from derive.homework.variants.compile import FIGURE, Compiled
+from derive.homework.variants.figure_numbers import FigureNumbers
+from derive.homework.variants.pagetext import drop_lines, sub_opened
 from derive.homework.variants.record import Variant
 from derive.numbers import float_decimal, format_number, format_places, places_that_add_up
 from derive.problem import Given
@@ -30,14 +33,21 @@ def given_text(g: Given, value: sympy.Expr, digits: int | None) -> str:
     return exact_latex(value, digits, 1)
 
 
-def _places(claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int) -> int:
-    """Places after the point for a block, so that its sums add up (as printing does)."""
-    sums = []
-    for terms_fn, total_fn in claims:
-        terms = [float_decimal(t) for t in terms_fn(*args)]
-        sums.append((terms, float_decimal(total_fn(*args))))
+def _places(
+    claims: list[tuple[object, object]], args: list[float], digits: int | None, extra: int, seen: dict | None = None
+) -> int:
+    """Places after the point for a block, so that its sums add up (as printing does);
+    ``seen``: the places of the sums met before (a block printed again has the same)."""
+    found = [(tuple(terms_fn(*args)), total_fn(*args)) for terms_fn, total_fn in claims]
+    key = (digits, extra, *found)  # (-0.0 and 0.0 alike: a zero is left out either way)
+    if seen is not None and key in seen:
+        return seen[key]
+    sums = [([float_decimal(t) for t in terms], float_decimal(total)) for terms, total in found]
     # a compiled page shows every line, so a variant may carry up to three more places
-    return places_that_add_up(sums, digits, extra, more=3)
+    places = places_that_add_up(sums, digits, extra, more=3)
+    if seen is not None:
+        seen[key] = places
+    return places
 
 
 def _allowed(x: float, digits: int | None, extra: int) -> int:
@@ -46,7 +56,9 @@ def _allowed(x: float, digits: int | None, extra: int) -> int:
 
 
 def _number(x: float, digits: int | None, extra: int, integers: bool, places: int | None) -> str:
-    if integers and abs(x) < 1e9:
+    # where x is exact at 0, 1 or 2 places, x * 100 is within a millionth of a whole number
+    # (the test below allows a billionth at each), so other numbers skip the test
+    if integers and abs(x) < 1e9 and abs(x * 100 - round(x * 100)) < 1e-6 * max(1.0, abs(x * 100)):
         for k in range(3):  # an exact short number (20, 7.5, 0.25), as a given is printed
             scaled = x * 10**k
             if abs(scaled - round(scaled)) < 1e-9 * max(1.0, abs(scaled)):
@@ -71,15 +83,58 @@ def slot_texts(
     places after the point of each block whose sums must add up (None: they cannot)."""
     p = compiled.problem
     d = digits if digits is not None else p.digits
-    args = [float(variant.values[n]) for n in compiled.names]
+    args = [_float(variant.values[n]) for n in compiled.names]
     numbers = compiled.slot_fn(*args) if compiled.slot_fn is not None else []
-    places = {b: _places(c, args, d, 1) for b, c in compiled.claim_fns.items()}
-    texts = {compiled.givens[n].symbol: given_text(compiled.givens[n], variant.values[n], d) for n in compiled.names}
+    seen: dict = {}
+    places = {b: _places(c, args, d, 1, seen) for b, c in compiled.claim_fns.items()}
+    memo = _memo(compiled)
+    texts = {
+        compiled.givens[n].symbol: memo.text(given_text, compiled.givens[n], variant.values[n], d)
+        for n in compiled.names
+    }
     angles = {compiled.givens[n].symbol for n in compiled.names if compiled.givens[n].unit == "deg"}
     values = variant.values
+    by_symbol: dict[sympy.Symbol, Given] = {}
+    for g in compiled.givens.values():
+        by_symbol.setdefault(g.symbol, g)
     return {
-        i: _slot_text(compiled, i, numbers, texts, angles, places, d, values) for i in range(len(compiled.book.slots))
+        i: _slot_text(compiled, i, numbers, texts, angles, places, d, values, by_symbol, memo)
+        for i in range(len(compiled.book.slots))
     }, places
+
+
+class _Memo:
+    """What a compiled page's variants share: its slots' expressions (a given's symbol as the
+    given's own object: an equal symbol made apart compares slowly) and the texts of the
+    drawn givens met so far (a value recurs in many variants)."""
+
+    def __init__(self, compiled: Compiled) -> None:
+        own = {g.symbol: g.symbol for g in compiled.givens.values()}
+        self.exprs = [own.get(s.expr, s.expr) for s in compiled.book.slots]
+        self.texts: dict[tuple, str] = {}
+
+    def text(self, write: Callable[..., str], g: Given, value: sympy.Expr, *more: Any) -> str:
+        """``write(g, value, *more)``, kept (the same given, value and figures write the same)."""
+        key = (write, g.name, type(value), value, *more)
+        text = self.texts.get(key)
+        if text is None:
+            text = write(g, value, *more)
+            if len(self.texts) < 20_000:
+                self.texts[key] = text
+        return text
+
+
+_MEMOS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()  # by the page's slot book
+
+
+def _memo(compiled: Compiled) -> _Memo:
+    memo = _MEMOS.get(compiled.book)
+    if memo is None:
+        memo = _MEMOS[compiled.book] = _Memo(compiled)
+    return memo
+
+
+_float = functools.lru_cache(maxsize=4096)(float)  # a drawn value as a float (SymPy's is slow)
 
 
 def _slot_text(
@@ -91,20 +146,23 @@ def _slot_text(
     places: dict[int, int | None],
     d: int | None,
     values: dict[str, sympy.Expr],
+    by_symbol: dict[sympy.Symbol, Given],
+    memo: _Memo,
 ) -> str:
     """One slot's text: a given as written, or a number at the figures its place shows."""
     slot = compiled.book.slots[part]
     kind = slot.kind
-    if kind.startswith("text"):  # a statement's {name} or {|name|}
-        g = next(g for g in compiled.givens.values() if g.symbol == slot.expr)
-        return statement_number(g, values[g.name], d, magnitude=kind == "text:abs")
+    expr = memo.exprs[part]  # slot.expr
     if kind == "given":
-        text = texts[slot.expr]
-        if slot.expr in angles:
+        text = texts[expr]
+        if expr in angles:
             text += r"^\circ"  # cos 45°, as the substitution lines of a solution write it
         return rf"\left({text}\right)" if text.startswith("-") else text
-    if isinstance(slot.expr, sympy.Symbol) and slot.expr in texts and kind.endswith("number"):
-        text = texts[slot.expr]  # a given's own number, as written
+    if kind.startswith("text"):  # a statement's {name} or {|name|}
+        g = by_symbol[expr]
+        return memo.text(statement_number, g, values[g.name], d, kind == "text:abs")
+    if kind.endswith("number") and isinstance(expr, sympy.Symbol) and expr in texts:
+        text = texts[expr]  # a given's own number, as written
         neg = text.startswith("-")
         role = kind.partition(":")[0] if ":" in kind else ""
         if role.startswith("signed"):
@@ -131,7 +189,7 @@ def fill(compiled: Compiled | ChainCompiled, variant: Variant, fmt: str = "md", 
         return chain.chain_fill(compiled, variant, fmt, digits)
     texts, places = slot_texts(compiled, variant, digits)
     parts = compiled.templates["tex" if fmt in ("tex", "pdf") else "md"]
-    page = "".join(texts[part] if isinstance(part, int) else part for part in parts)
+    page = "".join([texts[part] if isinstance(part, int) else part for part in parts])
     page = _optional_sides(_optional_lines(page, places))
     return _figures(compiled, variant, page, fmt)
 
@@ -151,7 +209,7 @@ def _figures(compiled: Compiled, variant: Variant, page: str, fmt: str) -> str:
         page = page.replace(FIGURE.format("", when), figure.to_tikz(drawn) if tex else figure.to_svg(drawn))
         note = figure_note(drawn, tex)
         marker = FIGURE.format("NOTE", when)
-        page = page.replace(marker, note) if note else re.sub(rf"^.*{marker}.*\n", "", page, flags=re.M)
+        page = page.replace(marker, note) if note else drop_lines(page, marker)
     return page
 
 
@@ -164,43 +222,10 @@ def drawing(compiled: Compiled, variant: Variant, when: str = "before") -> Any:
     if compiled.figure_numbers is None:
         compiled.figure_numbers = FigureNumbers(tuple(compiled.givens[n].symbol for n in compiled.names))
     numbers = compiled.figure_numbers
-    args = [float(variant.values[n]) for n in compiled.names]
+    args = [_float(variant.values[n]) for n in compiled.names]
     return figure.describe(
         compiled.solution, when == "after", values=values, numbers=lambda expr, known: numbers(expr, known, args)
     )
-
-
-class FigureNumbers:
-    """A figure's numbers for the variants of one problem: each expression the figure
-    evaluates is compiled once to a float function of the varied givens, read as
-    :func:`derive.writers.figure.frame.number` reads it (the numbers known put in at once,
-    any other symbol taken as 1). Where the function cannot give a number (a root of a
-    negative number), the expression is evaluated as a figure of a solve does."""
-
-    def __init__(self, varied: tuple[sympy.Symbol, ...]) -> None:
-        self.dummies = {s: sympy.Dummy(s.name) for s in varied}
-        self.fns: dict[tuple, Any] = {}
-
-    def __call__(self, expr: object, known: Any, args: list[float]) -> float | None:
-        from derive.writers.figure.frame import number
-
-        if expr is None:
-            return None
-        key = (expr, frozenset(k for k in known if k not in self.dummies))
-        fn = self.fns.get(key)
-        if fn is None:
-            fn = self.fns[key] = self._compile(expr, known)
-        try:
-            z = complex(fn(*args))
-        except (ArithmeticError, ValueError, TypeError):
-            return number(expr, known)
-        return z.real if abs(z.imag) < 1e-9 and math.isfinite(z.real) else None
-
-    def _compile(self, expr: object, known: Any) -> Any:
-        e = sympy.sympify(expr).xreplace({k: self.dummies.get(k, v) for k, v in known.items()})
-        inner = set(self.dummies.values())
-        e = e.xreplace({s: sympy.Integer(1) for s in e.free_symbols if s not in inner})
-        return sympy.lambdify(tuple(self.dummies.values()), e, modules=["math"])
 
 
 def _optional_lines(page: str, places: dict[int, int | None]) -> str:
@@ -208,13 +233,15 @@ def _optional_lines(page: str, places: dict[int, int | None]) -> str:
     numbers add up at fixed places, and dropped with its display where they do not."""
     from derive.writers.view import OPTIONAL_BEGIN, OPTIONAL_END
 
+    if OPTIONAL_BEGIN not in page:
+        return page  # nothing optional: the substitutions below would leave it as it is
     begin, end = re.escape(OPTIONAL_BEGIN), re.escape(OPTIONAL_END)
 
     def drop(m: re.Match[str]) -> str:
         return "" if places.get(int(m.group(1))) is None else m.group(0)
 
     display = rf"(?:\$\$\n|\\begin\{{equation\*\}}\n){begin}(\d+)%.*?{end}.*?(?:\$\$\n\n|\\end\{{equation\*\}}\n)"
-    page = re.sub(display, drop, page, flags=re.S)
+    page = sub_opened(re.compile(display, flags=re.S), drop, page, OPTIONAL_BEGIN, ("$$\n", "\\begin{equation*}\n"))
     return re.sub(rf"{begin}\d+%(.*?){end}", r"\1", page, flags=re.S)
 
 

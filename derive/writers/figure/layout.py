@@ -8,6 +8,7 @@ is free on paper is free in the drawing too.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
@@ -67,6 +68,7 @@ def _glyphs(text: str) -> float:
     return w
 
 
+@functools.lru_cache(maxsize=256)  # a figure's labels are the same few texts
 def extent(text: str, math_: bool = True, tail: str = "") -> tuple[float, float]:
     """The estimated width and height (cm) of a label."""
     if not math_:
@@ -83,18 +85,23 @@ def _box_hits_segment(box: tuple[float, float, float, float], seg: Segment) -> b
     (ax, ay), (bx, by) = seg
     dx, dy = bx - ax, by - ay
     lo, hi = 0.0, 1.0
+    # the four sides in turn: where p < 0 the segment enters (lo rises), where p > 0 it leaves
     for p, q in ((-dx, ax - x0), (dx, x1 - ax), (-dy, ay - y0), (dy, y1 - ay)):
         if p == 0:
             if q < 0:
                 return False
-            continue
-        r = q / p
-        if p < 0:
-            lo = max(lo, r)
+        elif p < 0:
+            r = q / p
+            if r > lo:  # lo = max(lo, r)
+                lo = r
+                if lo > hi:
+                    return False
         else:
-            hi = min(hi, r)
-        if lo > hi:
-            return False
+            r = q / p
+            if r < hi:  # hi = min(hi, r)
+                hi = r
+                if lo > hi:
+                    return False
     return True
 
 
@@ -121,26 +128,84 @@ class Board:
 
     def __init__(self, shapes: Iterable[Shape]) -> None:
         shapes = list(shapes)
-        self.strokes: list[tuple[float, float, float, float, Segment]] = [
-            (min(a[0], b[0]), min(a[1], b[1]), max(a[0], b[0]), max(a[1], b[1]), (a, b))
-            for s in shapes
-            for a, b in segments(s)
-        ]
+        self.strokes: list[tuple[float, float, float, float, Segment]] = []
+        #: The strokes shape by shape, each group with its bounding box first: a box that
+        #: misses a group's box misses each of its strokes (an arc is 24 of them).
+        self.groups: list[tuple[float, float, float, float, list[tuple[float, float, float, float, Segment]]]] = []
+        inf = math.inf
+        for s in shapes:
+            group = []
+            gx0, gy0, gx1, gy1 = inf, inf, -inf, -inf  # the group's box: no NaN in it
+            for a, b in segments(s):  # min and max written out (as they compare, NaN included)
+                (ax, ay), (bx, by) = a, b
+                sx0, sy0 = (bx if bx < ax else ax), (by if by < ay else ay)
+                sx1, sy1 = (bx if bx > ax else ax), (by if by > ay else ay)
+                group.append((sx0, sy0, sx1, sy1, (a, b)))
+                gx0, gy0 = (sx0 if sx0 < gx0 else gx0), (sy0 if sy0 < gy0 else gy0)
+                gx1, gy1 = (sx1 if sx1 > gx1 else gx1), (sy1 if sy1 > gy1 else gy1)
+            if group:
+                self.strokes += group
+                self.groups.append((gx0, gy0, gx1, gy1, group))
         self.bodies: list[Body] = [s for s in shapes if isinstance(s, Body)]
+        self.discs = [(b.x, b.y, b.r, b) for b in self.bodies]
         self.labels: list[Label] = []
+        self.boxes: list[tuple[float, float, float, float]] = []  # the labels' boxes
+        self.last: tuple | None = None  # the stroke that met the last box tried: tried first
+
+    def add(self, label: Label) -> None:
+        """A label placed: later labels keep clear of it."""
+        self.labels.append(label)
+        self.boxes.append(label.box)
 
     def hits(self, box: tuple[float, float, float, float], home: Body | None) -> bool:
-        """True when a label's box (clearance included) touches anything drawn: ``any(clashes)``,
-        without a generator (a figure tries thousands of boxes)."""
-        x0, y0, x1, y1 = grown = _grow(box, GAP)
-        for sx0, sy0, sx1, sy1, seg in self.strokes:
-            if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment(grown, seg):
+        """True when a label's box (clearance included) touches anything drawn: ``any(clashes)``."""
+        return self._hit(box[0] - GAP, box[1] - GAP, box[2] + GAP, box[3] + GAP, home)
+
+    def _hit(self, x0: float, y0: float, x1: float, y1: float, home: Body | None) -> bool:
+        """:meth:`hits` for the grown box (x0, y0, x1, y1): the likeliest and cheapest tests
+        first (a figure tries thousands of boxes): the stroke that met the box tried last,
+        labels, bodies, strokes."""
+        last = self.last
+        if last is not None:
+            sx0, sy0, sx1, sy1, seg = last
+            if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment((x0, y0, x1, y1), seg):
                 return True
-        for b in self.bodies:
-            where = _box_vs_disc(grown, b)
-            if where == "across" or (where == "inside" and b is not home):
+        for a0, b0, a1, b1 in self.boxes:
+            if x0 < a1 and a0 < x1 and y0 < b1 and b0 < y1:
                 return True
-        return any(_boxes_meet(grown, lab.box) for lab in self.labels)
+        hypot = math.hypot
+        for bx, by, r, b in self.discs:
+            nx = x0 if x0 > bx else bx  # min(max(bx, x0), x1), written out
+            nx = x1 if x1 < nx else nx
+            ny = y0 if y0 > by else by
+            ny = y1 if y1 < ny else ny
+            if hypot(nx - bx, ny - by) >= r:
+                continue  # outside
+            if b is not home or (  # inside or across another body, or across its own
+                hypot(x0 - bx, y0 - by) > r
+                or hypot(x0 - bx, y1 - by) > r
+                or hypot(x1 - bx, y0 - by) > r
+                or hypot(x1 - bx, y1 - by) > r
+            ):
+                return True
+        for gx0, gy0, gx1, gy1, strokes in self.groups:
+            if gx0 <= x1 and x0 <= gx1 and gy0 <= y1 and y0 <= gy1:
+                for stroke in strokes:
+                    sx0, sy0, sx1, sy1, seg = stroke
+                    if sx0 <= x1 and x0 <= sx1 and sy0 <= y1 and y0 <= sy1 and _box_hits_segment((x0, y0, x1, y1), seg):
+                        self.last = stroke
+                        return True
+        return False
+
+    def first_free(self, points: Iterable[Point], w: float, h: float, home: Body | None) -> Point | None:
+        """The first of ``points`` (centres) where a w x h label hits nothing, else None."""
+        hw, hh = w / 2, h / 2
+        hit = self._hit
+        for cx, cy in points:
+            # the box (cx - w / 2, ...) grown by the clearance, as :meth:`hits` grows it
+            if not hit(cx - hw - GAP, cy - hh - GAP, cx + hw + GAP, cy + hh + GAP, home):
+                return cx, cy
+        return None
 
     def clashes(self, box: tuple[float, float, float, float], home: Body | None) -> Iterator[bool]:
         """For each thing drawn, whether a label's box (clearance included) touches it."""
@@ -161,6 +226,8 @@ def candidates(spec: Spec, w: float, h: float) -> Iterable[Point]:
         for k in (0.0, 0.45, 0.55):
             for ux, uy in ((0, 1), (0, -1), (-1, 0), (1, 0), *AROUND):
                 yield b.x + k * b.r * ux, b.y + k * b.r * uy
+                if not k:
+                    break  # the centre, once: every direction gives it
     for d in DISTANCES:
         for (px, py), prefer in spec.anchors:
             for ux, uy in prefer:
@@ -173,16 +240,13 @@ def place(specs: Sequence[Spec], shapes: Iterable[Shape]) -> tuple[Label, ...]:
     board = Board(shapes)
     for spec in specs:
         w, h = extent(spec.text, spec.math, spec.tail)
-        tried = []
-        for cx, cy in candidates(spec, w, h):
-            box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
-            if not board.hits(box, spec.home):
-                break
-            tried.append((cx, cy))
+        free = board.first_free(candidates(spec, w, h), w, h, spec.home)
+        if free is not None:
+            cx, cy = free
         else:  # nowhere free: the candidate that touches fewest things
             cx, cy = min(
-                tried,
+                candidates(spec, w, h),
                 key=lambda c: sum(board.clashes((c[0] - w / 2, c[1] - h / 2, c[0] + w / 2, c[1] + h / 2), spec.home)),
             )
-        board.labels.append(Label(spec.text, cx, cy, w, h, spec.role, spec.math, spec.tail))
+        board.add(Label(spec.text, cx, cy, w, h, spec.role, spec.math, spec.tail))
     return tuple(board.labels)

@@ -7,6 +7,7 @@ records from a solution, :mod:`.layout` places the labels, :mod:`.svg` and
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from collections.abc import Callable
@@ -164,10 +165,14 @@ class Figure:
             if isinstance(s, Body):
                 xs += [s.x - s.r, s.x + s.r]
                 ys += [s.y - s.r, s.y + s.r]
+            elif isinstance(s, Arc):  # its points: each inner one ends two of its strokes
+                for px, py in _arc_points(s, 24):
+                    xs.append(px)
+                    ys.append(py)
             else:
-                for a, b in segments(s):
-                    xs += [a[0], b[0]]
-                    ys += [a[1], b[1]]
+                for (ax, ay), (bx, by) in segments(s):
+                    xs += (ax, bx)
+                    ys += (ay, by)
         for lab in self.labels:
             x0, y0, x1, y1 = lab.box
             xs += [x0, x1]
@@ -203,11 +208,16 @@ def head(x1: float, y1: float, x2: float, y2: float) -> list[Segment]:
 
 def arc_points(a: Arc, steps: int = 24) -> list[Point]:
     """Points along an arc, for drawing checks."""
+    return list(_arc_points(a, steps))
+
+
+@functools.lru_cache(maxsize=64)  # a figure's arcs are met by its layout, its bounds and its drawing
+def _arc_points(a: Arc, steps: int) -> tuple[Point, ...]:
     out = []
     for i in range(steps + 1):
         ang = math.radians(a.start + (a.end - a.start) * i / steps)
         out.append((a.x + a.r * math.cos(ang), a.y + a.r * math.sin(ang)))
-    return out
+    return tuple(out)
 
 
 def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
@@ -227,9 +237,13 @@ def segments(s: Shape) -> list[Segment]:
         return [((s.x1, s.y1), (s.x2, s.y2)), *head(s.x1, s.y1, s.x2, s.y2)]
     if isinstance(s, Guide):
         return [((s.x1, s.y1), (s.x2, s.y2))]
-    if isinstance(s, Surface):
-        return [((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s)]
-    if isinstance(s, Arc):
-        pts = arc_points(s)
-        return list(itertools.pairwise(pts))
+    if isinstance(s, (Surface, Arc)):
+        return list(_many_segments(s))
     return []
+
+
+@functools.lru_cache(maxsize=64)  # a figure's arcs and walls are met by its layout and its bounds
+def _many_segments(s: Surface | Arc) -> tuple[Segment, ...]:
+    if isinstance(s, Surface):
+        return (((s.x1, s.y1), (s.x2, s.y2)), *hatch_ticks(s))
+    return tuple(itertools.pairwise(arc_points(s)))

@@ -116,9 +116,22 @@ def speed_words(solution: Solution, key: str, speed: float, values: Mapping) -> 
     """A drawn speed in words for a caption ("0.2 m/s"), or "" when it is a symbol's
     (drawn as if each symbol were 1, so its number means nothing to the reader)."""
     known = _known(solution, values)
-    if any(sympy.sympify(c).xreplace(known).free_symbols for c in _components(solution)[key] if c is not None):
+    if any(_symbolic(c, known) for c in _components(solution)[key] if c is not None):
         return ""
     return f"{Decimal(f'{speed:.3g}').normalize():f} {working_unit(solution.problem, 'velocity')}"
+
+
+def _symbolic(expr: object, known: Mapping) -> bool:
+    """True when ``expr`` with the numbers ``known`` put in still has a symbol in it. Where each
+    of its symbols is known as a number (every key a symbol), it has none, found without
+    building it (a sympy expression a variant's figure would build, only to drop)."""
+    e = sympy.sympify(expr)
+    symbols = e.free_symbols
+    if all(isinstance(k, sympy.Symbol) for k in known) and all(
+        s in known and not getattr(known[s], "free_symbols", ()) for s in symbols
+    ):
+        return False
+    return bool(e.xreplace(known).free_symbols)
 
 
 def _perps(ux: float, uy: float, away: Point) -> tuple[Point, Point]:

@@ -8,6 +8,7 @@ or HTML, or written to a file or a data URI as it is.
 
 from __future__ import annotations
 
+import functools
 import html
 
 from derive.writers.figure.layout import EM, split
@@ -32,11 +33,16 @@ class _Canvas:
         return f"{(self.y1 - y) * PX:.1f}"
 
     def pts(self, points: list[tuple[float, float]]) -> str:
-        return " ".join(f"{self.x(px)},{self.y(py)}" for px, py in points)
+        x0, y1 = self.x0, self.y1  # :meth:`x` and :meth:`y` written out (an arc has 25 points)
+        return " ".join([f"{(px - x0) * PX:.1f},{(y1 - py) * PX:.1f}" for px, py in points])
 
 
 def _line(c: _Canvas, x1: float, y1: float, x2: float, y2: float, attrs: str) -> str:
-    return f'<line x1="{c.x(x1)}" y1="{c.y(y1)}" x2="{c.x(x2)}" y2="{c.y(y2)}" {attrs}/>'
+    x0, top = c.x0, c.y1  # c.x() and c.y() written out
+    return (
+        f'<line x1="{(x1 - x0) * PX:.1f}" y1="{(top - y1) * PX:.1f}" '
+        f'x2="{(x2 - x0) * PX:.1f}" y2="{(top - y2) * PX:.1f}" {attrs}/>'
+    )
 
 
 def _with_head(c: _Canvas, s: Arrow | Axis, colour: str, width: float, extra: str = "", cls: str = "") -> str:
@@ -77,24 +83,31 @@ def _shape(c: _Canvas, s: object) -> str:
 
 def _label(c: _Canvas, lab: Label) -> str:
     """A label centred on its box: a symbol with its subscript, or words."""
+    style, colour, body, shift = _label_text(lab.text, lab.role, lab.math, lab.tail)
+    y = (c.y1 - lab.y + shift * EM) * PX
+    return f'<text x="{c.x(lab.x)}" y="{y:.1f}" text-anchor="middle" fill="{colour}"{style}>{body}</text>'
+
+
+@functools.lru_cache(maxsize=256)  # a figure's labels are the same few texts
+def _label_text(text: str, role: str, math: bool, tail: str) -> tuple[str, str, str, float]:
+    """A label's style, colour, content and the shift (em) of its baseline below its centre."""
     size = EM * PX
-    style = {"body": ' font-weight="bold"', "surface": ""}.get(lab.role, ' font-style="italic"')
-    colour = INK.get(lab.role, "#111")
-    if not lab.math:
-        body, shift = html.escape(lab.text), 0.25
+    style = {"body": ' font-weight="bold"', "surface": ""}.get(role, ' font-style="italic"')
+    colour = INK.get(role, "#111")
+    if not math:
+        body, shift = html.escape(text), 0.25
     else:
-        base, sub = split(lab.text)
+        base, sub = split(text)
         body, shift = html.escape(base), 0.25
         if sub:
             drop = 0.25 * size
             body += f'<tspan dy="{drop:.1f}" font-size="{0.7 * size:.1f}">{html.escape(sub)}</tspan>'
             shift = 0.16
-            if lab.tail:
-                body += f'<tspan dy="{-drop:.1f}" font-style="normal">{html.escape(lab.tail)}</tspan>'
-        elif lab.tail:
-            body += f'<tspan font-style="normal">{html.escape(lab.tail)}</tspan>'
-    y = (c.y1 - lab.y + shift * EM) * PX
-    return f'<text x="{c.x(lab.x)}" y="{y:.1f}" text-anchor="middle" fill="{colour}"{style}>{body}</text>'
+            if tail:
+                body += f'<tspan dy="{-drop:.1f}" font-style="normal">{html.escape(tail)}</tspan>'
+        elif tail:
+            body += f'<tspan font-style="normal">{html.escape(tail)}</tspan>'
+    return style, colour, body, shift
 
 
 def to_svg(fig: Figure) -> str:

@@ -3,6 +3,8 @@ that the labels (set in the document's font) keep the room the layout gave them.
 
 from __future__ import annotations
 
+import functools
+
 from derive import escape
 from derive.symbols import latex_name
 from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Label, Surface, hatch_ticks, head
@@ -49,13 +51,17 @@ def _shape(s: object) -> list[str]:
 
 
 def _label(lab: Label) -> str:
-    if not lab.math:
-        text = escape.tex(lab.text)
-    elif lab.role == "body":
-        text = r"\textbf{" + escape.tex(lab.text) + "}"
-    else:
-        text = "$" + latex_name(lab.text) + lab.tail + "$"
+    text = _label_text(lab.text, lab.role, lab.math, lab.tail)
     return rf"\node[inner sep=0pt, text={INK.get(lab.role, 'black')}] at {_p(lab.x, lab.y)} {{{text}}};"
+
+
+@functools.lru_cache(maxsize=256)  # a figure's labels are the same few texts
+def _label_text(text: str, role: str, math: bool, tail: str) -> str:
+    if not math:
+        return escape.tex(text)
+    if role == "body":
+        return r"\textbf{" + escape.tex(text) + "}"
+    return "$" + latex_name(text) + tail + "$"
 
 
 def to_tikz(fig: Figure) -> str:
