@@ -12,6 +12,7 @@ import random
 from collections.abc import Mapping
 
 import sympy
+from sympy.polys.polyerrors import BasePolynomialError
 
 from derive.checking.mistakes.quantities import results_of
 from derive.checking.mistakes.records import Mistake, Outcome, Variant
@@ -148,8 +149,8 @@ class Model:
         back = {d: u for u, d in plain.items()}
         try:
             found = sympy.solve([sympy.expand(x.xreplace(plain)) for x in eqs], list(plain.values()), dict=True)
-        except NotImplementedError:
-            return None
+        except (NotImplementedError, BasePolynomialError):  # NotInvertible: SymPy's algebraic domain gave up
+            return None  # this mistake gives no value here (as with no root)
         roots = [{back[d]: val for d, val in r.items()} for r in found]
         roots = [r for r in roots if set(r) == set(self.unknowns) and all(is_real(r[u]) for u in self.unknowns)]
         if not roots:
