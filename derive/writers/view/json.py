@@ -63,7 +63,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
     d = digits if digits is not None else p.digits
     results = _results(solution.results, d)
     printer = StepPrinter()
-    v = view(solution, digits)
+    v = view(solution, digits, figures=False)  # the lines only: JSON has no figures
     doc = {
         "title": p.title,
         "kind": p.kind,
