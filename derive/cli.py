@@ -10,7 +10,6 @@ never sent raw; JSON stays valid, since that is how JSON writes it.
 """
 
 import sys
-import traceback
 
 from derive.commands import homework, listing, solve
 from derive.commands.parser import FORMATS, FRAGMENT_PREAMBLE, TIME_BUDGETS, build_parser
@@ -45,7 +44,7 @@ def _main(argv: list[str]) -> int:
             return commands[args.command](args)
     except OutOfTime as exc:
         if debug:
-            traceback.print_exc()
+            _traceback()
         print(
             f"Error: {command} stopped after {exc.args[0]:g} s, its time budget (--timeout SECONDS to change it, "
             "0 for no limit); its outputs were not changed",
@@ -54,7 +53,7 @@ def _main(argv: list[str]) -> int:
         return 1
     except DeriveError as exc:
         if debug:
-            traceback.print_exc()
+            _traceback()
         print(f"Error: {one_line(str(exc))}", file=sys.stderr)
         return exc.exit_code
     except KeyboardInterrupt:
@@ -67,13 +66,20 @@ def _main(argv: list[str]) -> int:
         return 1
     except Exception as exc:
         if debug:
-            traceback.print_exc()
+            _traceback()
         else:
             print(
                 f"Error: {one_line(f'internal error ({type(exc).__name__}: {exc})')}; run with --debug for the traceback",
                 file=sys.stderr,
             )
         return 1
+
+
+def _traceback() -> None:
+    """The traceback of the error being handled, on standard error (``--debug``)."""
+    import traceback  # only where --debug asks for it
+
+    traceback.print_exc()
 
 
 def run() -> None:

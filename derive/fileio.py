@@ -9,8 +9,6 @@ one, never a mix. JSON is written strictly: no NaN or Infinity, which is not JSO
 from __future__ import annotations
 
 import contextlib
-import glob
-import json
 import math
 import os
 import shutil
@@ -98,6 +96,8 @@ def read_user_text(path: str | Path, what: str) -> str:
 def dumps_json(doc: Any) -> str:
     """``doc`` as JSON text (indented, UTF-8), or a one-line RenderError naming the value
     that JSON cannot hold (a number too large: Infinity, or NaN)."""
+    import json  # imported where JSON is written: most commands write none
+
     try:
         return json.dumps(doc, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
     except ValueError:
@@ -153,6 +153,8 @@ def folder_atomic(path: str | Path, *, owned: tuple[str, ...] = ()) -> Iterator[
 def _sweep(parent: Path, name: str) -> None:
     """Remove the temporary files and folders that runs killed while writing ``name`` left
     behind (``.NAME.PID.XXXX.tmp``, where process PID is gone)."""
+    import glob
+
     for leftover in parent.glob(f".{glob.escape(name)}.*.*"):
         pid = leftover.name[len(name) + 2 :].split(".")[0]
         if leftover.suffix not in (".tmp", ".old") or not pid.isdigit() or _alive(int(pid)):

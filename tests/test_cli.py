@@ -193,3 +193,59 @@ def test_a_missing_oblique_given_names_the_key_that_looks_like_it(
     r = cli("solve", str(path))
     assert r.code == 2 and r.err.count("\n") == 1, r.err
     assert f"{missing}: is missing" in r.err and f"(the file gives {typed}: did you mean {missing}?)" in r.err
+
+
+_MODULES = """
+import contextlib, io, sys
+import derive.cli
+with contextlib.redirect_stdout(io.StringIO()):
+    code = derive.cli.main(sys.argv[1:])
+print(code)
+print(" ".join(sorted(sys.modules)))
+"""
+
+
+def _modules_of(*args: str) -> tuple[int, set[str]]:
+    """The exit code of ``derive ARGS`` run in a fresh interpreter, and every module it imported."""
+    import subprocess
+    import sys
+
+    r = subprocess.run([sys.executable, "-c", _MODULES, *args], capture_output=True, text=True, check=True)
+    code, modules = r.stdout.splitlines()[-2:]
+    return int(code), set(modules.split())
+
+
+def _under(modules: set[str], *packages: str) -> list[str]:
+    return sorted(m for m in modules if any(m == p or m.startswith(p + ".") for p in packages))
+
+
+def test_each_command_imports_only_what_it_uses() -> None:
+    """Start-up time (issue #19): a command imports only the parts it runs. A right answer
+    needs no mistakes' model and no worked steps; JSON draws no figure and fills no
+    template; the list reads titles only."""
+    code, modules = _modules_of("check", "notes-4c11-two-spheres", "--answer", "v_A2n=-1.11")
+    assert code == 0
+    assert not _under(modules, "derive.checking.mistakes", "derive.steps.impact", "derive.writers.view", "jinja2")
+    code, modules = _modules_of("solve", "notes-4c11-two-spheres", "-f", "json")
+    assert code == 0
+    assert not _under(modules, "derive.writers.figure", "derive.checking", "jinja2")
+    code, modules = _modules_of("solve", "notes-4c11-two-spheres")
+    assert code == 0
+    assert not _under(modules, "derive.checking", "derive.display")
+    code, modules = _modules_of("list")
+    assert code == 0
+    assert not _under(modules, "sympy", "jinja2")
+
+
+def test_a_wrong_answer_still_names_its_mistake(cli) -> None:
+    """The mistakes' model, imported only for an answer that is not right, is there when
+    one is. Example 4.C.11 resolved with sin and cos swapped, by hand: v_A1n = 5 sin 37.6°,
+    v_B1n = -15 sin 37.6°, then (3) and (4) with 20 kg, 5 kg, e = 0.6 give v_A2n = -0.854 m/s."""
+    import math
+
+    s = math.sin(math.radians(37.6))
+    a1n, b1n = 5 * s, -15 * s
+    a2n = (20 * a1n + 5 * b1n - 5 * 0.6 * (a1n - b1n)) / 25
+    r = cli("check", "notes-4c11-two-spheres", "--answer", f"v_A2n={a2n:.3f}")
+    assert r.code == 1
+    assert "is what this mistake gives" in r.out and "sin and cos swapped" in r.out

@@ -232,3 +232,44 @@ def test_perfectly_elastic_conserves_energy_and_plastic_moves_together() -> None
     # e = 0: common velocity (mA vA + mB vB)/(mA + mB) = (8 - 3)/5 = 1
     assert plastic["v_A2"] == pytest.approx(1)
     assert plastic["v_B2"] == pytest.approx(1)
+
+
+#: Bundled single impacts of every kind: oblique, letters, an unknown given, a wall, a line
+#: of impact at an angle (x-y components), a quantity the file defines, "show that".
+READ_IN_ANY_ORDER = (
+    "notes-4c11-two-spheres",
+    "notes-4c12-cue-ball",
+    "ocr-mei-fmm-2024-disc-a-stops",
+    "ocr-m2-2012-particle-hits-wall",
+    "beer-johnston-13-13-railroad-cars-find-e",
+    "fisicalab-example-7-normal-at-20deg",
+    "ocr-mei-fmm-2022-offset-spheres-symbolic",
+    "edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg",
+    "cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost",
+)
+
+
+@pytest.mark.parametrize("name", READ_IN_ANY_ORDER)
+def test_results_are_the_same_in_whatever_order_they_are_read(name: str) -> None:
+    """A result is worked out when it is first read (``derive check`` reads only the ones it is
+    asked about, issue #19). The order of reading changes nothing: the results read last to
+    first have the names, closed forms and values they have read first to last."""
+    from derive.physics.outcome import solve_impact
+
+    forward = solve_impact(derive.load(name)).results
+    names = list(forward)
+    first = [str((forward[n].closed, forward[n].value, forward[n].partial)) for n in names]
+    backward = solve_impact(derive.load(name)).results
+    last = [str((backward[n].closed, backward[n].value, backward[n].partial)) for n in reversed(names)]
+    assert list(backward) == names
+    assert first == last[::-1]
+
+
+def test_a_body_at_rest_after_the_impact_has_no_direction() -> None:
+    """OCR MEI FM 2024: A is at rest just after the collision (the file's v_A2n = 0, no t
+    component): its direction is not a result; B's is."""
+    from derive.physics.outcome import solve_impact
+
+    found = solve_impact(derive.load("ocr-mei-fmm-2024-disc-a-stops")).results
+    assert "theta_A2" not in found and found.get("beta_A2") is None
+    assert "theta_B2" in found and "beta_B2" in list(found)

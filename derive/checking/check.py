@@ -14,8 +14,6 @@ from typing import Any
 
 from derive.checking.context import NUMBER, Context
 from derive.checking.entries import Entry, as_answers, parse_tolerance
-from derive.checking.equation import equation_item
-from derive.checking.expression import expression_item
 from derive.checking.number import number_item
 from derive.checking.report import Item, Report
 from derive.errors import InputError
@@ -64,7 +62,7 @@ def check(
     ctx = Context(solution, tol)
     items: list[Item] = []
     errors: list[InputError] = []
-    for judge, entries in ((answer_item, given.answers), (equation_item, given.equations)):
+    for judge, entries in ((answer_item, given.answers), (_equation_item, given.equations)):
         for e in entries:
             try:
                 items.append(judge(ctx, e))
@@ -99,7 +97,16 @@ def answer_item(ctx: Context, e: Entry) -> Item:
             return number_item(ctx, e, r, text, number, unit)
     if ctx.chain:
         raise e.error(f"a chain's answers are checked as numbers with their units, such as {e.name}=-2.38 m/s")
+    from derive.checking.expression import expression_item  # a formula's judges: imported when one is given
+
     return expression_item(ctx, e, r, text, unit_problem)
+
+
+def _equation_item(ctx: Context, e: Entry) -> Item:
+    """The verdict on one equation (its judges, and the mistakes' model, imported when one is given)."""
+    from derive.checking.equation import equation_item
+
+    return equation_item(ctx, e)
 
 
 def error_item(kind: str, e: Entry, exc: InputError) -> Item:

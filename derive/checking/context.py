@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking import mistakes
 from derive.checking.entries import Entry
 from derive.checking.numeric import plain, with_unit
 from derive.checking.report import Diagnosis
@@ -24,6 +24,9 @@ from derive.problem import Problem, units
 from derive.problem.units import ANGLE, DIMENSIONLESS, VELOCITY, Dim
 from derive.steps.model import Solution
 from derive.symbols import symbol
+
+if TYPE_CHECKING:  # the mistakes' model is imported when a check first needs it (a wrong answer)
+    from derive.checking import mistakes
 
 #: ``deg`` and ``rad`` in formulas: units of angle (``5*sin(37.6*deg)``).
 DEG = sympy.Symbol("deg", positive=True)
@@ -50,7 +53,9 @@ class Context:
     def model(self) -> mistakes.Model:
         """The problem's equations as the mistakes see them (cached per solution)."""
         if self._model is None:
-            self._model = mistakes.model(self.solution)
+            from derive.checking.mistakes import model
+
+            self._model = model(self.solution)
         return self._model
 
     @property
@@ -112,8 +117,10 @@ class Context:
     def diagnosis(self, m: mistakes.Mistake, value: str | None = None) -> tuple[Diagnosis, ...]:
         """The report's record of mistake ``m`` in this problem: one, or one for each of
         two mistakes made together (``e_on_t+system_t``), each with the value they give."""
+        from derive.checking.mistakes import REGISTRY
+
         numbers = self.model.numbers
-        parts = [mistakes.REGISTRY.get(n) for n in m.name.split("+")] if "+" in m.name else [m]
+        parts = [REGISTRY.get(n) for n in m.name.split("+")] if "+" in m.name else [m]
         return tuple(
             Diagnosis(
                 k.name, k.title, k.description, k.where_in(numbers), tuple(i for i in k.enters if i in numbers), value
@@ -124,11 +131,15 @@ class Context:
 
     def singles(self) -> list[mistakes.Outcome]:
         """Every common mistake that applies here, solved (none are modelled for a chain)."""
-        return [] if self.chain else mistakes.outcomes(self.solution)
+        from derive.checking.mistakes import outcomes
+
+        return [] if self.chain else outcomes(self.solution)
 
     def pairs(self) -> list[mistakes.Outcome]:
         """Every pair of common mistakes that applies here, solved (bounded; slower)."""
-        return [] if self.chain else mistakes.pair_outcomes(self.solution)
+        from derive.checking.mistakes import pair_outcomes
+
+        return [] if self.chain else pair_outcomes(self.solution)
 
     def diagnose(
         self, fits: Callable[[mistakes.Outcome], str | None], found: list[mistakes.Outcome]

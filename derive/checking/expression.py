@@ -12,13 +12,13 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import sympy
 
 from derive.checking.context import DEG, RAD, Context, Names
 from derive.checking.entries import Entry
 from derive.checking.figures import literal_tolerance
-from derive.checking.mistakes import Outcome
 from derive.checking.notation import student
 from derive.checking.numeric import close, number_of, plain, simplified, tidy
 from derive.checking.report import Item
@@ -27,6 +27,9 @@ from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.expr import Parsed, ParseError, parse
 from derive.problem.units import ANGLE, DIMENSIONLESS
+
+if TYPE_CHECKING:
+    from derive.checking.mistakes import Outcome
 
 
 @dataclass(frozen=True)

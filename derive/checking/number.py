@@ -9,19 +9,22 @@ the common mistakes (one, else two together) that give it are named.
 from __future__ import annotations
 
 from decimal import Decimal
+from typing import TYPE_CHECKING
 
 import sympy
 
 from derive.checking.context import Context
 from derive.checking.entries import Entry
 from derive.checking.figures import figures, judge, last_place, method
-from derive.checking.mistakes import Outcome
 from derive.checking.report import Diagnosis, Item
 from derive.checking.rounding import INTERMEDIATE_FIGURES, rounded_values
 from derive.numbers import format_number, to_decimal
 from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.units import ANGLE, DIMENSIONLESS
+
+if TYPE_CHECKING:
+    from derive.checking.mistakes import Outcome
 
 #: A wrong answer this close (relative) to the exact value gets a word about rounding.
 NEAR = Decimal("0.01")

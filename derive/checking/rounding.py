@@ -17,9 +17,6 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import round_figures
-from derive.checking.mistakes.equations import APPROACH_A, APPROACH_B
-from derive.checking.mistakes.quantities import results_of
-from derive.checking.mistakes.records import Variant
 from derive.numbers import to_decimal
 from derive.problem import Problem
 
@@ -34,6 +31,8 @@ def rounded_values(ctx: Context, name: str) -> list[sympy.Expr]:
     the impact. Empty for an inverse problem or one with symbolic givens."""
     if ctx.chain or ctx.results[name].value is None:  # a chain: its stages' roundings are not modelled
         return []
+    from derive.checking.mistakes.quantities import results_of  # the model: only for an answer not right
+
     m, p = ctx.model, ctx.problem
     if m.inverse:
         return []
@@ -85,6 +84,9 @@ def _solve(
 ) -> dict[sympy.Symbol, sympy.Expr] | None:
     """The velocities after the impact from equations (1)-(4) with these numbers; with
     ``round_constants`` the number of each collected equation rounded first."""
+    from derive.checking.mistakes.equations import APPROACH_A, APPROACH_B
+    from derive.checking.mistakes.records import Variant
+
     m = ctx.model
     subs = {**pre, APPROACH_A: pre[m.nm.A1n], APPROACH_B: pre[m.nm.B1n], m.m_A: masses[0], m.m_B: masses[1]}
     eqs = []

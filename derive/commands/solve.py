@@ -54,6 +54,7 @@ def run_solve(args: argparse.Namespace) -> int:
     """derive solve: the worked solution in a format, to a file or standard output; exit 1 where --verify finds a failing line."""
     import derive
     from derive.fileio import write_atomic
+    from derive.steps import solve  # the solution itself: no notebook display hooks on a command line
 
     args.format = _format_of(args)
 
@@ -65,7 +66,7 @@ def run_solve(args: argparse.Namespace) -> int:
         )
     options = _interop_options(args)
     problem = derive.load(args.problem)
-    solution = derive.solve(problem)
+    solution = solve(problem)
     inputs = (Path(problem.path),)
     if args.format == "pdf":
         from derive.writers.pdf import build_pdf

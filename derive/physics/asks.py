@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import random
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import sympy
@@ -47,7 +48,7 @@ class Found:
     dropped: tuple[sympy.Expr, ...] = ()
 
 
-def in_letters(expr: sympy.Expr, problem: Problem, results: dict[str, Result]) -> sympy.Expr:
+def in_letters(expr: sympy.Expr, problem: Problem, results: Mapping[str, Result]) -> sympy.Expr:
     """``expr`` (in result and given names) in the letters alone: each result by its closed
     form, each direction's tangent as its ratio of components, every number put in."""
     comps = {"theta": ("n", "t"), "beta": ("t", "n")}
@@ -73,7 +74,7 @@ def in_letters(expr: sympy.Expr, problem: Problem, results: dict[str, Result]) -
     return out.xreplace(problem.numeric())
 
 
-def decide(rel: Relation, problem: Problem, results: dict[str, Result]) -> Shown:
+def decide(rel: Relation, problem: Problem, results: Mapping[str, Result]) -> Shown:
     """Whether ``rel`` follows from the closed forms, for every value of the letters."""
     lhs, rhs = in_letters(rel.lhs, problem, results), in_letters(rel.rhs, problem, results)
     difference = sympy.simplify(lhs - rhs)
@@ -125,7 +126,7 @@ def _number(expr: sympy.Expr, point: dict[sympy.Symbol, float]) -> float | None:
     return value.real
 
 
-def solve_range(rng: Range, problem: Problem, results: dict[str, Result]) -> Found:
+def solve_range(rng: Range, problem: Problem, results: Mapping[str, Result]) -> Found:
     """The values of ``rng.of`` (e within [0, 1], another letter positive) where the
     inequality holds, the other letters taken positive."""
     expr = sympy.factor(in_letters(rng.lhs, problem, results) - in_letters(rng.rhs, problem, results))

@@ -7,6 +7,7 @@ impact stage.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, replace
 
 import sympy
@@ -27,12 +28,12 @@ class ImpactOutcome:
 
     problem: Problem
     impact: Impact
-    results: dict[str, Result]
+    results: Mapping[str, Result]
     values: dict[sympy.Symbol, sympy.Expr]
     angles: frozenset[sympy.Symbol]
     shown: tuple[Shown, ...] = ()
     ranges: tuple[Found, ...] = ()
-    others: tuple[dict[str, Result], ...] = ()
+    others: tuple[Mapping[str, Result], ...] = ()
 
 
 def xy_motions(imp: Impact) -> list[tuple[Motion, tuple[sympy.Symbol, sympy.Symbol]]]:

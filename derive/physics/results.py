@@ -6,7 +6,10 @@ where a given stays symbolic, the numbers substituted and the symbols kept).
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import sympy
 
@@ -37,32 +40,94 @@ class Result:
     description: str
 
 
-def results(imp: Impact) -> dict[str, Result]:
+class Results(Mapping[str, Result]):
+    """The results of one impact by name, in order. Each is worked out (evaluated, and
+    simplified where symbols stay) when it is first read, then kept: ``derive check`` pays
+    only for the results it is asked about (issue #19), a page reads them all. A result
+    depends on the impact alone, never on which others were read before it."""
+
+    def __init__(self) -> None:
+        self._todo: dict[str, Callable[[], Result]] = {}
+        self._done: dict[str, Result] = {}
+        #: Where a result exists only for some numbers (a direction: not for a body at rest).
+        self._present: dict[str, Callable[[], bool]] = {}
+
+    def put(self, name: str, make: Callable[[], Result], present: Callable[[], bool] | None = None) -> None:
+        """Set out result ``name``: ``make`` works it out; ``present`` (when given) says whether it exists."""
+        self._todo[name] = make
+        if present is not None:
+            self._present[name] = present
+
+    def _exists(self, name: str) -> bool:
+        if name not in self._todo:
+            return False
+        test = self._present.get(name)
+        if test is not None:  # asked once, then known
+            if not test():
+                del self._todo[name]
+            del self._present[name]
+        return name in self._todo
+
+    def __getitem__(self, name: str) -> Result:
+        done = self._done.get(name)
+        if done is None:
+            if not self._exists(name):
+                raise KeyError(name)
+            done = self._done[name] = self._todo[name]()
+        return done
+
+    def __contains__(self, name: object) -> bool:
+        return isinstance(name, str) and self._exists(name)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter([name for name in list(self._todo) if self._exists(name)])
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+    def __repr__(self) -> str:
+        return f"Results({', '.join(self)})"
+
+
+def results(imp: Impact) -> Results:
     """Every result of the impact, in order: unknowns named in the file, velocities after
     the impact (and their speeds and directions), kinetic energies, the impulse, and the
-    quantities the file defines from them."""
+    quantities the file defines from them; each worked out when first read (:class:`Results`)."""
     r = _Collector(imp)
     for g in r.p.givens:
         if g.unknown:
-            r.add(g.name, r.solved[g.symbol], g.unit, f"{g.name}, unknown in the file", degrees=g.unit == "deg")
+            r.add(
+                g.name,
+                lambda g=g: r.solved[g.symbol],
+                g.unit,
+                f"{g.name}, unknown in the file",
+                degrees=g.unit == "deg",
+            )
     _velocities(r)
     m_A, m_B = _masses(r)
     _energies(r, m_A, m_B)
     nm, p = imp.names, r.p
-    J = -m_A * (r.full(nm.A2n) - r.full(nm.A1n))
-    r.add("J_n", sympy.factor_terms(J), working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
+
+    def impulse() -> sympy.Expr:
+        return sympy.factor_terms(-m_A * (r.full(nm.A2n) - r.full(nm.A1n)))
+
+    r.add("J_n", impulse, working_unit(p, "impulse"), "impulse along +n on B from A (on A it is -J_n)")
     for d in p.asks.defined:  # quantities the file defines from the results (F_avg = J_n/dt)
-        closed = d.expr.xreplace({res.symbol: res.closed for res in r.out.values()})
-        r.add(d.name, closed, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
+        before = list(r.out)
+
+        def defined(d: Any = d, before: list[str] = before) -> sympy.Expr:
+            return d.expr.xreplace({r.out[n].symbol: r.out[n].closed for n in before})
+
+        r.add(d.name, defined, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
     return r.out
 
 
 class _Collector:
-    """The results of one impact as they are worked out, in order."""
+    """The results of one impact as they are set out, in order (each worked out when read)."""
 
     def __init__(self, imp: Impact) -> None:
         self.imp, self.p = imp, imp.problem
-        self.out: dict[str, Result] = {}
+        self.out = Results()
         self.solved = dict(imp.closed)
         self.varied = {g.symbol for g in self.p.givens if g.name in self.p.vary}
 
@@ -70,8 +135,21 @@ class _Collector:
         """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
         return self.imp.in_givens(expr).xreplace(self.solved)
 
-    def add(self, name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool = False) -> None:
-        """A result from its closed form: evaluated, simplified where symbols stay, in degrees for an angle."""
+    def add(
+        self,
+        name: str,
+        closed: Callable[[], sympy.Expr],
+        unit: str,
+        description: str,
+        degrees: bool = False,
+        present: Callable[[], bool] | None = None,
+    ) -> None:
+        """A result from its closed form (made when the result is first read): evaluated,
+        simplified where symbols stay, in degrees for an angle; ``present`` says whether it
+        exists at all (a direction: not for a body at rest)."""
+        self.out.put(name, lambda: self._result(name, closed(), unit, description, degrees), present)
+
+    def _result(self, name: str, closed: sympy.Expr, unit: str, description: str, degrees: bool) -> Result:
         partial = evaluate(closed, self.p)
         # simplify what stays symbolic for the reader; a homework variant's givens are
         # numbers later, so their expressions need no simplifying
@@ -84,7 +162,7 @@ class _Collector:
             value = partial * 180 / sympy.pi if degrees else partial
         elif degrees:
             partial = partial * 180 / sympy.pi
-        self.out[name] = Result(name, symbol(name), closed, value, partial, unit, description)
+        return Result(name, symbol(name), closed, value, partial, unit, description)
 
 
 def _velocities(r: _Collector) -> None:
@@ -93,37 +171,51 @@ def _velocities(r: _Collector) -> None:
     p, nm = r.p, r.imp.names
     unit_v = working_unit(p, "velocity")
     if not p.oblique:
-        r.add("v_A2", r.full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
+        r.add("v_A2", lambda: r.full(nm.A2n), unit_v, "velocity of A after the impact, along +n")
         if not p.fixed_B:
-            r.add("v_B2", r.full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
+            r.add("v_B2", lambda: r.full(nm.B2n), unit_v, "velocity of B after the impact, along +n")
         return
     comps = {"v_A2t": nm.A2t, "v_A2n": nm.A2n, "v_B2t": nm.B2t, "v_B2n": nm.B2n}
     for name, s_ in comps.items():
         body, axis = name[2], name[-1]
-        r.add(name, r.full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
+        r.add(name, lambda s_=s_: r.full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
     for b in "AB":
         if b == "B" and p.fixed_B:
             continue
         n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
-        r.add(f"v_{b}2", sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
-        ang = _angle(n, t, p)
-        if ang is not None:
-            r.add(f"theta_{b}2", ang, "deg", f"direction of {b} after the impact, from +t toward +n", degrees=True)
-            r.add(
-                f"beta_{b}2",
-                sympy.atan2(t, n),
-                "deg",
-                f"direction of {b} after the impact, from +n toward +t",
-                degrees=True,
-            )
+        r.add(f"v_{b}2", lambda n=n, t=t: sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
+        moving = _moving(n, t, p)
+        r.add(
+            f"theta_{b}2",
+            lambda n=n, t=t: sympy.atan2(n, t),
+            "deg",
+            f"direction of {b} after the impact, from +t toward +n",
+            degrees=True,
+            present=moving,
+        )
+        r.add(
+            f"beta_{b}2",
+            lambda n=n, t=t: sympy.atan2(t, n),
+            "deg",
+            f"direction of {b} after the impact, from +n toward +t",
+            degrees=True,
+            present=moving,
+        )
     if p.phi is not None:
         for b in "AB":
             if b == "B" and p.fixed_B:
                 continue
             n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
             c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
-            r.add(f"v_{b}2x", n * c - t * s_, unit_v, f"velocity of {b} after the impact, x component")
-            r.add(f"v_{b}2y", n * s_ + t * c, unit_v, f"velocity of {b} after the impact, y component")
+
+            def x(n: sympy.Expr = n, t: sympy.Expr = t, c: sympy.Expr = c, s_: sympy.Expr = s_) -> sympy.Expr:
+                return n * c - t * s_
+
+            def y(n: sympy.Expr = n, t: sympy.Expr = t, c: sympy.Expr = c, s_: sympy.Expr = s_) -> sympy.Expr:
+                return n * s_ + t * c
+
+            r.add(f"v_{b}2x", x, unit_v, f"velocity of {b} after the impact, x component")
+            r.add(f"v_{b}2y", y, unit_v, f"velocity of {b} after the impact, y component")
 
 
 def _masses(r: _Collector) -> tuple[sympy.Expr, sympy.Expr]:
@@ -142,36 +234,50 @@ def _energies(r: _Collector, m_A: sympy.Expr, m_B: sympy.Expr) -> None:
     Worked in the component symbols the loss is polynomial, so it factors quickly and
     exactly; then the givens go in."""
     p, nm, imp = r.p, r.imp.names, r.imp
-    sq = {}
-    for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
-        n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
-        t1, t2 = getattr(nm, f"{b}1t"), getattr(nm, f"{b}2t")
-        pre_sq = n1**2 + (t1**2 if p.oblique else 0)
-        post_sq = n2**2 + (t2**2 if p.oblique else 0)
-        speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
-        sq[b] = (pre_sq, post_sq, r.full(speed_sq))
-    unit_T = working_unit(p, "energy")
-    T1 = HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2]
-    T2 = HALF * m_A * r.full(sq["A"][1]) + HALF * m_B * r.full(sq["B"][1])
-    if imp.inverse:
-        lost = T1 - T2
-    else:
+
+    @functools.cache
+    def squares() -> dict[str, tuple[sympy.Expr, sympy.Expr, sympy.Expr]]:
+        sq = {}
+        for b, motion in (("A", p.motion_A), ("B", p.motion_B)):
+            n1, n2 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}2n")
+            t1, t2 = getattr(nm, f"{b}1t"), getattr(nm, f"{b}2t")
+            pre_sq = n1**2 + (t1**2 if p.oblique else 0)
+            post_sq = n2**2 + (t2**2 if p.oblique else 0)
+            speed_sq = motion.speed**2 if (p.oblique and motion.speed is not None) else imp.in_givens(pre_sq)
+            sq[b] = (pre_sq, post_sq, r.full(speed_sq))
+        return sq
+
+    def before() -> sympy.Expr:
+        sq = squares()
+        return HALF * m_A * sq["A"][2] + HALF * m_B * sq["B"][2]
+
+    def after() -> sympy.Expr:
+        sq = squares()
+        return HALF * m_A * r.full(sq["A"][1]) + HALF * m_B * r.full(sq["B"][1])
+
+    def lost() -> sympy.Expr:
+        if imp.inverse:
+            return before() - after()
+        sq = squares()
         lost_c = HALF * m_A * (sq["A"][0] - sq["A"][1].xreplace(imp.by_components))
         lost_c += HALF * m_B * (sq["B"][0] - sq["B"][1].xreplace(imp.by_components))
-        lost = sympy.factor_terms(
-            imp.in_givens(forms.factored(lost_c.xreplace({k: v for k, v in imp.pre.items() if v == 0})))
-        )
-    r.add("T_1", T1, unit_T, "kinetic energy before the impact")
-    r.add("T_2", T2, unit_T, "kinetic energy after the impact")
+        zero = {k: v for k, v in imp.pre.items() if v == 0}
+        return sympy.factor_terms(imp.in_givens(forms.factored(lost_c.xreplace(zero))))
+
+    unit_T = working_unit(p, "energy")
+    r.add("T_1", before, unit_T, "kinetic energy before the impact")
+    r.add("T_2", after, unit_T, "kinetic energy after the impact")
     r.add("T_lost", lost, unit_T, "kinetic energy lost in the impact")
 
 
-def _angle(n: sympy.Expr, t: sympy.Expr, p: Problem) -> sympy.Expr | None:
-    """atan2(n, t) in closed form; None where the direction is undefined (a body at rest)."""
-    nv, tv = evaluate(n, p), evaluate(t, p)
-    if nv == 0 and tv == 0:
-        return None
-    return sympy.atan2(n, t)
+def _moving(n: sympy.Expr, t: sympy.Expr, p: Problem) -> Callable[[], bool]:
+    """Whether a body moves after the impact (its direction is defined), asked when it matters."""
+
+    @functools.cache
+    def moving() -> bool:
+        return not (evaluate(n, p) == 0 and evaluate(t, p) == 0)
+
+    return moving
 
 
 def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:

@@ -8,7 +8,6 @@ Checking only reads: the builders take the same tables afterwards, knowing their
 
 from __future__ import annotations
 
-import difflib
 import math
 import re
 from collections.abc import Mapping
@@ -59,6 +58,8 @@ def _dotted(parts: Path_) -> str:
 
 def did_you_mean(word: str, known: tuple[str, ...] | list[str]) -> str:
     """``; did you mean "title"?`` when a known word is close to ``word``, else nothing."""
+    import difflib  # an error's hint only
+
     close = difflib.get_close_matches(word, known, n=1, cutoff=0.6)
     if not close and word.strip() != word:
         close = [w for w in known if w == word.strip()]

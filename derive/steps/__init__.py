@@ -7,7 +7,7 @@
 from __future__ import annotations
 
 from derive.problem import ChainProblem, Problem
-from derive.steps.model import Solution
+from derive.steps.model import Solution, Stage
 
 
 def solve(problem: Problem | ChainProblem, *, steps: bool = True) -> Solution:
@@ -26,10 +26,13 @@ def solve(problem: Problem | ChainProblem, *, steps: bool = True) -> Solution:
 
         return write_chain(run_chain(problem))
     from derive.physics.outcome import solve_impact
-    from derive.steps.impact import write_impact
 
     outcome = solve_impact(problem)
-    stages = write_impact(outcome) if steps else ()
+    stages: tuple[Stage, ...] = ()
+    if steps:  # the step writers are imported only where the steps are written (not for check)
+        from derive.steps.impact import write_impact
+
+        stages = write_impact(outcome)
     return Solution(
         problem,
         outcome.results,

@@ -7,6 +7,7 @@ mathematics stays SymPy until a renderer prints it.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -127,14 +128,14 @@ class Solution:
     """
 
     problem: Problem | ChainProblem
-    results: dict[str, Result]
+    results: Mapping[str, Result]
     stages: tuple[Stage, ...]
     values: dict[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
     answers: tuple[Answer, ...] = ()
     shown: tuple[Any, ...] = ()
     ranges: tuple[Any, ...] = ()
-    others: tuple[dict[str, Result], ...] = ()
+    others: tuple[Mapping[str, Result], ...] = ()
 
     @property
     def is_chain(self) -> bool:

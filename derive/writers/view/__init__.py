@@ -7,7 +7,6 @@ A renderer never does physics.
 
 from __future__ import annotations
 
-import base64
 from typing import Any
 
 from derive.errors import InputError
@@ -179,6 +178,8 @@ def _figure_images(data: dict[str, Any], layout: Layout) -> dict[str, str]:
             files[name] = svg
             stage["figure_src"] = name
         else:
+            import base64
+
             stage["figure_src"] = "data:image/svg+xml;base64," + base64.b64encode(svg.encode("utf-8")).decode("ascii")
     return files
 

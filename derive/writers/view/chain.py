@@ -7,7 +7,6 @@ from typing import Any
 
 from derive.problem.units import latex_unit
 from derive.symbols import latex_name, relabel, symbol
-from derive.writers import figure
 from derive.writers.printing import Style, exact_latex, latex_eqn
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.view.givens import given_latex, letter_units, result_units, source_parts, statement, worked_out
@@ -53,7 +52,11 @@ def chain_view(
 def _stages(sol: Any, style: Style, layout: Layout, figures: bool) -> list[dict[str, Any]]:
     """Each stage of the chain printed: an impact as its own view, any other stage as blocks."""
     stages = []
-    falls = figure.chain_falls(sol) if figures else {}
+    falls: dict[int, bool] = {}
+    if figures:  # the figure modules only where a page draws one (JSON draws none)
+        from derive.writers.figure import chain_falls
+
+        falls = chain_falls(sol)
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is not None:

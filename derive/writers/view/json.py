@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import sympy
@@ -36,7 +37,7 @@ def _givens_json(givens: tuple[Given, ...]) -> dict[str, dict[str, Any]]:
     }
 
 
-def _results(found: dict[str, Result], d: int) -> dict[str, dict[str, Any]]:
+def _results(found: Mapping[str, Result], d: int) -> dict[str, dict[str, Any]]:
     """Each result of one impact: its number, unit, expression (text and LaTeX) and description."""
     results = {}
     printer = StepPrinter()
@@ -63,7 +64,7 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
     d = digits if digits is not None else p.digits
     results = _results(solution.results, d)
     printer = StepPrinter()
-    v = view(solution, digits)
+    v = view(solution, digits, figures=False)  # the lines only: JSON has no figures
     doc = {
         "title": p.title,
         "kind": p.kind,

@@ -3,18 +3,20 @@
 from __future__ import annotations
 
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import sympy
 
 from derive import escape
 from derive.steps.model import Solution
 from derive.symbols import latex_name
-from derive.writers import figure
 from derive.writers.printing import SlotBook, Style
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.view.givens import given_latex, letter_units, letters_of, source_parts, statement, worked_out
 from derive.writers.view.lines import blocks_view
+
+if TYPE_CHECKING:  # the figure modules are imported where a page draws one (JSON draws none)
+    from derive.writers import figure
 
 
 def _sentence(text: str) -> str:
@@ -31,6 +33,8 @@ def _html_name(name: str) -> str:
 def figure_entry(fig: figure.Figure) -> dict[str, str]:
     """A stage's figure as the templates take it: SVG and TikZ, the caption, and the note
     Markdown and LaTeX print under it when an arrow is drawn longer than to scale."""
+    from derive.writers import figure
+
     html_note = fig.scale_note(_html_name, escape.html_text)
     return {
         "figure_svg": figure.to_svg(fig),
@@ -161,6 +165,8 @@ def _stages(
         blocks = blocks_view(stage.blocks, style, layout)
         entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
         if figures and stage.figure is not None:
+            from derive.writers import figure
+
             fig = figure.describe(solution, after=stage.figure == "after", falls=falls, values=known)
             entry.update(figure_entry(fig))
         stages.append(entry)
