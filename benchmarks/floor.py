@@ -10,8 +10,12 @@ with B = ``python -c "import sympy"`` (a shuffled order each round, as latency.p
   ``sympy.tensor.tensor`` (and with it ``sympy.combinatorics``) on the first sum of a process,
   which every command that does algebra pays and B does not;
 - ``B + first Add + jinja2``: what a Markdown, LaTeX or HTML page needs before derive's own code;
+- ``B, gc.freeze() at exit``: B without the interpreter's last collections over SymPy's objects,
+  which derive's console script skips the same way (derive.cli.run): the ratio of a command to
+  this row is its cost against a baseline that exits as derive does;
 - ``imports of CMD``: a process that imports the command's modules, in the command's order (with
-  sympy.tensor where the command made a sum), and does nothing else;
+  sympy.tensor where the command made a sum), does nothing else and exits as derive's console
+  script does;
 - ``CMD``: the command itself (the console script, as latency.py runs it).
 
 The difference between the last two is the command's work (read, solve, write); the imports alone
@@ -42,14 +46,15 @@ print("\\n".join(sys.modules))
 """
 
 #: Run in a child: the modules in the file named by argv[1], in order (sympy.tensor among them where
-#: the command made a sum, as SymPy imports it then), and nothing else.
+#: the command made a sum, as SymPy imports it then), and nothing else; it exits as derive.cli.run does.
 IMPORT = """
-import importlib, sys
+import gc, importlib, sys
 for name in open(sys.argv[1]).read().split():
     try:
         importlib.import_module(name)
     except Exception:  # a module that cannot be imported on its own (a platform's, a test's)
         pass
+gc.freeze()
 """
 
 
@@ -71,6 +76,7 @@ def main() -> int:
     prefix = derive_prefix(module=False)
     with tempfile.TemporaryDirectory(prefix="derive-floor-") as cwd:
         processes: list[tuple[str, list[str]]] = [
+            ("B, gc.freeze() at exit", [sys.executable, "-c", "import sympy, gc; gc.freeze()"]),
             ("B + first Add", [sys.executable, "-c", FIRST_ADD]),
             ("B + first Add + jinja2", [sys.executable, "-c", FIRST_ADD + "; import jinja2"]),
         ]
@@ -96,7 +102,7 @@ def main() -> int:
     print(f"runs: {opts.runs}; load average at start {start}, at end {end}; cores: {os.cpu_count()}")
     b, b_cpu = statistics.median(walls["B"]), statistics.median(cpus["B"])
     print(f"{'':26s} {'median':>8s} {'ratio':>6s} {'cpu':>8s} {'cpu ratio':>9s}")
-    rows = ["B", "B + first Add", "B + first Add + jinja2"]
+    rows = ["B", "B, gc.freeze() at exit", "B + first Add", "B + first Add + jinja2"]
     rows += [key for name, _, _ in COMMANDS for key in (f"imports of {name}", name)]
     for key in rows:
         w, c = statistics.median(walls[key]), statistics.median(cpus[key])
