@@ -1,6 +1,6 @@
 """Start-up latency of the derive CLI, as a ratio to ``python -c "import sympy"`` (issue #19).
 
-    python benchmarks/latency.py [--runs 15] [--json] [--module] [--no-variants] [--strict]
+    python benchmarks/latency.py [--runs 15] [--json] [--module] [--no-variants] [--strict] [--against TREE]
 
 What it measures: the wall time of the whole process (start, imports, work, output, exit) of
 
@@ -31,6 +31,10 @@ checkout on a machine with PYTHONDONTWRITEBYTECODE=1 never writes it, and would 
 about 0.1 s of CPU for compiling on every call, which users never pay.
 ``--no-compile`` measures the tree as it is. One untimed warm-up run of each command checks its
 exit code and output and warms the file cache.
+
+``--against TREE`` also runs each command from another source tree (``PYTHONPATH=TREE``, e.g. a
+worktree of the commit before a change), in the same rounds: a before and after measured under
+the same load, which separate runs on a shared machine do not give.
 """
 
 from __future__ import annotations
@@ -83,39 +87,49 @@ def compile_derive() -> str:
     return folder
 
 
-def run_once(argv: list[str], cwd: str) -> tuple[float, float, int, bytes]:
+def run_once(argv: list[str], cwd: str, env: dict[str, str] | None = None) -> tuple[float, float, int, bytes]:
     """One process: wall seconds, CPU seconds (user + system), exit code, standard output."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    proc = subprocess.run(argv, cwd=cwd, stdin=subprocess.DEVNULL, capture_output=True, check=False)
+    proc = subprocess.run(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, capture_output=True, check=False)
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     return wall, cpu, proc.returncode, proc.stdout
 
 
-def warm_up(argv: list[str], cwd: str, name: str, output: bool = True) -> None:
+def warm_up(argv: list[str], cwd: str, name: str, output: bool = True, env: dict[str, str] | None = None) -> None:
     """Run once, untimed: the command must succeed and (unless ``output`` is false) print something."""
-    _, _, code, out = run_once(argv, cwd)
+    _, _, code, out = run_once(argv, cwd, env)
     if code != 0 or (output and not out.strip()):
         sys.exit(f"{name}: exit code {code}, {len(out)} bytes of output: {' '.join(argv)}")
 
 
-def measure(runs: int, prefix: list[str], cwd: str, seed: int) -> dict:
-    """Interleaved timings: per round, B before each command, the commands in a shuffled order."""
+def against_env(tree: str) -> dict[str, str]:
+    """The environment that runs derive from another source tree (its bytecode compiled first)."""
+    compileall.compile_dir(str(Path(tree) / "derive"), quiet=1)
+    return {**os.environ, "PYTHONPATH": str(Path(tree).resolve())}
+
+
+def measure(runs: int, prefix: list[str], cwd: str, seed: int, against: str | None = None) -> dict:
+    """Interleaved timings: per round, B before each command, the commands in a shuffled order
+    (with ``against``, each command also run from that source tree, in the same rounds)."""
     base = [sys.executable, *BASELINE]
     warm_up(base, cwd, "baseline", output=False)
-    for name, args, _ in COMMANDS:
-        warm_up([*prefix, *args], cwd, name)
+    trees: list[tuple[str, dict[str, str] | None]] = [("", None)]
+    if against is not None:
+        trees.append((" (against)", against_env(against)))
+    order = [(name + suffix, args, env) for name, args, _ in COMMANDS for suffix, env in trees]
+    for name, args, env in order:
+        warm_up([*prefix, *args], cwd, name, env=env)
     rng = random.Random(seed)
-    walls: dict[str, list[float]] = {"B": [], **{name: [] for name, _, _ in COMMANDS}}
+    walls: dict[str, list[float]] = {"B": [], **{name: [] for name, _, _ in order}}
     cpus: dict[str, list[float]] = {key: [] for key in walls}
-    order = list(COMMANDS)
     for _ in range(runs):
         rng.shuffle(order)
-        for name, args, _ in order:
-            for key, argv in (("B", base), (name, [*prefix, *args])):
-                wall, cpu, code, _ = run_once(argv, cwd)
+        for name, args, env in order:
+            for key, argv, child_env in (("B", base, None), (name, [*prefix, *args], env)):
+                wall, cpu, code, _ = run_once(argv, cwd, child_env)
                 if code != 0:
                     sys.exit(f"{key}: exit code {code}: {' '.join(argv)}")
                 walls[key].append(wall)
@@ -123,7 +137,7 @@ def measure(runs: int, prefix: list[str], cwd: str, seed: int) -> dict:
     b = statistics.median(walls["B"])
     b_cpu = statistics.median(cpus["B"])
     rows = []
-    for name, args, target in COMMANDS:
+    for name, args, target in [(n + suffix, a, t) for n, a, t in COMMANDS for suffix, _ in trees]:
         median = statistics.median(walls[name])
         ratio = median / b
         rows.append(
@@ -136,6 +150,7 @@ def measure(runs: int, prefix: list[str], cwd: str, seed: int) -> dict:
                 "cpu_ratio": round(statistics.median(cpus[name]) / b_cpu, 3),
                 "target": target,
                 "pass": ratio <= target,
+                "against": name.endswith(" (against)"),
                 "wall_s": [round(t, 4) for t in walls[name]],
             }
         )
@@ -179,7 +194,7 @@ def print_report(result: dict) -> None:
     print(f"derive run as: {' '.join(result['derive'])} ...; bytecode compiled first: {result['compiled']}")
     print(f"load average at start {result['load_start']}, at end {result['load_end']}; cores: {os.cpu_count()}")
     print()
-    line = "{:16s} {:>8s} {:>7s} {:>7s} {:>5s} {:>8s} {:>9s}"
+    line = "{:21s} {:>8s} {:>7s} {:>7s} {:>5s} {:>8s} {:>9s}"
     print(line.format("", "median", "ratio", "target", "", "cpu", "cpu ratio"))
     print(line.format("B: import sympy", f"{b['median_s']:.3f} s", "1.00x", "", "", f"{b['cpu_median_s']:.3f} s", ""))
     for row in result["commands"]:
@@ -210,6 +225,12 @@ def main() -> int:
     parser.add_argument("--no-variants", action="store_true", help="leave out benchmarks/variants.py")
     parser.add_argument("--seed", type=int, default=19, help="seed of the order of commands within a round")
     parser.add_argument("--strict", action="store_true", help="exit 1 when a figure misses its target")
+    parser.add_argument(
+        "--against",
+        metavar="TREE",
+        help="also run each command from this source tree (a folder with derive/, e.g. a worktree of an "
+        "earlier commit), interleaved in the same rounds: a before/after in one run",
+    )
     args = parser.parse_args()
     if args.runs < 1:
         parser.error("--runs must be at least 1")
@@ -226,13 +247,13 @@ def main() -> int:
             "derive": ["python", *prefix[1:]],
             "compiled": compiled,
             "runs": args.runs,
-            **measure(args.runs, prefix, cwd, args.seed),
+            **measure(args.runs, prefix, cwd, args.seed, args.against),
         }
         result["load_start"] = [round(x, 2) for x in load_start]
         result["load_end"] = [round(x, 2) for x in os.getloadavg()]
         if not args.no_variants:
             result["variants"] = variants_figures(cwd)
-    ok = all(row["pass"] for row in result["commands"])
+    ok = all(row["pass"] for row in result["commands"] if not row["against"])
     var = result.get("variants")
     if var is not None:
         ok = ok and not var.get("error") and var.get("ratio_pass", False) and var.get("memory_pass", False)
