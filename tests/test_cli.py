@@ -237,6 +237,41 @@ def test_each_command_imports_only_what_it_uses() -> None:
     assert not _under(modules, "sympy", "jinja2")
 
 
+_COLLECTOR = """
+import contextlib, gc, io, sys
+import derive.cli
+from derive.commands import listing, solve
+seen = {}
+def spy(run):
+    def command(args):
+        seen.update(enabled=gc.isenabled(), sympy="sympy" in sys.modules, frozen=gc.get_freeze_count())
+        return run(args)
+    return command
+solve.run_solve, listing.run_list = spy(solve.run_solve), spy(listing.run_list)
+sys.argv = ["derive", *sys.argv[1:]]
+with contextlib.redirect_stdout(io.StringIO()), contextlib.suppress(SystemExit):
+    derive.cli.run()
+print(seen["enabled"], seen["sympy"], seen["frozen"])
+"""
+
+
+@pytest.mark.parametrize("command", [["solve", "notes-4c11-two-spheres"], ["list"]])
+def test_the_console_script_imports_with_the_collector_off_and_works_with_it_on(command: list[str]) -> None:
+    """Start-up (issue #19): ``derive`` imports SymPy with the cyclic collector off, freezes
+    what the import made, and runs the command with the collector on (a long command, a
+    class's variants, must not grow without it). ``list`` imports no SymPy at all."""
+    import subprocess
+    import sys
+
+    r = subprocess.run([sys.executable, "-c", _COLLECTOR, *command], capture_output=True, text=True, check=True)
+    enabled, sympy_in, frozen = r.stdout.split()
+    assert enabled == "True"
+    if command[0] == "solve":
+        assert sympy_in == "True" and int(frozen) > 50_000  # SymPy's objects, out of the collector's walks
+    else:
+        assert sympy_in == "False"
+
+
 def test_a_wrong_answer_still_names_its_mistake(cli) -> None:
     """The mistakes' model, imported only for an answer that is not right, is there when
     one is. Example 4.C.11 resolved with sin and cos swapped, by hand: v_A1n = 5 sin 37.6°,
