@@ -15,6 +15,7 @@ speeds, angles and kinetic energies; it formats nothing.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -243,10 +244,7 @@ def _solve_inverse(
     Where several distinct roots are physical the data do not choose: all are kept
     (listed, not refused), the one with the smallest unknowns first."""
     numeric = problem.numeric()
-    try:
-        roots = sympy.solve(system, unknowns, dict=True)
-    except NotImplementedError:
-        roots = []
+    roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
     kept = []
     for root in roots:
         if set(root) != set(unknowns):
@@ -273,6 +271,20 @@ def _solve_inverse(
         )
     asked = set(problem.unknowns())
     return _distinct(kept, tuple(sorted(unknowns, key=lambda u: u not in asked)), numeric)
+
+
+@functools.lru_cache(maxsize=32)
+def _roots(
+    system: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...]
+) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr], ...], ...]:
+    """SymPy's roots of the system (none where it cannot solve it), kept for the process: the
+    same system in a handout, a notebook or the tests is solved once (some, with an unknown
+    angle and letters, take SymPy seconds to solve and check)."""
+    try:
+        roots = sympy.solve(list(system), unknowns, dict=True)
+    except NotImplementedError:
+        roots = []
+    return tuple(tuple(root.items()) for root in roots)
 
 
 def _distinct(
