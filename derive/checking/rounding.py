@@ -94,11 +94,19 @@ def _solve(
         eq = sympy.expand(m.num(x.xreplace(m.zeros).xreplace(subs)))
         if round_constants:
             eq = _collected(eq, m.unknowns, ctx)
-        eqs.append(eq)
+        eqs.append(_numeric(eq))
     sol = sympy.solve(eqs, m.unknowns, dict=True)
     if len(sol) != 1 or set(sol[0]) != set(m.unknowns):
         return None
     return {**sol[0], **{c: v for c, v in m.zeros.items()}}
+
+
+def _numeric(eq: sympy.Expr) -> sympy.Expr:
+    """``eq`` with each irrational number (cos 37.6°, sqrt(2)) at 30 digits. SymPy would
+    otherwise solve over the field of those numbers, finding their minimal polynomials: up to
+    15 s for a direction in 4.C.11 (issue #19); the values serve to compare an answer with."""
+    exact = [a for a in eq.atoms(sympy.Function, sympy.Pow, sympy.NumberSymbol) if not a.free_symbols]
+    return eq.xreplace({a: a.evalf(30) for a in exact}) if exact else eq
 
 
 def _collected(eq: sympy.Expr, unknowns: tuple[sympy.Symbol, ...], ctx: Context) -> sympy.Expr:
