@@ -16,6 +16,7 @@ from sympy.polys.polyerrors import BasePolynomialError
 
 from derive.checking.mistakes.quantities import results_of
 from derive.checking.mistakes.records import Mistake, Outcome, Variant
+from derive.physics.algebra import satisfies
 from derive.physics.energy import kinetic_energy
 from derive.physics.impact import Impact, equation_numbers, setup
 from derive.steps.model import Solution
@@ -148,7 +149,11 @@ class Model:
         plain = {u: sympy.Dummy(u.name, real=True) for u in self.unknowns}
         back = {d: u for u, d in plain.items()}
         try:
-            found = sympy.solve([sympy.expand(x.xreplace(plain)) for x in eqs], list(plain.values()), dict=True)
+            system = [sympy.expand(x.xreplace(plain)) for x in eqs]
+            # SymPy's check of each root simplifies every equation (seconds for an angle among
+            # letters, issue #19); satisfies() decides the same, mostly by numbers
+            found = sympy.solve(system, list(plain.values()), dict=True, check=False, simplify=False)
+            found = [r for r in found if satisfies(system, r)]
         except (NotImplementedError, BasePolynomialError):  # NotInvertible: SymPy's algebraic domain gave up
             return None  # this mistake gives no value here (as with no root)
         roots = [{back[d]: val for d, val in r.items()} for r in found]
