@@ -88,7 +88,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
                     fuzz = value  # on the call and teardown reports alike: shown once below
     if cases:
         parts = ", ".join(f"{k} {v}" for k, v in sorted(cases.items()))
-        scale = os.environ.get("DERIVE_FUZZ_SCALE", "1")
+        scale = os.environ.get("DERIVE_FUZZ_SCALE") or ("1" if os.environ.get("CI") else "0.25")
         terminalreporter.write_line(f"fuzz cases run: {sum(cases.values())} ({parts}; DERIVE_FUZZ_SCALE={scale})")
     if fuzz is not None:
         _fuzz_files_line(terminalreporter, fuzz)
