@@ -8,7 +8,7 @@ import sympy
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from derive.physics.algebra import _plain, collect
+from derive.physics.algebra import _plain, collect, satisfies
 
 rationals = st.fractions(min_value=-1000, max_value=1000, max_denominator=200).map(sympy.Rational)
 whole = st.integers(min_value=2, max_value=5000).map(sympy.Integer)
@@ -47,3 +47,21 @@ def test_collect_with_numbers_and_letters() -> None:
     x, y, m = sympy.symbols("x y m")
     assert collect(3 * sympy.sqrt(2) * x + 1, y, (x,), ()) == ((3 * sympy.sqrt(2) * x,), (y - 1,))
     assert collect(m * x + m * y, 2 * m, (x, y), ()) == ((m * x, m * y), (2 * m,))
+
+
+def test_satisfies_keeps_true_roots_and_drops_false_ones() -> None:
+    """physics.algebra.satisfies (issue #19: it spares SymPy's simplifying check): each case
+    decided by hand."""
+    x, u = sympy.symbols("x u", positive=True)
+    assert satisfies([x**2 - 4], {x: sympy.Integer(2)})
+    assert not satisfies([x**2 - 4], {x: sympy.Integer(3)})
+    # squaring made x = 4 a root of (2 - x)^2 = x; sqrt(4) + 4 - 2 = 4, not 0; x = 1 is the root
+    assert satisfies([sympy.sqrt(x) + x - 2], {x: sympy.Integer(1)})
+    assert not satisfies([sympy.sqrt(x) + x - 2], {x: sympy.Integer(4)})
+    # letters stay: u x = u^2 holds for x = u whatever u is, not for x = 2u
+    assert satisfies([u * x - u**2], {x: u})
+    assert not satisfies([u * x - u**2], {x: 2 * u})
+    # a root that zeroes a denominator does not solve (x^2 - 1)/(x - 1) = 2
+    assert not satisfies([(x**2 - 1) / (x - 1) - 2], {x: sympy.Integer(1)})
+    # an exact root with an irrational number: cos(pi/5) = (1 + sqrt 5)/4
+    assert satisfies([x - sympy.cos(sympy.pi / 5)], {x: (1 + sympy.sqrt(5)) / 4})
