@@ -7,8 +7,9 @@ never renders itself.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import fields
 
+from derive.records import dataclass
 from derive.steps.model import Solution
 
 

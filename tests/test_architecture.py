@@ -17,7 +17,15 @@ PACKAGE = Path(__file__).resolve().parent.parent / "derive"
 #: The layers, in the order data flows; a module may import from its own layer and
 #: from those before it, never from one after it.
 LAYERS = (
-    ("derive.errors", "derive.symbols", "derive.numbers", "derive.escape", "derive.resources", "derive.fileio"),
+    (
+        "derive.errors",
+        "derive.symbols",
+        "derive.numbers",
+        "derive.escape",
+        "derive.resources",
+        "derive.records",
+        "derive.fileio",
+    ),
     ("derive.problem",),
     ("derive.physics",),
     ("derive.steps",),

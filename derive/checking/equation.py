@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import sympy
 
@@ -26,6 +26,7 @@ from derive.checking.relations import Point, matches, proportional, satisfied, s
 from derive.checking.report import Diagnosis, Item
 from derive.errors import InputError
 from derive.problem.expr import ParseError
+from derive.records import dataclass
 
 SOLVING = "solving with the other equations"
 

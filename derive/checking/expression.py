@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import sympy
@@ -27,6 +26,7 @@ from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.expr import Parsed, ParseError, parse
 from derive.problem.units import ANGLE, DIMENSIONLESS
+from derive.records import dataclass
 
 if TYPE_CHECKING:
     from derive.checking.mistakes import Outcome

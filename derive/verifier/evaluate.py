@@ -10,10 +10,11 @@ moves within its half unit (each number moved both ways, the effects added).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import mpmath
 
+from derive.records import dataclass
 from derive.verifier.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 
 CTX = mpmath.MPContext()

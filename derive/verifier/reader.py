@@ -10,7 +10,8 @@ and the sentence it follows ("Add (3) and (4): ...").
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+
+from derive.records import dataclass
 
 _MATH = re.compile(r"\$([^$]+)\$")
 _STAGE = re.compile(r"Stage (\d+):")

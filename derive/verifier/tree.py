@@ -7,8 +7,10 @@ identity: two equal numbers on a line are two numbers.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from decimal import Decimal
+
+from derive.records import dataclass
 
 
 @dataclass(frozen=True, eq=False)

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy
+
+from derive.records import dataclass
 
 
 @dataclass(frozen=True)

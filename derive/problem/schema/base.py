@@ -4,7 +4,9 @@ limits) and a :class:`Table` of fields; the value types a field may have."""
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
+
+from derive.records import dataclass
 
 #: The value types a field may have (each checked by :mod:`derive.problem.validate`).
 TYPES = {

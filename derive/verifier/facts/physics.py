@@ -15,9 +15,9 @@ do not change. Nothing here knows about derive.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import sympy
+
+from derive.records import dataclass
 
 HALF = sympy.Rational(1, 2)
 

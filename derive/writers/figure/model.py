@@ -11,7 +11,9 @@ import functools
 import itertools
 import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import field
+
+from derive.records import dataclass
 
 Point = tuple[float, float]
 Segment = tuple[Point, Point]

@@ -6,20 +6,18 @@ default ``~/.cache/derive``: never the temporary folder or the folder a command 
 so that a process does not compile them again: Jinja checks
 each template's source against the cache (a changed template is compiled afresh), and the
 cache files are named by the environment's options and Jinja's version, so an
-environment never reads another's code. ``DERIVE_NO_TEMPLATE_CACHE=1`` turns it off.
+environment never reads another's code. ``DERIVE_NO_CACHE=1`` turns it off.
 """
 
 from __future__ import annotations
 
 import contextlib
 import hashlib
-import os
 from functools import cache
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from derive import escape
-from derive.resources import templates_dir
+from derive.resources import cache_disabled, cache_folder, templates_dir
 
 if TYPE_CHECKING:
     import jinja2
@@ -64,11 +62,11 @@ def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache 
     """Jinja's file cache of compiled templates, one set of files per environment's options."""
     import jinja2
 
-    if os.environ.get("DERIVE_NO_TEMPLATE_CACHE"):
+    if cache_disabled():
         return None
     key = hashlib.sha256(repr((kind, sorted(options.items()), jinja2.__version__)).encode()).hexdigest()[:16]
     try:
-        folder = _cache_folder()
+        folder = cache_folder() / "templates"
         folder.mkdir(mode=0o700, parents=True, exist_ok=True)
     except (OSError, RuntimeError):  # no home, or a read-only one: compile each time
         return None
@@ -85,14 +83,6 @@ def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache 
                 super().dump_bytecode(bucket)
 
     return Cache(str(folder), pattern=f"__derive_{key}_%s.cache")
-
-
-def _cache_folder() -> Path:
-    """The user's cache folder for derive (XDG), not shared with other users."""
-    base = Path(os.environ.get("XDG_CACHE_HOME", ""))
-    if not base.is_absolute():  # unset, or relative (which XDG says to ignore)
-        base = Path.home() / ".cache"
-    return base / "derive" / "templates"
 
 
 def _markdown_text(context: Any, text: str) -> str:
