@@ -7,8 +7,9 @@ the way to one worked solution: 26 ms of a 0.4 s command (issue #19). Compiling 
 text always gives the same code, so the code is kept, by source text, in the user's cache folder
 (``$XDG_CACHE_HOME/derive``, as the compiled templates are) and read back once a process: the
 same 43 classes then take about 5 ms. The classes are exactly what ``dataclasses.dataclass``
-makes; only the compiling is skipped. ``DERIVE_NO_CACHE=1`` turns the cache off, and a
-cache that cannot be read or written is ignored (the methods are compiled, as without it).
+makes; only the compiling is skipped. (The verifier, which reads derive's pages and imports
+nothing of derive, keeps the standard library's.) ``DERIVE_NO_CACHE=1`` turns the cache off,
+and a cache that cannot be read or written is ignored (the methods are compiled, as without it).
 """
 
 from __future__ import annotations

@@ -10,11 +10,10 @@ moves within its half unit (each number moved both ways, the effects added).
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import mpmath
 
-from derive.records import dataclass
 from derive.verifier.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 
 CTX = mpmath.MPContext()

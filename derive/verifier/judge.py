@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import copy
 from collections.abc import Iterator
+from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
-from derive.records import dataclass
 from derive.verifier import units
 from derive.verifier.evaluate import CTX, ZERO, Env, Undefined, Unresolved, measure, mpf, walk
 from derive.verifier.facts import Facts, Scope

@@ -10,8 +10,7 @@ and the sentence it follows ("Add (3) and (4): ...").
 from __future__ import annotations
 
 import re
-
-from derive.records import dataclass
+from dataclasses import dataclass
 
 _MATH = re.compile(r"\$([^$]+)\$")
 _STAGE = re.compile(r"Stage (\d+):")

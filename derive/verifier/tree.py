@@ -7,10 +7,8 @@ identity: two equal numbers on a line are two numbers.
 
 from __future__ import annotations
 
-from dataclasses import field
+from dataclasses import dataclass, field
 from decimal import Decimal
-
-from derive.records import dataclass
 
 
 @dataclass(frozen=True, eq=False)

@@ -12,12 +12,11 @@ finds it: a line before that must hold for every value of it.
 from __future__ import annotations
 
 import re
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
 
-from derive.records import dataclass
 from derive.verifier import units
 from derive.verifier.facts.model import Facts, Quantity, Scope, Table, number
 from derive.verifier.facts.problem import dim_of, impact

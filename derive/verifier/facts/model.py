@@ -13,12 +13,11 @@ from __future__ import annotations
 import re
 import zlib
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from decimal import Decimal
 
 import sympy
 
-from derive.records import dataclass
 from derive.verifier import units
 from derive.verifier.evaluate import CTX
 

@@ -15,9 +15,9 @@ do not change. Nothing here knows about derive.
 
 from __future__ import annotations
 
-import sympy
+from dataclasses import dataclass
 
-from derive.records import dataclass
+import sympy
 
 HALF = sympy.Rational(1, 2)
 

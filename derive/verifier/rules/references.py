@@ -16,8 +16,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from dataclasses import dataclass
 
-from derive.records import dataclass
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute
 from derive.verifier.judge import Claim, Judge, Value, tolerance
 from derive.verifier.report import Failure
