@@ -11,11 +11,13 @@ with B = ``python -c "import sympy"`` (a shuffled order each round, as latency.p
   which every command that does algebra pays and B does not;
 - ``B + first Add + jinja2``: what a Markdown, LaTeX or HTML page needs before derive's own code;
 - ``B, gc.freeze() at exit``: B without the interpreter's last collections over SymPy's objects,
-  which derive's console script skips the same way (derive.cli.run): the ratio of a command to
-  this row is its cost against a baseline that exits as derive does;
+  which derive's console script skips the same way (derive.cli.run);
+- ``B as derive runs it``: B with the collector off while SymPy is imported and SymPy's objects
+  frozen, as derive.cli.run does, and frozen at exit: the last column gives each row's ratio
+  to it, a command's cost against a baseline that starts and exits as derive does;
 - ``imports of CMD``: a process that imports the command's modules, in the command's order (with
-  sympy.tensor where the command made a sum), does nothing else and exits as derive's console
-  script does;
+  sympy.tensor where the command made a sum), with the collector off, does nothing else and
+  exits as derive's console script does;
 - ``CMD``: the command itself (the console script, as latency.py runs it).
 
 The difference between the last two is the command's work (read, solve, write); the imports alone
@@ -49,13 +51,20 @@ print("\\n".join(sys.modules))
 #: the command made a sum, as SymPy imports it then), and nothing else; it exits as derive.cli.run does.
 IMPORT = """
 import gc, importlib, sys
+gc.disable()  # as derive.cli.run imports SymPy
 for name in open(sys.argv[1]).read().split():
     try:
         importlib.import_module(name)
     except Exception:  # a module that cannot be imported on its own (a platform's, a test's)
         pass
 gc.freeze()
+gc.enable()
+gc.freeze()
 """
+
+#: B as derive's console script would run it (derive.cli.run): the collector off while SymPy is
+#: imported, SymPy's objects frozen, and frozen again at exit. The like-for-like baseline.
+B_AS_DERIVE = "import gc; gc.disable(); import sympy; gc.freeze(); gc.enable(); gc.freeze()"
 
 
 def module_list(args: tuple[str, ...], cwd: str, number: int) -> str:
@@ -77,6 +86,7 @@ def main() -> int:
     with tempfile.TemporaryDirectory(prefix="derive-floor-") as cwd:
         processes: list[tuple[str, list[str]]] = [
             ("B, gc.freeze() at exit", [sys.executable, "-c", "import sympy, gc; gc.freeze()"]),
+            ("B as derive runs it", [sys.executable, "-c", B_AS_DERIVE]),
             ("B + first Add", [sys.executable, "-c", FIRST_ADD]),
             ("B + first Add + jinja2", [sys.executable, "-c", FIRST_ADD + "; import jinja2"]),
         ]
@@ -101,12 +111,13 @@ def main() -> int:
     start, end = ([round(x, 2) for x in load] for load in (load_start, os.getloadavg()))
     print(f"runs: {opts.runs}; load average at start {start}, at end {end}; cores: {os.cpu_count()}")
     b, b_cpu = statistics.median(walls["B"]), statistics.median(cpus["B"])
-    print(f"{'':26s} {'median':>8s} {'ratio':>6s} {'cpu':>8s} {'cpu ratio':>9s}")
-    rows = ["B", "B, gc.freeze() at exit", "B + first Add", "B + first Add + jinja2"]
+    same = statistics.median(walls["B as derive runs it"])
+    print(f"{'':26s} {'median':>8s} {'ratio':>6s} {'cpu':>8s} {'cpu ratio':>9s} {'like for like':>13s}")
+    rows = ["B", "B, gc.freeze() at exit", "B as derive runs it", "B + first Add", "B + first Add + jinja2"]
     rows += [key for name, _, _ in COMMANDS for key in (f"imports of {name}", name)]
     for key in rows:
         w, c = statistics.median(walls[key]), statistics.median(cpus[key])
-        print(f"{key:26s} {w:6.3f} s {w / b:5.2f}x {c:6.3f} s {c / b_cpu:8.2f}x")
+        print(f"{key:26s} {w:6.3f} s {w / b:5.2f}x {c:6.3f} s {c / b_cpu:8.2f}x {w / same:12.2f}x")
     return 0
 
 
