@@ -65,3 +65,12 @@ def test_satisfies_keeps_true_roots_and_drops_false_ones() -> None:
     assert not satisfies([(x**2 - 1) / (x - 1) - 2], {x: sympy.Integer(1)})
     # an exact root with an irrational number: cos(pi/5) = (1 + sqrt 5)/4
     assert satisfies([x - sympy.cos(sympy.pi / 5)], {x: (1 + sympy.sqrt(5)) / 4})
+
+
+def test_satisfies_leaves_a_residual_that_is_no_number_to_sympy() -> None:
+    """sin(oo) is AccumBounds(-1, 1) to SymPy, not a number: satisfies() does not fail on it
+    but gives the verdict of SymPy's own check."""
+    x = sympy.Symbol("x")
+    assert sympy.sin(x).xreplace({x: sympy.oo}) == sympy.AccumBounds(-1, 1)
+    expected = sympy.checksol(sympy.sin(x), {x: sympy.oo}) is not False
+    assert satisfies([sympy.sin(x)], {x: sympy.oo}) is expected

@@ -115,9 +115,13 @@ def satisfies(system: list[sympy.Expr], root: dict[sympy.Symbol, sympy.Expr]) ->
 
 
 def _nearly_zero(expr: sympy.Expr) -> bool:
-    """True when ``expr``, a number, is zero to 30 digits relative to its largest term."""
-    terms = [complex(sympy.N(t, 30)) for t in sympy.Add.make_args(expr)]
-    total = complex(sympy.N(expr, 30))
+    """True when ``expr``, a number, is zero to 30 digits relative to its largest term (False
+    where it is not a plain number: the caller then asks SymPy)."""
+    try:
+        terms = [complex(sympy.N(t, 30)) for t in sympy.Add.make_args(expr)]
+        total = complex(sympy.N(expr, 30))
+    except (TypeError, ValueError):  # AccumBounds and the like: not a number
+        return False
     if any(not (abs(t) < float("inf")) for t in [*terms, total]):  # zoo, nan: a zero denominator
         return False
     return abs(total) <= 1e-20 * max(1.0, *(abs(t) for t in terms))
