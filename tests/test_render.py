@@ -156,6 +156,7 @@ def test_compiled_templates_are_cached_in_the_users_cache_folder_not_the_tempora
     monkeypatch.setattr(tempfile, "tempdir", str(tmp))
     monkeypatch.setenv("XDG_CACHE_HOME", str(cache))
     monkeypatch.delenv("DERIVE_NO_TEMPLATE_CACHE", raising=False)
+    monkeypatch.delenv("DERIVE_NO_CACHE", raising=False)
     environment.cache_clear()
     try:
         derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
@@ -177,3 +178,20 @@ def test_compiled_templates_are_cached_in_the_users_cache_folder_not_the_tempora
         assert "\\tag{4}" in derive.render(derive.solve(derive.load("notes-4c11-two-spheres")), "md")
     finally:
         environment.cache_clear()
+
+
+def test_derive_no_cache_turns_the_template_cache_off(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """DERIVE_NO_CACHE=1 (issue #19: one switch for derive's caches) leaves templates uncached,
+    as the older DERIVE_NO_TEMPLATE_CACHE=1 does."""
+    from derive.writers.view.jinja import environment
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    for name in ("DERIVE_NO_CACHE", "DERIVE_NO_TEMPLATE_CACHE"):
+        monkeypatch.delenv("DERIVE_NO_CACHE", raising=False)
+        monkeypatch.delenv("DERIVE_NO_TEMPLATE_CACHE", raising=False)
+        monkeypatch.setenv(name, "1")
+        environment.cache_clear()
+        try:
+            assert environment("md").bytecode_cache is None
+        finally:
+            environment.cache_clear()
