@@ -9,7 +9,8 @@ text always gives the same code, so the code is kept, by source text, in the use
 same 43 classes then take about 5 ms. The classes are exactly what ``dataclasses.dataclass``
 makes; only the compiling is skipped. (The verifier, which reads derive's pages and imports
 nothing of derive, keeps the standard library's.) ``DERIVE_NO_CACHE=1`` turns the cache off,
-and a cache that cannot be read or written is ignored (the methods are compiled, as without it).
+and a cache that cannot be read or written, or that another user could have written, is
+ignored (the methods are compiled, as without it).
 """
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ from pathlib import Path
 from types import CodeType
 from typing import Any
 
-from derive.resources import cache_disabled, cache_folder
+from derive.resources import cache_disabled, cache_folder, private
 
 __all__ = ["dataclass"]
 
@@ -86,8 +87,11 @@ def _cache() -> dict[str, CodeType]:
     global _codes
     if _codes is None:
         _codes = {}
+        data = None
         try:
-            data = marshal.loads(_file().read_bytes())
+            path = _file()
+            if private(path) and private(path.parent):  # only code the user's own processes wrote
+                data = marshal.loads(path.read_bytes())
         except (OSError, RuntimeError, ValueError, EOFError, TypeError):
             data = None
         if isinstance(data, dict):

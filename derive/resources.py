@@ -48,3 +48,14 @@ def cache_disabled() -> bool:
     """Whether the user turned derive's caches off (``DERIVE_NO_CACHE=1``; the older
     ``DERIVE_NO_TEMPLATE_CACHE=1`` too)."""
     return bool(os.environ.get("DERIVE_NO_CACHE") or os.environ.get("DERIVE_NO_TEMPLATE_CACHE"))
+
+
+def private(path: Path) -> bool:
+    """Whether ``path`` (a cache file or folder) is the user's own and nobody else can write
+    to it: derive runs the code its caches hold, so a cache another user could have written
+    is not read."""
+    try:
+        st = path.stat()
+    except OSError:
+        return False
+    return st.st_uid == os.geteuid() and not st.st_mode & 0o022

@@ -90,3 +90,16 @@ def test_derive_no_cache_writes_nothing(tmp_path: Path) -> None:
     cache = tmp_path / "cache"
     assert _define(cache, DERIVE_NO_CACHE="1") == "read"  # the plain dataclass: nothing kept
     assert not cache.exists()
+
+
+def test_a_cache_another_user_could_write_is_not_read(tmp_path: Path) -> None:
+    """derive runs the code its cache holds: a file or folder others may write to is ignored."""
+    cache = tmp_path / "cache"
+    assert _define(cache) == "compiled"
+    kept = cache / "derive" / f"records-{sys.implementation.cache_tag}.marshal"
+    kept.chmod(0o666)
+    assert _define(cache) == "compiled"  # not read; written again, the user's own
+    assert kept.stat().st_mode & 0o777 == 0o600
+    assert _define(cache) == "read"
+    (cache / "derive").chmod(0o777)
+    assert _define(cache) == "compiled"

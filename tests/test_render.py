@@ -195,3 +195,23 @@ def test_derive_no_cache_turns_the_template_cache_off(monkeypatch: pytest.Monkey
             assert environment("md").bytecode_cache is None
         finally:
             environment.cache_clear()
+
+
+def test_a_template_cache_others_can_write_is_not_used(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    """Compiled templates are code derive runs: a cache folder others may write to is not used."""
+    from derive.writers.view.jinja import environment
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.delenv("DERIVE_NO_CACHE", raising=False)
+    monkeypatch.delenv("DERIVE_NO_TEMPLATE_CACHE", raising=False)
+    folder = tmp_path / "cache" / "derive" / "templates"
+    folder.mkdir(parents=True)
+    environment.cache_clear()
+    try:
+        folder.chmod(0o700)
+        assert environment("md").bytecode_cache is not None
+        environment.cache_clear()
+        folder.chmod(0o777)
+        assert environment("md").bytecode_cache is None
+    finally:
+        environment.cache_clear()

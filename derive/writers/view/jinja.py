@@ -17,7 +17,7 @@ from functools import cache
 from typing import TYPE_CHECKING, Any
 
 from derive import escape
-from derive.resources import cache_disabled, cache_folder, templates_dir
+from derive.resources import cache_disabled, cache_folder, private, templates_dir
 
 if TYPE_CHECKING:
     import jinja2
@@ -69,6 +69,8 @@ def _bytecode_cache(kind: str, options: dict[str, Any]) -> jinja2.BytecodeCache 
         folder = cache_folder() / "templates"
         folder.mkdir(mode=0o700, parents=True, exist_ok=True)
     except (OSError, RuntimeError):  # no home, or a read-only one: compile each time
+        return None
+    if not private(folder):  # another user could have written its code: compile each time
         return None
 
     class Cache(jinja2.FileSystemBytecodeCache):
