@@ -30,7 +30,9 @@ package's __pycache__ folders, which git ignores): an installed wheel has it, bu
 checkout on a machine with PYTHONDONTWRITEBYTECODE=1 never writes it, and would charge derive
 about 0.1 s of CPU for compiling on every call, which users never pay.
 ``--no-compile`` measures the tree as it is. One untimed warm-up run of each command checks its
-exit code and output and warms the file cache.
+exit code and output and warms the file cache, and derive's own caches in
+``$XDG_CACHE_HOME/derive`` (compiled templates, the code of its records' methods), as a user's
+first command does for every later one; with ``DERIVE_NO_CACHE=1`` set, every run compiles them.
 
 ``--against TREE`` also runs each command from another source tree (``PYTHONPATH=TREE``, e.g. a
 worktree of the commit before a change), in the same rounds: a before and after measured under
