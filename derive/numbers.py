@@ -205,15 +205,20 @@ def _places_shown(x: Decimal, digits: int | None, extra: int) -> tuple[int, int]
     return out[0], out[1]
 
 
-def short_decimal(value: sympy.Expr) -> bool:
-    """True for an exact number with a short decimal form (0.2, 12.5, 1.67e-27): printed as written."""
+def terminates(value: sympy.Expr) -> bool:
+    """True for a rational number whose decimal form ends (its denominator has no prime but 2 and 5)."""
     if not value.is_Rational:
         return False
     q = value.q
     for f in (2, 5):
         while q % f == 0:
             q //= f
-    return q == 1 and len(abs(to_decimal(value)).normalize().as_tuple().digits) <= 6
+    return q == 1
+
+
+def short_decimal(value: sympy.Expr) -> bool:
+    """True for an exact number with a short decimal form (0.2, 12.5, 1.67e-27): printed as written."""
+    return terminates(value) and len(abs(to_decimal(value)).normalize().as_tuple().digits) <= 6
 
 
 def as_written(value: sympy.Expr | Decimal) -> str:

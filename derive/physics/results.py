@@ -185,22 +185,15 @@ def _velocities(r: _Collector) -> None:
         n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
         r.add(f"v_{b}2", lambda n=n, t=t: sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
         moving = _moving(n, t, p)
-        r.add(
-            f"theta_{b}2",
-            lambda n=n, t=t: sympy.atan2(n, t),
-            "deg",
-            f"direction of {b} after the impact, from +t toward +n",
-            degrees=True,
-            present=moving,
-        )
-        r.add(
-            f"beta_{b}2",
-            lambda n=n, t=t: sympy.atan2(t, n),
-            "deg",
-            f"direction of {b} after the impact, from +n toward +t",
-            degrees=True,
-            present=moving,
-        )
+        for angle, y, x, sense in (("theta", n, t, "from +t toward +n"), ("beta", t, n, "from +n toward +t")):
+            r.add(
+                f"{angle}_{b}2",
+                lambda y=y, x=x: sympy.atan2(y, x),
+                "deg",
+                f"direction of {b} after the impact, {sense}",
+                degrees=True,
+                present=moving,
+            )
     if p.phi is not None:
         for b in "AB":
             if b == "B" and p.fixed_B:

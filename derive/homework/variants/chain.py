@@ -21,6 +21,7 @@ import sympy
 
 from derive.errors import DeriveError, InputError
 from derive.homework.variants.record import Variant
+from derive.numbers import terminates
 from derive.problem import ChainProblem, Condition, Given, Source, parse_toml
 from derive.problem.givens import QUANTITY
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, parse_unit, plain_unit
@@ -174,13 +175,7 @@ def written_value(g: Given, value: sympy.Expr, raw: object, where: str | None = 
 
 def _decimal(q: sympy.Expr) -> str | None:
     """A rational number as a terminating decimal ("0.25", "-3", "12.5"), else None."""
-    if not isinstance(q, sympy.Rational):
-        return None
-    den = int(q.q)
-    for f in (2, 5):
-        while den % f == 0:
-            den //= f
-    if den != 1:
+    if not isinstance(q, sympy.Rational) or not terminates(q):
         return None
     with localcontext() as ctx:
         ctx.prec = 100

@@ -5,7 +5,17 @@ from __future__ import annotations
 from dataclasses import replace
 
 from derive.problem.schema.base import MAX_LINE, MAX_TEXT, NAME_PATTERN, Field, Table
-from derive.problem.schema.problem import DIGITS, GIVEN, IMPACT_FIELDS, TEXTS, TITLE, UNITS, VARY, kind_field
+from derive.problem.schema.problem import (
+    DIGITS,
+    GIVEN,
+    IMPACT_FIELDS,
+    TEXTS,
+    TITLE,
+    UNITS,
+    VARY,
+    conditions_field,
+    kind_field,
+)
 
 
 def _expr(name: str, meaning: str, *, required: bool = True, default: str = "") -> Field:
@@ -138,13 +148,8 @@ CHAIN = Table(
         ),
         Field("find", "names", "the names boxed in the answer", max_items=30, expected="a list of names"),
         Field("vary", "table", "ranges or choices for homework variants, of the chain's givens", table=VARY),
-        Field(
-            "conditions",
-            "list",
-            'conditions every variant must meet, on givens and results of any stage, such as `"u_A > w_B"`',
-            max_items=20,
-            items=Field("condition", "text", "a comparison", max_length=500),
-            expected='a list of conditions such as ["h_2 > 0.5"]',
+        conditions_field(
+            'conditions every variant must meet, on givens and results of any stage, such as `"u_A > w_B"`', "h_2 > 0.5"
         ),
     ),
 )

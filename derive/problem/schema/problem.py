@@ -155,6 +155,18 @@ def kind_field(choices: tuple[str, ...], meaning: str, expected: str) -> Field:
     return Field("kind", "choice", meaning, required=True, choices=choices, expected=expected)
 
 
+def conditions_field(meaning: str, example: str) -> Field:
+    """The ``conditions`` every homework variant must meet (of a problem, or of a chain)."""
+    return Field(
+        "conditions",
+        "list",
+        meaning,
+        max_items=20,
+        items=Field("condition", "text", "a comparison", max_length=500),
+        expected=f'a list of conditions such as ["{example}"]',
+    )
+
+
 RELATION = Field("relation", "text", "an equation in the givens and results", max_length=500)
 ASK_RANGE = Table(
     "range",
@@ -250,14 +262,7 @@ IMPACT_FIELDS = (
     Field("geometry", "table", "the line of impact in x-y axes (below)", table=GEOMETRY),
     *ASKS,
     Field("vary", "table", "ranges or choices for homework variants (below)", table=VARY),
-    Field(
-        "conditions",
-        "list",
-        'conditions every variant must meet, such as `"v_B2 > 0"`',
-        max_items=20,
-        items=Field("condition", "text", "a comparison", max_length=500),
-        expected='a list of conditions such as ["v_B2n > 0"]',
-    ),
+    conditions_field('conditions every variant must meet, such as `"v_B2 > 0"`', "v_B2n > 0"),
     Field("A", "table", "the direction of A's velocity", table=BODY),
     Field("B", "table", "the direction of B's velocity; `fixed = true` for a wall or floor", table=BODY),
 )
