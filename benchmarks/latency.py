@@ -30,9 +30,9 @@ package's __pycache__ folders, which git ignores): an installed wheel has it, bu
 checkout on a machine with PYTHONDONTWRITEBYTECODE=1 never writes it, and would charge derive
 about 0.1 s of CPU for compiling on every call, which users never pay.
 ``--no-compile`` measures the tree as it is. One untimed warm-up run of each command checks its
-exit code and output and warms the file cache, and derive's own caches in
-``$XDG_CACHE_HOME/derive`` (compiled templates, the code of its records' methods), as a user's
-first command does for every later one; with ``DERIVE_NO_CACHE=1`` set, every run compiles them.
+exit code and output and warms the file cache, as a user's first command does for every later
+one. derive keeps nothing on disk between runs (issue #25): every run compiles its templates and
+defines its records afresh.
 
 ``--against TREE`` also runs each command from another source tree (``PYTHONPATH=TREE``, e.g. a
 worktree of the commit before a change), in the same rounds: a before and after measured under
@@ -61,9 +61,9 @@ BASELINE = ("-c", "import sympy")
 
 #: name, arguments after ``derive``, target ratio to B (at or under).
 COMMANDS: list[tuple[str, tuple[str, ...], float]] = [
-    ("solve md", ("solve", PROBLEM), 1.3),
-    ("solve json", ("solve", PROBLEM, "-f", "json"), 1.3),
-    ("check", ("check", PROBLEM, "--answer", "v_A2n=-1.11"), 1.4),
+    ("solve md", ("solve", PROBLEM), 1.8),  # issue #25: within 1.8x, with no tricks
+    ("solve json", ("solve", PROBLEM, "-f", "json"), 1.8),
+    ("check", ("check", PROBLEM, "--answer", "v_A2n=-1.11"), 1.8),
     ("list", ("list",), 0.3),
 ]
 

@@ -78,13 +78,9 @@ def _main(argv: list[str]) -> int:
 
 
 def _imports(command: str) -> None:
-    """Import SymPy for every command but ``list`` (the one that does no algebra), then let the
-    cyclic collector run again over what is made from here on (see :func:`run`)."""
+    """Import SymPy for every command but ``list`` (the one that does no algebra)."""
     if command != "list":
-        import sympy  # noqa: F401  (with the collector off when run() turned it off)
-    if not gc.isenabled():  # run() turned it off: SymPy's objects are frozen out of its reach
-        gc.freeze()
-        gc.enable()
+        import sympy  # noqa: F401
 
 
 def _traceback() -> None:
@@ -96,11 +92,6 @@ def _traceback() -> None:
 
 def run() -> None:
     """Console-script entry point."""
-    # Start-up: the cyclic collector stays off while SymPy is imported. The import makes
-    # hundreds of thousands of long-lived objects and no garbage cycles, and the collector's
-    # full passes over them cost about 30 ms of a 0.3 s import (issue #19); _imports() then
-    # freezes them (later passes skip them) and turns the collector on for the command's work.
-    gc.disable()
     code = main()
     # The process ends here. Its objects (SymPy's hundreds of thousands) are moved out of the
     # cyclic collector's reach, so that the interpreter's last collections do not walk them on

@@ -7,9 +7,8 @@ never renders itself.
 
 from __future__ import annotations
 
-from dataclasses import fields
+from dataclasses import dataclass, fields
 
-from derive.records import dataclass
 from derive.steps.model import Solution
 
 

@@ -23,7 +23,6 @@ LAYERS = (
         "derive.numbers",
         "derive.escape",
         "derive.resources",
-        "derive.records",
         "derive.fileio",
     ),
     ("derive.problem",),

@@ -13,9 +13,9 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from derive.checking.notation import student
-from derive.records import dataclass
 
 #: The most relations of one derivation that are judged (the rest are reported as not checked).
 MAX_LINES = 200

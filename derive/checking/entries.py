@@ -9,12 +9,12 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import sympy
 
 from derive.errors import InputError
-from derive.records import dataclass
 
 _LABEL = re.compile(r"^\s*(?:\(\s*([A-Za-z0-9]{1,8})\s*\)\s*:?|([A-Za-z0-9]{1,8})\s*:)\s*")
 

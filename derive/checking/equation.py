@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -26,7 +26,6 @@ from derive.checking.relations import Point, matches, proportional, satisfied, s
 from derive.checking.report import Diagnosis, Item
 from derive.errors import InputError
 from derive.problem.expr import ParseError
-from derive.records import dataclass
 
 SOLVING = "solving with the other equations"
 

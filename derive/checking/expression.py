@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import sympy
@@ -26,7 +27,6 @@ from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.expr import Parsed, ParseError, parse
 from derive.problem.units import ANGLE, DIMENSIONLESS
-from derive.records import dataclass
 
 if TYPE_CHECKING:
     from derive.checking.mistakes import Outcome

@@ -14,6 +14,7 @@ its wrong number instead.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 import sympy
 
@@ -32,7 +33,6 @@ from derive.errors import InputError
 from derive.numbers import format_number
 from derive.problem import units
 from derive.problem.expr import ParseError, parse
-from derive.records import dataclass
 
 TRUE = "substituting the correct values"
 _NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")

@@ -7,11 +7,11 @@ checks found: it judges nothing.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 from derive import escape
 from derive.errors import InputError
-from derive.records import dataclass
 
 FORMATS = ("text", "md", "json")
 #: Every status an item can have, in the order the summary counts them.

@@ -16,11 +16,11 @@ the impact. The equations are those of :mod:`derive.impact`::
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import sympy
 
-from derive.records import dataclass
 from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.symbols import kind_of, symbol
 from derive.writers.printing import Style, latex_eqn, latex_inline

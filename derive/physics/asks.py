@@ -12,13 +12,13 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import sympy
 
 from derive.physics.results import Result
 from derive.problem import Problem
 from derive.problem.symbolic import Range, Relation
-from derive.records import dataclass
 
 POINTS = 24
 

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import functools
 import math
+from dataclasses import dataclass
 from typing import Any
 
 import sympy
@@ -24,7 +25,6 @@ import sympy
 from derive.errors import SolveError
 from derive.physics.forms import factored
 from derive.problem import Problem
-from derive.records import dataclass
 from derive.symbols import symbol
 
 

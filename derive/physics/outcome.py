@@ -8,7 +8,7 @@ impact stage.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -16,7 +16,6 @@ from derive.physics.asks import Found, Shown, decide, solve_range
 from derive.physics.impact import Impact, evaluate, setup
 from derive.physics.results import Result, results
 from derive.problem import Motion, Problem
-from derive.records import dataclass
 from derive.symbols import symbol
 
 

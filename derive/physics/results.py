@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import sympy
@@ -17,7 +18,6 @@ from derive.physics import forms
 from derive.physics.energy import HALF
 from derive.physics.impact import Impact, evaluate, independent_map
 from derive.problem import Problem, units
-from derive.records import dataclass
 from derive.symbols import symbol
 
 

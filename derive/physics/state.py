@@ -10,6 +10,7 @@ is a problem of its own, solved by the same single-impact physics
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import sympy
@@ -18,7 +19,6 @@ from derive.errors import ExpressionError, InputError
 from derive.physics.results import Result
 from derive.problem import ChainProblem, Given, units
 from derive.problem.expr import ParseError, parse
-from derive.records import dataclass
 from derive.symbols import symbol
 
 

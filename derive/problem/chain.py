@@ -11,7 +11,7 @@ solved by :mod:`derive.physics.chain`; an impact stage is read as a problem of i
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
@@ -25,7 +25,6 @@ from derive.problem.schema import CHAIN, STAGES
 from derive.problem.source import Source
 from derive.problem.units import DIMENSIONLESS
 from derive.problem.validate import check
-from derive.records import dataclass
 from derive.symbols import symbol
 
 STAGE_TYPES = tuple(STAGES)

@@ -13,11 +13,11 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import sympy
 
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
-from derive.records import dataclass
 
 MAX_LENGTH = 500
 MAX_DEPTH = 40

@@ -8,7 +8,7 @@ file and the line (``file:7: [given] e = 1.3: …``) and raises it again.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
@@ -18,7 +18,6 @@ from derive.problem import units
 from derive.problem.expr import NAME_RE
 from derive.problem.symbolic import Asks
 from derive.problem.units import Dim
-from derive.records import dataclass
 
 KINDS = ("direct", "oblique")
 AXES = ("+n", "-n", "+t", "-t")

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
@@ -19,7 +19,6 @@ from derive.problem import units
 from derive.problem.expr import NAME_RE, Parsed, ParseError, parse
 from derive.problem.source import Source, type_name
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
-from derive.records import dataclass
 from derive.symbols import symbol
 
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d{1,2})?)\s*([A-Za-z°].*?)\s*$")

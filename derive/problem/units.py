@@ -9,10 +9,9 @@ mistaken for a pure number.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 
 import sympy
-
-from derive.records import dataclass
 
 Dim = tuple[int, int, int, int]
 

@@ -8,14 +8,13 @@ the way.
 
 from __future__ import annotations
 
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
 
 from derive.numbers import as_written, tidy
 from derive.physics.algebra import collect, common_factor
-from derive.records import dataclass
 from derive.steps.model import Block, Eqn, Math, Side, Text
 from derive.steps.page import Page, nonzero
 

@@ -8,14 +8,13 @@ mathematics stays SymPy until a renderer prints it.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any, Literal
 
 import sympy
 
 from derive.physics.results import Result
 from derive.problem import ChainProblem, Problem
-from derive.records import dataclass
 
 #: How a side of an equation line is printed:
 #: 'symbolic' as it stands; 'values' with each given's number in place of its

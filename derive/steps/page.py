@@ -6,7 +6,7 @@ what later steps need), so no step depends on another having run first.
 
 from __future__ import annotations
 
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import sympy
 
@@ -14,7 +14,6 @@ from derive.numbers import short_decimal
 from derive.physics.impact import equation_numbers, evaluate
 from derive.physics.outcome import ImpactOutcome, xy_motions
 from derive.physics.results import working_unit
-from derive.records import dataclass
 from derive.steps.model import Math, Text
 from derive.symbols import symbol
 

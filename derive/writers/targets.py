@@ -23,10 +23,10 @@ its wider text (11 pt, 2.2 cm margins).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Literal
 
 from derive.errors import InputError
-from derive.records import dataclass
 
 #: The width (pt of 10 pt type) a display line may take in ``article`` (345 pt of text),
 #: less a margin for the estimate (see :mod:`derive.writers.width`) and for an equation number.

@@ -3,12 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import Any
 
 import sympy
-
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

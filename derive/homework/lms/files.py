@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from derive.errors import InputError
-from derive.records import dataclass
 
 
 @dataclass

@@ -3,12 +3,12 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from decimal import Decimal
 
 from derive.errors import InputError
 from derive.homework.variants import Compiled, Variant, answers
 from derive.numbers import figures_for, float_decimal
-from derive.records import dataclass
 
 #: The tolerance in units of the last digit shown: ½ (rounding) + 1 (the checker's allowance).
 TOLERANCE_UNITS = Decimal("1.5")

@@ -4,7 +4,7 @@ variant, and the ranges in which a response gets a mistake's hint."""
 from __future__ import annotations
 
 import copy
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from decimal import Decimal
 
 import sympy
@@ -13,7 +13,6 @@ from derive.checking import mistakes
 from derive.homework.lms.grading import Answer, figures_of, tolerance
 from derive.homework.variants import Compiled, Variant
 from derive.numbers import float_decimal, format_number
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

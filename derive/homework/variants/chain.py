@@ -14,6 +14,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+from dataclasses import dataclass
 from decimal import Decimal, localcontext
 from typing import Any, ClassVar
 
@@ -25,7 +26,6 @@ from derive.numbers import terminates
 from derive.problem import ChainProblem, Condition, Given, Source, parse_toml
 from derive.problem.givens import QUANTITY
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, parse_unit, plain_unit
-from derive.records import dataclass
 from derive.steps.model import Solution
 
 #: Solved variants kept (a variant is drawn, checked and then written: solved once).

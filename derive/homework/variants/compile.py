@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, ClassVar
 
 import sympy
@@ -13,7 +13,6 @@ import sympy
 from derive.errors import InputError
 from derive.physics.impact import independent_map
 from derive.problem import Given, Problem
-from derive.records import dataclass
 from derive.steps.model import Solution
 from derive.writers.printing import SlotBook
 

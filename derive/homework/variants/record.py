@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import sympy
+from dataclasses import dataclass
 
-from derive.records import dataclass
+import sympy
 
 
 @dataclass(frozen=True)

@@ -4,12 +4,13 @@ values of a coefficient they do."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy
 
 from derive.physics.asks import drop_positive
 from derive.physics.state import ChainState, StageOutcome, resolve
 from derive.problem import units
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,7 @@ the chain, a given marked "?", from a condition such as ``h_2 = 40 m``)."""
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -11,7 +11,6 @@ from derive.errors import ExpressionError, SolveError
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import Given, units
 from derive.problem.expr import ParseError, number_with_unit, parse
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

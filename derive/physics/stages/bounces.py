@@ -7,11 +7,12 @@ distance travelled before the ball comes to rest is a geometric series.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy
 
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import Given, units
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

@@ -4,13 +4,14 @@ friction) and ``spring`` (greatest compression)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy
 
 from derive.errors import SolveError
 from derive.physics.energy import HALF
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import Given, units
-from derive.records import dataclass
 from derive.symbols import symbol
 
 

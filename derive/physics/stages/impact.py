@@ -3,7 +3,7 @@ and solved by the same single-impact physics as a problem file."""
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -12,7 +12,6 @@ from derive.physics.impact import independent_map
 from derive.physics.outcome import ImpactOutcome, solve_impact
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import build_problem, units
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)

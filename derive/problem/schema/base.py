@@ -4,9 +4,7 @@ limits) and a :class:`Table` of fields; the value types a field may have."""
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field
-
-from derive.records import dataclass
+from dataclasses import dataclass, field
 
 #: The value types a field may have (each checked by :mod:`derive.problem.validate`).
 TYPES = {

@@ -12,11 +12,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 
 import sympy
 
 from derive.problem import Problem
-from derive.records import dataclass
 from derive.steps.model import Solution
 from derive.writers.figure.model import Point
 

@@ -11,8 +11,8 @@ from __future__ import annotations
 import functools
 import math
 from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass
 
-from derive.records import dataclass
 from derive.writers.figure.model import Body, Label, Point, Segment, Shape, segments
 
 EM = 0.40  # cm: the labels' font size (11 pt is 0.39 cm)

@@ -11,9 +11,7 @@ import functools
 import itertools
 import math
 from collections.abc import Callable
-from dataclasses import field
-
-from derive.records import dataclass
+from dataclasses import dataclass, field
 
 Point = tuple[float, float]
 Segment = tuple[Point, Point]

@@ -6,8 +6,8 @@ below, the problem's e marked across both. :mod:`.draw` draws it as SVG or TikZ.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
-from derive.records import dataclass
 from derive.writers.plot.curves import Curves
 
 WIDTH = 13.0  # cm: fits the text width of A4 (16.6 cm) and Letter (17.2 cm)

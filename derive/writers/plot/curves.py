@@ -10,7 +10,7 @@ the forward problem at the values it found, so that e can vary.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -19,7 +19,6 @@ from derive.physics.impact import independent_map
 from derive.physics.outcome import ImpactOutcome, solve_impact
 from derive.problem import Problem, units
 from derive.problem.reader import POST
-from derive.records import dataclass
 
 SAMPLES = 101
 

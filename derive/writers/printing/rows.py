@@ -3,14 +3,13 @@ line too wide set on rows, and the style of a block whose sums must add up."""
 
 from __future__ import annotations
 
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 from derive.numbers import (
     floatify,
     places_that_add_up,
     to_decimal,
 )
-from derive.records import dataclass
 from derive.steps.model import Block, Eqn
 from derive.writers.printing.expressions import side_terms
 from derive.writers.printing.numerals import SIDE_BEGIN, SIDE_END, adds_up

@@ -4,11 +4,9 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import sympy
-
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)
