@@ -1,4 +1,5 @@
-"""derive: worked solutions of central-impact problems, in the layout of the course notes.
+"""The public API of derive: load, solve, render, check (and Problem, Solution).
+May import: every package of derive (it is the top of the flow).
 
 >>> import derive  # doctest: +SKIP
 >>> solution = derive.solve(derive.load("notes-4c11-two-spheres"))  # doctest: +SKIP

@@ -255,8 +255,8 @@ def exactify(expr: sympy.Expr) -> sympy.Expr:
     writes it so (:func:`nice`), else evaluated: u (1 - 2 e)/3, not 0.333 u (1.000 - 2.00 e).
 
     >>> u, e = sympy.symbols("u e")
-    >>> exactify(u * (1 - 2 * e) / 3)
-    u*(1 - 2*e)/3
+    >>> exactify(u * (1 - 2 * e) / 3)  # a factor of 1/3 kept apart, as the page prints it
+    (u*(1 - 2*e))/3
     """
     if isinstance(expr, sympy.UnevaluatedExpr):
         return sympy.UnevaluatedExpr(exactify(expr.args[0]))

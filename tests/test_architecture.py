@@ -195,3 +195,15 @@ def test_size_exceptions_are_still_needed() -> None:
 def test_the_size_check_sees_nested_functions() -> None:
     found = dict(functions("derive.writers.width"))
     assert "derive.writers.width.width_pt" in found and "derive.writers.width._command" in found
+
+
+def test_every_package_says_what_it_holds_and_what_it_may_import() -> None:
+    """Issue #25: a newcomer opens a package's ``__init__`` and reads, in its first two lines,
+    what the package holds and what it may import (the layers above enforce the second)."""
+    for name, path in MODULES.items():
+        if path.name != "__init__.py":
+            continue
+        doc = ast.get_docstring(ast.parse(path.read_text(encoding="utf-8"))) or ""
+        lines = doc.splitlines()
+        assert len(lines) >= 2 and lines[0].strip(), f"{name}: no docstring saying what it holds"
+        assert lines[1].startswith("May import: "), f"{name}: its docstring's second line must say what it may import"

@@ -1,4 +1,5 @@
 """Checking hand work against a solution: answers, equations and typed derivations.
+May import: writers, steps, physics, problem and the leaves; never homework, verifier or commands.
 
 ``check.check`` is the entry point (``derive.check``); ``answers`` reads answers
 files and runs ``derive check``. Each kind of thing checked has its judge —

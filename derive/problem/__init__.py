@@ -1,4 +1,5 @@
 """Problem files: read a TOML problem or chain, check every field, and build its record.
+May import: the leaves only (errors, symbols, numbers, escape, resources, fileio).
 
 The format is documented in ``docs/problem-format.md`` and declared in
 :mod:`derive.problem.schema`. Every error names the file, the line where it can be

@@ -1,4 +1,5 @@
 """From the physics to a worked solution as data: the steps of the notes' layout.
+May import: physics, problem and the leaves.
 
 :func:`solve` runs the physics and writes its steps; the writers in
 :mod:`derive.writers` turn the :class:`~derive.steps.model.Solution` into text.

@@ -1,4 +1,5 @@
 """An independent check that every line of a worked solution is true.
+May import: nothing of derive but its facts/ package, which alone reads derive's objects (and the leaves).
 
 It reads the page as a reader does (the rendered Markdown or LaTeX, not the
 objects that produced it), parses each displayed relation with a reader of its

@@ -1,4 +1,5 @@
 """Common mistakes in central impact, each as a mistaken version of equations (1)-(4).
+May import: the rest of checking, steps, physics, problem and the leaves.
 
 A student who makes one of these mistakes writes equations (1)-(4) wrongly (or
 resolves the velocities wrongly before writing them), then solves them correctly

@@ -1,4 +1,5 @@
 """Homework variants for a learning-management system: Moodle XML and PrairieLearn.
+May import: the rest of homework, checking's mistakes, writers, steps, physics, problem and the leaves.
 
 Both exports ask for one result (``--result``) of each variant drawn by
 :mod:`derive.variants`, graded by the significant-figure rule of ``derive check``:

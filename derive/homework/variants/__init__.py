@@ -1,4 +1,5 @@
 """Homework variants: derive a problem once, then evaluate and print it many times.
+May import: the rest of homework, writers, steps, physics, problem and the leaves.
 
 A problem with a ``[vary]`` table is solved once with the varied givens kept as
 symbols. Its worked solution is printed once, every number that depends on them

@@ -1,1 +1,3 @@
-"""One module per chain stage type: each solves its stage and returns its record."""
+"""One module per chain stage type: each solves its stage and returns its record.
+May import: the rest of physics, problem and the leaves.
+"""

@@ -1,4 +1,5 @@
 """The declared schema of derive's files: every field's type, range and meaning, in one place.
+May import: the rest of problem and the leaves.
 
 Problem files, chain files (each stage type) and answers files are described here as
 :class:`Table` records of :class:`Field` records. :mod:`derive.problem.validate` checks a

@@ -1,4 +1,5 @@
 """From derive's objects to plain facts: the only part of the verifier that touches them.
+May import: steps, physics, problem and the leaves (the only part of the verifier that does).
 
 :func:`facts_of` reads a Solution (or a chain's solution) and returns a
 :class:`Facts`: for each part of the page, each name's value as a number, its

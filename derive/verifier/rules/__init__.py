@@ -1,4 +1,5 @@
 """The rules, one module each, in the order a report lists them.
+May import: the rest of the verifier only.
 
 Each rule is a function ``check(judge) -> Iterator[Failure]``; a new rule is a
 new module added to :data:`RULES`.

@@ -1,4 +1,5 @@
 """Figures of an impact: one geometric description, drawn as SVG and as TikZ.
+May import: the rest of writers, steps, physics, problem and the leaves.
 
 - :mod:`.model`: the shapes and labels, in centimetres (y up);
 - :mod:`.frame`: which way n points (a floor is level, a drop falls down);

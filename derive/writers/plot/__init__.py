@@ -1,4 +1,5 @@
 """A plot of an impact's outcome against the coefficient of restitution e.
+May import: the rest of writers, steps, physics, problem and the leaves.
 
 :mod:`.curves` evaluates the physics' closed forms for e from 0 to 1; :mod:`.chart`
 lays them out; :mod:`.draw` draws SVG by hand and TikZ (PDF, PNG through LaTeX).

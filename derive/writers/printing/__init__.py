@@ -1,4 +1,5 @@
 """LaTeX for the mathematics of a solution: SymPy's printer, set up for the notes.
+May import: steps, physics, problem and the leaves.
 
 A :class:`StepPrinter` prints symbols with the notes' names, numbers at the
 problem's significant figures, a given's number in place of its symbol on a

@@ -1,4 +1,5 @@
 """Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+May import: the rest of writers, steps, physics, problem and the leaves.
 
 Layout lives in the Jinja2 templates (``templates/``); the mathematics is
 printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
