@@ -153,6 +153,19 @@ def _oblique_loc(g: dict, degrees: float) -> dict:
     }
 
 
+def _ocr_m3_2006(g: dict) -> dict:
+    """Components given: A across the line of centres, B along it."""
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], g["v_A1n"], g["v_B1n"])
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2t": g["v_A1t"],
+        "v_A2": math.hypot(v_an, g["v_A1t"]),
+        "v_B2": abs(v_bn),
+        "dir_A_from_i": math.degrees(math.atan2(g["v_A1t"], v_an)),
+    }
+
+
 def _find_e(g: dict) -> dict:
     """A given velocity after: the other from momentum, then e."""
     m_a, m_b, u_a, u_b = g.get("m_A"), g["m_B"], g["v_A1"], g["v_B1"]
@@ -212,8 +225,20 @@ def _drop_rebound(g: dict) -> dict:
     return {"v_1": v_1, "v_2": v_2, "e_floor": v_2 / v_1, "J": g["m"] * (v_1 + v_2)}
 
 
+def _4c12(g: dict) -> dict:
+    """Equal masses, B at rest, A at theta_1 to the plane of contact: per unit v_A1."""
+    a_n, a_t = math.sin(math.radians(g["theta_1"])), math.cos(math.radians(g["theta_1"]))
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], a_n, 0.0)
+    return {"theta_A2": math.degrees(math.atan2(v_an, a_t)), "v_A2n_per_v_A1": v_an, "v_B2_per_v_A1": v_bn}
+
+
 def _cie_2018(u: float, e: float) -> dict:
     v_a, v_b = _direct(5.0, 2.0, e, u, -2 * u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _wjec_2019(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 1.0, e, u, 0.0)
     return {"v_A2": v_a, "v_B2": v_b}
 
 
@@ -224,6 +249,8 @@ def _edexcel_2004(u: float, e: float) -> dict:
 
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
+    "notes-4c12-cue-ball": _4c12,
+    "openstax-cp-8-30-puck-bounces-off-goalie": _plain,
     "byjus-4kg-ball-catches-8kg-ball": _plain,
     "aqa-m3-2007-spheres-approach-head-on": _plain,
     "ocr-m2-2006-spheres-meet-at-5-ke-lost": _plain,
@@ -235,6 +262,7 @@ NUMERIC = {
     "mcasco-two-cars-no-bounce": _weights,
     "ocr-fm-2023-oblique-discs-60deg": lambda g: _oblique_loc(g, 60.0),
     "ocr-m3-2007-oblique-sin-alpha-0p8": lambda g: _oblique_loc(g, math.degrees(math.asin(0.8))),
+    "ocr-m3-2006-oblique-a-across-centres": _ocr_m3_2006,
     "ocr-m2-2011-spheres-find-e-and-mass": _find_e,
     "ocr-mei-fmm-2023-a-speed-0p2-forward": _find_e,
     "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e": _find_e,
@@ -251,6 +279,7 @@ NUMERIC = {
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
     "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m": _edexcel_2004,
+    "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": _wjec_2019,
 }
 
 
@@ -405,6 +434,15 @@ def _slip_glancing(g: dict) -> dict:  # 30 deg taken from the tangent: sin and c
     return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2t": u_t, "v_A2": math.hypot(v_an, u_t), "v_B2": v_bn}
 
 
+def _slip_s24(g: dict) -> dict:  # the angle from the line of impact
+    return {"theta_A2": 90.0 - _4c12(g)["theta_A2"]}
+
+
+def _slip_s25(g: dict) -> dict:  # e across the line of centres too
+    t = _ocr_m3_2006(g | {"v_A1t": g["e"] * g["v_A1t"]})
+    return {k: t[k] for k in ("v_A2t", "v_A2", "dir_A_from_i")}
+
+
 def _slip_bullet(g: dict) -> dict:  # kinetic energy conserved as the bullet lodges
     m = g["m_bullet"] + g["m_block"]
     v = math.sqrt(g["m_bullet"] * g["v_0"] ** 2 / m)
@@ -452,6 +490,8 @@ SLIPPED = {
     "t02-aqa-2007-two-slips.tex": _slip_t02,
     "t03-ocr-fm-2023-two-slips.txt": _slip_t03,
     "t04-ocr-2014-two-slips.md": _slip_t04,
+    "s24-4c12-angle-other-axis.md": _slip_s24,
+    "s25-ocr-m3-2006-e-on-t.tex": _slip_s25,
     "h03-chain-bullet-block.txt": _slip_bullet,
 }
 
