@@ -242,6 +242,11 @@ def _wjec_2019(u: float, e: float) -> dict:
     return {"v_A2": v_a, "v_B2": v_b}
 
 
+def _aqa_2009(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 7.0, e, 5 * u, u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
 def _edexcel_2004(u: float, e: float) -> dict:
     v_a, v_b = _direct(2.0, 3.0, e, 5 * u, 0.0)
     return {"v_A2": v_a, "v_B2": v_b}
@@ -251,6 +256,7 @@ NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
     "openstax-cp-8-30-puck-bounces-off-goalie": _plain,
+    "openstax-cp-8-train-cars-couple": _plain,
     "byjus-4kg-ball-catches-8kg-ball": _plain,
     "aqa-m3-2007-spheres-approach-head-on": _plain,
     "ocr-m2-2006-spheres-meet-at-5-ke-lost": _plain,
@@ -280,6 +286,7 @@ SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
     "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m": _edexcel_2004,
     "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": _wjec_2019,
+    "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u": _aqa_2009,
 }
 
 
@@ -443,6 +450,12 @@ def _slip_s25(g: dict) -> dict:  # e across the line of centres too
     return {k: t[k] for k in ("v_A2t", "v_A2", "dir_A_from_i")}
 
 
+def _slip_s26(g: dict) -> dict:  # the n components rounded to 2 s.f. before use
+    a_n, _, b_n, _ = _4c11_parts(g)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], float(f"{a_n:.2g}"), float(f"{b_n:.2g}"))
+    return {"v_A2n": v_an, "v_B2n": v_bn}
+
+
 def _slip_bullet(g: dict) -> dict:  # kinetic energy conserved as the bullet lodges
     m = g["m_bullet"] + g["m_block"]
     v = math.sqrt(g["m_bullet"] * g["v_0"] ** 2 / m)
@@ -492,6 +505,7 @@ SLIPPED = {
     "t04-ocr-2014-two-slips.md": _slip_t04,
     "s24-4c12-angle-other-axis.md": _slip_s24,
     "s25-ocr-m3-2006-e-on-t.tex": _slip_s25,
+    "s26-4c11-rounded-early.md": _slip_s26,
     "h03-chain-bullet-block.txt": _slip_bullet,
 }
 
