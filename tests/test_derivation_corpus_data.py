@@ -519,3 +519,12 @@ def test_the_values_given_the_slip(name: str) -> None:
     for key, value in case.verdict.slip_values.items():
         assert key in worked, f"{name}: {key} is not worked here"
         assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+@pytest.mark.parametrize("case", [c for c in CASES if c.verdict.category == "chain"], ids=lambda c: c.name)
+def test_a_chains_stages_are_the_problem_files_stages(case: Case) -> None:
+    with (PROBLEMS / f"{case.verdict.problem}.toml").open("rb") as handle:
+        stages = tomllib.load(handle)["stage"]
+    known = {s.get("title", s["type"]) for s in stages} | {s["type"] for s in stages}
+    assert set(case.verdict.stages) <= known
+    assert any(case.verdict.stages.values())

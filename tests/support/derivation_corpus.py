@@ -78,10 +78,16 @@ class Verdict:
     slips: tuple[Slip, ...]
     values: dict[str, float | str] = field(default_factory=dict)
     slip_values: dict[str, float | str] = field(default_factory=dict)
+    stages: dict[str, list[int]] = field(default_factory=dict)
 
     def with_status(self, status: str) -> list[int]:
         """The line numbers with this status, in order."""
         return sorted(n for n, s in self.lines.items() if s == status)
+
+    @property
+    def first_wrong(self) -> int | None:
+        """The line of the first slip (None for a correct derivation)."""
+        return min((s.line for s in self.slips), default=None)
 
     @property
     def wrong_count(self) -> int:
@@ -123,6 +129,7 @@ def _verdict(entry: dict) -> Verdict:
         slips=slips,
         values=dict(entry.get("values", {})),
         slip_values=dict(entry.get("slip_values", {})),
+        stages={str(k): [int(n) for n in v] for k, v in entry.get("stages", {}).items()},
     )
 
 
@@ -156,6 +163,14 @@ def _case_problems(case: Case) -> list[str]:
     for number, text in enumerate(text_lines, start=1):
         if RELATION.search(text) and number not in v.lines:
             problems.append(f"{where}: line {number} holds a relation but has no verdict: {text!r}")
+    problems += [
+        f"{where}: stage {title!r} line {n} has no verdict"
+        for title, numbers in v.stages.items()
+        for n in numbers
+        if n not in v.lines or v.lines[n] == "skip"
+    ]
+    if v.category == "chain" and not v.stages:
+        problems.append(f"{where}: a chain without its stages")
     wrong = v.with_status("wrong")
     if sorted(s.line for s in v.slips) != wrong:
         problems.append(f"{where}: the slips' lines {[s.line for s in v.slips]} are not the wrong lines {wrong}")
