@@ -171,3 +171,77 @@ def test_html_escapes_drop_control_characters() -> None:
 
     assert html_text("a\x1b<b>\x85\tc\n") == "a &lt;b&gt; \tc\n"
     assert html_body('"\x00"') == '" "'
+
+
+# ---------------------------------------------------------------- internal errors: now one clear line
+
+
+@pytest.mark.parametrize("fmt", ["md", "json"])
+def test_define_acos_beyond_one_names_the_field(cli, here: Path, fmt: str) -> None:
+    """Was TypeError (cannot create mpf from 180.0 - 165.43*I): v_B2/v_A2 = 2.88/-0.32 = -9 here
+    (A: (2·4 - 3·0.8·4)/5 = -0.32 m/s; B: (2·4 + 2·0.8·4)/5 = 2.88 m/s, by momentum and e)."""
+    r = run(cli, "solve", "define-acos-out-of-range.toml", "-f", fmt)
+    one_line_error(r, "define-acos-out-of-range.toml:12: [define] q = 'acos(v_B2/v_A2)': acos of -9 is not real")
+    assert not list(here.glob("*.md"))
+
+
+@pytest.mark.parametrize("fmt", ["md", "json"])
+def test_define_dividing_by_a_zero_result_names_it(cli, here: Path, fmt: str) -> None:
+    """Was TypeError (cannot create mpf from zoo): with e = 1 no kinetic energy is lost."""
+    r = run(cli, "solve", "define-divide-by-zero-result.toml", "-f", fmt)
+    one_line_error(
+        r, "define-divide-by-zero-result.toml:12: [define] F = 'J_n/T_lost': divides by T_lost, which is 0 here"
+    )
+
+
+def test_define_asin_of_two(cli, here: Path) -> None:
+    text = (here / "define-acos-out-of-range.toml").read_text(encoding="utf-8").replace("acos(v_B2/v_A2)", "asin(2)")
+    (here / "asin.toml").write_text(text, encoding="utf-8")
+    one_line_error(run(cli, "solve", "asin.toml"), "asin.toml:12: [define] q = 'asin(2)': asin of 2 is not real")
+
+
+# ---------------------------------------------------------------- names: the user's, or refused
+
+
+def test_a_chain_result_named_pi_is_refused(cli, here: Path) -> None:
+    """Was a wrong page: stage 2 read the result pi as 3.14159 (w = 2π = 6.28, not 2 × 5.60 m/s)."""
+    r = run(cli, "solve", "chain-result-named-pi.toml")
+    one_line_error(
+        r, "chain-result-named-pi.toml:10: [stage 1] result = 'pi': 'pi' is the name of a constant or function"
+    )
+
+
+@pytest.mark.parametrize("name", ["sin", "sqrt", "atan2"])
+def test_a_chain_result_named_as_a_function_is_refused(cli, here: Path, name: str) -> None:
+    text = (here / "chain-result-named-pi.toml").read_text(encoding="utf-8")
+    (here / "f.toml").write_text(text.replace('"pi"', f'"{name}"').replace("2*pi", f"2*{name}"), encoding="utf-8")
+    one_line_error(run(cli, "solve", "f.toml"), f"[stage 1] result = '{name}'", "is the name of a constant or function")
+
+
+def test_an_oblique_result_in_a_direct_define_is_an_unknown_name(cli, here: Path) -> None:
+    """Was "q = θ_A2 = 57.3 θ_A2" boxed (JSON null): a direct impact has no direction after."""
+    r = run(cli, "solve", "define-oblique-name-in-direct.toml")
+    one_line_error(
+        r,
+        "define-oblique-name-in-direct.toml:12: [define] q = 'theta_A2': unknown name 'theta_A2'",
+        "(known: J_n, T_1, T_2, T_lost, e, m_A, m_B, v_A1, v_A2, v_B1, v_B2)",
+    )
+
+
+@pytest.mark.parametrize("name", ["v_A2n", "beta_B2", "v_A2x"])
+def test_names_a_direct_impact_lacks_are_unknown_everywhere(cli, here: Path, name: str) -> None:
+    base = (here / "define-oblique-name-in-direct.toml").read_text(encoding="utf-8")
+    for line in (f'show = "{name} = 0"', f'equations = ["{name} = 0"]'):
+        text = base.replace('find = ["q"]\n', line + "\n").replace('[define]\nq = "theta_A2"\n', "")
+        (here / "n.toml").write_text(text, encoding="utf-8")
+        one_line_error(run(cli, "solve", "n.toml"), f"unknown name '{name}'")
+    text = base.replace('find = ["q"]\n', f'conditions = ["{name} > 0"]\n').replace('[define]\nq = "theta_A2"\n', "")
+    (here / "n.toml").write_text(text, encoding="utf-8")
+    one_line_error(run(cli, "solve", "n.toml"), f"unknown name '{name}'")
+
+
+@pytest.mark.parametrize("name", ["pi", "sin"])
+def test_a_defined_name_sympy_knows_is_refused(cli, here: Path, name: str) -> None:
+    text = (here / "define-oblique-name-in-direct.toml").read_text(encoding="utf-8")
+    (here / "p.toml").write_text(text.replace('q = "theta_A2"', f'{name} = "v_A2"').replace('"q"', f'"{name}"'))
+    one_line_error(run(cli, "solve", "p.toml"), f"p.toml:12: [define] {name}: is the name of a constant or function")
