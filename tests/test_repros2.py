@@ -245,3 +245,51 @@ def test_a_defined_name_sympy_knows_is_refused(cli, here: Path, name: str) -> No
     text = (here / "define-oblique-name-in-direct.toml").read_text(encoding="utf-8")
     (here / "p.toml").write_text(text.replace('q = "theta_A2"', f'{name} = "v_A2"').replace('"q"', f'"{name}"'))
     one_line_error(run(cli, "solve", "p.toml"), f"p.toml:12: [define] {name}: is the name of a constant or function")
+
+
+# ---------------------------------------------------------------- half-written output: now nothing written
+
+
+def test_a_folder_where_a_pl_file_goes_writes_nothing(cli, here: Path) -> None:
+    """Was exit 2 after hw/ and half of pl/ were written, the message blaming -o."""
+    (here / "pl" / "server.py").mkdir(parents=True)
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--prairielearn", "pl")
+    one_line_error(r, "pl/server.py: --prairielearn: is a folder or a link where derive writes a file")
+    assert not (here / "hw").exists()
+    assert sorted(p.name for p in (here / "pl").iterdir()) == ["server.py"]
+
+
+def test_moodle_onto_the_variants_folder_writes_nothing(cli, here: Path) -> None:
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--moodle", "hw")
+    one_line_error(r, "hw: --moodle: is the variants' folder (-o); give a file name such as hw/moodle.xml")
+    assert not (here / "hw").exists()
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--prairielearn", "hw")
+    one_line_error(r, "hw: --prairielearn: is the variants' folder (-o)")
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--moodle", "pl-half-written.toml")
+    one_line_error(r, "pl-half-written.toml: --moodle: is the input file")
+    assert not (here / "hw").exists()
+
+
+def test_a_new_pl_folder_is_written_whole(cli, here: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A PrairieLearn folder that is new appears at once, or not at all: a failure while its
+    files are written (here the second file) leaves no folder."""
+    import derive.homework.lms.files as files
+
+    real = Path.write_text
+    calls = []
+
+    def failing(self: Path, text: str, **kw):
+        if self.parent.name.startswith(".q."):  # the PrairieLearn folder being written
+            calls.append(self.name)
+        if len(calls) == 2:
+            raise OSError(28, "No space left on device")
+        return real(self, text, **kw)
+
+    monkeypatch.setattr(files.Path, "write_text", failing)
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--prairielearn", "pl/q")
+    assert r.code == 1 and "pl/q: cannot write the output (No space left on device)" in r.err, r.err
+    assert not (here / "pl" / "q").exists() and not list((here / "pl").iterdir())
+    monkeypatch.setattr(files.Path, "write_text", real)
+    r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--prairielearn", "pl/q")
+    assert r.code == 0, r.err
+    assert sorted(p.name for p in (here / "pl" / "q").iterdir()) == ["info.json", "question.html", "server.py"]
