@@ -293,3 +293,34 @@ def test_a_new_pl_folder_is_written_whole(cli, here: Path, monkeypatch: pytest.M
     r = run(cli, "variants", "pl-half-written.toml", "--count", "2", "-o", "hw", "--prairielearn", "pl/q")
     assert r.code == 0, r.err
     assert sorted(p.name for p in (here / "pl" / "q").iterdir()) == ["info.json", "question.html", "server.py"]
+
+
+# ---------------------------------------------------------------- the default g: substituted, and checked
+
+
+def test_a_fall_with_the_default_g_puts_its_number_in(cli, here: Path) -> None:
+    """Was "√2 √1.6 √g = 5.60 m/s" (g kept as a letter) with --verify passing it. v = √(2 g h) =
+    √(2 · 9.81 · 1.6) = 5.603 m/s by energy conservation."""
+    r = run(cli, "solve", "chain-fall-default-g-unsubstituted.toml", "--verify")
+    assert r.code == 0, r.err
+    line = next(x for x in r.out.splitlines() if "\\tag{1}" in x)
+    assert line.endswith(
+        r"= \sqrt{2} \sqrt{h_{0}} \sqrt{g} = \sqrt{2} \sqrt{1.6} \cdot \sqrt{9.81} = 5.60\ \mathrm{m/s} \tag{1}"
+    )
+    assert "every line holds" in r.err
+    assert abs((2 * 9.81 * 1.6) ** 0.5 - 5.60) < 0.005
+
+
+def test_the_verifier_flags_g_left_as_a_letter(here: Path) -> None:
+    """The page as it was: the verifier's ``letters`` rule fails the line that keeps √g."""
+    import derive
+    from derive.verifier import verify
+
+    solution = derive.solve(derive.load(str(here / "chain-fall-default-g-unsubstituted.toml")))
+    page = derive.render(solution, "md", figures=False)
+    assert verify(solution, "md", text=page).ok
+    old = page.replace(r"\sqrt{1.6} \cdot \sqrt{9.81}", r"\sqrt{1.6} \sqrt{g}")
+    assert old != page
+    report = verify(solution, "md", text=old)
+    assert [f.rule for f in report.failures] == ["letters"]
+    assert "g left as a letter in a line where the numbers are put in" in report.failures[0].reason
