@@ -324,3 +324,86 @@ def test_the_verifier_flags_g_left_as_a_letter(here: Path) -> None:
     report = verify(solution, "md", text=old)
     assert [f.rule for f in report.failures] == ["letters"]
     assert "g left as a letter in a line where the numbers are put in" in report.failures[0].reason
+
+
+# ---------------------------------------------------------------- unclear errors: now say what to do
+
+
+def test_a_stage_field_with_a_unit_says_where_the_unit_goes(cli, here: Path) -> None:
+    r = run(cli, "solve", "chain-stage-unit-unclear.toml")
+    one_line_error(
+        r,
+        "chain-stage-unit-unclear.toml:11: [stage 1] k = '200 N/m': a stage's field takes names, not units: "
+        'put k_s = "200 N/m" in [given] and write k = "k_s"',
+    )
+    # and the form it shows works: x = v √(m/k) = 3 √(2/200) = 0.3 m (energy: ½ m v² = ½ k x²)
+    text = (here / "chain-stage-unit-unclear.toml").read_text(encoding="utf-8")
+    text = text.replace('k = "200 N/m"', 'k = "k_s"').replace("[given]\n", '[given]\nk_s = "200 N/m"\n')
+    (here / "fixed.toml").write_text(text, encoding="utf-8")
+    r = run(cli, "solve", "fixed.toml", "-f", "json")
+    assert r.code == 0, r.err
+    import json
+
+    assert json.loads(r.out)["results"]["x"]["value"] == pytest.approx(0.3)
+
+
+def test_a_unit_after_an_expression_shows_the_helper_form(cli, here: Path) -> None:
+    """Where the form is still refused, the message says that a unit follows a plain number only
+    and shows a form that works (another change may accept "1/3 kg" itself)."""
+    r = run(cli, "solve", "unit-after-expression-unclear.toml")
+    if r.code == 0:  # accepted: m_A = 1/3 kg, and then v_A2 = (1/3·4 - 3·0.8·4)/(10/3) = -2.48 m/s
+        return
+    one_line_error(
+        r,
+        "unit-after-expression-unclear.toml:5: [given] m_A = '1/3 kg': a unit may follow only a plain number",
+        'give the unit to a helper given, u_1 = "1 kg", and write m_A = "(1/3)*u_1"',
+    )
+    text = (here / "unit-after-expression-unclear.toml").read_text(encoding="utf-8")
+    (here / "fixed.toml").write_text(text.replace('m_A = "1/3 kg"', 'u_1 = "1 kg"\nm_A = "(1/3)*u_1"'))
+    r = run(cli, "solve", "fixed.toml", "-f", "json")
+    assert r.code == 0, r.err
+    import json
+
+    # momentum and e: v_A2 = (m_A u - e m_B u)/(m_A + m_B) with u = 4, m_A = 1/3, m_B = 3, e = 0.8
+    assert json.loads(r.out)["results"]["v_A2"]["value"] == pytest.approx((4 / 3 - 0.8 * 3 * 4) / (10 / 3))
+
+
+def test_an_offset_beyond_the_radii_is_said_in_the_files_terms(cli, here: Path) -> None:
+    """Was "offset = 'asin(d/(r_A + r_B))': does not evaluate…" (a formula and a name the file never wrote)."""
+    r = run(cli, "solve", "geometry-offset-unclear.toml")
+    one_line_error(
+        r,
+        "geometry-offset-unclear.toml:13: [geometry] offset = '101 mm': the offset 101 mm exceeds r_A + r_B = 0.1 m: "
+        "the spheres cannot touch",
+    )
+    assert "asin" not in r.err and "'d" not in r.err
+
+
+def test_centres_that_do_not_touch_are_refused(cli, here: Path) -> None:
+    """Was a page: the centres 0.3 m apart at "contact" with r_A + r_B = 0.1 m, silently ignored."""
+    r = run(cli, "solve", "geometry-centres-not-touching.toml")
+    one_line_error(
+        r,
+        "geometry-centres-not-touching.toml:14: [geometry] centre_B = ['0.3 m', '0 m']: the centres are 0.3 m apart, "
+        "but at contact they are r_A + r_B = 0.1 m apart",
+    )
+    text = (here / "geometry-centres-not-touching.toml").read_text(encoding="utf-8")
+    (here / "same.toml").write_text(text.replace('"0.3 m", "0 m"', '"0 m", "0 m"'), encoding="utf-8")
+    one_line_error(run(cli, "solve", "same.toml"), "centre_A and centre_B are the same point")
+    # 3-4-5: the centres 0.1 m apart, as the radii say: a page, phi = atan2(0.08, 0.06) = 53.13°
+    (here / "ok.toml").write_text(text.replace('"0.3 m", "0 m"', '"0.06 m", "0.08 m"'), encoding="utf-8")
+    r = run(cli, "solve", "ok.toml")
+    assert r.code == 0, r.err
+
+
+def test_bounces_with_e_1_never_come_to_rest(cli, here: Path) -> None:
+    """Was "result = 's_total': s_total works out beyond … 1e300" (a field the file does not have)."""
+    r = run(cli, "solve", "chain-bounces-e1-unclear.toml")
+    one_line_error(r, "chain-bounces-e1-unclear.toml:9: [stage 1] e = '1': with e = 1 the ball never comes to rest")
+
+
+def test_a_slide_without_friction_never_stops(cli, here: Path) -> None:
+    (here / "slide.toml").write_text(
+        'title = "c"\nkind = "chain"\n[given]\nv_0 = "3 m/s"\n[[stage]]\ntype = "slide"\nspeed = "v_0"\nmu = 0\n'
+    )
+    one_line_error(run(cli, "solve", "slide.toml"), "slide.toml:8: [stage 1] mu = 0: with mu = 0 no friction acts")
