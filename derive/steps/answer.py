@@ -49,8 +49,21 @@ def shown(page: Page, s: Shown) -> Block:
     text: Text = ("Show that ", Math(sympy.Eq(rel.lhs, rel.rhs, evaluate=False)), ":")
     line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds)
     if s.holds:
-        how = "" if s.how == "exactly" else f" (the two sides agree {s.how} of the letters' ranges)"
+        how = (
+            ""
+            if s.how == "exactly"
+            else f" (not proved: derive could not simplify the difference of the two sides to 0, and they agree"
+            f" to 40 digits {s.how} of the letters' ranges)"
+        )
         return Block((*text, f" from the results above it follows, as required{how}."), (line,))
+    if s.difference is not None:  # decided exactly: the sides differ by a term that is not 0
+        text = (
+            *text,
+            " it does not follow. The results above give the left side; the right side minus the left is ",
+            Math(s.difference),
+            ", which is not 0.",
+        )
+        return Block(text, (Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"))),))
     point = s.counterexample or {}
     values = ", ".join(f"{k.name} = {format_number(v, 3)}" for k, v in point.items())
     sides = [s.lhs, s.rhs]
@@ -105,6 +118,8 @@ def ranged(page: Page, f: Found) -> Block:
     if f.dropped:
         text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
         text += (Math(rel(exactify(f.reduced), 0)),)
+    if f.interval is None and f.reason:
+        return Block((*text, f"; {f.reason}."))
     if f.interval is None:
         return Block((*text, "; this depends on the other letters and is not worked out here."))
     return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
