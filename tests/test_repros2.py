@@ -527,3 +527,26 @@ def test_a_range_with_high_powers_is_decided_in_seconds(cli, here: Path) -> None
     line = next(x for x in r.out.splitlines() if x.startswith("For "))
     assert line.endswith("that is for $0 < e$ and $e \\leq 1$."), line[-200:]
     assert "every line holds" in r.err
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "define-acos-out-of-range",
+        "define-divide-by-zero-result",
+        "define-oblique-name-in-direct",
+        "chain-result-named-pi",
+        "chain-stage-unit-unclear",
+        "geometry-offset-unclear",
+        "geometry-centres-not-touching",
+        "chain-bounces-e1-unclear",
+        "equations-periodic-one-root",
+        "toml-dotted-key-memory",
+    ],
+)
+@pytest.mark.parametrize("fmt", ["md", "html", "json"])
+def test_a_refused_file_writes_no_output(cli, here: Path, name: str, fmt: str) -> None:
+    r = run(cli, "solve", f"{name}.toml", "-f", fmt, "-o", f"out.{fmt}")
+    assert r.code == 2 and r.err.startswith(f"Error: {name}.toml") and r.err.count("\n") == 1, r.err
+    assert not (here / f"out.{fmt}").exists()
+    assert not [p for p in here.iterdir() if p.name.startswith(".out")]  # no temporary file left
