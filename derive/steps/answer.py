@@ -109,12 +109,25 @@ def _valued(r: Result, digits: int | None) -> Text:
     return (format_number(r.value, digits) + unit,)
 
 
+#: The longest expression a range's line shows in full (characters of its plain form).
+MAX_SHOWN_CHARS = 600
+
+
 def ranged(page: Page, f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
     op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
     rel = op[rng.op]
-    text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ", Math(rel(exactify(f.expr), 0)))
+    text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ")
+    if len(str(f.expr)) > MAX_SHOWN_CHARS:  # v_A2^63 < v_B2^63: a page of polynomial, not shown
+        text += (
+            "once the factors that keep one sign for these letters are dropped, ",
+            Math(rel(exactify(f.reduced), 0)),
+        )
+        if f.interval is None:
+            return Block((*text, f"; {f.reason or 'this depends on the other letters and is not worked out here'}."))
+        return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
+    text += (Math(rel(exactify(f.expr), 0)),)
     if f.dropped:
         text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
         text += (Math(rel(exactify(f.reduced), 0)),)
