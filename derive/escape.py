@@ -153,11 +153,17 @@ def markdown(text: str, *, caret: bool = False) -> str:
     return "".join(out)
 
 
+#: Control characters, a parse error in HTML (and an ESC recolours a terminal showing the page):
+#: C0 but tab, newline and carriage return, DEL and C1. Shown as a space, as in TeX and Markdown.
+_HTML_CONTROL = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\x7f-\x9f]")
+
+
 def html_text(text: str) -> str:
-    """``text`` as HTML text content."""
-    return html.escape(text, quote=True)
+    """``text`` as HTML text content (or an attribute's value), control characters as spaces."""
+    return html.escape(_HTML_CONTROL.sub(" ", text), quote=True)
 
 
 def html_body(text: str) -> str:
-    """``text`` as HTML element content (``<``, ``>``, ``&`` escaped; quotes as they are)."""
-    return html.escape(text, quote=False)
+    """``text`` as HTML element content (``<``, ``>``, ``&`` escaped; quotes as they are;
+    control characters as spaces)."""
+    return html.escape(_HTML_CONTROL.sub(" ", text), quote=False)

@@ -67,7 +67,10 @@ UNICODE = [
     "\ufeffbom",
     "\U0010ffff",
 ]
-NAMES = ["m_A", "m_B", "e", "v_A1", "v_B1", "v_0", "m", "h", "x", "theta", "u", "k_s", "g", "pi", "sin"]
+NAMES = ["m_A", "m_B", "e", "v_A1", "v_B1", "v_0", "m", "h", "x", "theta", "u", "k_s", "g", "pi", "sin",
+         # names SymPy knows (issue #29): constants, sets, functions, and results of another kind of impact
+         "E", "I", "oo", "zoo", "nan", "S", "N", "Q", "O", "beta", "gamma", "lambda", "sqrt", "atan2",
+         "theta_A2", "v_A2x", "beta_B2", "v_A2n"]  # fmt: skip
 EXPRESSIONS = [
     "2*m_A", "m_A + m_B", "sqrt(2)*v_A1", "asin(75/123)", "atan2(1, 2)", "(v_A1 - v_B1)/2", "e^2", "-v_A1",
     "9^9^9", "(10^30)^64", "x^x", "1e999", "1e-999", "2^(2^64)", "exp(exp(exp(exp(exp(1)))))",
@@ -75,11 +78,24 @@ EXPRESSIONS = [
     "1" + "+1" * 400, "__import__('os').system('x')", "e.__class__", "lambda: 1", "1/(e - e)", "log(0)",
     "sqrt(-1)", "v_A1 + m_A", "1.2.3", "u*(1e30)^10", "w*(1e-30)^10", "0^(-1)", "atan2(0, 0)",
     "q = 1e99999999 m/s", "1e99999999", "v_0 = 40 m", "h_2 = 40 m", "= =", "",
+    # issue #29: names SymPy knows, out-of-range inverse functions, a result that is 0 in a denominator
+    "2*pi", "E + I", "oo", "zoo*u", "theta_A2", "v_A2x", "acos(v_B2/v_A2)", "asin(2)", "J_n/T_lost",
+    "J_n/(e - e)", "1/3 kg", "-sqrt(2) m/s", "sin(100*e)", "tan(100*e)", "v_A2^63",
 ]  # fmt: skip
+#: Relations for "show", "equations", a range's "where", conditions (issue #29: periodic ones,
+#: one off by a tiny term, high powers, a result of another kind of impact).
+RELATIONS = [
+    "v_B2 = u*(1 + e)/3", "v_B2 = u*(1 + e)/3 + 1e-30*u", "v_B2 = u*(1.0000001 + e)/3", "sin(100*e) > 0",
+    "sin(1000*e) > 0", "sin(100*e) + e > 0.5", "tan(100*e) = 1", "tan(10*e) = 1", "v_A2^63 < v_B2^63",
+    "v_A2 < v_B2", "T_2 = 3/4*T_1", "v_A2 = 0 m/s", "theta_A2 = 0", "pi = 3", "E > 0", "v_A2 < 0",
+]  # fmt: skip
+#: Answers in E notation (issue #29): each must be judged at its own figures.
+E_NOTATION = ["-1e1", "1e3", "0e9", "-0e3", "1e30", "1E2", "2.5e-3", "1e-320", "1e6", "-1.11e0", "3.05E+00"]
 QUANTITIES = [
     "2 kg", "3.5 m/s", "-1 m/s", "0", "? kg", "?", "kg", "m/s", "36 km/h", "15 lb", "0.2 slug", "30 deg",
     "0.5 rad", "100 mm", "200 N/m", "9.8 m/s^2", "4e99 m/s", "1e30 kg", "1e-30 kg", "1e31 kg", "2 stone",
     "5 m/s/s", "nan kg", "inf m/s", "-0 kg", "1_000 kg", "0x10 kg", "１ kg",
+    "1e3", "-1e1 m/s", "0e9 m/s", "2.5E-3 kg", "1/3 kg", "101 mm",
 ]  # fmt: skip
 NUMBERS = [0, -0.0, 1, -1, 0.5, 1.3, 3, 10, 51, 2**63 - 1, -(2**63), 1e30, 1e31, 1e-30, 1e-31, 1e308, 5e-324,
            math.inf, -math.inf, math.nan]  # fmt: skip
@@ -99,6 +115,10 @@ def value_for(f: Field, rng: random.Random) -> Any:
     if rng.random() < 0.15:
         return rng.choice([*WRONG_TYPES, *NUMBERS, text_payload(rng), deep_value(rng)])
     t = f.type
+    if f.name in ("show", "equation", "equations", "where", "condition", "conditions") and rng.random() < 0.6:
+        return rng.choice(RELATIONS)
+    if f.name in ("answer", "value") and rng.random() < 0.3:
+        return rng.choice(E_NOTATION)
     if t in ("text", "line"):
         return rng.choice(
             [text_payload(rng), "x" * ((f.max_length or 60) + 1), "", " ", "ok", "a\x00b", "\n\n", rng.choice(UNICODE)]
@@ -196,6 +216,22 @@ FAST_VARY = {
     "conditions": ["v_B2 > 0"],
     "vary": {"m_A": {"min": "1 kg", "max": "3 kg", "step": "0.5 kg"}, "e": {"choices": [0.5, 0.8]}},
 }
+#: A problem in letters that asks to show, a range and a definition (issue #29's kinds of input).
+FAST_SYMBOLIC = {
+    "title": "m strikes 2m at rest",
+    "kind": "direct",
+    "show": "v_B2 = u*(1 + e)/3",
+    "range": {"of": "e", "where": "v_A2 < 0"},
+    "given": {"m": "kg", "u": "m/s", "m_A": "m", "m_B": "2*m", "e": "e", "v_A1": "u", "v_B1": "0 m/s"},
+    "define": {"q": "v_B2/v_A1"},
+}
+#: Inverse problems: an equation fixes e (and m_B).
+FAST_INVERSE = {
+    "title": "E",
+    "kind": "direct",
+    "equations": ["T_2 = 3/4*T_1", "v_A2 = 0 m/s"],
+    "given": {"m_A": "2 kg", "m_B": "? kg", "e": "?", "v_A1": "4 m/s", "v_B1": 0},
+}
 FAST_CHAIN = {
     "title": "Drop and rebound",
     "kind": "chain",
@@ -239,7 +275,12 @@ def bases() -> dict[str, list[dict[str, Any]]]:
     singles = [d for d in bundled if d.get("kind") != "chain"]
     chains = [d for d in bundled if d.get("kind") == "chain"]
     return {
-        "problem": [FAST_DIRECT] * 40 + [FAST_WALL] * 10 + [FAST_VARY] * 5 + singles,
+        "problem": [FAST_DIRECT] * 40
+        + [FAST_WALL] * 10
+        + [FAST_VARY] * 5
+        + [FAST_SYMBOLIC] * 5
+        + [FAST_INVERSE] * 3
+        + singles,
         "chain": [FAST_CHAIN] * 30 + chains,
         "answers": [ANSWERS_BASE],
     }
@@ -376,7 +417,7 @@ def _is_stages(k: str, v: Any) -> bool:
 def corrupt(text: str, rng: random.Random) -> bytes:
     """A file broken as bytes: a byte-order mark, cut short, bad UTF-8, NUL, nested 1,000 deep, huge."""
     data = text.encode("utf-8")
-    how = rng.randrange(7)
+    how = rng.randrange(10)
     if how == 0:
         return b"\xef\xbb\xbf" + data
     if how == 1:
@@ -390,7 +431,13 @@ def corrupt(text: str, rng: random.Random) -> bytes:
         return data + b"y = " + b"9" * 5000 + b"\n"
     if how == 5:
         return data.replace(b"\n", b"\r\n") + b"\x00"
-    return data + ("a." * 300 + "b = 1\n").encode()
+    if how == 6:
+        return data + ("a." * 300 + "b = 1\n").encode()
+    if how == 7:  # one dotted key 20,000 parts deep, or a table header 5,000 (issue #29: 1.6 GB in tomllib)
+        return data + (("x." * 20000 + "x = 1\n") if rng.random() < 0.5 else ("[" + "t." * 5000 + "t]\n")).encode()
+    if how == 8:  # another encoding: UTF-16 (with its byte-order mark), or Latin-1
+        return text.encode("utf-16") if rng.random() < 0.5 else text.encode("latin-1", "replace")
+    return data.replace(b"e", "e\u0301".encode())  # decomposed accents everywhere
 
 
 # ---------------------------------------------------------------- the campaign

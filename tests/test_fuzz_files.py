@@ -55,6 +55,28 @@ def argv(case: fuzz_files.Case, path: Path, problem: Path, out: Path) -> list[st
     return ["solve", str(path), "-f", case.command.removeprefix("solve-")]
 
 
+#: Encodings of standard output and error a run may meet (issue #29: a Windows console
+#: redirected to a file is cp1252; an old locale, ASCII); one run in 13 meets one of them.
+ENCODINGS = ("cp1252", "ascii", "latin-1")
+
+
+def streams(case: fuzz_files.Case) -> tuple[io.TextIOBase, io.TextIOBase]:
+    """Standard output and error for one run: text, or now and then bytes in a narrow encoding."""
+    if case.number % 13:
+        return io.StringIO(), io.StringIO()
+    encoding = ENCODINGS[(case.number // 13) % len(ENCODINGS)]
+    return tuple(io.TextIOWrapper(io.BytesIO(), encoding=encoding, errors="strict") for _ in range(2))  # type: ignore[return-value]
+
+
+def text_of(stream: io.TextIOBase) -> str:
+    """What a run wrote: a page sent to a narrow stream is UTF-8 (derive makes it so), a message
+    keeps the stream's encoding, with escapes for what it cannot write (both read as UTF-8)."""
+    if isinstance(stream, io.StringIO):
+        return stream.getvalue()
+    stream.flush()
+    return stream.buffer.getvalue().decode("utf-8", "replace")  # type: ignore[attr-defined]
+
+
 def problems_with(case: fuzz_files.Case, code: int, out: str, err: str, seconds: float) -> list[str]:
     """What is wrong with one run, in words (nothing: an empty list)."""
     found = []
@@ -97,24 +119,25 @@ def test_ten_thousand_hostile_files(
     start = time.monotonic()
     for case in fuzz_files.cases(FILES, SEED):
         path.write_bytes(case.data)
-        stdout, stderr = io.StringIO(), io.StringIO()
+        stdout, stderr = streams(case)
         last_error.clear()
         t0 = time.monotonic()
         with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
             code = main(argv(case, path, problem, out_dir))
         seconds = time.monotonic() - t0
+        stdout, stderr = text_of(stdout), text_of(stderr)
         kinds[case.kind] += 1
         commands[case.command] += 1
         outcomes[f"exit {code}"] += 1
         if code == 2 and last_error:
             classes[last_error[-1]] += 1
         slowest = sorted([*slowest, (seconds, case.number, case.kind, case.command)], reverse=True)[:5]
-        wrong = problems_with(case, code, stdout.getvalue(), stderr.getvalue(), seconds)
+        wrong = problems_with(case, code, stdout, stderr, seconds)
         if wrong:
             keep.mkdir(exist_ok=True)
             saved = keep / f"case-{case.number}.toml"
             saved.write_bytes(case.data)
-            failures.append(f"{saved} ({case.kind}, {case.command}; {', '.join(wrong)}): {stderr.getvalue()[-300:]!r}")
+            failures.append(f"{saved} ({case.kind}, {case.command}; {', '.join(wrong)}): {stderr[-300:]!r}")
     total = time.monotonic() - start
     FUZZ_SUMMARY.update(
         files=FILES,

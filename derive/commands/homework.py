@@ -33,6 +33,8 @@ def run_variants(args: argparse.Namespace) -> int:
         )
     elif args.result:
         raise InputError("--result is for --moodle or --prairielearn", where="usage")
+    if exports is not None:  # every path checked before anything is written
+        exports.check(inputs=(Path(problem.path),), output=args.output)
     failures = write_variants(
         problem, args.output, count=args.count, seed=args.seed, fmt=args.format, digits=args.digits
     )

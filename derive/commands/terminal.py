@@ -54,15 +54,45 @@ class _Visible:
         return getattr(self.stream, name)
 
 
+def _encodable(stream: TextIO, page: bool) -> dict[str, str] | None:
+    """Make ``stream`` able to write any page, whatever its encoding (cp1252 for a Windows
+    console redirected to a file, ASCII under an old locale): a page sent to a file or a pipe
+    is written in UTF-8, as derive writes its files; a terminal keeps its encoding and shows
+    what it cannot as ``\\u221e``. Returns the settings to put back, or None if unchanged."""
+    encoding = (getattr(stream, "encoding", None) or "").lower().replace("_", "-")
+    if encoding in ("utf-8", "utf8") or not hasattr(stream, "reconfigure"):
+        return None
+    old = {"encoding": stream.encoding, "errors": stream.errors}
+    try:
+        tty = stream.isatty()
+    except (OSError, ValueError):
+        tty = False
+    try:
+        if page and not tty:
+            stream.reconfigure(encoding="utf-8", errors="strict")
+        else:
+            stream.reconfigure(errors="backslashreplace")
+    except (OSError, ValueError, LookupError):
+        return None
+    return old
+
+
 @contextlib.contextmanager
 def terminal_safe() -> Iterator[None]:
-    """Standard output and error, for the time of a command, show control characters escaped."""
+    """Standard output and error, for the time of a command, show control characters escaped
+    and can write every character (:func:`_encodable`)."""
     out, err = sys.stdout, sys.stderr
+    settings = [(stream, _encodable(stream, page)) for stream, page in ((out, True), (err, False))]
     sys.stdout, sys.stderr = _Visible(out), _Visible(err)  # type: ignore[assignment]
     try:
         yield
     finally:
         sys.stdout, sys.stderr = out, err
+        for stream, old in settings:
+            if old is not None:
+                with contextlib.suppress(OSError, ValueError, LookupError):
+                    stream.flush()
+                    stream.reconfigure(**old)  # type: ignore[attr-defined]
 
 
 class OutOfTime(BaseException):

@@ -34,6 +34,8 @@ class Shown:
     holds: bool
     how: str
     counterexample: dict[sympy.Symbol, float] | None = None
+    #: right side minus left, where it was found exactly not to be 0 (a rational function)
+    difference: sympy.Expr | None = None
 
 
 @dataclass(frozen=True)
@@ -46,6 +48,8 @@ class Found:
     reduced: sympy.Expr
     interval: sympy.Set | None
     dropped: tuple[sympy.Expr, ...] = ()
+    #: why the interval is None, where the letters are not the cause (too many intervals)
+    reason: str = ""
 
 
 def in_letters(expr: sympy.Expr, problem: Problem, results: Mapping[str, Result]) -> sympy.Expr:
@@ -75,20 +79,43 @@ def in_letters(expr: sympy.Expr, problem: Problem, results: Mapping[str, Result]
 
 
 def decide(rel: Relation, problem: Problem, results: Mapping[str, Result]) -> Shown:
-    """Whether ``rel`` follows from the closed forms, for every value of the letters."""
+    """Whether ``rel`` follows from the closed forms, for every value of the letters.
+
+    Decided exactly where it can be: the difference of the sides simplifies to 0, or is a
+    rational function of the letters, which is identically 0 only if it cancels to 0 (a
+    ``+ 1e-30 u`` term never does). Otherwise the sides are compared at points of the letters'
+    ranges to 50 digits, and ``how`` says so: a page states that it was not proved.
+    """
     lhs, rhs = in_letters(rel.lhs, problem, results), in_letters(rel.rhs, problem, results)
     difference = sympy.simplify(lhs - rhs)
     lhs = sympy.factor(sympy.simplify(lhs))
     if difference == 0:
         return Shown(rel, lhs, rhs, True, "exactly")
-    points = sample(problem, difference.free_symbols)
+    letters = difference.free_symbols
+    points = sample(problem, letters)
+    if difference.is_rational_function(*letters):
+        reduced = sympy.cancel(sympy.together(difference))
+        if reduced == 0:
+            return Shown(rel, lhs, rhs, True, "exactly")
+        point = next((pt for pt in points if _differ(reduced, pt)), points[0] if points else {})
+        return Shown(rel, lhs, rhs, False, "exactly", dict(point), sympy.factor(-reduced))
     for point in points:
-        a, b = _number(lhs, point), _number(rhs, point)
-        if a is None or b is None:
-            continue
-        if abs(a - b) > 1e-9 * (1 + abs(a) + abs(b)):
+        if _differ(difference, point):
             return Shown(rel, lhs, rhs, False, f"at {len(points)} points", dict(point))
     return Shown(rel, lhs, rhs, True, f"at {len(points)} points")
+
+
+def _differ(difference: sympy.Expr, point: Mapping[sympy.Symbol, float]) -> bool:
+    """True where ``difference`` is a real number other than 0 at ``point`` (to 50 digits)."""
+    exact = {s: sympy.Rational(repr(v)) for s, v in point.items()}
+    try:
+        value = complex(sympy.N(difference.xreplace(exact), 50))
+    except (TypeError, ValueError, ZeroDivisionError):
+        return False
+    if not (math.isfinite(value.real) and math.isfinite(value.imag)):
+        return False
+    scale = 1 + sum(abs(float(v)) for v in exact.values())
+    return abs(value) > 1e-40 * scale
 
 
 def sample(problem: Problem, letters: set[sympy.Symbol], n: int = POINTS) -> list[dict[sympy.Symbol, float]]:
@@ -116,19 +143,18 @@ def sample(problem: Problem, letters: set[sympy.Symbol], n: int = POINTS) -> lis
     return out
 
 
-def _number(expr: sympy.Expr, point: dict[sympy.Symbol, float]) -> float | None:
-    try:
-        value = complex(sympy.N(expr.xreplace({s: sympy.Float(v) for s, v in point.items()})))
-    except (TypeError, ValueError):
-        return None
-    if not math.isfinite(value.real) or abs(value.imag) > 1e-9 * (1 + abs(value.real)):
-        return None
-    return value.real
+#: The most intervals a range lists (a periodic inequality over [0, 1] may have more).
+MAX_INTERVALS = 50
+#: Points of the domain at which a range found is checked against the inequality itself.
+CHECK_POINTS = 400
 
 
 def solve_range(rng: Range, problem: Problem, results: Mapping[str, Result]) -> Found:
     """The values of ``rng.of`` (e within [0, 1], another letter positive) where the
-    inequality holds, the other letters taken positive."""
+    inequality holds, the other letters taken positive. A periodic inequality is solved
+    over one period and repeated over the domain (``sin(100 e) > 0``: 16 intervals in
+    [0, 1]); every set found is checked at points of the domain, and one that disagrees
+    with the inequality is not printed (``reason`` says why)."""
     expr = sympy.factor(in_letters(rng.lhs, problem, results) - in_letters(rng.rhs, problem, results))
     x = rng.of
     reduced, dropped = drop_positive(expr, x)
@@ -136,11 +162,131 @@ def solve_range(rng: Range, problem: Problem, results: Mapping[str, Result]) -> 
     if reduced.free_symbols - {x}:
         return Found(rng, expr, reduced, None, dropped)
     relation = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
+    reduced, signless, why = _without_signless(reduced, x, domain)
+    dropped += signless
+    if why:
+        return Found(rng, expr, reduced, None, dropped, why)
+    holds = relation[rng.op](reduced, 0)
     try:
-        found = sympy.solve_univariate_inequality(relation[rng.op](reduced, 0), x, relational=False)
-    except (NotImplementedError, ValueError):
-        return Found(rng, expr, reduced, None, dropped)
-    return Found(rng, expr, reduced, found.intersect(domain), dropped)
+        period = sympy.periodicity(reduced, x) if reduced.has(sympy.sin, sympy.cos, sympy.tan) else None
+        if period is not None and period != 0:
+            found, reason = _periodic(holds, x, period, domain)
+        else:
+            found = sympy.solve_univariate_inequality(holds, x, relational=False).intersect(domain)
+            reason = ""
+    except (NotImplementedError, ValueError, TypeError):
+        return Found(rng, expr, reduced, None, dropped, "derive could not work out this set")
+    if found is not None and not _agrees(found, rng.op, reduced, x, domain):
+        found, reason = None, "derive could not work out this set exactly"
+    return Found(rng, expr, reduced, found, dropped, reason)
+
+
+#: The highest degree of a polynomial factor with roots in the domain that a range solves.
+MAX_DEGREE = 4
+
+
+def _without_signless(
+    reduced: sympy.Expr, x: sympy.Symbol, domain: sympy.Interval
+) -> tuple[sympy.Expr, tuple[sympy.Expr, ...], str]:
+    """``reduced`` without its polynomial factors of high degree that have no root in the domain
+    (their sign, constant there, is kept as ±1): decided exactly by counting roots (Sturm),
+    where solving them would take SymPy minutes (``v_A2^63 < v_B2^63``). A factor of high degree
+    with a root in the domain is not solved: the reason says so. Returns the rest, the factors
+    dropped (each made positive), and the reason."""
+    factors = reduced.args if isinstance(reduced, sympy.Mul) else (reduced,)
+    kept: list[sympy.Expr] = []
+    dropped: list[sympy.Expr] = []
+    for f in factors:
+        base, power = f.as_base_exp()
+        if not base.is_polynomial(x) or not base.has(x) or not power.is_Integer:
+            kept.append(f)
+            continue
+        poly = sympy.Poly(base, x)
+        if poly.degree() <= MAX_DEGREE:
+            kept.append(f)
+            continue
+        hi = None if domain.sup == sympy.oo else domain.sup
+        if poly.count_roots(domain.inf, hi) > 0:
+            return (
+                reduced,
+                (),
+                (
+                    f"it has a factor of degree {poly.degree()} in {x} with a root in the range, which derive does not solve"
+                ),
+            )
+        middle = domain.inf + 1 if hi is None else (domain.inf + hi) / 2
+        sign = sympy.Integer(1 if poly.eval(middle) > 0 else -1) ** power
+        kept.append(sign)
+        dropped.append(sign * f)
+    return sympy.Mul(*kept), tuple(dropped), ""
+
+
+def _periodic(holds: sympy.Basic, x: sympy.Symbol, period: sympy.Expr, domain: sympy.Interval):
+    """The set where a periodic inequality ``holds`` within ``domain``: one period solved, then
+    repeated; (None, why) where the domain holds more periods than a page lists."""
+    if domain.sup == sympy.oo:
+        return None, f"it holds on intervals that repeat every {period} without end, which derive does not list"
+    count = int(sympy.ceiling((domain.sup - domain.inf) / period))
+    one = sympy.solve_univariate_inequality(holds, x, relational=False, domain=sympy.Interval.Ropen(0, period))
+    per = len(one.args) if isinstance(one, sympy.Union) else 1
+    if count * per > MAX_INTERVALS + 2 * per:
+        return None, (
+            f"it holds on about {count * per} separate intervals (it repeats every {period}), "
+            f"more than derive lists ({MAX_INTERVALS})"
+        )
+    pieces = [_shift(one, k * period) for k in range(int(sympy.floor(domain.inf / period)), count + 1)]
+    return sympy.Union(*pieces).intersect(domain), ""
+
+
+def _shift(found: sympy.Set, d: sympy.Expr) -> sympy.Set:
+    """``found`` moved by ``d``."""
+    if isinstance(found, sympy.Interval):
+        return sympy.Interval(found.start + d, found.end + d, found.left_open, found.right_open)
+    if isinstance(found, sympy.Union):
+        return sympy.Union(*(_shift(a, d) for a in found.args))
+    if isinstance(found, sympy.FiniteSet):
+        return sympy.FiniteSet(*(a + d for a in found.args))
+    return found
+
+
+def _agrees(found: sympy.Set, op: str, reduced: sympy.Expr, x: sympy.Symbol, domain: sympy.Interval) -> bool:
+    """Whether ``found`` is the set where ``reduced op 0`` at points spread over the domain
+    (points where ``reduced`` is about 0, on a boundary, are not judged)."""
+    test = {"<": float.__lt__, "<=": float.__le__, ">": float.__gt__, ">=": float.__ge__}[op]
+    pieces = _pieces(found)
+    if pieces is None:
+        return False
+    top = 1.0 if domain.sup != sympy.oo else 50.0
+    low = float(domain.inf)
+    for k in range(CHECK_POINTS):
+        point = low + (top - low) * (k + 0.5 + 0.1234567 * math.sin(k)) / CHECK_POINTS
+        try:
+            value = complex(sympy.N(reduced.xreplace({x: sympy.Float(point, 30)}), 20))
+        except (TypeError, ValueError, ZeroDivisionError):
+            continue
+        if not math.isfinite(value.real) or abs(value.imag) > 1e-9 or abs(value.real) < 1e-9:
+            continue
+        if _inside(pieces, point) != test(value.real, 0.0):
+            return False
+    return True
+
+
+def _pieces(found: sympy.Set) -> list[tuple[float, float, bool, bool]] | None:
+    """``found`` as intervals of floats (start, end, open at start, open at end); None if it is
+    not a union of intervals and points."""
+    out = []
+    for part in found.args if isinstance(found, sympy.Union) else (found,):
+        if isinstance(part, sympy.Interval):
+            out.append((float(part.start), float(part.end), bool(part.left_open), bool(part.right_open)))
+        elif isinstance(part, sympy.FiniteSet):
+            out += [(float(a), float(a), False, False) for a in part.args]
+        elif part is not sympy.S.EmptySet:
+            return None
+    return out
+
+
+def _inside(pieces: list[tuple[float, float, bool, bool]], point: float) -> bool:
+    return any(a < point < b or (point == a and not lo) or (point == b and not hi) for a, b, lo, hi in pieces)
 
 
 def drop_positive(expr: sympy.Expr, x: sympy.Symbol) -> tuple[sympy.Expr, tuple[sympy.Expr, ...]]:

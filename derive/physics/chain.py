@@ -40,7 +40,11 @@ def run_chain(chain: ChainProblem) -> ChainOutcome:
     stages: list[StageOutcome] = []
     for i, st in enumerate(chain.stages, 1):
         known = state.snapshot()  # the numbers this stage starts from
-        stages.append(replace(STAGES[st["type"]](state, i, st), values=known))
+        found = STAGES[st["type"]](state, i, st)
+        g = state.known.get("g")  # the default g (9.81 m/s²) a stage may add is known from the start
+        if g is not None and g.value is not None:
+            known.setdefault(g.symbol, g.value)
+        stages.append(replace(found, values=known))
     outputs = {n for st in stages for n in st.outputs}
     results = {}
     roots = dict(state.solved)

@@ -24,6 +24,7 @@ import sympy
 
 from derive.errors import SolveError
 from derive.physics.forms import factored
+from derive.physics.roots import periodic_roots
 from derive.problem import Problem
 from derive.symbols import symbol
 
@@ -244,7 +245,12 @@ def _solve_inverse(
     Where several distinct roots are physical the data do not choose: all are kept
     (listed, not refused), the one with the smallest unknowns first."""
     numeric = problem.numeric()
-    roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
+    roots = periodic_roots(problem, system, unknowns, numeric, _roots)
+    if roots is None:
+        roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
+    if any(_singular(root, numeric) for root in roots):  # a closed form 0/0 at these numbers: solve with them
+        numbers = tuple(sympy.sympify(x).xreplace(numeric) for x in system)
+        roots = [dict(root) for root in _roots(numbers, tuple(unknowns))]
     kept = []
     for root in roots:
         if set(root) != set(unknowns):
@@ -285,6 +291,12 @@ def _roots(
     except NotImplementedError:
         roots = []
     return tuple(tuple(root.items()) for root in roots)
+
+
+def _singular(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    """True where a root's closed form has no value at the numbers given (v_B1 = 0 in a
+    denominator: zoo, or 0/0: nan), though the system with the numbers put in may have one."""
+    return any(sympy.sympify(v).xreplace(numeric).has(sympy.zoo, sympy.nan, sympy.oo) for v in root.values())
 
 
 def _distinct(

@@ -116,10 +116,40 @@ def results(imp: Impact) -> Results:
         before = list(r.out)
 
         def defined(d: Any = d, before: list[str] = before) -> sympy.Expr:
-            return d.expr.xreplace({r.out[n].symbol: r.out[n].closed for n in before})
+            known = {r.out[n].symbol: r.out[n].closed for n in before}
+            closed = d.expr.xreplace(known)
+            _check_defined(d, closed, known, p)
+            return closed
 
         r.add(d.name, defined, d.unit, f"{d.name}, defined in the file", degrees=d.unit == "deg")
     return r.out
+
+
+def _check_defined(d: Any, closed: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr], p: Problem) -> None:
+    """A quantity the file defines must work out to a finite real number where the givens are
+    numbers: one that divides by a result that is 0 here (``J_n/T_lost`` with e = 1) or takes
+    ``acos`` of a number beyond 1 is refused, naming the field and the cause."""
+    value = evaluate(closed, p)
+    if value.free_symbols and not value.has(sympy.zoo, sympy.nan):
+        return
+    if not value.free_symbols and value.is_extended_real and value.is_finite:
+        return
+    field = f"[define] {d.name} = {d.text!r}" if d.text else f"[define] {d.name}"
+    raise SolveError(f"{field}: {_why_not_real(d.expr, known, p)}", where=d.where or p.path)
+
+
+def _why_not_real(expr: sympy.Expr, known: Mapping[sympy.Symbol, sympy.Expr], p: Problem) -> str:
+    """Why ``expr`` (in the file's names) is no finite real number here, in the file's terms."""
+    for sub in sympy.preorder_traversal(expr):
+        if isinstance(sub, sympy.Pow) and sub.exp.is_negative:
+            base = evaluate(sub.base.xreplace(known), p)
+            if base == 0:
+                return f"divides by {sub.base}, which is 0 here"
+        if isinstance(sub, (sympy.asin, sympy.acos)):
+            arg = evaluate(sub.args[0].xreplace(known), p)
+            if arg.is_number and arg.is_real and abs(arg) > 1:
+                return f"{sub.func.__name__} of {float(arg):.4g} is not real (its argument must be from -1 to 1)"
+    return "does not work out to a finite real number here"
 
 
 class _Collector:

@@ -18,7 +18,7 @@ import sympy
 from derive.errors import ExpressionError, InputError
 from derive.physics.results import Result
 from derive.problem import ChainProblem, Given, units
-from derive.problem.expr import ParseError, parse
+from derive.problem.expr import ParseError, number_with_unit, parse
 from derive.symbols import symbol
 
 
@@ -77,7 +77,7 @@ class ChainState:
         try:
             parsed = parse(raw, self.names())
         except ParseError as exc:
-            raise self.err(i, key, str(exc), raw, ExpressionError) from None
+            raise self.err(i, key, _with_unit_hint(str(exc), raw, key), raw, ExpressionError) from None
         if dim is not None and parsed.dim != dim and not (parsed.expr == 0):
             raise self.err(i, key, f"expected {units.describe(dim)}, not {units.describe(parsed.dim)}", raw)
         return parsed.expr
@@ -140,6 +140,21 @@ class ChainState:
             return bool(v.is_positive)
         c = complex(sympy.N(v))
         return abs(c.imag) < 1e-12 and c.real > 0
+
+
+def _with_unit_hint(what: str, raw: str, key: str) -> str:
+    """A stage field written as a number with its unit ("200 N/m"): say that a stage's field
+    takes names and expressions, and where the number with its unit goes."""
+    try:
+        found = number_with_unit(raw)
+        if found is None:
+            return what
+        units.parse_unit(found[1])
+    except (ParseError, ValueError):
+        return what
+    return (
+        f'a stage\'s field takes names, not units: put {key}_s = "{raw.strip()}" in [given] and write {key} = "{key}_s"'
+    )
 
 
 def finite_number(value: sympy.Expr) -> bool:

@@ -18,7 +18,7 @@ import sympy
 
 from derive.errors import ExpressionError
 from derive.problem import fields
-from derive.problem.expr import ParseError, number_with_unit, parse, scan
+from derive.problem.expr import FUNCTIONS, ParseError, number_with_unit, parse, scan
 from derive.problem.givens import build_givens, infer_system
 from derive.problem.records import Given, RecordError
 from derive.problem.schema import CHAIN, STAGES
@@ -79,6 +79,10 @@ def build_chain(data: dict[str, Any], ctx: Source, name: str) -> ChainProblem:
         stage_ctx = ctx.within("stage", i - 1, label=f"stage {i}")
         _check_condition(st, stage_ctx)
         for key, new in stage_results(i, st):
+            if new == "pi" or new in FUNCTIONS:  # a later stage would read it as SymPy's (pi = 3.14159)
+                raise stage_ctx.error(
+                    f"{new!r} is the name of a constant or function: choose another name", key=key, value=new
+                )
             if new in used:
                 raise stage_ctx.error(
                     f"{new!r} is used already (a given or an earlier stage's result): choose a new name",

@@ -36,6 +36,22 @@ RESULT_DIMS: dict[str, Dim] = {
     **dict.fromkeys(("T_1", "T_2", "T_lost"), units.ENERGY),
     "J_n": units.IMPULSE,
 }
+
+
+def result_dims(oblique: bool, fixed_B: bool = False, xy: bool = False) -> dict[str, Dim]:
+    """The results an impact of this kind has, with their dimensions: a direct impact has no
+    components, directions or x-y velocities, a fixed B no velocity after; a field that
+    names one of those names no result (it is an unknown name, never a free letter)."""
+    names = ["v_A2", "v_B2", "T_1", "T_2", "T_lost", "J_n"]
+    if oblique:
+        names += ["v_A2n", "v_A2t", "v_B2n", "v_B2t", "theta_A2", "theta_B2", "beta_A2", "beta_B2"]
+        if xy:
+            names += ["v_A2x", "v_A2y", "v_B2x", "v_B2y"]
+    if fixed_B:
+        names = [n for n in names if not n.startswith(("v_B2", "theta_B2", "beta_B2"))]
+    return {n: RESULT_DIMS[n] for n in names}
+
+
 MAX_CHOICES = 100_000
 #: A condition's form: "lhs op rhs".
 CONDITION = re.compile(r"^(.*?)(<=|>=|<|>)(.*)$")

@@ -287,6 +287,25 @@ def _from_text(
     return _from_expression(key, sym, text, done, system, err, unit_problem, looks_like_unit)
 
 
+_TRAILING_UNIT = re.compile(r"^(.*\S)\s+([A-Za-z°][A-Za-z0-9_/^*·°-]*)\s*$")
+
+
+def _unit_after_expression(what: str, key: str, text: str) -> str:
+    """A unit after an expression ("1/3 kg") where only a plain number may take one: say so,
+    and show the form that gives it (a helper given with the unit)."""
+    m = _TRAILING_UNIT.match(text) if what.startswith("unexpected") else None
+    if not m:
+        return what
+    try:
+        unit = units.parse_unit(m.group(2))
+    except ValueError:
+        return what
+    return (
+        f'a unit may follow only a plain number ("2.5 {unit.text}"); for {m.group(1)} {unit.text} give the unit '
+        f'to a helper given, u_1 = "1 {unit.text}", and write {key} = "({m.group(1)})*u_1"'
+    )
+
+
 def _from_expression(
     key: str,
     sym: sympy.Symbol,
@@ -306,7 +325,7 @@ def _from_expression(
             raise err(unit_problem, UnitError) from None
         if looks_like_unit:
             raise err(f'{exc}; or, for a symbol, a known unit alone such as "m/s"', ExpressionError) from None
-        raise err(str(exc), ExpressionError) from None
+        raise err(_unit_after_expression(str(exc), key, text), ExpressionError) from None
     if expected is not None and parsed.dim != expected:
         raise err(f"expected {describe(expected)}, but the expression is {describe(parsed.dim)}", UnitError)
     values = {g.symbol: g.value for g in done.values() if g.value is not None}

@@ -69,6 +69,7 @@ def geometry(
         d = by_name[raw.strip()] if isinstance(raw, str) and raw.strip() in by_name else add("d", raw, "offset")
         if d.dim != units.LENGTH:
             raise ctx.error("expected a length", section="geometry", key="offset", value=geo["offset"], cls=UnitError)
+        _check_reach(d.value, by_name, ctx, "offset", f"the offset {_shown(raw)} exceeds", raw)
         return add("phi", f"asin({d.name}/(r_A + r_B))", "offset").symbol
     for b in "AB":
         raw = geo[f"centre_{b}"]
@@ -78,7 +79,64 @@ def geometry(
             g = add(f"{axis}_{b}", value, f"centre_{b}")
             if g.dim != units.LENGTH:
                 raise ctx.error("expected lengths", section="geometry", key=f"centre_{b}", value=raw, cls=UnitError)
+    _check_centres(by_name, ctx, geo["centre_B"])
     return add("phi", "atan2(y_B - y_A, x_B - x_A)", "centre_B").symbol
+
+
+#: How far the centres' distance may be from r_A + r_B (relative), for coordinates rounded in print.
+CONTACT_TOLERANCE = sympy.Rational(2, 100)
+
+
+def _shown(raw: Any) -> str:
+    return raw.strip() if isinstance(raw, str) else str(raw)
+
+
+def _length(value: sympy.Expr, by_name: Mapping[str, Given]) -> str:
+    """A length in the problem's working unit, for a message: "0.1 m"."""
+    unit = next((g.unit for g in by_name.values() if g.dim == units.LENGTH and g.unit), "")
+    return f"{float(value):.4g} {unit}".strip()
+
+
+def _radii(by_name: Mapping[str, Given]) -> sympy.Expr | None:
+    """r_A + r_B where both are given as numbers, else None."""
+    r = [by_name[n].value for n in ("r_A", "r_B") if n in by_name and by_name[n].dim == units.LENGTH]
+    return r[0] + r[1] if len(r) == 2 and all(x is not None for x in r) else None
+
+
+def _check_reach(
+    d: sympy.Expr | None, by_name: Mapping[str, Given], ctx: Source, key: str, what: str, raw: Any
+) -> None:
+    """An offset between parallel paths must be at most r_A + r_B, or the spheres never touch."""
+    total = _radii(by_name)
+    if d is None or total is None or abs(d) <= total:
+        return
+    raise ctx.error(
+        f"{what} r_A + r_B = {_length(total, by_name)}: the spheres cannot touch",
+        section="geometry",
+        key=key,
+        value=raw,
+    )
+
+
+def _check_centres(by_name: Mapping[str, Given], ctx: Source, raw: Any) -> None:
+    """The centres at contact are two points r_A + r_B apart (where both are numbers)."""
+    xs = [by_name[n].value for n in ("x_A", "y_A", "x_B", "y_B")]
+    if any(x is None for x in xs):
+        return
+    distance = sympy.sqrt((xs[2] - xs[0]) ** 2 + (xs[3] - xs[1]) ** 2)
+    if distance == 0:
+        raise ctx.error(
+            "centre_A and centre_B are the same point: no line of impact joins them", section="geometry", key="centre_B"
+        )
+    total = _radii(by_name)
+    if total is not None and abs(distance - total) > CONTACT_TOLERANCE * total:
+        raise ctx.error(
+            f"the centres are {_length(distance, by_name)} apart, but at contact they are r_A + r_B = "
+            f"{_length(total, by_name)} apart: check the centres or the radii",
+            section="geometry",
+            key="centre_B",
+            value=raw,
+        )
 
 
 def _bare_zero(value: Any) -> bool:

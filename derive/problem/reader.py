@@ -23,7 +23,7 @@ from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
 from derive.problem.source import Source
 from derive.problem.symbolic import Asks, Relation, read_asks
-from derive.problem.units import ANGLE, MASS
+from derive.problem.units import ANGLE, MASS, Dim
 from derive.problem.validate import check
 from derive.symbols import symbol
 
@@ -58,7 +58,8 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     phi = geometry(data.get("geometry"), givens, by_name, ctx, oblique, system)
     motions = _motions(bodies, givens, by_name, ctx, oblique, phi, fixed_B)
     unknown = tuple(g.name for g in givens if g.unknown)
-    asks = _asks(data, givens, by_name, after, ctx, oblique, system)
+    results = fields.result_dims(oblique, fixed_B, phi is not None)
+    asks = _asks(data, givens, by_name, after, ctx, oblique, system, results)
     extra_names = tuple(d.name for d in asks.defined) + (
         ("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ()
     )
@@ -83,7 +84,9 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             phi=phi,
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
-            conditions=fields.conditions(data.get("conditions"), by_name, ctx),
+            conditions=fields.conditions(
+                data.get("conditions"), by_name, ctx, {n: (symbol(n), d) for n, d in results.items()}
+            ),
             assume=assume,
             asks=asks,
         )
@@ -127,13 +130,15 @@ def _asks(
     ctx: Source,
     oblique: bool,
     system: str,
+    results: Mapping[str, Dim],
 ) -> Asks:
     """What the problem asks beyond the velocities (``show``, ``range``, ``equations``,
-    ``define``, ``answers``), and the directions after the impact given as knowns."""
+    ``define``, ``answers``), in the givens and the ``results`` this kind of impact has,
+    and the directions after the impact given as knowns."""
     asks = read_asks(
         data,
         {g.name: (g.symbol, g.dim) for g in givens},
-        fields.RESULT_DIMS,
+        results,
         {g.name for g in givens if g.value is None and not g.unknown},
         system,
         ctx,

@@ -23,6 +23,11 @@ _TABLE_HEADER = re.compile(r"^\[\s*([^\[\]]+?)\s*\]")
 _KEY = re.compile(
     r"""^((?:[A-Za-z0-9_-]+|"(?:[^"\\]|\\.)*"|'[^']*')(?:\s*\.\s*(?:[A-Za-z0-9_-]+|"(?:[^"\\]|\\.)*"|'[^']*'))*)\s*=\s*(.*)$"""
 )
+#: What the dotted-key pre-check sees: strings and comments (skipped whole), the characters
+#: that end a key (``=``, ``,``, brackets, braces, a newline), and dots.
+_KEY_SCAN = re.compile(
+    r'''"""(?:[^\\]|\\[\s\S])*?"""|\'\'\'[\s\S]*?\'\'\'|"(?:[^"\\\n]|\\.)*"|'[^'\n]*'|#[^\n]*|[=,{}\[\]\n]|\.'''
+)
 _INLINE_KEY = re.compile(r"""(?:^|[{,])\s*([A-Za-z0-9_-]+|"(?:[^"\\]|\\.)*"|'[^']*')\s*=""")
 
 Path_ = tuple[str | int, ...]
@@ -216,6 +221,7 @@ def parse_toml(text: str, path: str) -> dict[str, Any]:
     A UTF-8 byte-order mark (as Windows editors write) is not part of the text.
     """
     text = text.removeprefix("\ufeff")
+    _check_dotted_keys(text, path)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -234,6 +240,26 @@ def parse_toml(text: str, path: str) -> dict[str, Any]:
     if _depth(data) > MAX_NESTING:
         raise _too_deep(text, path)
     return data
+
+
+def _check_dotted_keys(text: str, path: str) -> None:
+    """Refuse a dotted key or table header of more parts than :data:`MAX_NESTING` before
+    tomllib reads it: tomllib builds such a key in time and memory that grow with the square of
+    its parts (20,000 parts, 40 KB of text, took 1.6 GB). Linear: strings and comments are
+    skipped whole, and the dots between two of ``= , { } [ ]`` or a newline are counted."""
+    dots = 0
+    for m in _KEY_SCAN.finditer(text):
+        if m.group() != ".":
+            dots = 0 if len(m.group()) == 1 and m.group() in "=,{}[]\n" else dots
+            continue
+        dots += 1
+        if dots >= MAX_NESTING:
+            line = text.count("\n", 0, m.start()) + 1
+            raise InputError(
+                f"a dotted key or table header has too many parts: tables are nested too deeply "
+                f"(at most {MAX_NESTING} levels)",
+                where=f"{path}:{line}",
+            )
 
 
 def _too_deep(text: str, path: str) -> InputError:

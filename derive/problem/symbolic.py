@@ -16,7 +16,7 @@ import sympy
 
 from derive.errors import ExpressionError, UnitError
 from derive.problem import units
-from derive.problem.expr import NAME_RE, Parsed, ParseError, parse
+from derive.problem.expr import FUNCTIONS, NAME_RE, Parsed, ParseError, parse
 from derive.problem.source import Source, type_name
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 from derive.symbols import symbol
@@ -55,6 +55,9 @@ class Defined:
     expr: sympy.Expr
     dim: Dim
     unit: str
+    #: The expression as the file wrote it, and where (``file:line``), for messages.
+    text: str = ""
+    where: str = ""
 
 
 @dataclass(frozen=True)
@@ -180,16 +183,21 @@ def _defined(raw: Any, scope: dict[str, tuple[sympy.Symbol, Dim]], system: str, 
     for name, text in raw.items():
         if not NAME_RE.match(name) or name in scope:
             raise ctx.error("expected a new name (letters, digits and _)", section="define", key=name)
+        if name == "pi" or name in FUNCTIONS:
+            raise ctx.error("is the name of a constant or function; choose another name", section="define", key=name)
         if not isinstance(text, str):
             raise ctx.error("expected an expression of the givens and results", section="define", key=name, value=text)
-        parsed = _side(text, scope, ctx, "define", text)
+        try:
+            parsed = parse(text.strip(), scope)
+        except ParseError as exc:
+            raise ctx.error(str(exc), section="define", key=name, value=text, cls=ExpressionError) from None
         if parsed.dim == ANGLE:
             unit = "deg"
         elif parsed.dim in units.SYSTEMS[system]:
             unit = units.working_unit(parsed.dim, system).text
         else:
             unit = ""
-        d = Defined(name, symbol(name), parsed.expr, parsed.dim, unit)
+        d = Defined(name, symbol(name), parsed.expr, parsed.dim, unit, text, ctx.where(ctx.line_of("define", name)))
         scope[name] = (d.symbol, d.dim)
         out.append(d)
     return tuple(out)

@@ -49,8 +49,21 @@ def shown(page: Page, s: Shown) -> Block:
     text: Text = ("Show that ", Math(sympy.Eq(rel.lhs, rel.rhs, evaluate=False)), ":")
     line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds)
     if s.holds:
-        how = "" if s.how == "exactly" else f" (the two sides agree {s.how} of the letters' ranges)"
+        how = (
+            ""
+            if s.how == "exactly"
+            else f" (not proved: derive could not simplify the difference of the two sides to 0, and they agree"
+            f" to 40 digits {s.how} of the letters' ranges)"
+        )
         return Block((*text, f" from the results above it follows, as required{how}."), (line,))
+    if s.difference is not None:  # decided exactly: the sides differ by a term that is not 0
+        text = (
+            *text,
+            " it does not follow. The results above give the left side; the right side minus the left is ",
+            Math(s.difference),
+            ", which is not 0.",
+        )
+        return Block(text, (Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"))),))
     point = s.counterexample or {}
     values = ", ".join(f"{k.name} = {format_number(v, 3)}" for k, v in point.items())
     sides = [s.lhs, s.rhs]
@@ -96,15 +109,30 @@ def _valued(r: Result, digits: int | None) -> Text:
     return (format_number(r.value, digits) + unit,)
 
 
+#: The longest expression a range's line shows in full (characters of its plain form).
+MAX_SHOWN_CHARS = 600
+
+
 def ranged(page: Page, f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
     op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
     rel = op[rng.op]
-    text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ", Math(rel(exactify(f.expr), 0)))
+    text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ")
+    if len(str(f.expr)) > MAX_SHOWN_CHARS:  # v_A2^63 < v_B2^63: a page of polynomial, not shown
+        text += (
+            "once the factors that keep one sign for these letters are dropped, ",
+            Math(rel(exactify(f.reduced), 0)),
+        )
+        if f.interval is None:
+            return Block((*text, f"; {f.reason or 'this depends on the other letters and is not worked out here'}."))
+        return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
+    text += (Math(rel(exactify(f.expr), 0)),)
     if f.dropped:
         text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
         text += (Math(rel(exactify(f.reduced), 0)),)
+    if f.interval is None and f.reason:
+        return Block((*text, f"; {f.reason}."))
     if f.interval is None:
         return Block((*text, "; this depends on the other letters and is not worked out here."))
     return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))

@@ -48,7 +48,5 @@ def build_exports(
         out.folders.append(Path(moodle).parent)
     if prairielearn:
         files = prairielearn_files(compiled, chosen, result=result, digits=digits, seed=seed, model=model)
-        pl = folder_exports(prairielearn, files)
-        out.files += pl.files
-        out.folders += pl.folders
+        out.trees = folder_exports(prairielearn, files).trees
     return out

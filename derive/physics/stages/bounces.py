@@ -36,6 +36,13 @@ def bounces(state: ChainState, i: int, st: dict) -> StageOutcome:
     n = st.get("count", 3)
     if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 50:
         raise state.err(i, "count", "expected a whole number of bounces from 1 to 50", n)
+    if state.value(e) == 1:  # the series of distances has no sum: refused before it is formed
+        raise state.err(
+            i,
+            "e",
+            "with e = 1 the ball never comes to rest (no energy is lost at a bounce): give e below 1",
+            st.get("e"),
+        )
     g = state.g_symbol()
     v0 = sympy.sqrt(2 * g * h0)
     speeds, heights, outputs = [], [], []

@@ -70,6 +70,8 @@ def slide(state: ChainState, i: int, st: dict) -> StageOutcome:
     """Distance to rest from ``speed`` with kinetic friction ``mu``: 1/2 m v² - mu m g d = 0."""
     v = state.quantity(i, st, "speed", units.VELOCITY)
     mu = state.quantity(i, st, "mu", units.DIMENSIONLESS)
+    if state.value(mu) == 0:
+        raise state.err(i, "mu", "with mu = 0 no friction acts: the body never stops; give mu above 0", st.get("mu"))
     g = state.g_symbol()
     m = symbol("m", "positive")
     d = v**2 / (2 * mu * g)

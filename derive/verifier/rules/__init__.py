@@ -11,7 +11,18 @@ from collections.abc import Callable, Iterator
 
 from derive.verifier.judge import Judge
 from derive.verifier.report import Failure
-from derive.verifier.rules import answers, consistent, dimensions, equals, figures, givens, references, sums, work
+from derive.verifier.rules import (
+    answers,
+    consistent,
+    dimensions,
+    equals,
+    figures,
+    givens,
+    letters,
+    references,
+    sums,
+    work,
+)
 
 #: rule name -> check
 RULES: dict[str, Callable[[Judge], Iterator[Failure]]] = {
@@ -23,5 +34,6 @@ RULES: dict[str, Callable[[Judge], Iterator[Failure]]] = {
     consistent.RULE: consistent.check,
     givens.RULE: givens.check,
     answers.RULE: answers.check,
+    letters.RULE: letters.check,
     "work": work.check,
 }
