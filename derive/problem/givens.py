@@ -265,7 +265,7 @@ def _from_text(
     expected = RESERVED.get(key)
     unit_problem: str | None = None
     m = QUANTITY.match(text)
-    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and not names_in(text) <= set(done)
+    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system, err)
     if m and text not in done:
         number, unit_text = m.groups()
         try:
@@ -287,6 +287,27 @@ def _from_text(
     return _from_expression(key, sym, text, done, system, err, unit_problem, looks_like_unit)
 
 
+def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str, err: Err) -> bool:
+    """Whether a text that could be a unit alone ("m", "m/s") is one. A unit is a unit: ``d = "m"``
+    is a length even beside a given mass ``m``, and ``u = "m/s"`` a velocity beside a given ``s``.
+    Only where the name's kind is fixed (``m_A`` is a mass) and the unit is of another kind while
+    the givens it names are of the right one is it those givens (``m_A = "m"``, the mass m)."""
+    if not names_in(text) <= set(done):
+        return True  # names no given: a unit, or an unknown name
+    try:
+        unit = units.parse_unit(text)
+    except ValueError:
+        return False  # the givens' expression
+    if expected is None or unit.dim == expected:
+        return True
+    names = {g.name: (g.symbol, g.dim) for g in done.values()}
+    try:
+        as_givens = parse(text, names, system).dim
+    except ParseError:
+        return True
+    return as_givens != expected
+
+
 def _from_expression(
     key: str,
     sym: sympy.Symbol,
@@ -300,7 +321,7 @@ def _from_expression(
     expected = RESERVED.get(key)
     names = {g.name: (g.symbol, g.dim) for g in done.values()}
     try:
-        parsed = parse(text, names)
+        parsed = parse(text, names, system)
     except ParseError as exc:
         if unit_problem:
             raise err(unit_problem, UnitError) from None
