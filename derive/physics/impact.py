@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import functools
 import math
+import random
 from typing import Any
 
 import sympy
@@ -24,6 +25,7 @@ import sympy
 from derive.errors import SolveError
 from derive.physics.forms import factored
 from derive.problem import Problem
+from derive.problem.units import ANGLE
 from derive.records import dataclass
 from derive.symbols import symbol
 
@@ -145,9 +147,28 @@ def setup(problem: Problem) -> Impact:
         closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
         return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
     full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
-    by_comp, *others = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
+    angles = _known_angles(problem, full, unknowns)
+    full = [sympy.expand(s.xreplace(angles)) for s in full]
+    turned = [tuple(x.xreplace(pre).xreplace(angles) for x in d) for d in directions]
+    by_comp, *others = _solve_inverse(problem, full, unknowns, turned)
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
     return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True, others=tuple(others))
+
+
+def _known_angles(
+    problem: Problem, system: list[sympy.Expr], unknowns: tuple[sympy.Symbol, ...]
+) -> dict[sympy.Symbol, sympy.Expr]:
+    """The known angles, by their values, where an unknown is an angle too: sin(alpha + phi)
+    with phi a letter makes a quartic SymPy takes minutes over; with phi = 90 deg it is
+    cos(alpha). Elsewhere nothing (the closed forms keep every given's letter)."""
+    trig = [f for s in system for f in s.atoms(sympy.sin, sympy.cos, sympy.tan)]
+    if not any(f.has(u) for f in trig for u in unknowns):
+        return {}
+    return {
+        g.symbol: g.value
+        for g in problem.givens
+        if g.dim == ANGLE and g.value is not None and not g.unknown and any(f.has(g.symbol) for f in trig)
+    }
 
 
 def _equations(problem: Problem, nm: Names, m_A: sympy.Expr, m_B: sympy.Expr, e: sympy.Expr) -> dict[int, sympy.Eq]:
@@ -245,12 +266,12 @@ def _solve_inverse(
     (listed, not refused), the one with the smallest unknowns first."""
     numeric = problem.numeric()
     roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
+    roots = [r for r in roots if set(r) == set(unknowns) and holds(system, r, numeric)]
     kept = []
     for root in roots:
-        if set(root) != set(unknowns):
-            continue
         if _physical(problem, root, numeric) and all(_points(root, numeric, d) for d in directions):
             kept.append(root)
+    kept = [{u: tidy(v) for u, v in root.items()} for root in kept]
     if not kept:
         found = [r for r in roots if set(r) == set(unknowns)]
         shown = ""
@@ -281,10 +302,76 @@ def _roots(
     same system in a handout, a notebook or the tests is solved once (some, with an unknown
     angle and letters, take SymPy seconds to solve and check)."""
     try:
-        roots = sympy.solve(list(system), unknowns, dict=True)
+        # not SymPy's own check (checksol simplifies every root, for seconds each): each root is
+        # checked against the equations where they apply (holds), and only the physical ones
+        # simplified (tidy)
+        roots = sympy.solve(list(system), unknowns, dict=True, check=False, simplify=False)
     except NotImplementedError:
         roots = []
     return tuple(tuple(root.items()) for root in roots)
+
+
+def holds(
+    system: list[sympy.Expr], root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]
+) -> bool:
+    """True when ``root`` satisfies every equation of ``system`` at the problem's numbers (and
+    at three sets of values of the letters left, each within its assumptions): to 25 of the
+    30 digits worked, relative to the size of the equation's terms. A root SymPy found without
+    checking it (a branch of a square root, a zero denominator) fails here. A set of values
+    where the root is undefined (a denominator lam - 1 at lam = 1) is drawn again."""
+    rng = random.Random(27)
+    every = set().union(*(sympy.sympify(e).free_symbols for e in system), *(v.free_symbols for v in root.values()))
+    letters = sorted(every - set(root) - set(numeric), key=str)
+    good = 0
+    for _ in range(12 if letters else 1):
+        point = {
+            s: sympy.Rational(rng.randint(500, 2500), 997) * (1 if _positive(s) else rng.choice((1, -1)))
+            for s in letters
+        }
+        verdict = _holds_at(system, root, {**numeric, **point})
+        if verdict is False:
+            return False
+        good += verdict is True
+        if good == (3 if letters else 1):
+            return True
+    return False
+
+
+def _holds_at(
+    system: list[sympy.Expr], root: dict[sympy.Symbol, sympy.Expr], values: dict[sympy.Symbol, sympy.Expr]
+) -> bool | None:
+    """Whether ``root`` satisfies ``system`` at ``values``; None where it is undefined there."""
+    for eq in system:
+        terms = [t.xreplace(root).xreplace(values) for t in _terms(eq)]
+        try:
+            residual = abs(complex(sympy.N(sympy.Add(*terms), 30)))
+            size = max((abs(complex(sympy.N(t, 30))) for t in terms), default=1.0)
+        except (TypeError, ValueError, OverflowError, ZeroDivisionError):
+            return None
+        if not (math.isfinite(residual) and math.isfinite(size)):
+            return None
+        if residual > 1e-25 * max(1.0, size):
+            return False
+    return True
+
+
+def _terms(eq: sympy.Expr) -> tuple[sympy.Expr, ...]:
+    """The terms of an equation's side (``lhs - rhs``), expanded one level."""
+    eq = sympy.sympify(eq)
+    if isinstance(eq, sympy.Equality):
+        eq = eq.lhs - eq.rhs
+    return sympy.Add.make_args(sympy.expand(eq, deep=False))
+
+
+def _positive(s: sympy.Symbol) -> bool:
+    return bool(s.is_positive or s.is_nonnegative)
+
+
+def tidy(value: sympy.Expr) -> sympy.Expr:
+    """A kept root in its simplest form (SymPy's simplify, on the roots kept only)."""
+    if value.is_Atom:
+        return value
+    return sympy.simplify(value)
 
 
 def _distinct(

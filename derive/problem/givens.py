@@ -43,6 +43,8 @@ RESERVED: dict[str, Dim] = {
     "g": units.ACCELERATION,
     "phi": ANGLE,
 }
+#: Velocities before the impact that, kept as letters, are positive (a speed along +n).
+SPEEDS = ("v_A1", "v_B1")
 #: A number typed as a plain decimal before its unit ("2.50 m/s", "-0.120 m/s", "37.6 deg").
 _TYPED = re.compile(r"([-+]?(?:\d+\.?\d*|\.\d+))(?:\s+\S.*|°)?$")
 #: Standard gravity as textbooks use it, by unit system (for mass = W/g).
@@ -190,7 +192,8 @@ def given_value(
     sym = symbol(key, said or kind_of(key, oblique))
     # a new name kept as a letter (u, m) is positive unless [assume] says otherwise; the
     # notes' own names keep their meaning (v_A1n is signed, e is 0 to 1)
-    letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED else "positive"))
+    # a speed before the impact kept as a letter (v_A1 = "m/s") is positive too: +n, as written
+    letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED and key not in SPEEDS else "positive"))
     try:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
             raise err(f'expected a number or text such as "5 m/s", found {_type(raw)}')

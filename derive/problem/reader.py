@@ -58,7 +58,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     phi = geometry(data.get("geometry"), givens, by_name, ctx, oblique, system)
     motions = _motions(bodies, givens, by_name, ctx, oblique, phi, fixed_B)
     unknown = tuple(g.name for g in givens if g.unknown)
-    asks = _asks(data, givens, by_name, after, ctx, oblique, system)
+    asks = _asks(data, givens, by_name, after, ctx, oblique, system, seed or {})
     extra_names = tuple(d.name for d in asks.defined) + (
         ("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ()
     )
@@ -127,14 +127,17 @@ def _asks(
     ctx: Source,
     oblique: bool,
     system: str,
+    seed: Mapping[str, Given],
 ) -> Asks:
     """What the problem asks beyond the velocities (``show``, ``range``, ``equations``,
-    ``define``, ``answers``), and the directions after the impact given as knowns."""
+    ``define``, ``answers``), and the directions after the impact given as knowns. In a
+    chain's impact stage they may name the chain's quantities too (``seed``)."""
+    outer = [g for n, g in seed.items() if n not in by_name and n not in fields.RESULT_DIMS]
     asks = read_asks(
         data,
-        {g.name: (g.symbol, g.dim) for g in givens},
+        {g.name: (g.symbol, g.dim) for g in [*outer, *givens]},
         fields.RESULT_DIMS,
-        {g.name for g in givens if g.value is None and not g.unknown},
+        {g.name for g in [*outer, *givens] if g.value is None and g.definition is None and not g.unknown},
         system,
         ctx,
     )

@@ -53,6 +53,10 @@ def _answers(outcome: ChainOutcome) -> tuple[Answer, ...]:
         r = outcome.results.get(name)
         if r is None:
             raise InputError(f"find names {name!r}, which no stage computes", where=chain.path, field="find")
+        if name in verdicts and r.value is None:  # a range of a coefficient: the stage worked it out
+            said = "yes, for the values found above" if r.closed is not sympy.false else "no, for no value"
+            answers.append(Answer(name, verdict=said))
+            continue
         if name in verdicts:
             answers.append(Answer(name, verdict="yes" if r.value == 1 else "no"))
             continue
