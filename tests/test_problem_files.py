@@ -313,3 +313,154 @@ def test_a_solve_stage_with_no_root_says_so(cli, tmp_path: Path) -> None:
     res = cli("solve", str(path))
     assert res.code != 0
     assert "0 admissible values of e (it has no root" in res.err
+
+
+# ----------------------------------------------------------------- 4. letters
+
+AGAIN = """
+title = "A strikes B, B rebounds from a wall: for which e do they collide again?"
+kind = "chain"
+find = FIND
+[given]
+m = "kg"
+SPEED
+e = "e"
+[[stage]]
+type = "impact"
+kind = "direct"
+given = { m_A = "m", m_B = "3*m", e = "e", v_A1 = "LETTER", v_B1 = 0 }
+results = { v_A2 = "u_A", v_B2 = "u_B" }
+[[stage]]
+type = "impact"
+kind = "direct"
+given = { m_A = "3*m", e = "1/3", v_A1 = "u_B" }
+A = { label = "B" }
+B = { fixed = true, name = "wall" }
+results = { v_A2 = "w_B" }
+[[stage]]
+type = "again"
+behind = "u_A"
+ahead = "w_B"
+range_of = "e"
+"""
+
+
+def _again(find: str, speed: str, letter: str) -> str:
+    return AGAIN.replace("FIND", find).replace("SPEED", speed).replace("LETTER", letter)
+
+
+def test_a_range_whose_bound_holds_a_speed_letter_uses_that_it_is_positive(cli, tmp_path: Path) -> None:
+    """``v_A1 = "m/s"``: a speed kept as a letter is positive, so the range of e is worked out
+    (it said "the range depends on other letters"). Hand: u_A = u(1 - 3e)/4, u_B = u(1 + e)/4,
+    w_B = -u_B/3; u_A - w_B = u(3 - 9e + 1 + e)/12 = u(1 - 2e)/3 > 0 for e < 1/2."""
+    out = solve_json(cli, tmp_path, _again('["again"]', 'v_A1 = "m/s"', "v_A1"))
+    assert out["results"]["again"]["expr"] == "e < 1/2"
+
+
+def test_again_can_be_named_in_find_and_its_range_is_in_the_json(cli, tmp_path: Path) -> None:
+    out = solve_json(cli, tmp_path, _again('["u_A", "w_B", "again"]', 'u = "m/s"', "u"))
+    assert out["results"]["again"]["value"] is None
+    assert out["results"]["again"]["expr"] == "e < 1/2"  # hand, above
+
+
+def test_a_range_in_a_direct_problem_with_a_speed_letter(cli, tmp_path: Path) -> None:
+    """Hand: m strikes 3m at rest, v_A2 = v_A1 (1 - 3e)/4 < 0 for e > 1/3 (v_A1 > 0)."""
+    path = tmp_path / "p.toml"
+    path.write_text(
+        textwrap.dedent(
+            """
+            title = "A reverses for which e?"
+            kind = "direct"
+            range = { of = "e", where = "v_A2 < 0" }
+            [given]
+            m = "kg"
+            m_A = "m"
+            m_B = "3*m"
+            e = "e"
+            v_A1 = "m/s"
+            v_B1 = 0
+            """
+        ),
+        encoding="utf-8",
+    )
+    res = cli("solve", str(path))
+    assert res.code == 0, res.err
+    assert r"that is for $\frac{1}{3} < e$ and $e \leq 1$" in res.out
+
+
+def test_a_stage_show_names_the_chain_givens(cli, tmp_path: Path) -> None:
+    path = tmp_path / "p.toml"
+    path.write_text(
+        textwrap.dedent(
+            """
+            title = "A stage's show uses the chain's givens"
+            kind = "chain"
+            find = ["w"]
+            [given]
+            m = "kg"
+            u = "m/s"
+            e = "e"
+            [[stage]]
+            type = "impact"
+            kind = "direct"
+            given = { m_A = "m", m_B = "2*m", e = "e", v_A1 = "u", v_B1 = 0 }
+            show = "v_B2 = u*(1 + e)/3"
+            results = { v_B2 = "w" }
+            """
+        ),
+        encoding="utf-8",
+    )
+    res = cli("solve", str(path))
+    assert res.code == 0, res.err
+    # hand: m at u strikes 2m at rest: v_B2 = m u (1 + e)/(3m)
+    assert "it follows, as required" in res.out
+
+
+def test_weights_carried_through_chain_names(cli, tmp_path: Path) -> None:
+    out = solve_json(
+        cli,
+        tmp_path,
+        """
+        title = "Weights through chain names"
+        kind = "chain"
+        find = ["w_A", "w_B", "T"]
+        [given]
+        W_bag = "20 lb"
+        W_case = "30 lb"
+        v = "10 ft/s"
+        [[stage]]
+        type = "impact"
+        kind = "direct"
+        given = { W_A = "W_bag", W_B = "W_case", e = 0.5, v_A1 = "v", v_B1 = 0 }
+        results = { v_A2 = "w_A", v_B2 = "w_B", T_lost = "T" }
+        """,
+    )
+    # hand, masses in the ratio 20 : 30: v_A2 = (20*10 - 30*0.5*10)/50 = 1 ft/s,
+    # v_B2 = (20*10 + 20*0.5*10)/50 = 6 ft/s; T_lost = 1/2 (m_A m_B/(m_A + m_B)) (1 - e^2) v^2
+    # = 1/2 (12/32.2)(0.75)(100) = 450/32.2 ft*lb (US: g = 32.2 ft/s^2)
+    assert out["results"]["w_A"]["value"] == pytest.approx(1.0)
+    assert out["results"]["w_B"]["value"] == pytest.approx(6.0)
+    assert out["results"]["T"]["value"] == pytest.approx(450 / 32.2)
+
+
+def test_a_closed_form_drops_a_velocity_given_as_zero(cli, tmp_path: Path) -> None:
+    out = solve_json(
+        cli,
+        tmp_path,
+        """
+        title = "m at u strikes 2m at rest"
+        kind = "direct"
+        [given]
+        m = "kg"
+        u = "m/s"
+        m_A = "m"
+        m_B = "2*m"
+        e = "e"
+        v_A1 = "u"
+        v_B1 = 0
+        """,
+    )
+    for name in ("v_A2", "v_B2", "T_1", "T_lost"):
+        assert "v_B1" not in out["results"][name]["expr"], name
+    # hand: v_B2 = u (1 + e)/3
+    assert out["results"]["v_B2"]["expr"] == "u*(e + 1)/3"

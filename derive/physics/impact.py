@@ -25,7 +25,7 @@ import sympy
 from derive.errors import SolveError
 from derive.physics.forms import factored
 from derive.problem import Problem
-from derive.problem.units import ANGLE
+from derive.problem.units import ANGLE, VELOCITY
 from derive.records import dataclass
 from derive.symbols import symbol
 
@@ -113,8 +113,14 @@ def setup(problem: Problem) -> Impact:
     m_A, e = sym["m_A"], sym["e"]
     m_B = sym.get("m_B", symbol("m_B", "positive"))
     eqs = _equations(problem, nm, m_A, m_B, e)
-    pre = _pre(problem, nm)
-    ind = independent_map(problem)
+    # a velocity given as 0 (v_B1 = 0, B at rest) is 0 in the closed forms too, unless variants vary it
+    rest = {
+        g.symbol: sympy.Integer(0)
+        for g in problem.givens
+        if g.value == 0 and g.definition is None and g.dim == VELOCITY and g.name not in problem.vary
+    }
+    pre = {k: v.xreplace(rest) for k, v in _pre(problem, nm).items()}
+    ind = {**independent_map(problem), **rest}
     post_all = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
     given_names = {g.name for g in problem.givens}
     post_unknown = tuple(u for u in post_all if u.name not in given_names and u not in pre)
