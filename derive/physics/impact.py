@@ -273,10 +273,19 @@ def _solve_inverse(
     numeric = problem.numeric()
     roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
     roots = [r for r in roots if set(r) == set(unknowns) and holds(system, r, numeric)]
-    kept = []
-    for root in roots:
-        if _physical(problem, root, numeric) and all(_points(root, numeric, d) for d in directions):
-            kept.append(root)
+    if not roots:  # SymPy found no whole root in the letters (an unknown line of impact): in the numbers
+        in_numbers = tuple(sympy.expand(s.xreplace(numeric)) for s in system)
+        roots = [dict(root) for root in _roots(in_numbers, tuple(unknowns))]
+        roots = [r for r in roots if set(r) == set(unknowns) and holds(list(in_numbers), r, numeric)]
+        if not roots:
+            roots = [r for r in _polar_roots(in_numbers, tuple(unknowns)) if holds(list(in_numbers), r, numeric)]
+    kept = [r for r in roots if _physical(problem, r, numeric) and all(_points(r, numeric, d) for d in directions)]
+    if not kept:  # measured velocities may imply e > 1 (a gain of kinetic energy): solved, and the page says so
+        kept = [
+            r
+            for r in roots
+            if _physical(problem, r, numeric, gain=True) and all(_points(r, numeric, d) for d in directions)
+        ]
     kept = [{u: tidy(v) for u, v in root.items()} for root in kept]
     if not kept:
         found = [r for r in roots if set(r) == set(unknowns)]
@@ -315,6 +324,36 @@ def _roots(
     except NotImplementedError:
         roots = []
     return tuple(tuple(root.items()) for root in roots)
+
+
+def _polar_roots(
+    system: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...]
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """Roots where an unknown angle enters through its sine and cosine only: each pair put as
+    two unknowns S, C with S^2 + C^2 = 1 (a polynomial system SymPy solves), the angle atan2(S, C)."""
+    system = tuple(sympy.expand_trig(s) for s in system)
+    polar = {}
+    for u in unknowns:
+        calls = {f for s in system for f in s.atoms(sympy.Function) if f.has(u)}
+        if calls and all(isinstance(f, (sympy.sin, sympy.cos)) and f.args[0] == u for f in calls):
+            polar[u] = (sympy.Symbol(f"S_{u.name}", real=True), sympy.Symbol(f"C_{u.name}", real=True))
+    if not polar:
+        return []
+    subs = {f(u): p for u, (S, C) in polar.items() for f, p in ((sympy.sin, S), (sympy.cos, C))}
+    eqs = [s.xreplace(subs) for s in system] + [S**2 + C**2 - 1 for S, C in polar.values()]
+    wanted = [u for u in unknowns if u not in polar] + [x for pair in polar.values() for x in pair]
+    try:
+        found = sympy.solve(eqs, wanted, dict=True, check=False, simplify=False)
+    except NotImplementedError:
+        return []
+    out = []
+    for root in found:
+        if not all(x in root for x in wanted):
+            continue
+        r = {u: root[u] for u in unknowns if u not in polar}
+        r.update({u: sympy.atan2(root[S], root[C]) for u, (S, C) in polar.items()})
+        out.append(r)
+    return out
 
 
 def holds(
@@ -443,12 +482,20 @@ def result_forms(problem: Problem, nm: Names, masses: tuple[sympy.Expr, sympy.Ex
             forms[symbol(f"v_{body}2")] = sympy.sqrt(n**2 + tt**2)
             forms[symbol(f"theta_{body}2")] = sympy.atan2(n, tt)
             forms[symbol(f"beta_{body}2")] = sympy.atan2(tt, n)
+            if problem.phi is not None:  # x-y axes: n at phi from +x toward +y, t at phi + 90 deg
+                c, s_ = sympy.cos(problem.phi), sympy.sin(problem.phi)
+                forms[symbol(f"v_{body}2x")] = n * c - tt * s_
+                forms[symbol(f"v_{body}2y")] = n * s_ + tt * c
     return forms
 
 
-def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
+def _physical(
+    problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr], gain: bool = False
+) -> bool:
     """A root is physical when it is real and e lies in [0, 1], masses are positive,
-    speeds are not negative, angles lie in (-180°, 180°] and the bodies approach."""
+    speeds are not negative, angles lie in (-180°, 180°] and the bodies approach. With
+    ``gain``, an e found above 1 from numbers alone passes too (velocities measured after
+    the impact that imply a gain of kinetic energy: the page says so)."""
     for u, val in root.items():
         v = val.xreplace(numeric)
         if v.free_symbols:
@@ -458,7 +505,7 @@ def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: d
             return False
         x = num.real
         g = next((g for g in problem.givens if g.symbol == u), None)
-        if u.name == "e" and not (-1e-12 <= x <= 1 + 1e-12):
+        if u.name == "e" and not (-1e-12 <= x <= 1 + 1e-12) and not (gain and x > 1):
             return False
         if u.is_positive and x <= 0:
             return False

@@ -23,7 +23,7 @@ from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
 from derive.problem.source import Source
 from derive.problem.symbolic import Asks, Relation, read_asks
-from derive.problem.units import ANGLE, MASS
+from derive.problem.units import ANGLE, MASS, VELOCITY
 from derive.problem.validate import check
 from derive.symbols import symbol
 
@@ -43,8 +43,10 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     oblique = kind == "oblique"
     system = data.get("units") or infer_system(given_tbl)
     assume = read_assume(data.get("assume"), given_tbl, ctx)
-    after = {k: v for k, v in given_tbl.items() if k in AFTER}  # directions after the impact, known
-    given_tbl = {k: v for k, v in given_tbl.items() if k not in AFTER}
+    # directions after the impact, known; in x-y axes, also velocities after as x/y components
+    known_after = AFTER + (AFTER_XY if "geometry" in data else ())
+    after = {k: v for k, v in given_tbl.items() if k in known_after}
+    given_tbl = {k: v for k, v in given_tbl.items() if k not in known_after}
     givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     bodies = {b: data.get(b, {}) for b in "AB"}
@@ -117,6 +119,8 @@ def _motions(
 
 #: Results after the impact a file may give as knowns (each becomes an equation).
 AFTER = ("theta_A2", "theta_B2", "beta_A2", "beta_B2")
+#: In x-y axes ([geometry]), the velocities after the impact as measured components.
+AFTER_XY = ("v_A2x", "v_A2y", "v_B2x", "v_B2y")
 
 
 def _asks(
@@ -154,6 +158,11 @@ def _known_after(
         if not oblique:
             raise ctx.error('a direction after the impact needs kind = "oblique"', section="given", key=name)
         g = given_value(name, raw, by_name, ctx, oblique, system)
+        if name in AFTER_XY:  # v_A2x = "1 m/s": the equation v_A2x = 1 (a line of impact "?" may follow)
+            if g.dim != VELOCITY or g.value is None:
+                raise ctx.error('expected a velocity such as "1.5 m/s"', section="given", key=name, value=raw)
+            out.append(Relation(f"{name} = {raw}", symbol(name), g.value))
+            continue
         if g.dim != ANGLE or g.value is None:
             raise ctx.error('expected an angle such as "30 deg"', section="given", key=name, value=raw)
         out.append(Relation(f"{name} = {raw}", symbol(name), g.value * 180 / sympy.pi))
