@@ -85,7 +85,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             phi=phi,
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
-            conditions=fields.conditions(data.get("conditions"), by_name, ctx),
+            conditions=fields.conditions(data.get("conditions"), by_name, ctx, system=system),
             assume=assume,
             asks=asks,
         )

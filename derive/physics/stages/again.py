@@ -61,6 +61,9 @@ def again(state: ChainState, i: int, st: dict) -> StageOutcome:
         interval = rng.intersect(sympy.Interval(0, 1))
         data = Again(va, vb, diff, verdict, p.symbol, general, interval)
         if verdict is None:  # the answer is the range: named, so that find and the JSON have it
-            g = state.define(i, st.get("result", "again"), interval.as_relational(p.symbol), units.DIMENSIONLESS, "")
+            relation = interval.as_relational(p.symbol)
+            if relation in (sympy.true, sympy.false):  # for every value of e, or for none: yes or no
+                relation = sympy.Integer(int(bool(relation)))
+            g = state.define(i, st.get("result", "again"), relation, units.DIMENSIONLESS, "")
             outputs.append(g.name)
     return StageOutcome(i, "again", st.get("title", "Will they collide again?"), data, tuple(outputs))
