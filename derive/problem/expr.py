@@ -17,6 +17,7 @@ from collections.abc import Mapping
 import sympy
 
 from derive.problem import units
+from derive.problem.unit_tokens import is_unit_name, unit_text
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 from derive.records import dataclass
 
@@ -84,11 +85,6 @@ def _tokens(text: str) -> list[tuple[str, str]]:
         if len(out) > MAX_TOKENS:
             raise ParseError(f"the expression has too many parts (at most {MAX_TOKENS})")
     return out
-
-
-def is_unit_name(name: str) -> bool:
-    """True when ``name`` is one of derive's units (``kg``, ``m``, ``deg``, ``mph``, ``°``)."""
-    return name in units.BASE_UNITS or name in units.ALIASES
 
 
 class _Parser:
@@ -160,12 +156,10 @@ class _Parser:
         return left
 
     def with_unit(self, left: Parsed) -> Parsed:
-        """A unit after a term (``1/3 kg``, ``-sqrt(2) m/s``, ``0.0625 m^2/s^2``, ``120 deg``): the
-        grammar has no other use for a name there, so a name after a term is always a unit,
-        whatever givens share its name. The term must be a pure number; the value is in the
-        working unit of ``system`` (an angle in radians)."""
-        text = self.unit_text()
+        """A unit after a term (``1/3 kg``, ``0.0625 m^2/s^2``): always a unit, whatever givens
+        share its name. The term is a pure number; the value in ``system``'s working unit."""
         try:
+            text, self.i = unit_text(self.toks, self.i)
             unit = units.parse_unit(text)
         except ValueError as exc:
             raise ParseError(str(exc)) from None
@@ -177,35 +171,6 @@ class _Parser:
         value = left.expr * unit.factor / units.working_factor(unit.dim, self.system)
         _check_size(value)
         return Parsed(value, unit.dim)
-
-    def unit_text(self) -> str:
-        """The unit at the current token: unit names joined by * or /, each with an optional
-        whole power (``m^2/s^2``), as text for :func:`units.parse_unit`."""
-        parts: list[str] = []
-        while True:
-            _kind, val = self.toks[self.i]
-            if not is_unit_name(val):
-                if not parts:
-                    raise ParseError(
-                        f"unexpected {val!r} after the expression: a name after a number is a unit "
-                        f"(kg, m/s, deg, ...); multiply a given with *"
-                    )
-                break
-            self.i += 1
-            parts.append(val)
-            if self.peek() in ("^", "**"):
-                self.take()
-                sign = "-" if self.peek() == "-" and self.take() else ""
-                kind, power = self.take()
-                if kind != "num" or not power.isdigit():
-                    raise ParseError(f"a unit's power is a whole number, not {power!r}")
-                parts.append(f"^{sign}{power}")
-            nxt = self.toks[self.i + 1] if self.i + 1 < len(self.toks) else None
-            if self.peek() in ("*", "/") and nxt is not None and nxt[0] == "name" and is_unit_name(nxt[1]):
-                parts.append(self.take()[1])
-                continue
-            break
-        return "".join(parts)
 
     def unary(self) -> Parsed:
         if self.peek() in ("+", "-"):
