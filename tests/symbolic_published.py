@@ -152,6 +152,12 @@ PUBLISHED: dict[str, tuple[Row, ...]] = {
     "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": (
         Row("beta_A2", "atan(2*tan(alpha)/(1 - e))", TAN),  # "(1 - e) tan(beta) = 2 tan(alpha)", printed
     ),
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": (
+        Row("v_B2", "sqrt(3)/4*u*(1 + e)"),  # "sqrt(3)/4 u (1 + e)", printed in the question
+    ),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": (
+        Row("v_B2", "1/4*u*(1 + e)"),  # "1/4 u (1 + e)", printed in the question
+    ),
     "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha": (
         Row("v_A2n", "0"),  # "a = 0"
         Row("v_B2n", "u*cos(alpha)"),  # "Comp of B's velocity along l.o.c. is u cos(alpha)"
@@ -179,6 +185,8 @@ SHOWN: dict[str, tuple[str, ...]] = {
         "tan(deflection) = (1 + e)*sqrt(3)/(5 - 3*e)",
     ),
     "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": ("(1 - e)*tan(beta_A2) = 2*tan(alpha)",),
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": ("v_B2 = sqrt(3)/4*u*(1 + e)",),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": ("v_B2 = 1/4*u*(1 + e)",),
 }
 
 

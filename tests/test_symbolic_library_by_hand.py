@@ -191,6 +191,21 @@ CASES: dict[str, Case] = {
         dict(zip((A1n, A1t), components(u, alpha, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
         oblique=True,
     ),
+    # identical balls, B at rest, A's path at 30 deg (AQA 2007) and 60 deg (AQA 2016) to the line
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, sympy.pi / 6, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
+        oblique=True,
+    ),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, sympy.pi / 3, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
+        oblique=True,
+    ),
     # wall, tan(theta) = 3, paths before and after at right angles; e unknown
     "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles": Case(
         m,
