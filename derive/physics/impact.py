@@ -73,10 +73,12 @@ class Impact:
     by_components: dict[sympy.Symbol, sympy.Expr]
     inverse: bool = False
     others: tuple[dict[sympy.Symbol, sympy.Expr], ...] = ()
+    #: velocities given as 0 (B at rest), put in the closed forms (not in the equations shown)
+    rest: tuple[tuple[sympy.Symbol, sympy.Expr], ...] = ()
 
     def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` (in component symbols) with the pre-impact components in the givens."""
-        return expr.xreplace(self.pre).xreplace(self.independent)
+        return expr.xreplace(self.pre).xreplace(self.independent).xreplace(dict(self.rest))
 
 
 def independent_map(problem: Problem) -> dict[sympy.Symbol, sympy.Expr]:
@@ -119,8 +121,8 @@ def setup(problem: Problem) -> Impact:
         for g in problem.givens
         if g.value == 0 and g.definition is None and g.dim == VELOCITY and g.name not in problem.vary
     }
-    pre = {k: v.xreplace(rest) for k, v in _pre(problem, nm).items()}
-    ind = {**independent_map(problem), **rest}
+    pre = _pre(problem, nm)
+    ind = independent_map(problem)
     post_all = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
     given_names = {g.name for g in problem.givens}
     post_unknown = tuple(u for u in post_all if u.name not in given_names and u not in pre)
@@ -150,15 +152,16 @@ def setup(problem: Problem) -> Impact:
         forms = general_solution(nm, m_A, m_B, e, problem.fixed_B)
         zero = {k: v for k, v in pre.items() if v == 0}
         by_comp = {u: factored(forms[u].xreplace(ind).xreplace(zero)) for u in unknowns}
-        closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
-        return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
-    full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
+        closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind).xreplace(rest)) for u, c in by_comp.items()}
+        return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, rest=tuple(rest.items()))
+    full = [sympy.expand(s.xreplace(pre).xreplace(ind).xreplace(rest)) for s in system]
     angles = known_angles(problem, full, unknowns)
     full = [sympy.expand(s.xreplace(angles)) for s in full]
     turned = [tuple(x.xreplace(pre).xreplace(angles) for x in d) for d in directions]
     by_comp, *others = _solve_inverse(problem, full, unknowns, turned)
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
-    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True, others=tuple(others))
+    kept = {"inverse": True, "others": tuple(others), "rest": tuple(rest.items())}
+    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, **kept)
 
 
 def _equations(problem: Problem, nm: Names, m_A: sympy.Expr, m_B: sympy.Expr, e: sympy.Expr) -> dict[int, sympy.Eq]:
