@@ -102,6 +102,10 @@ PUBLISHED: dict[str, tuple[Row, ...]] = {
         Row("v_A2", "5/9*u"),  # "x = 5/9 u (*)"
         Row("v_B2", "8/9*u"),  # "y = 8/9 u (*)"
     ),
+    "edexcel-m2-undated-q7-4m-hits-5m-b-four-times-a": (
+        Row("v_A2", "u/6"),  # "v_1 = 1/6 u"
+        Row("v_B2", "2/3*u"),  # "v_2 = 4/6 u = 4 x v_1"
+    ),
     # ---------------------------------------------------------------- direct, unknowns
     "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters": (
         Row("v_B2", "u"),  # "vQ = u"
@@ -141,6 +145,19 @@ PUBLISHED: dict[str, tuple[Row, ...]] = {
     "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles": (
         Row("e", "1/9"),  # "=> e = 1/9"
     ),
+    "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg": (
+        Row("v_A2n", "sqrt(3)/4*u*(1 - e)"),  # "v_1 = 1/4 sqrt(3) u (1 - e) (AG)"
+        Row("deflection", "atan((1 + e)*sqrt(3)/(5 - 3*e))", TAN),  # printed in the question, (ii)
+    ),
+    "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": (
+        Row("beta_A2", "atan(2*tan(alpha)/(1 - e))", TAN),  # "(1 - e) tan(beta) = 2 tan(alpha)", printed
+    ),
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": (
+        Row("v_B2", "sqrt(3)/4*u*(1 + e)"),  # "sqrt(3)/4 u (1 + e)", printed in the question
+    ),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": (
+        Row("v_B2", "1/4*u*(1 + e)"),  # "1/4 u (1 + e)", printed in the question
+    ),
     "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha": (
         Row("v_A2n", "0"),  # "a = 0"
         Row("v_B2n", "u*cos(alpha)"),  # "Comp of B's velocity along l.o.c. is u cos(alpha)"
@@ -162,6 +179,14 @@ SHOWN: dict[str, tuple[str, ...]] = {
     "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta": ("tan(beta) = e_1*tan(alpha)",),
     "edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg": ("tan(deflection) = (1 + e)*sqrt(3)/(5 - 3*e)",),
     "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha": ("v_B2 = u",),
+    "edexcel-m2-undated-q7-4m-hits-5m-b-four-times-a": ("v_B2 = 4*v_A2",),
+    "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg": (
+        "v_A2n = sqrt(3)/4*u*(1 - e)",
+        "tan(deflection) = (1 + e)*sqrt(3)/(5 - 3*e)",
+    ),
+    "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": ("(1 - e)*tan(beta_A2) = 2*tan(alpha)",),
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": ("v_B2 = sqrt(3)/4*u*(1 + e)",),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": ("v_B2 = 1/4*u*(1 + e)",),
 }
 
 

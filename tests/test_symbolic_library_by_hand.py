@@ -119,6 +119,7 @@ CASES: dict[str, Case] = {
     "cie-9231-p2-2019-june-q3-2m-at-2u-meets-4m-at-u": direct(2 * m, 4 * m, e, 2 * u, -u),
     "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": direct(m, m, e, u),
     "edexcel-m2-2003-january-q6-2m-hits-m-e-one-third": direct(2 * m, m, sympy.Rational(1, 3), u),
+    "edexcel-m2-undated-q7-4m-hits-5m-b-four-times-a": direct(4 * m, 5 * m, sympy.Rational(1, 2), u),
     # KE after = 3/4 m u^2; e unknown
     "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters": direct(
         2 * m,
@@ -171,6 +172,38 @@ CASES: dict[str, Case] = {
         e,
         dict(zip((A1n, A1t), components(u, sympy.pi / 6, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
         defines={"deflection": lambda r: r["beta_A2"] - sympy.pi / 6},
+        oblique=True,
+    ),
+    # the same geometry, from the Pre-U specimen paper
+    "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, sympy.pi / 6, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
+        defines={"deflection": lambda r: r["beta_A2"] - sympy.pi / 6},
+        oblique=True,
+    ),
+    # identical spheres, P at rest, Q at alpha to the line of centres
+    "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, alpha, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
+        oblique=True,
+    ),
+    # identical balls, B at rest, A's path at 30 deg (AQA 2007) and 60 deg (AQA 2016) to the line
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, sympy.pi / 6, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
+        oblique=True,
+    ),
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": Case(
+        m,
+        m,
+        e,
+        dict(zip((A1n, A1t), components(u, sympy.pi / 3, along_n=True), strict=True)) | {B1n: 0, B1t: 0},
         oblique=True,
     ),
     # wall, tan(theta) = 3, paths before and after at right angles; e unknown

@@ -107,9 +107,9 @@ def test_conditions_are_respected() -> None:
         v_A1 = { min = "1 m/s", max = "9 m/s", step = "1 m/s" }
         """
     )
-    with pytest.raises(InputError, match="T_lost"):
-        loads(text, path="c.toml")  # 5 J is an energy, but the condition must name its unit-free form
+    with_unit = loads(text, path="c.toml")  # a unit after a number (issue #27): 5 J, in the working unit
     text = text.replace("T_lost > 5 J", "T_lost > 5")
+    assert with_unit.conditions[1].rhs == loads(text, path="c.toml").conditions[1].rhs == 5
     compiled = variants.compile_problem(loads(text, path="c.toml"))
     chosen = variants.draw(compiled, 15, seed=2)
     for v in chosen:

@@ -75,7 +75,11 @@ def in_letters(expr: sympy.Expr, problem: Problem, results: Mapping[str, Result]
         out = out.xreplace(
             {g.symbol: g.definition for g in problem.givens if g.value is None and g.definition is not None}
         )
-    return out.xreplace(problem.numeric())
+    out = out.xreplace(problem.numeric())
+    # a letter the closed forms name by its component symbol (v_A1) is the given's letter, with
+    # what the given says of it (a speed kept as a letter is positive)
+    letters = {g.name: g.symbol for g in problem.givens if g.value is None}
+    return out.xreplace({s: letters[s.name] for s in out.free_symbols if s.name in letters})
 
 
 def decide(rel: Relation, problem: Problem, results: Mapping[str, Result]) -> Shown:

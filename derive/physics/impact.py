@@ -15,7 +15,6 @@ speeds, angles and kinetic energies; it formats nothing.
 
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -24,8 +23,11 @@ import sympy
 
 from derive.errors import SolveError
 from derive.physics.forms import factored
-from derive.physics.roots import periodic_roots
+from derive.physics.periodic import periodic_roots
+from derive.physics.roots import holds, known_angles, polar_roots, tidy
+from derive.physics.roots import roots as _roots  # the cache tests read as impact._roots
 from derive.problem import Problem
+from derive.problem.units import VELOCITY
 from derive.symbols import symbol
 
 
@@ -72,10 +74,12 @@ class Impact:
     by_components: dict[sympy.Symbol, sympy.Expr]
     inverse: bool = False
     others: tuple[dict[sympy.Symbol, sympy.Expr], ...] = ()
+    #: velocities given as 0 (B at rest), put in the closed forms (not in the equations shown)
+    rest: tuple[tuple[sympy.Symbol, sympy.Expr], ...] = ()
 
     def in_givens(self, expr: sympy.Expr) -> sympy.Expr:
         """``expr`` (in component symbols) with the pre-impact components in the givens."""
-        return expr.xreplace(self.pre).xreplace(self.independent)
+        return expr.xreplace(self.pre).xreplace(self.independent).xreplace(dict(self.rest))
 
 
 def independent_map(problem: Problem) -> dict[sympy.Symbol, sympy.Expr]:
@@ -112,6 +116,12 @@ def setup(problem: Problem) -> Impact:
     m_A, e = sym["m_A"], sym["e"]
     m_B = sym.get("m_B", symbol("m_B", "positive"))
     eqs = _equations(problem, nm, m_A, m_B, e)
+    # a velocity given as 0 (v_B1 = 0, B at rest) is 0 in the closed forms too, unless variants vary it
+    rest = {
+        g.symbol: sympy.Integer(0)
+        for g in problem.givens
+        if g.value == 0 and g.definition is None and g.dim == VELOCITY and g.name not in problem.vary
+    }
     pre = _pre(problem, nm)
     ind = independent_map(problem)
     post_all = (nm.A2t, nm.B2t, nm.A2n, nm.B2n) if problem.oblique else (nm.A2n, nm.B2n)
@@ -143,12 +153,16 @@ def setup(problem: Problem) -> Impact:
         forms = general_solution(nm, m_A, m_B, e, problem.fixed_B)
         zero = {k: v for k, v in pre.items() if v == 0}
         by_comp = {u: factored(forms[u].xreplace(ind).xreplace(zero)) for u in unknowns}
-        closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind)) for u, c in by_comp.items()}
-        return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp)
-    full = [sympy.expand(s.xreplace(pre).xreplace(ind)) for s in system]
-    by_comp, *others = _solve_inverse(problem, full, unknowns, [tuple(x.xreplace(pre) for x in d) for d in directions])
+        closed = {u: sympy.factor_terms(c.xreplace(pre).xreplace(ind).xreplace(rest)) for u, c in by_comp.items()}
+        return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, rest=tuple(rest.items()))
+    full = [sympy.expand(s.xreplace(pre).xreplace(ind).xreplace(rest)) for s in system]
+    angles = known_angles(problem, full, unknowns)
+    full = [sympy.expand(s.xreplace(angles)) for s in full]
+    turned = [tuple(x.xreplace(pre).xreplace(angles) for x in d) for d in directions]
+    by_comp, *others = _solve_inverse(problem, full, unknowns, turned)
     closed = {u: sympy.factor_terms(c) for u, c in by_comp.items()}
-    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, inverse=True, others=tuple(others))
+    kept = {"inverse": True, "others": tuple(others), "rest": tuple(rest.items())}
+    return Impact(problem, nm, eqs, pre, ind, unknowns, closed, by_comp, **kept)
 
 
 def _equations(problem: Problem, nm: Names, m_A: sympy.Expr, m_B: sympy.Expr, e: sympy.Expr) -> dict[int, sympy.Eq]:
@@ -251,12 +265,21 @@ def _solve_inverse(
     if any(_singular(root, numeric) for root in roots):  # a closed form 0/0 at these numbers: solve with them
         numbers = tuple(sympy.sympify(x).xreplace(numeric) for x in system)
         roots = [dict(root) for root in _roots(numbers, tuple(unknowns))]
-    kept = []
-    for root in roots:
-        if set(root) != set(unknowns):
-            continue
-        if _physical(problem, root, numeric) and all(_points(root, numeric, d) for d in directions):
-            kept.append(root)
+    roots = [r for r in roots if set(r) == set(unknowns) and holds(system, r, numeric)]
+    if not roots:  # SymPy found no whole root in the letters (an unknown line of impact): in the numbers
+        in_numbers = tuple(sympy.expand(s.xreplace(numeric)) for s in system)
+        roots = [dict(root) for root in _roots(in_numbers, tuple(unknowns))]
+        roots = [r for r in roots if set(r) == set(unknowns) and holds(list(in_numbers), r, numeric)]
+        if not roots:
+            roots = [r for r in polar_roots(in_numbers, tuple(unknowns)) if holds(list(in_numbers), r, numeric)]
+    kept = [r for r in roots if _physical(problem, r, numeric) and all(_points(r, numeric, d) for d in directions)]
+    if not kept:  # measured velocities may imply e > 1 (a gain of kinetic energy): solved, and the page says so
+        kept = [
+            r
+            for r in roots
+            if _physical(problem, r, numeric, gain=True) and all(_points(r, numeric, d) for d in directions)
+        ]
+    kept = [{u: tidy(v) for u, v in root.items()} for root in kept]
     if not kept:
         found = [r for r in roots if set(r) == set(unknowns)]
         shown = ""
@@ -277,20 +300,6 @@ def _solve_inverse(
         )
     asked = set(problem.unknowns())
     return _distinct(kept, tuple(sorted(unknowns, key=lambda u: u not in asked)), numeric)
-
-
-@functools.lru_cache(maxsize=32)
-def _roots(
-    system: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...]
-) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr], ...], ...]:
-    """SymPy's roots of the system (none where it cannot solve it), kept for the process: the
-    same system in a handout, a notebook or the tests is solved once (some, with an unknown
-    angle and letters, take SymPy seconds to solve and check)."""
-    try:
-        roots = sympy.solve(list(system), unknowns, dict=True)
-    except NotImplementedError:
-        roots = []
-    return tuple(tuple(root.items()) for root in roots)
 
 
 def _singular(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
@@ -362,12 +371,20 @@ def result_forms(problem: Problem, nm: Names, masses: tuple[sympy.Expr, sympy.Ex
             forms[symbol(f"v_{body}2")] = sympy.sqrt(n**2 + tt**2)
             forms[symbol(f"theta_{body}2")] = sympy.atan2(n, tt)
             forms[symbol(f"beta_{body}2")] = sympy.atan2(tt, n)
+            if problem.phi is not None:  # x-y axes: n at phi from +x toward +y, t at phi + 90 deg
+                c, s_ = sympy.cos(problem.phi), sympy.sin(problem.phi)
+                forms[symbol(f"v_{body}2x")] = n * c - tt * s_
+                forms[symbol(f"v_{body}2y")] = n * s_ + tt * c
     return forms
 
 
-def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
+def _physical(
+    problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr], gain: bool = False
+) -> bool:
     """A root is physical when it is real and e lies in [0, 1], masses are positive,
-    speeds are not negative, angles lie in (-180°, 180°] and the bodies approach."""
+    speeds are not negative, angles lie in (-180°, 180°] and the bodies approach. With
+    ``gain``, an e found above 1 from numbers alone passes too (velocities measured after
+    the impact that imply a gain of kinetic energy: the page says so)."""
     for u, val in root.items():
         v = val.xreplace(numeric)
         if v.free_symbols:
@@ -377,7 +394,7 @@ def _physical(problem: Problem, root: dict[sympy.Symbol, sympy.Expr], numeric: d
             return False
         x = num.real
         g = next((g for g in problem.givens if g.symbol == u), None)
-        if u.name == "e" and not (-1e-12 <= x <= 1 + 1e-12):
+        if u.name == "e" and not (-1e-12 <= x <= 1 + 1e-12) and not (gain and x > 1):
             return False
         if u.is_positive and x <= 0:
             return False

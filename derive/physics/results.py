@@ -229,7 +229,7 @@ def _velocities(r: _Collector) -> None:
             if b == "B" and p.fixed_B:
                 continue
             n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
-            c, s_ = sympy.cos(p.phi), sympy.sin(p.phi)
+            c, s_ = r.full(sympy.cos(p.phi)), r.full(sympy.sin(p.phi))  # phi may be an unknown, found
 
             def x(n: sympy.Expr = n, t: sympy.Expr = t, c: sympy.Expr = c, s_: sympy.Expr = s_) -> sympy.Expr:
                 return n * c - t * s_

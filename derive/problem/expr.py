@@ -17,6 +17,8 @@ from dataclasses import dataclass
 
 import sympy
 
+from derive.problem import units
+from derive.problem.unit_tokens import is_unit_name, unit_text
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 
 MAX_LENGTH = 500
@@ -46,7 +48,7 @@ CONSTANTS = {"pi": sympy.pi}
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<num>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)"
-    r"|(?P<name>[A-Za-z][A-Za-z0-9_]*)"
+    r"|(?P<name>[A-Za-z][A-Za-z0-9_]*|°)"
     r"|(?P<op>\*\*|[-+*/^(),]))"
 )
 NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")
@@ -86,10 +88,11 @@ def _tokens(text: str) -> list[tuple[str, str]]:
 
 
 class _Parser:
-    def __init__(self, text: str, names: Mapping[str, tuple[sympy.Symbol, Dim]]) -> None:
+    def __init__(self, text: str, names: Mapping[str, tuple[sympy.Symbol, Dim]], system: str | None = None) -> None:
         self.toks = _tokens(text)
         self.i = 0
         self.names = names
+        self.system = system
         self.depth = 0
         self.calls = 0
 
@@ -128,7 +131,7 @@ class _Parser:
             op = self.take()[1]
             right = self.product()
             if left.dim != right.dim:
-                raise ParseError(f"cannot add {describe(left.dim)} and {describe(right.dim)}")
+                left, right = _radians(left, right)
             left = Parsed(left.expr + right.expr if op == "+" else left.expr - right.expr, left.dim)
             _check_size(left.expr)
         self.depth -= 1
@@ -148,7 +151,26 @@ class _Parser:
                 dim = tuple(a - b for a, b in zip(left.dim, right.dim, strict=False))
                 left = Parsed(left.expr / right.expr, dim)  # type: ignore[arg-type]
             _check_size(left.expr)
+        if self.i < len(self.toks) and self.toks[self.i][0] == "name":
+            return self.with_unit(left)
         return left
+
+    def with_unit(self, left: Parsed) -> Parsed:
+        """A unit after a term (``1/3 kg``, ``0.0625 m^2/s^2``): always a unit, whatever givens
+        share its name. The term is a pure number; the value in ``system``'s working unit."""
+        try:
+            text, self.i = unit_text(self.toks, self.i)
+            unit = units.parse_unit(text)
+        except ValueError as exc:
+            raise ParseError(str(exc)) from None
+        if left.expr.free_symbols or left.dim != DIMENSIONLESS:
+            raise ParseError(
+                f"a unit ({text}) may follow only a number or an expression of numbers, such as "
+                f'"1/3 kg" or "-sqrt(2) m/s"; a given with a unit is multiplied with *'
+            )
+        value = left.expr * unit.factor / units.working_factor(unit.dim, self.system)
+        _check_size(value)
+        return Parsed(value, unit.dim)
 
     def unary(self) -> Parsed:
         if self.peek() in ("+", "-"):
@@ -185,6 +207,11 @@ class _Parser:
                 return Parsed(sym, dim)
             if val in FUNCTIONS:
                 raise ParseError(f"the function {val} needs its argument in parentheses")
+            if is_unit_name(val):
+                raise ParseError(
+                    f"{val!r} is a unit: write it after the number it belongs to, with a space "
+                    f'("sqrt(2) kg", "120 deg")'
+                )
             raise ParseError(f"unknown name {val!r}" + _known(self.names))
         if val == "(":
             inner = self.sum()
@@ -277,6 +304,20 @@ def function_nesting(expr: sympy.Basic) -> int:
         return 0
     inner = max(function_nesting(a) for a in expr.args)
     return inner + 1 if isinstance(expr, sympy.Function) else inner
+
+
+def _radians(left: Parsed, right: Parsed) -> tuple[Parsed, Parsed]:
+    """An angle added to a pure number in pi (``pi - pi/3 - leave``): the number is read in
+    radians. Any other sum of different kinds is an error."""
+    dims = {left.dim, right.dim}
+    pure = left if left.dim == DIMENSIONLESS else right
+    if dims == {ANGLE, DIMENSIONLESS} and not pure.expr.free_symbols and pure.expr.has(sympy.pi):
+        return Parsed(left.expr, ANGLE), Parsed(right.expr, ANGLE)
+    if dims == {ANGLE, DIMENSIONLESS}:
+        raise ParseError(
+            "cannot add a pure number and an angle: give the number its unit (120 deg), or write it in pi (2*pi/3)"
+        )
+    raise ParseError(f"cannot add {describe(left.dim)} and {describe(right.dim)}")
 
 
 def _known(names: Mapping[str, object]) -> str:
@@ -395,8 +436,9 @@ def _apply_checked(name: str, func, args: list[Parsed]) -> Parsed:
     return Parsed(func(args[0].expr), DIMENSIONLESS)
 
 
-def parse(text: str, names: Mapping[str, tuple[sympy.Symbol, Dim]] | None = None) -> Parsed:
-    """Parse ``text`` with the admitted grammar; ``names`` maps each name to (symbol, dimension).
+def parse(text: str, names: Mapping[str, tuple[sympy.Symbol, Dim]] | None = None, system: str | None = None) -> Parsed:
+    """Parse ``text`` with the admitted grammar; ``names`` maps each name to (symbol, dimension);
+    a number with a unit (``1/3 kg``) is put in the working unit of ``system`` (None: SI).
 
     Raises :class:`ParseError` with a sentence on anything else.
 
@@ -405,4 +447,4 @@ def parse(text: str, names: Mapping[str, tuple[sympy.Symbol, Dim]] | None = None
     """
     if not isinstance(text, str):
         raise ParseError(f"expected an expression as text, not {type(text).__name__}")
-    return _Parser(text, names or {}).parse()
+    return _Parser(text, names or {}, system).parse()

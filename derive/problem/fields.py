@@ -128,10 +128,12 @@ def conditions(
     by_name: Mapping[str, Given],
     ctx: Source,
     results: Mapping[str, tuple[sympy.Symbol, Dim]] | None = None,
+    system: str | None = None,
 ) -> tuple[Condition, ...]:
     """Conditions on givens and results, each "lhs < rhs" (< <= > >=), parsed safely.
     ``results``: the results a condition may name, with their dimensions (default: an
-    impact's, :data:`RESULT_DIMS`; a chain's are known once it is solved)."""
+    impact's, :data:`RESULT_DIMS`; a chain's are known once it is solved). A number with
+    a unit ("5 J") is put in ``system``'s working unit."""
     names = {g.name: (g.symbol, g.dim) for g in by_name.values()}
     if results is None:
         names.update({n: (symbol(n), d) for n, d in RESULT_DIMS.items()})
@@ -143,7 +145,7 @@ def conditions(
         if not m:
             raise ctx.error("expected a comparison with <, <=, > or >=", key="conditions", value=text)
         try:
-            lhs, rhs = parse(m.group(1).strip(), names), parse(m.group(3).strip(), names)
+            lhs, rhs = parse(m.group(1).strip(), names, system), parse(m.group(3).strip(), names, system)
         except ParseError as exc:
             raise ctx.error(str(exc), key="conditions", value=text, cls=ExpressionError) from None
         if lhs.dim != rhs.dim and lhs.expr.free_symbols and rhs.expr.free_symbols:

@@ -43,6 +43,8 @@ RESERVED: dict[str, Dim] = {
     "g": units.ACCELERATION,
     "phi": ANGLE,
 }
+#: Velocities before the impact that, kept as letters, are positive (a speed along +n).
+SPEEDS = ("v_A1", "v_B1")
 #: A number typed as a plain decimal before its unit ("2.50 m/s", "-0.120 m/s", "37.6 deg").
 _TYPED = re.compile(r"([-+]?(?:\d+\.?\d*|\.\d+))(?:\s+\S.*|°)?$")
 #: Standard gravity as textbooks use it, by unit system (for mass = W/g).
@@ -190,7 +192,8 @@ def given_value(
     sym = symbol(key, said or kind_of(key, oblique))
     # a new name kept as a letter (u, m) is positive unless [assume] says otherwise; the
     # notes' own names keep their meaning (v_A1n is signed, e is 0 to 1)
-    letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED else "positive"))
+    # a speed before the impact kept as a letter (v_A1 = "m/s") is positive too: +n, as written
+    letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED and key not in SPEEDS else "positive"))
     try:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
             raise err(f'expected a number or text such as "5 m/s", found {_type(raw)}')
@@ -265,7 +268,7 @@ def _from_text(
     expected = RESERVED.get(key)
     unit_problem: str | None = None
     m = QUANTITY.match(text)
-    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and not names_in(text) <= set(done)
+    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system, err)
     if m and text not in done:
         number, unit_text = m.groups()
         try:
@@ -306,6 +309,27 @@ def _unit_after_expression(what: str, key: str, text: str) -> str:
     )
 
 
+def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str, err: Err) -> bool:
+    """Whether a text that could be a unit alone ("m", "m/s") is one. A unit is a unit: ``d = "m"``
+    is a length even beside a given mass ``m``, and ``u = "m/s"`` a velocity beside a given ``s``.
+    Only where the name's kind is fixed (``m_A`` is a mass) and the unit is of another kind while
+    the givens it names are of the right one is it those givens (``m_A = "m"``, the mass m)."""
+    if not names_in(text) <= set(done):
+        return True  # names no given: a unit, or an unknown name
+    try:
+        unit = units.parse_unit(text)
+    except ValueError:
+        return False  # the givens' expression
+    if expected is None or unit.dim == expected:
+        return True
+    names = {g.name: (g.symbol, g.dim) for g in done.values()}
+    try:
+        as_givens = parse(text, names, system).dim
+    except ParseError:
+        return True
+    return as_givens != expected
+
+
 def _from_expression(
     key: str,
     sym: sympy.Symbol,
@@ -319,7 +343,7 @@ def _from_expression(
     expected = RESERVED.get(key)
     names = {g.name: (g.symbol, g.dim) for g in done.values()}
     try:
-        parsed = parse(text, names)
+        parsed = parse(text, names, system)
     except ParseError as exc:
         if unit_problem:
             raise err(unit_problem, UnitError) from None

@@ -23,7 +23,7 @@ from derive.problem.records import Given, Motion, Problem, RecordError
 from derive.problem.schema import PROBLEM
 from derive.problem.source import Source
 from derive.problem.symbolic import Asks, Relation, read_asks
-from derive.problem.units import ANGLE, MASS, Dim
+from derive.problem.units import ANGLE, MASS, VELOCITY, Dim
 from derive.problem.validate import check
 from derive.symbols import symbol
 
@@ -43,8 +43,10 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     oblique = kind == "oblique"
     system = data.get("units") or infer_system(given_tbl)
     assume = read_assume(data.get("assume"), given_tbl, ctx)
-    after = {k: v for k, v in given_tbl.items() if k in AFTER}  # directions after the impact, known
-    given_tbl = {k: v for k, v in given_tbl.items() if k not in AFTER}
+    # directions after the impact, known; in x-y axes, also velocities after as x/y components
+    known_after = AFTER + (AFTER_XY if "geometry" in data else ())
+    after = {k: v for k, v in given_tbl.items() if k in known_after}
+    given_tbl = {k: v for k, v in given_tbl.items() if k not in known_after}
     givens = build_givens(given_tbl, ctx, oblique, system, seed, assume)
     by_name = {g.name: g for g in givens}
     bodies = {b: data.get(b, {}) for b in "AB"}
@@ -59,7 +61,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
     motions = _motions(bodies, givens, by_name, ctx, oblique, phi, fixed_B)
     unknown = tuple(g.name for g in givens if g.unknown)
     results = fields.result_dims(oblique, fixed_B, phi is not None)
-    asks = _asks(data, givens, by_name, after, ctx, oblique, system, results)
+    asks = _asks(data, givens, by_name, after, ctx, oblique, system, results, seed or {})
     extra_names = tuple(d.name for d in asks.defined) + (
         ("v_A2x", "v_A2y", "v_B2x", "v_B2y") if phi is not None else ()
     )
@@ -85,7 +87,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
             conditions=fields.conditions(
-                data.get("conditions"), by_name, ctx, {n: (symbol(n), d) for n, d in results.items()}
+                data.get("conditions"), by_name, ctx, {n: (symbol(n), d) for n, d in results.items()}, system=system
             ),
             assume=assume,
             asks=asks,
@@ -120,6 +122,8 @@ def _motions(
 
 #: Results after the impact a file may give as knowns (each becomes an equation).
 AFTER = ("theta_A2", "theta_B2", "beta_A2", "beta_B2")
+#: In x-y axes ([geometry]), the velocities after the impact as measured components.
+AFTER_XY = ("v_A2x", "v_A2y", "v_B2x", "v_B2y")
 
 
 def _asks(
@@ -131,15 +135,18 @@ def _asks(
     oblique: bool,
     system: str,
     results: Mapping[str, Dim],
+    seed: Mapping[str, Given],
 ) -> Asks:
     """What the problem asks beyond the velocities (``show``, ``range``, ``equations``,
     ``define``, ``answers``), in the givens and the ``results`` this kind of impact has,
-    and the directions after the impact given as knowns."""
+    and the directions after the impact given as knowns. In a chain's impact stage they may
+    name the chain's quantities too (``seed``)."""
+    outer = [g for n, g in seed.items() if n not in by_name and n not in fields.RESULT_DIMS]
     asks = read_asks(
         data,
-        {g.name: (g.symbol, g.dim) for g in givens},
+        {g.name: (g.symbol, g.dim) for g in [*outer, *givens]},
         results,
-        {g.name for g in givens if g.value is None and not g.unknown},
+        {g.name for g in [*outer, *givens] if g.value is None and g.definition is None and not g.unknown},
         system,
         ctx,
     )
@@ -156,6 +163,11 @@ def _known_after(
         if not oblique:
             raise ctx.error('a direction after the impact needs kind = "oblique"', section="given", key=name)
         g = given_value(name, raw, by_name, ctx, oblique, system)
+        if name in AFTER_XY:  # v_A2x = "1 m/s": the equation v_A2x = 1 (a line of impact "?" may follow)
+            if g.dim != VELOCITY or g.value is None:
+                raise ctx.error('expected a velocity such as "1.5 m/s"', section="given", key=name, value=raw)
+            out.append(Relation(f"{name} = {raw}", symbol(name), g.value))
+            continue
         if g.dim != ANGLE or g.value is None:
             raise ctx.error('expected an angle such as "30 deg"', section="given", key=name, value=raw)
         out.append(Relation(f"{name} = {raw}", symbol(name), g.value * 180 / sympy.pi))

@@ -201,6 +201,17 @@ def working_unit(dim: Dim, system: str) -> Unit:
     return parse_unit(name)
 
 
+def working_factor(dim: Dim, system: str | None) -> sympy.Expr:
+    """The factor to SI of the working unit of ``dim`` in ``system`` (None: SI), built from the
+    system's units of mass, length and time (angles in radians): it holds for every dimension,
+    m^2/s^2 as well as m/s."""
+    if system not in SYSTEMS:
+        return sympy.Integer(1)
+    work = SYSTEMS[system]
+    mass, length, time = (BASE_UNITS[work[d]][0] for d in (MASS, LENGTH, TIME))
+    return mass ** dim[0] * length ** dim[1] * time ** dim[2]
+
+
 def convert(value: sympy.Expr, src: Unit, dst: Unit) -> sympy.Expr:
     """``value`` in ``src`` expressed exactly in ``dst`` (same dimension)."""
     if src.dim != dst.dim:

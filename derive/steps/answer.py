@@ -393,6 +393,15 @@ def energy(page: Page) -> Block:
         Math(sympy.Eq(page.e, 1)),
         ", so it is never used to find the velocities.",
     )
+    if rl.value is not None and rl.value < 0:  # e > 1, from velocities measured after the impact
+        text += (
+            " Here the data imply a gain of kinetic energy (",
+            Math(sympy.StrictLessThan(symbol("T_lost"), 0, evaluate=False)),
+            ", ",
+            Math(sympy.StrictGreaterThan(page.e, 1, evaluate=False)),
+            "): no collision of passive bodies does that; a release of stored energy (a spring, an "
+            "explosive charge) could, or the measured velocities are in error.",
+        )
     return Block(text, tuple(lines))
 
 

@@ -53,6 +53,10 @@ def _answers(outcome: ChainOutcome) -> tuple[Answer, ...]:
         r = outcome.results.get(name)
         if r is None:
             raise InputError(f"find names {name!r}, which no stage computes", where=chain.path, field="find")
+        if name in verdicts and r.value is None:  # a range of a coefficient: the stage worked it out
+            said = "yes, for the values found above" if r.closed is not sympy.false else "no, for no value"
+            answers.append(Answer(name, verdict=said))
+            continue
         if name in verdicts:
             answers.append(Answer(name, verdict="yes" if r.value == 1 else "no"))
             continue
@@ -156,11 +160,13 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     sides = [Side((c.lhs,))]
     if c.in_unknown is not None and c.in_unknown != c.lhs:
         sides.append(Side((c.in_unknown,), "numeric"))
-    sides.append(Side((c.rhs,), "result"))
+    rhs = _in_unit(c.rhs, c.lhs_unit or "") if c.rhs.is_number else c.rhs  # an angle, held in radians, in degrees
+    sides.append(Side((rhs,), "result"))
     unit = g.unit or None
     root = Eqn((Side((u,)), Side((_in_unit(c.root, g.unit),), "result")), unit=unit, implies=True, tag=numbers.next())
     said = f" {c.lhs_unit}" if c.lhs_unit and c.rhs.is_number and c.rhs != 0 else ""  # h_2 = 40 m, not 40
-    text: Text = ("The condition ", Math(sympy.Eq(c.lhs, c.rhs)), said + " fixes the unknown ", Math(u), ":")
+    said = "°" if said == " deg" else said
+    text: Text = ("The condition ", Math(sympy.Eq(c.lhs, rhs)), said + " fixes the unknown ", Math(u), ":")
     blocks = [Block(text, (Eqn(tuple(sides), unit=c.lhs_unit), root))]
     if c.roots > 1:
         if u.name.startswith("e"):

@@ -190,7 +190,7 @@ def interval_text(interval: sympy.Set, x: sympy.Symbol) -> Text:
     lo, hi = interval.start, interval.end
     parts: list[sympy.Expr] = []
     if lo != -sympy.oo:
-        parts.append((sympy.StrictLessThan if interval.left_open else sympy.LessThan)(lo, x))
+        parts.append((sympy.StrictLessThan if interval.left_open else sympy.LessThan)(lo, x, evaluate=False))
     if hi != sympy.oo:
-        parts.append((sympy.StrictLessThan if interval.right_open else sympy.LessThan)(x, hi))
+        parts.append((sympy.StrictLessThan if interval.right_open else sympy.LessThan)(x, hi, evaluate=False))
     return tuple(p for i, r in enumerate(parts) for p in (((" and ",) if i else ()) + (Math(r),)))

@@ -89,7 +89,7 @@ def compile_chain(problem: ChainProblem) -> ChainCompiled:
             written_value(givens[n], v, raw.get(n), where=problem.path)
     solution = solve(problem)
     dims = {name: (r.symbol, _dim(r.unit)) for name, r in solution.results.items()}
-    conditions = fields.conditions(list(problem.conditions), givens, problem.ctx, results=dims)
+    conditions = fields.conditions(list(problem.conditions), givens, problem.ctx, results=dims, system=problem.system)
     known = _numbers(solution)
     for c in conditions:
         left = (c.lhs - c.rhs).xreplace(known).free_symbols

@@ -50,6 +50,8 @@ def again(state: ChainState, i: int, st: dict) -> StageOutcome:
         general = resolve(va - vb, defs)
         keep = {g.symbol: g.value for n, g in state.known.items() if g.value is not None and n != param}
         general = sympy.simplify(general.xreplace(keep).xreplace(state.solved))
+        letters = {n: g.symbol for n, g in state.known.items() if g.value is None}
+        general = general.xreplace({s: letters[s.name] for s in general.free_symbols if s.name in letters})
         reduced, _ = drop_positive(sympy.factor(general), p.symbol)  # a speed u > 0 does not change the sign
         try:
             rng = sympy.solve_univariate_inequality(reduced > 0, p.symbol, relational=False)
@@ -57,5 +59,12 @@ def again(state: ChainState, i: int, st: dict) -> StageOutcome:
             raise state.err(
                 i, "range_of", "the range depends on other letters and cannot be worked out", param
             ) from None
-        data = Again(va, vb, diff, verdict, p.symbol, general, rng.intersect(sympy.Interval(0, 1)))
+        interval = rng.intersect(sympy.Interval(0, 1))
+        data = Again(va, vb, diff, verdict, p.symbol, general, interval)
+        if verdict is None:  # the answer is the range: named, so that find and the JSON have it
+            relation = interval.as_relational(p.symbol)
+            if relation in (sympy.true, sympy.false):  # for every value of e, or for none: yes or no
+                relation = sympy.Integer(int(bool(relation)))
+            g = state.define(i, st.get("result", "again"), relation, units.DIMENSIONLESS, "")
+            outputs.append(g.name)
     return StageOutcome(i, "again", st.get("title", "Will they collide again?"), data, tuple(outputs))

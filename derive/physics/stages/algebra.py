@@ -10,7 +10,7 @@ import sympy
 from derive.errors import ExpressionError, SolveError
 from derive.physics.state import ChainState, StageOutcome
 from derive.problem import Given, units
-from derive.problem.expr import ParseError, number_with_unit, parse
+from derive.problem.expr import Parsed, ParseError, parse
 
 
 @dataclass(frozen=True)
@@ -58,14 +58,9 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
         raise state.err(i, "condition", 'expected one equation such as "h_2 = 40 m"', raw)
     left, right = raw.split("=")
     try:
-        lhs = parse(left.strip(), state.names())
-        rhs_text = right.strip()
-        quantity = number_with_unit(rhs_text)
-        if quantity is not None:  # a number with a unit
-            u = units.parse_unit(quantity[1])
-            rhs_expr = quantity[0] * u.factor / units.working_unit(u.dim, state.chain.system).factor
-        else:
-            rhs_expr = parse(rhs_text, state.names()).expr
+        lhs = parse(left.strip(), state.names(), state.chain.system)
+        rhs = parse(right.strip(), state.names(), state.chain.system)  # a number may carry its unit
+        rhs_expr = _same_kind(lhs, rhs)
     except (ParseError, ValueError) as exc:
         raise state.err(i, "condition", str(exc), raw, ExpressionError) from None
     target = st.get("for")
@@ -79,6 +74,10 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
     roots = [r for r in found if admissible(state, u, r)]
     if len(roots) != 1:
         listed = f" ({', '.join(_shown(state.value(r)) for r in roots)})" if roots else ""
+        if not roots and found:  # say what the equation gave, so that a sign or unit slip shows
+            listed = f" (its roots {', '.join(_shown(state.value(r)) for r in found)} are not physical)"
+        elif not found:
+            listed = f" (it has no root{f' with {u.name} ≥ 0' if u.is_nonnegative else ''}: check the signs and units)"
         hint = "; the data do not choose between them: give one more value" if len(roots) > 1 else ""
         raise SolveError(
             f"stage {i}: {raw} gives {len(roots)} admissible values of {u.name}{listed}{hint}", where=state.chain.path
@@ -98,6 +97,19 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
         lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim, in_unknown, len(found), lhs_unit, tuple(updated)
     )
     return StageOutcome(i, "solve", f"Solve for {u.name}", data, (u.name,))
+
+
+def _same_kind(lhs: Parsed, rhs: Parsed) -> sympy.Expr:
+    """The right side of a condition in the left side's working unit: a number with a unit of
+    another kind is an error; a bare number is in the working unit (an angle's in degrees,
+    unless written in pi)."""
+    if rhs.dim == lhs.dim or rhs.expr == 0:
+        return rhs.expr
+    if rhs.dim != units.DIMENSIONLESS or rhs.expr.free_symbols:
+        raise ParseError(f"compares {units.describe(lhs.dim)} with {units.describe(rhs.dim)}")
+    if lhs.dim == units.ANGLE and not rhs.expr.has(sympy.pi):
+        return rhs.expr * sympy.pi / 180
+    return rhs.expr
 
 
 def _shown(v: sympy.Expr) -> str:

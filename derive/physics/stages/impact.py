@@ -10,7 +10,7 @@ import sympy
 from derive.errors import InputError
 from derive.physics.impact import independent_map
 from derive.physics.outcome import ImpactOutcome, solve_impact
-from derive.physics.state import ChainState, StageOutcome
+from derive.physics.state import ChainState, StageOutcome, resolve
 from derive.problem import build_problem, units
 
 
@@ -34,6 +34,7 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
     table = {k: v for k, v in st.items() if k not in ("type", "results", "title")}
     data = {"title": st.get("title", "An impact"), **table}
     data.setdefault("given", {})
+    data.setdefault("units", state.chain.system)  # its givens name the chain's: its units are the chain's
     exported = st.get("results", {})
     worked = [r for r in exported if r in WORKED] if isinstance(exported, dict) else []
     if worked and isinstance(data.get("find", []), list):
@@ -56,14 +57,14 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
         if seed.get(g.name) is not g and (g.definition is not None or g.value is not None)
     }
     ind = independent_map(problem)
-    state.approaches.append((problem.motion_A.n - problem.motion_B.n).xreplace(ind).xreplace(own))
+    state.approaches.append(resolve((problem.motion_A.n - problem.motion_B.n).xreplace(ind), own))
     outputs, exports, carried = [], [], []
     for rname, new in results.items():
         r = outcome.results.get(rname)
         if r is None or not isinstance(new, str):
             raise state.err(i, "results", f"{rname!r} is not a result of this impact", rname)
         dim = dimension_of(rname)
-        expr = r.closed.xreplace(ind).xreplace(own)
+        expr = resolve(r.closed.xreplace(ind), own)  # m_A = W_A/g, W_A = W_bag: down to the chain's names
         if rname.startswith(("theta", "beta")):
             expr = r.partial * sympy.pi / 180 if r.value is None else r.value * sympy.pi / 180
         g = state.define(i, new, expr, dim, "deg" if dim == units.ANGLE else None)
@@ -73,7 +74,7 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
     for g in problem.givens:  # unknowns found by this impact become known to later stages
         if g.unknown and g.name not in state.known:
             r = outcome.results[g.name]
-            state.define(i, g.name, r.closed.xreplace(ind).xreplace(own), g.dim, g.unit)
+            state.define(i, g.name, resolve(r.closed.xreplace(ind), own), g.dim, g.unit)
             outputs.append(g.name)
     return StageOutcome(
         i, "impact", data["title"], ImpactStage(outcome, tuple(exports), tuple(carried)), tuple(outputs)
