@@ -68,17 +68,21 @@ def main(argv: list[str] | None = None) -> int:
         for target in targets:
             wall, cpu, code = time_one(target, tree, cwd)
             rows.append({"problem": Path(target).stem, "wall": round(wall, 2), "cpu": round(cpu, 2), "exit": code})
-    rows.sort(key=lambda row: -row["wall"])
+    rows.sort(key=lambda row: -row[args.by])
+    load = os.getloadavg()[0]
     if args.json:
-        print(json.dumps(rows, indent=1))
+        print(json.dumps({"load_average": round(load, 2), "cores": os.cpu_count(), "rows": rows}, indent=1))
     else:
-        print(f"{len(rows)} problems, tree {tree}; the slowest {args.top}:")
+        print(f"{len(rows)} problems, tree {tree}, load average {load:.1f} on {os.cpu_count()} cores;")
+        print(f"the slowest {args.top} by {args.by} time:")
         for row in rows[: args.top]:
             print(f"  {row['wall']:6.2f} s wall  {row['cpu']:6.2f} s CPU  exit {row['exit']}  {row['problem']}")
-    bad = [row for row in rows if row["wall"] > args.limit or row["exit"] != 0]
+    bad = [row for row in rows if row[args.by] > args.limit or row["exit"] != 0]
     for row in bad:
         print(
-            f"over {args.limit:g} s or failed: {row['problem']} ({row['wall']} s, exit {row['exit']})", file=sys.stderr
+            f"over {args.limit:g} s ({args.by}) or failed: {row['problem']} "
+            f"({row['wall']} s wall, {row['cpu']} s CPU, exit {row['exit']})",
+            file=sys.stderr,
         )
     return 1 if bad else 0
 

@@ -574,3 +574,34 @@ def test_the_m4_wall_question_solves_without_sympys_checksol(cli) -> None:
     assert res.code == 0, res.err
     # the mark scheme: tan(alpha) = sqrt(32/3), alpha = 72.976...
     assert json.loads(res.out)["results"]["alpha"]["value"] == pytest.approx(math.degrees(math.atan(math.sqrt(32 / 3))))
+
+
+def test_a_unit_in_a_stage_field_is_in_the_chains_units(cli, tmp_path: Path) -> None:
+    """``k = "20 lb/ft"`` and ``32.2 ft/s^2`` in a US chain's stages (a stage field took no unit:
+    "unexpected 'lb' after the expression"). Hand: m = 2/32.2 slug, x = v sqrt(m/k)
+    = 3 sqrt((2/32.2)/20) ft."""
+    out = solve_json(
+        cli,
+        tmp_path,
+        """
+        title = "US chain, a unit in a stage field"
+        kind = "chain"
+        units = "US"
+        [given]
+        W = "2 lb"
+        v_0 = "3 ft/s"
+        [[stage]]
+        type = "define"
+        expr = "W/(32.2 ft/s^2)"
+        result = "m"
+        [[stage]]
+        type = "spring"
+        speed = "v_0"
+        mass = "m"
+        k = "20 lb/ft"
+        result = "x"
+        """,
+    )
+    assert out["results"]["m"]["value"] == pytest.approx(2 / 32.2)
+    assert out["results"]["x"]["value"] == pytest.approx(3 * math.sqrt((2 / 32.2) / 20))
+    assert out["results"]["x"]["unit"] == "ft"

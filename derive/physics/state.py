@@ -75,7 +75,7 @@ class ChainState:
         if not isinstance(raw, str):
             raise self.err(i, key, "expected a name or an expression", raw)
         try:
-            parsed = parse(raw, self.names())
+            parsed = parse(raw, self.names(), self.chain.system)  # "200 N/m": in the working unit
         except ParseError as exc:
             raise self.err(i, key, _with_unit_hint(str(exc), raw, key), raw, ExpressionError) from None
         if dim is not None and parsed.dim != dim and not (parsed.expr == 0):

@@ -45,7 +45,7 @@ def define(state: ChainState, i: int, st: dict) -> StageOutcome:
     """A new quantity ``result = expr`` from known ones."""
     raw = st.get("expr")
     expr = state.quantity(i, st, "expr", None)
-    dim = parse(str(raw), state.names()).dim
+    dim = parse(str(raw), state.names(), state.chain.system).dim
     out = state.define(i, st.get("result", f"q_{i}"), expr, dim)
     data = Definition(expr, state.value(expr), out, str(st.get("text", "Then:")))
     return StageOutcome(i, "define", st.get("title", "Then"), data, (out.name,))
