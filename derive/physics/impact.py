@@ -24,7 +24,7 @@ import sympy
 from derive.errors import SolveError
 from derive.physics.forms import factored
 from derive.physics.periodic import periodic_roots
-from derive.physics.roots import holds, known_angles, polar_roots, tidy
+from derive.physics.roots import distinct, holds, known_angles, polar_roots, singular, tidy
 from derive.physics.roots import roots as _roots  # the cache tests read as impact._roots
 from derive.problem import Problem
 from derive.problem.units import VELOCITY
@@ -262,7 +262,7 @@ def _solve_inverse(
     roots = periodic_roots(problem, system, unknowns, numeric, _roots)
     if roots is None:
         roots = [dict(root) for root in _roots(tuple(system), tuple(unknowns))]
-    if any(_singular(root, numeric) for root in roots):  # a closed form 0/0 at these numbers: solve with them
+    if any(singular(root, numeric) for root in roots):  # a closed form 0/0 at these numbers: solve with them
         numbers = tuple(sympy.sympify(x).xreplace(numeric) for x in system)
         roots = [dict(root) for root in _roots(numbers, tuple(unknowns))]
     roots = [r for r in roots if set(r) == set(unknowns) and holds(system, r, numeric)]
@@ -299,31 +299,7 @@ def _solve_inverse(
             where=problem.path,
         )
     asked = set(problem.unknowns())
-    return _distinct(kept, tuple(sorted(unknowns, key=lambda u: u not in asked)), numeric)
-
-
-def _singular(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
-    """True where a root's closed form has no value at the numbers given (v_B1 = 0 in a
-    denominator: zoo, or 0/0: nan), though the system with the numbers put in may have one."""
-    return any(sympy.sympify(v).xreplace(numeric).has(sympy.zoo, sympy.nan, sympy.oo) for v in root.values())
-
-
-def _distinct(
-    kept: list[dict[sympy.Symbol, sympy.Expr]],
-    unknowns: tuple[sympy.Symbol, ...],
-    numeric: dict[sympy.Symbol, sympy.Expr],
-) -> list[dict[sympy.Symbol, sympy.Expr]]:
-    """The physical roots, one per distinct set of values, ordered by the values of the
-    unknowns (the first root SymPy gave where a value still holds a letter)."""
-    if len(kept) == 1:
-        return kept
-    seen: dict[tuple, dict[sympy.Symbol, sympy.Expr]] = {}
-    for root in kept:
-        key = tuple(sympy.N(root[u].xreplace(numeric), 12) for u in unknowns)
-        seen.setdefault(key, root)
-    if any(x.free_symbols or not x.is_real for key in seen for x in key):
-        return list(seen.values())
-    return [seen[key] for key in sorted(seen, key=lambda k: [float(x) for x in k])]
+    return distinct(kept, tuple(sorted(unknowns, key=lambda u: u not in asked)), numeric)
 
 
 def _points(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr], direction: tuple) -> bool:

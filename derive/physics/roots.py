@@ -140,3 +140,27 @@ def known_angles(
         for g in problem.givens
         if g.dim == ANGLE and g.value is not None and not g.unknown and any(f.has(g.symbol) for f in trig)
     }
+
+
+def singular(root: dict[sympy.Symbol, sympy.Expr], numeric: dict[sympy.Symbol, sympy.Expr]) -> bool:
+    """True where a root's closed form has no value at the numbers given (v_B1 = 0 in a
+    denominator: zoo, or 0/0: nan), though the system with the numbers put in may have one."""
+    return any(sympy.sympify(v).xreplace(numeric).has(sympy.zoo, sympy.nan, sympy.oo) for v in root.values())
+
+
+def distinct(
+    kept: list[dict[sympy.Symbol, sympy.Expr]],
+    unknowns: tuple[sympy.Symbol, ...],
+    numeric: dict[sympy.Symbol, sympy.Expr],
+) -> list[dict[sympy.Symbol, sympy.Expr]]:
+    """The physical roots, one per distinct set of values, ordered by the values of the
+    unknowns (the first root SymPy gave where a value still holds a letter)."""
+    if len(kept) == 1:
+        return kept
+    seen: dict[tuple, dict[sympy.Symbol, sympy.Expr]] = {}
+    for root in kept:
+        key = tuple(sympy.N(root[u].xreplace(numeric), 12) for u in unknowns)
+        seen.setdefault(key, root)
+    if any(x.free_symbols or not x.is_real for key in seen for x in key):
+        return list(seen.values())
+    return [seen[key] for key in sorted(seen, key=lambda k: [float(x) for x in k])]
