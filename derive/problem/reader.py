@@ -86,6 +86,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             conditions=fields.conditions(data.get("conditions"), by_name, ctx),
             assume=assume,
             asks=asks,
+            ctx=ctx,
         )
     except RecordError as exc:
         raw = data.get(exc.section, {}).get(exc.key) if exc.section else data.get(exc.key or "")

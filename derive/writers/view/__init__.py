@@ -40,6 +40,7 @@ __all__ = [
     "plain_answers",
     "render",
     "source_parts",
+    "student_page",
     "student_sheet",
     "to_json",
     "view",
@@ -111,6 +112,32 @@ def render(
     data = view(solution, digits, figures, layout=layout, plot=plot)
     template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
     return environment("tex").get_template(template).render(**data, **tex_vars)
+
+
+def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = None, title: str | None = None) -> str:
+    """A student's sheet of ``solution`` in ``fmt`` ('md', or 'tex': a document): the title
+    (``title`` in its place), Given and Find, the set-up before the impact (a chain's first)
+    and the sign convention in words; no Source line, no working (a homework variant's sheet)."""
+    from derive.writers import figure
+
+    layout = TEX_DOCUMENT if fmt == "tex" else GITHUB
+    if solution.is_chain:
+        data = chain_as_problem(solution, digits, figures=False, layout=layout)
+        impacts = [st.part for st in solution.stages if st.part is not None]
+    else:
+        data = view(solution, digits, figures=False, layout=layout)
+        impacts = [solution]
+    sheet = student_sheet(data)
+    sheet.update(part="problems", setup_svg="", setup_tikz="")
+    if impacts and any(st.figure == "before" for st in impacts[0].stages):
+        drawn = figure.describe(solution, after=False)
+        sheet.update(setup_svg=figure.to_svg(drawn), setup_tikz=figure.to_tikz(drawn))
+    if title is not None:
+        sheet["title"] = title
+    if fmt == "tex":
+        tex_vars = {**_headings(1, True), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+        return environment("tex").get_template("solution.tex.j2").render(**sheet, **tex_vars)
+    return environment("md").get_template("solution.md.j2").render(**sheet).rstrip("\n") + "\n"
 
 
 def environment(kind: str) -> Any:
