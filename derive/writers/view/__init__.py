@@ -17,14 +17,12 @@ from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT
 from derive.writers.view.chain import chain_as_problem, chain_convention, chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import chain_json, to_json
-from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
+from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
 from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet, view
 
 __all__ = [
     "ANSWER_MARK",
     "FORMATS",
-    "OPTIONAL_BEGIN",
-    "OPTIONAL_END",
     "blocks_view",
     "boxed_lines",
     "chain_as_problem",
