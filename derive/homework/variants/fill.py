@@ -3,7 +3,6 @@ in, :meth:`Compiled.solved`) through the writers every page goes through."""
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Iterator
 from typing import Any
 
@@ -38,7 +37,7 @@ def answers(compiled: Compiled, variant: Variant, digits: int | None = None) -> 
     file (v_A2 given in an inverse problem) is no answer: the key has it once, among the givens."""
     sol = compiled.solved(variant.values)
     d = digits if digits is not None else compiled.problem.digits
-    verdicts = {a.name for a in sol.answers if a.verdict is not None} if compiled.is_chain else set()
+    verdicts = {a.name for a in sol.answers if a.verdict is not None}  # a chain's "collide again?"
     known = {g.name for g in compiled.problem.givens if not g.unknown}
     out = {}
     for name, r in sol.results.items():
@@ -83,7 +82,7 @@ def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
     from derive.writers import figure
 
     sol = compiled.solved(variant.values)
-    impacts = [st.part for st in sol.stages if st.part is not None] if compiled.is_chain else [sol]
+    impacts = [st.part for st in sol.stages if st.part is not None] or [sol]  # a chain's, or the impact
     if not impacts or not any(st.figure == "before" for st in impacts[0].stages):
         return ""
     drawn = figure.describe(sol, after=False)
@@ -95,10 +94,10 @@ def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
     as its sheet says it: Markdown or (tex, pdf) LaTeX text."""
     from derive import escape
     from derive.steps import solve
-    from derive.writers.view import chain_as_problem, student_sheet, view
+    from derive.writers.view import problem_view, student_sheet
 
     sol = compiled.solution if compiled.is_chain else solve(compiled.problem)  # the file's own numbers
-    data = chain_as_problem(sol, figures=False) if compiled.is_chain else view(sol, figures=False)
+    data = problem_view(sol, figures=False)
     text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
     return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in student_sheet(data)["convention"])
 
@@ -116,17 +115,13 @@ def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None =
     the impact, the sign convention in words; no Source line, no answers) and the worked
     solution as ``derive solve -f html`` writes it."""
     from derive.writers.targets import HTML
-    from derive.writers.view import chain_as_problem, chain_view, student_sheet, view
+    from derive.writers.view import page_kind, problem_view, student_sheet
     from derive.writers.view.html import html_pages
 
     sol = compiled.solved(v.values)
-    if compiled.is_chain:
-        student = student_sheet(chain_as_problem(sol, digits, figures=False, layout=HTML))
-        worked: tuple[str, dict] = ("chain", chain_view(sol, digits, layout=HTML))
-    else:
-        page = view(sol, digits, layout=HTML)
-        student = student_sheet(copy.deepcopy(page))
-        worked = ("solution", page)
+    kind = page_kind(sol)
+    student = student_sheet(problem_view(sol, digits, figures=False, layout=HTML))
+    worked = (kind.html, kind.view(sol, digits, True, HTML, False, True))
     student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
     problems = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
     student_page, worked_page = html_pages([("handout", {**problems, "numbered": False}), worked])
