@@ -345,8 +345,11 @@ def test_a_chain_whose_draws_never_solve_says_why() -> None:
 
 
 def test_a_vary_value_that_is_no_decimal_in_the_typed_unit_is_refused() -> None:
-    """A value the [given] table cannot hold as typed (10 km/h is 25/9 m/s, and v_A is typed
-    in m/s) is a one-line error naming it."""
-    text = _aqa_with("", vary='v_A = { choices = ["3 m/s", "10 km/h"] }\n')
-    with pytest.raises(derive.InputError, match=r"\[vary\] v_A: 2\.777+8? m/s is no decimal number in m/s"):
+    """A range value its min's unit cannot hold as a decimal (3 m/s + 1 km/h is 59/18 m/s) is a
+    one-line error naming it; a choice is written as typed (10 km/h, not 2.78 m/s)."""
+    text = _aqa_with("", vary='v_A = { min = "3 m/s", max = "4 m/s", step = "1 km/h" }\n')
+    with pytest.raises(derive.InputError, match=r"\[vary\] v_A: 3\.2777+8? m/s is no decimal number in m/s"):
         variants.compile_problem(loads(text, path="third.toml"))
+    text = _aqa_with("", vary='v_A = { choices = ["3 m/s", "10 km/h"] }\n')
+    compiled = variants.compile_problem(loads(text, path="third.toml"))
+    assert sorted(compiled.written["v_A"].values()) == ["10 km/h", "3 m/s"]

@@ -36,7 +36,7 @@ def test_variants_are_distinct_and_physical(compiled: variants.Compiled) -> None
     keys = {tuple(sorted(v.values.items())) for v in chosen}
     assert len(keys) == 300
     th = math.radians(37.6)
-    for v in chosen:
+    for v in chosen[::10]:  # each key row is a solve of its variant: 30 of them
         g = {k: float(x) for k, x in v.values.items()}
         r = {k: x["value"] for k, x in variants.answers(compiled, v).items()}
         vA1n, vB1n = g["v_A1"] * math.cos(th), -g["v_B1"] * math.cos(th)
@@ -50,7 +50,7 @@ def test_variants_are_distinct_and_physical(compiled: variants.Compiled) -> None
 
 
 def test_each_variant_matches_a_fresh_solve(compiled: variants.Compiled) -> None:
-    """The compiled page and key give what solving the variant's numbers from scratch gives."""
+    """A variant's page and key are what solving the file with the variant's numbers gives."""
     base = Path(derive.resources.bundled()["notes-4c11-two-spheres"]).read_text()
     for v in variants.draw(compiled, 4, seed=5):
         text = base
@@ -63,17 +63,15 @@ def test_each_variant_matches_a_fresh_solve(compiled: variants.Compiled) -> None
         key = variants.answers(compiled, v)
         for name in ("v_A2n", "v_A2t", "v_B2n", "v_B2t", "T_lost"):
             assert key[name]["value"] == pytest.approx(float(fresh.results[name].value), rel=1e-12), name
-        page = variants.fill(compiled, v)
-        fresh_md = derive.render(fresh, "md", figures=False)
-        # every boxed answer ends the same (a variant page may show fewer intermediate steps)
-        boxed = [b.rsplit("=", 1)[1] for b in re.findall(r"\\boxed\{.*", page)]
-        assert boxed and boxed == [b.rsplit("=", 1)[1] for b in re.findall(r"\\boxed\{.*", fresh_md)]
-        assert re.findall(r".*\\tag\{[1-4]\}", page) == re.findall(r".*\\tag\{[1-4]\}", fresh_md)
+        # issue #28 item 7: the variant's page lacked lines the solve shows (T_lost/T_1), and its
+        # step 3 read otherwise; it is now the page of the file with its numbers, line for line
+        assert variants.fill(compiled, v) == derive.render(fresh, "md")
+        assert variants.fill(compiled, v, "tex") == derive.render(fresh, "tex")
 
 
 def test_shown_sums_add_up_in_every_variant(compiled: variants.Compiled) -> None:
     shown = 0
-    for v in variants.draw(compiled, 200, seed=9):
+    for v in variants.draw(compiled, 60, seed=9):
         page = variants.fill(compiled, v)
         assert re.search(r"= [-\d.]+ \\tag\{3\}", page), page[:3000]  # (3) is always there
         m = re.search(
@@ -87,7 +85,7 @@ def test_shown_sums_add_up_in_every_variant(compiled: variants.Compiled) -> None
         shown += 1
         a, b, total = (Decimal(x) for x in m.groups())
         assert a - b == total
-    assert shown >= 30  # 42 of these 200 measured: most need more figures than allowed to add up
+    assert shown >= 5  # 35 of 200 measured: most need more figures than allowed to add up
 
 
 def test_conditions_are_respected() -> None:
@@ -183,11 +181,13 @@ def test_each_variant_is_drawn_with_its_own_numbers(cli, tmp_path: Path) -> None
     """Issues 15 and 16: variants had no figures; a student's sheet had none to work from.
     Each variant's page has its figures before and after the impact, its sheet the one before,
     drawn from the variant's own speeds (arrow lengths in their ratio: no solve)."""
+    from derive.writers.figure import describe
     from derive.writers.figure.model import Arrow
 
-    compiled = variants.compile_problem(loads(bundled()["notes-4c11-two-spheres"].read_text()))
+    compiled = variants.compile_problem(loads(bundled()["notes-4c11-two-spheres"].read_text(), path="4c11.toml"))
     for v in variants.draw(compiled, 5, seed=3):
-        arrows = {a.name: a for a in variants.drawing(compiled, v, "before").shapes if isinstance(a, Arrow)}
+        drawn = describe(compiled.solved(v.values), after=False)
+        arrows = {a.name: a for a in drawn.shapes if isinstance(a, Arrow)}
         ratio = arrows["v_B1"].length / arrows["v_A1"].length
         if not (arrows["v_A1"].lengthened or arrows["v_B1"].lengthened):
             assert ratio == pytest.approx(abs(float(v.values["v_B1"]) / float(v.values["v_A1"])), rel=1e-9)
@@ -327,10 +327,7 @@ def test_a_students_sheet_says_which_way_n_points(fmt: str) -> None:
     (and +t) points, as the worked page does, besides the figure."""
     compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"), fmt=fmt)
     (v,) = variants.draw(compiled, 1, seed=2)
-    page = variants.fill(compiled, v, fmt)
-    sheet = variants.statement_only(
-        page, variants.setup_figure(compiled, v, fmt), variants.sign_convention(compiled, fmt)
-    )
+    sheet = variants.sheet(compiled, v, fmt)
     assert "Sign convention." in sheet
     assert "Take $n$ along the line of impact, positive from the centre of A toward the centre of B" in sheet
     assert "Solution" not in sheet and "boxed" not in sheet
@@ -344,7 +341,7 @@ def test_a_variant_page_gives_a_defined_component_its_number_and_a_component_one
     for v in variants.draw(compiled, 5, seed=1):
         page = variants.fill(compiled, v)
         u, a = float(v.values["u_B"]), float(v.values["alpha"])
-        line = re.search(r"^v_\{B1n\} = (.*)$", page, flags=re.M)
+        line = re.search(r"^- \$v_\{B1n\} = (.*)\$$", page, flags=re.M)  # in the Given list, as solve has it
         assert line is not None and line.group(1).startswith(r"-u_{B} \cos {\alpha} = "), page
         shown = re.search(r"= (-?[\d.]+)\\ \\mathrm\{m/s\}$", line.group(1))
         assert shown is not None and float(shown.group(1)) == pytest.approx(-u * math.cos(a), rel=2e-3)
@@ -375,14 +372,14 @@ def test_a_variant_prints_an_exact_zero_not_floating_point_noise() -> None:
 
 
 def test_a_variant_given_defined_through_another_shows_its_number() -> None:
-    """ocr-m3-2013: v_B2n = v_B1t tan(alpha), and v_B1t = u_B sin(alpha) is open in a variant;
-    its Given line read 0.3640 v_B1t m/s, a velocity times a velocity."""
+    """ocr-m3-2013: v_B2n = v_B1t tan(alpha), and v_B1t = u_B sin(alpha); a variant's Given line
+    read 0.3640 v_B1t m/s, a velocity times a velocity. It reads as the solve's: v_B1t's number."""
     compiled = variants.compile_problem(derive.load("ocr-m3-2013-b-turns-through-right-angle"))
     for v in variants.draw(compiled, 4, seed=1):
         page = variants.fill(compiled, v)
         line = next(x for x in page.splitlines() if x.startswith("- $v_{B2n} = "))
         u, a = float(v.values["u_B"]), float(v.values["alpha"])
-        assert r"= u_{B} \sin {\alpha} \tan {\alpha} = " in line, line
+        assert line.startswith(r"- $v_{B2n} = v_{B1t} \tan {\alpha} = ") and "v_{B1t} m/s" not in line, line
         last = re.search(r"= ([\d.]+)\\ \\mathrm\{m/s\}\$$", line)
         assert last is not None, line
         assert float(last.group(1)) == pytest.approx(u * math.sin(a) * math.tan(a), rel=1e-3)
@@ -421,7 +418,7 @@ def test_cli_writes_an_html_sheet_and_worked_solution_per_variant(cli, tmp_path:
         sheet = html_text(raw)
         full = html_text((out / f"variant-0{v.number}.html").read_text(encoding="utf-8"))
         for name in compiled.names:
-            number = variants.given_text(compiled.givens[name], v.values[name], None)
+            number = str(dict(compiled.values_written(v.values))[name]).split()[0]  # as [given] types it
             assert f"= {number}" in sheet and f"= {number}" in full, (name, number)
         assert "Sign convention." in sheet and "Source" not in sheet and "ANSWER" not in sheet
         assert raw.count("<svg") == 1 and 'aria-label="Before the impact"' in raw
@@ -444,15 +441,35 @@ def test_an_inverse_variants_sheet_marks_the_unknown_to_find(cli, tmp_path: Path
     "name", ["notes-4c11-two-spheres", "hibbeler-15-58-suitcases", "ocr-mei-fmm-2021-b-at-45deg-find-e"]
 )
 def test_a_variants_data_is_the_page_fill_prints(name: str) -> None:
-    """The data the HTML writer gets for a variant (fill_view: numbers, optional lines and
-    sides, figures) laid out by the Markdown template is the page fill() prints (figures aside):
-    the LMS's HTML and the variant's HTML page show the numbers of its Markdown page."""
+    """The data the HTML writer gets for a variant (fill_view) laid out by the Markdown template
+    is the page fill() prints (figures aside): the LMS's HTML and the variant's HTML page show
+    the numbers of its Markdown page."""
     from derive.writers.view import environment
 
     compiled = variants.compile_problem(derive.load(name))
     for v in variants.draw(compiled, 4, seed=3):
         data = variants.fill_view(compiled, v)
         laid_out = environment("md").get_template("solution.md.j2").render(**data)
-        assert "DRVSLOT" not in laid_out and "derive-optional" not in laid_out
         figures = re.compile(r'<div align="center">.*?</div>\n')
         assert figures.sub("", laid_out) == figures.sub("", variants.fill(compiled, v, "md"))
+
+
+def test_variants_made_on_every_core_are_those_made_in_one_process(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """With 16 variants on two cores or more, write_variants forks a pool of workers: the
+    folder it writes is, file for file, the folder one process writes."""
+    import os
+
+    from derive.homework.variants import write
+
+    if (os.cpu_count() or 1) < 2:
+        pytest.skip("one core: no pool")
+    problem = derive.load("notes-4c11-two-spheres")
+    assert write.write_variants(problem, str(tmp_path / "pool"), count=16, seed=8) == []
+    monkeypatch.setattr(write, "POOL_FROM", 10**6)
+    assert write.write_variants(problem, str(tmp_path / "one"), count=16, seed=8) == []
+    names = sorted(p.name for p in (tmp_path / "one").iterdir())
+    assert names == sorted(p.name for p in (tmp_path / "pool").iterdir()) and len(names) == 34
+    for name in names:
+        assert (tmp_path / "pool" / name).read_bytes() == (tmp_path / "one" / name).read_bytes(), name

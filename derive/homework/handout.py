@@ -28,7 +28,7 @@ from derive.problem import load
 from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
-from derive.writers.view import chain_as_problem, environment, student_sheet, view
+from derive.writers.view import environment, problem_view, student_sheet
 from derive.writers.view.html import handout_html
 
 Mode = Literal["problems", "answers", "solutions"]
@@ -74,10 +74,8 @@ def _problem_view(
 ) -> dict[str, Any]:
     """One problem as the handout templates need it: :func:`view` plus its answer lines."""
     solution = solve(load(name))
-    if solution.is_chain:
-        data = chain_as_problem(solution, digits, figures=mode != "answers", layout=layout)
-    else:
-        data = view(solution, digits, figures=mode != "answers", plot=plot and mode == "solutions", layout=layout)
+    data = problem_view(solution, digits, mode != "answers", layout=layout, plot=plot and mode == "solutions")
+    if "answers" not in data:  # one impact's: the boxed lines of its answer stage (a chain has its own)
         data["answers"] = [
             line
             for stage in data["stages"]

@@ -91,6 +91,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             ),
             assume=assume,
             asks=asks,
+            ctx=ctx,
         )
     except RecordError as exc:
         raw = data.get(exc.section, {}).get(exc.key) if exc.section else data.get(exc.key or "")

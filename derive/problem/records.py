@@ -154,6 +154,9 @@ class Problem:
     extra: Mapping[str, Any] = field(default_factory=dict)
     assume: Mapping[str, str] = field(default_factory=dict)
     asks: Asks = field(default_factory=Asks)
+    #: The file it was read from (:class:`~derive.problem.source.Source`): its text, for a
+    #: homework variant (the file with other numbers written in) and for messages.
+    ctx: Any = field(default=None, compare=False, repr=False)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

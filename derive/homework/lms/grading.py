@@ -97,10 +97,6 @@ def _is_number(text: str) -> bool:
 
 def resolve_result(compiled: Compiled, variants: list[Variant], result: str | None, digits: int | None = None) -> str:
     """``result`` checked (a result with a number in every variant), or the default."""
-    if not compiled.is_chain and "md" not in compiled.templates:
-        raise ValueError(
-            "the LMS exports need the problem compiled for Markdown: compile_problem(problem, digits, 'md')"
-        )
     if result is None:
         return default_result(compiled, variants, digits)
     have = _numeric_results(compiled, variants, digits)

@@ -6,7 +6,6 @@ from __future__ import annotations
 import hashlib
 import html
 import pprint
-import re
 import uuid
 from pathlib import Path
 
@@ -16,59 +15,10 @@ from derive.homework.lms.grading import EDGE, asked_answer, resolve_result
 from derive.homework.lms.markup import clean_xml, esc, result_html, solution_html, statement_html
 from derive.homework.lms.mistake_model import MistakeModel, hint_text, mistake_ranges
 from derive.homework.lms.moodle import problem_name
-from derive.homework.variants import Compiled, Variant, answers, fill_view, setup_figure, statement_view
+from derive.homework.variants import Compiled, Variant, answers, fill_view, given_values, setup_figure
 from derive.symbols import latex_name
 
 TOPIC = "Central impact"
-
-_PARAM = "DRVPARAM{}X"
-
-
-def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, str]]] | None:
-    """The statement as HTML with ``{{params.NAME}}`` where each varied given's number
-    goes, and what each parameter is (given name, slot kind); None when the statement
-    holds a number that is not a varied given's, and for a chain (solved per variant: its
-    statement is a parameter of each variant)."""
-    if compiled.is_chain:
-        return None
-    by_symbol = {compiled.givens[n].symbol: n for n in compiled.names}
-    keys: dict[str, tuple[str, str]] = {}
-    other: list[int] = []
-
-    def param(number: int) -> str:
-        slot = compiled.book.slots[number]
-        given = by_symbol.get(slot.expr)
-        if given is None or slot.kind not in ("given", "text", "text:abs"):
-            other.append(number)
-            return ""
-        key = {"text": given, "text:abs": f"derive_speed_{given}"}.get(slot.kind, f"derive_given_{given}")
-        keys[key] = (given, slot.kind)
-        return _PARAM.format(list(keys).index(key))
-
-    page = statement_html(statement_view(compiled, param))
-    if other:
-        return None
-    page = re.sub(r"\{(?=\{)", "{ ", page)  # literal {{ in TeX is not Mustache
-    page = re.sub(r"\}(?=\})", "} ", page)
-    for i, key in enumerate(keys):
-        page = page.replace(_PARAM.format(i), "{{params." + key + "}}")
-    return page, keys
-
-
-def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
-    from derive.homework.variants import given_text
-    from derive.writers.view.givens import statement_number
-
-    d = digits if digits is not None else compiled.problem.digits
-    out = {}
-    for key, (name, kind) in keys.items():
-        g, value = compiled.givens[name], variant.values[name]
-        if kind.startswith("text"):  # as the statement prints it: 2.50, 22 (g), |v_B1|
-            out[key] = statement_number(g, value, d, magnitude=kind == "text:abs")
-            continue
-        text = given_text(g, value, d)
-        out[key] = rf"\left({text}\right)" if text.startswith("-") else text
-    return out
 
 
 def _uuid(compiled: Compiled, result: str, seed: int | None, variants: list[Variant]) -> str:
@@ -138,15 +88,13 @@ def prairielearn_files(
     ``grade()`` gives the mistakes' hints in the ranges Moodle uses."""
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
-    d = digits if digits is not None else p.digits
     if not with_mistakes:
         model = None
     elif model is None:
         model = MistakeModel(compiled)
-    template = _statement_template(compiled)
-    rows = [_row(compiled, v, result, digits, d, template, model) for v in variants]
-    statement = template[0] if template is not None else "{{{params.derive_statement}}}"
-    question = _question_html(compiled, variants, result, digits, statement)
+    rows = [_row(compiled, v, result, digits, model) for v in variants]
+    # each variant's statement whole: a variant is its own problem, written as any page is
+    question = _question_html(compiled, variants, result, digits, "{{{params.derive_statement}}}")
     info = {
         "uuid": _uuid(compiled, result, seed, variants),
         "title": f"{p.title} ({result})",
@@ -171,18 +119,16 @@ def _row(
     v: Variant,
     result: str,
     digits: int | None,
-    d: int,
-    template: tuple[str, dict[str, tuple[str, str]]] | None,
     model: MistakeModel | None,
 ) -> dict:
     """One variant as server.py's VARIANTS hold it: parameters, answer, mistakes' ranges."""
     page = fill_view(compiled, v, digits)
+    d = digits if digits is not None else compiled.problem.digits
     right = asked_answer(result, answers(compiled, v, digits)[result], d)
     ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
-    if template is not None:
-        params = _params(compiled, v, template[1], digits)
-    else:
-        params = {"derive_statement": statement_html(page)}
+    # each varied given's number (the file's units, angles in degrees), for a course's own use
+    params: dict = {name: given["value"] for name, given in given_values(compiled, v).items()}
+    params["derive_statement"] = statement_html(page)
     params.update(
         {
             "derive_variant": v.number,

@@ -1,62 +1,52 @@
-"""Homework variants: derive a problem once, then evaluate and print it many times.
+"""Homework variants: a problem with a ``[vary]`` table, drawn again and again with other numbers.
 May import: the rest of homework, writers, steps, physics, problem and the leaves.
 
-A problem with a ``[vary]`` table is solved once with the varied givens kept as
-symbols. Its worked solution is printed once, every number that depends on them
-left open (a slot); each slot and each result is compiled to a plain Python
-function. A variant is then a few float evaluations and string joins: no SymPy
-solving, no SymPy printing.
+A variant is the problem file with its drawn numbers written into ``[given]``: it is read,
+solved and written as ``derive solve`` reads, solves and writes a file, through the same
+writers (one engine for a single impact and a chain). A single impact is also solved once
+with its varied givens as symbols: its closed forms test each draw quickly.
 
-``compile`` derives and compiles the problem, ``draw`` draws the variants, ``fill``
-prints a variant's page and answers, ``write`` writes the folder and its answer key.
+``compile`` makes a problem ready (each drawn value as the file writes it, the test of a
+draw), ``draw`` draws the variants, ``fill`` writes a variant's pages, key and data,
+``write`` the folder and its answer key (on every core).
 """
 
 from __future__ import annotations
 
-from derive.homework.variants.chain import ChainCompiled
-from derive.homework.variants.compile import FIGURE, Compiled, compile_problem
+from derive.homework.variants.compile import Compiled, compile_problem, written_value
 from derive.homework.variants.draw import GIVE_UP_AFTER, MAX_ATTEMPTS_PER_VARIANT, MAX_COUNT, draw
 from derive.homework.variants.fill import (
-    TEX_SOLUTION,
     answers,
-    drawing,
     fill,
     fill_view,
-    given_text,
     given_values,
     iterate,
     setup_figure,
+    sheet,
     sign_convention,
-    slot_texts,
-    statement_only,
-    statement_view,
+    variant_html,
 )
 from derive.homework.variants.record import Variant
 from derive.homework.variants.write import OWNED, write_variants
 
 __all__ = [
-    "FIGURE",
     "GIVE_UP_AFTER",
     "MAX_ATTEMPTS_PER_VARIANT",
     "MAX_COUNT",
     "OWNED",
-    "TEX_SOLUTION",
-    "ChainCompiled",
     "Compiled",
     "Variant",
     "answers",
     "compile_problem",
     "draw",
-    "drawing",
     "fill",
     "fill_view",
-    "given_text",
     "given_values",
     "iterate",
     "setup_figure",
+    "sheet",
     "sign_convention",
-    "slot_texts",
-    "statement_only",
-    "statement_view",
+    "variant_html",
     "write_variants",
+    "written_value",
 ]

@@ -5,29 +5,25 @@ from __future__ import annotations
 
 import math
 import random
-from typing import TYPE_CHECKING
 
 from derive.errors import InputError
 from derive.homework.variants.compile import Compiled
 from derive.homework.variants.record import Variant
 from derive.problem import ChainProblem, Problem
 
-if TYPE_CHECKING:
-    from derive.homework.variants.chain import ChainCompiled
-
 MAX_ATTEMPTS_PER_VARIANT = 200
 #: The most variants one run draws (each is a page or two on disk).
 MAX_COUNT = 10_000
 #: Draws between looks at the rate of success: where it cannot reach the count, stop.
 GIVE_UP_AFTER = 2_000
-#: The same for a chain, whose every draw is a solve of the chain (tenths of a second).
+#: The same where every draw is tested by a solve (a chain: tenths of a second each).
 CHAIN_GIVE_UP_AFTER = 50
 
 
-def draw(compiled: Compiled | ChainCompiled, count: int, seed: int) -> list[Variant]:
+def draw(compiled: Compiled, count: int, seed: int) -> list[Variant]:
     """``count`` distinct physical variants, the same for the same seed and file anywhere."""
     p = compiled.problem
-    look = CHAIN_GIVE_UP_AFTER if compiled.is_chain else GIVE_UP_AFTER
+    look = GIVE_UP_AFTER if compiled.check is not None else CHAIN_GIVE_UP_AFTER
     rng = random.Random(seed)
     pools = [p.vary[n] for n in compiled.names]
     seen: set[tuple[int, ...]] = set()
@@ -70,7 +66,7 @@ def _what_is_met(problem: Problem | ChainProblem) -> str:
     return "are physical (bodies that approach, 0 <= e <= 1, positive masses)"
 
 
-def _last_refusal(compiled: Compiled | ChainCompiled) -> str:
+def _last_refusal(compiled: Compiled) -> str:
     """Why the last refused draw of a chain was refused (a chain says why it does not solve)."""
     reason = getattr(compiled, "refusal", "")
     return f"; the last refused: {reason}" if reason else ""

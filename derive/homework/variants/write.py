@@ -1,19 +1,18 @@
-"""Writing variants: each variant's files and the answer key, into a folder written whole."""
+"""Writing variants: each variant's files and the answer key, into a folder written whole.
+
+Each variant is its own problem solved and written (:mod:`.fill`); with more than a few,
+they are made on every core (forked processes, in the order drawn) and written here.
+"""
 
 from __future__ import annotations
 
-from derive.homework.variants.chain import ChainCompiled, chain_html
+import os
+from collections.abc import Iterator
+
+from derive.errors import DeriveError
 from derive.homework.variants.compile import Compiled, compile_problem
 from derive.homework.variants.draw import draw
-from derive.homework.variants.fill import (
-    answers,
-    fill,
-    fill_view,
-    given_values,
-    setup_figure,
-    sign_convention,
-    statement_only,
-)
+from derive.homework.variants.fill import answers, fill, given_values, sheet, variant_html
 from derive.homework.variants.record import Variant
 from derive.problem import ChainProblem, Problem
 
@@ -54,24 +53,70 @@ def write_variants(
     the one-line errors of the variants that could not be written (a PDF that did not
     compile); the others are written all the same.
     """
-    from derive.errors import DeriveError
     from derive.fileio import folder_atomic
 
-    compiled = compile_problem(problem, digits, fmt)
+    compiled = compile_problem(problem)
     chosen = draw(compiled, count, seed)
     width = max(2, len(str(count)))
     failures: list[str] = []
     with folder_atomic(out_dir, owned=OWNED) as folder, _Key(folder, problem, seed, count, compiled.names) as key:
-        for v in chosen:
-            stem = f"variant-{v.number:0{width}d}"
-            row = {"variant": v.number, "givens": given_values(compiled, v), "results": answers(compiled, v, digits)}
+        for v, row, files, error in made(compiled, chosen, fmt, digits, width):
             key.add(v.number, row)
-            try:
-                _write_one(compiled, v, folder, stem, fmt, digits, row)
-            except DeriveError as exc:
-                failures.append(f"{stem}: {exc}")
+            for name, data in files:
+                path = folder / name
+                if isinstance(data, bytes):
+                    path.write_bytes(data)
+                else:
+                    path.write_text(data, encoding="utf-8")
+            if error:
+                failures.append(error)
             _progress(v.number, len(chosen))
     return failures
+
+
+#: Variants below which one process makes them all (a pool costs more than it saves).
+POOL_FROM = 8
+
+_JOB: tuple = ()  # what each forked worker makes its variants of (set before the pool forks)
+
+
+def made(
+    compiled: Compiled, chosen: list[Variant], fmt: str, digits: int | None, width: int
+) -> Iterator[tuple[Variant, dict, list[tuple[str, str | bytes]], str]]:
+    """Each variant (in the order drawn) with its key row, its files and the error that kept
+    them from being written (or ""): on every core where there are many and ``fork`` is there."""
+    global _JOB
+    import multiprocessing
+
+    workers = min(os.cpu_count() or 1, max(1, len(chosen) // POOL_FROM))
+    if workers < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        for v in chosen:
+            yield _one(compiled, v, fmt, digits, width)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    _JOB = (compiled, fmt, digits, width)
+    try:
+        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork")) as pool:
+            yield from pool.map(_job, chosen, chunksize=4)
+    finally:
+        _JOB = ()
+
+
+def _job(v: Variant) -> tuple[Variant, dict, list[tuple[str, str | bytes]], str]:
+    return _one(*_JOB[:1], v, *_JOB[1:])
+
+
+def _one(
+    compiled: Compiled, v: Variant, fmt: str, digits: int | None, width: int
+) -> tuple[Variant, dict, list[tuple[str, str | bytes]], str]:
+    stem = f"variant-{v.number:0{width}d}"
+    row: dict = {"variant": v.number, "givens": given_values(compiled, v), "results": {}}
+    try:
+        row["results"] = answers(compiled, v, digits)
+        return v, row, _files(compiled, v, stem, fmt, digits, row), ""
+    except DeriveError as exc:
+        return v, row, [], f"{stem}: {exc}"
 
 
 class _Key:
@@ -119,54 +164,20 @@ class _Key:
         self.json_fh.close()
 
 
-def _write_one(
-    compiled: Compiled | ChainCompiled, v: Variant, folder, stem: str, fmt: str, digits: int | None, row: dict
-) -> None:
-    """One variant's files: statement and worked solution (md, html), LaTeX, PDF or JSON."""
+def _files(
+    compiled: Compiled, v: Variant, stem: str, fmt: str, digits: int | None, row: dict
+) -> list[tuple[str, str | bytes]]:
+    """One variant's files: statement and worked solution (md, tex, html, pdf), or its key row (json)."""
     from derive.fileio import dumps_json
 
     if fmt == "json":
-        (folder / f"{stem}.json").write_text(dumps_json(row), encoding="utf-8")
-    elif fmt == "html":
-        sheet, page = variant_html(compiled, v, stem, digits)
-        (folder / f"{stem}-problem.html").write_text(sheet, encoding="utf-8")
-        (folder / f"{stem}.html").write_text(page, encoding="utf-8")
-    elif fmt == "md":
-        page = fill(compiled, v, "md", digits)
-        sheet = statement_only(page, setup_figure(compiled, v, "md"), sign_convention(compiled, "md"))
-        (folder / f"{stem}-problem.md").write_text(sheet, encoding="utf-8")
-        (folder / f"{stem}.md").write_text(page, encoding="utf-8")
-    else:
-        tex = fill(compiled, v, "tex", digits)
-        if fmt == "tex":
-            sheet = statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex"))
-            (folder / f"{stem}-problem.tex").write_text(sheet, encoding="utf-8")
-            (folder / f"{stem}.tex").write_text(tex, encoding="utf-8")
-        else:
-            from derive.writers.pdf import build_pdf
+        return [(f"{stem}.json", dumps_json(row))]
+    if fmt == "html":
+        student, page = variant_html(compiled, v, stem, digits)
+        return [(f"{stem}-problem.html", student), (f"{stem}.html", page)]
+    student, page = sheet(compiled, v, fmt, digits), fill(compiled, v, fmt, digits)
+    if fmt in ("md", "tex"):
+        return [(f"{stem}-problem.{fmt}", student), (f"{stem}.{fmt}", page)]
+    from derive.writers.pdf import build_pdf
 
-            (folder / f"{stem}-problem.pdf").write_bytes(
-                build_pdf(statement_only(tex, setup_figure(compiled, v, "tex"), sign_convention(compiled, "tex")))
-            )
-            (folder / f"{stem}.pdf").write_bytes(build_pdf(tex))
-
-
-def variant_html(
-    compiled: Compiled | ChainCompiled, v: Variant, stem: str, digits: int | None = None
-) -> tuple[str, str]:
-    """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
-    the impact, the sign convention in words; no Source line, no answers) and the worked solution."""
-    import copy
-
-    if compiled.is_chain:
-        return chain_html(compiled, v, stem, digits)
-
-    from derive.writers.view import student_sheet
-    from derive.writers.view.html import html_pages as typeset
-
-    page = fill_view(compiled, v, digits)
-    student = student_sheet(copy.deepcopy(page))
-    student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
-    sheet = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
-    student_page, worked = typeset([("handout", {**sheet, "numbered": False}), ("solution", page)])
-    return student_page, worked
+    return [(f"{stem}-problem.pdf", build_pdf(student)), (f"{stem}.pdf", build_pdf(page))]

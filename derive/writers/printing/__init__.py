@@ -19,8 +19,6 @@ from derive.writers.printing.expressions import (
     values_map,
 )
 from derive.writers.printing.numerals import (
-    SIDE_BEGIN,
-    SIDE_END,
     adds_up,
     exact_latex,
     number_latex,
@@ -29,16 +27,12 @@ from derive.writers.printing.numerals import (
 )
 from derive.writers.printing.printer import StepPrinter, is_negative_term, join_terms, negate, substitute
 from derive.writers.printing.rows import IMPLIES, Row, block_style, latex_eqn, latex_rows
-from derive.writers.printing.style import Slot, SlotBook, Style
+from derive.writers.printing.style import Style
 from derive.writers.printing.units import unit_latex
 
 __all__ = [
     "IMPLIES",
-    "SIDE_BEGIN",
-    "SIDE_END",
     "Row",
-    "Slot",
-    "SlotBook",
     "StepPrinter",
     "Style",
     "adds_up",

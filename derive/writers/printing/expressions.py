@@ -76,9 +76,6 @@ def _values_printer(expr: sympy.Expr, style: Style, extra: int, cancel: frozense
         style.digits,
         extra,
         decimal_rationals=True,
-        slots=style.slots,
-        varied=style.varied,
-        slot_kind="given",
         labels=style.labels,
     )
 
@@ -125,9 +122,6 @@ def _numeric_printer(style: Style, extra: int, cancel: frozenset[sympy.Symbol]) 
         extra=extra,
         decimals=style.decimals,
         decimal_rationals=True,
-        slots=style.slots,
-        varied=style.varied,
-        block=style.block,
         labels=style.labels,
     )
 
@@ -142,9 +136,6 @@ def _result(expr: sympy.Expr, style: Style, cancel: frozenset[sympy.Symbol]) -> 
         digits=style.digits,
         extra=0,
         round_integers=True,
-        slots=style.slots,
-        varied=style.varied,
-        slot_kind="result",
         labels=style.labels,
     )
     return printer, floatify(expr, keep_integers=False)
@@ -181,9 +172,7 @@ def _one_sum(expr: sympy.Expr) -> sympy.Expr:
 
 def _letters(expr: sympy.Expr, style: Style) -> bool:
     """True when ``expr`` keeps a given that the problem keeps as a letter (u, m, e) once
-    its numbers are in; unknowns alone (v_A2) do not count, nor a variant's open numbers."""
-    if style.slots is not None:
-        return False
+    its numbers are in; unknowns alone (v_A2) do not count."""
     return bool(substitute(expr, style.values).free_symbols & style.letters)
 
 
@@ -203,7 +192,7 @@ def latex_terms(
     printer, ready = _prepared(expr, mode, style, extra, cancel)
     if isinstance(ready, sympy.UnevaluatedExpr):
         ready = ready.args[0]
-    if isinstance(ready, sympy.Add) and style.slots is None:
+    if isinstance(ready, sympy.Add):
         return printer.add_terms(ready)
     return [("+", printer.doprint(ready))]
 
@@ -220,11 +209,6 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
                 term = floatify(term, keep_integers=side.mode == "numeric")
                 if term == 0:
                     term = sympy.Integer(0)
-            if style.slots is not None and term.free_symbols & style.varied:
-                token = _slot_term(term, side.mode, style, extra, cancel, first=i == 0)
-                if token is not None:
-                    out.append(("", token))
-                    continue
         neg = is_negative_term(term)
         body = negate(term) if neg else term
         if side.mode in ("numeric", "result") and _letters(term, style):
@@ -251,45 +235,6 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
 def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
     """A side of an equation: its terms joined with their signs, in order."""
     return join_terms(side_terms(side, style, extra, cancel))
-
-
-def _slot_term(
-    term: sympy.Expr, mode: str, style: Style, extra: int, cancel: frozenset[sympy.Symbol], first: bool
-) -> str | None:
-    """A term whose number (or coefficient) depends on varied givens: its sign is
-    known only per variant, so the slot prints the sign too."""
-    assert style.slots is not None
-    if isinstance(term, sympy.UnevaluatedExpr):
-        return None  # a display structure: its parts are left open, not the whole
-    others = term.free_symbols - style.varied
-    if isinstance(term, sympy.Mul) and any(
-        isinstance(a, sympy.Add) and a.free_symbols - style.varied for a in term.args
-    ):
-        return None  # a product with a sum in it: the printer leaves open the parts inside
-    digits, ext = style.digits, (0 if mode == "result" else extra)
-    kind = "result" if mode == "result" else "number"
-    if not others:
-        return style.slots.token(term, ("lead" if first else "signed") + ":" + kind, digits, ext, style.block)
-    coeff, rest = term.as_independent(*others, as_Add=False)
-    if not (coeff.free_symbols & style.varied):
-        return None
-    printer = StepPrinter(cancel=cancel, digits=digits, extra=ext, decimal_rationals=True, labels=style.labels)
-    unit_vector = all(str(x).startswith("vec:e_") for x in rest.free_symbols)  # 0.158 ê_n: a component, one number
-    if (
-        first
-        and not unit_vector
-        and isinstance(coeff, sympy.Add)
-        and all(a.free_symbols <= style.varied for a in coeff.args)
-    ):
-        # a sum of coefficients stays a sum, v_A2n (12 + 6) as the notes write v_A2n (20 + 5):
-        # one number there would read v_A2n = 2.25 + 0, a velocity without its unit, where it is 1
-        parts = [
-            style.slots.token(a, ("lead" if i == 0 else "signed") + ":" + kind, digits, ext, style.block)
-            for i, a in enumerate(coeff.args)
-        ]
-        return printer.doprint(rest) + r" \left(" + "".join(parts) + r"\right)"
-    token = style.slots.token(coeff, ("leadcoef" if first else "signedcoef") + ":" + kind, digits, ext, style.block)
-    return token + " " + printer.doprint(rest)
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:

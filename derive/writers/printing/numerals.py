@@ -52,8 +52,6 @@ def written_figures(x: Decimal) -> int:
     return len(x.normalize().as_tuple().digits) if x else 1
 
 
-SIDE_BEGIN, SIDE_END = "%%derive-side%", "%%derive-side-end%"
-
 _NUMBER = re.compile(r"(?:\\left\()?(-?\d+(?:\.\d+)?)(?: \\times 10\^\{(-?\d+)\})?(?:\\right\))?")
 
 

@@ -18,7 +18,6 @@ from derive.numbers import (
 )
 from derive.symbols import latex_name, relabel, vector_latex
 from derive.writers.printing.numerals import number_latex, power_latex, written_figures
-from derive.writers.printing.style import SlotBook
 
 
 def substitute(expr: sympy.Expr, values: Mapping[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
@@ -102,10 +101,6 @@ class StepPrinter(LatexPrinter):
         round_integers: bool = False,
         decimals: int | None = None,
         decimal_rationals: bool = False,
-        slots: SlotBook | None = None,
-        varied: frozenset[sympy.Symbol] = frozenset(),
-        slot_kind: str = "number",
-        block: int | None = None,
         trim_floats: bool = False,
         fractions: bool = False,
         labels: tuple[str, str] = ("A", "B"),
@@ -114,10 +109,6 @@ class StepPrinter(LatexPrinter):
         self._labels = labels
         self._trim_floats = trim_floats
         self._fractions = fractions
-        self._slots = slots
-        self._varied = varied
-        self._slot_kind = slot_kind
-        self._block = block
         self._values = dict(values or {})
         self._cancel = cancel
         self._digits = digits
@@ -127,14 +118,9 @@ class StepPrinter(LatexPrinter):
         self._decimal_rationals = decimal_rationals
 
     def _print(self, expr, **kwargs) -> str:
-        """A part that depends only on varied givens becomes an open number (a slot)."""
-        if isinstance(expr, sympy.UnevaluatedExpr):  # a display structure: its own node printed, its parts open
+        """A display structure (``UnevaluatedExpr``) prints its own node, its parts as they are."""
+        if isinstance(expr, sympy.UnevaluatedExpr):
             return super()._print(expr.args[0], **kwargs)
-        if self._slots is not None and isinstance(expr, sympy.Expr) and not expr.is_Number:
-            free = expr.free_symbols
-            if free and free <= self._varied and (self._slot_kind != "given" or isinstance(expr, sympy.Symbol)):
-                kind = self._slot_kind
-                return self._slots.token(expr, kind, self._digits, self._extra, self._block)
         return super()._print(expr, **kwargs)
 
     def _print_atan(self, expr: sympy.Function, exp: object = None) -> str:
@@ -216,17 +202,6 @@ class StepPrinter(LatexPrinter):
             if positive:  # 1 - 2 e, not -2 e + 1
                 terms = tuple(positive) + tuple(t for t in terms if is_negative_term(t))
         for i, term in enumerate(terms):
-            if (
-                self._slots is not None
-                and self._slot_kind != "given"
-                and term.free_symbols
-                and term.free_symbols <= self._varied
-            ):
-                role = "lead" if i == 0 else "signed"
-                out.append(
-                    ("", self._slots.token(term, f"{role}:{self._slot_kind}", self._digits, self._extra, self._block))
-                )
-                continue
             if is_negative_term(term):
                 s = self._print(negate(term))
                 s = self._paren_if_sum(negate(term), s)
@@ -267,7 +242,7 @@ class StepPrinter(LatexPrinter):
         num, den = [], []
 
         def first(a: sympy.Expr) -> bool:  # numbers before letters (not a sum: v (20 + 5))
-            return self._open(a) or self._numberish(a) or (a.is_number and not isinstance(a, sympy.Add))
+            return self._numberish(a) or (a.is_number and not isinstance(a, sympy.Add))
 
         for a in sorted(args, key=lambda a: 0 if first(a) else _factor_key(a)):
             if isinstance(a, sympy.Rational) and not a.is_Integer and not (decimal and self._as_decimal(a)):
@@ -285,19 +260,7 @@ class StepPrinter(LatexPrinter):
             return r"\frac{" + top + "}{" + bottom + "}"
         return self._join(num)
 
-    def _open(self, a: sympy.Expr) -> bool:
-        """True for a part that becomes an open number (a homework variant's slot)."""
-        return (
-            self._slots is not None
-            and self._slot_kind != "given"
-            and isinstance(a, sympy.Expr)
-            and bool(a.free_symbols)
-            and a.free_symbols <= self._varied
-        )
-
     def _numberish(self, a: sympy.Expr) -> bool:
-        if self._slots is not None and isinstance(a, sympy.Expr) and a.free_symbols and a.free_symbols <= self._varied:
-            return True
         return a.is_Number or a in self._values or (isinstance(a, sympy.Pow) and a.base in self._values)
 
     def _join(self, factors: list[sympy.Expr], bare: bool = False) -> str:
@@ -307,7 +270,7 @@ class StepPrinter(LatexPrinter):
         prev = None
         for a in factors:
             s = self._print(a)
-            wrap = isinstance(a, sympy.Add) and not self._open(a)
+            wrap = isinstance(a, sympy.Add)
             wrap = wrap or (prev is not None and s.startswith("-"))
             wrap = wrap or (len(factors) > 1 and r"\times 10^" in s)  # (2 × 10^6)(1.67 × 10^-27)
             if wrap:

@@ -12,39 +12,34 @@ from derive.numbers import (
 )
 from derive.steps.model import Block, Eqn
 from derive.writers.printing.expressions import side_terms
-from derive.writers.printing.numerals import SIDE_BEGIN, SIDE_END, adds_up
+from derive.writers.printing.numerals import adds_up
 from derive.writers.printing.printer import join_terms
 from derive.writers.printing.style import Style
 from derive.writers.printing.units import line_unit, struck, unit_latex
 from derive.writers.width import width_pt
 
 
-def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[tuple[list[tuple[str, str]], bool]]:
-    """Each side's printed terms, and whether a variant's page decides to keep it; a side
-    printed the same as the one before it is shown once (v_2 = -u, not v_2 = -u = -u). An
-    optional side whose terms do not add up to the total after it is left out."""
+def _printed_sides(eqn: Eqn, style: Style, extra: int) -> list[list[tuple[str, str]]]:
+    """Each side's printed terms; a side printed the same as the one before it is shown once
+    (v_2 = -u, not v_2 = -u = -u). An optional side whose terms do not add up to the total
+    after it is left out."""
     texts = [side_terms(side, style, extra, struck(eqn, style)) for side in eqn.sides]
-    printed: list[tuple[list[tuple[str, str]], bool]] = []
+    printed: list[list[tuple[str, str]]] = []
     for side, terms in zip(eqn.sides, texts, strict=True):
-        open_ = side.optional and style.slots is not None
-        if side.optional and not open_ and not adds_up(join_terms(terms), join_terms(texts[-1])):
+        if side.optional and not adds_up(join_terms(terms), join_terms(texts[-1])):
             continue
-        if not printed or join_terms(terms) != join_terms(printed[-1][0]):
-            printed.append((terms, open_))
+        if not printed or join_terms(terms) != join_terms(printed[-1]):
+            printed.append(terms)
     return printed
 
 
 def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
     printed = _printed_sides(eqn, style, extra)
-    texts = [join_terms(terms) for terms, _ in printed]
+    texts = [join_terms(terms) for terms in printed]
     if line_unit(eqn, style)[1]:
         texts[-1] = r"\left(" + texts[-1] + r"\right)"
-    body = ""
-    for i, (text, (_, open_)) in enumerate(zip(texts, printed, strict=True)):
-        piece = (" = " if i else "") + text
-        body += SIDE_BEGIN + piece + SIDE_END if open_ else piece
-    body += unit_latex(eqn, style)
+    body = " = ".join(texts) + unit_latex(eqn, style)
     if eqn.boxed:
         body = r"\boxed{" + body + "}"
     if eqn.implies:
@@ -81,7 +76,7 @@ def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: fl
     One side per row after the first (``T_2 = a``, ``= b``, ``= c``); a side still too
     wide is broken before one of its own terms' signs, never inside a term.
     """
-    sides = [terms for terms, _ in _printed_sides(eqn, style, extra)]
+    sides = _printed_sides(eqn, style, extra)
     if len(sides) < 2:
         return ()
     unit = unit_latex(eqn, style)
@@ -121,17 +116,6 @@ def block_style(block: Block, style: Style) -> Style:
         style = replace(style, extra=0)
     if not block.sums:
         return style
-    if style.slots is not None and any(
-        (t.xreplace(dict(style.values)).free_symbols & style.varied)
-        for terms, total in block.sums
-        for t in (*terms, total)
-    ):
-        block_id = len(style.slots.claims)
-        style.slots.claims[block_id] = [
-            (tuple(t.xreplace(dict(style.values)) for t in terms), total.xreplace(dict(style.values)))
-            for terms, total in block.sums
-        ]
-        return replace(style, block=block_id)
     sums = [
         ([to_decimal(floatify(t, False)) for t in terms], to_decimal(floatify(total, False)))
         for terms, total in block.sums

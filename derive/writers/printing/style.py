@@ -1,5 +1,4 @@
-"""What a solution's numbers print as: the :class:`Style` of a page, and the open numbers
-(slots) of a solution compiled for many variants."""
+"""What a solution's numbers print as: the :class:`Style` of a page."""
 
 from __future__ import annotations
 
@@ -7,31 +6,6 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 
 import sympy
-
-
-@dataclass(frozen=True)
-class Slot:
-    """A number left open when a solution is compiled for many variants: ``expr`` in
-    the varied givens, printed as ``kind`` says at ``digits``(+``extra``) figures or
-    with its block's places after the point."""
-
-    expr: sympy.Expr
-    kind: str  # given | number | result | lead | signed | leadcoef | signedcoef
-    digits: int | None
-    extra: int
-    block: int | None
-
-
-class SlotBook:
-    """Collects the open numbers of a compiled solution; each prints as a token."""
-
-    def __init__(self) -> None:
-        self.slots: list[Slot] = []
-        self.claims: dict[int, list[tuple[tuple[sympy.Expr, ...], sympy.Expr]]] = {}
-
-    def token(self, expr: sympy.Expr, kind: str, digits: int | None, extra: int, block: int | None) -> str:
-        self.slots.append(Slot(expr, kind, digits, extra, block))
-        return f"DRVSLOT{len(self.slots) - 1}X"
 
 
 @dataclass(frozen=True)
@@ -47,9 +21,6 @@ class Style:
     values: Mapping[sympy.Symbol, sympy.Expr] = field(default_factory=dict)
     angles: frozenset[sympy.Symbol] = frozenset()
     decimals: int | None = None
-    varied: frozenset[sympy.Symbol] = frozenset()
-    slots: SlotBook | None = field(default=None, compare=False)
-    block: int | None = None
     hide_optional: bool = False
     strike: bool = True
     decimal: frozenset[sympy.Symbol] = frozenset()

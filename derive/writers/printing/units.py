@@ -22,12 +22,10 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
     if not eqn.unit or eqn.unit in ("%", "deg") or last.mode == "symbolic" or len(last.terms) != 1:
         return None
     term = last.terms[0].xreplace(dict(style.values))
-    letters = term.free_symbols - _UNITLESS - style.varied
+    letters = term.free_symbols - _UNITLESS
     if not letters or not letters <= style.letters | set(style.letter_units):
         return None
     dims = {s: parse_unit(style.letter_units[s]).dim if s in style.letter_units else (0, 0, 0, 0) for s in letters}
-    if term.free_symbols & style.varied:  # a variant's open numbers: numbers (square roots of primes: none cancel)
-        term = term.xreplace({s: sympy.sqrt(sympy.prime(i + 2)) for i, s in enumerate(sorted(style.varied, key=str))})
     have = _dimension(term, dims)
     if have is None or have == parse_unit(eqn.unit).dim:
         return None
@@ -73,7 +71,7 @@ def line_unit(eqn: Eqn, style: Style) -> tuple[str | None, bool]:
     brackets before it ((3.5 + 3.5 e) m/s)."""
     last = eqn.sides[-1]
     symbolic = last.mode == "symbolic" or any(
-        t.xreplace(dict(style.values)).free_symbols - _UNITLESS - style.varied for t in last.terms
+        t.xreplace(dict(style.values)).free_symbols - _UNITLESS for t in last.terms
     )
     if not symbolic:
         return eqn.unit, False

@@ -8,6 +8,8 @@ A renderer never does physics.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 from derive.errors import InputError
@@ -18,14 +20,12 @@ from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT
 from derive.writers.view.chain import chain_as_problem, chain_convention, chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import chain_json, to_json
-from derive.writers.view.lines import ANSWER_MARK, OPTIONAL_BEGIN, OPTIONAL_END, blocks_view, line_view
+from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
 from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet, view
 
 __all__ = [
     "ANSWER_MARK",
     "FORMATS",
-    "OPTIONAL_BEGIN",
-    "OPTIONAL_END",
     "blocks_view",
     "boxed_lines",
     "chain_as_problem",
@@ -39,8 +39,10 @@ __all__ = [
     "line_view",
     "markdown",
     "plain_answers",
+    "problem_view",
     "render",
     "source_parts",
+    "student_page",
     "student_sheet",
     "to_json",
     "view",
@@ -48,6 +50,90 @@ __all__ = [
 ]
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
+
+
+@dataclass(frozen=True)
+class PageKind:
+    """How one kind of solution is laid out: its page's data (``view(solution, digits, figures,
+    layout, plot, standalone)``), its templates and its HTML and JSON writers."""
+
+    view: Callable[..., dict[str, Any]]
+    md: str
+    tex: str
+    fragment: str
+    html: str
+    json: Callable[[Solution, int | None], str]
+
+
+IMPACT = PageKind(
+    lambda s, digits, figures, layout, plot, standalone: view(s, digits, figures, layout=layout, plot=plot),
+    "solution.md.j2",
+    "solution.tex.j2",
+    "fragment.tex.j2",
+    "solution",
+    to_json,
+)
+CHAIN = PageKind(
+    lambda s, digits, figures, layout, plot, standalone: chain_view(s, digits, figures, standalone, layout),
+    "chain.md.j2",
+    "chain.tex.j2",
+    "chain.tex.j2",
+    "chain",
+    chain_json,
+)
+
+
+def problem_view(
+    solution: Solution, digits: int | None = None, figures: bool = True, *, layout: Layout = GITHUB, plot: bool = False
+) -> dict[str, Any]:
+    """``solution``'s page data in one problem's shape, a chain's as :func:`chain_as_problem`
+    gives it (a handout's problem, a variant's sheet): ``plot`` for one impact only."""
+    if page_kind(solution) is CHAIN:
+        return chain_as_problem(solution, digits, figures=figures, layout=layout)
+    return view(solution, digits, figures, layout=layout, plot=plot)
+
+
+def page_kind(solution: Solution) -> PageKind:
+    """The layout of ``solution``'s kind: one impact, or a chain of stages."""
+    return CHAIN if solution.is_chain else IMPACT
+
+
+def _md(solution: Solution, kind: PageKind, o: dict[str, Any]) -> str:
+    page, _ = markdown(
+        solution,
+        markdown_target(o["target"]),
+        digits=o["digits"],
+        figures=o["figures"],
+        heading_level=o["heading_level"],
+        show_title=o["title"],
+        plot=o["plot"],
+    )
+    return page
+
+
+def _tex(solution: Solution, kind: PageKind, o: dict[str, Any], fragment: bool = False) -> str:
+    layout = TEX_FRAGMENT if fragment else TEX_DOCUMENT
+    data = kind.view(solution, o["digits"], o["figures"], layout, o["plot"], not fragment)
+    tex_vars = {**_headings(o["heading_level"], o["title"]), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+    template = kind.fragment if fragment else kind.tex
+    return environment("tex").get_template(template).render(**data, **tex_vars)
+
+
+def _html(solution: Solution, kind: PageKind, o: dict[str, Any]) -> str:
+    from derive.writers.view.html import html_pages
+
+    (page,) = html_pages([(kind.html, kind.view(solution, o["digits"], o["figures"], HTML, o["plot"], True))])
+    return page
+
+
+#: The writer of each format, by name.
+WRITERS: dict[str, Callable[[Solution, PageKind, dict[str, Any]], str]] = {
+    "md": _md,
+    "tex": _tex,
+    "tex-fragment": lambda solution, kind, o: _tex(solution, kind, o, fragment=True),
+    "html": _html,
+    "json": lambda solution, kind, o: kind.json(solution, o["digits"]),
+}
 
 
 def render(
@@ -74,44 +160,36 @@ def render(
     """
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
-    tex_vars = {**_headings(heading_level, title), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
-    if solution.is_chain and plot:
+    _headings(heading_level, title)
+    kind = page_kind(solution)
+    if kind is CHAIN and plot:
         raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
-    if fmt == "md":
-        page, _ = markdown(
-            solution,
-            markdown_target(target),
-            digits=digits,
-            figures=figures,
-            heading_level=heading_level,
-            show_title=title,
-            plot=plot,
-        )
-        return page
-    if solution.is_chain:
-        if fmt == "json":
-            return chain_json(solution, digits)
-        if fmt in ("tex", "tex-fragment"):
-            layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
-            data = chain_view(solution, digits, figures, standalone=fmt == "tex", layout=layout)
-            return environment("tex").get_template("chain.tex.j2").render(**data, **tex_vars)
-        if fmt == "html":
-            from derive.writers.view.html import chain_html_page
-
-            return chain_html_page(chain_view(solution, digits, figures, layout=HTML))
-        raise InputError(f"a chain is written as md, tex, pdf, html or json, not {fmt}", field="--format")
-    if fmt == "json":
-        return to_json(solution, digits)
-    if fmt not in FORMATS:
+    writer = WRITERS.get(fmt)
+    if writer is None:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    if fmt == "html":
-        from derive.writers.view.html import html_page
+    options = {"digits": digits, "figures": figures, "target": target, "plot": plot}
+    return writer(solution, kind, {**options, "heading_level": heading_level, "title": title})
 
-        return html_page(view(solution, digits, figures, plot=plot, layout=HTML))
-    layout = TEX_DOCUMENT if fmt == "tex" else TEX_FRAGMENT
-    data = view(solution, digits, figures, layout=layout, plot=plot)
-    template = "solution.tex.j2" if fmt == "tex" else "fragment.tex.j2"
-    return environment("tex").get_template(template).render(**data, **tex_vars)
+
+def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = None, title: str | None = None) -> str:
+    """A student's sheet of ``solution`` in ``fmt`` ('md', or 'tex': a document): the title
+    (``title`` in its place), Given and Find, the set-up before the impact (a chain's first)
+    and the sign convention in words; no Source line, no working (a homework variant's sheet)."""
+    from derive.writers import figure
+
+    layout = TEX_DOCUMENT if fmt == "tex" else GITHUB
+    sheet = student_sheet(problem_view(solution, digits, figures=False, layout=layout))
+    impacts = [st.part for st in solution.stages if st.part is not None] or [solution]
+    sheet.update(part="problems", setup_svg="", setup_tikz="")
+    if impacts and any(st.figure == "before" for st in impacts[0].stages):
+        drawn = figure.describe(solution, after=False)
+        sheet.update(setup_svg=figure.to_svg(drawn), setup_tikz=figure.to_tikz(drawn))
+    if title is not None:
+        sheet["title"] = title
+    if fmt == "tex":
+        tex_vars = {**_headings(1, True), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
+        return environment("tex").get_template("solution.tex.j2").render(**sheet, **tex_vars)
+    return environment("md").get_template("solution.md.j2").render(**sheet).rstrip("\n") + "\n"
 
 
 def environment(kind: str) -> Any:
@@ -140,15 +218,12 @@ def markdown(
 ) -> tuple[str, dict[str, str]]:
     """The Markdown for ``layout``, and the figure files it names (``figure-1.svg``: SVG
     text) when the layout writes figures as files for the caller to put beside it."""
-    data = (
-        chain_view(solution, digits, figures, layout=layout)
-        if solution.is_chain
-        else view(solution, digits, figures, layout=layout, plot=plot)
-    )
+    kind = page_kind(solution)
+    data = kind.view(solution, digits, figures, layout, plot, True)
     files = _figure_images(data, layout)
     page = (
         environment("md")
-        .get_template("chain.md.j2" if solution.is_chain else "solution.md.j2")
+        .get_template(kind.md)
         .render(
             **data,
             heading_level=heading_level,

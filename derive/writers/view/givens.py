@@ -76,35 +76,11 @@ def letter_units(p: Problem | ChainProblem) -> dict[sympy.Symbol, str]:
 UNKNOWN_NOTE = "unknown: derive finds it"
 
 
-def given_latex(g: Given, style: Style, opened: Mapping[sympy.Symbol, sympy.Expr] | None = None) -> tuple[str, str]:
-    """A given as LaTeX, and a note in words (symbolic, converted, defined). ``opened``: the
-    definitions of the givens whose numbers a variant leaves open (v_B1t = u_B sin(alpha)),
-    for a given defined from one of them (v_B2n = v_B1t tan(alpha))."""
+def given_latex(g: Given, style: Style) -> tuple[str, str]:
+    """A given as LaTeX, and a note in words (symbolic, converted, defined)."""
     name = latex_name(relabel(g.name, style.labels))
     if g.unknown:
         return name + r" = \,?", UNKNOWN_NOTE
-    if style.slots is not None and g.symbol in style.varied:  # a homework variant's number
-        token = style.slots.token(g.symbol, "given", style.digits, 1, None)
-        tail = "" if g.unit == "deg" else (r"\ " + latex_unit(g.unit) if g.unit else "")  # a variant fills in 50^\circ
-        return f"{name} = {token}{tail}", ""
-    if (
-        style.slots is not None
-        and g.value is None
-        and g.definition is not None
-        and g.definition.free_symbols & style.varied
-    ):  # defined from a varied given (m_A = W_A/g)
-        expr = g.definition
-        for _ in range(
-            len(opened or ())
-        ):  # in the varied givens themselves: v_B1t tan(alpha) = u_B sin(alpha) tan(alpha)
-            if not expr.free_symbols & set(opened or ()):
-                break
-            expr = expr.xreplace(opened or {})
-        shown = [g.definition] if expr == g.definition else [g.definition, expr]
-        parts = [name, *(StepPrinter().doprint(x) for x in shown), latex_expr(expr, "values", style, 1)]
-        value = latex_expr(expr, "numeric", style, 1)
-        unit = r"\ " + latex_unit(g.unit) if g.unit and g.unit != "deg" else ""
-        return " = ".join([*parts, value]) + unit, ""
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
@@ -146,10 +122,8 @@ def _found(name: str, found: Mapping[str, sympy.Expr], style: Style) -> str:
     as found, 0.8; a variant's at the page's figures, 0.361), without a unit; the placeholder
     as typed where there is no such number."""
     value = found.get(name)
-    if value is None or (not getattr(value, "is_number", True) and style.slots is None):
+    if value is None or not getattr(value, "is_number", True):
         return "{=" + name + "}"
-    if style.slots is not None and not value.is_number:
-        return style.slots.token(value, "result", style.digits, 0, None)
     return exact_latex(value, style.digits, 0)
 
 
@@ -202,9 +176,6 @@ def statement(
             return "text", _found(name[1:], found or {}, style)
         bare = name.strip("|")
         g = by_name.get(bare)
-        if g is not None and style.slots is not None and g.symbol in style.varied:  # a variant's number
-            token = style.slots.token(g.symbol, "text:abs" if bare != name else "text", style.digits, 1, None)
-            return "text", token + statement_unit(g)
         if name.startswith("@") or (g is not None and g.value is None and bare == name):
             return "math", latex_name(name.removeprefix("@"))
         if g is None or g.value is None:

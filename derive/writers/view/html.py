@@ -23,16 +23,6 @@ def _aligned(line: dict[str, Any]) -> str:
     return line["before"] + r"\begin{aligned}" + r" \\ ".join(body) + r"\end{aligned}" + line["after"]
 
 
-def html_page(data: dict[str, Any]) -> str:
-    """The HTML page: every formula typeset by KaTeX (under Node.js when there is one)."""
-    return html_pages([("solution", data)])[0]
-
-
-def chain_html_page(data: dict[str, Any]) -> str:
-    """A chain's HTML page: every formula typeset by KaTeX, as :func:`html_page` does for one impact."""
-    return html_pages([("chain", data)])[0]
-
-
 def handout_html(data: dict[str, Any]) -> str:
     """A handout (``title``, ``mode``, ``problems``, ``theory``; ``numbered`` False: no problem
     numbers) as one self-contained HTML page in the page's style: a student's sheet (mode

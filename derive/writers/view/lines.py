@@ -33,9 +33,6 @@ def line_view(eqn: Eqn, style: Style, layout: Layout, *, answer: bool = False, e
 
 
 #: Around an optional line of a compiled variant page, for the variant to keep or drop.
-OPTIONAL_BEGIN, OPTIONAL_END = "%%derive-optional:", "%%derive-end%%"
-
-
 def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list[dict[str, Any]]:
     """Blocks of sentences and equation lines, printed: what blocks.*.j2 lays out."""
     blocks = []
@@ -46,8 +43,6 @@ def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list
             if eqn.optional and bstyle.hide_optional:
                 continue
             line = line_view(eqn, bstyle, layout, answer=eqn.mark, extra=bstyle.extra)
-            if eqn.optional and bstyle.block is not None:  # a variant's page drops it where it cannot add up
-                line["latex"] = f"{OPTIONAL_BEGIN}{bstyle.block}%{line['latex']}{OPTIONAL_END}"
             bare = line["latex"].removeprefix(IMPLIES)
             if lines and lines[-1]["latex"].removeprefix(IMPLIES) == bare and not lines[-1]["boxed"]:
                 kept = lines[-1]

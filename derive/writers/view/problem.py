@@ -10,7 +10,7 @@ import sympy
 from derive import escape
 from derive.steps.model import Solution
 from derive.symbols import latex_name
-from derive.writers.printing import SlotBook, Style
+from derive.writers.printing import Style
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.view.givens import given_latex, letter_units, letters_of, source_parts, statement, worked_out
 from derive.writers.view.lines import blocks_view
@@ -80,8 +80,6 @@ def view(
     digits: int | None = None,
     figures: bool = True,
     *,
-    slots: SlotBook | None = None,
-    varied: frozenset[sympy.Symbol] = frozenset(),
     layout: Layout = GITHUB,
     outer_letters: dict[sympy.Symbol, str] | None = None,
     outer_decimal: frozenset[sympy.Symbol] = frozenset(),
@@ -92,19 +90,16 @@ def view(
     """The data a template needs: every formula already printed as LaTeX, and the
     figures of stage 1 and of the answer as SVG and TikZ.
 
-    With ``slots``, every number that depends on a ``varied`` given is left open
-    (a token), so that one compiled page serves every homework variant. ``layout``
-    says where the page goes (:mod:`derive.writers.targets`): how wide a line may
+    ``layout`` says where the page goes (:mod:`derive.writers.targets`): how wide a line may
     be, and whether cancelled terms are struck out. ``falls`` and ``known`` are for
     an impact inside a chain: drawn with n pointing down, and the chain's numbers for
     symbols the impact leaves open. ``plot`` adds the plot of the outcome against e
     (``plot_svg``, ``plot_tikz``).
     """
     p = solution.problem
-    style = _style(solution, digits, layout, slots, varied, outer_letters, outer_decimal)
+    style = _style(solution, digits, layout, outer_letters, outer_decimal)
     stages = _stages(solution, style, layout, figures=figures, falls=falls, known=known)
-    opened = {g.symbol: g.definition for g in p.givens if g.value is None and g.definition is not None}
-    givens = [dict(zip(("latex", "note"), given_latex(g, style, opened), strict=False)) for g in p.givens]
+    givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
     found = {n: r.value if r.value is not None else r.partial for n, r in solution.results.items()}
     find = _find(p, style, found)
     plot_svg, plot_tikz = _plot(p) if plot else ("", "")
@@ -127,23 +122,19 @@ def _style(
     solution: Solution,
     digits: int | None,
     layout: Layout,
-    slots: SlotBook | None,
-    varied: frozenset[sympy.Symbol],
     outer_letters: dict[sympy.Symbol, str] | None,
     outer_decimal: frozenset[sympy.Symbol],
 ) -> Style:
-    """How the impact's page prints: its digits, its letters and decimals, its variant's slots."""
+    """How the impact's page prints: its digits, its letters and decimals."""
     p = solution.problem
     return Style(
         digits if digits is not None else p.digits,
         1,
         solution.values,
         solution.angles,
-        varied=varied,
-        slots=slots,
         strike=layout.strike,
         decimal=frozenset(g.symbol for g in p.givens if g.decimal) | outer_decimal,
-        letters=letters_of(p, solution.values) - varied,
+        letters=letters_of(p, solution.values),
         letter_units={**(outer_letters or {}), **letter_units(p)},
         labels=p.labels,
         derived=worked_out(p, solution.values),
