@@ -129,7 +129,14 @@ def _numeric_printer(style: Style, extra: int, cancel: frozenset[sympy.Symbol]) 
         varied=style.varied,
         block=style.block,
         labels=style.labels,
+        data=_data_integers(style),
     )
+
+
+def _data_integers(style: Style) -> frozenset[sympy.Expr]:
+    """The whole numbers of the data (a mass of 150000 kg), which a line shows as given."""
+    whole = [v for v in style.values.values() if isinstance(v, sympy.Expr) and v.is_Integer]
+    return frozenset(whole) | frozenset(-v for v in whole)
 
 
 def _result(expr: sympy.Expr, style: Style, cancel: frozenset[sympy.Symbol]) -> tuple[StepPrinter, sympy.Expr]:
