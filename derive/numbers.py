@@ -137,15 +137,15 @@ def format_places(value: sympy.Expr | Decimal, decimals: int, digits: int | None
     """``value`` at ``decimals`` places after the point (the places a block's sums share),
     unless that shows more figures than the rule lets the number show (-121.22 where an
     intermediate shows four): then at the rule's figures (-121.2); nor rounded coarser than
-    the answer's figures round it (a coefficient 0.47 or a denominator 0.78 in a block of sums
-    at no places after the point prints 0.47 and 0.78, not 0 and 1)."""
+    the answer's figures round it (at one figure, a coefficient 0.47 or a denominator 0.78 in
+    a block of sums at no places after the point prints 0.5 and 0.8, not 0 and 1)."""
     fixed = format_fixed(value, decimals)
     ruled = format_number(value, digits, extra=extra)
     if _significant(fixed) > _significant(ruled):
         return ruled  # 190, not 188, where an intermediate shows two figures
     d = to_decimal(value)
     if d != 0 and d.is_finite() and decimals < _places_shown(d, digits, extra)[1]:
-        return ruled  # coarser than the answer's rounding of it (0.78 as 1, 0.47 as 0)
+        return format_number(value, digits)  # not coarser than the answer's rounding (0.5, not 0)
     return fixed
 
 

@@ -100,7 +100,7 @@ def _in_letters(
         for r in expr.atoms(sympy.Rational)
         if not short_decimal(r) and (r.q > (12 if decimal else 1000) or abs(r.p) > 10**4)
     }
-    expr = expr.xreplace(long)
+    expr = _longer_than_digits(expr.xreplace(long), style.digits, extra)
     if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
         printer = StepPrinter(fractions=True)
         rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
@@ -115,6 +115,26 @@ def _in_letters(
         labels=style.labels,
     )
     return printer, expr
+
+
+def _longer_than_digits(expr: sympy.Expr, digits: int | None, extra: int) -> sympy.Expr:
+    """At a set number of figures, an exact number whose whole numbers show more (755/8, √105/35
+    at one figure) as a decimal, which then prints at the line's figures: one precision per line."""
+    if digits is None:
+        return expr
+    allowed = digits + extra
+
+    def long(x: sympy.Expr) -> bool:
+        whole = [abs(x.p), x.q] if x.is_Rational else []
+        return any(len(str(w).rstrip("0")) > allowed for w in whole)
+
+    swap: dict[sympy.Expr, sympy.Expr] = {}
+    for p in expr.atoms(sympy.Pow):
+        if p.is_number and not p.exp.is_Integer and any(long(a) for a in p.atoms(sympy.Rational)):
+            swap[p] = sympy.Float(p.evalf(PRECISION), PRECISION)
+    expr = expr.xreplace(swap)
+    swap = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if long(r)}
+    return expr.xreplace(swap)
 
 
 def _numeric_printer(style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> StepPrinter:

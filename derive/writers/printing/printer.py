@@ -17,6 +17,7 @@ from derive.numbers import (
     short_decimal,
     to_decimal,
 )
+from derive.steps.model import Degrees
 from derive.symbols import latex_name, relabel, vector_latex
 from derive.writers.printing.numerals import number_latex, power_latex, written_figures
 from derive.writers.printing.style import SlotBook
@@ -154,6 +155,9 @@ class StepPrinter(LatexPrinter):
         return r"\operatorname{atan2}\left(" + self._print(y) + ", " + self._print(x) + r"\right)"
 
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
+        if isinstance(expr, Degrees):  # an angle's number: as written when short, else an intermediate's figures
+            deg = expr.degrees
+            return (as_written(deg) if short_decimal(deg) else number_latex(deg, self._digits, 1)) + r"^\circ"
         if expr in self._values:
             return self._values[expr]
         name = relabel(expr.name, self._labels)
