@@ -14,6 +14,7 @@ from derive.physics.asks import Found, Shown
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.notation import notes_form
 from derive.steps.page import Page, as_float, interval_text, nonzero, show
 from derive.symbols import symbol, vector
 
@@ -190,7 +191,14 @@ def _closed_forms(page: Page) -> Block | None:
     if not symbolic:
         return None
     lines = [
-        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((page.value_of(r.symbol),), "result")), unit=r.unit)
+        Eqn(
+            (
+                Side((r.symbol,)),
+                Side((notes_form(r.closed, page.numeric),)),
+                Side((page.value_of(r.symbol),), "result"),
+            ),
+            unit=r.unit,
+        )
         for r in symbolic
         if r.closed != 0
     ]
@@ -222,7 +230,8 @@ def _asked(page: Page) -> Block | None:
     if "J_n" in p.find:
         J = symbol("J_n")
         text = ("As asked (", Math(J), f" is the impulse along +n on {page.b}; on {page.a} it is ", Math(-J), "):")
-    return Block(text, tuple(extra))
+    # the components at the figures the boxed vectors show them: √(3.05² + (-1.11)²), one precision
+    return Block(text, tuple(extra), answer_figures=True)
 
 
 def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
@@ -377,7 +386,7 @@ def energy(page: Page) -> Block:
         sides = [Side((r.symbol,)), Side(terms)]
         if r.value is None:
             if r.closed != r.partial and r.partial.free_symbols - page.varied:
-                sides.append(Side((r.closed,)))
+                sides.append(Side((notes_form(r.closed, page.numeric),)))
             sides.append(Side((page.value_of(r.symbol),), "result"))
         else:
             sides.append(Side((r.value,), "result"))
@@ -414,7 +423,7 @@ def _loss_line(page: Page) -> Eqn:
     if r.value is None and r.partial.free_symbols - page.varied:  # letters, not a variant's open numbers
         sides = [Side((r.symbol,)), Side((symbol("T_1"), -symbol("T_2")))]
         if r.closed != r.partial and r.partial.free_symbols - page.varied:
-            sides.append(Side((r.closed,)))
+            sides.append(Side((notes_form(r.closed, page.numeric),)))
         sides.append(Side((page.value_of(r.symbol),), "result"))
         return Eqn(tuple(sides), unit=r.unit)
     p, e = page.p, page.e

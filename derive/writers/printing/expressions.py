@@ -239,7 +239,7 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     """A side of an equation as its printed terms with their signs, in order; a side
     of one term that is a sum gives that sum's terms."""
     out: list[tuple[str, str]] = []
-    for i, term in enumerate(side.terms):
+    for i, term in enumerate(_one_kind_of_number(side, style)):
         if side.mode in ("numeric", "result") and not _letters(term, style):
             term = substitute(term, style.values)
             collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
@@ -273,6 +273,24 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
             neg = True
         out.append(("-" if neg else "+", s))
     return out
+
+
+def _one_kind_of_number(side: Side, style: Style) -> tuple[sympy.Expr, ...]:
+    """A numeric side's terms, each coefficient a decimal where one of them is: 0.7071 v_A1 +
+    0.6364 v_A1, not (√2/2) v_A1 + 0.6364 v_A1 (one precision per line)."""
+    terms = side.terms
+    if side.mode not in ("numeric", "result") or len(terms) < 2 or style.slots is not None:
+        return terms
+    subbed = [substitute(t, style.values) for t in terms]
+    if not any(t.free_symbols and (t.atoms(sympy.Float) or t.free_symbols & style.decimal) for t in subbed):
+        return terms
+    out = []
+    for t in terms:
+        coeff, rest = t.as_independent(*t.free_symbols, as_Add=False) if t.free_symbols else (t, sympy.Integer(1))
+        if coeff.is_number and not coeff.is_Rational and rest.free_symbols:
+            t = sympy.Float(coeff.evalf(PRECISION), PRECISION) * rest
+        out.append(t)
+    return tuple(out)
 
 
 def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
