@@ -75,3 +75,12 @@ def test_a_variants_figure_says_its_sizes_are_schematic(tmp_path) -> None:
     assert not describe(solution("notes-4c11-two-spheres")).schematic
     page = derive.render(solution("notes-4c11-two-spheres"), "md")
     assert "schematic" not in page
+
+
+def test_the_acute_angle_asked_is_drawn_from_the_line_of_centres() -> None:
+    """OCR 2023 asks for the angle A's velocity makes with the line of centres, 46.8° (the
+    mark scheme): the after figure draws that arc, from the sense of n that A moves along."""
+    fig = describe(solution("ocr-fm-2023-oblique-discs-60deg"), after=True)
+    arc = next(a for a in _arcs(fig) if a.name == "alpha_A2")
+    assert abs(abs(arc.end - arc.start) - 46.8) < 0.05
+    assert any(lab.text == "alpha_A2" for lab in fig.labels)

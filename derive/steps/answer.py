@@ -41,7 +41,9 @@ def answer(page: Page) -> list[Block]:
     # one mark, as in the notes: on the last boxed line of the last block that answers
     last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
     # the velocity vectors asked for are marked each, as the notes mark both of 4.C.11
-    blocks = [_marked(page, b, True, every=i == 0) if i == last else b for i, (b, _) in enumerate(candidates)]
+    blocks = [
+        _marked(page, b, True, every=i == 0 and p.oblique) if i == last else b for i, (b, _) in enumerate(candidates)
+    ]
     return [b for b in blocks if b is not None] + [energy(page)]
 
 

@@ -289,7 +289,7 @@ def _motion_shapes(
         free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
         specs.append(arrow_spec(arrow, free, outward, relabel(name, p.labels)))
         leg = (side * d[0], side * d[1])
-        found = _after_angles(p, b, fr) if after else _before_angle(p, b, fr)
+        found = _after_angles(p, b, fr, d) if after else _before_angle(p, b, fr)
         for ref, label, guide in found:
             more, spec = _angle(body, (side * ref[0], side * ref[1]), leg, label, guide)
             if more:  # the arrow's own leg of the angle, from the centre to the arrow
@@ -308,13 +308,19 @@ def _before_angle(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]
     return [(fr.axis(motion.axis_from), motion.angle.name, motion.axis_from[1] != "n")]
 
 
-def _after_angles(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
-    """The directions the problem asks for: theta from +t, beta from +n."""
+def _after_angles(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
+    """The directions the problem asks for: theta from +t, beta from +n; the acute angles
+    alpha with the line of centres and gamma with the plane of contact, from whichever
+    sense of n or t the velocity ``d`` leans to."""
     out = []
     if f"theta_{b}2" in p.find:
         out.append((fr.t, f"theta_{b}2", True))
     if f"beta_{b}2" in p.find:
         out.append((fr.n, f"beta_{b}2", False))
+    for name, axis, guide in ((f"alpha_{b}2", fr.n, False), (f"gamma_{b}2", fr.t, True)):
+        if name in p.find:
+            sense = 1 if axis[0] * d[0] + axis[1] * d[1] >= 0 else -1
+            out.append(((sense * axis[0], sense * axis[1]), name, guide))
     return out
 
 
