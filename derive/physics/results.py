@@ -319,9 +319,11 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
     shared = y.free_symbols & x.free_symbols if x != 0 and y != 0 else y.free_symbols | x.free_symbols
     for s in sorted(shared, key=str):
         if s.is_positive:
-            ys, xs = sympy.cancel(y / s), sympy.cancel(x / s)
-            if not (ys.has(s) or xs.has(s)):
-                y, x = ys, xs
+            for k in range(1, 5):  # v_A1 or v_A1^2 (a deflection: a product of two velocities)
+                ys, xs = sympy.cancel(y / s**k), sympy.cancel(x / s**k)
+                if not (ys.has(s) or xs.has(s)):
+                    y, x = ys, xs
+                    break
     ratio = sympy.simplify(y / x) if x != 0 else None
     if ratio is not None and ratio.is_number:
         if x.is_positive:
