@@ -112,3 +112,17 @@ def test_repro_tex_text_question_marks(cli, tmp_path: Path, monkeypatch: pytest.
     text = _pdftotext(Path("ok.pdf").read_bytes(), tmp_path)
     assert _same_text("Collision de la boule réglée (NFD) vs réglée (NFC); Ω ∞") in _same_text(text)
     assert "?" not in text
+
+
+def test_repro_tex_text_question_marks_names_the_character(
+    cli, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The input2 repro as LaTeX: one line naming the first character pdflatex cannot set;
+    Markdown shows every character as typed."""
+    monkeypatch.chdir(tmp_path)
+    Path("q.toml").write_text((REPROS / "tex-text-question-marks.toml").read_text(encoding="utf-8"), encoding="utf-8")
+    r = cli("solve", "q.toml", "-f", "tex")
+    assert r.code == 2 and r.out == "" and r.err.count("\n") == 1, r.err
+    assert r.err.startswith("Error: ") and "U+041C CYRILLIC CAPITAL LETTER EM" in r.err
+    md = cli("solve", "q.toml")
+    assert md.code == 0 and "Мяч Ω ∞" in md.out
