@@ -8,6 +8,9 @@ from __future__ import annotations
 
 import html
 import re
+import unicodedata
+
+from derive.errors import InputError
 
 _TEX_SPECIAL = {
     "\\": r"\textbackslash{}",
@@ -27,12 +30,15 @@ _TEX_SPECIAL = {
     "\r": " ",
     "\t": " ",
 }
-_GREEK = [
+#: Greek letters by their Unicode names, as pdflatex sets them: lower case and the capitals
+#: with shapes of their own in math mode; the capitals shaped as Latin ones (Alpha, Beta, ...)
+#: as those Latin letters, which is how they print in any Greek font.
+_GREEK_SMALL = [
     "alpha",
     "beta",
     "gamma",
     "delta",
-    "epsilon",
+    "varepsilon",
     "zeta",
     "eta",
     "theta",
@@ -45,14 +51,54 @@ _GREEK = [
     "omicron",
     "pi",
     "rho",
+    "varsigma",
     "sigma",
     "tau",
     "upsilon",
-    "phi",
+    "varphi",
     "chi",
     "psi",
     "omega",
+]  # U+03B5 and U+03C6 are the open epsilon and the looped phi: \varepsilon, \varphi
+#: The Greek symbol variants, each its own character: lunate epsilon, straight phi, ...
+_GREEK_SYMBOLS = {"ϵ": r"$\epsilon$", "ϕ": r"$\phi$", "ϑ": r"$\vartheta$", "ϖ": r"$\varpi$", "ϱ": r"$\varrho$"}
+_GREEK_CAPITAL = [
+    "A",
+    "B",
+    "Gamma",
+    "Delta",
+    "E",
+    "Z",
+    "H",
+    "Theta",
+    "I",
+    "K",
+    "Lambda",
+    "M",
+    "N",
+    "Xi",
+    "O",
+    "Pi",
+    "P",
+    "Sigma",
+    "T",
+    "Upsilon",
+    "Phi",
+    "X",
+    "Psi",
+    "Omega",
 ]
+
+
+def _greek() -> dict[str, str]:
+    table = {}
+    for i, name in enumerate(_GREEK_SMALL):  # U+03B1 alpha ... U+03C2 final sigma, U+03C3 sigma ... U+03C9 omega
+        table[chr(0x03B1 + i)] = "o" if name == "omicron" else rf"$\{name}$"
+    for i, name in enumerate(_GREEK_CAPITAL):  # U+0391 ... U+03A9, no letter at U+03A2
+        table[chr(0x0391 + i + (i >= 17))] = name if len(name) == 1 else rf"$\{name}$"
+    return table | _GREEK_SYMBOLS
+
+
 _TEX_UNICODE = {
     "°": r"\textdegree{}",
     "±": r"$\pm$",
@@ -75,6 +121,34 @@ _TEX_UNICODE = {
     "²": r"\textsuperscript{2}",
     "³": r"\textsuperscript{3}",
     "\u00a0": "~",
+    "∞": r"$\infty$",
+    "∓": r"$\mp$",
+    "≠": r"$\neq$",
+    "≡": r"$\equiv$",
+    "∝": r"$\propto$",
+    "∠": r"$\angle$",
+    "∆": r"$\Delta$",
+    "∇": r"$\nabla$",
+    "∂": r"$\partial$",
+    "←": r"$\leftarrow$",
+    "↑": r"$\uparrow$",
+    "↓": r"$\downarrow$",
+    "↔": r"$\leftrightarrow$",
+    "′": r"$'$",
+    "″": r"$''$",
+    "•": r"\textbullet{}",
+    "€": r"\texteuro{}",
+    "™": r"\texttrademark{}",
+    "‰": r"\textperthousand{}",
+    "ı": r"\i{}",
+    "ł": r"\l{}",
+    "Ł": r"\L{}",
+    "œ": r"\oe{}",
+    "Œ": r"\OE{}",
+    "đ": r"\dj{}",
+    "Đ": r"\DJ{}",
+    "ŋ": r"\ng{}",
+    "Ŋ": r"\NG{}",
     "½": r"\textonehalf{}",
     "¼": r"\textonequarter{}",
     "¾": r"\textthreequarters{}",
@@ -86,14 +160,7 @@ _TEX_UNICODE = {
 for _i in range(10):  # θ₂, x⁴: the digits written below and above the line
     _TEX_UNICODE[chr(0x2080 + _i)] = rf"\textsubscript{{{_i}}}"
     _TEX_UNICODE.setdefault("⁰¹²³⁴⁵⁶⁷⁸⁹"[_i], rf"\textsuperscript{{{_i}}}")
-for _i, _name in enumerate(_GREEK):
-    if _name == "omicron":
-        continue
-    _TEX_UNICODE[chr(0x03B1 + _i)] = rf"$\{_name}$"
-    if _name not in ("epsilon",):
-        cap = _name.capitalize()
-        if cap in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi", "Psi", "Omega"):
-            _TEX_UNICODE[chr(0x0391 + _i)] = rf"$\{cap}$"
+_TEX_UNICODE.update(_greek())
 
 
 #: A word longer than this (a URL) may break after any of :data:`_BREAK_AFTER`.
@@ -101,23 +168,53 @@ LONG_WORD = 30
 _BREAK_AFTER = frozenset("/.-_?&=#:;,")
 
 
+#: The combining accents that T1 fonts set over a Latin letter, and the LaTeX accent for each.
+_TEX_ACCENTS = {
+    "\u0300": r"\`",
+    "\u0301": r"\'",
+    "\u0302": r"\^",
+    "\u0303": r"\~",
+    "\u0304": r"\=",
+    "\u0306": r"\u",
+    "\u0307": r"\.",
+    "\u0308": r"\"",
+    "\u030a": r"\r",
+    "\u030b": r"\H",
+    "\u030c": r"\v",
+    "\u0323": r"\d",
+    "\u0327": r"\c",
+    "\u0328": r"\k",
+    "\u0331": r"\b",
+}
+
+
+class UnsetCharacter(InputError):
+    """A character of the user's text that LaTeX (pdflatex with T1 fonts) cannot set."""
+
+
 def tex(text: str) -> str:
     """``text`` as LaTeX that prints it literally and runs nothing; a long word (a URL) may
     break across lines after a slash, a dot, a hyphen and the like, so it cannot run off
-    the page."""
-    return "".join(_tex_word(w, len(w) > LONG_WORD) for w in re.split(r"(\s+)", text))
+    the page.
+
+    The text is NFC-normalised first (an accent typed as a separate combining character,
+    as macOS copy-paste gives, joins its letter). A character LaTeX cannot set (Cyrillic,
+    an emoji) raises :class:`UnsetCharacter`, which names it, rather than printing "?".
+    """
+    text = unicodedata.normalize("NFC", text)
+    return "".join(_tex_word(w, len(w) > LONG_WORD, text) for w in re.split(r"(\s+)", text))
 
 
-def _tex_word(word: str, breakable: bool) -> str:
+def _tex_word(word: str, breakable: bool, text: str) -> str:
     out = []
     for ch in word:
-        out.append(_tex_char(ch))
+        out.append(_tex_char(ch, text))
         if breakable and ch in _BREAK_AFTER:
             out.append(r"\allowbreak{}")
     return "".join(out)
 
 
-def _tex_char(ch: str) -> str:
+def _tex_char(ch: str, text: str) -> str:
     if ch in _TEX_SPECIAL:
         return _TEX_SPECIAL[ch]
     if ch in _TEX_UNICODE:
@@ -126,7 +223,28 @@ def _tex_char(ch: str) -> str:
         return " "
     if ord(ch) < 128 or 0xC0 <= ord(ch) <= 0xFF:
         return ch  # ASCII and Latin-1 letters: T1 fonts have them
-    return "?"
+    if unicodedata.category(ch) == "Cf":
+        return ""  # invisible: a zero-width space, a direction mark
+    accented = _accented(ch)
+    if accented is not None:
+        return accented
+    name = unicodedata.name(ch, "no name")
+    shown = text if len(text) <= 60 else text[:57] + "..."
+    raise UnsetCharacter(
+        f"LaTeX cannot set {ch!r} (U+{ord(ch):04X} {name}) in {shown!r}: "
+        "write it another way, or choose --format md or html, which show it"
+    )
+
+
+def _accented(ch: str) -> str | None:
+    """A Latin letter with accents (ā, ő, č, ǵ) as LaTeX accent commands over the letter, or None."""
+    base, *marks = unicodedata.normalize("NFD", ch)
+    if not marks or not ("a" <= base.lower() <= "z") or any(m not in _TEX_ACCENTS for m in marks):
+        return None
+    out = r"\i{}" if base == "i" and marks[0] in "\u0300\u0301\u0302\u0304\u0306\u0308" else base
+    for mark in marks:
+        out = _TEX_ACCENTS[mark] + "{" + out + "}"
+    return out
 
 
 _MD_SPECIAL = set("\\`*_[]|$~#")

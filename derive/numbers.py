@@ -136,10 +136,25 @@ def shown_figures(text: str) -> int:
 def format_places(value: sympy.Expr | Decimal, decimals: int, digits: int | None, extra: int) -> str:
     """``value`` at ``decimals`` places after the point (the places a block's sums share),
     unless that shows more figures than the rule lets the number show (-121.22 where an
-    intermediate shows four): then at the rule's figures (-121.2)."""
+    intermediate shows four): then at the rule's figures (-121.2); nor rounded coarser than
+    the answer's figures round it (at one figure, a coefficient 0.47 or a denominator 0.78 in
+    a block of sums at no places after the point prints 0.5 and 0.8, not 0 and 1)."""
     fixed = format_fixed(value, decimals)
     ruled = format_number(value, digits, extra=extra)
-    return ruled if shown_figures(fixed) > shown_figures(ruled) else fixed
+    if _significant(fixed) > _significant(ruled):
+        return ruled  # 190, not 188, where an intermediate shows two figures
+    d = to_decimal(value)
+    if d != 0 and d.is_finite() and decimals < _places_shown(d, digits, extra)[1]:
+        return format_number(value, digits)  # not coarser than the answer's rounding (0.5, not 0)
+    return fixed
+
+
+def _significant(text: str) -> int:
+    """Significant figures of a number written as ``text``, the trailing zeros of a whole
+    number not counted (190 shows two, 190.0 four)."""
+    if "." in text or "e" in text:
+        return shown_figures(text)
+    return len(text.lstrip("-").rstrip("0")) or 1
 
 
 def decimals_of(text: str) -> int:

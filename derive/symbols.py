@@ -45,7 +45,9 @@ def kind_of(name: str, oblique: bool) -> str:
 
 #: The notes' names of a body's quantities (v_A1n, m_B, theta_A2); a chain's own names
 #: (u_B, w_B) are not a body's and keep their letters.
-_BODY_NAME = re.compile(r"(?P<head>(?:vec:)?(?:v|m|W|r|theta|beta)_)(?P<body>[AB])(?P<tail>[12]?[nt]?[xy]?)")
+_BODY_NAME = re.compile(
+    r"(?P<head>(?:vec:)?(?:v|m|W|r|theta|beta|alpha|gamma|delta)_)(?P<body>[AB])(?P<tail>[12]?[nt]?[xy]?)"
+)
 
 
 def relabel(name: str, labels: tuple[str, str]) -> str:

@@ -19,7 +19,7 @@ import derive
 from derive import resources
 
 HOSTILE_DIRECT = r"""
-title = "Direct impact: $5 & 100% of #1 {x} \\input{/etc/passwd} a_b ^ ~ <b> | `code` *bold* [l](u) café θ → ≈ ½ 😀"
+title = "Direct impact: $5 & 100% of #1 {x} \\input{/etc/passwd} a_b ^ ~ <b> | `code` *bold* [l](u) café θ → ≈ ½ Ω ∞ re\u0301gle\u0301e"
 kind = "direct"
 source = "Made up: \\$ costs $3 and $4; \\(not math\\) $$ not display $$"
 statement = "Ball A (2 kg, 3 m/s) hits ball B (1.5 kg, -2 m/s) head-on; e = 0.5. 50% off, x_1 & y_2, 10^3 ~ 1e3, \\section{x} \\\\ \\end{document}."

@@ -315,7 +315,7 @@ MD_HTML_PAYLOADS = [
     "</title></head><body onload=alert(1)>",
     '" onmouseover="alert(1)',
 ]
-UNICODE_PAYLOADS = ["\u202eevil\u202c", "\x1b[31mred\x1b[0m", "zero\u200bwidth", "😀 emoji", "Ω θ ° ½ µ ß é"]
+UNICODE_PAYLOADS = ["\u202eevil\u202c", "\x1b[31mred\x1b[0m", "zero\u200bwidth", "Ω θ ° ½ µ ß é ∞ re\u0301gle\u0301e"]
 ALL_TEXT = TEX_PAYLOADS + MD_HTML_PAYLOADS + UNICODE_PAYLOADS
 
 DANGEROUS_TEX = [
@@ -435,7 +435,7 @@ def _table_words() -> set[str]:
     from derive import escape
 
     words: set[str] = {"allowbreak"}  # a line may break there (inside a long URL): a penalty, nothing more
-    for table in (escape._TEX_SPECIAL, escape._TEX_UNICODE):
+    for table in (escape._TEX_SPECIAL, escape._TEX_UNICODE, escape._TEX_ACCENTS):
         for out in table.values():
             words |= set(re.findall(r"\\([A-Za-z]+)", out))
     return words
@@ -477,6 +477,11 @@ def test_escape_tables_hold_only_harmless_commands() -> None:
     )
     greek |= {g.capitalize() for g in greek}
     symbols = {"dots", "pm", "times", "cdot", "rightarrow", "Rightarrow", "approx", "leq", "geq", "surd"}
+    symbols |= {"varepsilon", "varphi", "vartheta", "varpi", "varrho"}
+    symbols |= {"infty", "mp", "neq", "equiv", "propto", "angle", "nabla", "partial", "varsigma"}
+    symbols |= {"leftarrow", "uparrow", "downarrow", "leftrightarrow"}
+    symbols |= {"i", "l", "L", "oe", "OE", "dj", "DJ", "ng", "NG"}  # letters T1 fonts have
+    symbols |= {"u", "r", "H", "v", "d", "c", "k", "b"}  # accents over a letter: \v{c}
     glyphs = {"char", "ttfamily", "allowbreak"}  # {\ttfamily\char34}: a glyph by its number, in a group
     unknown = {w for w in SAFE_TEX_WORDS if not (w.startswith("text") or w in greek | symbols | glyphs)}
     assert not unknown, f"escape.tex writes new commands {unknown}: check they cannot read, write or define"

@@ -153,7 +153,8 @@ def test_moodle_xml_is_reproducible(compiled: variants.Compiled, moodle: str) ->
 
 
 def test_default_result_and_a_bad_one(compiled: variants.Compiled, chosen: list[variants.Variant]) -> None:
-    assert lms.default_result(compiled, chosen) == compiled.problem.find[0] == "v_A2"
+    # 4.C.11 asks for the velocities as vectors (the notes): its first result is v_A2t
+    assert lms.default_result(compiled, chosen) == compiled.problem.find[0] == "v_A2t"
     with pytest.raises(derive.errors.InputError, match="--result nope"):
         lms.moodle_xml(compiled, chosen, result="nope")
 

@@ -212,11 +212,11 @@ BUGS = [
     ),
     # One ANSWER mark per answer, and none on a chain's intermediate stage.
     (
-        "two-answer-marks",
+        "two-answer-marks",  # the two velocity vectors are marked, as in the notes; a third mark is one too many
         "notes-4c11",
-        r"= 3.25\ \mathrm{m/s}}",
-        r"= 3.25\ \mathrm{m/s}}\quad\longleftarrow\ \text{ANSWER}",
-        "= 3.25",
+        r"= 813\ \mathrm{J}",
+        r"= 813\ \mathrm{J}\quad\longleftarrow\ \text{ANSWER}",
+        "= 813",
         {"answers"},
     ),
     (

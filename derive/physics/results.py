@@ -224,6 +224,7 @@ def _velocities(r: _Collector) -> None:
                 degrees=True,
                 present=moving,
             )
+    _acute_angles(r, comps)
     if p.phi is not None:
         for b in "AB":
             if b == "B" and p.fixed_B:
@@ -239,6 +240,45 @@ def _velocities(r: _Collector) -> None:
 
             r.add(f"v_{b}2x", x, unit_v, f"velocity of {b} after the impact, x component")
             r.add(f"v_{b}2y", y, unit_v, f"velocity of {b} after the impact, y component")
+
+
+def _acute_angles(r: _Collector, comps: dict[str, sympy.Symbol]) -> None:
+    """The angles a question asks for in words, each between 0° and 90° (180° for a deflection):
+
+    - ``alpha_A2``: between A's velocity after the impact and the line of centres (n),
+      alpha = tan^-1(|v_A2t| / |v_A2n|);
+    - ``gamma_A2``: between it and the plane of contact, a wall (t), gamma = 90° - alpha;
+    - ``delta_A``: the angle A's velocity turns through in the impact (its deflection),
+      delta = atan2(|v_A1 x v_A2|, v_A1 . v_A2), between 0° and 180°.
+    """
+    p, nm = r.p, r.imp.names
+    for b in "AB":
+        if b == "B" and p.fixed_B:
+            continue
+        n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+        moving = _moving(n, t, p)
+        for name, y, x, words in (
+            (f"alpha_{b}2", t, n, "the line of centres (n)"),
+            (f"gamma_{b}2", n, t, "the plane of contact (t), a wall"),
+        ):
+            r.add(
+                name,
+                lambda y=y, x=x: sympy.atan2(sympy.Abs(y), sympy.Abs(x)),
+                "deg",
+                f"acute angle between the velocity of {b} after the impact and {words}",
+                degrees=True,
+                present=moving,
+            )
+        n1, t1 = r.full(getattr(nm, f"{b}1n")), r.full(getattr(nm, f"{b}1t"))
+        before = _moving(n1, t1, p)
+        r.add(
+            f"delta_{b}",
+            lambda n=n, t=t, n1=n1, t1=t1: sympy.atan2(sympy.Abs(t1 * n - n1 * t), t1 * t + n1 * n),
+            "deg",
+            f"angle the velocity of {b} turns through in the impact (its deflection)",
+            degrees=True,
+            present=lambda moving=moving, before=before: moving() and before(),
+        )
 
 
 def _masses(r: _Collector) -> tuple[sympy.Expr, sympy.Expr]:
@@ -309,9 +349,11 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
     shared = y.free_symbols & x.free_symbols if x != 0 and y != 0 else y.free_symbols | x.free_symbols
     for s in sorted(shared, key=str):
         if s.is_positive:
-            ys, xs = sympy.cancel(y / s), sympy.cancel(x / s)
-            if not (ys.has(s) or xs.has(s)):
-                y, x = ys, xs
+            for k in range(1, 5):  # v_A1 or v_A1^2 (a deflection: a product of two velocities)
+                ys, xs = sympy.cancel(y / s**k), sympy.cancel(x / s**k)
+                if not (ys.has(s) or xs.has(s)):
+                    y, x = ys, xs
+                    break
     ratio = sympy.simplify(y / x) if x != 0 else None
     if ratio is not None and ratio.is_number:
         if x.is_positive:

@@ -27,12 +27,14 @@ from derive.symbols import symbol
 RESULT_NAMES = (
     *("v_A2", "v_B2", "v_A2n", "v_A2t", "v_B2n", "v_B2t"),
     *("theta_A2", "theta_B2", "beta_A2", "beta_B2"),
+    *("alpha_A2", "alpha_B2", "gamma_A2", "gamma_B2", "delta_A", "delta_B"),
     *("T_1", "T_2", "T_lost"),
 )
 #: Dimension of each result name, for conditions on results.
 RESULT_DIMS: dict[str, Dim] = {
     **dict.fromkeys(("v_A2", "v_B2", "v_A2n", "v_A2t", "v_B2n", "v_B2t", "v_A2x", "v_A2y", "v_B2x", "v_B2y"), VELOCITY),
     **dict.fromkeys(("theta_A2", "theta_B2", "beta_A2", "beta_B2"), ANGLE),
+    **dict.fromkeys(("alpha_A2", "alpha_B2", "gamma_A2", "gamma_B2", "delta_A", "delta_B"), ANGLE),
     **dict.fromkeys(("T_1", "T_2", "T_lost"), units.ENERGY),
     "J_n": units.IMPULSE,
 }

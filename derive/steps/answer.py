@@ -14,6 +14,7 @@ from derive.physics.asks import Found, Shown
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.notation import notes_form
 from derive.steps.page import Page, as_float, interval_text, nonzero, show
 from derive.symbols import symbol, vector
 
@@ -21,9 +22,9 @@ from derive.symbols import symbol, vector
 def answer(page: Page) -> list[Block]:
     """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
 
-    One line gets the notes' "⟵ ANSWER" mark: the last boxed line of the last block
-    that answers the question (the velocities when it asks for them, what it asks, a
-    "show that").
+    The notes' "⟵ ANSWER" mark goes on the last boxed line of the last block that
+    answers the question (what it asks, a "show that"), or, where that block is the
+    velocities, on each velocity vector asked for (4.C.11 marks both).
     """
     p = page.p
     velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
@@ -39,7 +40,10 @@ def answer(page: Page) -> list[Block]:
     ]
     # one mark, as in the notes: on the last boxed line of the last block that answers
     last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
-    blocks = [_marked(page, b, True) if i == last else b for i, (b, _) in enumerate(candidates)]
+    # the velocity vectors asked for are marked each, as the notes mark both of 4.C.11
+    blocks = [
+        _marked(page, b, True, every=i == 0 and p.oblique) if i == last else b for i, (b, _) in enumerate(candidates)
+    ]
     return [b for b in blocks if b is not None] + [energy(page)]
 
 
@@ -154,8 +158,9 @@ def _about(line: Eqn, find: tuple[str, ...]) -> bool:
     return bool(name) and any(f == name or f.startswith(name) for f in find)
 
 
-def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
-    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
+def _marked(page: Page, block: Block | None, asked: bool, every: bool = False) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it;
+    ``every``: on each boxed line asked for (the velocity vectors of both bodies)."""
     if block is None or not asked or not page.marks:
         return block
     boxed = [i for i, ln in enumerate(block.lines) if ln.boxed]
@@ -163,7 +168,8 @@ def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
     last = max(asked or boxed, default=-1)  # the last line asked for, else the last boxed
     if last < 0:
         return block
-    lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))
+    marks = set(asked) if every and asked else {last}
+    lines = tuple(replace(ln, mark=True) if i in marks else ln for i, ln in enumerate(block.lines))
     return replace(block, lines=lines)
 
 
@@ -215,7 +221,14 @@ def _closed_forms(page: Page) -> Block | None:
     if not symbolic:
         return None
     lines = [
-        Eqn((Side((r.symbol,)), Side((r.closed,)), Side((page.value_of(r.symbol),), "result")), unit=r.unit)
+        Eqn(
+            (
+                Side((r.symbol,)),
+                Side((notes_form(r.closed, page.numeric),)),
+                Side((page.value_of(r.symbol),), "result"),
+            ),
+            unit=r.unit,
+        )
         for r in symbolic
         if r.closed != 0
     ]
@@ -247,7 +260,8 @@ def _asked(page: Page) -> Block | None:
     if "J_n" in p.find:
         J = symbol("J_n")
         text = ("As asked (", Math(J), f" is the impulse along +n on {page.b}; on {page.a} it is ", Math(-J), "):")
-    return Block(text, tuple(extra))
+    # the components at the figures the boxed vectors show them: √(3.05² + (-1.11)²), one precision
+    return Block(text, tuple(extra), answer_figures=True)
 
 
 def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
@@ -283,6 +297,10 @@ def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         b = r.name[-2]
         n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
         return _angle_line(page, r, t, n, page.value_of(t), page.value_of(n), boxed)
+    if r.name[:-1] in ("alpha_A", "alpha_B", "gamma_A", "gamma_B"):
+        return _acute_line(page, r, boxed)
+    if r.name in ("delta_A", "delta_B"):
+        return _deflection_line(page, r, boxed)
     if r.name == "J_n":
         return _impulse_line(page, r, boxed)
     defined = {d.name: d for d in page.p.asks.defined}
@@ -323,6 +341,37 @@ def _angle_line(
         sides.append(Side((sympy.atan2(y, x, evaluate=False),)))
     sides.append(Side((val,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+
+
+def _acute_line(page: Page, r: Result, boxed: bool) -> Eqn:
+    """An acute angle with the line of centres (alpha) or the plane of contact (gamma):
+    tan^-1 of the other component's size over this one's, between 0° and 90°."""
+    b, nm = r.name[-2], page.nm
+    n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+    y, x = (t, n) if r.name.startswith("alpha") else (n, t)
+    yv, xv = page.value_of(y), page.value_of(x)
+    val = r.value if r.value is not None else r.partial
+    sides = [Side((r.symbol,))]
+    if xv != 0:
+        ratio = sympy.Mul(sympy.Abs(y), sympy.Pow(sympy.Abs(x), -1, evaluate=False), evaluate=False)
+        sides.append(Side((sympy.atan(ratio, evaluate=False),)))
+        if not ((xv.free_symbols | yv.free_symbols) - page.varied):
+            shown = sympy.Mul(as_float(abs(yv)), sympy.Pow(as_float(abs(xv)), -1, evaluate=False), evaluate=False)
+            sides.append(Side((show(sympy.atan(shown, evaluate=False)),), "numeric"))
+    sides.append(Side((val,), "result"))
+    return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
+
+
+def _deflection_line(page: Page, r: Result, boxed: bool) -> Eqn:
+    """The angle a velocity turns through: cos^-1 of v_1 . v_2 over the speeds' product."""
+    b, nm = r.name[-1], page.nm
+    n1, t1 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}1t")
+    n2, t2 = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+    dot = sympy.Add(sympy.Mul(t1, t2, evaluate=False), sympy.Mul(n1, n2, evaluate=False), evaluate=False)
+    speeds = sympy.Mul(symbol(f"v_{b}1"), symbol(f"v_{b}2"), evaluate=False)
+    form = sympy.acos(sympy.Mul(dot, sympy.Pow(speeds, -1, evaluate=False), evaluate=False), evaluate=False)
+    val = r.value if r.value is not None else r.partial
+    return Eqn((Side((r.symbol,)), Side((form,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
 
 
 def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
@@ -367,7 +416,7 @@ def energy(page: Page) -> Block:
         sides = [Side((r.symbol,)), Side(terms)]
         if r.value is None:
             if r.closed != r.partial and r.partial.free_symbols - page.varied:
-                sides.append(Side((r.closed,)))
+                sides.append(Side((notes_form(r.closed, page.numeric),)))
             sides.append(Side((page.value_of(r.symbol),), "result"))
         else:
             sides.append(Side((r.value,), "result"))
@@ -413,7 +462,7 @@ def _loss_line(page: Page) -> Eqn:
     if r.value is None and r.partial.free_symbols - page.varied:  # letters, not a variant's open numbers
         sides = [Side((r.symbol,)), Side((symbol("T_1"), -symbol("T_2")))]
         if r.closed != r.partial and r.partial.free_symbols - page.varied:
-            sides.append(Side((r.closed,)))
+            sides.append(Side((notes_form(r.closed, page.numeric),)))
         sides.append(Side((page.value_of(r.symbol),), "result"))
         return Eqn(tuple(sides), unit=r.unit)
     p, e = page.p, page.e

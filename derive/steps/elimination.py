@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import sympy
 
-from derive.numbers import as_written, format_number, short_decimal, tidy
+from derive.numbers import tidy
 from derive.physics.impact import root_rule
 from derive.steps.kinetics import Kinetics
-from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.model import Block, Degrees, Eqn, Math, Side, Text
 from derive.steps.page import Page, as_float, nonzero, show
 
 #: Why the root shown is the one kept, by the physics' rule.
@@ -161,9 +161,7 @@ def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.E
     vals = {**page.numeric, **known}
     if isinstance(expr, sympy.Symbol):
         if expr in page.outcome.angles and expr in vals:  # an angle as the page shows angles: 30°
-            deg = tidy(vals[expr] * 180 / sympy.pi)
-            shown = as_written(deg) if short_decimal(deg) else format_number(deg, page.p.digits, extra=1)
-            return sympy.Symbol(shown + r"^\circ")  # 71.57°, not all the figures of atan(3)
+            return Degrees(tidy(vals[expr] * 180 / sympy.pi))  # 71.57°, not all the figures of atan(3)
         return as_float(vals[expr]) if expr in vals else expr
     if expr.is_Atom:
         return expr

@@ -23,6 +23,21 @@ from derive.problem import ChainProblem, Problem
 Mode = Literal["symbolic", "values", "numeric", "result"]
 
 
+class Degrees(sympy.Symbol):
+    """An angle's value in degrees in a numeric line (sin 71.57°): printed at the page's
+    figures, which only the writer knows (an intermediate's, + one, at ``--digits``)."""
+
+    degrees: sympy.Expr
+
+    def __new__(cls, degrees: sympy.Expr) -> Degrees:
+        obj = super().__new__(cls, f"deg:{sympy.srepr(degrees)}")
+        obj.degrees = degrees
+        return obj
+
+    def __getnewargs_ex__(self) -> tuple[tuple[sympy.Expr], dict[str, object]]:
+        return (self.degrees,), {}
+
+
 @dataclass(frozen=True)
 class Math:
     """Inline mathematics inside a sentence."""

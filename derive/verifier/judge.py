@@ -159,10 +159,21 @@ class Judge:
         v = num.value.normalize()
         return any(v in s.exact for s in scopes)
 
+    def _may_be_rounded(self, num: Num) -> bool:
+        """A number with at least the rule's figures: a rounding could have written it
+        (0.12 for 0.1223 where v_B1 = -0.12; a small whole number is exact)."""
+        digits = num.mantissa.lstrip("-").replace(".", "").lstrip("0")
+        rule = self.rule_figures(num.value)
+        if num.integer:
+            return num.value != 0 and len(digits) >= rule and len(digits.rstrip("0")) >= rule
+        return num.value != 0 and len(digits) >= rule
+
     def halfwidth(self, num: Num, scopes: list[Scope], result: bool = False) -> object:
         """Half a unit in the last figure shown; 0 for an exact number. A whole number
-        ending in zeros may hide rounding up to its zeros (12300 for 12345)."""
-        if self.is_exact(num, scopes, result):
+        ending in zeros may hide rounding up to its zeros (12300 for 12345). A whole number
+        equal to a given but with the figures of a rounding may be one (20 for 19.8 at one
+        figure, where m_A = 20 kg), so it is measured as one."""
+        if self.is_exact(num, scopes, result) and not self._may_be_rounded(num):
             return ZERO
         if not num.integer:
             return mpf(num.ulp) / 2

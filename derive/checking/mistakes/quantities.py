@@ -40,6 +40,7 @@ def results_of(
                 res[g.name] = _quantity(known[g.symbol], known)
     if p.oblique:
         res.update(_oblique(p, nm, post, known, angles, num))
+        res.update(_acute(p, nm, pre, post, known))
     else:
         res["v_A2"] = _quantity(post[nm.A2n], known)
         if not p.fixed_B:
@@ -88,6 +89,32 @@ def _oblique(
             phi = num(p.phi)
             res[f"v_{b}2x"] = _quantity(n * sympy.cos(phi) - t * sympy.sin(phi), known)
             res[f"v_{b}2y"] = _quantity(n * sympy.sin(phi) + t * sympy.cos(phi), known)
+    return res
+
+
+def _acute(
+    p: Problem,
+    nm: Names,
+    pre: dict[sympy.Symbol, sympy.Expr],
+    post: dict[sympy.Symbol, sympy.Expr],
+    known: dict[sympy.Symbol, sympy.Expr],
+) -> dict[str, Quantity]:
+    """The acute angles with n (alpha) and t (gamma) after the impact, and the deflection (delta)."""
+    res: dict[str, Quantity] = {}
+    for b in "AB":
+        if b == "B" and p.fixed_B:
+            continue
+        n, t = (post[getattr(nm, f"{b}2{c}")].xreplace(known) for c in "nt")
+        if n == 0 and t == 0:
+            continue
+        n1 = pre[getattr(nm, f"{b}1n")]
+        t1 = pre[getattr(nm, f"{b}1t")] if getattr(nm, f"{b}1t") is not None else sympy.Integer(0)
+        pairs = {f"alpha_{b}2": (sympy.Abs(t), sympy.Abs(n)), f"gamma_{b}2": (sympy.Abs(n), sympy.Abs(t))}
+        if not (n1 == 0 and t1 == 0):
+            pairs[f"delta_{b}"] = (sympy.Abs(t1 * n - n1 * t), t1 * t + n1 * n)
+        for name, (y, x) in pairs.items():
+            rad = sympy.atan2(y, x)
+            res[name] = Quantity(rad, None if rad.free_symbols else rad * 180 / sympy.pi)
     return res
 
 

@@ -107,7 +107,9 @@ FIND = Field(
     "find",
     "names",
     "extra results to box in the answer: `v_A2`, `v_B2` (speeds), `theta_A2`, `theta_B2` (from +t toward +n), "
-    "`beta_A2`, `beta_B2` (from +n toward +t), `T_1`, `T_2`, `T_lost`, `J_n`, and the unknowns of an inverse problem",
+    "`beta_A2`, `beta_B2` (from +n toward +t), `alpha_A2`, `alpha_B2` (the acute angle with the line of centres), "
+    "`gamma_A2`, `gamma_B2` (the acute angle with the plane of contact, a wall), `delta_A`, `delta_B` (the angle "
+    "a velocity turns through), `T_1`, `T_2`, `T_lost`, `J_n`, and the unknowns of an inverse problem",
     max_items=30,
     default="the velocities after the impact",
     expected="a list of result names",

@@ -138,6 +138,7 @@ class Figure:
     labels: tuple[Label, ...] = field(default_factory=tuple)
     own_scale: bool = False
     lengthened: tuple[tuple[str, str], ...] = ()
+    schematic: bool = False  # the bodies' sizes are not this variant's (its masses vary, the radii do not)
 
     @property
     def caption(self) -> str:
@@ -155,6 +156,8 @@ class Figure:
             listed = each[0] if len(each) == 1 else ", ".join(each[:-1]) + text(" and ") + each[-1]
             whose = "its direction" if len(each) == 1 else "their directions"
             out += text(", except ") + listed + text(f", drawn longer to show {whose}")
+        if self.schematic:
+            out += text("; the bodies' sizes are schematic (the radii stated, not this variant's masses)")
         return out
 
     def bounds(self, pad: float = 0.25) -> tuple[float, float, float, float]:

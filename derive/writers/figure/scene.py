@@ -33,6 +33,7 @@ ARROW_MAX = 3.0  # cm: the arrow of the greatest speed, before or after
 ARROW_MIN = 2 * HEAD
 R_MAX = 1.3  # cm: the radius of the larger body
 ARC_R = 0.75  # cm: the radius of an angle's arc
+MIN_ARC = 0.15  # cm: an arc shorter than this (under 11.5° at ARC_R) cannot be seen
 #: The order labels are placed in: those with the least room first.
 ORDER = {"body": 0, "angle": 1, "velocity": 2, "axis": 3, "surface": 4}
 
@@ -221,8 +222,8 @@ def _angle(centre: Body, ref: Point, d: Point, name: str, guide: bool) -> tuple[
     """The arc from direction ``ref`` to ``d`` at a body's centre, its guide line and label."""
     start = math.degrees(math.atan2(ref[1], ref[0]))
     sweep = (math.degrees(math.atan2(d[1], d[0])) - start + 540) % 360 - 180
-    if abs(sweep) < 1 or abs(abs(sweep) - 180) < 1:
-        return [], None
+    if abs(math.radians(sweep)) * ARC_R < MIN_ARC or abs(abs(sweep) - 180) < 1:
+        return [], None  # an arc too short to see (2.86° in 4.C.12) is not drawn, nor labelled
     arc = Arc(centre.x, centre.y, ARC_R, start, start + sweep, name)
     shapes: list[Shape] = [arc]
     if guide:
@@ -233,6 +234,11 @@ def _angle(centre: Body, ref: Point, d: Point, name: str, guide: bool) -> tuple[
         a = math.radians(start + frac * sweep)
         u = (math.cos(a), math.sin(a))
         anchors.append(((centre.x + ARC_R * u[0], centre.y + ARC_R * u[1]), (u,)))
+    mid = math.radians(start + sweep / 2)  # beside the arc's middle, any side, before the centre
+    u_mid = (math.cos(mid), math.sin(mid))
+    anchors.append(((centre.x + ARC_R * u_mid[0], centre.y + ARC_R * u_mid[1]), AROUND))
+    # where the wedge is too narrow for it: just outside the body, across from the arc's opening
+    anchors.append(((centre.x + centre.r * u_mid[0], centre.y + centre.r * u_mid[1]), (u_mid,)))
     anchors.append(((centre.x, centre.y), AROUND))
     return shapes, Spec(name, "angle", tuple(anchors), home=centre)
 
@@ -283,7 +289,7 @@ def _motion_shapes(
         free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
         specs.append(arrow_spec(arrow, free, outward, relabel(name, p.labels)))
         leg = (side * d[0], side * d[1])
-        found = _after_angles(p, b, fr) if after else _before_angle(p, b, fr)
+        found = _after_angles(p, b, fr, d) if after else _before_angle(p, b, fr)
         for ref, label, guide in found:
             more, spec = _angle(body, (side * ref[0], side * ref[1]), leg, label, guide)
             if more:  # the arrow's own leg of the angle, from the centre to the arrow
@@ -302,23 +308,40 @@ def _before_angle(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]
     return [(fr.axis(motion.axis_from), motion.angle.name, motion.axis_from[1] != "n")]
 
 
-def _after_angles(p: Problem, b: str, fr: Frame) -> list[tuple[Point, str, bool]]:
-    """The directions the problem asks for: theta from +t, beta from +n."""
+def _after_angles(p: Problem, b: str, fr: Frame, d: Point) -> list[tuple[Point, str, bool]]:
+    """The directions the problem asks for: theta from +t, beta from +n; the acute angles
+    alpha with the line of centres and gamma with the plane of contact, from whichever
+    sense of n or t the velocity ``d`` leans to."""
     out = []
     if f"theta_{b}2" in p.find:
         out.append((fr.t, f"theta_{b}2", True))
     if f"beta_{b}2" in p.find:
         out.append((fr.n, f"beta_{b}2", False))
+    for name, axis, guide in ((f"alpha_{b}2", fr.n, False), (f"gamma_{b}2", fr.t, True)):
+        if name in p.find:
+            sense = 1 if axis[0] * d[0] + axis[1] * d[1] >= 0 else -1
+            out.append(((sense * axis[0], sense * axis[1]), name, guide))
     return out
 
 
-def _xy_axes(shapes: list[Shape]) -> tuple[list[Shape], list[Spec]]:
-    """Small x-y axes left of the drawing, for problems posed in x-y."""
+def _xy_axes(shapes: list[Shape], fr: Frame) -> tuple[list[Shape], list[Spec]]:
+    """Small x-y axes left of the drawing, for problems posed in x-y, with the angle the
+    statement gives between x and the line of impact n (a dotted n beside them)."""
     x0, y0, _, _ = Figure("", tuple(shapes)).bounds(pad=0.0)
     ox, oy = x0 - 1.9, y0 + 0.1
     axes = [Axis(ox, oy, ox + 1.2, oy, "x"), Axis(ox, oy, ox, oy + 1.2, "y")]
     specs = [Spec(a.name, "axis", (((a.x2, a.y2), (d, *AROUND)),)) for a, d in zip(axes, ((1, 0), (0, 1)), strict=True)]
-    return list(axes), specs
+    out: list[Shape] = list(axes)
+    phi = math.degrees(math.atan2(fr.n[1], fr.n[0]))
+    if abs(math.radians(phi)) * 0.8 >= MIN_ARC and abs(abs(phi) - 90) > 1:
+        out.append(Guide(ox, oy, ox + 1.2 * fr.n[0], oy + 1.2 * fr.n[1]))
+        mid = math.radians(phi / 2)
+        out.append(Arc(ox, oy, 0.8, 0.0, phi, "phi"))
+        where = (ox + 0.8 * math.cos(mid), oy + 0.8 * math.sin(mid))
+        text = f"{phi:.3g}°".replace("-", "−")
+        specs.append(Spec(text, "angle", ((where, ((math.cos(mid), math.sin(mid)), *AROUND)),), math=False))
+        specs.append(Spec("n", "axis", (((ox + 1.2 * fr.n[0], oy + 1.2 * fr.n[1]), (fr.n, *AROUND)),)))
+    return out, specs
 
 
 def describe(
@@ -353,7 +376,7 @@ def describe(
     shapes += more
     specs += more_specs
     if fr.xy:
-        axes, axis_specs = _xy_axes(shapes)
+        axes, axis_specs = _xy_axes(shapes, fr)
         shapes += axes
         specs += axis_specs
     title = "After the impact" if after else "Before the impact"
@@ -364,4 +387,31 @@ def describe(
         for a in more
         if isinstance(a, Arrow) and a.lengthened
     )
-    return Figure(title, tuple(shapes), place(specs, shapes), own_scale=own["1"] != own["2"], lengthened=longer)
+    return Figure(
+        title,
+        tuple(shapes),
+        place(specs, shapes),
+        own_scale=own["1"] != own["2"],
+        lengthened=longer,
+        schematic=_masses_drawn_otherwise(p, values or {}, numbers),
+    )
+
+
+def _masses_drawn_otherwise(p: Problem, values: Mapping, numbers: Numbers) -> bool:
+    """True for a variant whose masses are not the statement's while the radii drawn are the
+    stated ones: its figure's sizes say nothing of its bodies (B may be denser than gold)."""
+    given = {g.name: g for g in p.givens}
+    if not ("r_A" in given and "r_B" in given):
+        return False
+    for name in ("m_A", "m_B", "W_A", "W_B"):
+        g = given.get(name)
+        if g is None or g.symbol not in values:
+            continue
+        if g.value is None and name in p.vary:  # a compiled variant's mass: its own number
+            return True
+        if g.value is None:
+            continue
+        stated, drawn = numbers(g.value, p.numeric()), numbers(values[g.symbol], p.numeric())
+        if stated is not None and drawn is not None and abs(stated - drawn) > 1e-9 * max(1.0, abs(stated)):
+            return True
+    return False

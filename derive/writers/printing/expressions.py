@@ -97,7 +97,7 @@ def _in_letters(
         for r in expr.atoms(sympy.Rational)
         if not short_decimal(r) and (r.q > (12 if decimal else 1000) or abs(r.p) > 10**4)
     }
-    expr = expr.xreplace(long)
+    expr = _longer_than_digits(expr.xreplace(long), style.digits, extra)
     if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
         printer = StepPrinter(fractions=True)
         rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
@@ -114,6 +114,26 @@ def _in_letters(
     return printer, expr
 
 
+def _longer_than_digits(expr: sympy.Expr, digits: int | None, extra: int) -> sympy.Expr:
+    """At a set number of figures, an exact number whose whole numbers show more (755/8, √105/35
+    at one figure) as a decimal, which then prints at the line's figures: one precision per line."""
+    if digits is None:
+        return expr
+    allowed = digits + extra
+
+    def long(x: sympy.Expr) -> bool:
+        whole = [abs(x.p), x.q] if x.is_Rational else []
+        return any(len(str(w).rstrip("0")) > allowed for w in whole)
+
+    swap: dict[sympy.Expr, sympy.Expr] = {}
+    for p in expr.atoms(sympy.Pow):
+        if p.is_number and not p.exp.is_Integer and any(long(a) for a in p.atoms(sympy.Rational)):
+            swap[p] = sympy.Float(p.evalf(PRECISION), PRECISION)
+    expr = expr.xreplace(swap)
+    swap = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if long(r)}
+    return expr.xreplace(swap)
+
+
 def _numeric_printer(style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> StepPrinter:
     """An intermediate line in numbers: intermediates' figures, the block's places after the point."""
     return StepPrinter(
@@ -123,7 +143,14 @@ def _numeric_printer(style: Style, extra: int, cancel: frozenset[sympy.Symbol]) 
         decimals=style.decimals,
         decimal_rationals=True,
         labels=style.labels,
+        data=_data_integers(style),
     )
+
+
+def _data_integers(style: Style) -> frozenset[sympy.Expr]:
+    """The whole numbers of the data (a mass of 150000 kg), which a line shows as given."""
+    whole = [v for v in style.values.values() if isinstance(v, sympy.Expr) and v.is_Integer]
+    return frozenset(whole) | frozenset(-v for v in whole)
 
 
 def _result(expr: sympy.Expr, style: Style, cancel: frozenset[sympy.Symbol]) -> tuple[StepPrinter, sympy.Expr]:
@@ -201,7 +228,7 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
     """A side of an equation as its printed terms with their signs, in order; a side
     of one term that is a sum gives that sum's terms."""
     out: list[tuple[str, str]] = []
-    for i, term in enumerate(side.terms):
+    for i, term in enumerate(_one_kind_of_number(side, style)):
         if side.mode in ("numeric", "result") and not _letters(term, style):
             term = substitute(term, style.values)
             collapse = side.mode == "result" and not isinstance(term, sympy.UnevaluatedExpr)
@@ -230,6 +257,24 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
             neg = True
         out.append(("-" if neg else "+", s))
     return out
+
+
+def _one_kind_of_number(side: Side, style: Style) -> tuple[sympy.Expr, ...]:
+    """A numeric side's terms, each coefficient a decimal where one of them is: 0.7071 v_A1 +
+    0.6364 v_A1, not (√2/2) v_A1 + 0.6364 v_A1 (one precision per line)."""
+    terms = side.terms
+    if side.mode not in ("numeric", "result") or len(terms) < 2 or style.slots is not None:
+        return terms
+    subbed = [substitute(t, style.values) for t in terms]
+    if not any(t.free_symbols and (t.atoms(sympy.Float) or t.free_symbols & style.decimal) for t in subbed):
+        return terms
+    out = []
+    for t in terms:
+        coeff, rest = t.as_independent(*t.free_symbols, as_Add=False) if t.free_symbols else (t, sympy.Integer(1))
+        if coeff.is_number and not coeff.is_Rational and rest.free_symbols:
+            t = sympy.Float(coeff.evalf(PRECISION), PRECISION) * rest
+        out.append(t)
+    return tuple(out)
 
 
 def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:

@@ -11,11 +11,13 @@ from sympy.printing.latex import LatexPrinter
 
 from derive.numbers import (
     as_written,
+    figures_for,
     format_number,
     format_places,
     short_decimal,
     to_decimal,
 )
+from derive.steps.model import Degrees
 from derive.symbols import latex_name, relabel, vector_latex
 from derive.writers.printing.numerals import number_latex, power_latex, written_figures
 
@@ -104,8 +106,10 @@ class StepPrinter(LatexPrinter):
         trim_floats: bool = False,
         fractions: bool = False,
         labels: tuple[str, str] = ("A", "B"),
+        data: frozenset[sympy.Expr] | None = None,
     ) -> None:
         super().__init__({"order": "none", "fold_func_brackets": True, "inv_trig_style": "power"})
+        self._data = data  # whole numbers of the data, printed as given; None: every whole number so
         self._labels = labels
         self._trim_floats = trim_floats
         self._fractions = fractions
@@ -137,6 +141,9 @@ class StepPrinter(LatexPrinter):
         return r"\operatorname{atan2}\left(" + self._print(y) + ", " + self._print(x) + r"\right)"
 
     def _print_Symbol(self, expr: sympy.Symbol, style: str = "plain") -> str:
+        if isinstance(expr, Degrees):  # an angle's number: as written when short, else an intermediate's figures
+            deg = expr.degrees
+            return (as_written(deg) if short_decimal(deg) else number_latex(deg, self._digits, 1)) + r"^\circ"
         if expr in self._values:
             return self._values[expr]
         name = relabel(expr.name, self._labels)
@@ -179,6 +186,11 @@ class StepPrinter(LatexPrinter):
     def _print_Integer(self, expr: sympy.Integer) -> str:
         if self._round_integers and expr != 0:
             return number_latex(expr, self._digits, self._extra)
+        if self._data is not None and expr not in self._data and self._longer_than_shown(expr):
+            # worked out, not given: at the line's figures (190, not 188, at one figure)
+            if self._decimals is not None:
+                return power_latex(format_places(expr, self._decimals, self._digits, self._extra))
+            return number_latex(expr, self._digits, self._extra)
         if abs(expr.p) >= 10**6:
             if written_figures(to_decimal(expr)) > written_figures(
                 Decimal(format_number(expr, self._digits, extra=self._extra))
@@ -186,6 +198,11 @@ class StepPrinter(LatexPrinter):
                 return number_latex(expr, self._digits, self._extra)  # 7.350 x 10^22, not all its digits
             return power_latex(as_written(expr))
         return str(expr.p)
+
+    def _longer_than_shown(self, expr: sympy.Integer) -> bool:
+        """True when the whole number ``expr`` has more figures than an intermediate shows."""
+        figures = figures_for(to_decimal(expr), self._digits) + self._extra
+        return written_figures(to_decimal(expr)) > figures
 
     def _print_Add(self, expr: sympy.Add, order: str | None = None) -> str:
         return join_terms(self.add_terms(expr))

@@ -48,8 +48,8 @@ def figure_entry(fig: figure.Figure) -> dict[str, str]:
 
 def figure_note(fig: figure.Figure, tex: bool) -> str:
     """The note under a figure (HTML for Markdown, or LaTeX) when an arrow is drawn longer
-    than to scale; else empty."""
-    if not fig.lengthened:
+    than to scale or the bodies' sizes are schematic (a variant's); else empty."""
+    if not (fig.lengthened or fig.schematic):
         return ""
     if tex:
         return _sentence(fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex))
@@ -68,6 +68,12 @@ _FIND_WORDS = {
     "theta_B2": "the direction of B (from +t)",
     "beta_A2": "the direction of A (from +n)",
     "beta_B2": "the direction of B (from +n)",
+    "alpha_A2": "the angle between A's velocity and the line of centres",
+    "alpha_B2": "the angle between B's velocity and the line of centres",
+    "gamma_A2": "the angle between A's velocity and the plane of contact",
+    "gamma_B2": "the angle between B's velocity and the plane of contact",
+    "delta_A": "the angle A's velocity turns through",
+    "delta_B": "the angle B's velocity turns through",
     "J_n": "the impulse along n",
     "T_1": "the kinetic energy before the impact",
     "T_2": "the kinetic energy after the impact",
