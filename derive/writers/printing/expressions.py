@@ -263,7 +263,7 @@ def _one_kind_of_number(side: Side, style: Style) -> tuple[sympy.Expr, ...]:
     """A numeric side's terms, each coefficient a decimal where one of them is: 0.7071 v_A1 +
     0.6364 v_A1, not (√2/2) v_A1 + 0.6364 v_A1 (one precision per line)."""
     terms = side.terms
-    if side.mode not in ("numeric", "result") or len(terms) < 2 or style.slots is not None:
+    if side.mode not in ("numeric", "result") or len(terms) < 2:
         return terms
     subbed = [substitute(t, style.values) for t in terms]
     if not any(t.free_symbols and (t.atoms(sympy.Float) or t.free_symbols & style.decimal) for t in subbed):
