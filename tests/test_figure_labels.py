@@ -67,11 +67,10 @@ def test_a_variants_figure_says_its_sizes_are_schematic(tmp_path) -> None:
     """4.C.11's radii (75 and 48 mm) are stated; a variant's masses are not the statement's."""
     from derive.homework.variants.compile import compile_problem
     from derive.homework.variants.draw import draw
-    from derive.homework.variants.fill import drawing
 
     compiled = compile_problem(derive.load("notes-4c11-two-spheres"))
     variant = draw(compiled, 1, seed=3)[0]
-    assert drawing(compiled, variant, "before").schematic
+    assert describe(compiled.solved(variant.values), after=False).schematic
     assert not describe(solution("notes-4c11-two-spheres")).schematic
     page = derive.render(solution("notes-4c11-two-spheres"), "md")
     assert "schematic" not in page

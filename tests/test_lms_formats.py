@@ -765,6 +765,9 @@ def test_askable_results_are_the_numeric_results_of_derive_solve(spec_id: str, t
     assert proc.returncode == 0, proc.stderr
     numeric = {k for k, v in json.loads(proc.stdout)["results"].items() if v["value"] is not None}
     numeric.discard("again")  # a chain's yes or no (do they collide again?) is no number to enter
+    # the acute angles and the turn (issue #28) follow from the components these tests check, and
+    # their published values are checked in tests/test_asked_answers.py: not exported here
+    numeric -= {k for k in numeric if k.startswith(("alpha_", "gamma_", "delta_", "psi_"))}
     if spec.id == "notes-4c11-seed7":  # the issue's one case
         assert set(spec.results) <= numeric
     else:

@@ -147,7 +147,8 @@ def test_kinetic_energy_after_is_exact_not_0_1667_m_v2() -> None:
 def test_the_notes_4c12_steps_keep_sqrt2_over_2() -> None:
     md = derive.render(derive.solve(derive.load("notes-4c12-cue-ball")), "md")
     assert r"v_{A1n} = v_{A1} \sin {\theta_{1}} = v_{A1} \sin {45^\circ} = \frac{\sqrt{2}}{2} v_{A1}" in md
-    assert "0.7071" not in md
+    # 0.7071 only where a sum is written at one precision with 0.9 √2/2 = 0.6364 (issue #28)
+    assert all("0.6364" in line for line in md.splitlines() if "0.7071" in line)
 
 
 def test_an_angle_with_a_letter_speed_is_a_number_not_atan2() -> None:

@@ -157,6 +157,9 @@ class Problem:
     #: The file it was read from (:class:`~derive.problem.source.Source`): its text, for a
     #: homework variant (the file with other numbers written in) and for messages.
     ctx: Any = field(default=None, compare=False, repr=False)
+    #: A homework variant whose masses are drawn while its radii are the file's: a figure of
+    #: it is schematic in size (B may come out denser than gold).
+    sizes_schematic: bool = field(default=False, compare=False)
 
     def __post_init__(self) -> None:
         if self.kind not in KINDS:

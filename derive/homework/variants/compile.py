@@ -160,8 +160,13 @@ def _solve(path: str, text: str, name: str, written: tuple[tuple[str, str | int 
     data.pop("vary", None)
     data.pop("conditions", None)
     data.setdefault("given", {}).update(dict(written))
-    build = build_chain if data.get("kind") == "chain" else build_problem
-    return solve(build(data, Source(path, text), name))
+    if data.get("kind") == "chain":
+        return solve(build_chain(data, Source(path, text), name))
+    problem = build_problem(data, Source(path, text), name)
+    drawn = {n for n, _ in written}
+    if drawn & {"m_A", "m_B", "W_A", "W_B"} and {"r_A", "r_B"} & (set(data["given"]) - drawn):
+        problem = replace(problem, sizes_schematic=True)  # radii stated, masses drawn
+    return solve(problem)
 
 
 @functools.lru_cache(maxsize=8)

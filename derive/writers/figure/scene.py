@@ -400,6 +400,8 @@ def describe(
 def _masses_drawn_otherwise(p: Problem, values: Mapping, numbers: Numbers) -> bool:
     """True for a variant whose masses are not the statement's while the radii drawn are the
     stated ones: its figure's sizes say nothing of its bodies (B may be denser than gold)."""
+    if getattr(p, "sizes_schematic", False):
+        return True
     given = {g.name: g for g in p.givens}
     if not ("r_A" in given and "r_B" in given):
         return False
