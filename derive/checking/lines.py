@@ -26,7 +26,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
-from derive.checking.relations import Point, Values, coefficients, satisfied, shown
+from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied, shown
 from derive.checking.report import Diagnosis, Item
 from derive.errors import InputError
 from derive.numbers import format_number
@@ -293,11 +293,13 @@ def _solve(
     """The velocities that satisfy ``equations`` at each point (the root nearest ``near``)."""
     out = []
     for pt, guide in zip(pts, near, strict=True):
-        eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
-        try:
-            roots = [r for r in sympy.solve(eqs, list(U), dict=True) if set(r) == set(U)]
-        except (NotImplementedError, ValueError, TypeError):
-            return None
+        roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
+        if roots is None:
+            eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
+            try:
+                roots = [r for r in sympy.solve(eqs, list(U), dict=True, rational=False) if set(r) == set(U)]
+            except (NotImplementedError, ValueError, TypeError):
+                return None
         if not roots:
             return None
         target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
