@@ -1,0 +1,539 @@
+"""The corpus of typed derivations (tests/data/derivations) is consistent with itself.
+
+These tests check the data only, never derive's checker: every derivation has a verdict,
+the counts by category and format meet issue 31, the verdicts' line numbers point at lines
+that hold a relation, and every true value a verdict records is worked again here from the
+problem file's givens with plain Python arithmetic (momentum, Newton's law of restitution,
+a wall's rebound, a fall or a rise under gravity).
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import tomllib
+from fractions import Fraction
+
+import pytest
+from support.derivation_corpus import (
+    MINIMUM,
+    PROBLEMS,
+    SLIP_NAMES,
+    Case,
+    check_corpus,
+    counts,
+    load_cases,
+)
+
+CASES = load_cases()
+
+
+def test_the_corpus_is_consistent() -> None:
+    assert check_corpus(CASES) == []
+
+
+def test_the_counts_of_issue_31() -> None:
+    by_category, by_format = counts(CASES)
+    assert len(CASES) >= 40
+    for category, least in MINIMUM.items():
+        assert by_category[category] >= least, category
+    assert min(by_format.values()) * 3 >= len(CASES) - 2, by_format
+    assert set(by_format) == {"md", "tex", "txt"}
+
+
+def test_chains_and_inverse_problems_and_weights_are_in_it() -> None:
+    problems = {c.verdict.problem for c in CASES}
+    assert sum(p.startswith("chain-") for p in problems) >= 3
+    assert {"hibbeler-15-58-suitcases", "mcasco-two-cars-no-bounce", "mcasco-glancing-disks-us"} <= problems
+    assert {"ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", "beer-johnston-13-13-railroad-cars-find-e"} <= problems
+    assert {"notes-4c11-two-spheres", "ocr-fm-2023-oblique-discs-60deg"} <= problems
+
+
+def test_every_slip_is_named_from_the_vocabulary_and_the_checker_names_are_used() -> None:
+    names = [s.name for c in CASES for s in c.verdict.slips]
+    assert set(names) <= SLIP_NAMES
+    for mistake in ("b_sign", "restitution_reversed", "e_on_t", "energy_conserved", "sin_cos_swapped"):
+        assert mistake in names, mistake
+    assert "rounded_too_early" in names
+
+
+def test_the_loader_reads_a_case_line_by_line() -> None:
+    case = next(c for c in CASES if c.name == "s03-aqa-2007-nlr-reversed.txt")
+    assert case.verdict.lines[7] == "wrong"
+    assert case.file_lines[6].startswith("v_A - v_B")
+    assert case.verdict.with_status("carried") == [8, 9, 10, 11]
+    assert case.verdict.wrong_count == 1
+
+
+# ---- the true values, worked again from the problem files' givens ----
+
+
+def _number(value: object) -> float | None:
+    """A given as a plain number ("20 kg" -> 20.0, "3/4" -> 0.75), or None for a letter or "?"."""
+    if isinstance(value, int | float):
+        return float(value)
+    text = str(value).split()[0] if str(value).strip() else ""
+    try:
+        return float(Fraction(text))
+    except (ValueError, ZeroDivisionError):
+        return None
+
+
+def _given(problem: str) -> dict[str, float]:
+    with (PROBLEMS / f"{problem}.toml").open("rb") as handle:
+        table = tomllib.load(handle)["given"]
+    return {k: n for k, v in table.items() if (n := _number(v)) is not None}
+
+
+def _direct(m_a: float, m_b: float, e: float, u_a: float, u_b: float) -> tuple[float, float]:
+    """Velocities after a direct impact: momentum and v_B - v_A = e (u_A - u_B)."""
+    approach = u_a - u_b
+    v_a = (m_a * u_a + m_b * u_b - m_b * e * approach) / (m_a + m_b)
+    return v_a, v_a + e * approach
+
+
+def _energy(m_a: float, m_b: float, *speeds: float) -> float:
+    return 0.5 * m_a * speeds[0] ** 2 + (0.5 * m_b * speeds[1] ** 2 if len(speeds) > 1 else 0.0)
+
+
+def _4c11(g: dict) -> dict:
+    c, s = math.cos(math.radians(g["theta"])), math.sin(math.radians(g["theta"]))
+    a_n, a_t, b_n, b_t = g["v_A1"] * c, g["v_A1"] * s, -g["v_B1"] * c, -g["v_B1"] * s
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    return {
+        "v_A2t": a_t,
+        "v_B2t": b_t,
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2": math.hypot(a_t, v_an),
+        "v_B2": math.hypot(b_t, v_bn),
+    }
+
+
+def _plain(g: dict) -> dict:
+    v_a, v_b = _direct(g["m_A"], g["m_B"], g["e"], g["v_A1"], g["v_B1"])
+    t1 = _energy(g["m_A"], g["m_B"], g["v_A1"], g["v_B1"])
+    t2 = _energy(g["m_A"], g["m_B"], v_a, v_b)
+    return {"v_A2": v_a, "v_B2": v_b, "T_1": t1, "T_2": t2, "T_lost": t1 - t2}
+
+
+def _ocr_2014(g: dict) -> dict:
+    # the masses are 2m and 3m: the energies in units of m (kg)
+    return _plain({"m_A": 2.0, "m_B": 3.0, "e": g["e"], "v_A1": g["v_A1"], "v_B1": g["v_B1"]})
+
+
+def _wall(g: dict) -> dict:
+    v = -g["e"] * g["v_A1"]
+    return {
+        "v_A2": v,
+        "J_n": g["m_A"] * (g["v_A1"] - v),
+        "T_1": _energy(g["m_A"], 0, g["v_A1"]),
+        "T_2": _energy(g["m_A"], 0, v),
+        "T_lost": _energy(g["m_A"], 0, g["v_A1"]) - _energy(g["m_A"], 0, v),
+    }
+
+
+def _weights(g: dict, gravity: float = 32.2) -> dict:
+    m = {"m_A": g["W_A"] / gravity, "m_B": g["W_B"] / gravity}
+    return _plain({**g, **m})
+
+
+def _oblique_loc(g: dict, degrees: float) -> dict:
+    """A at `degrees` from the line of centres, B along it (the OCR papers)."""
+    a_n = g["v_A1"] * math.cos(math.radians(degrees))
+    a_t = g["v_A1"] * math.sin(math.radians(degrees))
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, g["v_B1n"])
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2t": a_t,
+        "v_A2": math.hypot(v_an, a_t),
+        "angle_loc": math.degrees(math.atan2(a_t, abs(v_an))),
+        "dir_A_from_i": math.degrees(math.atan2(a_t, v_an)),
+    }
+
+
+def _ocr_m3_2006(g: dict) -> dict:
+    """Components given: A across the line of centres, B along it."""
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], g["v_A1n"], g["v_B1n"])
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2t": g["v_A1t"],
+        "v_A2": math.hypot(v_an, g["v_A1t"]),
+        "v_B2": abs(v_bn),
+        "dir_A_from_i": math.degrees(math.atan2(g["v_A1t"], v_an)),
+    }
+
+
+def _find_e(g: dict) -> dict:
+    """A given velocity after: the other from momentum, then e."""
+    m_a, m_b, u_a, u_b = g.get("m_A"), g["m_B"], g["v_A1"], g["v_B1"]
+    if "v_A2" in g and "v_B2" in g:  # the mass of A is the unknown
+        m_a = m_b * (g["v_B2"] - u_b) / (u_a - g["v_A2"])
+        v_a, v_b = g["v_A2"], g["v_B2"]
+    elif "v_A2" in g:
+        v_a = g["v_A2"]
+        v_b = (m_a * u_a + m_b * u_b - m_a * v_a) / m_b
+    else:
+        v_b = g["v_B2"]
+        v_a = (m_a * u_a + m_b * u_b - m_b * v_b) / m_a
+    return {"v_A2": v_a, "v_B2": v_b, "e": (v_b - v_a) / (u_a - u_b), "m_A": m_a}
+
+
+def _cushion(g: dict) -> dict:
+    t1, t2 = _energy(g["m_A"], 0, g["v_A1"]), _energy(g["m_A"], 0, g["v_A2"])
+    return {"e": -g["v_A2"] / g["v_A1"], "T_1": t1, "T_2": t2, "T_lost": t1 - t2}
+
+
+def _giancoli(g: dict) -> dict:
+    u_n = g["v_A1"] * math.cos(math.radians(g["theta"]))
+    return {"v_A1n": u_n, "J_n": g["m_A"] * (1 + g["e"]) * u_n}
+
+
+def _glancing(g: dict) -> dict:
+    u_n, u_t = g["v_A1"] * math.cos(math.radians(30)), g["v_A1"] * math.sin(math.radians(30))
+    v_an, v_bn = _direct(g["W_A"], g["W_B"], g["e"], u_n, 0.0)
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2t": u_t, "v_A2": math.hypot(v_an, u_t), "v_B2": abs(v_bn)}
+
+
+def _collide_again(g: dict) -> dict:
+    u_a, u_b = _direct(g["m_A"], g["m_B"], g["e"], g["v_A"], -g["v_B"])
+    w_b = -g["e_wall"] * u_b
+    return {"u_A": u_a, "u_B": u_b, "w_B": w_b, "again": "yes" if w_b < u_a else "no"}
+
+
+def _thrown_down(g: dict) -> dict:
+    v_1 = math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"])
+    v_2 = g["e_floor"] * v_1
+    return {
+        "v_1": v_1,
+        "v_2": v_2,
+        "h_2": v_2**2 / (2 * g["g"]),
+        "J": g["m"] * (v_1 + v_2),
+        "E_lost": 0.5 * g["m"] * (v_1**2 - v_2**2),
+    }
+
+
+def _bullet(g: dict) -> dict:
+    v = g["m_bullet"] * g["v_0"] / (g["m_bullet"] + g["m_block"])
+    return {"V": v, "T_after": _energy(g["m_bullet"] + g["m_block"], 0, v), "h_2": v**2 / (2 * g["g"])}
+
+
+def _drop_rebound(g: dict) -> dict:
+    v_1, v_2 = math.sqrt(2 * g["g"] * g["h_0"]), math.sqrt(2 * g["g"] * g["h_r"])
+    return {"v_1": v_1, "v_2": v_2, "e_floor": v_2 / v_1, "J": g["m"] * (v_1 + v_2)}
+
+
+def _4c12(g: dict) -> dict:
+    """Equal masses, B at rest, A at theta_1 to the plane of contact: per unit v_A1."""
+    a_n, a_t = math.sin(math.radians(g["theta_1"])), math.cos(math.radians(g["theta_1"]))
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], a_n, 0.0)
+    return {"theta_A2": math.degrees(math.atan2(v_an, a_t)), "v_A2n_per_v_A1": v_an, "v_B2_per_v_A1": v_bn}
+
+
+def _cie_2018(u: float, e: float) -> dict:
+    v_a, v_b = _direct(5.0, 2.0, e, u, -2 * u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _wjec_2019(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 1.0, e, u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _aqa_2009(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 7.0, e, 5 * u, u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _edexcel_2004(u: float, e: float) -> dict:
+    v_a, v_b = _direct(2.0, 3.0, e, 5 * u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+NUMERIC = {
+    "notes-4c11-two-spheres": _4c11,
+    "notes-4c12-cue-ball": _4c12,
+    "openstax-cp-8-30-puck-bounces-off-goalie": _plain,
+    "openstax-cp-8-train-cars-couple": _plain,
+    "byjus-4kg-ball-catches-8kg-ball": _plain,
+    "aqa-m3-2007-spheres-approach-head-on": _plain,
+    "ocr-m2-2006-spheres-meet-at-5-ke-lost": _plain,
+    "uoguelph-8-34-superballs-grams": _plain,
+    "ocr-m2-2014-particles-2m-3m-ke-lost": _ocr_2014,
+    "edexcel-m2-ball-rebounds-from-wall": _wall,
+    "ocr-m2-2012-particle-hits-wall": _wall,
+    "hibbeler-15-58-suitcases": _weights,
+    "mcasco-two-cars-no-bounce": _weights,
+    "ocr-fm-2023-oblique-discs-60deg": lambda g: _oblique_loc(g, 60.0),
+    "ocr-m3-2007-oblique-sin-alpha-0p8": lambda g: _oblique_loc(g, math.degrees(math.asin(0.8))),
+    "ocr-m3-2006-oblique-a-across-centres": _ocr_m3_2006,
+    "ocr-m2-2011-spheres-find-e-and-mass": _find_e,
+    "ocr-mei-fmm-2023-a-speed-0p2-forward": _find_e,
+    "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e": _find_e,
+    "beer-johnston-13-13-railroad-cars-find-e": _find_e,
+    "aqa-fm-specimen-discs-show-e-0p8": _find_e,
+    "openstax-cp-8-31-billiard-ball-cushion": _cushion,
+    "giancoli-7-18-tennis-ball-wall-45deg": _giancoli,
+    "mcasco-glancing-disks-us": _glancing,
+    "chain-aqa-m3-2007-collide-again": _collide_again,
+    "chain-ocr-m2-2015-thrown-down-bounce": _thrown_down,
+    "chain-msu-bullet-block-swings": _bullet,
+    "chain-ocr-m2-2006-drop-rebound": _drop_rebound,
+}
+SYMBOLIC = {
+    "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
+    "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m": _edexcel_2004,
+    "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": _wjec_2019,
+    "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u": _aqa_2009,
+}
+
+
+_OPERATORS = {
+    ast.Add: lambda a, b: a + b,
+    ast.Sub: lambda a, b: a - b,
+    ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b,
+}
+
+
+def _formula(text: str, u: float, e: float) -> float:
+    """A verdict's closed form ("u*(1 - 6*e)/7") at one point: u, e, numbers and + - * / only."""
+
+    def value(node: ast.AST) -> float:
+        if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
+            return _OPERATORS[type(node.op)](value(node.left), value(node.right))
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+            return -value(node.operand)
+        if isinstance(node, ast.Constant) and isinstance(node.value, int | float):
+            return float(node.value)
+        if isinstance(node, ast.Name) and node.id in ("u", "e"):
+            return u if node.id == "u" else e
+        raise AssertionError(f"not a formula in u and e: {text!r}")
+
+    return value(ast.parse(text, mode="eval").body)
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: c.name)
+def test_the_true_values_of_each_verdict(case: Case) -> None:
+    verdict = case.verdict
+    assert verdict.values, f"{case.name}: no true values recorded"
+    if verdict.problem in SYMBOLIC:
+        for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
+            truth = SYMBOLIC[verdict.problem](u, e)
+            for name, formula in verdict.values.items():
+                assert _formula(str(formula), u, e) == pytest.approx(truth[name], rel=1e-9), name
+        return
+    truth = NUMERIC[verdict.problem](_given(verdict.problem))
+    for name, value in verdict.values.items():
+        assert name in truth, f"{case.name}: {name} is not worked here"
+        if isinstance(value, str):
+            assert value == truth[name], name
+        else:
+            assert value == pytest.approx(truth[name], rel=2e-4, abs=2e-4), f"{case.name}: {name}"
+
+
+# ---- the values the carried lines hold, worked again with the slip made on purpose ----
+
+
+def _4c11_parts(g: dict) -> tuple[float, float, float, float]:
+    c, s = math.cos(math.radians(g["theta"])), math.sin(math.radians(g["theta"]))
+    return g["v_A1"] * c, g["v_A1"] * s, -g["v_B1"] * c, -g["v_B1"] * s
+
+
+def _slip_s01(g: dict) -> dict:  # B's sign lost in (4) only
+    a_n, _, b_n, _ = _4c11_parts(g)
+    d = g["e"] * (a_n + b_n)
+    v_an = (g["m_A"] * a_n + g["m_B"] * b_n - g["m_B"] * d) / (g["m_A"] + g["m_B"])
+    return {"v_A2n": v_an, "v_B2n": v_an + d}
+
+
+def _slip_s02(g: dict) -> dict:  # sin and cos swapped for both spheres
+    a_t, a_n, b_t, b_n = _4c11_parts(g)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    return {"v_A2t": a_t, "v_B2t": b_t, "v_A2n": v_an, "v_B2n": v_bn}
+
+
+def _slip_s05(g: dict) -> dict:  # e on the speeds
+    a_n, _, b_n, _ = _4c11_parts(g)
+    d = g["e"] * (g["v_A1"] + g["v_B1"])
+    v_an = (g["m_A"] * a_n + g["m_B"] * b_n - g["m_B"] * d) / (g["m_A"] + g["m_B"])
+    return {"v_A2n": v_an, "v_B2n": v_an + d}
+
+
+def _slip_s07(g: dict) -> dict:  # e on the t components
+    a_n, a_t, b_n, b_t = _4c11_parts(g)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    e = g["e"]
+    return {"v_A2t": e * a_t, "v_B2t": e * b_t, "v_A2": math.hypot(e * a_t, v_an), "v_B2": math.hypot(e * b_t, v_bn)}
+
+
+def _slip_s08(g: dict) -> dict:  # one t velocity for both
+    a_n, a_t, b_n, b_t = _4c11_parts(g)
+    v_t = (g["m_A"] * a_t + g["m_B"] * b_t) / (g["m_A"] + g["m_B"])
+    v_an, _ = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    return {"v_A2t": v_t, "v_B2t": v_t, "v_A2": math.hypot(v_t, v_an)}
+
+
+def _slip_t01(g: dict) -> dict:  # B's sign lost in (3); then 9.51 + 3.65 written 12.2
+    a_n, _, b_n, b_t = _4c11_parts(g)
+    d = g["e"] * (a_n - b_n)
+    v_an = (g["m_A"] * a_n - g["m_B"] * b_n - g["m_B"] * d) / (g["m_A"] + g["m_B"])
+    return {"v_A2n": v_an, "v_B2n": 12.2, "v_B2": math.hypot(12.2, b_t)}
+
+
+def _slip_reversed(g: dict) -> dict:  # e (u_A - u_B) = v_A - v_B
+    v_a, v_b = _direct(g["m_A"], g["m_B"], -g["e"], g["v_A1"], g["v_B1"])
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _slip_b_in_nlr(g: dict) -> dict:  # the approach speed with B's sign flipped, momentum right
+    d = g["e"] * (g["v_A1"] + g["v_B1"])
+    v_a = (g["m_A"] * g["v_A1"] + g["m_B"] * g["v_B1"] - g["m_B"] * d) / (g["m_A"] + g["m_B"])
+    return {"v_A2": v_a, "v_B2": v_a + d}
+
+
+def _slip_energy(g: dict) -> dict:  # kinetic energy conserved: the e = 1 result
+    v_a, v_b = _direct(g["m_A"], g["m_B"], 1.0, g["v_A1"], g["v_B1"])
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _slip_masses(g: dict) -> dict:  # 2m and 3m exchanged after the impact: 3x + 2y = 2, y - x = 2.4
+    d = g["e"] * (g["v_A1"] - g["v_B1"])
+    x = (2 * g["v_A1"] + 3 * g["v_B1"] - 2 * d) / 5
+    return {"v_A2": x, "v_B2": x + d}
+
+
+def _slip_quadrant(g: dict) -> dict:
+    t = _oblique_loc(g, math.degrees(math.asin(0.8)))
+    return {"dir_A_from_i": math.degrees(math.atan(t["v_A2t"] / t["v_A2n"]))}
+
+
+def _slip_other_axis(g: dict) -> dict:
+    t = _oblique_loc(g, 60.0)
+    return {"angle_loc": math.degrees(math.atan(abs(t["v_A2n"]) / t["v_A2t"]))}
+
+
+def _slip_t03(g: dict) -> dict:  # sin/cos swapped for A, then the angle from the other axis
+    t = _oblique_loc(g, 30.0)
+    return {**t, "angle_loc": math.degrees(math.atan(abs(t["v_A2n"]) / t["v_A2t"]))}
+
+
+def _slip_radians(g: dict) -> dict:
+    u_n = g["v_A1"] * math.cos(g["theta"])  # 45 read as radians
+    return {"v_A1n": u_n, "J_n": g["m_A"] * (1 + g["e"]) * u_n}
+
+
+def _slip_weight(g: dict) -> dict:  # the weights in lb used as masses
+    return _plain(g | {"m_A": g["W_A"], "m_B": g["W_B"]})
+
+
+def _slip_rounded(g: dict) -> dict:  # masses rounded to 2 s.f.
+    m_a, m_b = round(g["W_A"] / 32.2, 2), round(g["W_B"] / 32.2, 2)
+    v_a, v_b = _direct(m_a, m_b, g["e"], g["v_A1"], g["v_B1"])
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _slip_glancing(g: dict) -> dict:  # 30 deg taken from the tangent: sin and cos swapped
+    u_n, u_t = g["v_A1"] * math.sin(math.radians(30)), g["v_A1"] * math.cos(math.radians(30))
+    v_an, v_bn = _direct(g["W_A"], g["W_B"], g["e"], u_n, 0.0)
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2t": u_t, "v_A2": math.hypot(v_an, u_t), "v_B2": v_bn}
+
+
+def _slip_s24(g: dict) -> dict:  # the angle from the line of impact
+    return {"theta_A2": 90.0 - _4c12(g)["theta_A2"]}
+
+
+def _slip_s25(g: dict) -> dict:  # e across the line of centres too
+    t = _ocr_m3_2006(g | {"v_A1t": g["e"] * g["v_A1t"]})
+    return {k: t[k] for k in ("v_A2t", "v_A2", "dir_A_from_i")}
+
+
+def _slip_s26(g: dict) -> dict:  # the n components rounded to 2 s.f. before use
+    a_n, _, b_n, _ = _4c11_parts(g)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], float(f"{a_n:.2g}"), float(f"{b_n:.2g}"))
+    return {"v_A2n": v_an, "v_B2n": v_bn}
+
+
+def _slip_h05(g: dict) -> dict:  # the wall's rebound without its change of sign
+    t = _collide_again(g | {"e_wall": -g["e_wall"]})
+    return {"w_B": t["w_B"], "again": t["again"]}
+
+
+def _slip_bullet(g: dict) -> dict:  # kinetic energy conserved as the bullet lodges
+    m = g["m_bullet"] + g["m_block"]
+    v = math.sqrt(g["m_bullet"] * g["v_0"] ** 2 / m)
+    return {"V": v, "T_after": 0.5 * m * v**2, "h_2": v**2 / (2 * g["g"])}
+
+
+def _slip_discs(g: dict) -> dict:  # B's momentum taken positive in the momentum equation only
+    v_b = (g["m_A"] * g["v_A1"] - g["m_B"] * g["v_B1"] - g["m_A"] * g["v_A2"]) / g["m_B"]
+    return {"v_B2": v_b, "e": (v_b - g["v_A2"]) / (g["v_A1"] - g["v_B1"])}
+
+
+def _slip_t02(g: dict) -> dict:  # masses exchanged in (3); KE before with 0.04 for 0.4
+    v_a, v_b = _direct(g["m_B"], g["m_A"], g["e"], g["v_A1"], g["v_B1"])
+    t2 = _energy(g["m_A"], g["m_B"], v_a, v_b)
+    t1 = 0.5 * g["m_A"] * g["v_A1"] ** 2 + 0.04
+    return {"v_A2": v_a, "v_B2": v_b, "T_1": t1, "T_2": t2, "T_lost": t1 - t2}
+
+
+def _slip_t04(g: dict) -> dict:  # B's sign lost in (3); KE before 16m + 12m
+    d = g["e"] * (g["v_A1"] - g["v_B1"])
+    v_a = (2 * g["v_A1"] - 3 * g["v_B1"] - 3 * d) / 5
+    v_b = v_a + d
+    t2 = _energy(2.0, 3.0, v_a, v_b)
+    return {"v_A2": v_a, "v_B2": v_b, "T_1": 28.0, "T_2": t2, "T_lost": 28.0 - t2}
+
+
+SLIPPED = {
+    "s01-4c11-bsign-in-nlr.md": _slip_s01,
+    "s02-4c11-sin-cos-swapped.tex": _slip_s02,
+    "s03-aqa-2007-nlr-reversed.txt": _slip_reversed,
+    "s04-byjus-nlr-speeds-added.md": _slip_b_in_nlr,
+    "s05-4c11-e-on-speeds.txt": _slip_s05,
+    "s06-ocr-2006-energy-conserved.tex": _slip_energy,
+    "s07-4c11-e-on-t.txt": _slip_s07,
+    "s08-4c11-system-t.md": _slip_s08,
+    "s09-ocr-fm-2023-angle-other-axis.tex": _slip_other_axis,
+    "s10-ocr-m3-2007-quadrant.txt": _slip_quadrant,
+    "s11-giancoli-radians.md": _slip_radians,
+    "s12-suitcases-weight-as-mass.tex": _slip_weight,
+    "s13-ocr-2014-masses-swapped.txt": _slip_masses,
+    "s17-discs-find-e-bsign.md": _slip_discs,
+    "s19-glancing-disks-sin-cos.md": _slip_glancing,
+    "s21-suitcases-rounded-early.txt": _slip_rounded,
+    "t01-4c11-two-slips.md": _slip_t01,
+    "t02-aqa-2007-two-slips.tex": _slip_t02,
+    "t03-ocr-fm-2023-two-slips.txt": _slip_t03,
+    "t04-ocr-2014-two-slips.md": _slip_t04,
+    "s24-4c12-angle-other-axis.md": _slip_s24,
+    "s25-ocr-m3-2006-e-on-t.tex": _slip_s25,
+    "s26-4c11-rounded-early.md": _slip_s26,
+    "h03-chain-bullet-block.txt": _slip_bullet,
+    "h05-chain-collide-again-wall-sign.tex": _slip_h05,
+}
+
+
+@pytest.mark.parametrize("name", sorted(SLIPPED))
+def test_the_values_given_the_slip(name: str) -> None:
+    """The carried values a verdict records are what the slip gives (to the 3 s.f. the student carried)."""
+    case = next(c for c in CASES if c.name == name)
+    worked = SLIPPED[name](_given(case.verdict.problem))
+    assert case.verdict.slip_values
+    for key, value in case.verdict.slip_values.items():
+        assert key in worked, f"{name}: {key} is not worked here"
+        if isinstance(value, str):
+            assert value == worked[key], f"{name}: {key}"
+        else:
+            assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+@pytest.mark.parametrize("case", [c for c in CASES if c.verdict.category == "chain"], ids=lambda c: c.name)
+def test_a_chains_stages_are_the_problem_files_stages(case: Case) -> None:
+    with (PROBLEMS / f"{case.verdict.problem}.toml").open("rb") as handle:
+        stages = tomllib.load(handle)["stage"]
+    known = {s.get("title", s["type"]) for s in stages} | {s["type"] for s in stages}
+    assert set(case.verdict.stages) <= known
+    assert any(case.verdict.stages.values())
