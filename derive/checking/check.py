@@ -69,14 +69,16 @@ def check(
             except InputError as exc:
                 errors.append(exc)
                 items.append(error_item("answer" if judge is answer_item else "equation", e, exc))
+    notes: list[str] = []
     if derivation is not None:
         from derive.checking.lines import derivation_items
 
-        items += derivation_items(ctx, derivation)
+        lines, notes = derivation_items(ctx, derivation)
+        items += lines
     if errors and len(errors) == len(items):
         raise errors[0]
     p = solution.problem
-    return Report(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None)
+    return Report(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None, tuple(notes))
 
 
 def answer_item(ctx: Context, e: Entry) -> Item:

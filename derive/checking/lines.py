@@ -14,12 +14,13 @@ its wrong number instead.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import sympy
 
 from derive.checking import mistakes
 from derive.checking.context import Context
-from derive.checking.derivation import MAX_LINES, Line, read_derivation
+from derive.checking.inference import Read, read_lines
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
@@ -31,13 +32,11 @@ from derive.checking.report import Diagnosis, Item
 from derive.errors import InputError
 from derive.numbers import format_number
 from derive.problem import units
-from derive.problem.expr import ParseError, parse
+from derive.mathtext.notation import student
 from derive.records import dataclass
 
 TRUE = "substituting the correct values"
 _NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
-#: The notes' spellings of names a problem may spell otherwise (tried only where unknown).
-ALIASES = {"v_A": "v_A1", "v_B": "v_B1", "theta_1": "theta", "theta_2": "theta_A2", "theta": "theta_1"}
 
 
 @dataclass(frozen=True)
@@ -54,17 +53,23 @@ class Pair:
         return self.left - self.right
 
 
-def derivation_items(ctx: Context, text: str) -> list[Item]:
-    """One item per relation of the derivation ``text``."""
-    lines = read_derivation(text)
-    if not lines:
-        return [Item("line", "", "", "error", "", "The derivation has no relation to check (no line with '=').")]
+#: The most relations of one derivation that are judged (the rest are reported as not checked).
+MAX_LINES = 200
+Line = Read
+
+
+def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
+    """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
+    lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0])
+    if not any(line.exprs is not None for line in lines):
+        why = f" ({lines[0].error})" if lines else " (no line with '=')"
+        return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
     items = [trace.item(line) for line in lines[:MAX_LINES]]
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
-    return items
+    return [i for i in items if i is not None], notes
 
 
 class Trace:
@@ -84,15 +89,17 @@ class Trace:
         self.named: dict[int, set[str]] = {}  # the mistakes named at each slip
         self.replaced: list[tuple[int, int]] = []  # (line number, the equation it took the place of)
         self.wrong_number: tuple[str, sympy.Expr] | None = None
-        self.names = _with_aliases(ctx.equation_names())
 
     # one line ----------------------------------------------------------------
-    def item(self, line: Line) -> Item:
-        """The verdict on ``line``."""
-        try:
-            pairs = self.pairs(line.sides)
-        except ParseError as exc:
-            return self._item(line, "error", f"Could not be read: {exc}.", "")
+    def item(self, line: Line) -> Item | None:
+        """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
+        if line.exprs is None:
+            if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
+                return None  # prose with an "=" in it
+            return self._item(line, "not read", f"Not read: {line.error}.", "")
+        if line.defines:
+            return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
+        pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             return self._correct(line, pairs, answer)
@@ -103,9 +110,9 @@ class Trace:
             return self._carried(line)
         return self._slip(line, pairs, answer)
 
-    def pairs(self, sides: tuple[str, ...]) -> list[Pair]:
-        """Each ``=`` of the sides, read in the problem's names."""
-        exprs = [self.ctx.in_unknowns(parse(s, self.names).expr) for s in sides]
+    def pairs(self, line: Line) -> list[Pair]:
+        """Each ``=`` of the line, in the unknowns."""
+        sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in line.exprs or ()]
         out = []
         for i in range(len(sides) - 1):
             text = f"{sides[i]} = {sides[i + 1]}"
@@ -220,14 +227,14 @@ class Trace:
         value = number_of(right.xreplace(self.pts[0]))
         if value is None:
             return False
-        pattern = re.compile(rf"(?<![\w.]){re.escape(wrong.lstrip('+-'))}(?![\w.])")
-        fixed = tuple(pattern.sub(f"({value.real!r})", s) for s in line.sides)
-        if fixed == line.sides:
-            return False
         try:
-            return self.holds(self.pairs(fixed), self.truth)
-        except ParseError:
+            written = sympy.Rational(wrong.lstrip("+-"))
+        except (TypeError, ValueError):
             return False
+        exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
+        if exprs == line.exprs:
+            return False
+        return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
 
     def _slips_named(self) -> str:
         numbers = [str(n) for n in self.slips]
@@ -237,14 +244,15 @@ class Trace:
     def _answer(self, line: Line) -> Item | None:
         """``v_A2n = -1.11``: a result's name = a number, judged as an answer is (figures
         written, rounding of intermediates, the mistakes that give it)."""
-        if len(line.sides) != 2 or line.sides[0] not in self.ctx.results:
+        left = line.exprs[0] if line.exprs else None
+        if len(line.sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in self.ctx.results:
             return None
-        m = _NUMBER_SIDE.match(line.sides[1])
+        m = _NUMBER_SIDE.match(student(line.sides[1]))
         if not m:
             return None
         sign, number, unit = m.groups()
         number = ("-" if sign == "-" else "") + number
-        r = self.ctx.results[line.sides[0]]
+        r = self.ctx.results[left.name]
         try:
             u = units.parse_unit(unit) if unit else None
             return number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
@@ -305,13 +313,4 @@ def _solve(
         target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
         roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
         out.append(roots[0])
-    return out
-
-
-def _with_aliases(names: dict) -> dict:
-    """The problem's names, and the notes' spellings of those that are missing (v_A for v_A1)."""
-    out = dict(names)
-    for alias, name in ALIASES.items():
-        if alias not in out and name in names:
-            out[alias] = names[name]
     return out

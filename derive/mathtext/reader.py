@@ -1,0 +1,182 @@
+"""The relations of a typed text, each with where it stands: plain lines, Markdown, LaTeX.
+
+A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( … \\)``,
+``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is rewritten as plain
+text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
+HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
+relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
+"and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag
+``(3)`` is taken off, a lead-in up to a colon (``CLM:``) and a unit after a number are
+dropped. Words stay: what a name means is the caller's business.
+
+>>> [(r.line, r.sides) for r in read_relations("2x + y = 5\\nsubtract: 3x = -3  so x = -1, y = 7")]
+[(1, ('2x + y', '5')), (2, ('3x', '-3')), (2, ('x', '-1')), (2, ('y', '7'))]
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from derive.mathtext.latex import latex_to_plain
+
+#: The most relations read from one text.
+MAX_RELATIONS = 400
+
+
+@dataclass(frozen=True)
+class Relation:
+    """One relation of a text: ``line`` (1-based) and ``column`` (0-based) where its line
+    starts, ``written`` that line (or row) as typed, ``sides`` in plain syntax (``a = b = c``
+    has three), ``tag`` its label ("3" for ``(3)``; "" where none)."""
+
+    line: int
+    column: int
+    written: str
+    sides: tuple[str, ...]
+    tag: str = ""
+
+
+_ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
+_OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
+_CLOSE = {"$$": re.compile(r"\$\$"), r"\[": re.compile(r"\\\]"), r"\(": re.compile(r"\\\)"), "$": re.compile(r"(?<!\\)\$")}
+_ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
+_ARROW = re.compile(
+    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and)(?![\w])",
+    re.I,
+)
+_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?)\s*\)\s*$")
+_TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
+_LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
+_UNIT_END = re.compile(
+    r"(?<=[\d.)\s])\s*(?:m\s*/\s*s|m\s*s\^?-1|ms\^?-1|ft/s|km/h|mi/h|mph|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug|m|s|N|g)"
+    r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
+)
+_TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
+_COMMENT = re.compile(r"<!--.*?-->", re.S)
+_RELATION = re.compile(r"=|≈")
+
+
+def read_relations(text: str) -> tuple[Relation, ...]:
+    """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
+    out: list[Relation] = []
+    for line, column, written, plain in pieces(text):
+        for part in split_relations(plain):
+            r = relation(line, column, written, part)
+            if r is not None:
+                out.append(r)
+                if len(out) >= MAX_RELATIONS:
+                    return tuple(out)
+    return tuple(out)
+
+
+def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
+    """(line, column, as written, plain text) of each line or row of mathematics."""
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+    lines = text.split("\n")
+    n, close = 0, None
+    while n < len(lines):
+        raw = _tex_comment(lines[n])
+        if close is None:
+            plain, close = _line(raw)
+            if plain.strip():
+                yield n + 1, len(raw) - len(raw.lstrip()), lines[n].strip(), plain
+        else:  # inside a display that spans lines: each row ends at \\ or at the line's end
+            m = close.search(raw)
+            body = raw[: m.start()] if m else raw
+            for row in re.split(r"\\\\", body):
+                if row.strip():
+                    yield n + 1, len(raw) - len(raw.lstrip()), lines[n].strip(), latex_to_plain(row)
+            if m:
+                rest, close = _line(raw[m.end() :])
+                if rest.strip():
+                    yield n + 1, m.end(), lines[n].strip(), rest
+        n += 1
+
+
+def _line(raw: str) -> tuple[str, re.Pattern | None]:
+    """One line outside a display: its text with each piece of mathematics in it made plain
+    (rows of a display on one line joined by ";"), and the closing mark of a display it
+    opens and does not close (None where it closes all)."""
+    out, i = [], 0
+    while True:
+        m = _OPEN.search(raw, i)
+        if m is None:
+            out.append(raw[i:])
+            return " ".join(out), None
+        out.append(raw[i : m.start()])
+        mark = m.group(0)
+        close = _CLOSE.get(mark, _ENV_CLOSE)
+        end = close.search(raw, m.end())
+        if end is None:
+            body = raw[m.end() :]
+            out += [" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body))]
+            return " ".join(out), close
+        body = raw[m.end() : end.start()]
+        out.append(" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body)))
+        i = end.end()
+
+
+def _tex_comment(line: str) -> str:
+    """A line without its TeX comment (``%`` not after a backslash)."""
+    m = re.search(r"(?<!\\)%", line)
+    return line[: m.start()] if m and not re.search(r"\d\s*$", line[: m.start()]) else line
+
+
+def split_relations(plain: str) -> list[str]:
+    """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
+    brackets) that comes before another relation."""
+    plain = plain.replace("≈", "=")
+    parts: list[str] = []
+    for chunk in _ARROW.split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
+        for piece in _top_level_split(chunk, ";"):
+            parts += _comma_split(piece)
+    return [p for p in parts if _RELATION.search(p)]
+
+
+def _comma_split(piece: str) -> list[str]:
+    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one."""
+    bits = _top_level_split(piece, ",")
+    out: list[str] = []
+    for bit in bits:
+        if out and "=" in bit and "=" in out[-1]:
+            out.append(bit)
+        elif out:
+            out[-1] += "," + bit
+        else:
+            out.append(bit)
+    return out
+
+
+def _top_level_split(s: str, sep: str) -> list[str]:
+    out, depth, start = [], 0, 0
+    for i, c in enumerate(s):
+        depth += {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0)
+        if c == sep and depth == 0:
+            out.append(s[start:i])
+            start = i + 1
+    out.append(s[start:])
+    return out
+
+
+def relation(line: int, column: int, written: str, text: str) -> Relation | None:
+    """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
+    inequality."""
+    tag = ""
+    text = _TICK.sub(" ", text)
+    m = _TAG_START.match(text)
+    if m:
+        tag, text = m.group(1) or m.group(2), text[m.end() :]
+    text = _LEAD.sub("", text.strip())
+    m = _TAG_END.search(text)
+    if m:
+        tag, text = m.group(1), text[: m.start()]
+    text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
+        return None
+    sides = tuple(_UNIT_END.sub("", s.strip()).strip() for s in text.split("="))
+    if any(not s for s in sides):
+        return None
+    return Relation(line, column, written, sides, tag)
