@@ -27,6 +27,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 from support.derivation_corpus import Case, load_cases  # noqa: E402
 
 CASES = load_cases()
+#: The verdicts of a line's relations, from the least to the most serious.
+RANK = ("not read", "error", "correct", "carried", "again", "wrong", "unit mismatch")
 #: The checker's name of a slip its report gives in words (the rest are mistakes' names).
 RESULTS: dict[str, list[str]] = {}
 
@@ -45,7 +47,9 @@ def checker_lines(cli, case: Case) -> dict[int, tuple[str, str]]:
         slip = item.get("slip") or ",".join(d["mistake"] for d in item.get("diagnosis", []))
         if status == "wrong" and item.get("again"):
             status = "again"
-        out.setdefault(int(item["name"]), (status, slip))
+        n = int(item["name"])  # a line of several relations: its worst verdict
+        if n not in out or RANK.index(status) > RANK.index(out[n][0]):
+            out[n] = (status, slip)
     return out
 
 

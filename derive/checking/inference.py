@@ -38,6 +38,7 @@ class Read:
     exprs: tuple[sympy.Expr, ...] | None
     error: str = ""
     defines: str = ""
+    own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
 
 
 def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
@@ -192,7 +193,8 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
-    return Read(r.number, r.written, r.sides, r.tag, exprs, defines=r.defines)
+    own = any(_placeholders(e) for e in r.exprs)
+    return Read(r.number, r.written, r.sides, r.tag, exprs, defines=r.defines, own_names=own)
 
 
 def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:

@@ -155,7 +155,11 @@ class Trace:
         if not expected and j is not None and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
-        return self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
+        if line.own_names:  # derive's names are not the student's: no "expected" in them
+            expected = ""
+        slip = ",".join(d.mistake for d in diags) or ("arithmetic" if "arithmetic" in detail else "")
+        item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
+        return replace(item, slip=slip, again=bool(again))
 
     def _explain(self, line: Line, bad: Pair, answer: Item | None) -> tuple[tuple[Diagnosis, ...], int | None, str]:
         """The mistakes that explain the slip ``bad``, the equation it stands for, and the

@@ -85,7 +85,8 @@ def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = re.sub(r"(?<=\d)(?=[A-Za-z])", " ", text)  # 3eu -> 3 eu
+    text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
 
     def split(m: re.Match) -> str:
         word = m.group(0)

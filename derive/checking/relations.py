@@ -64,6 +64,9 @@ def solve_with(
         if fast is not None:
             out.append(fast)
             continue
+        cf = coefficients(F.xreplace(pt), U)
+        if cf is None or any(sum(m) > 2 for m in cf):  # beyond a quadratic: not an equation of this impact
+            return None
         eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
         eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
         try:
