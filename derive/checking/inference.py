@@ -112,7 +112,11 @@ def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
     out.append(("the common velocity", common_velocity(ctx)))
     derived = ctx.derived()
     out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
+    out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
     out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
+    nm = ctx.model.nm
+    zeros = ctx.model.zeros
+    out += [(c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros]
     return out
 
 
@@ -144,6 +148,9 @@ def _infer(
             itertools.product(cands, repeat=len(group)),
             key=lambda combo: _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth),
         )
+        trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
+        if _score(pairs, trial, ctx, pt, truth) <= _score(pairs, mapping, ctx, pt, truth):
+            continue  # nothing holds either way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what

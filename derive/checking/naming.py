@@ -85,20 +85,31 @@ def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
+    text = re.sub(r"\b([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text)
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
 
     def split(m: re.Match) -> str:
         word = m.group(0)
-        if word in known or name_like(word) and "_" in word or len(word) > 4 or word in FUNCTION_WORDS:
+        if word in known or word in FUNCTION_WORDS or len(word.partition("_")[0]) > 3:
             return word
         head, _, sub = word.partition("_")
         letters = list(head)
         if sub:
             letters[-1] += "_" + sub
-        return " ".join(letters) if all(x in known for x in letters) else word
+        return " ".join(letters) if len(letters) > 1 and all(x in known for x in letters) else word
 
-    return _NAME.sub(split, text)
+    return _NAME.sub(split, notes_names(text))
+
+
+def notes_names(text: str) -> str:
+    """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
+    ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""
+    text = re.sub(r"\b[vV]_([AB])([12])([nt])\b", r"v_\1\2\3", text)
+    text = re.sub(r"\b[vV]_([AB])([nt])([12])\b", r"v_\1\3\2", text)
+    text = re.sub(r"\bM_([AB])\b", r"m_\1", text)
+    return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
 
 
 FUNCTION_WORDS = frozenset({"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"})
@@ -151,6 +162,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                 if u_used:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
     out["u"] = before["A"]
+    if ctx.problem.fixed_B:  # one body: its mass is m
+        out["m"] = ctx.model.m_A
     if u_used:
         out["v"] = after["A"]
     for name in COMMON:
