@@ -25,6 +25,7 @@ LAYERS = (
         "derive.resources",
         "derive.records",
         "derive.fileio",
+        "derive.mathtext",
     ),
     ("derive.problem",),
     ("derive.physics",),

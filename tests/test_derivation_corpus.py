@@ -18,13 +18,9 @@ while the rate is measured.
 from __future__ import annotations
 
 import json
-import sys
-from pathlib import Path
 
 import pytest
-
-sys.path.insert(0, str(Path(__file__).parent))
-from support.derivation_corpus import Case, load_cases  # noqa: E402
+from support.derivation_corpus import Case, load_cases
 
 CASES = load_cases()
 #: The verdicts of a line's relations, from the least to the most serious.

@@ -50,11 +50,11 @@ def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Rea
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
-    names = Open({**problem, **_speeds(ctx)})
+    names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     defs = _definitions(raw, meanings)
     signs = (sign,) if sign else (1, -1)
-    _score_, mapping, inferred, s = max(
+    _, mapping, inferred, s = max(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, truth), sg) for sg in signs), key=lambda c: c[0]
     )
     lines = [_resolved(r, mapping) for r in raw]
@@ -116,7 +116,9 @@ def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
     out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
     nm = ctx.model.nm
     zeros = ctx.model.zeros
-    out += [(c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros]
+    out += [
+        (c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros
+    ]
     return out
 
 
@@ -146,11 +148,13 @@ def _infer(
     for group in groups:
         best = max(
             itertools.product(cands, repeat=len(group)),
-            key=lambda combo: _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth),
+            key=lambda combo: _score(
+                pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth
+            ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
-        if _score(pairs, trial, ctx, pt, truth) <= _score(pairs, mapping, ctx, pt, truth):
-            continue  # nothing holds either way: the name stays unknown
+        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + 2:
+            continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what
@@ -212,9 +216,7 @@ def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, 
     if habit:
         out.append("Read " + ", ".join(habit) + ".")
     if inferred:
-        out.append(
-            "Inferred from the relations: " + ", ".join(f"{n} is {what}" for n, what in inferred.items()) + "."
-        )
+        out.append("Inferred from the relations: " + ", ".join(f"{n} is {what}" for n, what in inferred.items()) + ".")
     if sign == -1 and not declared_sign:
         out.append("Inferred from the values written: the positive direction is opposite to derive's n (B toward A).")
     return out

@@ -20,19 +20,19 @@ import sympy
 
 from derive.checking import mistakes
 from derive.checking.context import Context
-from derive.checking.inference import Read, read_lines
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
+from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied, shown
 from derive.checking.report import Diagnosis, Item
 from derive.errors import InputError
+from derive.mathtext.notation import student
 from derive.numbers import format_number
 from derive.problem import units
-from derive.mathtext.notation import student
 from derive.records import dataclass
 
 TRUE = "substituting the correct values"

@@ -21,15 +21,12 @@ A derivation is written in the student's names, not derive's. They are read, in 
 
 from __future__ import annotations
 
-import itertools
 import re
 from collections.abc import Iterator, Mapping
 
 import sympy
 
 from derive.checking.context import Context
-from derive.checking.figures import literal_tolerance
-from derive.checking.numeric import number_of
 from derive.mathtext.notation import student
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import DIMENSIONLESS
@@ -54,20 +51,21 @@ class Open(Mapping):
     symbol for every other name that looks like one (a letter with a subscript, a single
     letter); words do not (so prose fails to parse and is trimmed)."""
 
-    def __init__(self, known: dict[str, sympy.Expr]) -> None:
+    def __init__(self, known: dict[str, sympy.Expr], extra: set[str] = frozenset()) -> None:
         self.known = known
+        self.extra = extra  # the student's names with a meaning (habits, declarations)
         self.placeholders: dict[str, sympy.Symbol] = {}
 
     def __getitem__(self, name: str) -> tuple[sympy.Expr, tuple]:
         if name in self.known:
             return self.known[name], DIMENSIONLESS
-        if not name_like(name):
+        if not name_like(name) and name not in self.extra:
             raise KeyError(name)
         sym = self.placeholders.setdefault(name, sympy.Symbol(PREFIX + name))
         return sym, DIMENSIONLESS
 
     def __contains__(self, name: object) -> bool:
-        return isinstance(name, str) and (name in self.known or name_like(name))
+        return isinstance(name, str) and (name in self.known or name in self.extra or name_like(name))
 
     def __iter__(self) -> Iterator[str]:
         return iter(self.known)
@@ -112,7 +110,9 @@ def notes_names(text: str) -> str:
     return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
 
 
-FUNCTION_WORDS = frozenset({"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"})
+FUNCTION_WORDS = frozenset(
+    {"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"}
+)
 
 
 def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
@@ -161,6 +161,12 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
                 if u_used:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
+        if not u_used:  # the notes' habit: v_A is the velocity before
+            out[f"v_{body}"] = before[body]
+    names = ctx.equation_names()
+    for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
+        if name in names:
+            out.setdefault(alias, names[name][0])
     out["u"] = before["A"]
     if ctx.problem.fixed_B:  # one body: its mass is m
         out["m"] = ctx.model.m_A
@@ -168,7 +174,6 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     for name in COMMON:
         out[name] = common_velocity(ctx)
-    names = ctx.equation_names()
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
 
 

@@ -76,7 +76,8 @@ def latex_to_plain(tex: str) -> str:
     s = re.sub(r"_\{([A-Za-z0-9]+)\}", r"_\1", s)
     s = re.sub(r"_\{([A-Za-z0-9]+),?\s*([A-Za-z0-9]+)\}", r"_\1\2", s)
     s = re.sub(r"\s+_", "_", s)
-    return " ".join(s.replace("{", "(").replace("}", ")").split())
+    s = " ".join(s.replace("{", "(").replace("}", ")").split())
+    return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
 
 
 def _text(m: re.Match) -> str:

@@ -40,7 +40,12 @@ class Relation:
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
 _OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
-_CLOSE = {"$$": re.compile(r"\$\$"), r"\[": re.compile(r"\\\]"), r"\(": re.compile(r"\\\)"), "$": re.compile(r"(?<!\\)\$")}
+_CLOSE = {
+    "$$": re.compile(r"\$\$"),
+    r"\[": re.compile(r"\\\]"),
+    r"\(": re.compile(r"\\\)"),
+    "$": re.compile(r"(?<!\\)\$"),
+}
 _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
 _ARROW = re.compile(
     r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and)(?![\w])",
@@ -72,48 +77,70 @@ def read_relations(text: str) -> tuple[Relation, ...]:
 
 
 def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
-    """(line, column, as written, plain text) of each line or row of mathematics."""
+    """(line, column, as written, plain text) of each line, and of each row of a display
+    (a display that spans lines is one row until ``\\\\``, at the line where the row starts)."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
     text = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
     lines = text.split("\n")
-    n, close = 0, None
+    n, close, rows = 0, None, []
     while n < len(lines):
         raw = _tex_comment(lines[n])
         if close is None:
-            plain, close = _line(raw)
+            plain, close, rows = _line(raw, n + 1)
             if plain.strip():
-                yield n + 1, len(raw) - len(raw.lstrip()), lines[n].strip(), plain
-        else:  # inside a display that spans lines: each row ends at \\ or at the line's end
+                yield n + 1, len(raw) - len(raw.lstrip()), _unwrapped(lines[n]), plain
+        else:
             m = close.search(raw)
-            body = raw[: m.start()] if m else raw
-            for row in re.split(r"\\\\", body):
-                if row.strip():
-                    yield n + 1, len(raw) - len(raw.lstrip()), lines[n].strip(), latex_to_plain(row)
+            rows.append((n + 1, raw[: m.start()] if m else raw))
             if m:
-                rest, close = _line(raw[m.end() :])
-                if rest.strip():
-                    yield n + 1, m.end(), lines[n].strip(), rest
+                yield from _rows(rows, lines)
+                plain, close, rows = _line(raw[m.end() :], n + 1)
+                if plain.strip():
+                    yield n + 1, m.end(), lines[n].strip(), plain
         n += 1
+    if rows:
+        yield from _rows(rows, lines)
 
 
-def _line(raw: str) -> tuple[str, re.Pattern | None]:
+def _unwrapped(line: str) -> str:
+    """A line as written, without the delimiters of a display that is all of it."""
+    m = re.fullmatch(r"\s*(?:\$\$(.+)\$\$|\\\[(.+)\\\])\s*", line)
+    return (m.group(1) or m.group(2)).strip() if m else line.strip()
+
+
+def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
+    """The rows of a display that spans lines: its text split at ``\\\\`` only."""
+    row: list[str] = []
+    first = rows[0][0]
+    for number, text in rows:
+        parts = re.split(r"\\\\", text)
+        for k, part in enumerate(parts):
+            if k and "".join(row).strip():
+                yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+            if k:
+                row, first = [], number
+            if not "".join(row).strip():
+                first = number
+            row.append(part)
+    if "".join(row).strip():
+        yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+
+
+def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int, str]]]:
     """One line outside a display: its text with each piece of mathematics in it made plain
-    (rows of a display on one line joined by ";"), and the closing mark of a display it
-    opens and does not close (None where it closes all)."""
+    (rows of a display on one line joined by ";"); the closing mark of a display it opens
+    and does not close (None where it closes all), and that display's text so far."""
     out, i = [], 0
     while True:
         m = _OPEN.search(raw, i)
         if m is None:
             out.append(raw[i:])
-            return " ".join(out), None
+            return " ".join(out), None, []
         out.append(raw[i : m.start()])
-        mark = m.group(0)
-        close = _CLOSE.get(mark, _ENV_CLOSE)
+        close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
-            body = raw[m.end() :]
-            out += [" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body))]
-            return " ".join(out), close
+            return " ".join(out), close, [(number, raw[m.end() :])]
         body = raw[m.end() : end.start()]
         out.append(" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body)))
         i = end.end()
