@@ -17,7 +17,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.naming import PREFIX, Open, common_velocity, declarations, habits, read_side, rewrite
+from derive.checking.naming import PREFIX, Open, common_velocity, declaration, declarations, habits, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -43,7 +43,7 @@ class Read:
 
 def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences)."""
-    relations = read_relations(text)
+    relations = tuple(r for r in read_relations(text) if not declaration(r.written))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     rewritten = [tuple(rewrite(s, known) for s in r.sides) for r in relations]

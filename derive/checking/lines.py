@@ -69,7 +69,23 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
-    return [i for i in items if i is not None], notes
+    return merged([i for i in items if i is not None]), notes
+
+
+#: A line's verdicts, least serious first: a line of several relations shows its worst once.
+RANK = ("correct", "not read", "carried", "wrong", "error")
+
+
+def merged(items: list[Item]) -> list[Item]:
+    """One item per line of the file (``a = 1, b = 2`` and ``… ⇒ …`` are one line): its worst verdict."""
+    out: list[Item] = []
+    for item in items:
+        if out and out[-1].name == item.name and item.name:
+            if RANK.index(item.status) > RANK.index(out[-1].status):
+                out[-1] = item
+            continue
+        out.append(item)
+    return out
 
 
 class Trace:

@@ -161,8 +161,6 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
                 if u_used:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
-        if not u_used:  # the notes' habit: v_A is the velocity before
-            out[f"v_{body}"] = before[body]
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
@@ -180,6 +178,12 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
 def _post(ctx: Context, body: str) -> sympy.Expr | None:
     nm = ctx.model.nm
     return getattr(nm, f"{body}2n")
+
+
+def declaration(line: str) -> bool:
+    """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
+    line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
+    return bool(_DECLARE.match(line) or _POSITIVE.match(line))
 
 
 def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
