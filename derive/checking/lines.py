@@ -47,6 +47,7 @@ class Pair:
     left: sympy.Expr
     right: sympy.Expr
     tol: float
+    raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
 
     @property
     def difference(self) -> sympy.Expr:
@@ -120,6 +121,9 @@ class Trace:
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
+            own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
+            if own:  # the student's own equation, at the figures written, takes its place in the world
+                self._replace(line, own[0], slip=False)
             return self._carried(line)
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
@@ -128,11 +132,13 @@ class Trace:
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
-        sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in line.exprs or ()]
+        raw = list(line.exprs or ())
+        sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         for i in range(len(sides) - 1):
             text = f"{sides[i]} = {sides[i + 1]}"
-            out.append(Pair(text, exprs[i], exprs[i + 1], max(literal_tolerance(text, self.ctx.data), 1e-9)))
+            tol = max(literal_tolerance(text, self.ctx.data), 1e-9)
+            out.append(Pair(text, exprs[i], exprs[i + 1], tol, (raw[i], raw[i + 1])))
         return out
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
@@ -181,6 +187,10 @@ class Trace:
         """The mistakes that explain the slip ``bad``, the equation it stands for, and the
         rest of the sentence that reports it."""
         if not bad.difference.free_symbols & set(self.U):
+            diags = self._before(bad)
+            if diags:
+                said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
+                return diags, None, f": it {said}."
             return (), None, ": " + self._arithmetic(bad)
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
@@ -193,6 +203,30 @@ class Trace:
         if j is None or answer is not None:
             return diags, j, f": it {said}."
         return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}."
+
+    def _before(self, bad: Pair) -> tuple[Diagnosis, ...]:
+        """The mistakes in the values before the impact (sin and cos swapped, B's sign, radians,
+        masses) that make ``bad`` hold; the velocities they give become the slip's world."""
+        if bad.raw is None:
+            return ()
+        model, found = self.ctx.model, []
+        for m in mistakes.REGISTRY.values():
+            v = m.build(model)
+            if v is None or (v.pre is None and v.masses is None):
+                continue
+            subs = dict(v.pre or {})
+            if v.masses is not None:
+                subs.update({model.m_A: v.masses[0], model.m_B: v.masses[1]})
+            sides = [self.ctx.in_unknowns(x.xreplace(subs)) for x in bad.raw]
+            if self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
+                found.append(m)
+        if not found:
+            return ()
+        out = next((o for o in self.ctx.singles() if o.mistake is not None and o.mistake.name == found[0].name), None)
+        if out is not None and self.world is None:  # the student's equations are now the mistake's
+            self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
+            self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
+        return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
@@ -257,7 +291,7 @@ class Trace:
         return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
 
     def _slips_named(self) -> str:
-        numbers = [str(n) for n in self.slips]
+        numbers = [str(n) for n in dict.fromkeys(self.slips)]
         return f"the slip in line {numbers[0]}" if len(numbers) == 1 else f"the slips in lines {listed(numbers)}"
 
     # answers -----------------------------------------------------------------
