@@ -106,6 +106,7 @@ class Trace:
         self.named: dict[int, set[str]] = {}  # the mistakes named at each slip
         self.replaced: list[tuple[int, int]] = []  # (line number, the equation it took the place of)
         self.wrong_number: tuple[str, sympy.Expr] | None = None
+        self.held: list[Pair] = []  # the right relations in the unknowns, so far
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -123,7 +124,7 @@ class Trace:
         if self.world is not None and self.holds(pairs, self.world):
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
-                self._replace(line, own[0], slip=False)
+                self._refine(own[0])
             return self._carried(line)
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
@@ -148,6 +149,7 @@ class Trace:
 
     # verdicts ----------------------------------------------------------------
     def _correct(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
+        self.held += [p for p in pairs if p.difference.free_symbols & set(self.U)]
         notes = ()
         if self.world is not None and not self.holds(pairs, self.world):
             notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
@@ -162,8 +164,14 @@ class Trace:
         return self._item(line, "carried", msg, how)
 
     def _slip(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
-        bad = next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
+        world = self.world if self.world is not None else self.truth
+        bad = next((p for p in pairs if not self.holds([p], world)), None)
+        bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail = self._explain(line, bad, answer)
+        if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
+            ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
+            if ends.difference.free_symbols & set(self.U):
+                self._replace(line, ends, slip=False)
         again = [n for n, names in self.named.items() if names & {d.mistake for d in diags}]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
@@ -179,7 +187,8 @@ class Trace:
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
         if line.own_names:  # derive's names are not the student's: no "expected" in them
             expected = ""
-        slip = ",".join(d.mistake for d in diags) or ("arithmetic" if "arithmetic" in detail else "")
+        arithmetic = not bad.difference.free_symbols & set(self.U)
+        slip = ",".join(d.mistake for d in diags) or ("arithmetic" if arithmetic else "")
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
         return replace(item, slip=slip, again=bool(again))
 
@@ -257,20 +266,44 @@ class Trace:
         if slip:
             self.slips.append(line.number)
 
+    def _refine(self, pair: Pair) -> None:
+        """Put a carried line's own equation in place of one of the world's that it barely
+        changes (its rounded numbers), so that later lines are judged from the student's."""
+        assert self.world is not None
+        F = pair.difference
+        for j in list(self.equations):
+            trial = _solve({**self.equations, j: F}, self.U, self.pts, self.world)
+            if trial is None:
+                continue
+            near = all(
+                abs((number_of(t[u]) or 0) - (number_of(w[u]) or 0)) <= 0.02 * max(1.0, abs(number_of(w[u]) or 0))
+                for t, w in zip(trial, self.world, strict=True)
+                for u in self.U
+            )
+            if near:
+                self.equations[j] = F
+                self.world = trial
+                return
+
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for: the most alike of (1)-(4) in its unknowns
         whose place it can take (the others with it still determine the velocities)."""
         cf = coefficients(F.xreplace(self.pts[0]), self.U)
         if not cf:
             return None
-        best, score = None, -1.0
+        best, score = None, (-1, False, -9, -1.0)
         for j, G in self.equations.items():
             cg = coefficients(G.xreplace(self.pts[0]), self.U)
             if not cg:
                 continue
-            s = _alike(cf, cg)
-            trial = {**self.equations, j: F}
-            if s > score and _solve(trial, self.U, self.pts[:1], self.truth[:1]) is not None:
+            trial = _solve({**self.equations, j: F}, self.U, self.pts[:1], self.truth[:1])
+            if trial is None:
+                continue
+            # first: how many of the relations the student wrote and got right still hold then
+            kept = sum(1 for p in self.held[-12:] if _holds(p, trial, self.pts[:1], self.U))
+            alike = _alike(cf, cg)
+            s = (kept, alike >= 0.5, -j, alike)  # then the first of those much alike (substituted into)
+            if s > score:
                 best, score = j, s
         return best
 
