@@ -71,13 +71,19 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
 
 
 def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
-    exprs = []
+    exprs: list[sympy.Expr] = []
+    shown = r.sides
     try:
         for i, side in enumerate(sides):
-            exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
+            try:
+                exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
+            except ParseError:
+                if i or len(sides) < 3:
+                    raise
+                shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
-    return Read(r.line, r.written, r.sides, r.tag, tuple(exprs))
+    return Read(r.line, r.written, shown, r.tag, tuple(exprs))
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
@@ -137,14 +143,18 @@ def _infer(
         base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
     pairs = _pairs(ctx, raw, pt, truth)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
-    unknown = []
+    unknown: list[sympy.Symbol] = []
+    together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
     for pairs_of_line in pairs:
         for _t, (left, right) in pairs_of_line:
             found = sorted(_placeholders(left) | _placeholders(right), key=str)
-            unknown += [p for p in found if p not in mapping and p not in unknown]
+            new = [p for p in found if p not in mapping]
+            unknown += [p for p in new if p not in unknown]
+            if len(new) >= 2 and not together:
+                together = new[:JOINT]
     cands = _candidates(ctx, truth)
     inferred: dict[str, str] = {}
-    groups = [unknown[:JOINT]] + [[p] for p in unknown[JOINT:]] if unknown else []
+    groups = ([together] if together else []) + [[p] for p in unknown if p not in together]
     for group in groups:
         best = max(
             itertools.product(cands, repeat=len(group)),

@@ -156,6 +156,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         if u_used:
             for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
                 out[spelled] = after[body]
+        out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
         if oblique:
             for c in "nt":
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
@@ -166,6 +167,10 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         if name in names:
             out.setdefault(alias, names[name][0])
     out["u"] = before["A"]
+    if oblique:  # a single body's components
+        out["u_n"], out["u_t"] = nm.A1n, nm.A1t
+        if u_used:
+            out["v_n"], out["v_t"] = nm.A2n, nm.A2t
     if ctx.problem.fixed_B:  # one body: its mass is m
         out["m"] = ctx.model.m_A
     if u_used:

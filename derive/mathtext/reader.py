@@ -51,7 +51,7 @@ _ARROW = re.compile(
     r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and)(?![\w])",
     re.I,
 )
-_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?)\s*\)\s*$")
+_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
 _UNIT_END = re.compile(
@@ -156,6 +156,7 @@ def split_relations(plain: str) -> list[str]:
     """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
     brackets) that comes before another relation."""
     plain = plain.replace("≈", "=")
+    plain = re.sub(r"(?<=[A-Za-z])\s*\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)"
     parts: list[str] = []
     for chunk in _ARROW.split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
         for piece in _top_level_split(chunk, ";"):
