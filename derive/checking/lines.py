@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
+from decimal import Decimal
 
 import sympy
 
@@ -22,6 +23,7 @@ from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
+from derive.checking.figures import judge as at_figures_written
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
@@ -369,8 +371,22 @@ def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbo
             return False
         scale = max(abs(left), abs(right))
         if abs(left - right) > 2 * p.tol * scale and not satisfied(p.difference, vals, U, [pt], p.tol):
-            return False
+            if not _at_figures(p, left, right):
+                return False
     return True
+
+
+def _at_figures(p: Pair, left: complex, right: complex) -> bool:
+    """A side that is a number as written (``= -12``, ``= 20``) is right at its figures
+    (±1 in its last digit): -11.88 is -12 at two figures."""
+    for text, other in zip(p.text.split(" = ", 1)[::-1], (left, right), strict=True):
+        m = _NUMBER_SIDE.match(student(text.strip()))
+        if m and not m.group(3) and abs(other.imag) < 1e-12:
+            try:
+                return at_figures_written(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30), None)
+            except (ArithmeticError, ValueError):
+                return False
+    return False
 
 
 def _alike(a: dict, b: dict) -> float:

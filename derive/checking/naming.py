@@ -87,6 +87,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
+    text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
 
     def split(m: re.Match) -> str:
         word = m.group(0)
