@@ -23,8 +23,8 @@ from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
+from derive.checking.figures import figures, literal_tolerance
 from derive.checking.figures import judge as at_figures_written
-from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
@@ -109,6 +109,7 @@ class Trace:
         self.replaced: list[tuple[int, int]] = []  # (line number, the equation it took the place of)
         self.wrong_number: tuple[str, sympy.Expr] | None = None
         self.held: list[Pair] = []  # the right relations in the unknowns, so far
+        self.early: int | None = None  # the line where rounding too early was named
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -138,10 +139,13 @@ class Trace:
         raw = list(line.exprs or ())
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
+        # a chain that ends in a number as written: each side is compared with that number
+        ends = len(sides) >= 3 and _NUMBER_SIDE.match(student(sides[-1].strip())) is not None
         for i in range(len(sides) - 1):
-            text = f"{sides[i]} = {sides[i + 1]}"
+            k = len(sides) - 1 if ends else i + 1
+            text = f"{sides[i]} = {sides[k]}"
             tol = max(literal_tolerance(text, self.ctx.data), 1e-9)
-            out.append(Pair(text, exprs[i], exprs[i + 1], tol, (raw[i], raw[i + 1])))
+            out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
         return out
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
@@ -190,7 +194,8 @@ class Trace:
         if line.own_names:  # derive's names are not the student's: no "expected" in them
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
-        slip = ",".join(d.mistake for d in diags) or ("arithmetic" if arithmetic else "")
+        named = "rounded_too_early" if "rounded too early" in detail else "arithmetic" if arithmetic else ""
+        slip = ",".join(d.mistake for d in diags) or named
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
         return replace(item, slip=slip, again=bool(again))
 
@@ -209,7 +214,8 @@ class Trace:
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
-            return diags, j, ". No common mistake reproduces it."
+            early = self._rounded_early(line, bad)
+            return diags, j, early or ". No common mistake reproduces it."
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
             return diags, j, f": it {said}."
@@ -238,6 +244,25 @@ class Trace:
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
+
+    def _rounded_early(self, line: Line, bad: Pair) -> str:
+        """ ": rounded too early …" where the line is worked from numbers the student rounded to
+        two figures (not the data) and misses the value by more than its last figure."""
+        early = [
+            t
+            for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(line.sides))
+            if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in self.ctx.data
+        ]
+        if not early or self.early is not None:
+            return ""
+        left, right = (number_of(x.xreplace(self.pts[0]).xreplace(self.truth[0])) for x in (bad.left, bad.right))
+        if left is None or right is None or not right:
+            return ""
+        drift = abs(left - right) / max(abs(left), abs(right)) * 100
+        self.early = line.number
+        return (
+            f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
+        )
 
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
@@ -370,9 +395,9 @@ def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbo
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
-        if abs(left - right) > 2 * p.tol * scale and not satisfied(p.difference, vals, U, [pt], p.tol):
-            if not _at_figures(p, left, right):
-                return False
+        far = abs(left - right) > 2 * p.tol * scale
+        if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not _at_figures(p, left, right):
+            return False
     return True
 
 
