@@ -171,7 +171,9 @@ class Trace:
 
     def _slip(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
         world = self.world if self.world is not None else self.truth
-        bad = next((p for p in pairs if not self.holds([p], world)), None)
+        failing = [p for p in pairs if not self.holds([p], world)]
+        bad = next((p for p in failing if not p.difference.free_symbols & set(self.U)), None)  # arithmetic first
+        bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail = self._explain(line, bad, answer)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
@@ -259,6 +261,8 @@ class Trace:
         if left is None or right is None or not right:
             return ""
         drift = abs(left - right) / max(abs(left), abs(right)) * 100
+        if drift > 3:  # more than rounding explains
+            return ""
         self.early = line.number
         return (
             f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
