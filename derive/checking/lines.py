@@ -141,10 +141,13 @@ class Trace:
         out = []
         # a chain that ends in a number as written: each side is compared with that number
         ends = len(sides) >= 3 and _NUMBER_SIDE.match(student(sides[-1].strip())) is not None
+        worked = (
+            _three_figures(sides, self.ctx.data) if ends else ""
+        )  # the student's own rounded numbers, at 3 figures or more
         for i in range(len(sides) - 1):
             k = len(sides) - 1 if ends else i + 1
             text = f"{sides[i]} = {sides[k]}"
-            tol = max(literal_tolerance(text, self.ctx.data), 1e-9)
+            tol = max(literal_tolerance(f"{text} {worked}", self.ctx.data), 1e-9)
             out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
         return out
 
@@ -403,6 +406,15 @@ def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbo
         if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not _at_figures(p, left, right):
             return False
     return True
+
+
+def _three_figures(sides: tuple[str, ...], data: set) -> str:
+    """The decimals of a line's middle sides written to 3 figures or more (their rounding is
+    the student's own, and allowed for; 2-figure ones are rounding too early)."""
+    found = re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides[1:-1]))
+    if any(figures(Decimal(t)) < 3 and sympy.Rational(t) not in data for t in found):
+        return ""
+    return " ".join(found)
 
 
 def _at_figures(p: Pair, left: complex, right: complex) -> bool:
