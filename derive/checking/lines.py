@@ -24,36 +24,19 @@ from derive.checking.context import Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import figures, literal_tolerance
-from derive.checking.figures import judge as at_figures_written
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
-from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied, shown
+from derive.checking.relations import Point, Values, coefficients, shown
 from derive.checking.report import Diagnosis, Item
+from derive.checking.worlds import NUMBER_SIDE, Pair, alike, holds_at, solve_world, three_figures
 from derive.errors import InputError
 from derive.mathtext.notation import student
 from derive.numbers import format_number
 from derive.problem import units
-from derive.records import dataclass
 
 TRUE = "substituting the correct values"
-_NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
-
-
-@dataclass(frozen=True)
-class Pair:
-    """One ``=`` of a line: its sides as written and in the unknowns (everything known in)."""
-
-    text: str
-    left: sympy.Expr
-    right: sympy.Expr
-    tol: float
-    raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
-
-    @property
-    def difference(self) -> sympy.Expr:
-        return self.left - self.right
 
 
 #: The most relations of one derivation that are judged (the rest are reported as not checked).
@@ -140,9 +123,9 @@ class Trace:
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         # a chain that ends in a number as written: each side is compared with that number
-        ends = len(sides) >= 3 and _NUMBER_SIDE.match(student(sides[-1].strip())) is not None
+        ends = len(sides) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
         worked = (
-            _three_figures(sides, self.ctx.data) if ends else ""
+            three_figures(sides, self.ctx.data) if ends else ""
         )  # the student's own rounded numbers, at 3 figures or more
         for i in range(len(sides) - 1):
             k = len(sides) - 1 if ends else i + 1
@@ -154,7 +137,7 @@ class Trace:
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
         """Whether every pair holds for ``values`` (at each sample point), within the
         precision of the decimals written."""
-        return all(_holds(p, values, self.pts, self.U) for p in pairs)
+        return all(holds_at(p, values, self.pts, self.U) for p in pairs)
 
     # verdicts ----------------------------------------------------------------
     def _correct(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
@@ -277,11 +260,11 @@ class Trace:
             return "Its two sides are not equal."
         sides = bad.text.split(" = ")
         left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
-        if _NUMBER_SIDE.match(sides[1]):
+        if NUMBER_SIDE.match(sides[1]):
             self.wrong_number = (sides[1], bad.left)
-        elif _NUMBER_SIDE.match(sides[0]):
+        elif NUMBER_SIDE.match(sides[0]):
             self.wrong_number = (sides[0], bad.right)
-        right_text = sides[1] if _NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
+        right_text = sides[1] if NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
         return f"{left_text} is {format_number(left.real, 4)}, not {right_text} (an arithmetic slip)."
 
     # the world of the slips ------------------------------------------------
@@ -294,7 +277,7 @@ class Trace:
             if j is not None:
                 self.equations[j] = F
                 self.replaced.append((line.number, j))
-                world = _solve(self.equations, self.U, self.pts, self.world or self.truth)
+                world = solve_world(self.equations, self.U, self.pts, self.world or self.truth)
                 if world is not None:
                     self.world = world
         if slip:
@@ -306,7 +289,7 @@ class Trace:
         assert self.world is not None
         F = pair.difference
         for j in list(self.equations):
-            trial = _solve({**self.equations, j: F}, self.U, self.pts, self.world)
+            trial = solve_world({**self.equations, j: F}, self.U, self.pts, self.world)
             if trial is None:
                 continue
             near = all(
@@ -330,13 +313,13 @@ class Trace:
             cg = coefficients(G.xreplace(self.pts[0]), self.U)
             if not cg:
                 continue
-            trial = _solve({**self.equations, j: F}, self.U, self.pts[:1], self.truth[:1])
+            trial = solve_world({**self.equations, j: F}, self.U, self.pts[:1], self.truth[:1])
             if trial is None:
                 continue
             # first: how many of the relations the student wrote and got right still hold then
-            kept = sum(1 for p in self.held[-12:] if _holds(p, trial, self.pts[:1], self.U))
-            alike = _alike(cf, cg)
-            s = (kept, alike >= 0.5, -j, alike)  # then the first of those much alike (substituted into)
+            kept = sum(1 for p in self.held[-12:] if holds_at(p, trial, self.pts[:1], self.U))
+            near = alike(cf, cg)
+            s = (kept, near >= 0.5, -j, near)  # then the first of those much alike (substituted into)
             if s > score:
                 best, score = j, s
         return best
@@ -368,7 +351,7 @@ class Trace:
         left = line.exprs[0] if line.exprs else None
         if len(line.sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in self.ctx.results:
             return None
-        m = _NUMBER_SIDE.match(student(line.sides[1]))
+        m = NUMBER_SIDE.match(student(line.sides[1]))
         if not m:
             return None
         sign, number, unit = m.groups()
@@ -393,68 +376,3 @@ class Trace:
         return Item(
             "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
         )
-
-
-def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
-    for pt, vals in zip(pts, values, strict=True):
-        left = number_of(p.left.xreplace(pt).xreplace(vals))
-        right = number_of(p.right.xreplace(pt).xreplace(vals))
-        if left is None or right is None:
-            return False
-        scale = max(abs(left), abs(right))
-        far = abs(left - right) > 2 * p.tol * scale
-        if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not _at_figures(p, left, right):
-            return False
-    return True
-
-
-def _three_figures(sides: tuple[str, ...], data: set) -> str:
-    """The decimals of a line's middle sides written to 3 figures or more (their rounding is
-    the student's own, and allowed for; 2-figure ones are rounding too early)."""
-    found = re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides[1:-1]))
-    if any(figures(Decimal(t)) < 3 and sympy.Rational(t) not in data for t in found):
-        return ""
-    return " ".join(found)
-
-
-def _at_figures(p: Pair, left: complex, right: complex) -> bool:
-    """A side that is a number as written (``= -12``, ``= 20``) is right at its figures
-    (±1 in its last digit): -11.88 is -12 at two figures."""
-    for text, other in zip(p.text.split(" = ", 1)[::-1], (left, right), strict=True):
-        m = _NUMBER_SIDE.match(student(text.strip()))
-        if m and not m.group(3) and abs(other.imag) < 1e-12:
-            try:
-                return at_figures_written(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30), None)
-            except (ArithmeticError, ValueError):
-                return False
-    return False
-
-
-def _alike(a: dict, b: dict) -> float:
-    """|cos| of the angle between two coefficient vectors (their linear parts)."""
-    keys = [m for m in set(a) | set(b) if sum(m) == 1]
-    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
-    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
-    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
-    return abs(dot) / (na * nb) if na and nb else 0.0
-
-
-def _solve(
-    equations: dict[int, sympy.Expr], U: tuple[sympy.Symbol, ...], pts: list[Point], near: list[Values]
-) -> list[Values] | None:
-    """The velocities that satisfy ``equations`` at each point (the root nearest ``near``)."""
-    out = []
-    for pt, guide in zip(pts, near, strict=True):
-        roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
-        if roots is None:
-            eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
-            try:
-                roots = [r for r in sympy.solve(eqs, list(U), dict=True, rational=False) if set(r) == set(U)]
-            except (NotImplementedError, ValueError, TypeError):
-                return None
-        if not roots:
-            return None
-        target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
-        roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
-        out.append(roots[0])
-    return out
