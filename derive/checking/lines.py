@@ -256,8 +256,8 @@ class Trace:
 
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
-        if left is None or right is None:
-            return "Its two sides are not equal."
+        if left is None or right is None or self.pts[0]:  # no sample values of symbolic givens are shown
+            return "its two sides are not equal (an arithmetic or algebra slip)."
         sides = bad.text.split(" = ")
         left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
         if NUMBER_SIDE.match(sides[1]):

@@ -33,10 +33,11 @@ from derive.problem.units import DIMENSIONLESS
 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
-    (r"(?:\\?Delta\s*(?:KE|T|E_?k)|KE\s*lost|loss\s+(?:of|in)\s+KE|KE\s+loss|lost\s+KE|T_?\(?lost\)?)", "T_lost"),
+    (r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+KE|KE\s+loss|lost\s+KE|T_?\(?lost\)?)", "T_lost"),
     (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
     (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
     (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
@@ -76,7 +77,13 @@ class Open(Mapping):
 
 def name_like(name: str) -> bool:
     """A name, not a word: ``x``, ``V``, ``u_A``, ``u1``, ``v_G`` (not ``of``, ``the``, ``KE``)."""
+    if name in GREEK:
+        return True
     return len(name) == 1 or re.fullmatch(r"[A-Za-z]{1,2}(?:_[A-Za-z0-9]{1,6}|\d{1,2})", name) is not None
+
+
+#: Greek letters students name things with (mu the reduced mass, omega, lambda).
+GREEK = frozenset({"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", "psi", "sigma", "tau", "delta"})
 
 
 def rewrite(text: str, known: set[str]) -> str:
@@ -150,7 +157,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     before = {"A": nm.A1n, "B": nm.B1n}
     after = {"A": _post(ctx, "A"), "B": _post(ctx, "B")}
     out: dict[str, sympy.Expr] = {}
-    u_used = used is None or any(re.fullmatch(r"u(?:_?[AB12ab]n?|)", n) for n in used)
+    u_used = used is None or any(re.fullmatch(r"u(?:_?[AB12ab]?[nt]?)?", n) for n in used)
     for body, one in (("A", "1"), ("B", "2")):
         for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
             out[spelled] = before[body]

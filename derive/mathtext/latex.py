@@ -18,6 +18,12 @@ _WORDS = {
     r"\varphi": " phi ",
     r"\pi": " pi ",
     r"\Delta": " Delta ",
+    r"\mu": " mu ",
+    r"\lambda": " lambda ",
+    r"\omega": " omega ",
+    r"\gamma": " gamma ",
+    r"\epsilon": " epsilon ",
+    r"\varepsilon": " epsilon ",
     r"\cdot": "*",
     r"\times": "*",
     r"\div": "/",
@@ -62,7 +68,8 @@ def latex_to_plain(tex: str) -> str:
     >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11)")
     'theta = atan(3.05/1.11)'
     """
-    s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", tex)
+    s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
+    s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
     s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
     s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
     s = _DROP.sub(" ", s)
