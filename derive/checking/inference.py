@@ -158,8 +158,9 @@ def _infer(
     for group in groups:
         best = max(
             itertools.product(cands, repeat=len(group)),
-            key=lambda combo: _score(
-                pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth
+            key=lambda combo: (
+                _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
+                + _natural(group, combo)
             ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
@@ -170,6 +171,15 @@ def _infer(
             inferred[p.name[1:]] = what
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
+    """A bonus for the natural reading of two names met together (x, y; a, b; p, q): the first
+    is A's, the second B's; it takes two more relations holding to read them the other way."""
+    if len(group) != 2:
+        return 0.0
+    first, second = (str(c[1]) for c in combo)
+    return 1.5 if "A" in first and "B" in second and "B" not in first else 0.0
 
 
 def _velocity(e: sympy.Expr) -> bool:

@@ -30,7 +30,7 @@ from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, coefficients, shown
 from derive.checking.report import Diagnosis, Item
-from derive.checking.worlds import NUMBER_SIDE, Pair, alike, holds_at, solve_world, three_figures
+from derive.checking.worlds import NUMBER_SIDE, Pair, alike, holds_at, solve_world, three_figures, written_right
 from derive.errors import InputError
 from derive.mathtext.notation import student
 from derive.numbers import format_number
@@ -359,9 +359,13 @@ class Trace:
         r = self.ctx.results[left.name]
         try:
             u = units.parse_unit(unit) if unit else None
-            return number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
+            item = number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
         except InputError:
             return None
+        x = item.expected_value
+        if item.correct and x is not None and not written_right(Decimal(number), sympy.Float(x, 15)):
+            return None  # one figure, not the value rounded: judged as a relation
+        return item
 
     def _item(
         self,

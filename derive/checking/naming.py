@@ -161,9 +161,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     for body, one in (("A", "1"), ("B", "2")):
         for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
             out[spelled] = before[body]
-        if u_used:
-            for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
-                out[spelled] = after[body]
+        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
+            out[spelled] = after[body]  # the A-level habit (u before, v after), u's written or not
         out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
         if oblique:
             for c in "nt":

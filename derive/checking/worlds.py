@@ -10,11 +10,12 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking.figures import figures
+from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
 from derive.checking.relations import Point, Values, linear_roots, satisfied
 from derive.mathtext.notation import student
+from derive.numbers import to_decimal
 from derive.records import dataclass
 
 #: A side that is a number as written (``-1.11``, ``(37.6*deg)``).
@@ -58,6 +59,14 @@ def three_figures(sides: tuple[str, ...], data: set) -> str:
     return " ".join(found)
 
 
+def written_right(u: Decimal, x: sympy.Expr) -> bool:
+    """``u`` is ``x`` at the figures written (±1 in the last digit), and a number of one
+    figure is ``x`` rounded (5 is not 6: one figure leaves no room for rounded working)."""
+    if not at_figures_written(u, x, None):
+        return False
+    return figures(u) != 1 or round_figures(to_decimal(x), 1) == u
+
+
 def at_figures(p: Pair, left: complex, right: complex) -> bool:
     """A side that is a number as written (``= -12``, ``= 20``) is right at its figures
     (±1 in its last digit): -11.88 is -12 at two figures."""
@@ -65,7 +74,7 @@ def at_figures(p: Pair, left: complex, right: complex) -> bool:
         m = NUMBER_SIDE.match(student(text.strip()))
         if m and not m.group(3) and abs(other.imag) < 1e-12:
             try:
-                return at_figures_written(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30), None)
+                return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30))
             except (ArithmeticError, ValueError):
                 return False
     return False
