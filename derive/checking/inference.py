@@ -164,7 +164,8 @@ def _infer(
             ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
-        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + 2:
+        need = 1 if _natural(group, best) else 2
+        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + need:
             continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
