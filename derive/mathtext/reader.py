@@ -158,7 +158,7 @@ def split_relations(plain: str) -> list[str]:
     """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
     brackets) that comes before another relation."""
     plain = plain.replace("≈", "=")
-    plain = re.sub(r"(?<=[A-Za-z])\s*\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)"
+    plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
     for chunk in _ARROW.split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
         for piece in _top_level_split(chunk, ";"):
@@ -206,7 +206,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
-    sides = tuple(_UNIT_END.sub("", s.strip()).strip() for s in text.split("="))
+    sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
     if any(not s for s in sides):
         return None
     return Relation(line, column, written, sides, tag)
