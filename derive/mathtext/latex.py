@@ -76,7 +76,9 @@ def latex_to_plain(tex: str) -> str:
     s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
     s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
     for cmd in _WRAPPERS:
+        s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
         s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
+    s = re.sub(r"\\sqrt\s*(\d+|[A-Za-z])(?![\w{])", r"sqrt(\1)", s)  # \sqrt3
     s = fracs(s)
     for word, plain in _WORDS.items():
         s = re.sub(re.escape(word) + r"(?![A-Za-z])", plain, s)
@@ -96,6 +98,8 @@ def _text(m: re.Match) -> str:
         return f" {tag.group(0).strip()} "
     if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
         return inner
+    if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
+        return f" {inner} "  # "KE lost": a name the caller knows
     return " "
 
 

@@ -67,7 +67,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
     out: list[Relation] = []
     for line, column, written, plain in pieces(text):
-        if plain.lstrip().startswith("=") and out:  # "    = 6.4 - 0.576": the line above, continued
+        if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
             plain = f"{out[-1].sides[-1]} {plain}"
         for part in split_relations(plain):
             r = relation(line, column, written, part)
