@@ -24,6 +24,8 @@ from derive.problem.expr import ParseError
 
 #: The most names inferred together (more are inferred one at a time).
 JOINT = 2
+#: The most names inferred in one derivation (the search is bounded; the rest stay unknown).
+MAX_INFERRED = 6
 
 
 @dataclass(frozen=True)
@@ -154,7 +156,8 @@ def _infer(
                 together = new[:JOINT]
     cands = _candidates(ctx, truth)
     inferred: dict[str, str] = {}
-    groups = ([together] if together else []) + [[p] for p in unknown if p not in together]
+    singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
+    groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
     for group in groups:
         best = max(
             itertools.product(cands, repeat=len(group)),

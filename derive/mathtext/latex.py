@@ -70,6 +70,7 @@ def latex_to_plain(tex: str) -> str:
     """
     s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
     s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
+    s = re.sub(r"\\(?:text|mathrm)\s*\{\s*(?:m|kg|N|J|s|ms|m\s*s|N\s*s)\s*\}\s*\^\s*\{\s*-\s*\d\s*\}", " ", s)
     s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
     s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
     s = _DROP.sub(" ", s)
