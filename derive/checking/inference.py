@@ -55,7 +55,8 @@ def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Rea
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     defs = _definitions(raw, meanings)
-    signs = (sign,) if sign else (1, -1)
+    own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
+    signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
     _, mapping, inferred, s = max(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, truth), sg) for sg in signs), key=lambda c: c[0]
     )
@@ -143,6 +144,8 @@ def _infer(
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
+    if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
+        return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []

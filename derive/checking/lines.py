@@ -41,6 +41,8 @@ TRUE = "substituting the correct values"
 
 #: The most relations of one derivation that are judged (the rest are reported as not checked).
 MAX_LINES = 200
+#: The slips of one derivation searched for a common mistake (the rest are named as further slips).
+MAX_SEARCHED = 12
 Line = Read
 
 
@@ -190,6 +192,8 @@ class Trace:
     def _explain(self, line: Line, bad: Pair, answer: Item | None) -> tuple[tuple[Diagnosis, ...], int | None, str]:
         """The mistakes that explain the slip ``bad``, the equation it stands for, and the
         rest of the sentence that reports it."""
+        if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
+            return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips)."
         if not bad.difference.free_symbols & set(self.U):
             diags = self._before(bad)
             if diags:

@@ -121,7 +121,10 @@ def _diagnosis(
         q = out.results.get(r.name)
         if q is None or q.value is None:
             return None
-        mx = q.value * scale
+        key = ("value", q.value, scale)  # evaluated once: every wrong answer of r is compared with it
+        if key not in ctx.memo:
+            ctx.memo[key] = sympy.Float((q.value * scale).evalf(40), 40)
+        mx = ctx.memo[key]
         return ctx.shown(mx, figures(u), unit) if judge(u, mx, ctx.tolerance) else None
 
     return ctx.diagnose(fits, found)
