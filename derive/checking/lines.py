@@ -95,6 +95,7 @@ class Trace:
         self.wrong_number: tuple[str, sympy.Expr] | None = None
         self.held: list[Pair] = []  # the right relations in the unknowns, so far
         self.early: int | None = None  # the line where rounding too early was named
+        self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -108,8 +109,11 @@ class Trace:
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
+            if self.slips and self._uses_wrong_numbers(line, pairs):
+                return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
+            self.wrong_values |= _decimals(line.sides[-1:])
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
                 self._refine(own[0])
@@ -117,7 +121,15 @@ class Trace:
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
             return self._carried(line)
+        self.wrong_values |= _decimals(line.sides[-1:])
         return self._slip(line, pairs, answer)
+
+    def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
+        """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
+        earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct."""
+        if any(p.difference.free_symbols & set(self.U) for p in pairs):
+            return False
+        return bool(_decimals(line.sides[:-1]) & self.wrong_values)
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
@@ -384,3 +396,8 @@ class Trace:
         return Item(
             "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
         )
+
+
+def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
+    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
+    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))
