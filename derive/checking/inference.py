@@ -170,7 +170,8 @@ def _infer(
             ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
-        need = 1 if _natural(group, best) else 2
+        shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
+        need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
         if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + need:
             continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):

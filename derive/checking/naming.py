@@ -178,8 +178,9 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
         if u_used:
             out["v_n"], out["v_t"] = nm.A2n, nm.A2t
-    if ctx.problem.fixed_B:  # one body: its mass is m
+    if ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
         out["m"] = ctx.model.m_A
+        out["v"] = after["A"]
     if u_used:
         out["v"] = after["A"]
     for name in COMMON:
