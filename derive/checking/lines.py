@@ -20,7 +20,7 @@ from decimal import Decimal
 import sympy
 
 from derive.checking import mistakes
-from derive.checking.context import Context
+from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import figures, literal_tolerance
@@ -96,6 +96,7 @@ class Trace:
         self.held: list[Pair] = []  # the right relations in the unknowns, so far
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
+        self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -104,6 +105,10 @@ class Trace:
             if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
                 return None  # prose with an "=" in it
             return self._item(line, "not read", f"Not read: {line.error}.", "")
+        if (
+            line.defines and line.exprs and len(line.exprs) >= 3
+        ):  # J = m(u + v) = 0.8(5.2) = 4.16: the working is judged
+            return self.item(replace(line, sides=line.sides[-len(line.exprs) + 1 :], exprs=line.exprs[1:], defines=""))
         if line.defines:
             return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
         pairs = self.pairs(line)
@@ -122,7 +127,26 @@ class Trace:
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
             return self._carried(line)
         self.wrong_values |= _decimals(line.sides[-1:])
+        if self._with_own_values(line):
+            return self._carried(line)
+        self._own_value(line)
         return self._slip(line, pairs, answer)
+
+    def _own_value(self, line: Line) -> None:
+        """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
+        left = line.exprs[0] if line.exprs else None
+        m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
+        if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
+            self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+
+    def _with_own_values(self, line: Line) -> bool:
+        """Whether ``line`` holds with the values the student got wrong earlier put in."""
+        if not self.own or not line.exprs:
+            return False
+        exprs = tuple(x.xreplace(self.own) for x in line.exprs)
+        if exprs == line.exprs:
+            return False
+        return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
 
     def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
         """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
@@ -172,7 +196,9 @@ class Trace:
     def _slip(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
         world = self.world if self.world is not None else self.truth
         failing = [p for p in pairs if not self.holds([p], world)]
-        bad = next((p for p in failing if not p.difference.free_symbols & set(self.U)), None)  # arithmetic first
+        plain = [p for p in failing if not p.difference.free_symbols & set(self.U)]  # arithmetic first,
+        bad = next((p for p in plain if p.raw and any(x.has(DEG) for x in p.raw)), None)  # an angle's first
+        bad = bad or next(iter(plain), None)
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail = self._explain(line, bad, answer)
@@ -241,6 +267,11 @@ class Trace:
             sides = [self.ctx.in_unknowns(x.xreplace(subs)) for x in bad.raw]
             if self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
                 found.append(m)
+        if not found and "degrees_as_radians" in mistakes.REGISTRY:  # a calculator in radian mode
+            sides = [self.ctx.in_unknowns(x.xreplace({DEG: sympy.Integer(1)})) for x in bad.raw]
+            trig = any(x.has(DEG) for x in bad.raw)
+            if trig and self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
+                found.append(mistakes.REGISTRY["degrees_as_radians"])
         if not found:
             return ()
         out = next((o for o in self.ctx.singles() if o.mistake is not None and o.mistake.name == found[0].name), None)
