@@ -6,7 +6,7 @@ A derivation is written in the student's names, not derive's. They are read, in 
    a line ``positive: away from A`` or ``positive: reversed`` says the student's positive
    direction is opposite to derive's n (the line from A toward B);
 2. **habits**: ``u_A, u_B`` (``u1, u2``, ``u``) before and ``v_A, v_B`` (``v1, v2``, ``v``)
-   after when u's are used (the A-level habit; without u's, ``v_A`` is the notes' v_A1);
+   after (the A-level habit);
    ``v_G``, ``v_cm``, ``V`` the common velocity (m_A v_A1 + m_B v_B1)/(m_A + m_B);
    ``KE before``, ``KE after``, ``KE lost``, ``Delta KE``, ``loss of KE`` the energies;
    ``3eu`` and ``5mv_A`` products of names written side by side;
