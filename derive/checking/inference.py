@@ -48,6 +48,7 @@ def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Rea
     relations = tuple(r for r in read_relations(text) if not declaration(r.written))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
+    known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     rewritten = [tuple(rewrite(s, known) for s in r.sides) for r in relations]
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)

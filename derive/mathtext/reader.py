@@ -55,7 +55,8 @@ _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
 _UNIT_END = re.compile(
-    r"(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug|m|s|N|g)"
+    r"(?:(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph"
+    r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
