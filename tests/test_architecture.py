@@ -24,6 +24,7 @@ LAYERS = (
         "derive.escape",
         "derive.resources",
         "derive.fileio",
+        "derive.mathtext",
     ),
     ("derive.problem",),
     ("derive.physics",),

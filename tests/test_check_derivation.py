@@ -15,7 +15,8 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive.checking.derivation import latex_to_plain, read_derivation
+from derive.mathtext.latex import latex_to_plain
+from derive.mathtext.reader import read_relations
 
 DOCS = Path(__file__).resolve().parent.parent / "docs" / "checking.md"
 C11 = "notes-4c11-two-spheres"
@@ -45,7 +46,7 @@ def statuses(report: derive.checking.report.Report) -> dict[str, str]:
         (r"e = \frac{v_{B2n} - v_{A2n}}{v_{A1n} - v_{B1n}}", "e = ((v_B2n - v_A2n)/(v_A1n - v_B1n))"),
         (r"\frac{\sqrt{2}}{4} (1-e) v_{A1}", "((sqrt(2))/(4)) (1-e) v_A1"),
         (r"\cancel{m_A} v_{At2} = \cancel{m_A} v_{At1}", "(m_A) v_At2 = (m_A) v_At1"),
-        (r"\theta_2 = \tan^{-1}(0.05)", "theta_2 = atan (0.05)"),
+        (r"\theta_2 = \tan^{-1}(0.05)", "theta_2 = atan(0.05)"),
         (r"v_{B2n} - v_{A2n} = 9.5 \text{ m/s (4)}", "v_B2n - v_A2n = 9.5 (4)"),
         (r"\underbrace{v_{A2} \cos \theta_2}_{v_{A2t}} = 3", "(v_A2 cos theta_2) = 3"),
         (r"a \cdot b \times c", "a * b * c"),
@@ -57,11 +58,11 @@ def test_latex_rows_become_plain_text(tex: str, plain: str) -> None:
 
 def test_plain_lines_are_read_one_relation_a_line() -> None:
     text = "# my work\n20 v_A2n + 5 v_B2n = 19.8\n\nv_B2n - v_A2n = 9.5   (4)\nso v_A2n = -1.11 m/s\nplug in (3)\n"
-    lines = read_derivation(text)
-    assert [ln.number for ln in lines] == [2, 4, 5]
+    lines = read_relations(text)
+    assert [ln.line for ln in lines] == [2, 4, 5]
     assert [ln.sides for ln in lines] == [
-        ("20*v_A2n+5*v_B2n", "19.8"),
-        ("v_B2n-v_A2n", "9.5"),
+        ("20 v_A2n + 5 v_B2n", "19.8"),
+        ("v_B2n - v_A2n", "9.5"),
         ("v_A2n", "-1.11"),
     ]
     assert [ln.tag for ln in lines] == ["", "4", ""]
@@ -81,21 +82,22 @@ def test_markdown_and_latex_maths_are_found_with_their_line_numbers() -> None:
             r"$$v_{A2n} = -1.11 \text{ m/s} \rightarrow \text{in (4)} \Rightarrow v_{B2n} = 8.4 \text{ m/s}$$",  # 9
         ]
     )
-    lines = read_derivation(text)
-    assert [ln.number for ln in lines] == [1, 2, 4, 6, 7, 9, 9]
-    assert lines[1].sides == ("m_A*v_A1n+m_B*v_B1n", "m_A*v_A2n+m_B*v_B2n")
+    lines = read_relations(text)
+    assert [ln.line for ln in lines] == [1, 2, 4, 6, 7, 9, 9]
+    assert lines[1].sides == ("m_A v_A1n + m_B v_B1n", "m_A v_A2n + m_B v_B2n")
     assert lines[2].tag == "4"
-    assert lines[4].sides == ("v_A2n*(20+5)", "19.8-5*(9.5)")
+    assert lines[4].sides == ("v_A2n(20 + 5)", "19.8 - 5(9.5)")
     assert [ln.sides for ln in lines[5:]] == [("v_A2n", "-1.11"), ("v_B2n", "8.4")]
 
 
 def test_the_notes_spelling_of_names() -> None:
-    (line,) = read_derivation(r"$$M_A V_{At1} = M_A V_{A2t}$$")
-    assert line.sides == ("m_A*v_A1t", "m_A*v_A2t")
+    from derive.checking.naming import notes_names
+
+    assert notes_names("M_A V_At1 = M_A V_A2t") == "m_A v_A1t = m_A v_A2t"
 
 
 def test_lines_that_are_not_relations_are_skipped() -> None:
-    assert read_derivation("F_AB ≠ 0\nmomentum is conserved\nx < 3\n") == ()
+    assert read_relations("F_AB ≠ 0\nmomentum is conserved\nx < 3\n") == ()
 
 
 # ------------------------------------------------------------------ the judge
@@ -187,12 +189,13 @@ def test_a_final_answer_slip_and_rounded_working() -> None:
     assert [i.status for i in report.items] == ["correct"] * 5 + ["wrong"], report.text()
 
 
-def test_a_line_that_cannot_be_read_is_an_error_item_and_the_rest_is_judged() -> None:
+def test_a_line_that_cannot_be_read_is_not_read_and_the_rest_is_judged() -> None:
+    # issue 31: one unreadable line never turns the report into bad input
     work = "20 v_A2n + 5 v_B2n = 19.8\nv_X2 = 3\nv_B2n - v_A2n = 9.5\n"
     report = derive.check(solved(C11), derivation=work)
-    assert [i.status for i in report.items] == ["correct", "error", "correct"]
+    assert [i.status for i in report.items] == ["correct", "not read", "correct"]
     assert "v_X2" in report.items[1].message
-    assert report.exit_code == 2
+    assert report.exit_code == 0 and "1 not read" in report.summary()
 
 
 def test_the_notes_derivation_of_4c12_is_all_correct() -> None:
@@ -234,7 +237,7 @@ def test_cli_derivation(cli, tmp_path: Path) -> None:
 
 
 def test_a_long_derivation_says_what_was_not_checked() -> None:
-    from derive.checking.derivation import MAX_LINES
+    from derive.checking.lines import MAX_LINES
 
     work = "v_A2t = 5 sin 37.6°\n" * (MAX_LINES + 3)
     report = derive.check(solved(C11), derivation=work)

@@ -53,11 +53,11 @@ def check(
     tol = parse_tolerance(tolerance if tolerance is not None else given.tolerance, "tolerance")
     if not given.answers and not given.equations and derivation is None:
         raise InputError("nothing to check: give answers (--answer NAME=VALUE or --answers FILE)", field="answers")
-    if solution.is_chain and (given.equations or derivation is not None):
-        field = "equations" if given.equations else "derivation"
+    if solution.is_chain and given.equations:
         raise InputError(
-            "equations and derivations are checked for a single impact; a chain's answers are checked as numbers",
-            field=field,
+            "equations are checked for a single impact; a chain's answers are checked as numbers, "
+            "and its derivation line by line against its stages' values",
+            field="equations",
         )
     ctx = Context(solution, tol)
     items: list[Item] = []
@@ -69,14 +69,19 @@ def check(
             except InputError as exc:
                 errors.append(exc)
                 items.append(error_item("answer" if judge is answer_item else "equation", e, exc))
+    notes: list[str] = []
     if derivation is not None:
-        from derive.checking.lines import derivation_items
+        if ctx.chain:
+            from derive.checking.chainlines import chain_items as derivation_items
+        else:
+            from derive.checking.lines import derivation_items
 
-        items += derivation_items(ctx, derivation)
+        lines, notes = derivation_items(ctx, derivation)
+        items += lines
     if errors and len(errors) == len(items):
         raise errors[0]
     p = solution.problem
-    return Report(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None)
+    return Report(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None, tuple(notes))
 
 
 def answer_item(ctx: Context, e: Entry) -> Item:

@@ -48,6 +48,7 @@ class Context:
         self.numeric = dict(solution.values) if self.chain else self.problem.numeric()
         self._model: mistakes.Model | None = None
         self.data = _data(self.problem)
+        self.memo: dict[tuple, object] = {}  # what the judges work out once per check (rounded values)
 
     @property
     def model(self) -> mistakes.Model:

@@ -19,10 +19,10 @@ import sympy
 from derive.checking.context import DEG, RAD, Context, Names
 from derive.checking.entries import Entry
 from derive.checking.figures import literal_tolerance
-from derive.checking.notation import student
 from derive.checking.numeric import close, number_of, plain, simplified, tidy
 from derive.checking.report import Item
 from derive.checking.sampler import POINTS
+from derive.mathtext.notation import student
 from derive.physics.results import Result
 from derive.problem import units
 from derive.problem.expr import Parsed, ParseError, parse

@@ -46,14 +46,21 @@ def judge(u: Decimal, x: sympy.Expr, tolerance: sympy.Rational | None) -> bool:
         if tolerance is not None:
             tol = to_decimal(tolerance)
             return abs(u - xd) <= tol * abs(xd) if xd != 0 else abs(u) <= tol
-        if u == 0 or xd == 0:  # a zero is judged at the last place written
-            return u == 0 if xd == 0 else abs(xd) * 2 < last_place(u)
+        if u == 0 or xd == 0:  # a zero is judged at the last place written (a unit or finer: not 0e9)
+            return u == 0 if xd == 0 else u.as_tuple().exponent <= 0 and abs(xd) * 2 < last_place(u)
         try:
             r = round_figures(xd, figures(u))
         except InvalidOperation:
             return False
-        # ±1 in the last digit the user wrote (not of the rounded value: "1" is not 10.65)
-        return abs(u - r) <= last_place(u)
+        return abs(u - r) <= slack(u, xd)
+
+
+def slack(u: Decimal, x: Decimal) -> Decimal:
+    """±1 in the last digit written, at the value's own magnitude: "1" is not 10.65, and
+    "-1e1" (one figure, at the tens) is not -1.109 (one figure, at the units)."""
+    if u == 0 or x == 0:
+        return last_place(u) if u.as_tuple().exponent <= 0 else Decimal(0)
+    return min(last_place(u), last_place(round_figures(x, figures(u))))
 
 
 def method(u: Decimal, tolerance: sympy.Rational | None) -> str:

@@ -14,57 +14,66 @@ its wrong number instead.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import replace
+from decimal import Decimal
 
 import sympy
 
 from derive.checking import mistakes
-from derive.checking.context import Context
-from derive.checking.derivation import MAX_LINES, Line, read_derivation
+from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
-from derive.checking.figures import literal_tolerance
+from derive.checking.figures import figures, literal_tolerance
+from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
-from derive.checking.relations import Point, Values, coefficients, satisfied, shown
+from derive.checking.relations import Point, Values, coefficients, shown
 from derive.checking.report import Diagnosis, Item
+from derive.checking.worlds import NUMBER_SIDE, Pair, alike, holds_at, solve_world, three_figures, written_right
 from derive.errors import InputError
+from derive.mathtext.notation import student
 from derive.numbers import format_number
 from derive.problem import units
-from derive.problem.expr import ParseError, parse
 
 TRUE = "substituting the correct values"
-_NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
-#: The notes' spellings of names a problem may spell otherwise (tried only where unknown).
-ALIASES = {"v_A": "v_A1", "v_B": "v_B1", "theta_1": "theta", "theta_2": "theta_A2", "theta": "theta_1"}
 
 
-@dataclass(frozen=True)
-class Pair:
-    """One ``=`` of a line: its sides as written and in the unknowns (everything known in)."""
-
-    text: str
-    left: sympy.Expr
-    right: sympy.Expr
-    tol: float
-
-    @property
-    def difference(self) -> sympy.Expr:
-        return self.left - self.right
+#: The most relations of one derivation that are judged (the rest are reported as not checked).
+MAX_LINES = 200
+#: The slips of one derivation searched for a common mistake (the rest are named as further slips).
+MAX_SEARCHED = 12
+Line = Read
 
 
-def derivation_items(ctx: Context, text: str) -> list[Item]:
-    """One item per relation of the derivation ``text``."""
-    lines = read_derivation(text)
-    if not lines:
-        return [Item("line", "", "", "error", "", "The derivation has no relation to check (no line with '=').")]
+def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
+    """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
+    lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0])
+    if not any(line.exprs is not None for line in lines):
+        why = f" ({lines[0].error})" if lines else " (no line with '=')"
+        return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
     items = [trace.item(line) for line in lines[:MAX_LINES]]
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
-    return items
+    return merged([i for i in items if i is not None]), notes
+
+
+#: A line's verdicts, least serious first: a line of several relations shows its worst once.
+RANK = ("correct", "not read", "carried", "wrong", "error")
+
+
+def merged(items: list[Item]) -> list[Item]:
+    """One item per line of the file (``a = 1, b = 2`` and ``… ⇒ …`` are one line): its worst verdict."""
+    out: list[Item] = []
+    for item in items:
+        if out and out[-1].name == item.name and item.name:
+            if RANK.index(item.status) > RANK.index(out[-1].status):
+                out[-1] = item
+            continue
+        out.append(item)
+    return out
 
 
 class Trace:
@@ -84,41 +93,93 @@ class Trace:
         self.named: dict[int, set[str]] = {}  # the mistakes named at each slip
         self.replaced: list[tuple[int, int]] = []  # (line number, the equation it took the place of)
         self.wrong_number: tuple[str, sympy.Expr] | None = None
-        self.names = _with_aliases(ctx.equation_names())
+        self.held: list[Pair] = []  # the right relations in the unknowns, so far
+        self.early: int | None = None  # the line where rounding too early was named
+        self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
+        self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
 
     # one line ----------------------------------------------------------------
-    def item(self, line: Line) -> Item:
-        """The verdict on ``line``."""
-        try:
-            pairs = self.pairs(line.sides)
-        except ParseError as exc:
-            return self._item(line, "error", f"Could not be read: {exc}.", "")
+    def item(self, line: Line) -> Item | None:
+        """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
+        if line.exprs is None:
+            if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
+                return None  # prose with an "=" in it
+            return self._item(line, "not read", f"Not read: {line.error}.", "")
+        if (
+            line.defines and line.exprs and len(line.exprs) >= 3
+        ):  # J = m(u + v) = 0.8(5.2) = 4.16: the working is judged
+            return self.item(replace(line, sides=line.sides[-len(line.exprs) + 1 :], exprs=line.exprs[1:], defines=""))
+        if line.defines:
+            return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
+        pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
+            if self.slips and self._uses_wrong_numbers(line, pairs):
+                return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
+            self.wrong_values |= _decimals(line.sides[-1:])
+            own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
+            if own:  # the student's own equation, at the figures written, takes its place in the world
+                self._refine(own[0])
             return self._carried(line)
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
             return self._carried(line)
+        self.wrong_values |= _decimals(line.sides[-1:])
+        if self._with_own_values(line):
+            return self._carried(line)
+        self._own_value(line)
         return self._slip(line, pairs, answer)
 
-    def pairs(self, sides: tuple[str, ...]) -> list[Pair]:
-        """Each ``=`` of the sides, read in the problem's names."""
-        exprs = [self.ctx.in_unknowns(parse(s, self.names).expr) for s in sides]
+    def _own_value(self, line: Line) -> None:
+        """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
+        left = line.exprs[0] if line.exprs else None
+        m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
+        if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
+            self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+
+    def _with_own_values(self, line: Line) -> bool:
+        """Whether ``line`` holds with the values the student got wrong earlier put in."""
+        if not self.own or not line.exprs:
+            return False
+        exprs = tuple(x.xreplace(self.own) for x in line.exprs)
+        if exprs == line.exprs:
+            return False
+        return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
+
+    def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
+        """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
+        earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct."""
+        if any(p.difference.free_symbols & set(self.U) for p in pairs):
+            return False
+        return bool(_decimals(line.sides[:-1]) & self.wrong_values)
+
+    def pairs(self, line: Line) -> list[Pair]:
+        """Each ``=`` of the line, in the unknowns."""
+        raw = list(line.exprs or ())
+        sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
+        # a chain that ends in a number as written: each side is compared with that number
+        ends = len(sides) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
+        worked = (
+            three_figures(sides, self.ctx.data) if ends else ""
+        )  # the student's own rounded numbers, at 3 figures or more
         for i in range(len(sides) - 1):
-            text = f"{sides[i]} = {sides[i + 1]}"
-            out.append(Pair(text, exprs[i], exprs[i + 1], max(literal_tolerance(text, self.ctx.data), 1e-9)))
+            k = len(sides) - 1 if ends else i + 1
+            text = f"{sides[i]} = {sides[k]}"
+            tol = max(literal_tolerance(f"{text} {worked}", self.ctx.data), 1e-9)
+            out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
         return out
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
         """Whether every pair holds for ``values`` (at each sample point), within the
         precision of the decimals written."""
-        return all(_holds(p, values, self.pts, self.U) for p in pairs)
+        return all(holds_at(p, values, self.pts, self.U) for p in pairs)
 
     # verdicts ----------------------------------------------------------------
     def _correct(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
+        self.held += [p for p in pairs if p.difference.free_symbols & set(self.U)]
         notes = ()
         if self.world is not None and not self.holds(pairs, self.world):
             notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
@@ -133,8 +194,18 @@ class Trace:
         return self._item(line, "carried", msg, how)
 
     def _slip(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
-        bad = next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
+        world = self.world if self.world is not None else self.truth
+        failing = [p for p in pairs if not self.holds([p], world)]
+        plain = [p for p in failing if not p.difference.free_symbols & set(self.U)]  # arithmetic first,
+        bad = next((p for p in plain if p.raw and any(x.has(DEG) for x in p.raw)), None)  # an angle's first
+        bad = bad or next(iter(plain), None)
+        bad = bad or next(iter(failing), None)
+        bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail = self._explain(line, bad, answer)
+        if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
+            ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
+            if ends.difference.free_symbols & set(self.U):
+                self._replace(line, ends, slip=False)
         again = [n for n, names in self.named.items() if names & {d.mistake for d in diags}]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
@@ -148,12 +219,24 @@ class Trace:
         if not expected and j is not None and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
-        return self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
+        if line.own_names:  # derive's names are not the student's: no "expected" in them
+            expected = ""
+        arithmetic = not bad.difference.free_symbols & set(self.U)
+        named = "rounded_too_early" if "rounded too early" in detail else "arithmetic" if arithmetic else ""
+        slip = ",".join(d.mistake for d in diags) or named
+        item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
+        return replace(item, slip=slip, again=bool(again))
 
     def _explain(self, line: Line, bad: Pair, answer: Item | None) -> tuple[tuple[Diagnosis, ...], int | None, str]:
         """The mistakes that explain the slip ``bad``, the equation it stands for, and the
         rest of the sentence that reports it."""
+        if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
+            return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips)."
         if not bad.difference.free_symbols & set(self.U):
+            diags = self._before(bad)
+            if diags:
+                said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
+                return diags, None, f": it {said}."
             return (), None, ": " + self._arithmetic(bad)
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
@@ -161,23 +244,74 @@ class Trace:
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
-            return diags, j, ". No common mistake reproduces it."
+            early = self._rounded_early(line, bad)
+            return diags, j, early or ". No common mistake reproduces it."
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
             return diags, j, f": it {said}."
         return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}."
 
+    def _before(self, bad: Pair) -> tuple[Diagnosis, ...]:
+        """The mistakes in the values before the impact (sin and cos swapped, B's sign, radians,
+        masses) that make ``bad`` hold; the velocities they give become the slip's world."""
+        if bad.raw is None:
+            return ()
+        model, found = self.ctx.model, []
+        for m in mistakes.REGISTRY.values():
+            v = m.build(model)
+            if v is None or (v.pre is None and v.masses is None):
+                continue
+            subs = dict(v.pre or {})
+            if v.masses is not None:
+                subs.update({model.m_A: v.masses[0], model.m_B: v.masses[1]})
+            sides = [self.ctx.in_unknowns(x.xreplace(subs)) for x in bad.raw]
+            if self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
+                found.append(m)
+        if not found and "degrees_as_radians" in mistakes.REGISTRY:  # a calculator in radian mode
+            sides = [self.ctx.in_unknowns(x.xreplace({DEG: sympy.Integer(1)})) for x in bad.raw]
+            trig = any(x.has(DEG) for x in bad.raw)
+            if trig and self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
+                found.append(mistakes.REGISTRY["degrees_as_radians"])
+        if not found:
+            return ()
+        out = next((o for o in self.ctx.singles() if o.mistake is not None and o.mistake.name == found[0].name), None)
+        if out is not None and self.world is None:  # the student's equations are now the mistake's
+            self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
+            self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
+        return tuple(d for m in found for d in self.ctx.diagnosis(m))
+
+    def _rounded_early(self, line: Line, bad: Pair) -> str:
+        """ ": rounded too early …" where the line is worked from numbers the student rounded to
+        two figures (not the data) and misses the value by more than its last figure."""
+        early = [
+            t
+            for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(line.sides))
+            if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in self.ctx.data
+        ]
+        if not early or self.early is not None:
+            return ""
+        left, right = (number_of(x.xreplace(self.pts[0]).xreplace(self.truth[0])) for x in (bad.left, bad.right))
+        if left is None or right is None or not right:
+            return ""
+        drift = abs(left - right) / max(abs(left), abs(right)) * 100
+        if drift > 3:  # more than rounding explains
+            return ""
+        self.early = line.number
+        return (
+            f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
+        )
+
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
-        if left is None or right is None:
-            return "Its two sides are not equal."
+        if left is None or right is None or self.pts[0]:  # no sample values of symbolic givens are shown
+            return "its two sides are not equal (an arithmetic or algebra slip)."
         sides = bad.text.split(" = ")
         left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
-        if _NUMBER_SIDE.match(sides[1]):
+        if NUMBER_SIDE.match(sides[1]):
             self.wrong_number = (sides[1], bad.left)
-        elif _NUMBER_SIDE.match(sides[0]):
+        elif NUMBER_SIDE.match(sides[0]):
             self.wrong_number = (sides[0], bad.right)
-        right_text = sides[1] if _NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
+        right_text = sides[1] if NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
         return f"{left_text} is {format_number(left.real, 4)}, not {right_text} (an arithmetic slip)."
 
     # the world of the slips ------------------------------------------------
@@ -190,11 +324,30 @@ class Trace:
             if j is not None:
                 self.equations[j] = F
                 self.replaced.append((line.number, j))
-                world = _solve(self.equations, self.U, self.pts, self.world or self.truth)
+                world = solve_world(self.equations, self.U, self.pts, self.world or self.truth)
                 if world is not None:
                     self.world = world
         if slip:
             self.slips.append(line.number)
+
+    def _refine(self, pair: Pair) -> None:
+        """Put a carried line's own equation in place of one of the world's that it barely
+        changes (its rounded numbers), so that later lines are judged from the student's."""
+        assert self.world is not None
+        F = pair.difference
+        for j in list(self.equations):
+            trial = solve_world({**self.equations, j: F}, self.U, self.pts, self.world)
+            if trial is None:
+                continue
+            near = all(
+                abs((number_of(t[u]) or 0) - (number_of(w[u]) or 0)) <= 0.02 * max(1.0, abs(number_of(w[u]) or 0))
+                for t, w in zip(trial, self.world, strict=True)
+                for u in self.U
+            )
+            if near:
+                self.equations[j] = F
+                self.world = trial
+                return
 
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for: the most alike of (1)-(4) in its unknowns
@@ -202,14 +355,19 @@ class Trace:
         cf = coefficients(F.xreplace(self.pts[0]), self.U)
         if not cf:
             return None
-        best, score = None, -1.0
+        best, score = None, (-1, False, -9, -1.0)
         for j, G in self.equations.items():
             cg = coefficients(G.xreplace(self.pts[0]), self.U)
             if not cg:
                 continue
-            s = _alike(cf, cg)
-            trial = {**self.equations, j: F}
-            if s > score and _solve(trial, self.U, self.pts[:1], self.truth[:1]) is not None:
+            trial = solve_world({**self.equations, j: F}, self.U, self.pts[:1], self.truth[:1])
+            if trial is None:
+                continue
+            # first: how many of the relations the student wrote and got right still hold then
+            kept = sum(1 for p in self.held[-12:] if holds_at(p, trial, self.pts[:1], self.U))
+            near = alike(cf, cg)
+            s = (kept, near >= 0.5, -j, near)  # then the first of those much alike (substituted into)
+            if s > score:
                 best, score = j, s
         return best
 
@@ -220,36 +378,41 @@ class Trace:
         value = number_of(right.xreplace(self.pts[0]))
         if value is None:
             return False
-        pattern = re.compile(rf"(?<![\w.]){re.escape(wrong.lstrip('+-'))}(?![\w.])")
-        fixed = tuple(pattern.sub(f"({value.real!r})", s) for s in line.sides)
-        if fixed == line.sides:
-            return False
         try:
-            return self.holds(self.pairs(fixed), self.truth)
-        except ParseError:
+            written = sympy.Rational(wrong.lstrip("+-"))
+        except (TypeError, ValueError):
             return False
+        exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
+        if exprs == line.exprs:
+            return False
+        return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
 
     def _slips_named(self) -> str:
-        numbers = [str(n) for n in self.slips]
+        numbers = [str(n) for n in dict.fromkeys(self.slips)]
         return f"the slip in line {numbers[0]}" if len(numbers) == 1 else f"the slips in lines {listed(numbers)}"
 
     # answers -----------------------------------------------------------------
     def _answer(self, line: Line) -> Item | None:
         """``v_A2n = -1.11``: a result's name = a number, judged as an answer is (figures
         written, rounding of intermediates, the mistakes that give it)."""
-        if len(line.sides) != 2 or line.sides[0] not in self.ctx.results:
+        left = line.exprs[0] if line.exprs else None
+        if len(line.sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in self.ctx.results:
             return None
-        m = _NUMBER_SIDE.match(line.sides[1])
+        m = NUMBER_SIDE.match(student(line.sides[1]))
         if not m:
             return None
         sign, number, unit = m.groups()
         number = ("-" if sign == "-" else "") + number
-        r = self.ctx.results[line.sides[0]]
+        r = self.ctx.results[left.name]
         try:
             u = units.parse_unit(unit) if unit else None
-            return number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
+            item = number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
         except InputError:
             return None
+        x = item.expected_value
+        if item.correct and x is not None and not written_right(Decimal(number), sympy.Float(x, 15)):
+            return None  # one figure, not the value rounded: judged as a relation
+        return item
 
     def _item(
         self,
@@ -266,50 +429,6 @@ class Trace:
         )
 
 
-def _holds(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
-    for pt, vals in zip(pts, values, strict=True):
-        left = number_of(p.left.xreplace(pt).xreplace(vals))
-        right = number_of(p.right.xreplace(pt).xreplace(vals))
-        if left is None or right is None:
-            return False
-        scale = max(abs(left), abs(right))
-        if abs(left - right) > 2 * p.tol * scale and not satisfied(p.difference, vals, U, [pt], p.tol):
-            return False
-    return True
-
-
-def _alike(a: dict, b: dict) -> float:
-    """|cos| of the angle between two coefficient vectors (their linear parts)."""
-    keys = [m for m in set(a) | set(b) if sum(m) == 1]
-    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
-    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
-    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
-    return abs(dot) / (na * nb) if na and nb else 0.0
-
-
-def _solve(
-    equations: dict[int, sympy.Expr], U: tuple[sympy.Symbol, ...], pts: list[Point], near: list[Values]
-) -> list[Values] | None:
-    """The velocities that satisfy ``equations`` at each point (the root nearest ``near``)."""
-    out = []
-    for pt, guide in zip(pts, near, strict=True):
-        eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
-        try:
-            roots = [r for r in sympy.solve(eqs, list(U), dict=True) if set(r) == set(U)]
-        except (NotImplementedError, ValueError, TypeError):
-            return None
-        if not roots:
-            return None
-        target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
-        roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
-        out.append(roots[0])
-    return out
-
-
-def _with_aliases(names: dict) -> dict:
-    """The problem's names, and the notes' spellings of those that are missing (v_A for v_A1)."""
-    out = dict(names)
-    for alias, name in ALIASES.items():
-        if alias not in out and name in names:
-            out[alias] = names[name]
-    return out
+def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
+    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
+    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))

@@ -15,7 +15,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.entries import Entry
-from derive.checking.figures import figures, judge, last_place, method
+from derive.checking.figures import figures, judge, method, slack
 from derive.checking.report import Diagnosis, Item
 from derive.checking.rounding import INTERMEDIATE_FIGURES, rounded_values
 from derive.numbers import format_number, to_decimal
@@ -54,6 +54,8 @@ def number_item(ctx: Context, e: Entry, r: Result, text: str, number: str, unit:
     if unit.dim != work.dim:
         return _mismatch(ctx, r, text, u, unit)
     x = r.value * work.factor / unit.factor
+    if work.dim == ANGLE:  # a direction: -180° and 180° are the same one
+        x = same_turn(x, u, 2 * sympy.pi / unit.factor)
     fields = dict(
         value=float(u),
         unit=unit.text,
@@ -87,6 +89,12 @@ def number_item(ctx: Context, e: Entry, r: Result, text: str, number: str, unit:
     return Item("answer", r.name, text, "wrong", expected, " ".join([msg, *hints]), diagnosis=diags, **fields)
 
 
+def same_turn(x: sympy.Expr, u: Decimal, turn: sympy.Expr) -> sympy.Expr:
+    """The angle ``x`` give or take whole turns, the one nearest to the written ``u``."""
+    k = sympy.floor((sympy.Rational(str(u)) - x) / turn + sympy.Rational(1, 2))
+    return x + k * turn if k != 0 else x
+
+
 def _mismatch(ctx: Context, r: Result, text: str, u: Decimal, unit: units.Unit) -> Item:
     work = ctx.work(r)
     what = units.describe(work.dim) if work.dim != DIMENSIONLESS else "a pure number"
@@ -113,7 +121,10 @@ def _diagnosis(
         q = out.results.get(r.name)
         if q is None or q.value is None:
             return None
-        mx = q.value * scale
+        key = ("value", q.value, scale)  # evaluated once: every wrong answer of r is compared with it
+        if key not in ctx.memo:
+            ctx.memo[key] = sympy.Float((q.value * scale).evalf(40), 40)
+        mx = ctx.memo[key]
         return ctx.shown(mx, figures(u), unit) if judge(u, mx, ctx.tolerance) else None
 
     return ctx.diagnose(fits, found)
@@ -122,14 +133,14 @@ def _diagnosis(
 def _rounding_band(ctx: Context, r: Result, u: Decimal, scale: sympy.Expr) -> tuple[str, str] | None:
     """(lowest, highest) that 3-figure intermediates give, as shown, where ``u`` lies
     within them (±1 in its last digit); None where it does not, or a tolerance is set."""
-    if ctx.tolerance is not None:
+    if ctx.tolerance is not None or r.value == 0:  # an exact zero is written as zero
         return None
     values = [to_decimal(v * scale) for v in rounded_values(ctx, r.name)]
     if not values:
         return None
     exact = to_decimal(r.value * scale)
     lo, hi = min([*values, exact]), max([*values, exact])
-    if not lo - last_place(u) <= u <= hi + last_place(u):
+    if not lo - slack(u, exact) <= u <= hi + slack(u, exact):
         return None
     return format_number(lo, 4), format_number(hi, 4)
 

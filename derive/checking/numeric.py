@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from decimal import Decimal
 
@@ -14,8 +15,10 @@ from derive.problem import units
 EXACT = 1e-15
 
 
+@functools.lru_cache(maxsize=8192)
 def number_of(x: sympy.Expr) -> complex | None:
-    """``x`` evaluated to 30 digits; None when it has no finite value."""
+    """``x`` evaluated to 30 digits; None when it has no finite value (cached: the mistakes'
+    velocities are compared with every wrong line)."""
     try:
         c = complex(x.evalf(30))
     except (TypeError, ValueError, ZeroDivisionError):

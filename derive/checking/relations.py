@@ -7,6 +7,8 @@ where every given has a number), with a relative tolerance for the decimals writ
 
 from __future__ import annotations
 
+import functools
+
 import sympy
 
 from derive.checking.mistakes import Outcome
@@ -16,8 +18,10 @@ Point = dict[sympy.Symbol, sympy.Expr]
 Values = dict[sympy.Symbol, sympy.Expr]
 
 
+@functools.lru_cache(maxsize=4096)
 def coefficients(expr: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> dict[tuple[int, ...], complex] | None:
-    """The numeric coefficient of each monomial of ``expr`` in ``U`` (None where not a polynomial)."""
+    """The numeric coefficient of each monomial of ``expr`` in ``U`` (None where not a polynomial).
+    Cached: the mistakes' equations are compared with every wrong line (do not change the result)."""
     try:
         poly = sympy.Poly(sympy.expand(sympy.numer(sympy.together(expr))), *U)
     except (sympy.PolynomialError, sympy.GeneratorsError):
@@ -54,10 +58,19 @@ def solve_with(
     """Solve ``equations`` with (k) replaced by ``F = 0``, at each point: the roots there."""
     out = []
     for pt in pts:
+        fast = linear_roots([x.xreplace(pt) for j, x in equations.items() if j != k] + [F.xreplace(pt)], U)
+        if fast == []:  # singular: no single root
+            return None
+        if fast is not None:
+            out.append(fast)
+            continue
+        cf = coefficients(F.xreplace(pt), U)
+        if cf is None or any(sum(m) > 2 for m in cf):  # beyond a quadratic: not an equation of this impact
+            return None
         eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
         eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
         try:
-            roots = sympy.solve(eqs, list(U), dict=True)
+            roots = sympy.solve(eqs, list(U), dict=True, rational=False)
         except (NotImplementedError, ValueError, TypeError):
             return None
         roots = [r for r in roots if set(r) == set(U)]
@@ -65,6 +78,36 @@ def solve_with(
             return None
         out.append(roots)
     return out
+
+
+def linear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:
+    """The one root of a square linear system with numeric coefficients, by elimination in
+    floating point (SymPy's solver takes a hundred times longer); [] where it is singular
+    (no single root); None where it is not square or not linear (the caller then asks SymPy)."""
+    rows = []
+    for eq in eqs:
+        cf = coefficients(eq, U)
+        if cf is None or any(sum(m) > 1 for m in cf) or len(eqs) != len(U):
+            return None
+        rows.append([cf.get(tuple(int(i == j) for i in range(len(U))), 0) for j in range(len(U))])
+        rows[-1].append(-cf.get((0,) * len(U), 0))
+    n = len(U)
+    for c in range(n):
+        p = max(range(c, n), key=lambda r: abs(rows[r][c]))
+        if abs(rows[p][c]) < 1e-12 * max(1.0, max(abs(x) for x in rows[p][:n])):
+            return []
+        rows[c], rows[p] = rows[p], rows[c]
+        for r in range(n):
+            if r != c:
+                f = rows[r][c] / rows[c][c]
+                rows[r] = [a - f * b for a, b in zip(rows[r], rows[c], strict=True)]
+    return [{u: _real(rows[i][n] / rows[i][i]) for i, u in enumerate(U)}]
+
+
+def _real(z: complex) -> sympy.Expr:
+    return (
+        sympy.Float(z.real, 20) if abs(z.imag) <= 1e-12 * max(1.0, abs(z)) else sympy.Float(z.real) + sympy.I * z.imag
+    )
 
 
 def matches(

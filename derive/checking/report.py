@@ -15,8 +15,8 @@ from derive.errors import InputError
 
 FORMATS = ("text", "md", "json")
 #: Every status an item can have, in the order the summary counts them.
-STATUSES = ("correct", "wrong", "unit mismatch", "carried", "error")
-_MARK = {"correct": "✓", "wrong": "✗", "unit mismatch": "✗", "carried": "↳", "error": "!"}
+STATUSES = ("correct", "wrong", "unit mismatch", "carried", "not read", "error")
+_MARK = {"correct": "✓", "wrong": "✗", "unit mismatch": "✗", "carried": "↳", "not read": "?", "error": "!"}
 
 
 @dataclass(frozen=True)
@@ -68,6 +68,8 @@ class Item:
     unit_missing: bool = False
     notes: tuple[str, ...] = ()
     diagnosis: tuple[Diagnosis, ...] = ()
+    slip: str = ""
+    again: bool = False
 
     @property
     def correct(self) -> bool:
@@ -101,6 +103,8 @@ class Item:
             "message": self.message,
             "notes": list(self.notes),
             "diagnosis": [d.as_dict() for d in self.diagnosis],
+            "slip": self.slip,
+            "again": self.again,
         }
 
 
@@ -112,11 +116,12 @@ class Report:
     title: str
     items: tuple[Item, ...]
     tolerance: float | None = None
+    notes: tuple[str, ...] = ()  # how a derivation's names were read
 
     @property
     def all_correct(self) -> bool:
-        """True when every answer and equation is right."""
-        return all(i.correct for i in self.items)
+        """True when every answer and equation is right (a line not read is not judged)."""
+        return all(i.correct or i.status == "not read" for i in self.items)
 
     @property
     def exit_code(self) -> int:
@@ -139,6 +144,7 @@ class Report:
             "all_correct": self.all_correct,
             "counts": self.counts(),
             "tolerance": self.tolerance,
+            "notes": list(self.notes),
             "items": [i.as_dict() for i in self.items],
         }
 
@@ -165,6 +171,8 @@ class Report:
             parts.append(f"{c['unit mismatch']} with a unit mismatch")
         if c.get("carried"):
             parts.append(f"{c['carried']} right given an earlier slip (carried)")
+        if c.get("not read"):
+            parts.append(f"{c['not read']} not read")
         if c.get("error"):
             parts.append(f"{c['error']} could not be read")
         return ", ".join(parts) + "."
@@ -182,6 +190,7 @@ class Report:
         shown_width = max([len(r[1]) for r in rows] + [0])
         status_width = max([len(i.status) for i in self.items if i.kind == "line"] + [0])
         lines = [f"derive check: {self.title} ({self.problem})", ""]
+        lines += [f"  {note}" for note in self.notes] + ([""] if self.notes else [])
         for i, row in zip(self.items, rows, strict=True):
             if i.kind == "line":
                 lines.append(
@@ -201,6 +210,7 @@ class Report:
         """The report as a Markdown table and a list of details."""
         md = escape.markdown
         out = [f"## Check: {md(self.title)}", ""]
+        out += [md(note) for note in self.notes] + ([""] if self.notes else [])
         out.append("| | | Written | Expected | Error | Verdict |")
         out.append("|---|---|---|---|---|---|")
         for i in self.items:

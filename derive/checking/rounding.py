@@ -31,6 +31,13 @@ def rounded_values(ctx: Context, name: str) -> list[sympy.Expr]:
     the impact. Empty for an inverse problem or one with symbolic givens."""
     if ctx.chain or ctx.results[name].value is None:  # a chain: its stages' roundings are not modelled
         return []
+    key = ("rounded", name)
+    if key not in ctx.memo:  # worked once per result: every wrong answer of that result asks
+        ctx.memo[key] = _rounded_values(ctx, name)
+    return ctx.memo[key]
+
+
+def _rounded_values(ctx: Context, name: str) -> list[sympy.Expr]:
     from derive.checking.mistakes.quantities import results_of  # the model: only for an answer not right
 
     m, p = ctx.model, ctx.problem

@@ -28,6 +28,8 @@ _UNICODE = {
     "β": " beta",
     "√": " sqrt ",
 }
+#: ``tan^-1``, ``tan^(-1)``, ``tan^{-1}``, ``tan⁻¹``: the inverse functions.
+_INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\s*\}|-\s*1)|⁻¹)")
 _NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
 _BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
@@ -44,6 +46,7 @@ def student(text: str) -> str:
     """
     for sign, plain in _UNICODE.items():
         text = text.replace(sign, plain)
+    text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
     text = degree_marks(text)
     text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
     return implicit_products(text)

@@ -1,0 +1,255 @@
+"""A derivation's relations read in the student's names (:mod:`.naming`): each side in the
+problem's symbols, with what was declared, habitual, introduced and inferred said in words.
+
+Every student name that is not derive's is read first as a placeholder; the placeholders
+are then given their meaning all at once. The sign convention and the meaning of the names
+no declaration or habit settles are chosen to make the most relations hold with the
+problem's true values (a slip later on does not move them: the lines before it hold).
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+from dataclasses import dataclass
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.figures import literal_tolerance
+from derive.checking.naming import PREFIX, Open, common_velocity, declaration, declarations, habits, read_side, rewrite
+from derive.checking.numeric import number_of
+from derive.mathtext.reader import Relation, read_relations
+from derive.problem.expr import ParseError
+
+#: The most names inferred together (more are inferred one at a time).
+JOINT = 2
+#: The most names inferred in one derivation (the search is bounded; the rest stay unknown).
+MAX_INFERRED = 6
+
+
+@dataclass(frozen=True)
+class Read:
+    """One relation as read: ``sides`` as written (plain syntax), ``exprs`` in the problem's
+    symbols (None where it could not be read; ``error`` says why)."""
+
+    number: int
+    written: str
+    sides: tuple[str, ...]
+    tag: str
+    exprs: tuple[sympy.Expr, ...] | None
+    error: str = ""
+    defines: str = ""
+    own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
+
+
+def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
+    """The relations of ``text`` in the problem's symbols, and what was inferred (sentences)."""
+    relations = tuple(r for r in read_relations(text) if not declaration(r.written))
+    problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
+    known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
+    known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
+    rewritten = [tuple(rewrite(s, known) for s in r.sides) for r in relations]
+    used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
+    declared, sign = declarations(text, ctx)
+    meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
+    names = Open({**problem, **_speeds(ctx)}, set(meanings))
+    raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
+    defs = _definitions(raw, meanings)
+    own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
+    signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
+    _, mapping, inferred, s = max(
+        ((*_infer(ctx, raw, meanings, defs, sg, pt, truth), sg) for sg in signs), key=lambda c: c[0]
+    )
+    lines = [_resolved(r, mapping) for r in raw]
+    return lines, _notes(meanings, declared, inferred, s, sign)
+
+
+def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
+    derived = ctx.derived()
+    out = {}
+    for b in "AB":
+        if f"v_{b}2" in derived and ctx.problem.oblique:
+            out[f"speed_{b}"] = derived[f"v_{b}2"][0]
+    return out
+
+
+def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
+    exprs: list[sympy.Expr] = []
+    shown = r.sides
+    try:
+        for i, side in enumerate(sides):
+            try:
+                exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
+            except ParseError:
+                if i or len(sides) < 3:
+                    raise
+                shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
+    except (ParseError, ValueError, TypeError, RecursionError) as exc:
+        return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
+    return Read(r.line, r.written, shown, r.tag, tuple(exprs))
+
+
+def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
+    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
+
+
+def _definitions(raw: list[Read], meanings: dict[str, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+    """``v_G = (m_A u_A + m_B u_B)/(m_A + m_B)``: a name first met alone on the left of a
+    relation whose right side uses only names with a meaning (and some name): defined."""
+    seen: set[sympy.Symbol] = set()
+    defs: dict[sympy.Symbol, sympy.Expr] = {}
+    for i, r in enumerate(raw):
+        if r.exprs is None:
+            continue
+        left = r.exprs[0]
+        if left.is_Symbol and left.name.startswith(PREFIX) and left not in seen and left.name[1:] not in meanings:
+            right = r.exprs[1].xreplace(defs)
+            open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
+            if right.free_symbols and not open_:
+                defs[left] = right
+                raw[i] = Read(r.number, r.written, r.sides, r.tag, r.exprs, defines=left.name[1:])
+        for e in r.exprs:
+            seen |= _placeholders(e)
+    return defs
+
+
+def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
+    """What an unknown name may stand for: a velocity after the impact, the common velocity,
+    an unknown given, the energy lost, the impulse; with either sign for velocities."""
+    U = list(truth)
+    out = [(u.name, u) for u in U]
+    out.append(("the common velocity", common_velocity(ctx)))
+    derived = ctx.derived()
+    out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
+    out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
+    out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
+    nm = ctx.model.nm
+    zeros = ctx.model.zeros
+    out += [
+        (c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros
+    ]
+    return out
+
+
+def _infer(
+    ctx: Context,
+    raw: list[Read],
+    meanings: dict[str, sympy.Expr],
+    defs: dict[sympy.Symbol, sympy.Expr],
+    sign: int,
+    pt: dict,
+    truth: dict,
+) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
+    """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign."""
+    base: dict[sympy.Symbol, sympy.Expr] = {}
+    for name, e in meanings.items():
+        base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
+    if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
+        return 0, {}, {}
+    pairs = _pairs(ctx, raw, pt, truth)
+    mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
+    unknown: list[sympy.Symbol] = []
+    together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
+    for pairs_of_line in pairs:
+        for _t, (left, right) in pairs_of_line:
+            found = sorted(_placeholders(left) | _placeholders(right), key=str)
+            new = [p for p in found if p not in mapping]
+            unknown += [p for p in new if p not in unknown]
+            if len(new) >= 2 and not together:
+                together = new[:JOINT]
+    cands = _candidates(ctx, truth)
+    inferred: dict[str, str] = {}
+    singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
+    groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
+    for group in groups:
+        best = max(
+            itertools.product(cands, repeat=len(group)),
+            key=lambda combo: (
+                _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
+                + _natural(group, combo)
+            ),
+        )
+        trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
+        shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
+        need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
+        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + need:
+            continue  # fewer than two relations hold that way: the name stays unknown
+        for p, (what, e) in zip(group, best, strict=True):
+            mapping[p] = e
+            inferred[p.name[1:]] = what
+    mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
+    return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
+    """A bonus for the natural reading of two names met together (x, y; a, b; p, q): the first
+    is A's, the second B's; it takes two more relations holding to read them the other way."""
+    if len(group) != 2:
+        return 0.0
+    first, second = (str(c[1]) for c in combo)
+    return 1.5 if "A" in first and "B" in second and "B" not in first else 0.0
+
+
+def _velocity(e: sympy.Expr) -> bool:
+    return any(s.name.startswith("v_") for s in e.free_symbols)
+
+
+def _pairs(ctx: Context, raw: list[Read], pt: dict, truth: dict) -> list[list[tuple[float, sympy.Expr]]]:
+    """For each relation, each ``=`` as (tolerance, left - right with the true values in)."""
+    out = []
+    for r in raw:
+        if r.exprs is None or r.defines:
+            out.append([])
+            continue
+        diffs = []
+        for i in range(len(r.exprs) - 1):
+            tol = max(literal_tolerance(f"{r.sides[i]} = {r.sides[i + 1]}", ctx.data), 1e-9)
+            left, right = (ctx.in_unknowns(x).xreplace(pt).xreplace(truth) for x in r.exprs[i : i + 2])
+            diffs.append((tol, (left, right)))
+        out.append(diffs)
+    return out
+
+
+def _score(pairs, mapping, ctx: Context, pt: dict, truth: dict) -> int:
+    """How many ``=`` hold (of those with a student's name in them) under ``mapping``."""
+    subs = {k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in mapping.items()}
+    n = 0
+    for line in pairs:
+        for tol, (left, right) in line:
+            if not (_placeholders(left) | _placeholders(right)):
+                continue
+            a, b = number_of(left.xreplace(subs)), number_of(right.xreplace(subs))
+            if a is not None and b is not None and abs(a - b) <= 2 * tol * max(abs(a), abs(b)) + 1e-12:
+                n += 1
+    return n
+
+
+def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
+    if r.exprs is None:
+        return r
+    exprs = tuple(e.xreplace(mapping) for e in r.exprs)
+    left = set().union(*(_placeholders(e) for e in exprs))
+    if left and not r.defines:
+        names = ", ".join(sorted(p.name[1:] for p in left))
+        return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
+    own = any(_placeholders(e) for e in r.exprs)
+    return Read(r.number, r.written, r.sides, r.tag, exprs, defines=r.defines, own_names=own)
+
+
+def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:
+    out = []
+    habit = [f"{n} as {_shown(e)}" for n, e in meanings.items() if n not in declared]
+    if declared:
+        out.append("Declared: " + ", ".join(f"{n} is {_shown(e)}" for n, e in declared.items()) + ".")
+    if habit:
+        out.append("Read " + ", ".join(habit) + ".")
+    if inferred:
+        out.append("Inferred from the relations: " + ", ".join(f"{n} is {what}" for n, what in inferred.items()) + ".")
+    if sign == -1 and not declared_sign:
+        out.append("Inferred from the values written: the positive direction is opposite to derive's n (B toward A).")
+    return out
+
+
+def _shown(e: sympy.Expr) -> str:
+    return e.name if isinstance(e, sympy.Symbol) else "the common velocity"

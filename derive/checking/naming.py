@@ -1,0 +1,216 @@
+"""What a student's names stand for: declared, habitual, introduced, or inferred.
+
+A derivation is written in the student's names, not derive's. They are read, in order:
+
+1. **declared** in the file: a line ``let x = v_A2`` (also ``x := v_A2``, ``where x = v_A2``);
+   a line ``positive: away from A`` or ``positive: reversed`` says the student's positive
+   direction is opposite to derive's n (the line from A toward B);
+2. **habits**: ``u_A, u_B`` (``u1, u2``, ``u``) before and ``v_A, v_B`` (``v1, v2``, ``v``)
+   after (the A-level habit);
+   ``v_G``, ``v_cm``, ``V`` the common velocity (m_A v_A1 + m_B v_B1)/(m_A + m_B);
+   ``KE before``, ``KE after``, ``KE lost``, ``Delta KE``, ``loss of KE`` the energies;
+   ``3eu`` and ``5mv_A`` products of names written side by side;
+3. **introduced**: a line ``NAME = expression`` that uses only known names defines NAME
+   for the lines after it (``v_G = (m_A u_A + m_B u_B)/(m_A + m_B)``);
+4. **inferred**: a name still unknown (``x``, ``y``, ``w``) stands for the velocity (or
+   common velocity, energy lost, impulse, unknown given) that makes the most of the
+   derivation's relations hold, and the sign convention is the one that makes the values
+   written hold (``u = -4`` for a speed of 4 toward the wall: the student's positive is
+   derive's negative). What was inferred is said in the report.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator, Mapping
+
+import sympy
+
+from derive.checking.context import Context
+from derive.mathtext.notation import student
+from derive.problem.expr import ParseError, parse
+from derive.problem.units import DIMENSIONLESS
+
+#: Phrases for the energies and speeds, rewritten as names before reading.
+PHRASES = (
+    (r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+KE|KE\s+loss|lost\s+KE|T_?\(?lost\)?)", "T_lost"),
+    (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
+    (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
+    (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
+)
+_DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
+_POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+#: Names of the common velocity.
+COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G")
+PREFIX = "?"
+
+
+class Open(Mapping):
+    """The names a side may use: the problem's, the student's known ones, and a placeholder
+    symbol for every other name that looks like one (a letter with a subscript, a single
+    letter); words do not (so prose fails to parse and is trimmed)."""
+
+    def __init__(self, known: dict[str, sympy.Expr], extra: set[str] = frozenset()) -> None:
+        self.known = known
+        self.extra = extra  # the student's names with a meaning (habits, declarations)
+        self.placeholders: dict[str, sympy.Symbol] = {}
+
+    def __getitem__(self, name: str) -> tuple[sympy.Expr, tuple]:
+        if name in self.known:
+            return self.known[name], DIMENSIONLESS
+        if not name_like(name) and name not in self.extra:
+            raise KeyError(name)
+        sym = self.placeholders.setdefault(name, sympy.Symbol(PREFIX + name))
+        return sym, DIMENSIONLESS
+
+    def __contains__(self, name: object) -> bool:
+        return isinstance(name, str) and (name in self.known or name in self.extra or name_like(name))
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.known)
+
+    def __len__(self) -> int:
+        return len(self.known)
+
+
+def name_like(name: str) -> bool:
+    """A name, not a word: ``x``, ``V``, ``u_A``, ``u1``, ``v_G`` (not ``of``, ``the``, ``KE``)."""
+    if name in GREEK:
+        return True
+    return len(name) == 1 or re.fullmatch(r"[A-Za-z]{1,2}(?:_[A-Za-z0-9]{1,6}|\d{1,2})", name) is not None
+
+
+#: Greek letters students name things with (mu the reduced mass, omega, lambda).
+GREEK = frozenset({"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", "psi", "sigma", "tau", "delta"})
+
+
+def rewrite(text: str, known: set[str]) -> str:
+    """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
+    for pattern, name in PHRASES:
+        text = re.sub(pattern, name, text, flags=re.I)
+    text = re.sub(r"\b([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text)
+    text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
+    text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
+    text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
+
+    def split(m: re.Match) -> str:
+        word = m.group(0)
+        if word in known or word in FUNCTION_WORDS or len(word.partition("_")[0]) > 3:
+            return word
+        head, _, sub = word.partition("_")
+        letters = list(head)
+        if sub:
+            letters[-1] += "_" + sub
+        return " ".join(letters) if len(letters) > 1 and all(x in known for x in letters) else word
+
+    return _NAME.sub(split, notes_names(text))
+
+
+def notes_names(text: str) -> str:
+    """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
+    ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""
+    text = re.sub(r"\b[vV]_([AB])([12])([nt])\b", r"v_\1\2\3", text)
+    text = re.sub(r"\b[vV]_([AB])([nt])([12])\b", r"v_\1\3\2", text)
+    text = re.sub(r"\bM_([AB])\b", r"m_\1", text)
+    return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
+
+
+FUNCTION_WORDS = frozenset(
+    {"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"}
+)
+
+
+def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
+    """One side of a relation in the problem's symbols (placeholders for unknown names); where
+    it does not read, the first side is read without its leading words and the last without
+    its trailing ones (prose around the mathematics)."""
+    try:
+        return parse(student(text), names).expr
+    except ParseError:
+        if not (first or last):
+            raise
+    words = text.split()
+    for k in range(1, len(words)):
+        piece = " ".join(words[k:] if first and not last else words[:-k] if last and not first else words[k:])
+        try:
+            return parse(student(piece), names).expr
+        except ParseError:
+            continue
+    raise ParseError(f"could not read {text!r}")
+
+
+def common_velocity(ctx: Context) -> sympy.Expr:
+    """(m_A v_A1 + m_B v_B1)/(m_A + m_B) in the problem's symbols (the velocity of the centre of mass)."""
+    m, nm = ctx.model, ctx.model.nm
+    a1 = nm.A1n
+    b1 = nm.B1n if nm.B1n is not None else 0
+    return (m.m_A * a1 + m.m_B * b1) / (m.m_A + m.m_B)
+
+
+def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
+    """The habitual names the text uses that the problem does not define, -> what they stand for."""
+    nm = ctx.model.nm
+    oblique = ctx.problem.oblique
+    before = {"A": nm.A1n, "B": nm.B1n}
+    after = {"A": _post(ctx, "A"), "B": _post(ctx, "B")}
+    out: dict[str, sympy.Expr] = {}
+    u_used = used is None or any(re.fullmatch(r"u(?:_?[AB12ab]?[nt]?)?", n) for n in used)
+    for body, one in (("A", "1"), ("B", "2")):
+        for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
+            out[spelled] = before[body]
+        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
+            out[spelled] = after[body]  # the A-level habit (u before, v after), u's written or not
+        out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
+        if oblique:
+            for c in "nt":
+                out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
+                if u_used:
+                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
+    names = ctx.equation_names()
+    for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
+        if name in names:
+            out.setdefault(alias, names[name][0])
+    out["u"] = before["A"]
+    if oblique:  # a single body's components
+        out["u_n"], out["u_t"] = nm.A1n, nm.A1t
+        if u_used:
+            out["v_n"], out["v_t"] = nm.A2n, nm.A2t
+    if ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
+        out["m"] = ctx.model.m_A
+        out["v"] = after["A"]
+    if u_used:
+        out["v"] = after["A"]
+    for name in COMMON:
+        out[name] = common_velocity(ctx)
+    return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
+
+
+def _post(ctx: Context, body: str) -> sympy.Expr | None:
+    nm = ctx.model.nm
+    return getattr(nm, f"{body}2n")
+
+
+def declaration(line: str) -> bool:
+    """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
+    line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
+    return bool(_DECLARE.match(line) or _POSITIVE.match(line))
+
+
+def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
+    """``let x = v_A2`` lines -> {x: v_A2}, and the sign of a ``positive:`` line (+1 where none)."""
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    sign = 0
+    for line in text.splitlines():
+        line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
+        m = _DECLARE.match(line)
+        if m and m.group(2) in names:
+            out[m.group(1)] = names[m.group(2)][0]
+        m = _POSITIVE.match(line)
+        if m:
+            words = m.group(1).lower()
+            sign = -1 if re.search(r"revers|opposite|negative|away from the wall|from b toward a|-n\b", words) else 1
+    return out, sign

@@ -1,0 +1,110 @@
+"""A derivation's relations as pairs of sides in the unknowns, and the worlds they hold in:
+the true velocities, or those of the student's own equations (a slip and what it carries).
+Each relation holds within the precision of the decimals written, and a number written
+alone on a side at its figures (±1 in its last digit)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from decimal import Decimal
+
+import sympy
+
+from derive.checking.figures import figures, round_figures
+from derive.checking.figures import judge as at_figures_written
+from derive.checking.numeric import number_of
+from derive.checking.relations import Point, Values, linear_roots, satisfied
+from derive.mathtext.notation import student
+from derive.numbers import to_decimal
+
+#: A side that is a number as written (``-1.11``, ``(37.6*deg)``).
+NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One ``=`` of a line: its sides as written and in the unknowns (everything known in)."""
+
+    text: str
+    left: sympy.Expr
+    right: sympy.Expr
+    tol: float
+    raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
+
+    @property
+    def difference(self) -> sympy.Expr:
+        return self.left - self.right
+
+
+def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
+    for pt, vals in zip(pts, values, strict=True):
+        left = number_of(p.left.xreplace(pt).xreplace(vals))
+        right = number_of(p.right.xreplace(pt).xreplace(vals))
+        if left is None or right is None:
+            return False
+        scale = max(abs(left), abs(right))
+        far = abs(left - right) > 2 * p.tol * scale
+        if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not at_figures(p, left, right):
+            return False
+    return True
+
+
+def three_figures(sides: tuple[str, ...], data: set) -> str:
+    """The decimals of a line's middle sides written to 3 figures or more (their rounding is
+    the student's own, and allowed for; 2-figure ones are rounding too early)."""
+    found = re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides[1:-1]))
+    if any(figures(Decimal(t)) < 3 and sympy.Rational(t) not in data for t in found):
+        return ""
+    return " ".join(found)
+
+
+def written_right(u: Decimal, x: sympy.Expr) -> bool:
+    """``u`` is ``x`` at the figures written (±1 in the last digit), and a number of one
+    figure is ``x`` rounded (5 is not 6: one figure leaves no room for rounded working)."""
+    if not at_figures_written(u, x, None):
+        return False
+    return figures(u) != 1 or round_figures(to_decimal(x), 1) == u
+
+
+def at_figures(p: Pair, left: complex, right: complex) -> bool:
+    """A side that is a number as written (``= -12``, ``= 20``) is right at its figures
+    (±1 in its last digit): -11.88 is -12 at two figures."""
+    for text, other in zip(p.text.split(" = ", 1)[::-1], (left, right), strict=True):
+        m = NUMBER_SIDE.match(student(text.strip()))
+        if m and not m.group(3) and abs(other.imag) < 1e-12:
+            try:
+                return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30))
+            except (ArithmeticError, ValueError):
+                return False
+    return False
+
+
+def alike(a: dict, b: dict) -> float:
+    """|cos| of the angle between two coefficient vectors (their linear parts)."""
+    keys = [m for m in set(a) | set(b) if sum(m) == 1]
+    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
+    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
+    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
+    return abs(dot) / (na * nb) if na and nb else 0.0
+
+
+def solve_world(
+    equations: dict[int, sympy.Expr], U: tuple[sympy.Symbol, ...], pts: list[Point], near: list[Values]
+) -> list[Values] | None:
+    """The velocities that satisfy ``equations`` at each point (the root nearest ``near``)."""
+    out = []
+    for pt, guide in zip(pts, near, strict=True):
+        roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
+        if roots is None:
+            eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
+            try:
+                roots = [r for r in sympy.solve(eqs, list(U), dict=True, rational=False) if set(r) == set(U)]
+            except (NotImplementedError, ValueError, TypeError):
+                return None
+        if not roots:
+            return None
+        target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
+        roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
+        out.append(roots[0])
+    return out

@@ -1,0 +1,137 @@
+"""A row of LaTeX mathematics as plain text: ``\\frac{a}{b}`` -> ``((a)/(b))``, ``v_{A2n}`` ->
+``v_A2n``, ``5 \\cos 37.6^\\circ`` -> ``5 cos 37.6°``, spacing (``\\,`` ``\\;`` ``\\quad``) and
+alignment (``&``) dropped, ``\\approx`` read as ``=``, ``\\tan^{-1}`` as ``atan``."""
+
+from __future__ import annotations
+
+import re
+
+_DROP = re.compile(
+    r"\\(?:left|right|displaystyle|textstyle|quad|qquad|big|Big|bigg|Bigg)(?![A-Za-z])|\\[,;:! ]|&|~"
+    r"|\\label\{[^}]*\}|\\nonumber|\\notag"
+)
+_WORDS = {
+    r"\theta": " theta ",
+    r"\beta": " beta ",
+    r"\alpha": " alpha ",
+    r"\phi": " phi ",
+    r"\varphi": " phi ",
+    r"\pi": " pi ",
+    r"\Delta": " Delta ",
+    r"\mu": " mu ",
+    r"\lambda": " lambda ",
+    r"\omega": " omega ",
+    r"\gamma": " gamma ",
+    r"\epsilon": " epsilon ",
+    r"\varepsilon": " epsilon ",
+    r"\cdot": "*",
+    r"\times": "*",
+    r"\div": "/",
+    r"\circ": "°",
+    r"\approx": "=",
+    r"\simeq": "=",
+    r"\degree": "°",
+    r"\arctan": " atan ",
+    r"\arcsin": " asin ",
+    r"\arccos": " acos ",
+    r"\sin": " sin ",
+    r"\cos": " cos ",
+    r"\tan": " tan ",
+    r"\ln": " log ",
+    r"\sqrt": "sqrt",
+    r"\checkmark": " ",
+    r"\%": "%",
+}
+_WRAPPERS = (
+    "cancel",
+    "bcancel",
+    "xcancel",
+    "boxed",
+    "vec",
+    "bar",
+    "mathbf",
+    "mathit",
+    "mathrm",
+    "overline",
+    "operatorname",
+    "textbf",
+    "bm",
+    "boldsymbol",
+)
+
+
+def latex_to_plain(tex: str) -> str:
+    """A row of LaTeX mathematics as plain text.
+
+    >>> latex_to_plain(r"v_{A2n} &= \\frac{19.8 - 5(9.51)}{25} \\approx -1.11\\,\\text{m/s}")
+    'v_A2n = ((19.8 - 5(9.51))/(25)) = -1.11'
+    >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11)")
+    'theta = atan(3.05/1.11)'
+    """
+    s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
+    s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
+    s = re.sub(r"\\(?:text|mathrm)\s*\{\s*(?:m|kg|N|J|s|ms|m\s*s|N\s*s)\s*\}\s*\^\s*\{\s*-\s*\d\s*\}", " ", s)
+    s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
+    s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
+    s = _DROP.sub(" ", s)
+    s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
+    s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
+    for cmd in _WRAPPERS:
+        s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
+        s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
+    s = re.sub(r"\\sqrt\s*(\d+|[A-Za-z])(?![\w{])", r"sqrt(\1)", s)  # \sqrt3
+    s = fracs(s)
+    for word, plain in _WORDS.items():
+        s = re.sub(re.escape(word) + r"(?![A-Za-z])", plain, s)
+    s = re.sub(r"_\{([A-Za-z0-9]+)\}", r"_\1", s)
+    s = re.sub(r"_\{([A-Za-z0-9]+),?\s*([A-Za-z0-9]+)\}", r"_\1\2", s)
+    s = re.sub(r"\s+_", "_", s)
+    s = " ".join(s.replace("{", "(").replace("}", ")").split())
+    return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
+
+
+def _text(m: re.Match) -> str:
+    """``\\text{…}``: a unit or words are dropped; a tag (``m/s (4)``) is kept; a name written
+    in it (``\\text{KE}``, ``T_{\\text{lost}}``) is kept as a name."""
+    inner = m.group(1).strip()
+    tag = re.search(r"\(\s*\d{1,2}[a-z]?\s*\)\s*$", inner)
+    if tag:
+        return f" {tag.group(0).strip()} "
+    if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
+        return inner
+    if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
+        return f" {inner} "  # "KE lost": a name the caller knows
+    return " "
+
+
+_UNIT_WORDS = frozenset({"m", "s", "kg", "J", "N", "Ns", "ms", "ft", "lb", "slug", "deg", "rad", "g", "kJ", "km", "h"})
+
+
+def fracs(s: str) -> str:
+    """``\\frac{a}{b}`` (also ``\\dfrac``, ``\\tfrac``, ``\\frac12``) as ``{(a)/(b)}``, nested ones too."""
+    pattern = re.compile(r"\\[dt]?frac\s*")
+    while True:
+        m = pattern.search(s)
+        if not m:
+            return s
+        num, after = group(s, m.end())
+        den, end = group(s, after)
+        if num is None or den is None:
+            return s[: m.start()] + s[m.end() :]
+        s = s[: m.start()] + "{(" + num + ")/(" + den + ")}" + s[end:]
+
+
+def group(s: str, i: int) -> tuple[str | None, int]:
+    """The brace group (or single character) at ``s[i]``, and where it ends."""
+    while i < len(s) and s[i] == " ":
+        i += 1
+    if i >= len(s):
+        return None, i
+    if s[i] != "{":
+        return s[i], i + 1
+    depth = 0
+    for j in range(i, len(s)):
+        depth += {"{": 1, "}": -1}.get(s[j], 0)
+        if depth == 0:
+            return s[i + 1 : j], j + 1
+    return None, len(s)

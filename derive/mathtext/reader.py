@@ -1,0 +1,213 @@
+"""The relations of a typed text, each with where it stands: plain lines, Markdown, LaTeX.
+
+A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( … \\)``,
+``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is rewritten as plain
+text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
+HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
+relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
+"and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag
+``(3)`` is taken off, a lead-in up to a colon (``CLM:``) and a unit after a number are
+dropped. Words stay: what a name means is the caller's business.
+
+>>> [(r.line, r.sides) for r in read_relations("2x + y = 5\\nsubtract: 3x = -3  so x = -1, y = 7")]
+[(1, ('2x + y', '5')), (2, ('3x', '-3')), (2, ('x', '-1')), (2, ('y', '7'))]
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from derive.mathtext.latex import latex_to_plain
+
+#: The most relations read from one text.
+MAX_RELATIONS = 400
+
+
+@dataclass(frozen=True)
+class Relation:
+    """One relation of a text: ``line`` (1-based) and ``column`` (0-based) where its line
+    starts, ``written`` that line (or row) as typed, ``sides`` in plain syntax (``a = b = c``
+    has three), ``tag`` its label ("3" for ``(3)``; "" where none)."""
+
+    line: int
+    column: int
+    written: str
+    sides: tuple[str, ...]
+    tag: str = ""
+
+
+_ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
+_OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
+_CLOSE = {
+    "$$": re.compile(r"\$\$"),
+    r"\[": re.compile(r"\\\]"),
+    r"\(": re.compile(r"\\\)"),
+    "$": re.compile(r"(?<!\\)\$"),
+}
+_ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
+_ARROW = re.compile(
+    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and)(?![\w])",
+    re.I,
+)
+_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
+_TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
+_LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
+_UNIT_END = re.compile(
+    r"(?:(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph"
+    r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
+)
+_TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
+_COMMENT = re.compile(r"<!--.*?-->", re.S)
+_RELATION = re.compile(r"=|≈")
+
+
+def read_relations(text: str) -> tuple[Relation, ...]:
+    """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
+    out: list[Relation] = []
+    for line, column, written, plain in pieces(text):
+        if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
+            plain = f"{out[-1].sides[-1]} {plain}"
+        for part in split_relations(plain):
+            r = relation(line, column, written, part)
+            if r is not None:
+                out.append(r)
+                if len(out) >= MAX_RELATIONS:
+                    return tuple(out)
+    return tuple(out)
+
+
+def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
+    """(line, column, as written, plain text) of each line, and of each row of a display
+    (a display that spans lines is one row until ``\\\\``, at the line where the row starts)."""
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+    lines = text.split("\n")
+    n, close, rows = 0, None, []
+    while n < len(lines):
+        raw = _tex_comment(lines[n])
+        if close is None:
+            plain, close, rows = _line(raw, n + 1)
+            if plain.strip():
+                yield n + 1, len(raw) - len(raw.lstrip()), _unwrapped(lines[n]), plain
+        else:
+            m = close.search(raw)
+            rows.append((n + 1, raw[: m.start()] if m else raw))
+            if m:
+                yield from _rows(rows, lines)
+                plain, close, rows = _line(raw[m.end() :], n + 1)
+                if plain.strip():
+                    yield n + 1, m.end(), lines[n].strip(), plain
+        n += 1
+    if rows:
+        yield from _rows(rows, lines)
+
+
+def _unwrapped(line: str) -> str:
+    """A line as written, without the delimiters of a display that is all of it."""
+    m = re.fullmatch(r"\s*(?:\$\$(.+)\$\$|\\\[(.+)\\\])\s*", line)
+    return (m.group(1) or m.group(2)).strip() if m else line.strip()
+
+
+def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
+    """The rows of a display that spans lines: its text split at ``\\\\`` only."""
+    row: list[str] = []
+    first = rows[0][0]
+    for number, text in rows:
+        parts = re.split(r"\\\\", text)
+        for k, part in enumerate(parts):
+            if k and "".join(row).strip():
+                yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+            if k:
+                row, first = [], number
+            if not "".join(row).strip():
+                first = number
+            row.append(part)
+    if "".join(row).strip():
+        yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+
+
+def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int, str]]]:
+    """One line outside a display: its text with each piece of mathematics in it made plain
+    (rows of a display on one line joined by ";"); the closing mark of a display it opens
+    and does not close (None where it closes all), and that display's text so far."""
+    out, i = [], 0
+    while True:
+        m = _OPEN.search(raw, i)
+        if m is None:
+            out.append(raw[i:])
+            return " ".join(out), None, []
+        out.append(raw[i : m.start()])
+        close = _CLOSE.get(m.group(0), _ENV_CLOSE)
+        end = close.search(raw, m.end())
+        if end is None:
+            return " ".join(out), close, [(number, raw[m.end() :])]
+        body = raw[m.end() : end.start()]
+        out.append(" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body)))
+        i = end.end()
+
+
+def _tex_comment(line: str) -> str:
+    """A line without its TeX comment (``%`` not after a backslash)."""
+    m = re.search(r"(?<!\\)%", line)
+    return line[: m.start()] if m and not re.search(r"\d\s*$", line[: m.start()]) else line
+
+
+def split_relations(plain: str) -> list[str]:
+    """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
+    brackets) that comes before another relation."""
+    plain = plain.replace("≈", "=")
+    plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
+    parts: list[str] = []
+    for chunk in _ARROW.split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
+        for piece in _top_level_split(chunk, ";"):
+            parts += _comma_split(piece)
+    return [p for p in parts if _RELATION.search(p)]
+
+
+def _comma_split(piece: str) -> list[str]:
+    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one."""
+    bits = _top_level_split(piece, ",")
+    out: list[str] = []
+    for bit in bits:
+        if out and "=" in bit and "=" in out[-1]:
+            out.append(bit)
+        elif out:
+            out[-1] += "," + bit
+        else:
+            out.append(bit)
+    return out
+
+
+def _top_level_split(s: str, sep: str) -> list[str]:
+    out, depth, start = [], 0, 0
+    for i, c in enumerate(s):
+        depth += {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0)
+        if c == sep and depth == 0:
+            out.append(s[start:i])
+            start = i + 1
+    out.append(s[start:])
+    return out
+
+
+def relation(line: int, column: int, written: str, text: str) -> Relation | None:
+    """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
+    inequality."""
+    tag = ""
+    text = _TICK.sub(" ", text)
+    m = _TAG_START.match(text)
+    if m:
+        tag, text = m.group(1) or m.group(2), text[m.end() :]
+    text = _LEAD.sub("", text.strip())
+    m = _TAG_END.search(text)
+    if m:
+        tag, text = m.group(1), text[: m.start()]
+    text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
+        return None
+    sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
+    if any(not s for s in sides):
+        return None
+    return Relation(line, column, written, sides, tag)
