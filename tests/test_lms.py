@@ -292,7 +292,7 @@ def test_prairielearn_statement_as_one_parameter_when_no_template(
     compiled: variants.Compiled, chosen: list[variants.Variant], moodle: str, tmp_path: Path, monkeypatch
 ) -> None:
     """A statement with a number that is no varied given's goes whole into the params."""
-    monkeypatch.setattr(lms.pl, "_statement_template", lambda compiled: None)
+    monkeypatch.setattr(lms.pl, "statement_template", lambda compiled: None)
     lms.prairielearn(compiled, chosen[:2], tmp_path, result=RESULT)
     assert "{{{params.derive_statement}}}" in (tmp_path / "question.html").read_text()
     data: dict = {"variant_seed": 1}

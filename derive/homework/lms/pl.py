@@ -24,7 +24,7 @@ TOPIC = "Central impact"
 _PARAM = "DRVPARAM{}X"
 
 
-def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, str]]] | None:
+def statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, str]]] | None:
     """The statement as HTML with ``{{params.NAME}}`` where each varied given's number
     goes, and what each parameter is (given name, slot kind); None when the statement
     holds a number that is not a varied given's, and for a chain (solved per variant: its
@@ -55,7 +55,10 @@ def _statement_template(compiled: Compiled) -> tuple[str, dict[str, tuple[str, s
     return page, keys
 
 
-def _params(compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None) -> dict:
+def statement_params(
+    compiled: Compiled, variant: Variant, keys: dict[str, tuple[str, str]], digits: int | None
+) -> dict:
+    """Each parameter of :func:`statement_template` as this variant prints it (TeX for a Given line)."""
     from derive.homework.variants import given_text
     from derive.writers.view.givens import statement_number
 
@@ -143,7 +146,7 @@ def prairielearn_files(
         model = None
     elif model is None:
         model = MistakeModel(compiled)
-    template = _statement_template(compiled)
+    template = statement_template(compiled)
     rows = [_row(compiled, v, result, digits, d, template, model) for v in variants]
     statement = template[0] if template is not None else "{{{params.derive_statement}}}"
     question = _question_html(compiled, variants, result, digits, statement)
@@ -180,7 +183,7 @@ def _row(
     right = asked_answer(result, answers(compiled, v, digits)[result], d)
     ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
     if template is not None:
-        params = _params(compiled, v, template[1], digits)
+        params = statement_params(compiled, v, template[1], digits)
     else:
         params = {"derive_statement": statement_html(page)}
     params.update(
