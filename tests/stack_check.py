@@ -146,7 +146,12 @@ def check_fields(q: ET.Element) -> list[str]:
     return errors
 
 
-_TOKEN = re.compile(r"\[\[escape\]\](?:(?!\[\[/\s*escape\s*\]\]).)*\[\[/escape\]\]|\[\[[^\]]*\]\]|\{[@#]|[@#]\}", re.S)
+_TOKEN = re.compile(
+    r"\[\[escape\]\](?:(?!\[\[/\s*escape\s*\]\]).)*\[\[/escape\]\]"  # an escape block, whole
+    r'|\[\[(?:[^\]"]|"[^"]*")*\]\]'  # a block's tag (a test may hold "]")
+    r"|\{[@#]|[@#]\}",
+    re.S,
+)
 
 
 def check_castext(text: str, allowed: tuple[str, ...] = ()) -> list[str]:
