@@ -114,7 +114,7 @@ class _Question:
             f"/* derive: {problem_name(c)}, {n} variants; seed k is derive's variant k */",
             f"n1:mod(stack_seed-1,{n})+1;",
         ]
-        for g in [] if c.is_chain else c.names:
+        for g in self.variants[0].values if self.variants else ():
             values = [maxima_number(float(v.values[g])) for v in self.variants]
             lines.append(f"{_name('dg_', g)}:{_list(values)};")
         if self.template is not None:
