@@ -15,11 +15,10 @@ def run_variants(args: argparse.Namespace) -> int:
     import derive
     from derive.homework.variants import MAX_COUNT, write_variants
 
-    if not 1 <= args.count <= MAX_COUNT:
-        raise InputError(f"expected a count from 1 to {MAX_COUNT}", where="usage", field=f"--count {args.count}")
+    _resolve_count(args, MAX_COUNT)
     problem = derive.load(args.problem)
     exports = None
-    if args.moodle or args.prairielearn:  # built first: a bad --result writes nothing
+    if args.moodle or args.prairielearn or args.stack:  # built first: a bad --result writes nothing
         from derive.homework.lms import build_exports
 
         exports = build_exports(
@@ -30,9 +29,10 @@ def run_variants(args: argparse.Namespace) -> int:
             result=args.result,
             moodle=args.moodle,
             prairielearn=args.prairielearn,
+            stack=args.stack,
         )
     elif args.result:
-        raise InputError("--result is for --moodle or --prairielearn", where="usage")
+        raise InputError("--result is for --moodle, --prairielearn or --stack", where="usage")
     if exports is not None:  # every path checked before anything is written
         exports.check(inputs=(Path(problem.path),), output=args.output)
     failures = write_variants(
@@ -46,6 +46,24 @@ def run_variants(args: argparse.Namespace) -> int:
     return 1 if failures else 0
 
 
+def _resolve_count(args: argparse.Namespace, most: int) -> None:
+    """``--count``: 40 by default, 20 with ``--stack``; with ``--stack`` at most 50, since a STACK
+    question holds every variant's worked solution and each attempt sends them all to Maxima."""
+    from derive.homework.lms.stack import DEFAULT_COUNT, MAX_COUNT
+
+    if args.count is None:
+        args.count = DEFAULT_COUNT if args.stack else 40
+    if not 1 <= args.count <= most:
+        raise InputError(f"expected a count from 1 to {most}", where="usage", field=f"--count {args.count}")
+    if args.stack and args.count > MAX_COUNT:
+        raise InputError(
+            f"a STACK question holds at most {MAX_COUNT} variants (every variant's worked solution goes to "
+            "Maxima with each attempt): give --count 50 or less, or leave --stack out",
+            where="usage",
+            field=f"--count {args.count}",
+        )
+
+
 def _variants_summary(args: argparse.Namespace, failed: int) -> str:
     """What ``derive variants`` wrote, on one line: the folder, the key and the exports."""
     written = args.count - failed
@@ -56,6 +74,8 @@ def _variants_summary(args: argparse.Namespace, failed: int) -> str:
         parts.append(str(args.moodle))
     if args.prairielearn:
         parts.append(f"{args.prairielearn} (PrairieLearn question)")
+    if args.stack:
+        parts.append(f"{args.stack} (STACK questions)")
     return ", ".join(parts)
 
 

@@ -112,7 +112,9 @@ def _add_variants(sub: argparse._SubParsersAction) -> None:
     """The options of ``derive variants``."""
     p_var = sub.add_parser("variants", help="homework variants of a problem with a [vary] table, and an answer key")
     p_var.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
-    p_var.add_argument("--count", "-n", type=int, default=40, help="how many variants (default: 40)")
+    p_var.add_argument(
+        "--count", "-n", type=int, default=None, help="how many variants (default: 40; 20 with --stack, at most 50)"
+    )
     p_var.add_argument("--seed", type=int, default=1, help="the same seed and file give the same variants")
     p_var.add_argument(
         "--format",
@@ -125,6 +127,11 @@ def _add_variants(sub: argparse._SubParsersAction) -> None:
     p_var.add_argument("--digits", type=int, help="significant figures")
     p_var.add_argument("--moodle", metavar="FILE.xml", help="also write Moodle XML: one numerical question per variant")
     p_var.add_argument("--prairielearn", metavar="DIR", help="also write a PrairieLearn question folder")
+    p_var.add_argument(
+        "--stack",
+        metavar="FILE.xml",
+        help="also write STACK questions (Moodle XML): one per asked result, all variants",
+    )
     p_var.add_argument(
         "--result", metavar="NAME", help="the result the LMS questions ask for (default: the first asked)"
     )

@@ -1,7 +1,7 @@
-"""Homework variants for a learning-management system: Moodle XML and PrairieLearn.
+"""Homework variants for a learning-management system: Moodle XML, PrairieLearn and STACK.
 May import: the rest of homework, checking's mistakes, writers, steps, physics, problem and the leaves.
 
-Both exports ask for one result (``--result``) of each variant drawn by
+The Moodle and PrairieLearn exports ask for one result (``--result``) of each variant drawn by
 :mod:`derive.variants`, graded by the significant-figure rule of ``derive check``:
 
 * the right answer is the value as the answer key shows it (key.json ``shown``);
@@ -28,7 +28,11 @@ and whose ``grade()`` gives a wrong answer the same mistake hints (in place of
 pl-number-input's "does not have precision" message, which ``rtol="0"`` would give
 every wrong answer).
 
-Neither question text carries the problem's citation (its Source line): the
+STACK (:mod:`~derive.homework.lms.stack`): Moodle XML with one STACK question per asked
+result holding every variant (question variables in Maxima indexed by the deployed seed),
+graded by the same rule, with one node of its response tree per common mistake.
+
+No question text carries the problem's citation (its Source line): the
 citations of the bundled problems quote their published answers.
 
 Nothing here needs more than the standard library and derive itself.
@@ -52,6 +56,7 @@ from derive.homework.lms.markup import esc, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel, Range, Wrong, mistake_ranges
 from derive.homework.lms.moodle import DEFAULT_GRADE, OTHER_UNITS, PENALTY, moodle_xml
 from derive.homework.lms.pl import TOPIC, prairielearn, prairielearn_files
+from derive.homework.lms.stack import stack_xml
 
 __all__ = [
     "DEFAULT_GRADE",
@@ -76,6 +81,7 @@ __all__ = [
     "resolve_result",
     "significant_figures",
     "solution_html",
+    "stack_xml",
     "statement_html",
     "tolerance",
     "words",

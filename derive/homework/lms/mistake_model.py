@@ -39,6 +39,7 @@ class MistakeModel:
         self.base = None if compiled.is_chain else mistakes.Model(compiled.solution)
         self.registry = mistakes.REGISTRY
         self._wrong: dict[tuple, list[Wrong]] = {}
+        self._outcomes: dict[tuple, list[tuple[str, dict]]] = {}
 
     def model(self, variant: Variant) -> mistakes.Model:
         """The mistakes' model with this variant's numbers in."""
@@ -60,16 +61,26 @@ class MistakeModel:
         m.problem = replace(base.problem, givens=tuple(givens))
         return m
 
+    def outcomes(self, variant: Variant) -> list[tuple[str, dict]]:
+        """(mistake name, the results it gives) for each mistake that applies to the variant,
+        worked out once a variant (the STACK export asks for several results of each)."""
+        key = (variant.number, tuple(sorted((k, str(x)) for k, x in variant.values.items())))
+        if key not in self._outcomes:
+            m = self.model(variant)
+            out = []
+            for mk in self.registry.values():
+                built = mk.build(m)
+                outcome = m.outcome(built, mk) if built is not None else None
+                if outcome is not None:
+                    out.append((mk.name, outcome.results))
+            self._outcomes[key] = out
+        return self._outcomes[key]
+
     def values(self, variant: Variant, result: str) -> list[tuple[str, float]]:
         """(mistake name, the value of ``result`` it gives) for each mistake that applies."""
-        m = self.model(variant)
         out = []
-        for mk in self.registry.values():
-            built = mk.build(m)
-            if built is None:
-                continue
-            outcome = m.outcome(built, mk)
-            q = outcome.results.get(result) if outcome is not None else None
+        for name, results in self.outcomes(variant):
+            q = results.get(result)
             if q is None or q.value is None:
                 continue
             try:
@@ -78,7 +89,7 @@ class MistakeModel:
                 continue
             if abs(x.imag) > 1e-9 * max(1.0, abs(x.real)) or x.real != x.real or abs(x.real) == float("inf"):
                 continue
-            out.append((mk.name, x.real))
+            out.append((name, x.real))
         return out
 
     def wrong(self, variant: Variant, right: Answer, digits: int | None) -> list[Wrong]:
