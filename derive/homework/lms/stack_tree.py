@@ -17,12 +17,12 @@ right answer's node, tried first, always takes.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from decimal import Decimal
 
 from derive.homework.lms.grading import Answer, asked_answer
 from derive.homework.lms.mistake_model import MistakeModel, Wrong, mistake_ranges
 from derive.homework.variants import Compiled, Variant, answers
-from derive.records import dataclass
 
 
 @dataclass(frozen=True)
