@@ -122,6 +122,8 @@ class Judge:
             if name in over:
                 return over[name]
             q = self.quantity(name, scopes)
+            if q is None and name == "pi":  # \pi, unless the problem names something pi
+                return CTX.pi
             return None if q is None else q.value
 
         def vector(name: str, ax: str) -> object | None:

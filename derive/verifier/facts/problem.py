@@ -14,6 +14,7 @@ import sympy
 
 from derive.verifier import units
 from derive.verifier.facts import source
+from derive.verifier.facts.expression import Unread, evaluate
 from derive.verifier.facts.model import Table, number
 from derive.verifier.facts.physics import Before, after, derived, residuals
 
@@ -166,8 +167,22 @@ def impact(
         if phi is not None:
             comps.update(x=table.exprs.get(f"v_{b}2x", 0), y=table.exprs.get(f"v_{b}2y", 0))
         table.vectors[f"v_{b}2"] = comps
+    if read is not None:
+        _define(table, read)
     notes += _compare(table, solution, label)
     return notes
+
+
+def _define(table: Table, read: source.Read) -> None:
+    """The file's ``[define]`` quantities, from the results worked out here."""
+    for name, text in (read.data.get("define") or {}).items():
+        names = {n: (sympy.Symbol(n), table.dims.get(n, units.NONE)) for n in table.exprs}
+        try:
+            value, dim = evaluate(str(text), names)
+        except (Unread, units.UnitError):
+            read.unread.append(f"[define] {name}")
+            continue
+        table.put(name, table.resolve(value), dim)
 
 
 def _motion(table: Table, motion: object, read: source.Read | None, body: str) -> tuple[sympy.Expr, sympy.Expr]:
