@@ -20,7 +20,7 @@ from derive.verifier.facts import Facts, Scope
 from derive.verifier.latex import parse_display, parse_inline
 from derive.verifier.reader import Line
 from derive.verifier.tokens import LatexError
-from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Vec
+from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 
 TOLERANCE = CTX.mpf(10) ** -20
 TINY = CTX.mpf(10) ** -20  # an absolute floor: 25 cos 90° at 40 digits is 1e-42, not 0
@@ -71,6 +71,8 @@ class Judge:
         self.facts = facts
         self.claims = [read_claim(line) for line in lines]
         self.unresolved: set[tuple[int, str]] = set()
+        #: line -> why a side of it could not be valued (the rule ``read`` reports them)
+        self.unvalued: dict[int, str] = {}
 
     def solved_view(self) -> Judge | None:
         """The same claims with a chain's unknowns solved everywhere (None when nothing changes)."""
@@ -80,6 +82,7 @@ class Judge:
         f = self.facts
         other.facts = Facts({**f.scopes, **f.solved}, f.digits, f.chain, f.notes)
         other.unresolved = set()
+        other.unvalued = {}
         return other
 
     # scopes ----------------------------------------------------------------
@@ -216,14 +219,31 @@ class Judge:
         """Each side's value (None where a name has no value or the side no number)."""
         out: list[Value | None] = []
         for i, side in enumerate(relation.sides):
+            if isinstance(side.expr, Unknown):  # "e = ?": the name must be one the problem asks for
+                self._unknown_given(claim, relation)
+                out.append(None)
+                continue
             try:
                 out.append(self.value(side, self.side_scopes(claim, i), axis, result=is_stated(claim, relation, i)))
             except Unresolved as exc:
                 self.unresolved.add((claim.line.number, str(exc)))
+                self.unvalued.setdefault(claim.line.number, f"{side.source} names {exc}, which has no value here")
                 out.append(None)
-            except (Undefined, ZeroDivisionError, ValueError, OverflowError):
+            except units.UnitError as exc:
+                self.unvalued.setdefault(claim.line.number, str(exc))
+                out.append(None)
+            except (Undefined, ZeroDivisionError, ValueError, OverflowError) as exc:
+                self.unvalued.setdefault(claim.line.number, f"{side.source} has no value ({exc})")
                 out.append(None)
         return out
+
+    def _unknown_given(self, claim: Claim, relation: Relation) -> None:
+        first = relation.sides[0].expr
+        scopes = self.side_scopes(claim, 0)
+        q = self.quantity(first.name, scopes) if isinstance(first, Sym) else None
+        asked = q is not None and (q.role == "unknown" or any(q.name in s.asked for s in scopes))
+        if not asked:
+            self.unvalued.setdefault(claim.line.number, f"{relation.sides[0].source} is shown as unknown (?)")
 
     def names(self, node: object) -> Iterator[str]:
         for n in walk(node):
