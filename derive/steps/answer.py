@@ -259,7 +259,9 @@ def _derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _impulse_line(page, r, boxed)
     defined = {d.name: d for d in page.p.asks.defined}
     if r.name in defined:  # F_avg = J_n/dt = ...
-        if r.unit == "deg" and getattr(val, "free_symbols", None):  # an angle in letters: its degrees have no sign to show
+        if r.unit == "deg" and getattr(
+            val, "free_symbols", None
+        ):  # an angle in letters: its degrees have no sign to show
             return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,))), boxed=boxed)
         return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
     return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)

@@ -73,6 +73,17 @@ class Judge:
         self.unresolved: set[tuple[int, str]] = set()
         #: line -> why a side of it could not be valued (the rule ``read`` reports them)
         self.unvalued: dict[int, str] = {}
+        #: read a number with the figures of an intermediate as a rounding, even where its
+        #: digits are a given's (76.37 for v_A2 when v_A1 = 76.37 is given)
+        self.coincident = False
+
+    def rounded_view(self) -> Judge:
+        """The same claims with a given's digits in a working line allowed to be a rounding."""
+        other = copy.copy(self)
+        other.coincident = True
+        other.unvalued = {}
+        other.unresolved = set()
+        return other
 
     def solved_view(self) -> Judge | None:
         """The same claims with a chain's unknowns solved everywhere (None when nothing changes)."""
@@ -160,6 +171,8 @@ class Judge:
             return True
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:
+            return False
+        if self.coincident and len(num.mantissa.replace("-", "").replace(".", "").lstrip("0")) >= rule:
             return False
         v = num.value.normalize()
         return any(v in s.exact for s in scopes)

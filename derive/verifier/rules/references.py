@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute
 from derive.verifier.judge import Claim, Judge, Value, tolerance
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Side, Sym
+from derive.verifier.tree import Add, Mul, Num, Side, Sym
 
 RULE = "references"
 OPERATIONS = (
@@ -30,9 +30,12 @@ OPERATIONS = (
     (re.compile(r"(?:Substitute|Back) into \((\d+)\)"), "into"),
     (re.compile(r"^From \((\d+)\)"), "from"),
     (re.compile(r"^Solve ((?:\(\d+\)(?:,| and)? ?)+) together"), "together"),
+    (re.compile(r"^Multiply \((\d+)\) by \$([-\d.]+)\$ and add it to \((\d+)\)"), "multiply-add"),
+    (re.compile(r"^Multiply \((\d+)\) by \$([-\d.]+)\$ and subtract it from \((\d+)\)"), "multiply-subtract"),
 )
 CANCELS = re.compile(r"\$([^$]+)\$ cancels")
 STEPS = (CTX.mpf("0.37"), CTX.mpf("-0.61"), CTX.mpf("1.13"))
+TOLERANCE_C = CTX.mpf(10) ** -9
 
 
 @dataclass
@@ -43,6 +46,7 @@ class Step:
     tags: tuple[str, ...]
     cancels: tuple[str, ...]
     claim: Claim
+    factor: str = "1"
 
 
 def _name(latex: str) -> str:
@@ -65,9 +69,12 @@ def steps(judge: Judge) -> Iterator[Step]:
         for pattern, op in OPERATIONS:
             m = pattern.search(line.sentence)
             if m:
-                tags = tuple(re.findall(r"\d+", m.group(0)))
+                if op.startswith("multiply"):  # Multiply (a) by k and add it to (b)
+                    tags, factor = (m.group(1), m.group(3)), m.group(2)
+                else:
+                    tags, factor = tuple(re.findall(r"\(?(\d+)\)", m.group(0))), "1"
                 cancels = tuple(_name(c) for c in CANCELS.findall(line.sentence))
-                yield Step(op, tags, cancels, claim)
+                yield Step(op, tags, cancels, claim, factor)
                 break
 
 
@@ -107,6 +114,11 @@ class _Operation:
             ref = Add(((1, eqs[0]), (1, eqs[1])))
         elif step.op == "subtract":  # Subtract (a) from (b): (b) - (a)
             ref = Add(((1, eqs[1]), (-1, eqs[0])))
+        elif step.op.startswith("multiply"):  # (b) + k (a), or (b) - k (a)
+            sign = 1 if step.op == "multiply-add" else -1
+            ref = Add(((1, eqs[1]), (sign, Mul((Num(step.factor.lstrip("-")), eqs[0])))))
+            if step.factor.startswith("-"):
+                ref = Add(((1, eqs[1]), (-sign, Mul((Num(step.factor.lstrip("-")), eqs[0])))))
         else:
             ref = eqs[0]
         self.line = _equation(step.claim)
@@ -135,6 +147,10 @@ class _Operation:
 
     def reasons(self) -> Iterator[str]:
         if self.line is None or self.ref is None:
+            return
+        if self.free and not set(self.judge.names(self.ref)) & self.free:
+            named = " and ".join(f"({t})" for t in self.step.tags)
+            yield f"{named} has none of the unknowns of the line under it ({', '.join(sorted(self.free))})"
             return
         pts = [self.point(k) for k in range(len(STEPS))]
         shown = [self.value(self.line, p) for p in pts]
@@ -166,6 +182,9 @@ class _Operation:
             return
         c = shown[k].center / ref[k].center
         dc = (shown[k].radius + abs(c) * ref[k].radius) / abs(ref[k].center)
+        if self.step.op in ("add", "subtract") and abs(abs(c) - 1) > dc + TOLERANCE_C:
+            yield f"the line is not {what} {named} (it is {float(c):.4g} times it)"
+            return
         for s, r in zip(shown, ref, strict=True):
             slack = s.radius + abs(c) * r.radius + abs(r.center) * dc + tolerance(s) + abs(c) * tolerance(r)
             if abs(s.center - c * r.center) > slack or not c:
@@ -188,13 +207,40 @@ def check(judge: Judge) -> Iterator[Failure]:
     for step in steps(judge):
         line = step.claim.line
         reason = _missing(step, tagged)
-        if reason is None and step.op != "together":
+        if reason is None and step.op == "together":
+            reason = _together(judge, step, tagged)
+        elif reason is None:
             try:
                 reason = next(_Operation(judge, step, tagged).reasons(), None)
             except (Unresolved, Undefined, ZeroDivisionError):
                 reason = None
         if reason:
             yield Failure(line.number, line.latex, RULE, f"{line.sentence} {reason}", line.scope)
+
+
+def _together(judge: Judge, step: Step, tagged: dict[str, Claim]) -> str | None:
+    """ "Solve (3) and (4) together": distinct equations, each with an unknown that the
+    lines under the sentence find, and together all of them."""
+    if len(set(step.tags)) != len(step.tags):
+        return "— an equation is named twice"
+    scopes = judge.chain_of(step.claim.line.scope)
+    unknowns = scopes[0].unknowns()
+    found = set()
+    for claim in judge.claims:
+        if claim.line.block == step.claim.line.block and claim.relations:
+            first = claim.relations[0].sides[0].expr
+            if isinstance(first, Sym) and first.name in unknowns:
+                found.add(first.name)
+    named: set[str] = set()
+    for t in step.tags:
+        eq = _equation(tagged[t])
+        names = set(judge.names(eq)) & unknowns if eq is not None else set()
+        if found and not names & found:
+            return f"— ({t}) has none of the unknowns found here ({', '.join(sorted(found))})"
+        named |= names
+    if found - named:
+        return f"— no equation named has {', '.join(sorted(found - named))}"
+    return None
 
 
 def _missing(step: Step, tagged: dict[str, Claim]) -> str | None:
