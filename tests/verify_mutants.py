@@ -128,7 +128,7 @@ def _bump(digits: str, up: bool) -> str | None:
     if new < 0:
         return None
     out = f"{new:f}"
-    return out if len(out.replace(".", "")) == len(digits.replace(".", "")) or up else out
+    return out
 
 
 def _number_off(line: PageLine, rng: random.Random) -> Iterator[str]:

@@ -169,6 +169,8 @@ class Judge:
         rule = min(self.rule_figures(num.value), self.rule_figures(abs(num.value) - Decimal("0.5")))
         if num.integer and len(num.mantissa) < rule:
             return True
+        if not num.integer and not num.exponent and num.figures < min(rule, 3) and not result:
+            return True  # 4.5 where the rule shows 3 figures: a rounding would read 4.50
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:
             return False

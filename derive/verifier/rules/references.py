@@ -17,11 +17,12 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
+from decimal import Decimal
 
-from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute
+from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
 from derive.verifier.judge import Claim, Judge, Value, tolerance
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Mul, Num, Side, Sym
+from derive.verifier.tree import Add, Frac, Mul, Num, Side, Sym
 
 RULE = "references"
 OPERATIONS = (
@@ -102,6 +103,21 @@ def _found_before(judge: Judge, step: Step) -> dict[str, object]:
     return out
 
 
+def _known_above(judge: Judge, step: Step, unknowns: frozenset[str]) -> set[str]:
+    """Unknowns a line above (in this part of the page) gives a value free of other unknowns."""
+    here = step.claim.line
+    out: set[str] = set()
+    for claim in judge.claims:
+        line = claim.line
+        if line.number >= here.number or line.scope != here.scope or not claim.relations or line.kind != "display":
+            continue
+        sides = claim.relations[0].sides
+        if len(sides) >= 2 and isinstance(sides[0].expr, Sym) and sides[0].expr.name in unknowns:
+            if any(not set(judge.names(s.expr)) & unknowns for s in sides[1:]):
+                out.add(sides[0].expr.name)
+    return out
+
+
 class _Operation:
     """The line under a step and the operation's equation, valued at points of the unknowns."""
 
@@ -124,14 +140,48 @@ class _Operation:
         self.line = _equation(step.claim)
         unknowns = self.scopes[0].unknowns()
         self.free = ({n for n in judge.names(self.line) if n in unknowns} | set(step.cancels)) & unknowns
+        before = _found_before(judge, step)
         if step.op == "into":  # what earlier lines found in terms of the unknowns left goes in
             found = {
                 n: e
-                for n, e in _found_before(judge, step).items()
+                for n, e in before.items()
                 if n not in self.free and n in unknowns and set(judge.names(e)) & self.free
             }
             ref = substitute(ref, found)
+            sides = step.claim.relations[0].sides if step.claim.relations else ()
+            if len(sides) >= 3:  # a value found above, put in by its number: "Back into (4): -1.11 + 9.51"
+                middle = self._numbers_as_names(sides[1].expr, before, unknowns)
+                if middle is not sides[1].expr:
+                    self.line = Add(((1, sides[0].expr), (-1, middle)))
+        # an unknown of the equation named that no line above has found is free too:
+        # "From (4)" cannot give v_B2 while (4) still holds e
+        known = _known_above(judge, step, unknowns)
+        self.free |= {n for n in judge.names(ref) if n in unknowns and n not in known}
         self.ref = ref
+
+    def _numbers_as_names(self, line: object, before: dict[str, object], unknowns: frozenset[str]) -> object:
+        """The line with each number that shows a value found above read as that unknown."""
+        shown: dict[Decimal, object] = {}
+        for name, expr in before.items():
+            num = expr if isinstance(expr, Num) else None
+            if isinstance(expr, Add) and len(expr.terms) == 1 and isinstance(expr.terms[0][1], Num):
+                num, sign = expr.terms[0][1], expr.terms[0][0]
+            else:
+                sign = 1
+            if num is None or name not in unknowns or name in self.free or Decimal(num.mantissa) == 0:
+                continue
+            shown[Decimal(num.mantissa)] = Sym(name) if sign > 0 else Add(((-1, Sym(name)),))
+        counts: dict[Decimal, int] = {}
+        for node in walk(line):
+            if isinstance(node, Num):
+                counts[Decimal(node.mantissa)] = counts.get(Decimal(node.mantissa), 0) + 1
+        shown = {k: v for k, v in shown.items() if counts.get(k) == 1}  # 4 + 4: which is v_A2 is not known
+        if not shown:
+            return line
+        out = replace_numbers(line, shown)
+        if out is not line:
+            self.free |= {n for n in self.judge.names(out) if n in unknowns}
+        return out
 
     def point(self, k: int, bump: str | None = None) -> dict[str, object]:
         out = {}
@@ -190,6 +240,19 @@ class _Operation:
             if abs(s.center - c * r.center) > slack or not c:
                 yield f"the line is not {what} {named}".replace("  ", " ")
                 return
+
+
+def replace_numbers(node: object, shown: dict[Decimal, object]) -> object:
+    """``node`` with each number whose value is in ``shown`` replaced by the tree it maps to."""
+    if isinstance(node, Num):
+        return shown.get(Decimal(node.mantissa), node) if not node.degrees and not node.exponent else node
+    if isinstance(node, Add):
+        return Add(tuple((s, replace_numbers(t, shown)) for s, t in node.terms))
+    if isinstance(node, Mul):
+        return Mul(tuple(replace_numbers(f, shown) for f in node.factors))
+    if isinstance(node, Frac):
+        return Frac(replace_numbers(node.num, shown), replace_numbers(node.den, shown))
+    return node
 
 
 def check(judge: Judge) -> Iterator[Failure]:
