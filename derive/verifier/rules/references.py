@@ -112,9 +112,9 @@ def _known_above(judge: Judge, step: Step, unknowns: frozenset[str]) -> set[str]
         if line.number >= here.number or line.scope != here.scope or not claim.relations or line.kind != "display":
             continue
         sides = claim.relations[0].sides
-        if len(sides) >= 2 and isinstance(sides[0].expr, Sym) and sides[0].expr.name in unknowns:
-            if any(not set(judge.names(s.expr)) & unknowns for s in sides[1:]):
-                out.add(sides[0].expr.name)
+        named = len(sides) >= 2 and isinstance(sides[0].expr, Sym) and sides[0].expr.name in unknowns
+        if named and any(not set(judge.names(s.expr)) & unknowns for s in sides[1:]):
+            out.add(sides[0].expr.name)
     return out
 
 
