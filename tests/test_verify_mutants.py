@@ -29,7 +29,9 @@ from derive.resources import bundled
 from derive.verifier import verify_text
 from derive.verifier.evaluate import Env, value
 from derive.verifier.facts import Facts, facts_of
+from derive.verifier.judge import Judge
 from derive.verifier.latex import parse_display
+from derive.verifier.reader import read
 from derive.writers.view import render
 
 SEED = 26
@@ -57,6 +59,43 @@ def _oracles(facts: Facts):
     return scalar, term
 
 
+def _equivalence(facts: Facts, text: str, fmt: str):
+    """Whether a changed line keeps the value of every side (then it is still true, and
+    no mutant): each side valued in the line's own part of the page, as the verifier would."""
+    judge = Judge(facts, read(text, fmt))
+    by_text = {}
+    for claim in judge.claims:
+        by_text.setdefault(claim.line.latex.strip(), claim)
+
+    def sides(claim, display) -> list | None:
+        out = []
+        for relation in display.relations:
+            for axis in judge.axes(relation):
+                for i, side in enumerate(relation.sides):
+                    try:
+                        out.append(judge.value(side, judge.side_scopes(claim, i), axis).center)
+                    except Exception:
+                        return None
+        return out
+
+    def equivalent(before: str, after: str) -> bool:
+        core = before.strip().removesuffix("\\\\").strip()
+        claim = by_text.get(core) or next((c for c in judge.claims if core and core in c.line.latex), None)
+        if claim is None or claim.display is None:
+            return False
+        try:
+            changed_core = after.strip().removesuffix("\\\\").strip()
+            new = parse_display(claim.line.latex.replace(core, changed_core, 1))
+        except Exception:
+            return False
+        old, changed = sides(claim, claim.display), sides(claim, new)
+        if old is None or changed is None or len(old) != len(changed):
+            return False
+        return all(abs(a - b) <= 1e-12 * max(1, abs(a)) for a, b in zip(old, changed, strict=True))
+
+    return equivalent
+
+
 def run(pages: list[tuple[str, str]], per_kind: int | None) -> tuple[Counter, Counter, list[str]]:
     """Mutants of each page: (made, caught) by kind, and a few that passed."""
     made: Counter[str] = Counter()
@@ -71,7 +110,8 @@ def run(pages: list[tuple[str, str]], per_kind: int | None) -> tuple[Counter, Co
         assert base.ok, f"{name} [{fmt}] fails before any mutation:\n{base.format()}"
         rng = random.Random(f"{SEED}:{name}:{fmt}")
         scalar, term = _oracles(facts)
-        for m in verify_mutants.mutants(text, fmt, rng, scalar, term, per_kind):
+        same = _equivalence(facts, text, fmt)
+        for m in verify_mutants.mutants(text, fmt, rng, scalar, term, per_kind, same):
             made[m.kind] += 1
             if verify_text(m.apply(text), facts, fmt).ok:
                 missed.append(f"{m.kind}: {name} [{fmt}] line {m.line}:\n    {m.before.strip()}\n -> {m.after.strip()}")
@@ -86,6 +126,10 @@ def _judge(made: Counter, caught: Counter, missed: list[str], record: Any, label
     total, hit = sum(made.values()), sum(caught.values())
     assert total > 0
     weak = [k for k, (c, n) in rates.items() if c < EACH * n]
+    report = os.environ.get("DERIVE_MUTANTS_REPORT")
+    if report:  # every mutant that passed, for a closer look
+        with open(report, "w", encoding="utf-8") as out:
+            out.write("\n".join(missed) + "\n")
     shown = "\n".join(missed[:25])
     assert hit >= OVERALL * total and not weak, (
         f"{hit}/{total} mutants caught; below {EACH:.0%}: {weak}\n{rates}\nmissed (first 25):\n{shown}"

@@ -243,15 +243,17 @@ def mutants(
     value: Values,
     term_value: Callable[[str], object | None],
     per_kind: int | None = 3,
+    equivalent: Callable[[str, str], bool] = lambda before, after: False,
 ) -> list[Mutant]:
-    """Up to ``per_kind`` mutants of each kind for one page (all of them for None)."""
+    """Up to ``per_kind`` mutants of each kind for one page (all of them for None).
+    ``equivalent(before, after)``: the changed line has every side worth what it was."""
     lines = page_lines(text, fmt)
     tags = sorted({int(t) for t in re.findall(r"\\tag\{(\d+)\}", text)})
     pools: dict[str, list[Mutant]] = {k: [] for k in KINDS}
 
     def add(kind: str, line: PageLine, news: Iterator[str]) -> None:
         for new in news:
-            if new != line.text:
+            if new != line.text and not equivalent(line.text, new):
                 pools[kind].append(Mutant(kind, line.number, line.text, new))
 
     for line in lines:

@@ -174,7 +174,7 @@ class Judge:
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:
             return False
-        if self.coincident and len(num.mantissa.replace("-", "").replace(".", "").lstrip("0")) >= rule:
+        if self.coincident and num.figures >= rule:
             return False
         v = num.value.normalize()
         return any(v in s.exact for s in scopes)

@@ -37,6 +37,13 @@ def facts_of(solution: Any, digits: int | None = None, source: str | None = None
         asked = frozenset(problem.find) | frozenset(g.name for g in problem.givens if g.unknown)
         scope = table.scope("", system=problem.system, asked=asked)
         facts = Facts({"": scope}, problem.digits, False, tuple(notes))
+    if read is not None:  # the figures the file asks for, and derive's reading of them
+        mine = read.data.get("digits")
+        mine = mine if isinstance(mine, int) and not isinstance(mine, bool) else None
+        notes = facts.notes
+        if mine != facts.digits:
+            notes += (f"digits: the file gives {mine}, derive read {facts.digits}",)
+        facts = Facts(facts.scopes, mine, facts.chain, notes, facts.solved)
     if digits is not None:
         facts = Facts(facts.scopes, digits, facts.chain, facts.notes, facts.solved)
     return facts

@@ -66,6 +66,8 @@ def file_value(table: Table, read: source.Read | None, name: str) -> sympy.Expr 
     expr = read.values[name]
     if isinstance(expr, sympy.Symbol) and expr.name == name:
         return None
+    if not expr.free_symbols:
+        return expr  # exact, so that its digits are known as a given's
     value = table.resolve(expr)
     return None if value.free_symbols else value
 

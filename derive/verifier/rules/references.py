@@ -20,8 +20,10 @@ from dataclasses import dataclass
 from decimal import Decimal
 
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
-from derive.verifier.judge import Claim, Judge, Value, tolerance
+from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
+from derive.verifier.latex import parse_display
 from derive.verifier.report import Failure
+from derive.verifier.tokens import LatexError
 from derive.verifier.tree import Add, Frac, Mul, Num, Side, Sym
 
 RULE = "references"
@@ -103,6 +105,22 @@ def _found_before(judge: Judge, step: Step) -> dict[str, object]:
     return out
 
 
+def _shown_before(judge: Judge, step: Step) -> dict[str, str]:
+    """Unknowns the lines above (same section) found, each with its value as written there."""
+    out: dict[str, str] = {}
+    here = step.claim.line
+    for claim in judge.claims:
+        line = claim.line
+        if line.number >= here.number or line.section != here.section or line.scope != here.scope:
+            continue
+        if line.block == here.block or not claim.relations:
+            continue
+        sides = claim.relations[0].sides
+        if len(sides) >= 2 and isinstance(sides[0].expr, Sym) and lone_number(sides[-1]) is None:
+            out[sides[0].expr.name] = sides[-1].source.strip()
+    return out
+
+
 def _known_above(judge: Judge, step: Step, unknowns: frozenset[str]) -> set[str]:
     """Unknowns a line above (in this part of the page) gives a value free of other unknowns."""
     here = step.claim.line
@@ -149,8 +167,9 @@ class _Operation:
             }
             ref = substitute(ref, found)
             sides = step.claim.relations[0].sides if step.claim.relations else ()
-            if len(sides) >= 3:  # a value found above, put in by its number: "Back into (4): -1.11 + 9.51"
-                middle = self._numbers_as_names(sides[1].expr, before, unknowns)
+            if len(sides) >= 3:  # a value found above, put in as it was shown: "Back into (4): -1.11 + 9.51"
+                middle = self._shown_as_names(sides[1], unknowns)
+                middle = self._numbers_as_names(middle, before, unknowns)
                 if middle is not sides[1].expr:
                     self.line = Add(((1, sides[0].expr), (-1, middle)))
         # an unknown of the equation named that no line above has found is free too:
@@ -158,6 +177,23 @@ class _Operation:
         known = _known_above(judge, step, unknowns)
         self.free |= {n for n in judge.names(ref) if n in unknowns and n not in known}
         self.ref = ref
+
+    def _shown_as_names(self, side: Side, unknowns: frozenset[str]) -> object:
+        """The side with each expression that shows a value found above (in its last side,
+        as written) read as that unknown: u(3 - 7e)/2 in "Back into (4)" is v_A2."""
+        text, names = side.source, {}
+        for k, (name, shown) in enumerate(_shown_before(self.judge, self.step).items()):
+            if name in unknowns and name not in self.free and len(shown) > 3 and text.count(shown) == 1:
+                text = text.replace(shown, rf"\left(Q_{{{k}}}\right)")
+                names[f"Q_{k}"] = Sym(name)
+        if not names:
+            return side.expr
+        try:
+            expr = parse_display(text).relations[0].sides[0].expr
+        except (LatexError, IndexError):
+            return side.expr
+        self.free |= {n.name for n in names.values()}
+        return substitute(expr, names)
 
     def _numbers_as_names(self, line: object, before: dict[str, object], unknowns: frozenset[str]) -> object:
         """The line with each number that shows a value found above read as that unknown."""
