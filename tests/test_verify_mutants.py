@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import os
 import random
+import re
 from collections import Counter, defaultdict
 from typing import Any
 
@@ -59,6 +60,11 @@ def _oracles(facts: Facts):
     return scalar, term
 
 
+def _row(line: str) -> str:
+    """A line as the reader keeps it: an aligned row without its ``&``, ``\\quad`` and ``\\\\``."""
+    return re.sub(r"^&\s*(?:\\quad)?\s*", "", line.strip().removesuffix("\\\\").strip()).strip()
+
+
 def _equivalence(facts: Facts, text: str, fmt: str):
     """Whether a changed line keeps the value of every side (then it is still true, and
     no mutant): each side valued in the line's own part of the page, as the verifier would."""
@@ -73,25 +79,27 @@ def _equivalence(facts: Facts, text: str, fmt: str):
             for axis in judge.axes(relation):
                 for i, side in enumerate(relation.sides):
                     try:
-                        out.append(judge.value(side, judge.side_scopes(claim, i), axis).center)
+                        v = judge.value(side, judge.side_scopes(claim, i), axis)
+                        out.append((v.center, v.unit_dim))
                     except Exception:
                         return None
         return out
 
     def equivalent(before: str, after: str) -> bool:
-        core = before.strip().removesuffix("\\\\").strip()
+        core = _row(before)
         claim = by_text.get(core) or next((c for c in judge.claims if core and core in c.line.latex), None)
         if claim is None or claim.display is None:
             return False
         try:
-            changed_core = after.strip().removesuffix("\\\\").strip()
+            changed_core = _row(after)
             new = parse_display(claim.line.latex.replace(core, changed_core, 1))
         except Exception:
             return False
         old, changed = sides(claim, claim.display), sides(claim, new)
         if old is None or changed is None or len(old) != len(changed):
             return False
-        return all(abs(a - b) <= 1e-12 * max(1, abs(a)) for a, b in zip(old, changed, strict=True))
+        pairs = zip(old, changed, strict=True)
+        return all(da == db and abs(a - b) <= 1e-12 * max(1, abs(a)) for (a, da), (b, db) in pairs)
 
     return equivalent
 

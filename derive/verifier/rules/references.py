@@ -207,11 +207,17 @@ class _Operation:
             if num is None or name not in unknowns or name in self.free or Decimal(num.mantissa) == 0:
                 continue
             shown[Decimal(num.mantissa)] = Sym(name) if sign > 0 else Add(((-1, Sym(name)),))
-        counts: dict[Decimal, int] = {}
+        # a number of the line that shows a found value, perhaps with more figures (9.4354 for 9.435)
+        matches: dict[Decimal, list[Decimal]] = {}
         for node in walk(line):
-            if isinstance(node, Num):
-                counts[Decimal(node.mantissa)] = counts.get(Decimal(node.mantissa), 0) + 1
-        shown = {k: v for k, v in shown.items() if counts.get(k) == 1}  # 4 + 4: which is v_A2 is not known
+            if isinstance(node, Num) and not node.degrees and not node.exponent:
+                mine = Decimal(node.mantissa)
+                for value in shown:
+                    if -mine.as_tuple().exponent >= -value.as_tuple().exponent and mine.quantize(value) == value:
+                        matches.setdefault(value, []).append(mine)
+        shown = {  # 4 + 4: which is v_A2 is not known
+            mine[0]: shown[value] for value, mine in matches.items() if len(mine) == 1
+        }
         if not shown:
             return line
         out = replace_numbers(line, shown)
@@ -259,7 +265,13 @@ class _Operation:
     def _proportional(self, shown: list[Value], ref: list[Value]) -> Iterator[str]:
         k = max(range(len(ref)), key=lambda i: abs(ref[i].center))
         what = {"add": "the sum of", "subtract": "the difference of", "into": "substitution into"}.get(self.step.op, "")
+        what = "the combination of" if self.step.op.startswith("multiply") else what
         named = " and ".join(f"({t})" for t in self.step.tags)
+        if all(abs(r.center) <= tolerance(r) for r in ref) and any(
+            abs(x.center) > x.radius + tolerance(x) for x in shown
+        ):
+            yield f"the line does not follow from {what} {named}: it reads 0 = 0 there".replace("  ", " ")
+            return
         if abs(ref[k].center) <= ref[k].radius + tolerance(ref[k]):
             # the equation named is nothing in these unknowns; say so only when that is exact
             # (not when its rounded numbers leave it undecided)
@@ -268,7 +280,7 @@ class _Operation:
             return
         c = shown[k].center / ref[k].center
         dc = (shown[k].radius + abs(c) * ref[k].radius) / abs(ref[k].center)
-        if self.step.op in ("add", "subtract") and abs(abs(c) - 1) > dc + TOLERANCE_C:
+        if self.step.op not in ("from", "into") and abs(abs(c) - 1) > dc + TOLERANCE_C:
             yield f"the line is not {what} {named} (it is {float(c):.4g} times it)"
             return
         for s, r in zip(shown, ref, strict=True):
