@@ -73,7 +73,7 @@ def check(judge: Judge) -> Iterator[Failure]:
                 if other.mantissa in own:  # the line writes that number as it was: mine is another
                     continue
                 h = max(judge.halfwidth(mine, scopes), judge.halfwidth(other, scopes))
-                if mine.decimals < other.decimals and other.value.quantize(mine.ulp) == mine.value:
+                if mine.decimals < other.decimals and abs(other.value - mine.value) <= mine.ulp / 2:
                     continue  # the textbook way: a number above carried on rounded (9.157 as 9.16)
                 if gap <= 3 * Decimal(str(h)) and mine.mantissa != other.mantissa:
                     line = claim.line

@@ -14,6 +14,7 @@ two must be proportional there, within the rounding of the numbers shown.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -156,6 +157,7 @@ class _Operation:
         else:
             ref = eqs[0]
         self.line = _equation(step.claim)
+        self.alternatives: list[object] = []  # other readings of the middle side ("4 + 4")
         unknowns = self.scopes[0].unknowns()
         self.free = ({n for n in judge.names(self.line) if n in unknowns} | set(step.cancels)) & unknowns
         before = _found_before(judge, step)
@@ -172,6 +174,7 @@ class _Operation:
                 middle = self._numbers_as_names(middle, before, unknowns)
                 if middle is not sides[1].expr:
                     self.line = Add(((1, sides[0].expr), (-1, middle)))
+                self.alternatives = [Add(((1, sides[0].expr), (-1, m))) for m in self.alternatives[1:]]
         # an unknown of the equation named that no line above has found is free too:
         # "From (4)" cannot give v_B2 while (4) still holds e
         known = _known_above(judge, step, unknowns)
@@ -207,23 +210,24 @@ class _Operation:
             if num is None or name not in unknowns or name in self.free or Decimal(num.mantissa) == 0:
                 continue
             shown[Decimal(num.mantissa)] = Sym(name) if sign > 0 else Add(((-1, Sym(name)),))
-        # a number of the line that shows a found value, perhaps with more figures (9.4354 for 9.435)
-        matches: dict[Decimal, list[Decimal]] = {}
+        # a number of the line that shows a found value, perhaps with more figures (9.4354 for
+        # 9.435) or fewer (0.6 for -0.600); where two numbers could be it (4 + 4), each is tried
+        matches: dict[Decimal, list[Num]] = {}
         for node in walk(line):
             if isinstance(node, Num) and not node.degrees and not node.exponent:
                 mine = Decimal(node.mantissa)
                 for value in shown:
-                    if -mine.as_tuple().exponent >= -value.as_tuple().exponent and mine.quantize(value) == value:
-                        matches.setdefault(value, []).append(mine)
-        shown = {  # 4 + 4: which is v_A2 is not known
-            mine[0]: shown[value] for value, mine in matches.items() if len(mine) == 1
-        }
-        if not shown:
+                    longer = -mine.as_tuple().exponent >= -value.as_tuple().exponent
+                    half = Decimal(1).scaleb(value.as_tuple().exponent) / 2
+                    if mine == value or (longer and abs(mine - value) <= half):
+                        matches.setdefault(value, []).append(node)
+        if not matches:
             return line
-        out = replace_numbers(line, shown)
-        if out is not line:
-            self.free |= {n for n in self.judge.names(out) if n in unknowns}
-        return out
+        choices = [[(n, shown[v]) for n in nodes] for v, nodes in matches.items()]
+        for picked in itertools.islice(itertools.product(*choices), 4):
+            self.alternatives.append(replace_nodes(line, {id(n): tree for n, tree in picked}))
+        self.free |= {n for alt in self.alternatives for n in self.judge.names(alt) if n in unknowns}
+        return self.alternatives[0]
 
     def point(self, k: int, bump: str | None = None) -> dict[str, object]:
         out = {}
@@ -238,6 +242,16 @@ class _Operation:
         return self.judge.value(Side(tree), self.scopes, overrides=point)
 
     def reasons(self) -> Iterator[str]:
+        first = list(self._reasons())
+        for other in self.alternatives:  # another reading of which number is the value found
+            if not first:
+                break
+            self.line = other
+            if not list(self._reasons()):
+                first = []
+        yield from first
+
+    def _reasons(self) -> Iterator[str]:
         if self.line is None or self.ref is None:
             return
         if self.free and not set(self.judge.names(self.ref)) & self.free:
@@ -300,6 +314,19 @@ def replace_numbers(node: object, shown: dict[Decimal, object]) -> object:
         return Mul(tuple(replace_numbers(f, shown) for f in node.factors))
     if isinstance(node, Frac):
         return Frac(replace_numbers(node.num, shown), replace_numbers(node.den, shown))
+    return node
+
+
+def replace_nodes(node: object, by_id: dict[int, object]) -> object:
+    """``node`` with the nodes named (by identity) replaced."""
+    if id(node) in by_id:
+        return by_id[id(node)]
+    if isinstance(node, Add):
+        return Add(tuple((s, replace_nodes(t, by_id)) for s, t in node.terms))
+    if isinstance(node, Mul):
+        return Mul(tuple(replace_nodes(f, by_id) for f in node.factors))
+    if isinstance(node, Frac):
+        return Frac(replace_nodes(node.num, by_id), replace_nodes(node.den, by_id))
     return node
 
 
