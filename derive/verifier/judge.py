@@ -76,8 +76,8 @@ class Judge:
         #: read a number with the figures of an intermediate as a rounding, even where its
         #: digits are a given's (76.37 for v_A2 when v_A1 = 76.37 is given)
         self.coincident = False
-        #: the line being valued shows no number with three figures: its short decimals are exact
-        self.short_exact = False
+        #: the decimal places of the line being valued that a number of three figures shows
+        self.shared: set[int] | None = None
 
     def rounded_view(self) -> Judge:
         """The same claims with a given's digits in a working line allowed to be a rounding."""
@@ -171,8 +171,9 @@ class Judge:
         rule = min(self.rule_figures(num.value), self.rule_figures(abs(num.value) - Decimal("0.5")))
         if num.integer and len(num.mantissa) < rule:
             return True
-        if self.short_exact and not num.integer and not num.exponent and num.figures < min(rule, 3) and not result:
-            return True  # 4.5 e = 0.9 where the rule shows 3 figures: a rounded line would show them
+        short = not num.integer and not num.exponent and num.figures < min(rule, 3) and not result
+        if short and self.shared is not None and num.decimals not in self.shared:
+            return True  # 4.5 e = 0.9 where the rule shows 3 figures: a rounding would read 4.50
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:
             return False
@@ -235,8 +236,9 @@ class Judge:
     def values(self, claim: Claim, relation: Relation, axis: str | None) -> list[Value | None]:
         """Each side's value (None where a name has no value or the side no number)."""
         out: list[Value | None] = []
-        nums = [n for n in walk_claim(claim) if isinstance(n, Num) and not n.integer and not n.degrees]
-        self.short_exact = bool(nums) and all(n.figures < 3 for n in nums)
+        # places a line shares among its numbers (0.31 v_A2 + 0.12 v_B2 = 8.54): at those, a short
+        # number is a rounding; elsewhere a short decimal is exact
+        self.shared = {n.decimals for n in walk_claim(claim) if isinstance(n, Num) and n.figures >= 3}
         for i, side in enumerate(relation.sides):
             if isinstance(side.expr, Unknown):  # "e = ?": the name must be one the problem asks for
                 self._unknown_given(claim, relation)
@@ -254,7 +256,7 @@ class Judge:
             except (Undefined, ZeroDivisionError, ValueError, OverflowError) as exc:
                 self.unvalued.setdefault(claim.line.number, f"{side.source} has no value ({exc})")
                 out.append(None)
-        self.short_exact = False  # only while this claim is valued
+        self.shared = None  # only while this claim is valued
         return out
 
     def _unknown_given(self, claim: Claim, relation: Relation) -> None:
