@@ -75,6 +75,7 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     known: dict[str, int] = {}
     fuzz: dict | None = None
     cases: Counter[str] = Counter()
+    mutants: list[tuple[str, dict]] = []
     for reports in terminalreporter.stats.values():
         for rep in reports:
             for key, value in getattr(rep, "user_properties", ()):
@@ -82,6 +83,8 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
                     lines[value[0]] = value[1]
                 elif key == "verify_known":
                     known[value[0]] = value[1]
+                elif key == "verify_mutants" and rep.when == "call":
+                    mutants.append(value)
                 elif key == "fuzz_cases" and rep.when == "teardown":  # recorded as the test ends
                     cases.update(value)
                 elif key == "fuzz_files":
@@ -95,6 +98,11 @@ def pytest_terminal_summary(terminalreporter, exitstatus, config) -> None:
     if lines:
         parts = ", ".join(f"{k} {v}" for k, v in sorted(lines.items()))
         terminalreporter.write_line(f"verify: {sum(lines.values())} lines checked ({parts})")
+    if mutants:
+        from test_verify_mutants import summary_line
+
+        for line in summary_line(mutants):
+            terminalreporter.write_line(line)
     if known:
         shown = ", ".join(f"{k} {v}" for k, v in sorted(known.items()))
         terminalreporter.write_line(f"verify: pages with a known class of wrong line (issue #12): {shown}")

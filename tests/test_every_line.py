@@ -86,10 +86,12 @@ def _record(test: str, tally: Tally) -> None:
     LINES_CHECKED[test] += tally.lines
 
 
-def _check_solution(name: str, solution: object, formats: tuple[str, ...] = ("md", "tex")) -> Tally:
+def _check_solution(
+    name: str, solution: object, formats: tuple[str, ...] = ("md", "tex"), source: str | None = None
+) -> Tally:
     tally = Tally()
     for fmt in formats:
-        tally.add(name, fmt, verify(solution, fmt))
+        tally.add(name, fmt, verify(solution, fmt, source=source))
     return tally
 
 
@@ -101,7 +103,7 @@ def _check_text(name: str, text: str, formats: tuple[str, ...]) -> Tally:
         solution = derive.solve(loads(text, path=f"{name}.toml", name=name))
     except DeriveError:
         return Tally()  # refused as unphysical: nothing printed, nothing to check
-    return _check_solution(name, solution, formats)
+    return _check_solution(name, solution, formats, source=text)
 
 
 #: Classes of wrong line still printed on homework variants and generated problems,

@@ -57,6 +57,8 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _impulse_line(page, r, boxed)
     defined = {d.name: d for d in page.p.asks.defined}
     if r.name in defined:  # F_avg = J_n/dt = ...
+        if r.unit == "deg" and getattr(val, "free_symbols", None):  # an angle in letters: no degrees to show
+            return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,))), boxed=boxed)
         return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
     return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
 

@@ -39,13 +39,17 @@ def verify_text(text: str, facts: Facts, fmt: str = "md") -> Report:
     return report
 
 
-def verify(solution: Any, fmt: str = "md", *, digits: int | None = None, text: str | None = None) -> Report:
+def verify(
+    solution: Any, fmt: str = "md", *, digits: int | None = None, text: str | None = None, source: str | None = None
+) -> Report:
     """Render ``solution`` in ``fmt`` ('md' or 'tex') and check every line of it.
 
-    ``text`` checks a page already rendered (a homework variant's) instead.
+    ``text`` checks a page already rendered (a homework variant's) instead; ``source`` is
+    the problem file's TOML when the problem was not loaded from a file on disk (else
+    the verifier reads the file at the problem's path itself).
     """
     if text is None:
         from derive.writers.view import render
 
         text = render(solution, fmt, digits=digits, figures=False)
-    return verify_text(text, facts_of(solution, digits), fmt)
+    return verify_text(text, facts_of(solution, digits, source), fmt)

@@ -20,7 +20,7 @@ from derive.verifier.facts import Facts, Scope
 from derive.verifier.latex import parse_display, parse_inline
 from derive.verifier.reader import Line
 from derive.verifier.tokens import LatexError
-from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Vec
+from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 
 TOLERANCE = CTX.mpf(10) ** -20
 TINY = CTX.mpf(10) ** -20  # an absolute floor: 25 cos 90° at 40 digits is 1e-42, not 0
@@ -71,6 +71,21 @@ class Judge:
         self.facts = facts
         self.claims = [read_claim(line) for line in lines]
         self.unresolved: set[tuple[int, str]] = set()
+        #: line -> why a side of it could not be valued (the rule ``read`` reports them)
+        self.unvalued: dict[int, str] = {}
+        #: read a number with the figures of an intermediate as a rounding, even where its
+        #: digits are a given's (76.37 for v_A2 when v_A1 = 76.37 is given)
+        self.coincident = False
+        #: the decimal places of the line being valued that a number of three figures shows
+        self.shared: set[int] | None = None
+
+    def rounded_view(self) -> Judge:
+        """The same claims with a given's digits in a working line allowed to be a rounding."""
+        other = copy.copy(self)
+        other.coincident = True
+        other.unvalued = {}
+        other.unresolved = set()
+        return other
 
     def solved_view(self) -> Judge | None:
         """The same claims with a chain's unknowns solved everywhere (None when nothing changes)."""
@@ -80,6 +95,7 @@ class Judge:
         f = self.facts
         other.facts = Facts({**f.scopes, **f.solved}, f.digits, f.chain, f.notes)
         other.unresolved = set()
+        other.unvalued = {}
         return other
 
     # scopes ----------------------------------------------------------------
@@ -122,6 +138,8 @@ class Judge:
             if name in over:
                 return over[name]
             q = self.quantity(name, scopes)
+            if q is None and name == "pi":  # \pi, unless the problem names something pi
+                return CTX.pi
             return None if q is None else q.value
 
         def vector(name: str, ax: str) -> object | None:
@@ -153,8 +171,13 @@ class Judge:
         rule = min(self.rule_figures(num.value), self.rule_figures(abs(num.value) - Decimal("0.5")))
         if num.integer and len(num.mantissa) < rule:
             return True
+        short = not num.integer and not num.exponent and num.figures < min(rule, 3) and not result
+        if short and self.shared is not None and num.decimals not in self.shared:
+            return True  # 4.5 e = 0.9 where the rule shows 3 figures: a rounding would read 4.50
         canonical = "." not in num.mantissa or not num.mantissa.endswith("0")
         if result or not canonical:
+            return False
+        if self.coincident and num.figures >= rule:
             return False
         v = num.value.normalize()
         return any(v in s.exact for s in scopes)
@@ -224,15 +247,36 @@ class Judge:
     def values(self, claim: Claim, relation: Relation, axis: str | None) -> list[Value | None]:
         """Each side's value (None where a name has no value or the side no number)."""
         out: list[Value | None] = []
+        # places a line shares among its numbers (0.31 v_A2 + 0.12 v_B2 = 8.54): at those, a short
+        # number is a rounding; elsewhere a short decimal is exact
+        self.shared = {n.decimals for n in walk_claim(claim) if isinstance(n, Num) and n.figures >= 3}
         for i, side in enumerate(relation.sides):
+            if isinstance(side.expr, Unknown):  # "e = ?": the name must be one the problem asks for
+                self._unknown_given(claim, relation)
+                out.append(None)
+                continue
             try:
                 out.append(self.value(side, self.side_scopes(claim, i), axis, result=is_stated(claim, relation, i)))
             except Unresolved as exc:
                 self.unresolved.add((claim.line.number, str(exc)))
+                self.unvalued.setdefault(claim.line.number, f"{side.source} names {exc}, which has no value here")
                 out.append(None)
-            except (Undefined, ZeroDivisionError, ValueError, OverflowError):
+            except units.UnitError as exc:
+                self.unvalued.setdefault(claim.line.number, str(exc))
                 out.append(None)
+            except (Undefined, ZeroDivisionError, ValueError, OverflowError) as exc:
+                self.unvalued.setdefault(claim.line.number, f"{side.source} has no value ({exc})")
+                out.append(None)
+        self.shared = None  # only while this claim is valued
         return out
+
+    def _unknown_given(self, claim: Claim, relation: Relation) -> None:
+        first = relation.sides[0].expr
+        scopes = self.side_scopes(claim, 0)
+        q = self.quantity(first.name, scopes) if isinstance(first, Sym) else None
+        asked = q is not None and (q.role == "unknown" or any(q.name in s.asked for s in scopes))
+        if not asked:
+            self.unvalued.setdefault(claim.line.number, f"{relation.sides[0].source} is shown as unknown (?)")
 
     def names(self, node: object) -> Iterator[str]:
         for n in walk(node):
@@ -246,6 +290,13 @@ class Judge:
             if q is not None:
                 out.add(q.role)
         return out
+
+
+def walk_claim(claim: Claim) -> Iterator[object]:
+    """Every node of every side of a claim."""
+    for rel in claim.relations:
+        for side in rel.sides:
+            yield from walk(side.expr)
 
 
 def lone_number(side: Side) -> Num | None:

@@ -18,7 +18,7 @@ class LatexError(ValueError):
 
 _TOKEN = re.compile(
     r"(?P<cmd>\\[A-Za-z]+)|(?P<esc>\\[ ,;:!%{}|_#&])|(?P<num>\d+(?:\.\d+)?|\.\d+)"
-    r"|(?P<word>[A-Za-z]+)|(?P<op>[{}()\[\]^_+\-=,/|<>'*!?·:;.~])|(?P<ws>\s+)"
+    r"|(?P<word>[A-Za-z]+\d*)|(?P<op>[{}()\[\]^_+\-=,/|<>'*!?·:;.~])|(?P<ws>\s+)"
 )
 
 

@@ -65,7 +65,11 @@ BASE: dict[str, tuple[Fraction, Dim]] = {
     "J": (Fraction(1), ENERGY),
     "kJ": (Fraction(1000), ENERGY),
     "rad": (Fraction(1), ANGLE),
+    "lbm": (Fraction("0.45359237"), MASS),
 }
+#: Other spellings a problem file may use (``mph``, ``sec``).
+ALIASES = {"mph": "mi/h", "kph": "km/h", "fps": "ft/s", "sec": "s", "hr": "h", "lbs": "lb"}
+DEGREES = ("deg", "°", "circ", "degree", "degrees")
 SYSTEM_BASE = {"SI": ("kg", "m", "s"), "US": ("slug", "ft", "s")}
 
 
@@ -78,8 +82,9 @@ def parse(text: str) -> tuple[Fraction, Dim, bool]:
     src = text.strip().replace("·", "*").replace(" ", "")
     if src == "%":
         return Fraction(1, 100), NONE, False
-    if src in ("deg", "°", "circ"):
+    if src in DEGREES:
         return Fraction(1), ANGLE, True
+    src = re.sub(r"[A-Za-z]+", lambda m: ALIASES.get(m[0], m[0]), src)
     factor, dim, sign = Fraction(1), [0, 0, 0, 0], 1
     for m in re.finditer(r"([*/])?([A-Za-z]+)(?:\^\{?(-?\d+)\}?)?", src):
         op, name, power = m.groups()

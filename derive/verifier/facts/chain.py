@@ -18,8 +18,10 @@ from typing import Any
 import sympy
 
 from derive.verifier import units
+from derive.verifier.facts import source
+from derive.verifier.facts.expression import Unread, evaluate
 from derive.verifier.facts.model import Facts, Quantity, Scope, Table, number
-from derive.verifier.facts.problem import dim_of, impact
+from derive.verifier.facts.problem import dim_of, file_value, impact, misread
 
 _QUANTITY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*([A-Za-z°][A-Za-z°/*^·\d\s]*)$")
 HALF = sympy.Rational(1, 2)
@@ -40,10 +42,14 @@ class _Stage:
 class _Chain:
     """The chain worked once, at one point: ``fixed`` holds the unknowns found by then."""
 
-    def __init__(self, solution: Any, fixed: dict[str, sympy.Expr]) -> None:
+    def __init__(self, solution: Any, fixed: dict[str, sympy.Expr], read: source.Read | None = None) -> None:
         self.sol = solution
         self.chain = solution.problem
-        self.system = self.chain.system
+        self.read = read
+        self.raw_stages = list(read.data.get("stage") or []) if read is not None else list(self.chain.stages)
+        if len(self.raw_stages) != len(self.chain.stages):
+            self.raw_stages = list(self.chain.stages)
+        self.system = read.system if read is not None else self.chain.system
         self.table = Table(fixed=dict(fixed))
         self.defined_at: dict[str, int] = {}
         self.stages: list[_Stage] = []
@@ -61,11 +67,9 @@ class _Chain:
             factor, dim, degrees = units.to_working(m.group(2), self.system)
             value = sympy.Rational(m.group(1)) * sympy.Rational(factor.numerator, factor.denominator)
             return (value * sympy.pi / 180 if degrees else value), dim
-        from derive.problem.expr import parse
-
         names = {n: (sympy.Symbol(n), self.table.dims.get(n, units.NONE)) for n in self.table.exprs}
-        parsed = parse(text, names)
-        return self.table.resolve(parsed.expr), dim_of(parsed)
+        value, dim = evaluate(text, names)
+        return self.table.resolve(value), dim
 
     def define(self, i: int, name: str, expr: sympy.Expr, dim: units.Dim, role: str = "result") -> None:
         self.table.put(name, expr, dim, role)
@@ -74,7 +78,7 @@ class _Chain:
     # the stages -----------------------------------------------------------
     def run(self) -> _Chain:
         self.chain_givens()
-        for i, (raw, st) in enumerate(zip(self.chain.stages, self.sol.stages, strict=True), 1):
+        for i, (raw, st) in enumerate(zip(self.raw_stages, self.sol.stages, strict=True), 1):
             kind = raw["type"]
             stage = _Stage(i, kind)
             getattr(self, "stage_" + kind)(i, raw, st, stage)
@@ -82,10 +86,15 @@ class _Chain:
         return self
 
     def chain_givens(self) -> None:
+        read = self.read
         for g in sorted(self.chain.givens, key=lambda g: g.unknown):  # the unknowns' roots need the rest
             dim = dim_of(g)
+            mine = file_value(self.table, read, g.name)
             if g.unknown:
                 self.table.param(g.name, dim, role="unknown")
+            elif mine is not None:
+                self.table.put(g.name, mine, dim, "given")
+                self.table.note_exact(mine, dim == units.ANGLE)
             elif g.value is not None:
                 self.table.put(g.name, g.value, dim, "given")
                 self.table.note_exact(g.value, g.unit == "deg")
@@ -93,9 +102,13 @@ class _Chain:
                 self.table.put(g.name, self.table.resolve(g.definition), dim, "given")
             else:
                 self.table.param(g.name, dim)
-            if g.written:
+            if g.written and read is None:
                 self.table.note_exact(sympy.Rational(g.written.split()[0]))
             self.defined_at[g.name] = 0
+        if read is not None:
+            for typed in read.typed:
+                self.table.note_exact(typed)
+            self.notes += misread(self.table, self.chain, read)
         if "g" not in self.table.exprs:
             self.define(0, "g", sympy.Rational(GRAVITY.get(self.system, "9.81")), units.ACCELERATION, "given")
 
@@ -137,7 +150,8 @@ class _Chain:
                 values[g.name] = self.quantity(raw_given[g.name])[0]
             elif g.name in SEED_NAMES and g.name in self.table.exprs:
                 values[g.name] = self.table.exprs[g.name]
-        self.notes += impact(table, st.part, values, label=f"stage {i}: ")
+        read = self.stage_read(raw, values) if self.read is not None else None
+        self.notes += impact(table, st.part, values, label=f"stage {i}: ", read=read)
         stage.own = table
         for rname, new in (raw.get("results") or {}).items():
             if rname in table.exprs:
@@ -146,6 +160,21 @@ class _Chain:
             if g.unknown and g.name not in self.table.exprs:
                 self.define(i, g.name, table.exprs[g.name], dim_of(g))
         table.relabel(getattr(problem, "labels", ("A", "B")))  # the page's letters for the stage's bodies
+
+    def stage_read(self, raw: dict, values: dict[str, sympy.Expr]) -> source.Read:
+        """An impact stage's givens and velocities as the chain file gives them."""
+        read = source.Read(system=self.system, data=raw)
+        for name, value in values.items():
+            read.values[name] = value
+            read.dims[name] = self.table.dims.get(name, source.RESERVED.get(name, units.NONE))
+        for name, text in (raw.get("given") or {}).items():
+            if name not in read.values and not str(text).strip().startswith("?"):
+                try:
+                    read.values[name], read.dims[name] = self.quantity(text)
+                except (Unread, units.UnitError):
+                    read.unread.append(name)
+        source.read_impact(read, raw)
+        return read
 
     def stage_bounces(self, i: int, raw: dict, st: Any, stage: _Stage) -> None:
         h0, _ = self.quantity(raw.get("height"))
@@ -214,7 +243,7 @@ def _target(chain: Any, index: int) -> str | None:
     return None
 
 
-def chain_facts(solution: Any) -> Facts:
+def chain_facts(solution: Any, read: source.Read | None = None) -> Facts:
     """The facts of every stage of a solved chain.
 
     The chain is worked once for each set of unknowns the page has found so far:
@@ -230,7 +259,7 @@ def chain_facts(solution: Any) -> Facts:
     def state(i: int) -> frozenset[str]:
         return frozenset(n for n, at in solved_at.items() if at <= i and n in roots)
 
-    runs = {s: _Chain(solution, {n: roots[n] for n in s}).run() for s in {state(i) for i in range(last + 1)}}
+    runs = {s: _Chain(solution, {n: roots[n] for n in s}, read).run() for s in {state(i) for i in range(last + 1)}}
     full = runs[state(last)]
     asked = frozenset(chain.find) or frozenset(a.name for a in solution.answers)
     scopes = {"chain": full.chain_scope("chain", last, asked=asked)}

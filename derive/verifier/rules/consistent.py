@@ -1,9 +1,10 @@
 """Rule ``consistent``: a value shown twice is shown the same way.
 
 Where a sentence names an equation ("Substitute into (3)"), the numbers of
-that equation that the lines under it use again must be written as the
-equation wrote them: (3) shown with 84.8 and then substituted as 84.77 reads
-as two different numbers. A result rounded for the answer (-1.11 m/s) and
+that equation, or of an equation above it, that the lines under it use again
+must be written as the equation wrote them, or rounded from it: (3) shown with
+84.8 and then substituted as 84.77 reads as two different numbers, and 5.8971
+of (4) put in as 5.896 is not its rounding. A result rounded for the answer (-1.11 m/s) and
 carried on with one more figure (-1.109) is the textbook way, and not flagged;
 nor is a value with letters at the end of a line (``-6.261 e = -6.26 e``).
 """
@@ -50,7 +51,14 @@ def check(judge: Judge) -> Iterator[Failure]:
         if not sources:
             continue
         scopes = judge.chain_of(step.claim.line.scope)
-        theirs = [(n, s.display.tag) for s in sources for n in _intermediates(judge, s)]
+        here = step.claim.line
+        above = [c for c in tagged.values() if c.line.number < here.number and c.line.scope == here.scope]
+        named = {id(c) for c in sources}
+        theirs = [
+            (n, s.display.tag, id(s) in named)
+            for s in {id(c): c for c in sources + above}.values()
+            for n in _intermediates(judge, s)
+        ]
         # a number written exactly as another equation wrote it is that equation's (1.25 of (4)
         # under "Substitute into (3)", beside a 1.2 of (3))
         anywhere = {n.mantissa for c in tagged.values() for n in _intermediates(judge, c)}
@@ -61,14 +69,22 @@ def check(judge: Judge) -> Iterator[Failure]:
             for mine in _intermediates(judge, claim):
                 if mine.degrees or mine.mantissa in anywhere:
                     continue
-                near = [(abs(mine.value - o.value), o, tag) for o, tag in theirs if not o.degrees]
+                # an equation above but not named counts only for a number it shows with more
+                # figures (5.8971 of (4) put in as 5.896): a shorter one may be another quantity
+                near = [
+                    (abs(mine.value - o.value), o, tag, is_named)
+                    for o, tag, is_named in theirs
+                    if not o.degrees and (is_named or (o.decimals > mine.decimals and mine.figures >= 3))
+                ]
                 if not near:
                     continue
-                gap, other, tag = min(near, key=lambda x: x[0])
+                gap, other, tag, is_named = min(near, key=lambda x: x[0])
                 if other.mantissa in own:  # the line writes that number as it was: mine is another
                     continue
                 h = max(judge.halfwidth(mine, scopes), judge.halfwidth(other, scopes))
-                if gap <= Decimal(str(h)) and mine.mantissa != other.mantissa:
+                if mine.decimals < other.decimals and abs(other.value - mine.value) <= mine.ulp / 2:
+                    continue  # the textbook way: a number above carried on rounded (9.157 as 9.16)
+                if gap <= (1 if is_named else 3) * Decimal(str(h)) and mine.mantissa != other.mantissa:
                     line = claim.line
                     reason = f"({tag}) shows {other.text}; this line writes it {mine.text}"
                     yield Failure(line.number, line.latex, RULE, reason, line.scope)

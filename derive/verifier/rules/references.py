@@ -14,14 +14,18 @@ two must be proportional there, within the rounding of the numbers shown.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass
+from decimal import Decimal
 
-from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute
-from derive.verifier.judge import Claim, Judge, Value, tolerance
+from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
+from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
+from derive.verifier.latex import parse_display
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Side, Sym
+from derive.verifier.tokens import LatexError
+from derive.verifier.tree import Add, Frac, Mul, Num, Side, Sym
 
 RULE = "references"
 OPERATIONS = (
@@ -30,9 +34,12 @@ OPERATIONS = (
     (re.compile(r"(?:Substitute|Back) into \((\d+)\)"), "into"),
     (re.compile(r"^From \((\d+)\)"), "from"),
     (re.compile(r"^Solve ((?:\(\d+\)(?:,| and)? ?)+) together"), "together"),
+    (re.compile(r"^Multiply \((\d+)\) by \$([-\d.]+)\$ and add it to \((\d+)\)"), "multiply-add"),
+    (re.compile(r"^Multiply \((\d+)\) by \$([-\d.]+)\$ and subtract it from \((\d+)\)"), "multiply-subtract"),
 )
 CANCELS = re.compile(r"\$([^$]+)\$ cancels")
 STEPS = (CTX.mpf("0.37"), CTX.mpf("-0.61"), CTX.mpf("1.13"))
+TOLERANCE_C = CTX.mpf(10) ** -9
 
 
 @dataclass
@@ -43,6 +50,7 @@ class Step:
     tags: tuple[str, ...]
     cancels: tuple[str, ...]
     claim: Claim
+    factor: str = "1"
 
 
 def _name(latex: str) -> str:
@@ -65,9 +73,12 @@ def steps(judge: Judge) -> Iterator[Step]:
         for pattern, op in OPERATIONS:
             m = pattern.search(line.sentence)
             if m:
-                tags = tuple(re.findall(r"\d+", m.group(0)))
+                if op.startswith("multiply"):  # Multiply (a) by k and add it to (b)
+                    tags, factor = (m.group(1), m.group(3)), m.group(2)
+                else:
+                    tags, factor = tuple(re.findall(r"\(?(\d+)\)", m.group(0))), "1"
                 cancels = tuple(_name(c) for c in CANCELS.findall(line.sentence))
-                yield Step(op, tags, cancels, claim)
+                yield Step(op, tags, cancels, claim, factor)
                 break
 
 
@@ -95,6 +106,37 @@ def _found_before(judge: Judge, step: Step) -> dict[str, object]:
     return out
 
 
+def _shown_before(judge: Judge, step: Step) -> dict[str, str]:
+    """Unknowns the lines above (same section) found, each with its value as written there."""
+    out: dict[str, str] = {}
+    here = step.claim.line
+    for claim in judge.claims:
+        line = claim.line
+        if line.number >= here.number or line.section != here.section or line.scope != here.scope:
+            continue
+        if line.block == here.block or not claim.relations:
+            continue
+        sides = claim.relations[0].sides
+        if len(sides) >= 2 and isinstance(sides[0].expr, Sym) and lone_number(sides[-1]) is None:
+            out[sides[0].expr.name] = sides[-1].source.strip()
+    return out
+
+
+def _known_above(judge: Judge, step: Step, unknowns: frozenset[str]) -> set[str]:
+    """Unknowns a line above (in this part of the page) gives a value free of other unknowns."""
+    here = step.claim.line
+    out: set[str] = set()
+    for claim in judge.claims:
+        line = claim.line
+        if line.number >= here.number or line.scope != here.scope or not claim.relations or line.kind != "display":
+            continue
+        sides = claim.relations[0].sides
+        named = len(sides) >= 2 and isinstance(sides[0].expr, Sym) and sides[0].expr.name in unknowns
+        if named and any(not set(judge.names(s.expr)) & unknowns for s in sides[1:]):
+            out.add(sides[0].expr.name)
+    return out
+
+
 class _Operation:
     """The line under a step and the operation's equation, valued at points of the unknowns."""
 
@@ -107,19 +149,85 @@ class _Operation:
             ref = Add(((1, eqs[0]), (1, eqs[1])))
         elif step.op == "subtract":  # Subtract (a) from (b): (b) - (a)
             ref = Add(((1, eqs[1]), (-1, eqs[0])))
+        elif step.op.startswith("multiply"):  # (b) + k (a), or (b) - k (a)
+            sign = 1 if step.op == "multiply-add" else -1
+            ref = Add(((1, eqs[1]), (sign, Mul((Num(step.factor.lstrip("-")), eqs[0])))))
+            if step.factor.startswith("-"):
+                ref = Add(((1, eqs[1]), (-sign, Mul((Num(step.factor.lstrip("-")), eqs[0])))))
         else:
             ref = eqs[0]
         self.line = _equation(step.claim)
+        self.alternatives: list[object] = []  # other readings of the middle side ("4 + 4")
         unknowns = self.scopes[0].unknowns()
         self.free = ({n for n in judge.names(self.line) if n in unknowns} | set(step.cancels)) & unknowns
+        before = _found_before(judge, step)
         if step.op == "into":  # what earlier lines found in terms of the unknowns left goes in
             found = {
                 n: e
-                for n, e in _found_before(judge, step).items()
+                for n, e in before.items()
                 if n not in self.free and n in unknowns and set(judge.names(e)) & self.free
             }
             ref = substitute(ref, found)
+            sides = step.claim.relations[0].sides if step.claim.relations else ()
+            if len(sides) >= 3:  # a value found above, put in as it was shown: "Back into (4): -1.11 + 9.51"
+                middle = self._shown_as_names(sides[1], unknowns)
+                middle = self._numbers_as_names(middle, before, unknowns)
+                if middle is not sides[1].expr:
+                    self.line = Add(((1, sides[0].expr), (-1, middle)))
+                self.alternatives = [Add(((1, sides[0].expr), (-1, m))) for m in self.alternatives[1:]]
+        # an unknown of the equation named that no line above has found is free too:
+        # "From (4)" cannot give v_B2 while (4) still holds e
+        known = _known_above(judge, step, unknowns)
+        self.free |= {n for n in judge.names(ref) if n in unknowns and n not in known}
         self.ref = ref
+
+    def _shown_as_names(self, side: Side, unknowns: frozenset[str]) -> object:
+        """The side with each expression that shows a value found above (in its last side,
+        as written) read as that unknown: u(3 - 7e)/2 in "Back into (4)" is v_A2."""
+        text, names = side.source, {}
+        for k, (name, shown) in enumerate(_shown_before(self.judge, self.step).items()):
+            if name in unknowns and name not in self.free and len(shown) > 3 and text.count(shown) == 1:
+                text = text.replace(shown, rf"\left(Q_{{{k}}}\right)")
+                names[f"Q_{k}"] = Sym(name)
+        if not names:
+            return side.expr
+        try:
+            expr = parse_display(text).relations[0].sides[0].expr
+        except (LatexError, IndexError):
+            return side.expr
+        self.free |= {n.name for n in names.values()}
+        return substitute(expr, names)
+
+    def _numbers_as_names(self, line: object, before: dict[str, object], unknowns: frozenset[str]) -> object:
+        """The line with each number that shows a value found above read as that unknown."""
+        shown: dict[Decimal, object] = {}
+        for name, expr in before.items():
+            num = expr if isinstance(expr, Num) else None
+            if isinstance(expr, Add) and len(expr.terms) == 1 and isinstance(expr.terms[0][1], Num):
+                num, sign = expr.terms[0][1], expr.terms[0][0]
+            else:
+                sign = 1
+            if num is None or name not in unknowns or name in self.free or Decimal(num.mantissa) == 0:
+                continue
+            shown[Decimal(num.mantissa)] = Sym(name) if sign > 0 else Add(((-1, Sym(name)),))
+        # a number of the line that shows a found value, perhaps with more figures (9.4354 for
+        # 9.435) or fewer (0.6 for -0.600); where two numbers could be it (4 + 4), each is tried
+        matches: dict[Decimal, list[Num]] = {}
+        for node in walk(line):
+            if isinstance(node, Num) and not node.degrees and not node.exponent:
+                mine = Decimal(node.mantissa)
+                for value in shown:
+                    longer = -mine.as_tuple().exponent >= -value.as_tuple().exponent
+                    half = Decimal(1).scaleb(value.as_tuple().exponent) / 2
+                    if mine == value or (longer and abs(mine - value) <= half):
+                        matches.setdefault(value, []).append(node)
+        if not matches:
+            return line
+        choices = [[(n, shown[v]) for n in nodes] for v, nodes in matches.items()]
+        for picked in itertools.islice(itertools.product(*choices), 4):
+            self.alternatives.append(replace_nodes(line, {id(n): tree for n, tree in picked}))
+        self.free |= {n for alt in self.alternatives for n in self.judge.names(alt) if n in unknowns}
+        return self.alternatives[0]
 
     def point(self, k: int, bump: str | None = None) -> dict[str, object]:
         out = {}
@@ -134,7 +242,21 @@ class _Operation:
         return self.judge.value(Side(tree), self.scopes, overrides=point)
 
     def reasons(self) -> Iterator[str]:
+        first = list(self._reasons())
+        for other in self.alternatives:  # another reading of which number is the value found
+            if not first:
+                break
+            self.line = other
+            if not list(self._reasons()):
+                first = []
+        yield from first
+
+    def _reasons(self) -> Iterator[str]:
         if self.line is None or self.ref is None:
+            return
+        if self.free and not set(self.judge.names(self.ref)) & self.free:
+            named = " and ".join(f"({t})" for t in self.step.tags)
+            yield f"{named} has none of the unknowns of the line under it ({', '.join(sorted(self.free))})"
             return
         pts = [self.point(k) for k in range(len(STEPS))]
         shown = [self.value(self.line, p) for p in pts]
@@ -157,7 +279,13 @@ class _Operation:
     def _proportional(self, shown: list[Value], ref: list[Value]) -> Iterator[str]:
         k = max(range(len(ref)), key=lambda i: abs(ref[i].center))
         what = {"add": "the sum of", "subtract": "the difference of", "into": "substitution into"}.get(self.step.op, "")
+        what = "the combination of" if self.step.op.startswith("multiply") else what
         named = " and ".join(f"({t})" for t in self.step.tags)
+        if all(abs(r.center) <= tolerance(r) for r in ref) and any(
+            abs(x.center) > x.radius + tolerance(x) for x in shown
+        ):
+            yield f"the line does not follow from {what} {named}: it reads 0 = 0 there".replace("  ", " ")
+            return
         if abs(ref[k].center) <= ref[k].radius + tolerance(ref[k]):
             # the equation named is nothing in these unknowns; say so only when that is exact
             # (not when its rounded numbers leave it undecided)
@@ -166,11 +294,40 @@ class _Operation:
             return
         c = shown[k].center / ref[k].center
         dc = (shown[k].radius + abs(c) * ref[k].radius) / abs(ref[k].center)
+        if self.step.op not in ("from", "into") and abs(abs(c) - 1) > dc + TOLERANCE_C:
+            yield f"the line is not {what} {named} (it is {float(c):.4g} times it)"
+            return
         for s, r in zip(shown, ref, strict=True):
             slack = s.radius + abs(c) * r.radius + abs(r.center) * dc + tolerance(s) + abs(c) * tolerance(r)
             if abs(s.center - c * r.center) > slack or not c:
                 yield f"the line is not {what} {named}".replace("  ", " ")
                 return
+
+
+def replace_numbers(node: object, shown: dict[Decimal, object]) -> object:
+    """``node`` with each number whose value is in ``shown`` replaced by the tree it maps to."""
+    if isinstance(node, Num):
+        return shown.get(Decimal(node.mantissa), node) if not node.degrees and not node.exponent else node
+    if isinstance(node, Add):
+        return Add(tuple((s, replace_numbers(t, shown)) for s, t in node.terms))
+    if isinstance(node, Mul):
+        return Mul(tuple(replace_numbers(f, shown) for f in node.factors))
+    if isinstance(node, Frac):
+        return Frac(replace_numbers(node.num, shown), replace_numbers(node.den, shown))
+    return node
+
+
+def replace_nodes(node: object, by_id: dict[int, object]) -> object:
+    """``node`` with the nodes named (by identity) replaced."""
+    if id(node) in by_id:
+        return by_id[id(node)]
+    if isinstance(node, Add):
+        return Add(tuple((s, replace_nodes(t, by_id)) for s, t in node.terms))
+    if isinstance(node, Mul):
+        return Mul(tuple(replace_nodes(f, by_id) for f in node.factors))
+    if isinstance(node, Frac):
+        return Frac(replace_nodes(node.num, by_id), replace_nodes(node.den, by_id))
+    return node
 
 
 def check(judge: Judge) -> Iterator[Failure]:
@@ -188,13 +345,40 @@ def check(judge: Judge) -> Iterator[Failure]:
     for step in steps(judge):
         line = step.claim.line
         reason = _missing(step, tagged)
-        if reason is None and step.op != "together":
+        if reason is None and step.op == "together":
+            reason = _together(judge, step, tagged)
+        elif reason is None:
             try:
                 reason = next(_Operation(judge, step, tagged).reasons(), None)
             except (Unresolved, Undefined, ZeroDivisionError):
                 reason = None
         if reason:
             yield Failure(line.number, line.latex, RULE, f"{line.sentence} {reason}", line.scope)
+
+
+def _together(judge: Judge, step: Step, tagged: dict[str, Claim]) -> str | None:
+    """ "Solve (3) and (4) together": distinct equations, each with an unknown that the
+    lines under the sentence find, and together all of them."""
+    if len(set(step.tags)) != len(step.tags):
+        return "— an equation is named twice"
+    scopes = judge.chain_of(step.claim.line.scope)
+    unknowns = scopes[0].unknowns()
+    found = set()
+    for claim in judge.claims:
+        if claim.line.block == step.claim.line.block and claim.relations:
+            first = claim.relations[0].sides[0].expr
+            if isinstance(first, Sym) and first.name in unknowns:
+                found.add(first.name)
+    named: set[str] = set()
+    for t in step.tags:
+        eq = _equation(tagged[t])
+        names = set(judge.names(eq)) & unknowns if eq is not None else set()
+        if found and not names & found:
+            return f"— ({t}) has none of the unknowns found here ({', '.join(sorted(found))})"
+        named |= names
+    if found - named:
+        return f"— no equation named has {', '.join(sorted(found - named))}"
+    return None
 
 
 def _missing(step: Step, tagged: dict[str, Claim]) -> str | None:

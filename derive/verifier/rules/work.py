@@ -4,7 +4,9 @@
   ``h_2 = 1.40 ⇒ e = 0.837`` with e nowhere before it); a value carried to the
   next stage of a chain is worked out in its stage first.
 - ``repeated``: no side is written twice in a row (``v_2 = -u = -u``).
-- ``read``: a displayed line the verifier cannot read is reported, not skipped.
+- ``read``: a line the verifier cannot read, or one with a side it cannot value (a
+  name with no value, an unknown unit), is reported, not skipped: no line counts as
+  true unchecked.
 """
 
 from __future__ import annotations
@@ -59,6 +61,8 @@ def check(judge: Judge) -> Iterator[Failure]:
         found = []
         if claim.error is not None and line.kind == "display":
             found.append(("read", f"the verifier cannot read this line ({claim.error})"))
+        elif line.number in judge.unvalued:
+            found.append(("read", f"the verifier cannot check this line: {judge.unvalued[line.number]}"))
         reason = _derived(judge, claim, block) or _carried(judge, claim)
         if reason:
             found.append(("derived", reason))
