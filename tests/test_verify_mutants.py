@@ -134,12 +134,17 @@ def run(pages: list[tuple[str, str]], per_kind: int | None) -> tuple[Counter, Co
     return made, caught, missed
 
 
-def _judge(made: Counter, caught: Counter, missed: list[str], record: Any, label: str) -> None:
+def _judge(made: Counter, caught: Counter, missed: list[str], record: Any, label: str, sample: bool = False) -> None:
+    """The rates by kind against the issue's figures; a small sample (two mutants a kind) holds
+    the kinds below 97 % (FLOORS) to nothing, as one miss is half of them: the full run measures them."""
     rates = {k: (caught[k], made[k]) for k in verify_mutants.KINDS if made[k]}
     record("verify_mutants", (label, rates))
     total, hit = sum(made.values()), sum(caught.values())
     assert total > 0
-    weak = [k for k, (c, n) in rates.items() if c < FLOORS.get(k, EACH) * n]
+    weak = [k for k, (c, n) in rates.items() if c < (0 if sample and k in FLOORS else FLOORS.get(k, EACH)) * n]
+    if sample:
+        total -= sum(made[k] for k in FLOORS)
+        hit -= sum(caught[k] for k in FLOORS)
     report = os.environ.get("DERIVE_MUTANTS_REPORT")
     if report:  # every mutant that passed, for a closer look
         with open(report, "w", encoding="utf-8") as out:
@@ -154,7 +159,7 @@ def test_mutants_of_the_notes_examples(record_property: Any) -> None:
     """A fast sample: one mutant of each kind on each of the notes' two examples."""
     pages = [("notes-4c11-two-spheres", "md"), ("notes-4c12-cue-ball", "md")]
     made, caught, missed = run(pages, 1)
-    _judge(made, caught, missed, record_property, "sample")
+    _judge(made, caught, missed, record_property, "sample", sample=True)
 
 
 @pytest.mark.slow
