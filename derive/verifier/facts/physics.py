@@ -74,6 +74,12 @@ def derived(d: Before, post: dict[str, sympy.Expr], phi: sympy.Expr | None) -> d
         if not (n == 0 and t == 0):
             out[f"theta_{body}2"] = sympy.atan2(n, t)
             out[f"beta_{body}2"] = sympy.atan2(t, n)
+            # the acute angles with the line of centres (alpha) and the plane of contact (gamma)
+            out[f"alpha_{body}2"] = sympy.atan2(sympy.Abs(t), sympy.Abs(n))
+            out[f"gamma_{body}2"] = sympy.atan2(sympy.Abs(n), sympy.Abs(t))
+            n1, t1 = (d.a_n, d.a_t) if body == "A" else (d.b_n, d.b_t)
+            if not (n1 == 0 and t1 == 0):  # the angle the velocity turns through
+                out[f"delta_{body}"] = sympy.acos((n1 * n + t1 * t) / sympy.sqrt((n1**2 + t1**2) * (n**2 + t**2)))
     mb = 0 if d.fixed else d.m_B
     t1 = HALF * d.m_A * (d.a_n**2 + d.a_t**2) + HALF * mb * (d.b_n**2 + d.b_t**2)
     t2 = HALF * d.m_A * (post["A2n"] ** 2 + post["A2t"] ** 2) + HALF * mb * (post["B2n"] ** 2 + post["B2t"] ** 2)
@@ -88,4 +94,8 @@ def derived(d: Before, post: dict[str, sympy.Expr], phi: sympy.Expr | None) -> d
             out[f"v_A{when}x"], out[f"v_A{when}y"] = an * c - at * s, an * s + at * c
             if not d.fixed:
                 out[f"v_B{when}x"], out[f"v_B{when}y"] = bn * c - bt * s, bn * s + bt * c
+        for body in "AB" if not d.fixed else "A":  # the direction after the impact from +x
+            x, y = out[f"v_{body}2x"], out[f"v_{body}2y"]
+            if not (x == 0 and y == 0):
+                out[f"psi_{body}2"] = sympy.atan2(y, x)
     return out

@@ -163,7 +163,14 @@ def impact(
     for name, expr in derived(data, post, phi).items():
         if not (oblique or name.startswith(("T_", "J_"))):
             continue
-        table.put(name, expr, _DIMS.get(name[:2], units.ANGLE if name.startswith(("theta", "beta")) else units.NONE))
+        table.put(
+            name,
+            expr,
+            _DIMS.get(
+                name[:2],
+                units.ANGLE if name.startswith(("theta", "beta", "alpha", "gamma", "delta", "psi")) else units.NONE,
+            ),
+        )
     for b in "AB":
         comps = {"t": post[b + "2t"], "n": post[b + "2n"]}
         if phi is not None:
