@@ -90,9 +90,9 @@ def _equation(claim: Claim) -> object | None:
     return Add(((1, sides[0].expr), (-1, sides[-1].expr)))
 
 
-def _found_before(judge: Judge, step: Step) -> dict[str, object]:
-    """Unknowns the lines above (same section, earlier blocks) have found: name -> its expression."""
-    out: dict[str, object] = {}
+def _sides_above(judge: Judge, step: Step) -> Iterator[tuple]:
+    """The sides of each line above the step's (same section and scope, earlier blocks) that
+    finds an unknown: a name alone on its left."""
     here = step.claim.line
     for claim in judge.claims:
         line = claim.line
@@ -102,24 +102,17 @@ def _found_before(judge: Judge, step: Step) -> dict[str, object]:
             continue
         sides = claim.relations[0].sides
         if len(sides) >= 2 and isinstance(sides[0].expr, Sym):
-            out[sides[0].expr.name] = (sides[1] if len(sides) == 2 else sides[-1]).expr
-    return out
+            yield sides
+
+
+def _found_before(judge: Judge, step: Step) -> dict[str, object]:
+    """Unknowns the lines above (same section, earlier blocks) have found: name -> its expression."""
+    return {s[0].expr.name: (s[1] if len(s) == 2 else s[-1]).expr for s in _sides_above(judge, step)}
 
 
 def _shown_before(judge: Judge, step: Step) -> dict[str, str]:
     """Unknowns the lines above (same section) found, each with its value as written there."""
-    out: dict[str, str] = {}
-    here = step.claim.line
-    for claim in judge.claims:
-        line = claim.line
-        if line.number >= here.number or line.section != here.section or line.scope != here.scope:
-            continue
-        if line.block == here.block or not claim.relations:
-            continue
-        sides = claim.relations[0].sides
-        if len(sides) >= 2 and isinstance(sides[0].expr, Sym) and lone_number(sides[-1]) is None:
-            out[sides[0].expr.name] = sides[-1].source.strip()
-    return out
+    return {s[0].expr.name: s[-1].source.strip() for s in _sides_above(judge, step) if lone_number(s[-1]) is None}
 
 
 def _known_above(judge: Judge, step: Step, unknowns: frozenset[str]) -> set[str]:
