@@ -42,8 +42,10 @@ PER_KIND = int(os.environ.get("DERIVE_MUTANTS_PER_KIND", "3"))
 OVERALL, EACH = 0.99, 0.97
 #: Kinds below the issue's 97 %, each at the floor measured (a guard against going back):
 #: a number off by one in its last figure where the rounding of the line's other numbers
-#: allows it (0.46584 v_A2 + 0.31056 v_B2 = 9.1569 for 9.1570), 399 of 414 caught.
-FLOORS = {"number": 0.96}
+#: allows it (0.46584 v_A2 + 0.31056 v_B2 = 9.1569 for 9.1570), and a coefficient of a closed
+#: form in letters changed (123 - 122 e^2 for 123 - 123 e^2, since issue #28 writes closed
+#: forms in the notes' style): 424 of 444 caught (95.5 %).
+FLOORS = {"number": 0.95}
 
 
 def _oracles(facts: Facts):

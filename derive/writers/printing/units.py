@@ -23,9 +23,12 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
         return None
     term = last.terms[0].xreplace(dict(style.values))
     letters = term.free_symbols - _UNITLESS
-    if not letters or not letters <= style.letters | set(style.letter_units):
+    # by name: a speed kept as a letter is positive in the closed forms, real in the style
+    known = {x.name: x for x in style.letters | set(style.letter_units)}
+    if not letters or not all(x.name in known for x in letters):
         return None
-    dims = {s: parse_unit(style.letter_units[s]).dim if s in style.letter_units else (0, 0, 0, 0) for s in letters}
+    units = {x: style.letter_units.get(known[x.name]) for x in letters}
+    dims = {x: parse_unit(units[x]).dim if units[x] else (0, 0, 0, 0) for x in letters}
     have = _dimension(term, dims)
     if have is None or have == parse_unit(eqn.unit).dim:
         return None
@@ -34,8 +37,8 @@ def _unit_beside_letters(eqn: Eqn, style: Style) -> str | None:
     if have == tuple(w - m for w, m in zip(parse_unit(eqn.unit).dim, (1, 0, 0, 0), strict=True)):
         # a mass short (T_1 = 4.8 v_A1^2 with the masses in numbers): the mass unit
         return "slug" if any("ft" in u for u in style.letter_units.values()) else "kg"
-    alone = [s for s in letters if dims[s] == have and not any(c in style.letter_units[s] for c in "/*^")]
-    return f"{eqn.unit}/{style.letter_units[alone[0]]}" if alone and "/" not in eqn.unit else None
+    alone = [x for x in letters if units[x] and dims[x] == have and not any(c in units[x] for c in "/*^")]
+    return f"{eqn.unit}/{units[alone[0]]}" if alone and "/" not in eqn.unit else None
 
 
 def _dimension(expr: sympy.Expr, dims: Mapping[sympy.Symbol, tuple[int, ...]]) -> tuple[int, ...] | None:
