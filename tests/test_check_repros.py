@@ -1,5 +1,5 @@
 """The grading holes of ``derive check`` found by the hostile inputs of round 2
-(tests/data/repros/input2/, copied from shared/repros/input2/), each run as its first
+(tests/data/repros2/, copied from shared/repros/input2/), each run as its first
 line says and each ending as issue #31 (item 8) asks.
 
 The true values are the notes' (Example 4.C.11: v_A2n = -1.109 m/s, T_lost = 321.4 J,
@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-HERE = Path(__file__).parent / "data" / "repros" / "input2"
+HERE = Path(__file__).parent / "data" / "repros2"
 #: CPU seconds a report may take (issue #31: under 10 s; it used to run to the 60 s budget).
 BOUND = 10.0
 

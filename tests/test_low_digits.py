@@ -18,7 +18,7 @@ from output_cases import bundled_names, solution
 
 import derive
 
-REPROS = Path(__file__).parent / "data" / "repros-input2"
+REPROS = Path(__file__).parent / "data" / "repros2"
 
 
 @pytest.fixture

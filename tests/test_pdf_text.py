@@ -21,7 +21,7 @@ from derive.errors import InputError
 from derive.escape import tex
 from derive.writers.pdf import build_pdf
 
-REPROS = Path(__file__).parent / "data" / "repros-input2"
+REPROS = Path(__file__).parent / "data" / "repros2"
 
 SMALL = "".join(chr(c) for c in range(0x03B1, 0x03CA))  # alpha ... omega, final sigma included
 CAPITAL = "".join(chr(c) for c in range(0x0391, 0x03AA) if c != 0x03A2)  # Alpha ... Omega

@@ -1,4 +1,4 @@
-"""Hostile-input repros of the second round (tests/data/repros-input2/, from the shared
+"""Hostile-input repros of the second round (tests/data/repros2/, from the shared
 repros' input2 folder), each run as its first line says and ending as its README asks."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-REPROS = Path(__file__).parent / "data" / "repros-input2"
+REPROS = Path(__file__).parent / "data" / "repros2"
 
 
 @pytest.fixture
