@@ -297,19 +297,6 @@ class _Operation:
                 return
 
 
-def replace_numbers(node: object, shown: dict[Decimal, object]) -> object:
-    """``node`` with each number whose value is in ``shown`` replaced by the tree it maps to."""
-    if isinstance(node, Num):
-        return shown.get(Decimal(node.mantissa), node) if not node.degrees and not node.exponent else node
-    if isinstance(node, Add):
-        return Add(tuple((s, replace_numbers(t, shown)) for s, t in node.terms))
-    if isinstance(node, Mul):
-        return Mul(tuple(replace_numbers(f, shown) for f in node.factors))
-    if isinstance(node, Frac):
-        return Frac(replace_numbers(node.num, shown), replace_numbers(node.den, shown))
-    return node
-
-
 def replace_nodes(node: object, by_id: dict[int, object]) -> object:
     """``node`` with the nodes named (by identity) replaced."""
     if id(node) in by_id:
