@@ -19,7 +19,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 import test_every_line as t
-import verify_corpus
+from support import verify_corpus
 
 
 def _variants(name: str, text: str, count: int) -> t.Tally:

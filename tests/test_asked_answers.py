@@ -11,7 +11,7 @@ import math
 import re
 
 import pytest
-from output_cases import bundled_names, solution
+from support.output_cases import bundled_names, solution
 
 import derive
 from derive.symbols import latex_name

@@ -14,7 +14,7 @@ from decimal import Decimal
 from pathlib import Path
 
 import pytest
-from chain_text import with_numbers
+from support.chain_text import with_numbers
 
 import derive
 from derive.homework import variants

@@ -4,7 +4,7 @@ Default run: the notes' two examples (4.C.11, 4.C.12), in Markdown and LaTeX.
 Slow (``-m slow``): every bundled problem and chain in Markdown and LaTeX, 200
 homework variants drawn from 4.C.11's and the generated ``[vary]`` tables and 12 from
 each other bundled table, and
-2,000 generated physical problems (tests/verify_corpus.py, a fixed seed).
+2,000 generated physical problems (tests/support/verify_corpus.py, a fixed seed).
 
 A failing test lists the wrong lines grouped by rule, with a few examples each
 (problem, format, line, reason); no class of wrong line is allowed (KNOWN is
@@ -23,8 +23,8 @@ from typing import Any
 
 import pytest
 import sympy
-import verify_corpus
-from chain_text import with_numbers
+from support import verify_corpus
+from support.chain_text import with_numbers
 
 import derive
 from derive.homework import variants

@@ -206,3 +206,51 @@ def test_a_real_full_and_read_only_folder(hw: Path, tmp_path: Path) -> None:
             assert "Read-only file system" in proc.stderr and "Traceback" not in proc.stderr
     finally:
         subprocess.run(["umount", str(disk)], check=False)
+
+
+def _children(pid: int) -> set[int]:
+    """The processes whose parent is ``pid`` (read from /proc; Linux only)."""
+    found = set()
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == pid:
+            found.add(int(stat.parent.name))
+    return found
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="reads /proc")
+def test_workers_end_when_variants_is_killed(tmp_path: Path) -> None:
+    """``derive variants`` spreads its work over a pool of forked workers; SIGKILL on the
+    command must not leave them waiting for ever (they ended only with the machine before)."""
+    (tmp_path / "hw.toml").write_text(PROBLEM)
+    proc = subprocess.Popen(
+        derive_cmd("variants", "hw.toml", "--count", "400", "-o", "out"),
+        cwd=tmp_path,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+        env=_env(),
+    )
+    deadline = time.monotonic() + 120
+    workers: set[int] = set()
+    while len(workers) < 2 and time.monotonic() < deadline and proc.poll() is None:
+        workers = _children(proc.pid)
+        time.sleep(0.1)
+    if len(workers) < 2:
+        proc.kill()
+        proc.wait()
+        pytest.skip("the run made no pool of workers here (one core, or it ended first)")
+    proc.kill()
+    proc.wait()
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline and any(Path(f"/proc/{w}").exists() for w in workers):
+        time.sleep(0.2)
+    left = [
+        w
+        for w in workers
+        if Path(f"/proc/{w}/stat").exists()
+        and "Z" not in Path(f"/proc/{w}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    ]
+    assert not left, f"workers {left} still run 10 s after their command was killed"

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from output_cases import solution
+from support.output_cases import solution
 
 import derive
 from derive.writers.figure import Arc, Arrow, describe

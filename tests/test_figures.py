@@ -13,9 +13,9 @@ import subprocess
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
-import figure_cases
 import pytest
-from pending_syntax import skip_if_pending
+from support import figure_cases
+from support.pending_syntax import skip_if_pending
 
 import derive
 import derive.resources

@@ -1,5 +1,5 @@
 """The file fuzzer: 10,000 problem, chain and answers files broken the way users and attackers
-break them (tests/fuzz_files.py, from the schema), each run through the real command line,
+break them (tests/support/fuzz_files.py, from the schema), each run through the real command line,
 in this process (``derive.cli.main``).
 
 For every file: no internal error (no traceback, no "internal error"), no run over its time
@@ -28,8 +28,8 @@ from collections import Counter
 from collections.abc import Callable
 from pathlib import Path
 
-import fuzz_files
 import pytest
+from support import fuzz_files
 
 from derive.cli import main
 from derive.errors import DeriveError

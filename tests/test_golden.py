@@ -22,7 +22,7 @@ import os
 from pathlib import Path
 
 import pytest
-from output_cases import bundled_names, solution
+from support.output_cases import bundled_names, solution
 
 import derive
 from derive.writers.figure import setup_svg, setup_tikz

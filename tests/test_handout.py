@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 import sympy
-from output_cases import hostile_problem, missing_tool
+from support.output_cases import hostile_problem, missing_tool
 
 import derive
 from derive import escape, resources
@@ -347,7 +347,7 @@ HTML_NAMES = ["notes-4c11-two-spheres", "ocr-m2-2012-particle-hits-wall", "chain
 def test_html_sheet_has_statements_figures_convention_and_no_answers() -> None:
     """Issue 15: a student's sheet as HTML: each statement with its set-up before the impact
     and the sign convention in words; no Source line, no answer, no worked solution."""
-    from output_cases import html_text
+    from support.output_cases import html_text
 
     doc, failures = build_handout(HTML_NAMES, title="Sheet <1>", theory=False, mode="problems", fmt="html")
     assert failures == [] and isinstance(doc, str)
@@ -369,7 +369,7 @@ def test_html_sheet_has_statements_figures_convention_and_no_answers() -> None:
 
 def test_html_keys_have_every_answer() -> None:
     """The key (answers mode) and the worked solutions hold each problem's answers and its Source."""
-    from output_cases import html_text
+    from support.output_cases import html_text
 
     for mode in ("answers", "solutions"):
         doc, _ = build_handout(HTML_NAMES, title="Key", theory=mode == "solutions", mode=mode, fmt="html")
@@ -394,7 +394,7 @@ def test_cli_handout_html_from_the_extension_or_format(cli, tmp_path: Path) -> N
 
 def test_html_handout_carries_no_markup_from_the_file(tmp_path: Path) -> None:
     """A title, source and statement with HTML, TeX and Markdown in them come out as text."""
-    from output_cases import html_text
+    from support.output_cases import html_text
 
     path = hostile_problem(tmp_path)
     for mode in MODES:
@@ -408,7 +408,7 @@ def test_html_handout_carries_no_markup_from_the_file(tmp_path: Path) -> None:
 
 def test_html_handout_without_node_typesets_itself(monkeypatch: pytest.MonkeyPatch) -> None:
     """Without Node.js each formula stays TeX in a span and KaTeX's script comes inline."""
-    from output_cases import html_text
+    from support.output_cases import html_text
 
     from derive.writers import katex
 

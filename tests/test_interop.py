@@ -39,7 +39,7 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import pytest
-from output_cases import missing_tool
+from support.output_cases import missing_tool
 
 REPO = Path(__file__).resolve().parents[1]
 INTEROP_DOC = REPO / "docs" / "interop.md"

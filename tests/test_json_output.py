@@ -16,7 +16,7 @@ from numbers import Real
 
 import pytest
 import sympy
-from output_cases import bundled_names, hostile_problem, solution
+from support.output_cases import bundled_names, hostile_problem, solution
 
 import derive
 

@@ -9,8 +9,8 @@ from __future__ import annotations
 import json
 
 import pytest
-from katex_check import Formula, MarkdownMathError, describe, katex_errors, markdown_formulas
-from output_cases import bundled_names, hostile_problem, solution
+from support.katex_check import Formula, MarkdownMathError, describe, katex_errors, markdown_formulas
+from support.output_cases import bundled_names, hostile_problem, solution
 
 import derive
 

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from output_cases import bundled_names, hostile_problem, missing_tool, solution
+from support.output_cases import bundled_names, hostile_problem, missing_tool, solution
 
 import derive
 from derive import resources

@@ -33,8 +33,8 @@ from functools import cache
 
 import pytest
 import sympy
-from pending_syntax import pending_reason, skip_if_pending
-from symbolic_published import PUBLISHED as SYMBOLIC
+from support.pending_syntax import pending_reason, skip_if_pending
+from support.symbolic_published import PUBLISHED as SYMBOLIC
 
 import derive
 from derive import resources
@@ -159,7 +159,7 @@ def solved(stem: str) -> derive.Solution:
     """Each bundled problem is loaded and solved once per test session.
 
     A problem written in the issue #14 syntax before derive reads it is skipped, saying
-    which part derive refuses (tests/pending_syntax.py).
+    which part derive refuses (tests/support/pending_syntax.py).
     """
     skip_if_pending(stem)
     return _solved(stem)

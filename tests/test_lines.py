@@ -311,7 +311,7 @@ def test_a_variants_fraction_shows_no_more_figures_than_the_rule() -> None:
 def test_a_variant_whose_masses_add_to_one_keeps_the_unit_of_each_velocity() -> None:
     # m_A = m_B = 0.5 kg, e = 0, v_A1 = 5.5 m/s, v_B1 = -1 m/s: they move together at
     # (0.5 * 5.5 - 0.5 * 1) / 1 = 2.25 m/s. "v_A2 = 2.25 + 0" would be a velocity without a unit.
-    import verify_corpus
+    from support import verify_corpus
 
     text = verify_corpus.VARY[0].text
     values = {"m_A": sympy.Rational(1, 2), "m_B": sympy.Rational(1, 2), "e": sympy.Integer(0)}

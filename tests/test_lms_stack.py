@@ -1,6 +1,6 @@
 """STACK export (issue 30): ``derive variants --stack``: Moodle XML with STACK questions whose
 variables (plain Maxima) hold derive's variants; checked against STACK's importer, its
-CASText blocks, its NumAbsolute answer test (tests/stack_check.py) and Debian's Maxima."""
+CASText blocks, its NumAbsolute answer test (tests/support/stack_check.py) and Debian's Maxima."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from decimal import Decimal
 from pathlib import Path
 
 import pytest
-import stack_check as sc
+from support import stack_check as sc
 
 import derive
 from derive.homework import lms, variants

@@ -14,7 +14,7 @@ import shutil
 from pathlib import Path
 
 import pytest
-from output_cases import bundled_names, solution
+from support.output_cases import bundled_names, solution
 
 import derive
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 
 import sympy
-from output_cases import solution
+from support.output_cases import solution
 
 import derive
 from derive.steps.notation import notes_form

@@ -14,7 +14,7 @@ import unicodedata
 from pathlib import Path
 
 import pytest
-from output_cases import missing_tool
+from support.output_cases import missing_tool
 
 import derive
 from derive.errors import InputError

@@ -6,7 +6,7 @@ problem's letters, with the givens that are numbers put in) is compared with the
 expression by SymPy equivalence, the letters positive (``[assume]`` may say otherwise):
 
 - the printed expression as the file states it (``answers``), parsed with derive's
-  restricted parser, and as tests/symbolic_published.py states it (a fixed string of this
+  restricted parser, and as tests/support/symbolic_published.py states it (a fixed string of this
   test code, parsed with SymPy): the two must agree, and derive must agree with both;
 - angles compare by tangent, and at sample values of the letters (so a direction
   reversed by 180 degrees does not pass); an angle printed in degrees also by its figures;
@@ -16,7 +16,7 @@ expression by SymPy equivalence, the letters positive (``[assume]`` may say othe
 
 Skips: a problem whose file uses a part of the new syntax that derive does not accept yet
 (``answers``, ``show``, ``equations``, ``range``, ``[assume]``, ``[define]``, ``e = "e"``)
-is skipped, with derive's refusal as the reason; see tests/pending_syntax.py. The skip
+is skipped, with derive's refusal as the reason; see tests/support/pending_syntax.py. The skip
 ends by itself the moment derive accepts that part; from then on these tests run.
 Defects of derive these problems found are strict expected failures (``DEFECTS``), which
 fail once derive is fixed so that the entry goes with the fix.
@@ -32,8 +32,19 @@ from functools import cache
 
 import pytest
 import sympy
-from pending_syntax import UNSOLVED, skip_if_pending
-from symbolic_published import DEGREES, EXPR, PUBLISHED, RANGE, SHOWN, TAN, Row, same_angle, same_degrees, values_of_e
+from support.pending_syntax import UNSOLVED, skip_if_pending
+from support.symbolic_published import (
+    DEGREES,
+    EXPR,
+    PUBLISHED,
+    RANGE,
+    SHOWN,
+    TAN,
+    Row,
+    same_angle,
+    same_degrees,
+    values_of_e,
+)
 from sympy.parsing.sympy_parser import parse_expr
 
 import derive
@@ -102,7 +113,7 @@ def from_file(stem: str, solution: derive.Solution, text: str) -> sympy.Basic:
 
 
 def from_test(stem: str, solution: derive.Solution, text: str) -> sympy.Basic:
-    """A fixed string of tests/symbolic_published.py, with the problem's letters."""
+    """A fixed string of tests/support/symbolic_published.py, with the problem's letters."""
     return parse_expr(text.replace("^", "**"), local_dict=dict(letters(stem, solution)))
 
 

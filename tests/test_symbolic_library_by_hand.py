@@ -1,6 +1,6 @@
 """The symbolic library's published results follow from the notes' equations (1)-(4), without derive.
 
-For every problem of ``tests/symbolic_published.py`` this module writes the impact out
+For every problem of ``tests/support/symbolic_published.py`` this module writes the impact out
 again from the mark scheme's data in derive's conventions (n from A's centre toward B's;
 a wall is B, fixed), solves
 
@@ -14,7 +14,7 @@ scheme's answer follows from the notes with our sign conventions; it imports not
 derive, so it runs before the new problem-file syntax (issue #14) is implemented.
 
 It also checks that each problem file's ``answers`` and ``show`` strings are the ones in
-``tests/symbolic_published.py`` (the file is read with ``tomllib`` only).
+``tests/support/symbolic_published.py`` (the file is read with ``tomllib`` only).
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import pytest
 import sympy
-from symbolic_published import (
+from support.symbolic_published import (
     DEGREES,
     EXPR,
     PUBLISHED,
@@ -280,7 +280,7 @@ def _named(case: Case, c: dict) -> Results:
 
 
 def published(text: str) -> sympy.Expr:
-    """A fixed string of tests/symbolic_published.py as SymPy (letters positive)."""
+    """A fixed string of tests/support/symbolic_published.py as SymPy (letters positive)."""
     return parse_expr(text.replace("^", "**"), local_dict=dict(LETTERS))
 
 

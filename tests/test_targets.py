@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 import sympy
-from output_cases import solution
+from support.output_cases import solution
 
 import derive
 from derive.cli import main

@@ -415,7 +415,7 @@ def test_notes_4c12_variants_give_the_rebound_angle_with_v_A1_a_letter() -> None
 def test_cli_writes_an_html_sheet_and_worked_solution_per_variant(cli, tmp_path: Path) -> None:
     """Issue 15: ``variants -f html``: each variant's sheet (its own numbers, the set-up before the
     impact, the sign convention; no Source line, no answer) and its worked solution (every answer)."""
-    from output_cases import html_text
+    from support.output_cases import html_text
 
     out = tmp_path / "hw"
     r = cli("variants", "notes-4c11-two-spheres", "--count", "3", "--seed", "4", "-f", "html", "-o", str(out))

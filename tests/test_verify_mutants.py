@@ -1,7 +1,7 @@
 """The verifier catches what a slip of the pen does to a page (issue #26): a mutation test.
 
 Each bundled page, in Markdown and LaTeX, is changed one line at a time in ten ways
-(tests/verify_mutants.py: a number off, a sign, A and B swapped, a term dropped, a
+(tests/support/verify_mutants.py: a number off, a sign, A and B swapped, a term dropped, a
 unit swapped, an equation reference changed, the boxed answer, cos for sin, a given,
 an intermediate rounded the wrong way), and the verifier is run on each mutant
 against the facts of the page's own problem. The page itself holds (no failing
@@ -25,7 +25,7 @@ from collections import Counter, defaultdict
 from typing import Any
 
 import pytest
-import verify_mutants
+from support import verify_mutants
 
 import derive
 from derive.resources import bundled

@@ -13,7 +13,7 @@ import zipfile
 from pathlib import Path
 
 import pytest
-from pending_syntax import pending_reason
+from support.pending_syntax import pending_reason
 
 REPO = Path(__file__).resolve().parents[1]
 

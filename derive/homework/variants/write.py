@@ -7,6 +7,7 @@ they are made on every core (forked processes, in the order drawn) and written h
 from __future__ import annotations
 
 import os
+import time
 from collections.abc import Iterator
 
 from derive.errors import DeriveError
@@ -97,10 +98,24 @@ def made(
 
     _JOB = (compiled, fmt, digits, width)
     try:
-        with ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork")) as pool:
+        context = multiprocessing.get_context("fork")
+        with ProcessPoolExecutor(workers, mp_context=context, initializer=_leave_with, initargs=(os.getpid(),)) as pool:
             yield from pool.map(_job, chosen, chunksize=4)
     finally:
         _JOB = ()
+
+
+def _leave_with(parent: int) -> None:
+    """A worker ends when the process that made it is gone (killed by SIGKILL, say): forked
+    workers hold the pipe of their own queue open, so they would otherwise wait on it for ever."""
+    import threading
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, daemon=True).start()
 
 
 def _job(v: Variant) -> tuple[Variant, dict, list[tuple[str, str | bytes]], str]:

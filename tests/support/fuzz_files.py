@@ -25,7 +25,7 @@ from typing import Any
 
 from derive.problem.schema import ANSWERS, CHAIN, PROBLEM, STAGES, Field, Table
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[2]
 
 # ---------------------------------------------------------------- payloads
 

@@ -16,9 +16,9 @@ import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
-from output_cases import missing_tool
+from support.output_cases import missing_tool
 
-KATEX_DIR = Path(__file__).resolve().parent / "katex"
+KATEX_DIR = Path(__file__).resolve().parents[1] / "katex"
 CHECKER = KATEX_DIR / "check.mjs"
 INSTALL_HINT = "npm ci --prefix tests/katex"
 

@@ -13,10 +13,10 @@ from functools import cache
 from pathlib import Path
 
 import pytest
-from pending_syntax import pending_reason
 
 import derive
 from derive import resources
+from support.pending_syntax import pending_reason
 
 HOSTILE_DIRECT = r"""
 title = "Direct impact: $5 & 100% of #1 {x} \\input{/etc/passwd} a_b ^ ~ <b> | `code` *bold* [l](u) café θ → ≈ ½ Ω ∞ re\u0301gle\u0301e"
@@ -51,7 +51,7 @@ def bundled_names() -> list[str]:
     """Names of the bundled problems (the test ids).
 
     Problems written in the issue #14 syntax before derive reads it are left out until it
-    does (tests/pending_syntax.py; test_symbolic_library.py reports them as skipped).
+    does (tests/support/pending_syntax.py; test_symbolic_library.py reports them as skipped).
     """
     return [name for name in resources.bundled() if pending_reason(name) is None]
 
