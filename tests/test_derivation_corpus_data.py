@@ -252,6 +252,31 @@ def _edexcel_2004(u: float, e: float) -> dict:
     return {"v_A2": v_a, "v_B2": v_b}
 
 
+def _find_mass_elastic(g: dict) -> dict:
+    """B's mass unknown, A's velocity after given: v_B2 from e, then m_B from momentum."""
+    v_b = g["v_A2"] + g["e"] * (g["v_A1"] - g["v_B1"])
+    return {"v_B2": v_b, "m_B": g["m_A"] * (g["v_A1"] - g["v_A2"]) / (v_b - g["v_B1"])}
+
+
+def _gramoll(g: dict) -> dict:
+    """Equal masses; A at 30 deg from +n, B along -n."""
+    a_n, a_t = g["v_A1"] * math.cos(math.radians(30)), g["v_A1"] * math.sin(math.radians(30))
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], a_n, g["v_B1n"])
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2t": a_t, "v_A2": math.hypot(v_an, a_t), "v_B2": abs(v_bn)}
+
+
+def _mei_2021(g: dict) -> dict:
+    """B leaves at 45 deg to the line of centres: its n component after, then A's from momentum, then e."""
+    v_bn = g["v_B1t"] / math.tan(math.radians(45))
+    v_an = (g["m_A"] * g["v_A1n"] + g["m_B"] * g["v_B1n"] - g["m_B"] * v_bn) / g["m_A"]
+    return {"v_B2n": v_bn, "v_A2": math.hypot(v_an, g["v_A1t"]), "e": (v_bn - v_an) / (g["v_A1n"] - g["v_B1n"])}
+
+
+def _edexcel_2010(u: float, e: float) -> dict:
+    v_a, v_b = _direct(2.0, 1.0, e, 2 * u, -u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
@@ -281,12 +306,18 @@ NUMERIC = {
     "chain-ocr-m2-2015-thrown-down-bounce": _thrown_down,
     "chain-msu-bullet-block-swings": _bullet,
     "chain-ocr-m2-2006-drop-rebound": _drop_rebound,
+    "openstax-cp-8-satellites-elastic": _plain,
+    "openstax-cp-8-5-goalie-catches-puck": _plain,
+    "young-freedman-8-96-pucks-find-mass": _find_mass_elastic,
+    "gramoll-ecourses-two-balls-elastic": _gramoll,
+    "ocr-mei-fmm-2021-b-at-45deg-find-e": _mei_2021,
 }
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
     "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m": _edexcel_2004,
     "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": _wjec_2019,
     "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u": _aqa_2009,
+    "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u": _edexcel_2010,
 }
 
 
