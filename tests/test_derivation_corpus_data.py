@@ -277,6 +277,52 @@ def _edexcel_2010(u: float, e: float) -> dict:
     return {"v_A2": v_a, "v_B2": v_b}
 
 
+def _find_mass_b(g: dict) -> dict:
+    """Both velocities after given, B's mass unknown: momentum gives it, then e."""
+    m_b = g["m_A"] * (g["v_A1"] - g["v_A2"]) / (g["v_B2"] - g["v_B1"])
+    return {"m_B": m_b, "e": (g["v_B2"] - g["v_A2"]) / (g["v_A1"] - g["v_B1"])}
+
+
+def _fisicalab(g: dict, b_n_sign: float = 1.0) -> dict:
+    """n at phi_n from x; A at 45 deg and B at 120 deg from x (25 and 100 deg from n)."""
+    c, s = (lambda d: math.cos(math.radians(d))), (lambda d: math.sin(math.radians(d)))
+    a_n, a_t, b_n, b_t = g["v_A1"] * c(25), g["v_A1"] * s(25), b_n_sign * g["v_B1"] * c(100), g["v_B1"] * s(100)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    beta_a, beta_b = math.degrees(math.atan2(a_t, v_an)), math.degrees(math.atan2(b_t, v_bn))
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2": math.hypot(v_an, a_t),
+        "v_B2": math.hypot(v_bn, b_t),
+        "beta_A2": beta_a,
+        "beta_B2": beta_b,
+        "psi_A2": beta_a + g["phi_n"],
+        "psi_B2": beta_b + g["phi_n"],
+    }
+
+
+def _ocr_m3_2013(g: dict, approach: float | None = None) -> dict:
+    """Equal masses; B at alpha to the line of centres, turned through a right angle."""
+    b_n, b_t = -g["u_B"] * math.cos(math.radians(g["alpha"])), g["u_B"] * math.sin(math.radians(g["alpha"]))
+    v_bn = b_t * math.tan(math.radians(g["alpha"]))
+    v_an = g["v_A1n"] + b_n - v_bn
+    return {
+        "v_B2": math.hypot(v_bn, b_t),
+        "v_A2n": v_an,
+        "e": (v_bn - v_an) / (approach if approach is not None else g["v_A1n"] - b_n),
+    }
+
+
+def _edexcel_4m_5m(u: float, _e: float) -> dict:
+    v_a, v_b = _direct(4.0, 5.0, 0.5, u, 0.0)  # e = 1/2 is given
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _edexcel_2015(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 2.0, e, 3 * u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
@@ -311,6 +357,10 @@ NUMERIC = {
     "young-freedman-8-96-pucks-find-mass": _find_mass_elastic,
     "gramoll-ecourses-two-balls-elastic": _gramoll,
     "ocr-mei-fmm-2021-b-at-45deg-find-e": _mei_2021,
+    "msu-lectureonline-bullet-lodges-in-block": _plain,
+    "fisicalab-example-7-normal-at-20deg": _fisicalab,
+    "ocr-m3-2013-b-turns-through-right-angle": _ocr_m3_2013,
+    "web2calc-car-rear-ends-car-find-mass": _find_mass_b,
 }
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
@@ -318,6 +368,8 @@ SYMBOLIC = {
     "wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest": _wjec_2019,
     "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u": _aqa_2009,
     "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u": _edexcel_2010,
+    "edexcel-m2-undated-q7-4m-hits-5m-b-four-times-a": _edexcel_4m_5m,
+    "edexcel-m2-2015-january-q7-m-at-3u-hits-2m-p-reverses": _edexcel_2015,
 }
 
 
@@ -518,6 +570,20 @@ def _slip_t04(g: dict) -> dict:  # B's sign lost in (3); KE before 16m + 12m
     return {"v_A2": v_a, "v_B2": v_b, "T_1": 28.0, "T_2": t2, "T_lost": 28.0 - t2}
 
 
+def _slip_n08(g: dict) -> dict:  # the momentum before written 10 times too big
+    m = g["m_A"] + g["m_B"]
+    v = 10 * g["m_A"] * g["v_A1"] / m
+    return {"v_B2": v, "T_2": 0.5 * m * v**2, "T_lost": 0.5 * g["m_A"] * g["v_A1"] ** 2 - 0.5 * m * v**2}
+
+
+def _slip_n11(g: dict) -> dict:  # B's speed, not its component, in the approach
+    return {"e": _ocr_m3_2013(g, approach=g["v_A1n"] + g["u_B"])["e"]}
+
+
+def _slip_n12(g: dict) -> dict:  # 6 m_B = 12000 + 7200
+    return {"m_B": (g["m_A"] * g["v_A1"] + g["m_A"] * g["v_A2"]) / g["v_B2"]}
+
+
 SLIPPED = {
     "s01-4c11-bsign-in-nlr.md": _slip_s01,
     "s02-4c11-sin-cos-swapped.tex": _slip_s02,
@@ -544,6 +610,10 @@ SLIPPED = {
     "s26-4c11-rounded-early.md": _slip_s26,
     "h03-chain-bullet-block.txt": _slip_bullet,
     "h05-chain-collide-again-wall-sign.tex": _slip_h05,
+    "n08-msu-bullet-arithmetic.txt": _slip_n08,
+    "n09-fisicalab-b-sign.tex": lambda g: _fisicalab(g, b_n_sign=-1.0),
+    "n11-ocr-m3-2013-e-speeds.md": _slip_n11,
+    "n12-web2calc-find-mass-algebra.tex": _slip_n12,
 }
 
 
@@ -559,6 +629,28 @@ def test_the_values_given_the_slip(name: str) -> None:
             assert value == worked[key], f"{name}: {key}"
         else:
             assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+def _slip_n10(u: float, _e: float) -> dict:  # 4u = 5 v_A + 4 v_B with v_B = v_A + u/2
+    v_a = (4 * u - 4 * 0.5 * u) / 9
+    return {"v_A2": v_a, "v_B2": v_a + 0.5 * u}
+
+
+SLIPPED_SYMBOLIC = {
+    "n07-edexcel-2015-nlr-reversed.md": lambda u, e: _edexcel_2015(u, -e),  # x - y = e(approach)
+    "n10-edexcel-4m-5m-masses-swapped.txt": _slip_n10,  # 4u = 5 v_A + 4 v_B
+}
+
+
+@pytest.mark.parametrize("name", sorted(SLIPPED_SYMBOLIC))
+def test_the_closed_forms_given_the_slip(name: str) -> None:
+    """A symbolic slip's carried closed forms (slip_values) are what the slip gives."""
+    case = next(c for c in CASES if c.name == name)
+    assert case.verdict.slip_values
+    for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
+        worked = SLIPPED_SYMBOLIC[name](u, e)
+        for key, formula in case.verdict.slip_values.items():
+            assert _formula(str(formula), u, e) == pytest.approx(worked[key], rel=1e-9), f"{name}: {key}"
 
 
 @pytest.mark.parametrize("case", [c for c in CASES if c.verdict.category == "chain"], ids=lambda c: c.name)
