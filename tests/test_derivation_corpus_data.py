@@ -363,6 +363,43 @@ def _cie_2014(u: float, _e: float) -> dict:
     return {"e": e, "v_A2": v_a, "v_B2": v_b}
 
 
+def _three_particles(g: dict) -> dict:
+    """Equal masses, B and C at rest: u_C = v_0 (1 + e)^2 / 4 = v_C."""
+    e = 2 * math.sqrt(g["v_C"] / g["v_0"]) - 1
+    return {"e": e, "u_B": g["v_0"] * (1 + e) / 2}
+
+
+def _rebounds_to_start(g: dict) -> dict:
+    v_1 = math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"])
+    v_2 = math.sqrt(2 * g["g"] * g["h_0"])  # back up to the start
+    return {"v_1": v_1, "v_2": v_2, "e_floor": v_2 / v_1, "J": g["m"] * (v_1 + v_2)}
+
+
+def _ocr_2011_chain(g: dict, approach: float | None = None) -> dict:
+    """Find e and m_A from both velocities after; then the wall's impulse gives B's rebound."""
+    u_a, u_b, v_a, v_b = g["v_A"], -g["v_B"], g["s_A"], g["s_B"]  # B moves back: reversed
+    m_a = g["m_B"] * (v_b - u_b) / (u_a - v_a)
+    w_b = g["I_w"] / g["m_B"] - g["s_B"]  # the wall's impulse: m_B (s_B + w) = I_w
+    e = (v_b - v_a) / (approach if approach is not None else u_a - u_b)
+    return {"e": e, "m_A": m_a, "u_B": g["s_B"], "w_B": -w_b, "e_wall": w_b / g["s_B"]}
+
+
+def _suitcase_chain(g: dict) -> dict:
+    v_1 = math.sqrt(2 * g["g"] * g["h"])
+    u_a, u_b = _direct(g["W_A"], g["W_B"], g["e"], v_1, 0.0)  # g cancels from the momentum equation
+    return {"v_1": v_1, "u_A": u_a, "u_B": u_b, "d_B": u_b**2 / (2 * g["mu_k"] * g["g"])}
+
+
+def _aqa_2014(u: float, _e: float) -> dict:
+    v_a, v_b = _direct(2.0, 1.0, 2 / 3, 2 * u, 0.0)  # e = 2/3 is given
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _cie_2012_q2(u: float, _e: float) -> dict:
+    """The impulse 4mu on each: 3m(v - 2u) = -4mu, m(w + u) = 4mu."""
+    return {"v_A2": 2 * u - 4 * u / 3, "v_B2": -u + 4 * u}
+
+
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
@@ -404,6 +441,10 @@ NUMERIC = {
     "ocr-mei-fmm-2023-a-speed-0p2-backward": _find_e_energy,
     "edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke": _m4_2018,
     "ocr-mei-fmm-2024-disc-a-stops": _mei_2024,
+    "chain-edexcel-m2-three-particles": _three_particles,
+    "chain-ocr-m2-2007-rebounds-to-start": _rebounds_to_start,
+    "chain-ocr-m2-2011-find-e-mass-then-wall": _ocr_2011_chain,
+    "chain-hibbeler-15-58-suitcases": _suitcase_chain,
 }
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
@@ -416,6 +457,8 @@ SYMBOLIC = {
     "cie-9231-p2-2019-june-q3-2m-at-2u-meets-4m-at-u": _cie_2019,
     "edexcel-m2-2003-january-q6-2m-hits-m-e-one-third": _edexcel_2003,
     "cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost": _cie_2014,
+    "aqa-m3-2014-symbolic-2m-hits-m": _aqa_2014,
+    "cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost": _cie_2012_q2,
 }
 
 
@@ -639,6 +682,21 @@ def _slip_n17(g: dict) -> dict:  # B's direction after from the perpendicular to
     return {"beta_B2": beta, "delta_B": beta - 60.0}
 
 
+def _slip_n21(g: dict) -> dict:  # the masses exchanged in CLM; then tan^-1 of the ratio (wrong quadrant)
+    a_n, a_t = g["v_A1"] * 0.6, g["v_A1"] * 0.8
+    v_an, v_bn = _direct(g["m_B"], g["m_A"], g["e"], a_n, g["v_B1n"])
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2": math.hypot(v_an, a_t),
+        "dir_A_from_i": math.degrees(math.atan(a_t / v_an)),
+    }
+
+
+def _slip_n25(g: dict) -> dict:  # the weight used as the mass in the slide: (1/2) W u^2 = mu W d
+    return {"d_B": _suitcase_chain(g)["u_B"] ** 2 / (2 * g["mu_k"])}
+
+
 SLIPPED = {
     "s01-4c11-bsign-in-nlr.md": _slip_s01,
     "s02-4c11-sin-cos-swapped.tex": _slip_s02,
@@ -671,6 +729,9 @@ SLIPPED = {
     "n12-web2calc-find-mass-algebra.tex": _slip_n12,
     "n16-edexcel-m4-2018-radians.txt": _slip_n16,
     "n17-mei-2024-angle-other-axis.md": _slip_n17,
+    "n21-ocr-m3-2007-two-slips.txt": _slip_n21,
+    "n24-chain-find-e-mass-wall.tex": lambda g: {"e": _ocr_2011_chain(g, approach=g["v_A"] - g["v_B"])["e"]},
+    "n25-chain-suitcases-weight-as-mass.md": _slip_n25,
 }
 
 
@@ -706,6 +767,12 @@ SLIPPED_SYMBOLIC = {
         _edexcel_2003(u, e) | dict(zip(("v_A2", "v_B2"), _direct(2.0, 1.0, 1.0, u, 0.0), strict=True))
     ),  # the e = 1 result
     "n18-cie-2014-half-ke-arithmetic.tex": _slip_n18,
+    # 3 v_A = 4u - 2u/3 (A's speed copied as u), then v_B = 10u/9 + 2u/9
+    "n19-aqa-2014-two-slips.md": lambda u, e: {
+        "v_A2": (4 * u - 2 * u / 3) / 3,
+        "v_B2": (4 * u - 2 * u / 3) / 3 + 2 * u / 9,
+    },
+    "n20-cie-2012-impulse-two-slips.tex": lambda u, e: {"v_A2": 2 * u / 3, "v_B2": u + 4 * u},  # m(w - u) = 4mu
 }
 
 
