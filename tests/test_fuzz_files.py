@@ -18,6 +18,7 @@ the failure message, to be run again by hand.
 from __future__ import annotations
 
 import contextlib
+import copy
 import io
 import json
 import os
@@ -186,3 +187,19 @@ def test_the_fuzzer_finds_what_it_looks_for() -> None:
     assert problems_with(case, 1, "", "Error: derive solve stopped after 60 s, its time budget", 60)
     assert problems_with(case, 2, "", "Error: a\nb\n", 0.1)
     assert problems_with(case, 0, '{"value": 1.5}', "", 0.1) == []
+
+
+def test_a_broken_value_is_never_shared_between_files() -> None:
+    """The fuzzer hands out a fresh value each time: a shared ``{}`` filled in by a later break
+    once came to hold itself, and the generator (not derive) died of recursion after 180,000
+    files of the random campaign."""
+    field = next(s.field for s in fuzz_files.slots() if s.field is not None and s.field.type == "table")
+    before = copy.deepcopy(fuzz_files.WRONG_TYPES)
+    rng = random.Random(3)
+    for _ in range(3000):
+        value = fuzz_files.value_for(field, rng)
+        if isinstance(value, dict):
+            value["filled"] = value
+        elif isinstance(value, list):
+            value.append(value)
+    assert [repr(v) for v in fuzz_files.WRONG_TYPES] == [repr(v) for v in before]

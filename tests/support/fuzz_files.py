@@ -112,8 +112,8 @@ def text_payload(rng: random.Random) -> str:
 
 def value_for(f: Field, rng: random.Random) -> Any:
     """A value for field ``f``: usually one of its type (often a wrong or extreme one), sometimes any type."""
-    if rng.random() < 0.15:
-        return rng.choice([*WRONG_TYPES, *NUMBERS, text_payload(rng), deep_value(rng)])
+    if rng.random() < 0.15:  # a copy: a shared [] or {} later filled in could come to hold itself
+        return copy.deepcopy(rng.choice([*WRONG_TYPES, *NUMBERS, text_payload(rng), deep_value(rng)]))
     t = f.type
     if f.name in ("show", "equation", "equations", "where", "condition", "conditions") and rng.random() < 0.6:
         return rng.choice(RELATIONS)
