@@ -87,7 +87,14 @@ def test_chain_renders_with_stages_and_running_numbers(stem: str) -> None:
     md = derive.render(sol, "md")
     assert md.count("## Stage ") == len(sol.stages)
     tags = [int(t) for t in re.findall(r"\\tag\{(\d+)\}", md)]
-    assert tags == sorted(tags) and len(tags) == len(set(tags)), tags  # numbers keep counting
+    # the page numbers its own equations 1, 2, ..., n in order, with no gap (issue #28 item 5)
+    assert tags == list(range(1, len(tags) + 1)), tags
+    # every reference is to an equation the page numbered, above it
+    for m in re.finditer(r"(?:From|into|Add|from|to) \((\d+)\)", md):
+        k = int(m.group(1))
+        assert f"\\tag{{{k}}}" in md[: m.start()], (m.group(0), tags)
+    # the notes' equations are named in words, never by a number that is also the page's
+    assert not re.search(r"\(\d\)[^.$]* of the notes|equation \(\d\) does|\(\d\) says", md), md
     assert "ANSWER" in md
     assert derive.render(sol, "json").startswith("{")
 
