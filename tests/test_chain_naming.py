@@ -102,3 +102,27 @@ def test_no_bundled_page_prints_true_or_false() -> None:
     for f in sorted((GOLDEN / "pages").glob("*.md")) + sorted((GOLDEN / "pages").glob("*.tex")):
         text = re.sub(r"<svg.*?</svg>", "", f.read_text(), flags=re.S)
         assert not re.search(r"\b(True|False)\b", text), f.name
+
+
+def _maths(text: str) -> list[str]:
+    """The mathematics of a Markdown page, display and inline, without its figures."""
+    text = re.sub(r"<svg.*?</svg>", "", text, flags=re.S)
+    return [a or b for a, b in re.findall(r"\$\$(.*?)\$\$|\$(.*?)\$", text, flags=re.S)]
+
+
+def test_a_stage_writes_its_coefficient_by_the_chains_name() -> None:
+    """One name per quantity: an impact stage given e = e_wall (or e_floor) writes e_wall
+    throughout, never a bare e beside it (nor e for a second coefficient on the page)."""
+    checked = 0
+    for f in sorted((GOLDEN / "pages").glob("chain-*.md")):
+        md = f.read_text()
+        for stage in re.split(r"\n## Stage ", md)[1:]:
+            given = stage.split("\n\n", 2)[1] if "**Given.**" in stage else ""
+            if not re.search(r"e_\{\\mathrm\{(wall|floor)\}\}", given):
+                continue
+            checked += 1
+            for m in _maths(stage):
+                bare = re.sub(r"\\[A-Za-z]+", "", re.sub(r"\\mathrm\{[^}]*\}", "", m))
+                assert not re.search(r"(?<![A-Za-z])e(?![A-Za-z_])", bare), (f.name, m)
+            assert not re.search(r"\$e = e_", given), (f.name, given)
+    assert checked >= 5

@@ -219,7 +219,8 @@ def test_a_stage_calls_its_bodies_by_the_stage_s_letters() -> None:
     assert not re.search(r"[vm]_\{A", stage), "no symbol of A on B's stage"
     assert r"**Given.** $m_{B} = 0.2\ \mathrm{kg}$" in stage  # m_B said once, not "m_B = m_B"
     assert r"$v_{B1} = u_{B} = 3.4\ \mathrm{m/s}$" in stage
-    assert r"e = \frac{v_{W2} - v_{B2}}{v_{B1} - v_{W1}}" in stage
+    # the wall's own coefficient by its own name (stage 1's e is the spheres' 0.8; issue #28)
+    assert r"e_{\mathrm{wall}} = \frac{v_{W2} - v_{B2}}{v_{B1} - v_{W1}}" in stage
     assert "positive from B toward the wall" in words and "W is the fixed wall" in words
     assert "The velocity of B immediately after the impact" in words
     assert not re.search(r"\bA\b", words.replace("## Stage 2: B strikes the wall", "")), "the word A on B's stage"

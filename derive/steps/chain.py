@@ -5,6 +5,7 @@ numbers running on through the stages, and the boxed answers at the end."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 import sympy
 
@@ -17,7 +18,7 @@ from derive.physics.stages.bounces import Bounces
 from derive.physics.stages.energy import Balance, Spring
 from derive.physics.stages.impact import ImpactStage
 from derive.physics.state import StageOutcome
-from derive.problem import units
+from derive.problem import Problem, units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
 from derive.steps.page import Counter, Tags, as_float, interval_text
@@ -114,14 +115,50 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
 def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     data: ImpactStage = st.data
     inner = data.outcome
-    written = write_impact(inner, Tags(running=numbers), marks=False)
-    part = Solution(inner.problem, inner.results, written, inner.values, inner.angles)
+    written = _one_name(write_impact(inner, Tags(running=numbers), marks=False), inner.problem)
+    values = {
+        **inner.values,
+        **{new: inner.values[old] for old, new in own_names(inner.problem).items() if old in inner.values},
+    }
+    part = Solution(inner.problem, inner.results, written, values, inner.angles)
     carried = []
     for (new, rname), value in zip(data.exports, data.carried, strict=True):
         r = outcome.results[new]
         shown = _in_unit(sympy.factor(value) if value.free_symbols else value, r.unit)
         carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((shown,), "result")), unit=r.unit or None))
     return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
+
+
+def own_names(problem: Problem) -> dict[sympy.Symbol, sympy.Symbol]:
+    """An impact stage's symbols the page writes in the chain's names: its coefficient ``e``
+    where the stage takes it from a coefficient of the chain's (e = "e_wall"), so that the
+    page has one name per quantity (e_wall, not e beside e_wall, nor e for two coefficients)."""
+    given = {g.name: g for g in problem.givens}.get("e")
+    named = given.definition if given is not None else None
+    if not isinstance(named, sympy.Symbol) or named.name == "e":
+        return {}
+    return {given.symbol: named}
+
+
+def _one_name(stages: tuple[Stage, ...], problem: Problem) -> tuple[Stage, ...]:
+    """The stages of an impact written in its own names (:func:`own_names`)."""
+    to = own_names(problem)
+    if not to:
+        return stages
+
+    def math(t):
+        return Math(t.expr.xreplace(to)) if isinstance(t, Math) else t
+
+    def line(ln: Eqn) -> Eqn:
+        sides = tuple(replace(sd, terms=tuple(sympy.sympify(x).xreplace(to) for x in sd.terms)) for sd in ln.sides)
+        return replace(ln, sides=sides, cancel=frozenset(to.get(c, c) for c in ln.cancel))
+
+    def block(b: Block) -> Block:
+        sums = tuple((tuple(x.xreplace(to) for x in ts), total.xreplace(to)) for ts, total in b.sums)
+        text = tuple(math(t) for t in b.text) if b.text else b.text
+        return replace(b, text=text, lines=tuple(line(ln) for ln in b.lines), sums=sums)
+
+    return tuple(replace(st, blocks=tuple(block(b) for b in st.blocks)) for st in stages)
 
 
 def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:

@@ -8,6 +8,7 @@ from typing import Any
 import sympy
 
 from derive.problem.units import latex_unit
+from derive.steps.chain import own_names
 from derive.symbols import latex_name, relabel, symbol
 from derive.writers.printing import Style, exact_latex, latex_eqn
 from derive.writers.targets import GITHUB, Layout
@@ -88,6 +89,10 @@ def _impact_stage(sol: Any, st: Any, stage_style: Style, layout: Layout, figures
         falls=falls,
         known=sol.values,
     )
+    renamed = {old.name for old in own_names(st.part.problem)}  # e = e_wall: the page says e_wall
+    for g, shown in zip(st.part.problem.givens, v["givens"], strict=True):
+        if g.name in renamed:
+            shown["latex"] = shown["latex"].split(" = ", 1)[1]
     own = replace(stage_style, labels=st.part.problem.labels)  # v_A2 of a stage that calls A "B"
     carried = [latex_eqn(eqn, own)[0] for eqn in st.carried]
     return {
