@@ -217,9 +217,6 @@ def interval_text(interval: sympy.Set, x: sympy.Symbol) -> Text:
     """``1/2 < e ≤ 1`` as words and inline mathematics."""
     if interval is sympy.S.EmptySet:
         return ("no value of ", Math(x), " at all")
-    if isinstance(interval, sympy.Union) and all(isinstance(a, sympy.Interval) for a in interval.args):
-        pieces = [interval_text(a, x) for a in interval.args]
-        return tuple(p for i, piece in enumerate(pieces) for p in (((", or ",) if i else ()) + piece))
     if not isinstance(interval, sympy.Interval):
         return (Math(interval),)
     lo, hi = interval.start, interval.end
