@@ -87,7 +87,14 @@ def test_chain_renders_with_stages_and_running_numbers(stem: str) -> None:
     md = derive.render(sol, "md")
     assert md.count("## Stage ") == len(sol.stages)
     tags = [int(t) for t in re.findall(r"\\tag\{(\d+)\}", md)]
-    assert tags == sorted(tags) and len(tags) == len(set(tags)), tags  # numbers keep counting
+    # the page numbers its own equations 1, 2, ..., n in order, with no gap (issue #28 item 5)
+    assert tags == list(range(1, len(tags) + 1)), tags
+    # every reference is to an equation the page numbered, above it
+    for m in re.finditer(r"(?:From|into|Add|from|to) \((\d+)\)", md):
+        k = int(m.group(1))
+        assert f"\\tag{{{k}}}" in md[: m.start()], (m.group(0), tags)
+    # the notes' equations are named in words, never by a number that is also the page's
+    assert not re.search(r"\(\d\)[^.$]* of the notes|equation \(\d\) does|\(\d\) says", md), md
     assert "ANSWER" in md
     assert derive.render(sol, "json").startswith("{")
 
@@ -212,7 +219,8 @@ def test_a_stage_calls_its_bodies_by_the_stage_s_letters() -> None:
     assert not re.search(r"[vm]_\{A", stage), "no symbol of A on B's stage"
     assert r"**Given.** $m_{B} = 0.2\ \mathrm{kg}$" in stage  # m_B said once, not "m_B = m_B"
     assert r"$v_{B1} = u_{B} = 3.4\ \mathrm{m/s}$" in stage
-    assert r"e = \frac{v_{W2} - v_{B2}}{v_{B1} - v_{W1}}" in stage
+    # the wall's own coefficient by its own name (stage 1's e is the spheres' 0.8; issue #28)
+    assert r"e_{\mathrm{wall}} = \frac{v_{W2} - v_{B2}}{v_{B1} - v_{W1}}" in stage
     assert "positive from B toward the wall" in words and "W is the fixed wall" in words
     assert "The velocity of B immediately after the impact" in words
     assert not re.search(r"\bA\b", words.replace("## Stage 2: B strikes the wall", "")), "the word A on B's stage"

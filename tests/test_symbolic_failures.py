@@ -365,5 +365,7 @@ def test_a_chain_worked_from_decimal_data_shows_decimals_beside_letters() -> Non
     # g = 9.8 m/s², h = 2 m: v_1 = sqrt(2 g h) = sqrt(39.2) = 6.261 m/s; against the floor
     # (4) gives v_A2 = -e v_A1 = -6.261 e_floor, a decimal as the line before it (6.261 e = -v_A2)
     md = derive.render(derive.solve(derive.load("chain-ocr-m2-2006-drop-rebound")), "md")
-    assert f"v_{{A2}} = -{math.sqrt(39.2):.3f} e_{{\\mathrm{{floor}}}} \\tag{{5}}" in md
+    assert (
+        f"v_{{A2}} = -{math.sqrt(39.2):.3f} e_{{\\mathrm{{floor}}}} \\tag{{2}}" in md
+    )  # the page's (2): (1) is the fall
     assert "\\sqrt{5}" not in md

@@ -5,6 +5,7 @@ numbers running on through the stages, and the boxed answers at the end."""
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 
 import sympy
 
@@ -17,28 +18,16 @@ from derive.physics.stages.bounces import Bounces
 from derive.physics.stages.energy import Balance, Spring
 from derive.physics.stages.impact import ImpactStage
 from derive.physics.state import StageOutcome
-from derive.problem import units
+from derive.problem import Problem, units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
-from derive.steps.page import Tags, as_float, interval_text
+from derive.steps.page import Counter, Tags, as_float, interval_text
 from derive.symbols import symbol
-
-
-class Numbers:
-    """The equation numbers of a chain's page: each stage takes the next ones."""
-
-    def __init__(self) -> None:
-        self.last = 0
-
-    def next(self) -> str:
-        """The next number."""
-        self.last += 1
-        return str(self.last)
 
 
 def write_chain(outcome: ChainOutcome) -> Solution:
     """The chain's worked page: every stage, then the answers the file asks for."""
-    numbers = Numbers()
+    numbers = Counter()
     stages = tuple(WRITERS[st.type](outcome, st, numbers) for st in outcome.stages)
     return Solution(outcome.chain, outcome.results, stages, outcome.values, outcome.angles, answers=_answers(outcome))
 
@@ -66,7 +55,7 @@ def _answers(outcome: ChainOutcome) -> tuple[Answer, ...]:
     return tuple(answers)
 
 
-def _balance_lines(b: Balance, numbers: Numbers) -> tuple[Eqn, ...]:
+def _balance_lines(b: Balance, numbers: Counter) -> tuple[Eqn, ...]:
     """Energy conservation written out: the balance, then the result with numbers."""
     solved, result = b.solved, b.result
     return (
@@ -80,7 +69,7 @@ def _balance_lines(b: Balance, numbers: Numbers) -> tuple[Eqn, ...]:
     )
 
 
-def _fall(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _fall(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     text: Text = (
         "Before the impact no impulsive force acts: mechanical energy is conserved (datum at the lowest point), ",
         Math(sympy.Eq(symbol("T_1") + symbol("V_1"), symbol("T_2") + symbol("V_2"))),
@@ -89,12 +78,12 @@ def _fall(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
-def _rise(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _rise(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     text: Text = ("After the impact, mechanical energy is conserved again up to the highest point: ",)
     return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
-def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     text: Text = (
         "After the impact, work and energy: kinetic friction ",
         Math(sympy.Eq(symbol("F"), st.data.friction)),
@@ -103,7 +92,7 @@ def _slide(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, (Block(text, _balance_lines(st.data, numbers)),), kind=st.type, values=st.values)
 
 
-def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     s: Spring = st.data
     X = s.result.symbol
     if s.vertical:
@@ -123,13 +112,15 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, (Block(text, lines),), kind=st.type, values=st.values)
 
 
-def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     data: ImpactStage = st.data
     inner = data.outcome
-    written = write_impact(inner, Tags(numbers.last), marks=False)
-    tags = [int(ln.tag) for s in written for b in s.blocks for ln in b.lines if ln.tag]
-    numbers.last = max(tags, default=numbers.last)
-    part = Solution(inner.problem, inner.results, written, inner.values, inner.angles)
+    written = _one_name(write_impact(inner, Tags(running=numbers), marks=False), inner.problem)
+    values = {
+        **inner.values,
+        **{new: inner.values[old] for old, new in own_names(inner.problem).items() if old in inner.values},
+    }
+    part = Solution(inner.problem, inner.results, written, values, inner.angles)
     carried = []
     for (new, rname), value in zip(data.exports, data.carried, strict=True):
         r = outcome.results[new]
@@ -138,7 +129,39 @@ def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
 
 
-def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def own_names(problem: Problem) -> dict[sympy.Symbol, sympy.Symbol]:
+    """An impact stage's symbols the page writes in the chain's names: its coefficient ``e``
+    where the stage takes it from a coefficient of the chain's (e = "e_wall"), so that the
+    page has one name per quantity (e_wall, not e beside e_wall, nor e for two coefficients)."""
+    given = {g.name: g for g in problem.givens}.get("e")
+    named = given.definition if given is not None else None
+    if not isinstance(named, sympy.Symbol) or named.name == "e":
+        return {}
+    return {given.symbol: named}
+
+
+def _one_name(stages: tuple[Stage, ...], problem: Problem) -> tuple[Stage, ...]:
+    """The stages of an impact written in its own names (:func:`own_names`)."""
+    to = own_names(problem)
+    if not to:
+        return stages
+
+    def math(t):
+        return Math(t.expr.xreplace(to)) if isinstance(t, Math) else t
+
+    def line(ln: Eqn) -> Eqn:
+        sides = tuple(replace(sd, terms=tuple(sympy.sympify(x).xreplace(to) for x in sd.terms)) for sd in ln.sides)
+        return replace(ln, sides=sides, cancel=frozenset(to.get(c, c) for c in ln.cancel))
+
+    def block(b: Block) -> Block:
+        sums = tuple((tuple(x.xreplace(to) for x in ts), total.xreplace(to)) for ts, total in b.sums)
+        text = tuple(math(t) for t in b.text) if b.text else b.text
+        return replace(b, text=text, lines=tuple(line(ln) for ln in b.lines), sums=sums)
+
+    return tuple(replace(st, blocks=tuple(block(b) for b in st.blocks)) for st in stages)
+
+
+def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     d: Definition = st.data
     out = d.result
     line = Eqn(
@@ -154,7 +177,7 @@ def _define(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, (Block((d.text,), (line,)),), kind=st.type, values=st.values)
 
 
-def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     c: Condition = st.data
     g, u = c.given, c.given.symbol
     sides = [Side((c.lhs,))]
@@ -202,7 +225,7 @@ def _solve(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
     return Stage(st.number, st.title, tuple(blocks), kind=st.type, values=st.values)
 
 
-def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     b: Bounces = st.data
     v_0 = symbol("v_0")
     velocity = units.working_unit(units.VELOCITY, outcome.chain.system).text
@@ -230,7 +253,7 @@ def _bounces(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage
     return Stage(st.number, st.title, (Block(text, tuple(lines)),), kind=st.type, values=st.values)
 
 
-def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Numbers) -> Stage:
+def _again(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     a: Again = st.data
     text: Text = (
         "They collide again if the one behind moves faster along +n than the one ahead: ",
@@ -262,7 +285,7 @@ def _in_unit(value: sympy.Expr, unit: str) -> sympy.Expr:
 
 
 #: Stage type -> the function that writes a stage of that type.
-WRITERS: dict[str, Callable[[ChainOutcome, StageOutcome, Numbers], Stage]] = {
+WRITERS: dict[str, Callable[[ChainOutcome, StageOutcome, Counter], Stage]] = {
     "fall": _fall,
     "rise": _rise,
     "slide": _slide,

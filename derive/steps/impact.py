@@ -37,7 +37,7 @@ def shared_places(
     every sum among them and the constants of (3) and (4): one count of places for all,
     so that a number of (3) or (4) is written again as (3) or (4) wrote it (84.8 under
     a (3) that shows 84.8, not 84.77)."""
-    tags = {page.tags(3), page.tags(4)}
+    tags = {page.tags.peek(3), page.tags.peek(4)} - {None}
     writes = [i for i, b in enumerate(kinetic) if any(ln.tag in tags for ln in b.lines)]
     pinned = []
     if kin.eq3 is not None:

@@ -70,7 +70,8 @@ def kinetics(page: Page) -> Kinetics:
         blocks.append(Block((smooth(page.a, page.b),)))
         for k, b, m, c1, c2 in ((1, "A", page.m_A, nm.A1t, nm.A2t), (2, "B", page.m_B, nm.B1t, nm.B2t)):
             if b == "B" and p.fixed_B:
-                blocks.append(Block((f"{page.b}, the {page.surface}, does not move: (2) says nothing.",)))
+                says = "the notes' t-momentum equation for it" if page.tags.own else "(2)"
+                blocks.append(Block((f"{page.b}, the {page.surface}, does not move: {says} says nothing.",)))
                 continue
             block, left = t_momentum(page, k, b, m, c1, c2)
             blocks.append(block)
@@ -79,18 +80,16 @@ def kinetics(page: Page) -> Kinetics:
             else:
                 open_[k] = left
     else:
-        blocks.append(
-            Block(
-                ("The impact is direct: there are no t components, so equations (1) and (2) of the notes read 0 = 0.",)
-            )
-        )
+        which = "the notes' t-momentum equations" if page.tags.own else "equations (1) and (2) of the notes"
+        blocks.append(Block((f"The impact is direct: there are no t components, so {which} read 0 = 0.",)))
     eq3 = None
     if p.fixed_B:
+        momentum = "the notes' momentum equation along n" if page.tags.own else "equation (3)"
         blocks.append(
             Block(
                 (
                     f"Linear momentum along n is not conserved for {page.a} and the {page.surface}: its supports exert an "
-                    "impulsive reaction, so equation (3) does not apply. The impact rule alone gives the n component.",
+                    f"impulsive reaction, so {momentum} does not apply. The impact rule alone gives the n component.",
                 )
             )
         )

@@ -18,15 +18,47 @@ from derive.steps.model import Math, Text
 from derive.symbols import symbol
 
 
-@dataclass(frozen=True)
 class Tags:
-    """Equation numbers on the page: the notes' numbers (1)-(6) of one impact, moved
-    past the ``offset`` equations that earlier stages of a chain have numbered."""
+    """Equation numbers on the page. One impact's page numbers its equations as the notes
+    do, (1)-(6) (``offset`` 0). Inside a chain (``running`` set) the page numbers its own
+    equations 1, 2, 3, ... in the order they are first written, with no gap, so that a
+    number is never the notes' number of another equation (a wall's stage writes no (3))."""
 
-    offset: int = 0
+    def __init__(self, offset: int = 0, running: Counter | None = None) -> None:
+        self.offset = offset
+        self.running = running
+        self._given: dict[int, str] = {}
 
     def __call__(self, k: int) -> str:
-        return str(self.offset + k)
+        """The page's number of the notes' equation ``k`` (given it if this is its first use)."""
+        if self.running is None:
+            return str(self.offset + k)
+        if k not in self._given:
+            self._given[k] = self.running.next()
+        return self._given[k]
+
+    def peek(self, k: int) -> str | None:
+        """The page's number of the notes' equation ``k`` if it has one, without giving one."""
+        if self.running is None:
+            return str(self.offset + k)
+        return self._given.get(k)
+
+    @property
+    def own(self) -> bool:
+        """Whether the page numbers its own equations (a chain): the notes' equations are then named in words."""
+        return self.running is not None
+
+
+class Counter:
+    """The running equation numbers of a chain's page: each stage takes the next ones."""
+
+    def __init__(self) -> None:
+        self.last = 0
+
+    def next(self) -> str:
+        """The next number."""
+        self.last += 1
+        return str(self.last)
 
 
 @dataclass(frozen=True)
@@ -193,4 +225,9 @@ def interval_text(interval: sympy.Set, x: sympy.Symbol) -> Text:
         parts.append((sympy.StrictLessThan if interval.left_open else sympy.LessThan)(lo, x, evaluate=False))
     if hi != sympy.oo:
         parts.append((sympy.StrictLessThan if interval.right_open else sympy.LessThan)(x, hi, evaluate=False))
+    # a bound x's own assumptions already give (0 <= e for an e known not negative) would
+    # print as True wherever the relation is rebuilt: left out
+    parts = [r for r in parts if r.func(*r.args) is not sympy.true] or parts[:1]
+    if not parts or parts[0].func(*parts[0].args) is sympy.true:
+        return ("every value of ", Math(x))
     return tuple(p for i, r in enumerate(parts) for p in (((" and ",) if i else ()) + (Math(r),)))

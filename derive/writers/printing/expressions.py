@@ -98,6 +98,8 @@ def _in_letters(
         if not short_decimal(r) and (r.q > (12 if decimal else 1000) or abs(r.p) > 10**4)
     }
     expr = _longer_than_digits(expr.xreplace(long), style.digits, extra)
+    if decimal:
+        expr = _one_kind_of_coefficient(expr)
     if decimal and mode == "result":  # an answer at the answer's figures: 3.86 m, not 3.856 m
         printer = StepPrinter(fractions=True)
         rounded = {r: sympy.Float(r, PRECISION) for r in expr.atoms(sympy.Rational) if printer._as_decimal(r)}
@@ -112,6 +114,33 @@ def _in_letters(
         labels=style.labels,
     )
     return printer, expr
+
+
+def _mixed(e: sympy.Basic) -> bool:
+    """A sum whose coefficients would print some as decimals, some as fractions (3u/2 - 3.5 e u)."""
+    if not isinstance(e, sympy.Add):
+        return False
+    printer = StepPrinter(fractions=True)
+    coeffs = [t.as_coeff_Mul()[0] for t in e.args] if e.free_symbols else []
+    short = [c for c in coeffs if c.is_Rational and not c.is_Integer and short_decimal(c)]
+    return any(printer._as_decimal(c) for c in short) and not all(printer._as_decimal(c) for c in short)
+
+
+def _one_kind_of_coefficient(expr: sympy.Expr) -> sympy.Expr:
+    """A sum whose coefficients print some as decimals and some as fractions (3u/2 - 3.5 e u)
+    with every short one a decimal (1.5 u - 3.5 e u): one precision per line."""
+    mixed = _mixed
+
+    def decimals(e: sympy.Add) -> sympy.Expr:
+        out = []
+        for t in e.args:
+            c, rest = t.as_coeff_Mul()
+            if c.is_Rational and not c.is_Integer and short_decimal(c):
+                t = sympy.Mul(sympy.Float(c, PRECISION), rest, evaluate=False)
+            out.append(t)
+        return sympy.Add(*out, evaluate=False)
+
+    return expr.replace(mixed, decimals)
 
 
 def _longer_than_digits(expr: sympy.Expr, digits: int | None, extra: int) -> sympy.Expr:
@@ -289,7 +318,9 @@ def latex_inline(expr: sympy.Basic, style: Style) -> str:
         hi = ")" if expr.right_open else "]"
         p = StepPrinter(digits=style.digits, labels=style.labels)
         return rf"\left{lo}{p.doprint(expr.start)}, {p.doprint(expr.end)}\right{hi}"
-    printer = StepPrinter(digits=style.digits, decimal_rationals=True, fractions=True, labels=style.labels)
+    # a sum of exact data in fractions (3/2 - 7e/2 < 0), not half in decimals (3/2 - 3.5e)
+    exact = not style.decimal and isinstance(expr, sympy.Basic) and any(expr.atoms(sympy.Add)) and expr.find(_mixed)
+    printer = StepPrinter(digits=style.digits, decimal_rationals=not exact, fractions=True, labels=style.labels)
     if isinstance(expr, sympy.Eq):
         return printer.doprint(expr.lhs) + " = " + printer.doprint(expr.rhs)
     return printer.doprint(expr)

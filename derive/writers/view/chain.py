@@ -5,7 +5,10 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
+import sympy
+
 from derive.problem.units import latex_unit
+from derive.steps.chain import own_names
 from derive.symbols import latex_name, relabel, symbol
 from derive.writers.printing import Style, exact_latex, latex_eqn
 from derive.writers.targets import GITHUB, Layout
@@ -82,10 +85,14 @@ def _impact_stage(sol: Any, st: Any, stage_style: Style, layout: Layout, figures
         figures=figures,
         layout=layout,
         outer_letters={**letter_units(p), **result_units(sol)},
-        outer_decimal=frozenset(g.symbol for g in p.givens if g.decimal),  # g = 9.8: -6.26 e_floor
+        outer_decimal=_decimal(p) & _stage_data(sol, st),  # g = 9.8: -6.26 e_floor; not a later stage's e_wall = 0.5
         falls=falls,
         known=sol.values,
     )
+    renamed = {old.name for old in own_names(st.part.problem)}  # e = e_wall: the page says e_wall
+    for g, shown in zip(st.part.problem.givens, v["givens"], strict=True):
+        if g.name in renamed:
+            shown["latex"] = shown["latex"].split(" = ", 1)[1]
     own = replace(stage_style, labels=st.part.problem.labels)  # v_A2 of a stage that calls A "B"
     carried = [latex_eqn(eqn, own)[0] for eqn in st.carried]
     return {
@@ -108,8 +115,42 @@ def _answers(sol: Any, style: Style, layout: Layout) -> list[dict[str, Any]]:
             answers.append({"latex": verdict + (ANSWER_MARK if last else ""), "tag": None, "boxed": True})
         else:
             assert a.line is not None
-            answers.append({**line_view(a.line, style, layout, answer=last), "tag": None})
+            answers.append({**line_view(a.line, _own_data(sol, a.name, style), layout, answer=last), "tag": None})
     return answers
+
+
+def _decimal(p: Any) -> frozenset:
+    """The chain's givens written as decimals."""
+    return frozenset(g.symbol for g in p.givens if g.decimal)
+
+
+def _data(sol: Any, expr: sympy.Expr) -> set:
+    """The chain's givens ``expr`` is worked out from: a name an earlier stage defined, by its closed form."""
+    out: set = set()
+    for s in expr.free_symbols:
+        r = sol.results.get(s.name)
+        closed = getattr(r, "closed", None)
+        out |= closed.free_symbols if isinstance(closed, sympy.Expr) and closed != s else {s}
+    return out
+
+
+def _stage_data(sol: Any, st: Any) -> set:
+    """The chain's givens an impact stage's own givens are worked out from."""
+    out: set = set()
+    for g in st.part.problem.givens:
+        if isinstance(g.definition, sympy.Expr):
+            out |= _data(sol, g.definition)
+    return out
+
+
+def _own_data(sol: Any, name: str, style: Style) -> Style:
+    """The style of an answer in letters: decimal only where its own data are (u_A = 3u/2 - 7eu/2
+    of exact data stays exact when a later stage's e_wall = 0.5 is decimal)."""
+    r = sol.results.get(name)
+    closed = getattr(r, "closed", None)
+    if r is None or r.value is not None or not isinstance(closed, sympy.Expr):
+        return style
+    return replace(style, decimal=style.decimal & _data(sol, closed))
 
 
 def _givens(sol: Any, style: Style) -> list[dict[str, str]]:

@@ -1,0 +1,147 @@
+"""Issue #28 item 6: pages a teacher can print as they are. A heading is never the last
+thing on a page, a block's sentence stays with its lines ("Kinetic energy, for the record"
+with T_1 ... T_lost), a Given list is never split, a student sheet's problem stays whole,
+the answers stay together; in HTML print the same, and no scroll bar beside a boxed answer.
+Checked in the LaTeX source, and in the PDF's text page by page (pdftotext)."""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+from support.output_cases import missing_tool, solution
+
+import derive
+from derive.homework.handout import build_handout
+from derive.writers.pdf import build_pdf
+
+# the pages the issue names: the KE block that went alone to the last page (4.C.11), the
+# chain with its answers on a page of their own, a drop chain, a wall problem
+PROBLEMS = (
+    "notes-4c11-two-spheres",
+    "notes-4c12-cue-ball",
+    "chain-aqa-m3-2007-collide-again",
+    "chain-ocr-m2-2006-drop-rebound",
+)
+SHEET = (
+    "notes-4c11-two-spheres",
+    "notes-4c12-cue-ball",
+    "chain-aqa-m3-2007-collide-again",
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b",
+    "edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke",
+    "chain-ocr-m2-2006-drop-rebound",
+)
+HEADING = re.compile(r"^(\d+(\.\d+)?\) \S.*|Stage \d+: .*|Answer|\d+ \S.*)$")
+
+
+def _pages(pdf: bytes, tmp_path: Path) -> list[list[str]]:
+    """Each page's non-empty lines, by pdftotext."""
+    for tool in ("latexmk", "pdflatex", "pdftotext"):
+        if shutil.which(tool) is None:
+            missing_tool(f"{tool} is not installed")
+    path = tmp_path / "page.pdf"
+    path.write_bytes(pdf)
+    text = subprocess.run(["pdftotext", "-layout", str(path), "-"], capture_output=True, text=True, check=True).stdout
+    return [[ln.strip() for ln in page.splitlines() if ln.strip()] for page in text.split("\f") if page.strip()]
+
+
+def _body(page: list[str]) -> list[str]:
+    """A page's lines without its page number."""
+    return page[:-1] if page and page[-1].isdigit() else page
+
+
+# ------------------------------------------------------------------ the LaTeX source
+
+
+def test_the_preamble_keeps_headings_with_what_follows() -> None:
+    tex = derive.render(solution("notes-4c11-two-spheres"), "tex")
+    preamble = tex[: tex.index(r"\begin{document}")]
+    assert r"\usepackage{needspace}" in preamble
+    for level in ("section", "subsection", "subsubsection", "paragraph"):
+        assert re.search(rf"\\renewcommand{{\\{level}}}{{\\needspace{{\d+\\baselineskip}}", preamble), level
+    # a list (the Given list) is never split, nor parted from the sentence before or after it
+    for penalty in ("itempenalty", "beginparpenalty", "endparpenalty"):
+        assert f"\\@{penalty}=10000" in preamble
+
+
+def test_a_sentence_stays_with_its_lines_and_the_answers_together() -> None:
+    tex = derive.render(solution("notes-4c11-two-spheres"), "tex")
+    ke = tex.index("Kinetic energy, for the record")
+    assert tex[ke : tex.index(r"\begin{equation*}", ke)].count(r"\nopagebreak") == 1
+    assert r"\postdisplaypenalty=9999" in tex[ke : tex.index(r"\begin{equation*}", ke)]
+    chain = derive.render(solution("chain-aqa-m3-2007-collide-again"), "tex")
+    answers = chain[chain.rindex(r"\subsection*{Answer}") :]
+    assert answers.count(r"\postdisplaypenalty=10000") == 1 and answers.count(r"\boxed") == 4
+
+
+def test_a_fragment_needs_no_new_package() -> None:
+    fragment = derive.render(solution("notes-4c11-two-spheres"), "tex-fragment")
+    assert r"\needspace" not in fragment  # the host document's preamble is the host's
+
+
+# ------------------------------------------------------------------ the PDF, page by page
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", PROBLEMS)
+def test_no_page_ends_with_a_heading_and_the_energy_block_is_whole(name: str, tmp_path: Path) -> None:
+    pages = _pages(build_pdf(derive.render(solution(name), "tex")), tmp_path)
+    for k, page in enumerate(pages[:-1], 1):
+        body = _body(page)
+        assert body and not HEADING.match(body[-1]), (name, k, body[-3:])
+    for k, page in enumerate(pages, 1):
+        text = " ".join(page)
+        if "Kinetic energy, for the record" in text:
+            # the sentence, T_1, T_2 and T_lost on one page
+            after = text[text.index("Kinetic energy, for the record") :]
+            assert re.search(r"T\s*1 =.*T\s*2 =.*T\s*lost", after, re.S), (name, k, after[:300])
+    answers = [k for k, page in enumerate(pages) if any(ln.endswith("ANSWER") for ln in page)]
+    if name.startswith("chain-"):  # a chain's boxed answers all on one page
+        assert len(answers) == 1, (name, answers)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("mode", ["problems", "answers"])
+def test_a_sheet_keeps_each_problem_whole(mode: str, tmp_path: Path) -> None:
+    pdf, failures = build_handout(list(SHEET), title="Sheet", mode=mode, fmt="pdf")  # type: ignore[arg-type]
+    assert not failures
+    assert isinstance(pdf, bytes)
+    pages = _pages(pdf, tmp_path)
+    for k, page in enumerate(pages, 1):
+        text = " ".join(page)
+        # a problem's Given starts on a page only with its heading there, and its Find
+        # (and, on the answer key, its Answer) follows on the same page
+        starts, finds = text.count("Given."), text.count("Find.")
+        assert starts == finds, (mode, k, page[:6])
+        if mode == "answers":
+            assert finds == text.count("Answer."), (mode, k, page[:6])
+
+
+# ------------------------------------------------------------------ HTML print
+
+
+def test_html_print_keeps_headings_lists_and_blocks_together() -> None:
+    html = derive.render(solution("notes-4c11-two-spheres"), "html")
+    style = html[html.index("<style>") : html.index("</style>")]
+    prints = style[style.index("@media print") :]
+    assert re.search(r"h1, h2, h3, h4 \{ break-after: avoid", prints)
+    assert re.search(r"\.eq, \.figure, ul, \.block \{ break-inside: avoid", prints)
+    # a block (a sentence and its lines) is one element that print keeps whole
+    ke = html.index("Kinetic energy, for the record")
+    opened = html.rindex('<div class="block">', 0, ke)
+    assert "<h" not in html[opened:ke] and '<div class="eq">' not in html[opened:ke]
+    # no scroll bar beside a boxed answer: the line itself never scrolls, only a wide body
+    # scrolls sideways, and never up and down
+    screen = style[: style.index("@media print")]
+    assert not re.search(r"\.eq \{[^}]*overflow", screen)
+    assert re.search(r"\.eq \.body \{[^}]*overflow-x: auto; overflow-y: hidden", screen)
+    assert re.search(r"\.eq \.body \{ overflow: visible; \}", prints)
+
+
+def test_a_student_sheet_in_html_keeps_each_problem_whole() -> None:
+    html, _ = build_handout(list(SHEET[:2]), title="Sheet", mode="problems", fmt="html")  # type: ignore[arg-type]
+    assert isinstance(html, str)
+    assert re.search(r"@media print \{ \.problem \{ break-inside: avoid; \} \}", html)
