@@ -29,7 +29,7 @@ from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
 from derive.writers.view import environment, problem_view, student_sheet
-from derive.writers.view.html import handout_html
+from derive.writers.view.html import html_pages
 
 Mode = Literal["problems", "answers", "solutions"]
 Format = Literal["md", "tex", "pdf", "html"]
@@ -159,6 +159,6 @@ def _document(data: dict[str, Any], fmt: str) -> str | bytes:
     if fmt == "md":
         return environment("md").get_template("handout.md.j2").render(**data)
     if fmt == "html":
-        return handout_html(data)
+        return html_pages([("handout", data)])[0]
     tex = environment("tex").get_template("handout.tex.j2").render(**data)
     return tex if fmt == "tex" else build_pdf(tex)

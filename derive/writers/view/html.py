@@ -24,16 +24,11 @@ def _aligned(line: dict[str, Any]) -> str:
     return line["before"] + r"\begin{aligned}" + r" \\ ".join(body) + r"\end{aligned}" + line["after"]
 
 
-def handout_html(data: dict[str, Any]) -> str:
-    """A handout (``title``, ``mode``, ``problems``, ``theory``; ``numbered`` False: no problem
-    numbers) as one self-contained HTML page in the page's style: a student's sheet (mode
-    "problems") or a key ("answers", "solutions")."""
-    return html_pages([("handout", data)])[0]
-
-
 def html_pages(pages: list[tuple[str, dict[str, Any]]]) -> list[str]:
     """Several pages, each ("solution" | "handout", its data), typeset together: one KaTeX call
-    for all their formulas (a variant's sheet and worked solution)."""
+    for all their formulas (a variant's sheet and worked solution). A handout's data: ``title``,
+    ``mode`` ("problems": a student's sheet, "answers", "solutions"), ``problems``, ``theory``;
+    ``numbered`` False: no problem numbers."""
     formulas = _Formulas()
     for kind, data in pages:
         problems = data["problems"] if kind == "handout" else [data]
