@@ -1,5 +1,8 @@
-"""Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+"""Renderers: any Solution as Markdown, LaTeX (document or fragment), HTML or JSON, from one view.
 May import: the rest of writers, steps, physics, problem and the leaves.
+
+Each format's writer is chosen from one table (:data:`WRITERS`); every page comes from one view of
+the solution (:func:`~derive.writers.view.page.view`: a single impact is a chain of one untitled stage).
 
 Layout lives in the Jinja2 templates (``templates/``); the mathematics is
 printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
@@ -19,7 +22,7 @@ from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT
 from derive.writers.view.givens import letter_units, source_parts, worked_out
 from derive.writers.view.json import to_json
 from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
-from derive.writers.view.page import conventions, problem_view, view
+from derive.writers.view.page import problem_view, view
 from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet
 
 __all__ = [
@@ -29,7 +32,6 @@ __all__ = [
     "blocks_view",
     "boxed_lines",
     "convention",
-    "conventions",
     "environment",
     "figure_entry",
     "figure_note",
