@@ -316,3 +316,25 @@ def test_a_stage_title_keeps_the_body_as_typed() -> None:
     """The Hibbeler chain's stage read "Suitcase a falls through the height" (str.capitalize)."""
     md = derive.render(derive.solve(derive.load("chain-hibbeler-15-58-suitcases")), "md")
     assert "## Stage 1: Suitcase A falls through the height" in md
+
+
+def test_a_single_impact_is_a_chain_of_one_untitled_stage() -> None:
+    """One view and one set of templates for every solution (issue #25): a single impact's page
+    is one stage whose title is empty, holding the notes' four stages; a chain's stages are its
+    own, titled; no chain.* templates, and the kinds are told apart in at most three places."""
+    from pathlib import Path
+
+    from derive.resources import templates_dir
+    from derive.writers.view import view
+
+    single = view(derive.solve(derive.load("notes-4c11-two-spheres")), figures=False)
+    (stage,) = single["stages"]
+    assert stage["title"] == "" and [sub["number"] for sub in stage["stages"]] == [1, 2, 3, 4]
+    assert single["answers"] == []  # its answers are boxed in its stage 4
+    chain = view(derive.solve(derive.load("chain-aqa-m3-2007-collide-again")), figures=False)
+    assert len(chain["stages"]) == 3 and all(st["title"] for st in chain["stages"])
+    assert [len(st["stages"]) for st in chain["stages"]] == [4, 4, 0]  # two impacts, then the "again" test
+    assert not any(p.name.startswith("chain.") for p in Path(templates_dir()).iterdir())
+    package = Path(derive.__file__).parent
+    uses = sum(p.read_text(encoding="utf-8").count("is_chain") for p in package.rglob("*.py"))
+    assert uses <= 3

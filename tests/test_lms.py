@@ -180,7 +180,18 @@ def _lms_data() -> dict:
         "statement": [("text", "m = 2 *kg* costs $5 <b>or</b> "), ("math", "a < b"), ("text", r" \(y\).")],
         "givens": [{"latex": "m_{A} = 2", "note": None}, {"latex": "e = 0.5", "note": "a <guess>"}],
         "find": [("text", "x & y")],
-        "stages": [{"number": 1, "title": "Stage <1>", "blocks": [{"text": [("text", "Take ")], "lines": [line]}]}],
+        "stages": [  # one impact: one stage, its title empty, holding its own stages
+            {
+                "number": 1,
+                "title": "",
+                "givens": [],
+                "carried": [],
+                "blocks": [],
+                "stages": [
+                    {"number": 1, "title": "Stage <1>", "blocks": [{"text": [("text", "Take ")], "lines": [line]}]}
+                ],
+            }
+        ],
     }
 
 

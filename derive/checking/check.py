@@ -53,13 +53,13 @@ def check(
     tol = parse_tolerance(tolerance if tolerance is not None else given.tolerance, "tolerance")
     if not given.answers and not given.equations and derivation is None:
         raise InputError("nothing to check: give answers (--answer NAME=VALUE or --answers FILE)", field="answers")
-    if solution.is_chain and given.equations:
+    ctx = Context(solution, tol)
+    if ctx.chain and given.equations:
         raise InputError(
             "equations are checked for a single impact; a chain's answers are checked as numbers, "
             "and its derivation line by line against its stages' values",
             field="equations",
         )
-    ctx = Context(solution, tol)
     items: list[Item] = []
     errors: list[InputError] = []
     for judge, entries in ((answer_item, given.answers), (_equation_item, given.equations)):

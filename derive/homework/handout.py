@@ -29,7 +29,7 @@ from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
 from derive.writers.view import environment, problem_view, student_sheet
-from derive.writers.view.html import handout_html
+from derive.writers.view.html import html_pages
 
 Mode = Literal["problems", "answers", "solutions"]
 Format = Literal["md", "tex", "pdf", "html"]
@@ -72,23 +72,16 @@ def _one_line(text: str) -> str:
 def _problem_view(
     name: str | Path, mode: str, digits: int | None, plot: bool = False, layout: Layout = GITHUB
 ) -> dict[str, Any]:
-    """One problem as the handout templates need it: :func:`view` plus its answer lines."""
+    """One problem as the handout templates need it: :func:`problem_view`, one problem's shape
+    with its boxed answer lines."""
     solution = solve(load(name))
     data = problem_view(solution, digits, mode != "answers", layout=layout, plot=plot and mode == "solutions")
-    if "answers" not in data:  # one impact's: the boxed lines of its answer stage (a chain has its own)
-        data["answers"] = [
-            line
-            for stage in data["stages"]
-            if stage["number"] == 4
-            for block in stage["blocks"]
-            for line in block["lines"]
-            if line["boxed"]
-        ]
     if mode == "problems":
         # a student's sheet: the set-up figure (before the impact: which way +n points), and
         # no Source line (citations quote the published answers)
-        data["setup_svg"] = next((st["figure_svg"] for st in data["stages"] if st.get("figure_svg")), "")
-        data["setup_tikz"] = next((st["figure_tikz"] for st in data["stages"] if st.get("figure_tikz")), "")
+        stages = data["stages"][0]["stages"]
+        data["setup_svg"] = next((st["figure_svg"] for st in stages if st.get("figure_svg")), "")
+        data["setup_tikz"] = next((st["figure_tikz"] for st in stages if st.get("figure_tikz")), "")
         student_sheet(data)
     return data
 
@@ -166,6 +159,6 @@ def _document(data: dict[str, Any], fmt: str) -> str | bytes:
     if fmt == "md":
         return environment("md").get_template("handout.md.j2").render(**data)
     if fmt == "html":
-        return handout_html(data)
+        return html_pages([("handout", data)])[0]
     tex = environment("tex").get_template("handout.tex.j2").render(**data)
     return tex if fmt == "tex" else build_pdf(tex)

@@ -7,6 +7,7 @@ import re
 from typing import Any
 
 from derive import escape
+from derive.problem import ChainProblem
 from derive.writers.view import student_sheet
 from derive.writers.view.html import lms_html
 
@@ -35,9 +36,8 @@ def statement_html(data: dict[str, Any]) -> str:
     """A variant's statement (Given, Find) as LMS HTML, as a student's sheet reads: no title,
     no Source line (citations quote the published answers), an unknown given "to find", and
     the sign convention in words (which way +n points: the answer is a signed component)."""
-    if "convention" not in data:  # a page's data (fill_view): its sheet, the page left as it was
-        data = student_sheet({**data, "givens": [dict(g) for g in data["givens"]]})
-    return lms_html(data, "statement", words).strip()
+    sheet = student_sheet({**data, "givens": [dict(g) for g in data["givens"]]})  # the page left as it was
+    return lms_html(sheet, "statement", words).strip()
 
 
 def solution_html(data: dict[str, Any]) -> str:
@@ -51,7 +51,7 @@ def result_html(compiled: Any, name: str) -> str:
     it (\\(v_{A2}\\) after A and B collide), its mathematics for MathJax."""
     from derive.homework.variants.chain import chain_result_words
 
-    if compiled.is_chain:
+    if isinstance(compiled.problem, ChainProblem):
         parts = chain_result_words(compiled, name)
     else:
         parts = [("text", "the " + compiled.solution.results[name].description)]

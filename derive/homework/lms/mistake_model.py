@@ -13,6 +13,7 @@ from derive.checking import mistakes
 from derive.homework.lms.grading import Answer, figures_of, tolerance
 from derive.homework.variants import Compiled, Variant
 from derive.numbers import float_decimal, format_number
+from derive.problem import Problem
 
 
 @dataclass(frozen=True)
@@ -36,7 +37,7 @@ class MistakeModel:
     def __init__(self, compiled: Compiled) -> None:
         self.compiled = compiled
         # the mistakes are a single impact's: a chain's questions have no mistake answers
-        self.base = None if compiled.is_chain else mistakes.Model(compiled.solution)
+        self.base = mistakes.Model(compiled.solution) if isinstance(compiled.problem, Problem) else None
         self.registry = mistakes.REGISTRY
         self._wrong: dict[tuple, list[Wrong]] = {}
         self._outcomes: dict[tuple, list[tuple[str, dict]]] = {}

@@ -58,11 +58,6 @@ class Compiled:
     #: Why the last refused draw was refused (for the message when too few are physical).
     refusal: str = ""
 
-    @property
-    def is_chain(self) -> bool:
-        """True for a chain (its draws are tested by solving them)."""
-        return self.problem.kind == "chain"
-
     def values_written(self, values: dict[str, sympy.Expr]) -> tuple[tuple[str, str | int | float], ...]:
         """Each varied given as the variant's ``[given]`` table writes it (a value no ``[vary]``
         entry gives, as the file's ``[given]`` entry is written)."""

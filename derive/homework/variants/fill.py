@@ -64,16 +64,12 @@ def given_values(compiled: Compiled, variant: Variant) -> dict[str, dict]:
 
 
 def fill_view(compiled: Compiled, variant: Variant, digits: int | None = None) -> dict[str, Any]:
-    """One variant's page as the writers' data, in one problem's shape (a chain's as
-    :func:`derive.writers.view.chain_as_problem` gives it, as a student's sheet, without
-    figures): what an LMS shows, the statement and the worked solution."""
-    from derive.writers.view import chain_as_problem, student_sheet, view
+    """One variant's page as the writers' data, in one problem's shape
+    (:func:`derive.writers.view.problem_view`): what an LMS shows, the statement (as a student's
+    sheet) and the worked solution."""
+    from derive.writers.view import problem_view
 
-    sol = compiled.solved(variant.values)
-    if compiled.is_chain:
-        # as a student's sheet: the convention of each impact, an unknown "to find", no Source line
-        return student_sheet(chain_as_problem(sol, digits, figures=False))
-    return view(sol, digits)
+    return problem_view(compiled.solved(variant.values), digits)
 
 
 def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
@@ -94,12 +90,11 @@ def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
     as its sheet says it: Markdown or (tex, pdf) LaTeX text."""
     from derive import escape
     from derive.steps import solve
-    from derive.writers.view import problem_view, student_sheet
+    from derive.writers.view import problem_view
 
-    sol = compiled.solution if compiled.is_chain else solve(compiled.problem)  # the file's own numbers
-    data = problem_view(sol, figures=False)
+    data = problem_view(solve(compiled.problem), figures=False)  # the file's own numbers
     text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
-    return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in student_sheet(data)["convention"])
+    return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in data["convention"])
 
 
 def iterate(
@@ -115,14 +110,13 @@ def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None =
     the impact, the sign convention in words; no Source line, no answers) and the worked
     solution as ``derive solve -f html`` writes it."""
     from derive.writers.targets import HTML
-    from derive.writers.view import page_kind, problem_view, student_sheet
+    from derive.writers.view import problem_view, student_sheet, view
     from derive.writers.view.html import html_pages
 
     sol = compiled.solved(v.values)
-    kind = page_kind(sol)
     student = student_sheet(problem_view(sol, digits, figures=False, layout=HTML))
-    worked = (kind.html, kind.view(sol, digits, True, HTML, False, True))
     student.update(title=stem.replace("variant-", "Variant "), setup_svg=setup_figure(compiled, v, "html"))
     problems = {"title": compiled.problem.title, "mode": "problems", "problems": [student], "theory": None}
-    student_page, worked_page = html_pages([("handout", {**problems, "numbered": False}), worked])
+    worked = view(sol, digits, layout=HTML)
+    student_page, worked_page = html_pages([("handout", {**problems, "numbered": False}), ("solution", worked)])
     return student_page, worked_page

@@ -359,8 +359,8 @@ def describe(
     chain's later results); ``numbers`` turns an expression into a float (default
     :func:`~derive.writers.figure.frame.number`). A chain gives the figure of its first impact.
     """
-    if solution.is_chain:
-        first = next(st for st in solution.stages if st.part is not None)
+    first = next((st for st in solution.stages if st.part is not None), None)
+    if first is not None:  # a chain: its first impact
         down = chain_falls(solution)[first.number] if falls is None else falls
         return describe(first.part, after, falls=down, values={**solution.values, **(values or {})}, numbers=numbers)
     p = solution.problem

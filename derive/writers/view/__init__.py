@@ -1,5 +1,8 @@
-"""Renderers: the same Solution as Markdown, LaTeX (document or fragment), HTML or JSON.
+"""Renderers: any Solution as Markdown, LaTeX (document or fragment), HTML or JSON, from one view.
 May import: the rest of writers, steps, physics, problem and the leaves.
+
+Each format's writer is chosen from one table (:data:`WRITERS`); every page comes from one view of
+the solution (:func:`~derive.writers.view.page.view`: a single impact is a chain of one untitled stage).
 
 Layout lives in the Jinja2 templates (``templates/``); the mathematics is
 printed by :mod:`derive.printing`; user text is escaped by :mod:`derive.escape`.
@@ -9,28 +12,25 @@ A renderer never does physics.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 from derive.errors import InputError
 from derive.numbers import format_number
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
 from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
-from derive.writers.view.chain import chain_as_problem, chain_convention, chain_view
 from derive.writers.view.givens import letter_units, source_parts, worked_out
-from derive.writers.view.json import chain_json, to_json
+from derive.writers.view.json import to_json
 from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
-from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet, view
+from derive.writers.view.page import problem_view, view
+from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet
 
 __all__ = [
     "ANSWER_MARK",
     "FORMATS",
+    "WRITERS",
     "blocks_view",
     "boxed_lines",
-    "chain_as_problem",
-    "chain_convention",
-    "chain_view",
     "convention",
     "environment",
     "figure_entry",
@@ -52,87 +52,40 @@ __all__ = [
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
 
 
-@dataclass(frozen=True)
-class PageKind:
-    """How one kind of solution is laid out: its page's data (``view(solution, digits, figures,
-    layout, plot, standalone)``), its templates and its HTML and JSON writers."""
+class Writer(NamedTuple):
+    """How one format is written: where its page goes (``layout``; None: the Markdown target
+    the options name), whether a LaTeX page is a whole document, whether it draws figures,
+    and its text from the solution, its view and the options."""
 
-    view: Callable[..., dict[str, Any]]
-    md: str
-    tex: str
-    fragment: str
-    html: str
-    json: Callable[[Solution, int | None], str]
+    layout: Layout | None
+    write: Callable[[Solution, dict[str, Any], dict[str, Any]], str]
+    standalone: bool = True
+    figures: bool = True
 
 
-IMPACT = PageKind(
-    lambda s, digits, figures, layout, plot, standalone: view(s, digits, figures, layout=layout, plot=plot),
-    "solution.md.j2",
-    "solution.tex.j2",
-    "fragment.tex.j2",
-    "solution",
-    to_json,
-)
-CHAIN = PageKind(
-    lambda s, digits, figures, layout, plot, standalone: chain_view(s, digits, figures, standalone, layout),
-    "chain.md.j2",
-    "chain.tex.j2",
-    "chain.tex.j2",
-    "chain",
-    chain_json,
-)
+def _md(solution: Solution, data: dict[str, Any], o: dict[str, Any]) -> str:
+    return _markdown(data, markdown_target(o["target"]), o["heading_level"], o["title"])[0]
 
 
-def problem_view(
-    solution: Solution, digits: int | None = None, figures: bool = True, *, layout: Layout = GITHUB, plot: bool = False
-) -> dict[str, Any]:
-    """``solution``'s page data in one problem's shape, a chain's as :func:`chain_as_problem`
-    gives it (a handout's problem, a variant's sheet): ``plot`` for one impact only."""
-    if page_kind(solution) is CHAIN:
-        return chain_as_problem(solution, digits, figures=figures, layout=layout)
-    return view(solution, digits, figures, layout=layout, plot=plot)
+def _tex(solution: Solution, data: dict[str, Any], o: dict[str, Any]) -> str:
+    template = "solution.tex.j2" if data["standalone"] else "fragment.tex.j2"
+    return environment("tex").get_template(template).render(**data, **_tex_vars(o["heading_level"], o["title"]))
 
 
-def page_kind(solution: Solution) -> PageKind:
-    """The layout of ``solution``'s kind: one impact, or a chain of stages."""
-    return CHAIN if solution.is_chain else IMPACT
-
-
-def _md(solution: Solution, kind: PageKind, o: dict[str, Any]) -> str:
-    page, _ = markdown(
-        solution,
-        markdown_target(o["target"]),
-        digits=o["digits"],
-        figures=o["figures"],
-        heading_level=o["heading_level"],
-        show_title=o["title"],
-        plot=o["plot"],
-    )
-    return page
-
-
-def _tex(solution: Solution, kind: PageKind, o: dict[str, Any], fragment: bool = False) -> str:
-    layout = TEX_FRAGMENT if fragment else TEX_DOCUMENT
-    data = kind.view(solution, o["digits"], o["figures"], layout, o["plot"], not fragment)
-    tex_vars = {**_headings(o["heading_level"], o["title"]), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
-    template = kind.fragment if fragment else kind.tex
-    return environment("tex").get_template(template).render(**data, **tex_vars)
-
-
-def _html(solution: Solution, kind: PageKind, o: dict[str, Any]) -> str:
+def _html(solution: Solution, data: dict[str, Any], o: dict[str, Any]) -> str:
     from derive.writers.view.html import html_pages
 
-    (page,) = html_pages([(kind.html, kind.view(solution, o["digits"], o["figures"], HTML, o["plot"], True))])
+    (page,) = html_pages([("solution", data)])
     return page
 
 
 #: The writer of each format, by name.
-WRITERS: dict[str, Callable[[Solution, PageKind, dict[str, Any]], str]] = {
-    "md": _md,
-    "tex": _tex,
-    "tex-fragment": lambda solution, kind, o: _tex(solution, kind, o, fragment=True),
-    "html": _html,
-    "json": lambda solution, kind, o: kind.json(solution, o["digits"]),
+WRITERS: dict[str, Writer] = {
+    "md": Writer(None, _md),
+    "tex": Writer(TEX_DOCUMENT, _tex),
+    "tex-fragment": Writer(TEX_FRAGMENT, _tex, standalone=False),
+    "html": Writer(HTML, _html),
+    "json": Writer(GITHUB, lambda solution, data, o: to_json(solution, o["digits"], data), figures=False),
 }
 
 
@@ -161,14 +114,15 @@ def render(
     if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
         raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
     _headings(heading_level, title)
-    kind = page_kind(solution)
-    if kind is CHAIN and plot:
-        raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
     writer = WRITERS.get(fmt)
     if writer is None:
         raise InputError(f"unknown format {fmt!r} (expected one of: {', '.join((*FORMATS, 'pdf'))})", field="--format")
-    options = {"digits": digits, "figures": figures, "target": target, "plot": plot}
-    return writer(solution, kind, {**options, "heading_level": heading_level, "title": title})
+    layout = writer.layout or markdown_target(target)
+    data = view(solution, digits, figures and writer.figures, layout=layout, plot=plot, standalone=writer.standalone)
+    if plot and not data["plot_svg"]:
+        raise InputError("a chain has several impacts: plot one with 'derive plot PROBLEM --stage N'", field="--plot")
+    options = {"digits": digits, "target": target, "heading_level": heading_level, "title": title}
+    return writer.write(solution, data, options)
 
 
 def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = None, title: str | None = None) -> str:
@@ -187,8 +141,7 @@ def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = No
     if title is not None:
         sheet["title"] = title
     if fmt == "tex":
-        tex_vars = {**_headings(1, True), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
-        return environment("tex").get_template("solution.tex.j2").render(**sheet, **tex_vars)
+        return environment("tex").get_template("solution.tex.j2").render(**sheet, **_tex_vars(1, True))
     return environment("md").get_template("solution.md.j2").render(**sheet).rstrip("\n") + "\n"
 
 
@@ -197,6 +150,11 @@ def environment(kind: str) -> Any:
     from derive.writers.view.jinja import environment as jinja_environment
 
     return jinja_environment(kind)
+
+
+def _tex_vars(level: int, title: bool) -> dict[str, Any]:
+    """The LaTeX templates' variables: the headings', and the packages a fragment needs."""
+    return {**_headings(level, title), "fragment_packages": ",".join(FRAGMENT_PACKAGES)}
 
 
 def _headings(level: int, title: bool) -> dict[str, Any]:
@@ -218,12 +176,16 @@ def markdown(
 ) -> tuple[str, dict[str, str]]:
     """The Markdown for ``layout``, and the figure files it names (``figure-1.svg``: SVG
     text) when the layout writes figures as files for the caller to put beside it."""
-    kind = page_kind(solution)
-    data = kind.view(solution, digits, figures, layout, plot, True)
+    data = view(solution, digits, figures, layout=layout, plot=plot)
+    return _markdown(data, layout, heading_level, show_title)
+
+
+def _markdown(data: dict[str, Any], layout: Layout, heading_level: int, show_title: bool) -> tuple[str, dict[str, str]]:
+    """A page's view as Markdown for ``layout``, and the figure files it names."""
     files = _figure_images(data, layout)
     page = (
         environment("md")
-        .get_template(kind.md)
+        .get_template("solution.md.j2")
         .render(
             **data,
             heading_level=heading_level,
@@ -239,13 +201,12 @@ def markdown(
 
 
 def _figure_images(data: dict[str, Any], layout: Layout) -> dict[str, str]:
-    """Give each figure of the page (a chain's included) the address of its image:
+    """Give each figure of the page (each impact's) the address of its image:
     a data URI, or a file name; the files to write, by name."""
     files: dict[str, str] = {}
     if layout.figures == "inline":
         return files
-    stages = [sub for st in data["stages"] for sub in st.get("stages", [st])]
-    for stage in stages:
+    for stage in (sub for st in data["stages"] for sub in st["stages"]):
         svg = stage.get("figure_svg")
         if not svg:
             continue
@@ -261,18 +222,15 @@ def _figure_images(data: dict[str, Any], layout: Layout) -> dict[str, str]:
 
 
 def boxed_lines(solution: Solution) -> list[str]:
-    """The LaTeX of the solution's boxed lines (its answers)."""
-    if solution.is_chain:
-        return [a["latex"] for a in chain_view(solution, figures=False)["answers"]]
-    stages = view(solution, figures=False)["stages"]
-    return [ln["latex"] for st in stages for b in st["blocks"] for ln in b["lines"] if ln["boxed"]]
+    """The LaTeX of the solution's boxed answer lines (a chain's answers, an impact's answer stage)."""
+    return [line["latex"] for line in problem_view(solution, figures=False)["answers"]]
 
 
 def plain_answers(solution: Solution) -> list[str]:
     """The answers the problem asks for, as short plain text: ``v_A2 = 3.05 e_t - 1.11 e_n m/s``."""
     p = solution.problem
     verdicts = {a.name: a.verdict for a in solution.answers if a.verdict is not None}
-    names = [a.name for a in solution.answers] if solution.is_chain else list(p.find)
+    names = [a.name for a in solution.answers] or list(p.find)  # a chain's answers, or what one impact finds
     out = []
     for name in names:
         if name in verdicts:
@@ -280,7 +238,7 @@ def plain_answers(solution: Solution) -> list[str]:
             continue
         t, n = solution.results.get(name + "t"), solution.results.get(name + "n")
         r = solution.results.get(name)
-        if not solution.is_chain and p.oblique and name in ("v_A2", "v_B2") and t and n:
+        if p.kind == "oblique" and name in ("v_A2", "v_B2") and t and n:
             if t.value is not None and n.value is not None:
                 sign = "-" if n.value < 0 else "+"
                 shown_n = format_number(abs(n.value), p.digits)

@@ -1,4 +1,5 @@
-"""The HTML pages of one impact and of a chain: every formula typeset by KaTeX."""
+"""The HTML pages (a solution's, a handout's) and an LMS's fragments: every formula typeset by KaTeX
+or left for MathJax."""
 
 from __future__ import annotations
 
@@ -23,61 +24,22 @@ def _aligned(line: dict[str, Any]) -> str:
     return line["before"] + r"\begin{aligned}" + r" \\ ".join(body) + r"\end{aligned}" + line["after"]
 
 
-def handout_html(data: dict[str, Any]) -> str:
-    """A handout (``title``, ``mode``, ``problems``, ``theory``; ``numbered`` False: no problem
-    numbers) as one self-contained HTML page in the page's style: a student's sheet (mode
-    "problems") or a key ("answers", "solutions")."""
-    return html_pages([("handout", data)])[0]
-
-
 def html_pages(pages: list[tuple[str, dict[str, Any]]]) -> list[str]:
-    """Several pages, each ("solution" | "chain" | "handout", its data), typeset together: one
-    KaTeX call for all their formulas (a variant's sheet and worked solution)."""
+    """Several pages, each ("solution" | "handout", its data), typeset together: one KaTeX call
+    for all their formulas (a variant's sheet and worked solution). A handout's data: ``title``,
+    ``mode`` ("problems": a student's sheet, "answers", "solutions"), ``problems``, ``theory``;
+    ``numbered`` False: no problem numbers."""
     formulas = _Formulas()
     for kind, data in pages:
-        _GATHER[kind](formulas, data)
+        problems = data["problems"] if kind == "handout" else [data]
+        for problem in problems:
+            formulas.problem(problem, solution=kind == "solution" or data["mode"] == "solutions")
+            for stage in (sub for st in problem["stages"] for sub in st["stages"]):
+                stage["figure"] = stage.get("figure_svg", "")
+        if kind == "handout" and data.get("theory"):
+            formulas.theory(data["theory"])
     script = formulas.run(_typeset)
-    out = []
-    for kind, data in pages:
-        if kind == "chain":
-            for st in data["stages"]:
-                if st["impact"]:
-                    st["carried"] = [c for _, c in st["carried"]]
-        out.append(_page(f"{kind}.html.j2", data, script))
-    return out
-
-
-def _gather_solution(formulas: _Formulas, data: dict[str, Any]) -> None:
-    formulas.problem(data)
-    for stage in data["stages"]:
-        stage["figure"] = stage.get("figure_svg", "")
-
-
-def _gather_chain(formulas: _Formulas, data: dict[str, Any]) -> None:
-    for g in data["givens"]:
-        formulas.given(g)
-    data["statement"] = formulas.parts(data["statement"])
-    for st in data["stages"]:
-        if st["impact"]:
-            for g in st["givens"]:
-                formulas.given(g)
-            for sub in st["stages"]:
-                sub["figure"] = sub.get("figure_svg", "")
-                formulas.blocks(sub["blocks"])
-            st["carried"] = formulas.parts([("math", c) for c in st["carried"]])
-        else:
-            formulas.blocks(st["blocks"])
-    for line in data["answers"]:
-        formulas.line(line)
-
-
-def _gather_handout(formulas: _Formulas, data: dict[str, Any]) -> None:
-    for p in data["problems"]:
-        formulas.problem(p, solution=data["mode"] == "solutions")
-        for stage in p["stages"]:
-            stage["figure"] = stage.get("figure_svg", "")
-    if data.get("theory"):
-        formulas.theory(data["theory"])
+    return [_page(f"{kind}.html.j2", data, script) for kind, data in pages]
 
 
 def _page(template: str, data: dict[str, Any], script: str) -> str:
@@ -152,7 +114,8 @@ class _Formulas:
                 self.line(line)
 
     def problem(self, data: dict[str, Any], solution: bool = True) -> None:
-        """A problem's page: its givens, statement and Find, and (``solution``) its stages and answers."""
+        """A problem's page: its givens, statement and Find, its answers, and (``solution``) its
+        stages (:func:`derive.writers.view.page.view`): their givens, lines and carried results."""
         for g in data["givens"]:
             self.given(g)
         data["statement"] = self.parts(data["statement"])
@@ -162,8 +125,13 @@ class _Formulas:
         for line in data.get("answers", []):
             self.line(line)
         if solution:
-            for stage in data["stages"]:
-                self.blocks(stage["blocks"])
+            for st in data["stages"]:
+                for g in st["givens"]:
+                    self.given(g)
+                for stage in st["stages"]:
+                    self.blocks(stage["blocks"])
+                st["carried"] = self.parts([("math", c) for c in st["carried"]])
+                self.blocks(st["blocks"])
 
     def theory(self, page: dict[str, Any]) -> None:
         """A handout's theory page: its tables, blocks and bullets."""
@@ -189,10 +157,3 @@ def lms_html(data: dict[str, Any], part: str, text: Callable[[str], str]) -> str
     formulas.problem(data, solution=part == "solution")
     formulas.run(mathjax)
     return environment("md").get_template("lms.html.j2").render(**data, part=part, text=text)
-
-
-_GATHER: dict[str, Callable[[_Formulas, dict[str, Any]], None]] = {
-    "solution": _gather_solution,
-    "chain": _gather_chain,
-    "handout": _gather_handout,
-}

@@ -1,4 +1,4 @@
-"""The JSON of one impact (the contract of DESIGN.md) and of a chain."""
+"""The JSON of a solution: one impact's (the contract of DESIGN.md) or a chain's, from its view."""
 
 from __future__ import annotations
 
@@ -14,8 +14,7 @@ from derive.problem import Given
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
 from derive.writers.printing import StepPrinter
-from derive.writers.view.chain import chain_view
-from derive.writers.view.problem import view
+from derive.writers.view.page import view
 
 
 def _text_with_math(parts: list[tuple[str, str]] | None) -> str:
@@ -37,41 +36,75 @@ def _givens_json(givens: tuple[Given, ...]) -> dict[str, dict[str, Any]]:
     }
 
 
-def _results(found: Mapping[str, Result], d: int) -> dict[str, dict[str, Any]]:
-    """Each result of one impact: its number, unit, expression (text and LaTeX) and description."""
+#: The keys of each kind's JSON, in order: one impact's (the contract of DESIGN.md: with what
+#: its physics decided, "show that" results and ranges), and a chain's (one per stage of the chain).
+KEYS = {
+    "impact": ("title", "kind", "source", "units", "find", "results", "givens", "show", "ranges", "stages"),
+    "chain": ("title", "kind", "source", "find", "givens", "results", "stages"),
+}
+
+
+def _results(found: Mapping[str, Result], d: int, described: bool) -> dict[str, dict[str, Any]]:
+    """Each result: its number, unit, expression (text and LaTeX), the number as shown, and
+    (``described``: one impact's) its description, or its expression where it has no number."""
     results = {}
     printer = StepPrinter()
     for name, r in found.items():
-        value = None if r.value is None else float(sympy.N(r.value, 17))
         entry: dict[str, Any] = {
-            "value": value,
+            "value": None if r.value is None else float(sympy.N(r.value, 17)),
             "unit": plain_unit(r.unit) if r.unit != "deg" else "deg",
             "expr": str(r.closed),
             "latex": printer.doprint(r.closed),
-            "description": r.description,
         }
+        if described:
+            entry["description"] = r.description
         if r.value is not None:
             entry["shown"] = format_number(r.value, d)
-        else:
+        elif described:
             entry["value_expr"] = str(r.partial)
         results[name] = entry
     return results
 
 
-def to_json(solution: Solution, digits: int | None = None) -> str:
-    """The JSON contract of DESIGN.md: title, kind, results (+ givens and steps)."""
+def _stages(page: dict[str, Any]) -> list[dict[str, Any]]:
+    """Each stage's sentences and lines: a titled stage (a chain's) as one, its own stages'
+    blocks run together; the stages of the untitled one (a single impact's) each as one."""
+    stages = []
+    for st in page["stages"]:
+        subs = [st] if st["title"] else st["stages"]
+        for sub in subs:
+            blocks = [b for inner in sub["stages"] for b in inner["blocks"]] if sub is st else []
+            stages.append(
+                {
+                    "number": sub["number"],
+                    "title": sub["title"],
+                    "blocks": [
+                        {
+                            "text": _text_with_math(b["text"]),
+                            "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
+                        }
+                        for b in [*blocks, *sub["blocks"]]
+                    ],
+                }
+            )
+    return stages
+
+
+def to_json(solution: Solution, digits: int | None = None, page: dict[str, Any] | None = None) -> str:
+    """The solution as JSON: title, kind, results (+ givens and each stage's lines), the keys
+    of :data:`KEYS` for its kind; ``page`` is its view (:func:`view`), when already made."""
     p = solution.problem
     d = digits if digits is not None else p.digits
-    results = _results(solution.results, d)
+    page = page if page is not None else view(solution, digits, figures=False)  # the lines only
+    kind = "chain" if any(st["title"] for st in page["stages"]) else "impact"
     printer = StepPrinter()
-    v = view(solution, digits, figures=False)  # the lines only: JSON has no figures
     doc = {
         "title": p.title,
         "kind": p.kind,
         "source": p.source,
         "units": p.system,
         "find": list(p.find),
-        "results": results,
+        "results": _results(solution.results, d, kind == "impact"),
         "givens": _givens_json(p.givens),
         "show": [
             {
@@ -92,66 +125,9 @@ def to_json(solution: Solution, digits: int | None = None) -> str:
             }
             for f in solution.ranges
         ],
-        "stages": [
-            {
-                "number": s["number"],
-                "title": s["title"],
-                "blocks": [
-                    {
-                        "text": _text_with_math(b["text"]),
-                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
-                    }
-                    for b in s["blocks"]
-                ],
-            }
-            for s in v["stages"]
-        ],
+        "stages": _stages(page),
     }
+    out = {key: doc[key] for key in KEYS[kind]}
     if solution.others:  # the data allow more than one physical solution: the others, in order
-        doc["others"] = [_results(found, d) for found in solution.others]
-    return dumps_json(doc)
-
-
-def chain_json(sol: Any, digits: int | None) -> str:
-    """A chain's JSON: its givens, results (number, unit, expression) and each stage's lines."""
-    p = sol.problem
-    d = digits if digits is not None else p.digits
-    results = {}
-    for name, r in sol.results.items():
-        results[name] = {
-            "value": None if r.value is None else float(sympy.N(r.value, 17)),
-            "unit": "deg" if r.unit == "deg" else plain_unit(r.unit),
-            "expr": str(r.closed),
-            "latex": StepPrinter().doprint(r.closed),
-        }
-        if r.value is not None:
-            results[name]["shown"] = format_number(r.value, d)
-    givens = _givens_json(p.givens)
-    view_ = chain_view(sol, digits, figures=False)
-    stages = []
-    for st in view_["stages"]:
-        subs = st["stages"] if st["impact"] else [{"blocks": st["blocks"]}]
-        blocks = [b for sub in subs for b in sub["blocks"]]
-        stages.append(
-            {
-                "number": st["number"],
-                "title": st["title"],
-                "blocks": [
-                    {
-                        "text": _text_with_math(b["text"]),
-                        "lines": [{"latex": ln["latex"], "tag": ln["tag"]} for ln in b["lines"]],
-                    }
-                    for b in blocks
-                ],
-            }
-        )
-    doc = {
-        "title": p.title,
-        "kind": "chain",
-        "source": p.source,
-        "find": list(p.find),
-        "givens": givens,
-        "results": results,
-        "stages": stages,
-    }
-    return dumps_json(doc)
+        out["others"] = [_results(found, d, True) for found in solution.others]
+    return dumps_json(out)

@@ -81,7 +81,7 @@ _FIND_WORDS = {
 }
 
 
-def view(
+def impact_view(
     solution: Solution,
     digits: int | None = None,
     figures: bool = True,
@@ -93,8 +93,9 @@ def view(
     known: dict[sympy.Symbol, sympy.Expr] | None = None,
     plot: bool = False,
 ) -> dict[str, Any]:
-    """The data a template needs: every formula already printed as LaTeX, and the
-    figures of stage 1 and of the answer as SVG and TikZ.
+    """One impact's page data: every formula already printed as LaTeX, and the figures
+    of stage 1 and of the answer as SVG and TikZ (:func:`derive.writers.view.page.view`
+    makes it the one stage of a page, or a stage of a chain).
 
     ``layout`` says where the page goes (:mod:`derive.writers.targets`): how wide a line may
     be, and whether cancelled terms are struck out. ``falls`` and ``known`` are for
@@ -213,14 +214,13 @@ def convention(stages: list[dict[str, Any]]) -> list[tuple[str, str]]:
 
 
 def student_sheet(data: dict[str, Any]) -> dict[str, Any]:
-    """A problem's page data made a student's sheet (in place): no Source line (citations quote
-    the published answers), an unknown given marked "to find", and the sign convention in words."""
+    """A problem's page data (:func:`derive.writers.view.page.problem_view`, with the sign
+    convention in words) made a student's sheet, in place: no Source line (citations quote the
+    published answers), an unknown given marked "to find"."""
     from derive.writers.view.givens import UNKNOWN_NOTE
 
     data["source"], data["source_parts"] = None, []
     for g in data["givens"]:
         if g.get("note") == UNKNOWN_NOTE:
             g["note"] = "to find"
-    # a chain's sheet gives the convention of each impact stage (chain_as_problem)
-    data["convention"] = data.pop("chain_convention", None) or convention(data["stages"])
     return data
