@@ -120,6 +120,19 @@ def test_a_sheet_keeps_each_problem_whole(mode: str, tmp_path: Path) -> None:
             assert finds == text.count("Answer."), (mode, k, page[:6])
 
 
+@pytest.mark.slow
+def test_the_theory_page_is_one_page(tmp_path: Path) -> None:
+    # the notes' page fitted on one page before the block groups (\\par}) gave each sentence
+    # after an equation its own \\parskip; then its Remarks went alone to a second page
+    pdf, failures = build_handout(["notes-4c11-two-spheres"], title="Sheet", mode="problems", fmt="pdf")  # type: ignore[arg-type]
+    assert not failures
+    assert isinstance(pdf, bytes)
+    pages = _pages(pdf, tmp_path)
+    first = " ".join(pages[0])
+    assert "Remarks" in first and "does not" in first and first.rstrip(" 1").endswith("apply."), pages[0][-3:]
+    assert "Example 4.C.11" in " ".join(pages[1][:2]), pages[1][:3]
+
+
 # ------------------------------------------------------------------ HTML print
 
 
