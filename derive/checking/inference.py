@@ -17,10 +17,11 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.naming import PREFIX, Open, common_velocity, declaration, declarations, habits, read_side, rewrite
+from derive.checking.naming import PREFIX, Open, common_velocity, declarations, declares, habits, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
+from derive.problem.units import VELOCITY
 
 #: The most names inferred together (more are inferred one at a time).
 JOINT = 2
@@ -45,7 +46,8 @@ class Read:
 
 def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences)."""
-    relations = tuple(r for r in read_relations(text) if not declaration(r.written))
+    every = read_relations(text)
+    relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
@@ -71,6 +73,8 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
     for b in "AB":
         if f"v_{b}2" in derived and ctx.problem.oblique:
             out[f"speed_{b}"] = derived[f"v_{b}2"][0]
+        elif not ctx.problem.oblique and getattr(ctx.model.nm, f"{b}2n", None) is not None:
+            out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
     return out
 
 
@@ -82,6 +86,10 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             try:
                 exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
             except ParseError:
+                if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
+                    exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
+                    shown = (r.lead, *r.sides[1:])
+                    continue
                 if i or len(sides) < 3:
                     raise
                 shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
@@ -124,6 +132,7 @@ def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
     out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
     out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
     out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
+    out += [(g.name, g.symbol) for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
     nm = ctx.model.nm
     zeros = ctx.model.zeros
     out += [

@@ -138,12 +138,18 @@ class Trace:
         m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
         if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
             self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
+            last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
+            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
+                self.own[left] = last
 
     def _with_own_values(self, line: Line) -> bool:
         """Whether ``line`` holds with the values the student got wrong earlier put in."""
         if not self.own or not line.exprs:
             return False
-        exprs = tuple(x.xreplace(self.own) for x in line.exprs)
+        d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
+        lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
+        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
         if exprs == line.exprs:
             return False
         return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)

@@ -28,15 +28,22 @@ import sympy
 
 from derive.checking.context import Context
 from derive.mathtext.notation import student
+from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import DIMENSIONLESS
 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
-    (r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+KE|KE\s+loss|lost\s+KE|T_?\(?lost\)?)", "T_lost"),
+    (
+        r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
+        "T_lost",
+    ),
     (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
     (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
     (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"\|\s*(?:v_?\(?([AB])2?\)?|([AB])_?p)\s*\|", r"speed_\1\2"),  # |v_A|, |v_(A2)|: A's speed after
+    (r"direction\s+of\s+([AB])(?:\s+after)?", r"beta_\g<1>2"),  # from the line of centres (x, i)
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
@@ -134,7 +141,10 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
             raise
     words = text.split()
     for k in range(1, len(words)):
-        piece = " ".join(words[k:] if first and not last else words[:-k] if last and not first else words[k:])
+        cut, piece = (words[-k:], words[:-k]) if last and not first else (words[:k], words[k:])
+        if last and not first and not re.fullmatch(r"(?:[A-Za-z\s,.;:'’]|(?<=[A-Za-z])-(?=[A-Za-z]))+", " ".join(cut)):
+            continue  # "(relative speed)^2": words inside the mathematics are not trimmed
+        piece = " ".join(piece)
         try:
             return parse(student(piece), names).expr
         except ParseError:
@@ -173,6 +183,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
             out.setdefault(alias, names[name][0])
+    if oblique:
+        out.update(_components(nm))
     out["u"] = before["A"]
     if oblique:  # a single body's components
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
@@ -188,6 +200,24 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
 
 
+#: The axes' letters students use: the first (n, x, i) is the line of centres, derive's n.
+AXIS_LETTERS = {"n": "n", "x": "n", "i": "n", "t": "t", "y": "t", "j": "t"}
+
+
+def _components(nm) -> dict[str, sympy.Expr]:
+    """A body's components by its letter and an axis (``A_n``, ``A_x``, ``B_j``: before; primed
+    ``A_n'`` after), and ``u_Ax``, ``v_Ay`` (u before, v after) on x and y axes."""
+    out: dict[str, sympy.Expr] = {}
+    for body in "AB":
+        for letter, c in AXIS_LETTERS.items():
+            out[f"{body}_{letter}"] = getattr(nm, f"{body}1{c}")
+            out[f"{body}_{letter}p"] = getattr(nm, f"{body}2{c}")
+            if letter in "xy":
+                out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
+                out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
+    return out
+
+
 def _post(ctx: Context, body: str) -> sympy.Expr | None:
     nm = ctx.model.nm
     return getattr(nm, f"{body}2n")
@@ -197,6 +227,35 @@ def declaration(line: str) -> bool:
     """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
     line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
     return bool(_DECLARE.match(line) or _POSITIVE.match(line))
+
+
+def declares(r: Relation, first: bool) -> bool:
+    """Whether the relation ``r`` is a declaration: its own text is one, or its line is one and it
+    is the line's first relation (``Positive = away from the cushion.  u = -3.00``: only the first)."""
+    return declaration(" = ".join(r.sides)) or (first and declaration(r.written) and not _POSITIVE.match(r.written))
+
+
+#: Fixed bodies students name in their sign conventions.
+_FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
+_REVERSED = re.compile(
+    rf"revers|opposite|negative|away\s+from\s+{_FIXED}|from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
+    r"|\bb'?s\s+(?:initial\s+)?(?:direction|motion)|direction\s+of\s+b\b",
+    re.I,
+)
+_FORWARD = re.compile(
+    rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
+    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive",
+    re.I,
+)
+
+
+def sign_of(words: str) -> int:
+    """The sign convention a phrase states: -1 reversed (away from the wall, B's direction), +1
+    derive's n (from A toward B, toward the wall, A's direction), 0 where it does not say
+    (up, down, left, right: inferred from the values)."""
+    if _REVERSED.search(words):
+        return -1
+    return 1 if _FORWARD.search(words) else 0
 
 
 def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
@@ -211,6 +270,7 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             out[m.group(1)] = names[m.group(2)][0]
         m = _POSITIVE.match(line)
         if m:
-            words = m.group(1).lower()
-            sign = -1 if re.search(r"revers|opposite|negative|away from the wall|from b toward a|-n\b", words) else 1
+            sign = sign_of(m.group(1).split(".")[0]) or sign
+        elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
+            sign = sign_of(line)
     return out, sign

@@ -1,0 +1,164 @@
+"""Reading a student's correct work as a teacher reads it (issue #31 items 1-3): vectors in i, j
+(and ê_n, ê_t, component pairs), names of components by the body's letter, words around the
+mathematics, a chain of lines whose middle side is words, conventions declared in prose.
+
+Values worked by hand: OCR M3 June 2007 Q4 (mark scheme: a = -4.5, b = 6, speed of A 12.8 m/s at
+111° anticlockwise from i): u_A = 15(0.6)i + 15(0.8)j = 9i + 12j, u_B = -12i; 4a + 3b = 0,
+b - a = 0.5(9 + 12) = 10.5. OCR M3 2006 (A at 4 m/s across the line of centres, B at 4 m/s along
+it toward A, masses 5 and 2, e = 0.75): 5a + 2b = -8, b - a = 3, a = -2, b = 1; A keeps 4 across,
+|v_A| = sqrt(4 + 16) = 4.47, direction 180° - atan(4/2) = 116.6° from x. OCR M2 2014 (2m at 4,
+3m at 2 toward each other, e = 0.4): mu = 6m^2/5m = 1.2m, loss = ½(1.2m)(1 - 0.16)(6^2) = 18.144m;
+KE before ½(2m)16 + ½(3m)4 = 22m. The cushion (0.240 kg, 3.00 m/s in, 2.40 m/s out): e = 0.8.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+from derive.mathtext.reader import read_relations
+from derive.problem.expr import parse
+
+
+def sides(text: str) -> list[tuple[str, ...]]:
+    return [r.sides for r in read_relations(text)]
+
+
+def report(problem: str, work: str) -> derive.checking.report.Report:
+    return derive.check(derive.solve(derive.load(problem)), derivation=work)
+
+
+def statuses(problem: str, work: str) -> list[str]:
+    return [i.status for i in report(problem, work).items]
+
+
+# --- vectors ----------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("u_A = 15(0.6)i + 15(0.8)j = 9i + 12j", [("u_An", "15(0.6)", "9"), ("u_At", "15(0.8)", "12")]),
+        (r"$\mathbf{u}_B = -12\mathbf{i}$", [("u_Bn", "-12"), ("u_Bt", "0")]),
+        (r"$\vec v_{A2} = 3.05\,\hat e_t - 1.12\,\hat e_n$ (m/s).", [("v_A2n", "-1.12"), ("v_A2t", "3.05")]),
+        (r"$v = 2\hat{\imath} - \hat{\jmath}$", [("v_n", "2"), ("v_t", "-1")]),
+        ("After: v_A = ai + 12j", [("v_An", "a"), ("v_At", "12")]),
+        ("A after = -4.5 i + 12 j", [("A_n'", "-4.5"), ("A_t'", "12")]),
+        (r"Before: $A = (0,\; 4)$", [("A_n", "0"), ("A_t", "4")]),
+        ("A has components (4 cos 60°, 4 sin 60°) = (2, 2sqrt(3))", [("4 cos 60°", "2"), ("4 sin 60°", "2sqrt(3)")]),
+    ],
+)
+def test_a_vector_relation_is_one_relation_per_component(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["x = 2pi", "e = (v_B - v_A)/(u_A - u_B)", "theta = atan2(1.11, 3.05)", "5x + 3y = -8", "w = (a)(b)"],
+)
+def test_what_is_not_a_vector_stays_one_relation(text: str) -> None:
+    assert len(sides(text)) == 1
+
+
+def test_a_derivation_in_i_and_j_is_read_and_correct() -> None:
+    work = (
+        "i along the line of centres (A to B), j perpendicular.\n"
+        "Before: u_A = 15(0.6)i + 15(0.8)j = 9i + 12j,  u_B = -12i\n"
+        "After: v_A = ai + 12j, v_B = bi\n"
+        "4(9) + 3(-12) = 4a + 3b\n"
+        "b - a = 0.5(9 + 12) = 10.5\n"
+        "a = -4.5, b = 6\n"
+        "A after = -4.5 i + 12 j\n"
+        "direction 180° - tan^-1(12/4.5) = 111° anticlockwise from i\n"
+    )
+    r = report("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [i.status for i in r.items] == ["correct"] * 7, r.text()
+
+
+# --- names of components, speeds, directions --------------------------------------------
+def test_components_named_by_the_body_letter_and_a_prime_for_after() -> None:
+    work = (
+        "Before: $A = (0, 4)$, $B = (-4, 0)$\n"
+        "5(0) + 2(-4) = 5a + 2b\n"
+        "b - a = 0.75(0 - (-4)) = 3\n"
+        "a = -2, b = 1\n"
+        "A_y' = 4\n"
+        r"$|v_A| = \sqrt{(-2)^2 + 4^2} = 4.47$" + "\n"
+        r"$\text{direction of } A = 180^\circ - \tan^{-1}(4/2) \approx 117^\circ \text{ from } x$" + "\n"
+    )
+    r = report("ocr-m3-2006-oblique-a-across-centres", work)
+    assert [i.status for i in r.items] == ["correct"] * 7, r.text()
+    slip = "A_y' = 0.75 * 4 = 3\n"  # e applied across the line of centres: a slip, not "not read"
+    assert statuses("ocr-m3-2006-oblique-a-across-centres", slip) == ["wrong"]
+
+
+def test_a_name_for_a_symbolic_given_is_inferred() -> None:
+    # Example 4.C.12: v for the cue ball's speed before (the given v_A1), A_n its n component
+    work = "A_n = v sin 45° = 0.7071v\nA_n' + B_n' = 0.7071v\nB_n' - A_n' = 0.9(0.7071v) = 0.6364v\n"
+    r = report("notes-4c12-cue-ball", work)
+    assert [i.status for i in r.items] == ["correct"] * 3, r.text()
+    assert any("v is v_A1" in n for n in r.notes), r.notes
+
+
+def test_degrees_and_an_inverse_function_add() -> None:
+    deg = parse("180*deg - atan(12/4.5)", {"deg": (derive.checking.context.DEG, (0, 0, 0, 0))}).expr
+    assert abs(float(deg.subs(derive.checking.context.DEG, 3.141592653589793 / 180)) - 1.92964) < 1e-4
+
+
+# --- words around the mathematics -------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("x = 124° from x", ("x", "124°")),
+        ("v = -1.04 m/s (reversed)", ("v", "-1.04")),
+        ("fraction kept = 0.6912/1.08 = 0.64, i.e. 64 %", ("fraction kept", "0.6912/1.08", "0.64")),
+        ("a = -69.4 degrees to i", ("a", "-69.4 degrees")),
+        (r"$\text{angle with the line of centres} = \tan^{-1}(2/3) \approx 33.7^\circ$", ("atan(2/3)", "33.7°")),
+        ("v = -0.3 x 4 = -1.2   (so speed 1.2 m/s)", ("v", "-0.3 x 4", "-1.2")),
+    ],
+)
+def test_words_after_the_last_number_and_words_for_a_side(text: str, expected: tuple) -> None:
+    assert sides(text) == [expected]
+
+
+def test_a_continued_line_after_a_side_in_words_is_judged_from_the_first_side() -> None:
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\n"
+        "loss = 1/2 mu (1 - e^2) (relative speed)^2\n"
+        "     = 1/2 (1.2m)(1 - 0.16)(6^2)\n"
+        "     = 18.144m\n"
+    )
+    r = report("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    lines = {i.name: i.status for i in r.items}
+    assert lines["4"] == "correct" and lines["5"] == "correct", r.text()
+    assert lines.get("3", "not read") == "not read", r.text()
+
+
+def test_a_wrong_energy_before_carries_into_the_loss() -> None:
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\nvA = -1.04, vB = 1.36\n"
+        "KE before = 1/2(2m)(4^2) + 1/2(3m)(2^2) = 16m + 12m = 28m\n"
+        "Loss = 28m - 3.856m = 24.144m\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 3 + ["wrong", "carried"]
+
+
+# --- the sign convention declared in prose ----------------------------------------------
+@pytest.mark.parametrize(
+    ("words", "sign"),
+    [
+        ("I take the direction away from the wall as positive", -1),
+        ("away from the cushion", -1),
+        ("taking A's direction as +ve", 1),
+        ("from A towards B", 1),
+        ("down is positive", 0),
+        ("LEFT as positive", 0),
+    ],
+)
+def test_the_sign_a_phrase_states(words: str, sign: int) -> None:
+    from derive.checking.naming import sign_of
+
+    assert sign_of(words) == sign
+
+
+def test_a_convention_in_prose_and_relations_on_the_same_line() -> None:
+    work = "Positive = away from the cushion.  u = -3.00, v = +2.40\ne = -v/u = 0.800\n"
+    assert statuses("openstax-cp-8-31-billiard-ball-cushion", work) == ["correct", "correct"]
