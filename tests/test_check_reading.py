@@ -162,3 +162,28 @@ def test_the_sign_a_phrase_states(words: str, sign: int) -> None:
 def test_a_convention_in_prose_and_relations_on_the_same_line() -> None:
     work = "Positive = away from the cushion.  u = -3.00, v = +2.40\ne = -v/u = 0.800\n"
     assert statuses("openstax-cp-8-31-billiard-ball-cushion", work) == ["correct", "correct"]
+
+
+# --- chains ----------------------------------------------------------------------------
+# Dropped from 2 m onto the floor, rebounds to 1.4 m (OCR M2 2006): v_1 = sqrt(2 g 2) = 6.261,
+# v_2 = sqrt(2 g 1.4) = 5.238, e = 0.8367, J = 0.3(6.261 + 5.238) = 3.450 N s upwards.
+DROP = "chain-ocr-m2-2006-drop-rebound"
+
+
+def test_a_chain_name_in_words_and_a_name_of_the_students_own_are_inferred() -> None:
+    work = (
+        "taking downwards as positive\n"
+        "velocity after = -5.24 m/s (upwards)\n"
+        "impulse = m(v - u) = 0.3(-5.24 - 6.26) = -3.45 N s\n"
+        "0 = 5.24^2 - 2(9.8)h  =>  h = 1.40\n"
+    )
+    r = report(DROP, work)
+    assert [i.status for i in r.items] == ["correct"] * 3, r.text()
+    assert any("velocity after is u" in n and "impulse is -J" in n for n in r.notes), r.notes
+    assert statuses(DROP, "velocity after = -5.24\nimpulse = 0.3(-5.24 - 6.26) = -3.15\n") == ["correct", "wrong"]
+
+
+def test_a_chain_stage_e_and_a_relation_with_an_inequality_after_it() -> None:
+    # AQA M3 2007: u_A = -0.6, u_B = 3.4 after the first impact; B meets the wall with e = 0.7
+    work = "B hits the wall with e = 0.7\nw_B = -0.7 * 3.4 = -2.38\nw_B = -2.38 < 0 and u_A = -0.6 < 0\n"
+    assert statuses("chain-aqa-m3-2007-collide-again", work) == ["correct"] * 3

@@ -285,6 +285,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if m:
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
     text = _UNIT_BRACKET.sub("", words_after(text))
