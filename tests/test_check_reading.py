@@ -187,3 +187,39 @@ def test_a_chain_stage_e_and_a_relation_with_an_inequality_after_it() -> None:
     # AQA M3 2007: u_A = -0.6, u_B = 3.4 after the first impact; B meets the wall with e = 0.7
     work = "B hits the wall with e = 0.7\nw_B = -0.7 * 3.4 = -2.38\nw_B = -2.38 < 0 and u_A = -0.6 < 0\n"
     assert statuses("chain-aqa-m3-2007-collide-again", work) == ["correct"] * 3
+
+
+# --- names read from the lead-in, from a relation, from the shape of the equations -----------
+# OCR FM 2023 (discs of 5 and 3 kg; A at 4 m/s at 60° to the line of centres, B at 6 m/s along it
+# toward A; e = 3/4): A's components 4 cos 60° = 2 along, 2√3 across; 5x + 3y = -8, y - x = 6.
+DISCS = "ocr-fm-2023-oblique-discs-60deg"
+
+
+def test_a_bodys_lead_in_gives_its_names_the_body() -> None:
+    work = "A: u_x = 4cos(60°) = 2, u_y = 4sin(60°) = 2sqrt(3); B: u_x = -6\nB before: along = -6\n"
+    r = report(DISCS, work)
+    assert [i.status for i in r.items] == ["correct", "correct"], r.text()
+    assert statuses(DISCS, "B before: along = -5\n") == ["wrong"]
+
+
+def test_a_name_set_equal_to_one_of_derives_stands_for_it() -> None:
+    # Example 4.C.11 with one t velocity for both spheres (a slip): v_t is read, not "not read"
+    work = "20(3.05) + 5(-9.15) = 25 v_t\nv_t = 0.61 = v_A2t = v_B2t\n"
+    r = report("notes-4c11-two-spheres", work)
+    assert "not read" not in [i.status for i in r.items], r.text()
+    assert any("v_t is v_A2t" in n for n in r.notes), r.notes
+
+
+def test_names_after_a_slip_are_read_by_the_shape_of_their_equations() -> None:
+    # sin and cos swapped (A along = 4 sin 60° = 3.46): every x, y line after it is false for
+    # the problem, yet 5x + 3y is (3) and y - x is (4) in shape, so x and y are A's and B's
+    work = (
+        "A before: along = 4 sin 60 = 3.46\n"
+        "5(3.46) + 3(-6) = 5x + 3y, so 5x + 3y = -0.7\n"
+        "y - x = 0.75(3.46 + 6) = 7.10\n"
+        "8x = -0.7 - 21.3 = -22.0\n"
+        "x = -2.75, y = 4.35\n"
+    )
+    r = report(DISCS, work)
+    assert [i.status for i in r.items] == ["wrong"] + ["carried"] * 4, r.text()
+    assert any("x is v_A2n, y is v_B2n" in n for n in r.notes), r.notes

@@ -17,7 +17,17 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.naming import PREFIX, Open, common_velocity, declarations, declares, habits, read_side, rewrite
+from derive.checking.naming import (
+    PREFIX,
+    Open,
+    common_velocity,
+    declarations,
+    declares,
+    habits,
+    of_the_body,
+    read_side,
+    rewrite,
+)
 from derive.checking.numeric import number_of
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -44,27 +54,49 @@ class Read:
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
 
 
-def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
-    """The relations of ``text`` in the problem's symbols, and what was inferred (sentences)."""
+def read_lines(
+    ctx: Context, text: str, pt: dict, truth: dict, equations: tuple[sympy.Expr, ...] = ()
+) -> tuple[list[Read], list[str]]:
+    """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
+    ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
     every = read_relations(text)
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
-    rewritten = [tuple(rewrite(s, known) for s in r.sides) for r in relations]
+    rewritten = [tuple(rewrite(of_the_body(s, r.label), known) for s in r.sides) for r in relations]
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     defs = _definitions(raw, meanings)
+    equated = _equated(raw, meanings, defs)
+    defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
     signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, raw, meanings, defs, sg, pt, truth), sg) for sg in signs), key=lambda c: c[0]
+        ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
     lines = [_resolved(r, mapping) for r in raw]
-    return lines, _notes(meanings, declared, inferred, s, sign)
+    said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
+    return lines, _notes(meanings, declared, inferred, s, sign) + (
+        [f"Read from the relations: {', '.join(said)}."] if said else []
+    )
+
+
+def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:
+    """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's
+    names, side by side in a relation, stands for it."""
+    out: dict[sympy.Symbol, sympy.Symbol] = {}
+    for r in raw:
+        bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
+        theirs = [e for e in bare if e.name.startswith(PREFIX) and e.name[1:] not in meanings and e not in defs]
+        ours = [e for e in bare if not e.name.startswith(PREFIX)]
+        for p in theirs:
+            if ours and p not in out:
+                out[p] = ours[0]
+    return out
 
 
 def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
@@ -148,15 +180,18 @@ def _infer(
     defs: dict[sympy.Symbol, sympy.Expr],
     sign: int,
     pt: dict,
-    truth: dict,
+    known: tuple[dict, tuple[sympy.Expr, ...]],
 ) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
-    """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign."""
+    """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign; ``known``
+    is the true velocities and the equations (1)-(4)."""
+    truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
+    shapes = _Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
@@ -176,19 +211,80 @@ def _infer(
             itertools.product(cands, repeat=len(group)),
             key=lambda combo: (
                 _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
+                + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
                 + _natural(group, combo)
             ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
-        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + need:
+        fit = _score(pairs, trial, ctx, pt, truth) + shapes.score(trial)
+        if fit < _score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping) + need:
             continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+class _Shapes:
+    """The relations in the student's names whose terms in the unknowns are those of one of
+    (1)-(4) up to a factor, whatever their numbers (``5x + 3y = -0.7`` after a slip is (3) in
+    its shape): a name is read by the equations it stands in, not only by the values."""
+
+    #: A shape counts for less than a relation that holds (and not at all where it holds too).
+    WEIGHT = 0.4
+
+    def __init__(self, ctx: Context, raw: list[Read], pt: dict, truth: dict, equations) -> None:
+        self.ctx, self.pt, self.U, self.truth = ctx, pt, tuple(truth), truth
+        self.targets = [c for c in (_linear_part(e.xreplace(pt), self.U) for e in equations) if c and len(c) >= 2]
+        self.diffs = [
+            ctx.in_unknowns(r.exprs[i] - r.exprs[i + 1]).xreplace(pt)
+            for r in raw
+            if r.exprs and not r.defines
+            for i in range(len(r.exprs) - 1)
+            if _placeholders(r.exprs[i]) | _placeholders(r.exprs[i + 1])
+        ]
+
+    def score(self, mapping: dict) -> float:
+        if not self.targets:
+            return 0.0
+        subs = {k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in mapping.items()}
+        n = 0
+        for d in self.diffs:
+            c = _linear_part(d.xreplace(subs), self.U)
+            if c and any(_alike(c, t) for t in self.targets) and not self._holds(d.xreplace(subs)):
+                n += 1  # two unknowns or more: (3), (4)
+        return self.WEIGHT * n
+
+    def _holds(self, d: sympy.Expr) -> bool:
+        terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
+        if any(t is None for t in terms):
+            return False
+        return abs(sum(terms)) <= 0.01 * max([abs(t) for t in terms] + [1e-12])
+
+
+def _linear_part(expr: sympy.Expr, U: tuple) -> dict | None:
+    """The coefficients of ``expr``'s terms in the unknowns (its constant left out)."""
+    if expr.free_symbols - set(U) or not expr.free_symbols:
+        return None
+    out = {}
+    for m, c in sympy.expand(expr).as_coefficients_dict().items():
+        x = number_of(c)
+        if x is None:
+            return None
+        if m != 1 and abs(x) > 1e-12:
+            out[m] = x
+    return out
+
+
+def _alike(a: dict, b: dict) -> bool:
+    if set(a) != set(b):
+        return False
+    key = next(iter(b))
+    ratio = a[key] / b[key]
+    return all(abs(a[m] - ratio * b[m]) <= 2e-3 * abs(ratio * b[m]) for m in b)
 
 
 def _natural(group: list[sympy.Symbol], combo: tuple) -> float:

@@ -116,6 +116,26 @@ def rewrite(text: str, known: set[str]) -> str:
     return _NAME.sub(split, notes_names(text))
 
 
+_BODY = re.compile(
+    r"^(?:(?:for|sphere|ball|particle|disc|body|puck)\s+)?([AB])(?:'s)?(?:\s+(before|after|initially|finally))?$", re.I
+)
+
+
+def of_the_body(text: str, label: str) -> str:
+    """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
+    its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
+    (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
+    m = _BODY.match(label.strip())
+    if not m:
+        return text
+    body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
+    text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
+    text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
+    prime = "'" if after else ""
+    text = re.sub(r"\balong\b", f"{body}_n{prime}", text, flags=re.I)
+    return re.sub(r"\b(?:across|perpendicular)\b", f"{body}_t{prime}", text, flags=re.I)
+
+
 def notes_names(text: str) -> str:
     """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
     ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""

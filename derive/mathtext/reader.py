@@ -38,6 +38,7 @@ class Relation:
     sides: tuple[str, ...]
     tag: str = ""
     lead: str = ""  # a line that continues a relation (``  = 6.4``): the first side of that relation
+    label: str = ""  # the words before a colon that lead in (``B before: along = -6``), on the line so far
 
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
@@ -83,6 +84,8 @@ def read_relations(text: str) -> tuple[Relation, ...]:
         for part in split_relations(plain):
             r = relation(line, column, written, part)
             r = replace(r, lead=lead) if r is not None and lead else r
+            if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
+                r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
             for sides in split_vectors(r.sides) if r is not None else ():
                 out.append(replace(r, sides=sides))
                 if len(out) >= MAX_RELATIONS:
@@ -280,7 +283,9 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
-    text = _LEAD.sub("", text.strip())
+    m = _LEAD.match(text.strip())
+    label = m.group(0).strip().rstrip(":").strip() if m and ":" in m.group(0) else ""
+    text = text.strip()[m.end() :] if m else text.strip()
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
@@ -294,4 +299,4 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         sides = tuple(s for s in sides if re.search(r"[A-Za-z0-9]", s))
         if len(sides) < 2:
             return None
-    return Relation(line, column, written, sides, tag)
+    return Relation(line, column, written, sides, tag, label=label)
