@@ -223,3 +223,40 @@ def test_names_after_a_slip_are_read_by_the_shape_of_their_equations() -> None:
     r = report(DISCS, work)
     assert [i.status for i in r.items] == ["wrong"] + ["carried"] * 4, r.text()
     assert any("x is v_A2n, y is v_B2n" in n for n in r.notes), r.notes
+
+
+# --- notation typed with a keyboard's own signs ------------------------------------------------
+# Spheres meet head-on at 5 m/s each, 2 kg and 1 kg, e = 0.8: v_A = -1, v_B = 7; KE 37.5 J before,
+# 25.5 J after, 12 J lost; the impulse on B is 1(7 + 5) = 12 N s.
+MEET = "ocr-m2-2006-spheres-meet-at-5-ke-lost"
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "2(5) + 1(-5) = 2v₁ + v₂\nv₂ - v₁ = 0.8(5 - (-5)) = 8\n",  # Unicode subscripts
+        "2(5) + 1(-5) = 2u_A' + u_B'\nu_A' = -1, u_B' = 7\n",  # primes: after
+        "v_A = 5, v_B = -5\nv_B' - v_A' = 0.8(v_A - v_B) = 8\n",  # v_A and v_A': v_A is before
+        "V_A = -1, V_B = 7\n",  # capital V after
+        "KE lost = ½(2)(5²) + ½(1)(5²) − [½(2)(1²) + ½(1)(7²)] = 37.5 − 25.5 = 12 J\n",  # ½, [ ]
+        "Loss in K.E. = 12 J\n",
+        "Impulse on B = 1(7 - (-5)) = 12 Ns\nI = 12 N s\n",  # I for the impulse; "on B" is not a name
+    ],
+)
+def test_keyboard_notation_is_read(work: str) -> None:
+    r = report(MEET, work)
+    assert r.items and all(i.status == "correct" for i in r.items), r.text()
+
+
+def test_a_function_glued_to_its_angle_and_t_components_named_like_n() -> None:
+    # Example 4.C.11 (the notes: 3.96, 3.05, -11.9, -9.15; -1.11 and 8.40 after along n)
+    work = (
+        "A: 5cos37.6° = 3.96 along n, 5sin37.6° = 3.05 along t\n"
+        "20(3.96) + 5(-11.9) = 20v_An + 5v_Bn\n"
+        "v_Bn - v_An = 0.6(3.96 + 11.9) = 9.52\n"
+        "v_An = -1.11, v_Bn = 8.40\n"
+        "v_At = 3.05, v_Bt = -9.15\n"
+    )
+    r = report("notes-4c11-two-spheres", work)
+    assert [i.status for i in r.items] == ["correct"] * 5, r.text()
+    assert any("v_At is v_A2t" in n for n in r.notes), r.notes

@@ -224,8 +224,26 @@ def _infer(
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what
+    _by_analogy(unknown, mapping, inferred, {c[1]: c[0] for c in cands})
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: dict) -> None:
+    """A name still unknown whose n component was read (``v_At`` where ``v_An`` is v_A2n) is
+    the same velocity's t component (and the other way round)."""
+    swap = {"n": "t", "t": "n"}
+    for p in unknown:
+        twin = sympy.Symbol(p.name[:-1] + swap.get(p.name[-1], "?"))
+        e = mapping.get(twin)
+        if p in mapping or e is None or p.name[-1] not in swap:
+            continue
+        sign, sym = (-1, -e) if isinstance(-e, sympy.Symbol) else (1, e)
+        if isinstance(sym, sympy.Symbol) and sym.name.endswith(swap[p.name[-1]]):
+            other = sympy.Symbol(sym.name[:-1] + p.name[-1], **sym.assumptions0)
+            if other in named:
+                mapping[p] = sign * other
+                inferred[p.name[1:]] = named.get(sign * other, other.name)
 
 
 class _Shapes:
@@ -290,6 +308,8 @@ def _alike(a: dict, b: dict) -> bool:
 def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
     """A bonus for the natural reading of two names met together (x, y; a, b; p, q): the first
     is A's, the second B's; it takes two more relations holding to read them the other way."""
+    if len(group) == 1 and group[0].name[1:] in ("I", "J", "J_n", "Imp") and combo[0][0] in ("J_n", "-J_n"):
+        return 1.0  # I or J for the impulse: one relation is enough
     if len(group) != 2:
         return 0.0
     first, second = (str(c[1]) for c in combo)

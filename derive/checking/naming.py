@@ -95,10 +95,15 @@ GREEK = frozenset({"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", 
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
+    text = re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", _subscript, text)  # v₁ -> v_1, v_A₂ -> v_A2
+    text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = re.sub(r"\b([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text)
+    text = re.sub(
+        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
+    )
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
     text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
@@ -136,6 +141,11 @@ def of_the_body(text: str, label: str) -> str:
     return re.sub(r"\b(?:across|perpendicular)\b", f"{body}_t{prime}", text, flags=re.I)
 
 
+def _subscript(m: re.Match) -> str:
+    digits = m.group(2).translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
+    return m.group(1) + ("" if "_" in m.group(1) else "_") + digits
+
+
 def notes_names(text: str) -> str:
     """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
     ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""
@@ -165,6 +175,8 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
         if last and not first and not re.fullmatch(r"(?:[A-Za-z\s,.;:'’]|(?<=[A-Za-z])-(?=[A-Za-z]))+", " ".join(cut)):
             continue  # "(relative speed)^2": words inside the mathematics are not trimmed
         piece = " ".join(piece)
+        if piece.strip() in ("A", "B"):
+            continue  # "Impulse on B = …": the body, not a name
         try:
             return parse(student(piece), names).expr
         except ParseError:
@@ -191,8 +203,13 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     for body, one in (("A", "1"), ("B", "2")):
         for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
             out[spelled] = before[body]
-        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
+        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}", f"V_{body}"):
             out[spelled] = after[body]  # the A-level habit (u before, v after), u's written or not
+        for spelled in (f"u_{body}p", f"v_{body}p", f"u_{one}p", f"v_{one}p", f"u{one}_p", f"v{one}_p"):
+            out[spelled] = after[body]  # primed: after the impact
+        for plain, primed in ((f"v_{body}", f"v_{body}p"), (f"v_{one}", f"v_{one}p"), (f"v{one}", f"v{one}_p")):
+            if used is not None and primed in used:
+                out[plain] = before[body]  # v_A and v_A': v_A is the velocity before
         out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
         if oblique:
             for c in "nt":
