@@ -119,6 +119,11 @@ def test_words_after_the_last_number_and_words_for_a_side(text: str, expected: t
     assert sides(text) == [expected]
 
 
+def test_a_speed_at_an_angle_is_two_relations() -> None:
+    text = "|v_A| = sqrt(1.108^2 + 3.051^2) = 3.246 m/s at tan^-1(3.051/1.108) = 70.0° to the line of centres"
+    assert sides(text) == [("|v_A|", "sqrt(1.108^2 + 3.051^2)", "3.246"), ("tan^-1(3.051/1.108)", "70.0°")]
+
+
 def test_a_continued_line_after_a_side_in_words_is_judged_from_the_first_side() -> None:
     work = (
         "2vA + 3vB = 2\nvB - vA = 2.4\n"
