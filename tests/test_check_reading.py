@@ -265,3 +265,35 @@ def test_a_function_glued_to_its_angle_and_t_components_named_like_n() -> None:
     r = report("notes-4c11-two-spheres", work)
     assert [i.status for i in r.items] == ["correct"] * 5, r.text()
     assert any("v_At is v_A2t" in n for n in r.notes), r.notes
+
+
+# --- more names students give ------------------------------------------------------------------
+def test_definitions_after_with_a_common_velocity_v_cm_and_a_as_after() -> None:
+    # MEI FMM 2023 (0.5 kg at 6 m/s catches 2 kg at 2 m/s; A moves back at 0.2): v = 3.55,
+    # e = 3.75/4 = 0.9375; KE lost = ½ (0.4)(1 - 0.9375²)(4²) = 0.388 J (reduced mass 1/2.5 = 0.4)
+    work = (
+        "A after = -0.2 m/s\n"
+        "0.5(6) + 2(2) = 0.5(-0.2) + 2v  so  v = 3.55\n"
+        "e = (3.55 - (-0.2))/(6 - 2) = 0.9375\n"
+        "KE lost = 1/2 mu (1 - e^2) w^2 with mu = (0.5 x 2)/2.5 = 0.4 and w = 4 (closing speed)\n"
+        "     = 0.2 x (1 - 0.9375^2) x 16 = 0.388 J\n"
+    )
+    r = report("ocr-mei-fmm-2023-a-speed-0p2-backward", work)
+    assert [i.status for i in r.items] == ["correct"] * 5, r.text()
+    # satellites 4000 kg at 0.250 m/s and 7500 kg at rest: V_cm = 1000/11500 = 0.08696
+    cm = "V_{cm} = (4000(0.250) + 7500(0))/(4000 + 7500) = 0.08696\nv_1' = 2(0.08696) - 0.250 = -0.0761\n"
+    assert statuses("openstax-cp-8-satellites-elastic", cm) == ["correct", "correct"]
+
+
+def test_mu_is_m_times_u_where_m_and_u_are_given_and_a_slow_slip_is_bounded() -> None:
+    # CIE 2014: m at u hits 9m at rest, half the KE lost: x + 9y = u, y - x = eu; (1 - 9e)² +
+    # 9(1 + e)² = 50 (written 25, a slip): the report comes, in seconds, and x, y are read
+    work = "mu = mx + 9my  =>  x + 9y = u\ny - x = eu\nx^2 + 9y^2 = u^2/2\n(1 - 9e)^2 + 9(1 + e)^2 = 25\n"
+    r = report("cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost", work)
+    assert [i.status for i in r.items] == ["correct"] * 3 + ["wrong"], r.text()
+
+
+def test_words_after_a_unit_and_v_for_a_common_velocity_after() -> None:
+    # goalie 70.0 kg catches a 0.150 kg puck at 35.0 m/s: v = 5.25/70.15 = 0.0748 m/s
+    work = "0.150 x 35.0 = (0.150 + 70.0) V\nV = 0.0748 m/s\n91.9 - 0.196 = 91.7 J  ok\n"
+    assert statuses("openstax-cp-8-5-goalie-catches-puck", work) == ["correct"] * 3

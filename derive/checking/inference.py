@@ -18,6 +18,7 @@ import sympy
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import (
+    GREEK,
     PREFIX,
     Open,
     common_velocity,
@@ -63,14 +64,15 @@ def read_lines(
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
-    known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
+    lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
+    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
     rewritten = [tuple(rewrite(of_the_body(s, r.label), known) for s in r.sides) for r in relations]
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
-    defs = _definitions(raw, meanings)
+    defs = _definitions(raw, meanings, [r.aside for r in relations])
     equated = _equated(raw, meanings, defs)
     defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
@@ -134,9 +136,12 @@ def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
     return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
 
 
-def _definitions(raw: list[Read], meanings: dict[str, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+def _definitions(
+    raw: list[Read], meanings: dict[str, sympy.Expr], asides: list[bool]
+) -> dict[sympy.Symbol, sympy.Expr]:
     """``v_G = (m_A u_A + m_B u_B)/(m_A + m_B)``: a name first met alone on the left of a
-    relation whose right side uses only names with a meaning (and some name): defined."""
+    relation whose right side uses only names with a meaning (and some name): defined; so is
+    a Greek name or one after "with" (``with mu = 0.4 and w = 4``) by its number."""
     seen: set[sympy.Symbol] = set()
     defs: dict[sympy.Symbol, sympy.Expr] = {}
     for i, r in enumerate(raw):
@@ -146,7 +151,7 @@ def _definitions(raw: list[Read], meanings: dict[str, sympy.Expr]) -> dict[sympy
         if left.is_Symbol and left.name.startswith(PREFIX) and left not in seen and left.name[1:] not in meanings:
             right = r.exprs[1].xreplace(defs)
             open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
-            if right.free_symbols and not open_:
+            if (right.free_symbols or asides[i] or left.name[1:] in GREEK) and not open_:
                 defs[left] = right
                 raw[i] = Read(r.number, r.written, r.sides, r.tag, r.exprs, defines=left.name[1:])
         for e in r.exprs:

@@ -44,13 +44,15 @@ PHRASES = (
     (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
     (r"\|\s*(?:v_?\(?([AB])2?\)?|([AB])_?p)\s*\|", r"speed_\1\2"),  # |v_A|, |v_(A2)|: A's speed after
     (r"direction\s+of\s+([AB])(?:\s+after)?", r"beta_\g<1>2"),  # from the line of centres (x, i)
+    (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
+    (r"(?<![\w'])([AB])\s+before\b", r"u_\1"),
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 #: Names of the common velocity.
-COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G")
+COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G", "V_cm", "V_CM", "v_com", "V_com", "v_COM", "V_c")
 PREFIX = "?"
 
 
@@ -232,6 +234,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if u_used:
         out["v"] = after["A"]
+    if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
+        out["V"] = out["v_f"] = out["v_2"] = after["A"]
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}

@@ -39,6 +39,7 @@ class Relation:
     tag: str = ""
     lead: str = ""  # a line that continues a relation (``  = 6.4``): the first side of that relation
     label: str = ""  # the words before a colon that lead in (``B before: along = -6``), on the line so far
+    aside: bool = False  # after "with", "where" (``KE = ½ mu w^2 with mu = 0.4``): read before the line's relation
 
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
@@ -54,6 +55,8 @@ _ARROW = re.compile(
     r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at)(?![\w])",
     re.I,
 )
+#: "with", "where": what follows defines the names of the relation before it.
+_ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
@@ -79,10 +82,15 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     for line, column, written, plain in pieces(text):
         lead = ""
         if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
-            plain = f"{out[-1].sides[-1]} {plain}"
-            lead = out[-1].lead or out[-1].sides[0]
-        for part in split_relations(plain):
+            above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
+            plain = f"{above.sides[-1]} {plain}"
+            lead = above.lead or above.sides[0]
+        m = _ASIDE.search(plain)
+        main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
+        parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
+        for part, is_aside in parts:
             r = relation(line, column, written, part)
+            r = replace(r, aside=True) if r is not None and is_aside else r
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
@@ -219,7 +227,7 @@ def _top_level_split(s: str, sep: str) -> list[str]:
     return out
 
 
-_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is)(?![\w(])")
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is|ok|OK|it)(?![\w(])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
 MATH_WORDS = frozenset(
     [
