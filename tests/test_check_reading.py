@@ -297,3 +297,16 @@ def test_words_after_a_unit_and_v_for_a_common_velocity_after() -> None:
     # goalie 70.0 kg catches a 0.150 kg puck at 35.0 m/s: v = 5.25/70.15 = 0.0748 m/s
     work = "0.150 x 35.0 = (0.150 + 70.0) V\nV = 0.0748 m/s\n91.9 - 0.196 = 91.7 J  ok\n"
     assert statuses("openstax-cp-8-5-goalie-catches-puck", work) == ["correct"] * 3
+
+
+def test_a_power_of_a_function_is_read() -> None:
+    from derive.mathtext.notation import student
+
+    assert student("cos^2(alpha) + 9/16 sin^2 alpha") == "cos(alpha)^2+9/16*sin(alpha)^2"
+
+
+def test_a_chain_name_no_value_fits_is_what_its_relation_solves_it_to_be() -> None:
+    # Edexcel M2, three equal particles: A at 7 m/s hits B at rest; p, q after (no stage result
+    # for p); B then hits C and C moves off at 4 m/s: u_B = 2√7 = 5.29 (the chain's values)
+    work = "7m = mp + mq  =>  p + q = 7\nq - p = 7e\nq = 5.29\n"
+    assert statuses("chain-edexcel-m2-three-particles", work) == ["correct"] * 3

@@ -64,7 +64,7 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
                     exprs.append(read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1))
                 except ParseError:
                     words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,3})\s*", s)
-                    if i or not words:
+                    if not words or i == len(r.sides) - 1:
                         raise
                     exprs.append(sympy.Symbol(PREFIX + "_".join(words.group(1).split())))
         except (ParseError, ValueError, TypeError):
@@ -74,18 +74,44 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
 
 
 def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.Expr]:
-    """A name of the student's own (``h``, ``velocity after``) that one of the chain's values,
-    of either sign, makes true in a relation where it is the only unknown: that value."""
+    """A name of the student's own (``h``, ``velocity after``) stands for the chain's value, of
+    either sign, that makes the most relations hold where it is the only unknown; a name no
+    value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
     found: dict[sympy.Symbol, sympy.Expr] = {}
-    cands = [c for s, v in values.items() if v.is_number and v not in (0, 1) for c in (s, -s)]
-    for _r, sides, exprs in read:
+    cands = [c for s, v in values.items() if v.is_number and v != 0 for c in (s, -s)]
+    for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
         for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found), key=str):
-            for c in cands:
-                subs = {**found, p: c}
-                if _holds(ctx, *_known_sides(sides, [x.xreplace(subs) for x in exprs], set()), [{}, values]):
-                    found[p] = c
-                    break
+            alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
+            alone = [a for a in alone if a is not None]
+            score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
+            best = max(cands, key=lambda c: score[c], default=None)
+            if best is not None and score[best]:
+                found[p] = best
+            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p}:
+                roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
+                if roots is not None:
+                    found[p] = roots
     return found
+
+
+def _only(sides, exprs: list, p: sympy.Symbol, found: dict) -> tuple | None:
+    """The sides of a relation where ``p`` is the only unknown (two at least, one with p)."""
+    keep = [k for k, x in enumerate(exprs) if _own(x.xreplace(found)) <= {p}]
+    if len(keep) < 2 or not any(p in _own(exprs[k].xreplace(found)) for k in keep):
+        return None
+    return tuple(sides[k] for k in keep), [exprs[k] for k in keep]
+
+
+def _holds_with(ctx: Context, sides, exprs, subs: dict, values: dict) -> bool | None:
+    return _holds(ctx, *_known_sides(sides, [x.xreplace(subs) for x in exprs], set()), [{}, values])
+
+
+def _solved(difference: sympy.Expr, p: sympy.Symbol) -> sympy.Expr | None:
+    """The one root of a relation linear in ``p`` (None where it is not)."""
+    a, b = difference.diff(p), difference.subs(p, 0)
+    if a.has(p) or a == 0:
+        return None
+    return -b / a
 
 
 def _own(x: sympy.Expr) -> set[sympy.Symbol]:
