@@ -310,3 +310,9 @@ def test_a_chain_name_no_value_fits_is_what_its_relation_solves_it_to_be() -> No
     # for p); B then hits C and C moves off at 4 m/s: u_B = 2√7 = 5.29 (the chain's values)
     work = "7m = mp + mq  =>  p + q = 7\nq - p = 7e\nq = 5.29\n"
     assert statuses("chain-edexcel-m2-three-particles", work) == ["correct"] * 3
+
+
+def test_along_in_prose_before_the_mathematics_is_not_a_name() -> None:
+    # OCR M3 2013: B at 0.6 m/s at 30° to the line of centres, toward A: -0.6 cos 30° = -0.520
+    work = r"B before: along the line $-0.6\cos 30^\circ = -0.520$, across $0.6\sin 30^\circ = 0.3$" + "\n"
+    assert statuses("ocr-m3-2013-b-turns-through-right-angle", work) == ["correct"]

@@ -139,8 +139,11 @@ def of_the_body(text: str, label: str) -> str:
     text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
     text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
     prime = "'" if after else ""
-    text = re.sub(r"\balong\b", f"{body}_n{prime}", text, flags=re.I)
-    return re.sub(r"\b(?:across|perpendicular)\b", f"{body}_t{prime}", text, flags=re.I)
+    if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
+        return f"{body}_n{prime}"
+    if re.fullmatch(r"\s*(?:across|perpendicular)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I):
+        return f"{body}_t{prime}"
+    return text
 
 
 def _subscript(m: re.Match) -> str:
