@@ -316,3 +316,9 @@ def test_along_in_prose_before_the_mathematics_is_not_a_name() -> None:
     # OCR M3 2013: B at 0.6 m/s at 30° to the line of centres, toward A: -0.6 cos 30° = -0.520
     work = r"B before: along the line $-0.6\cos 30^\circ = -0.520$, across $0.6\sin 30^\circ = 0.3$" + "\n"
     assert statuses("ocr-m3-2013-b-turns-through-right-angle", work) == ["correct"]
+
+
+def test_a_chain_side_not_read_in_the_middle_is_left_out() -> None:
+    # OCR M2 2007: thrown down at 21 m/s from 40 m: v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35 m/s
+    work = "v^2 = u^2 + 2as = 21^2 + 2(9.8)(40) = 441 + 784 = 1225\nv = 35 m/s\n"
+    assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "correct"]

@@ -64,12 +64,17 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
                     exprs.append(read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1))
                 except ParseError:
                     words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,3})\s*", s)
+                    if 0 < i < len(r.sides) - 1 and not words:
+                        exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
+                        continue
                     if not words or i == len(r.sides) - 1:
                         raise
                     exprs.append(sympy.Symbol(PREFIX + "_".join(words.group(1).split())))
         except (ParseError, ValueError, TypeError):
             continue
-        out.append((r, r.sides, exprs))
+        sides = tuple(sd for sd, x in zip(r.sides, exprs, strict=True) if x is not None)
+        if len(sides) >= 2:
+            out.append((r, sides, [x for x in exprs if x is not None]))
     return out
 
 
