@@ -26,9 +26,11 @@ def test_every_notation_has_an_example() -> None:
     shown = "".join(work for _p, _e, work in (e.values for e in examples()))
     notations = ("let x", "positive:", "6eu", r"\,", r"\;", r"\quad", "align*", "&", r"\\", "tan^-1(", r"\tan^{-1}")
     notations += (", y = 7", r"\approx", "<!--", "## ", "I take the direction")  # two on a line, prose, heading
+    notations += (r"\mathbf{i}", r"\hat\imath", "A = (0, 4)", "A_y'", "|v_A|", "direction of A", "A after:")  # vectors
+    notations += ("velocity after =", "(m/s)", "anticlockwise from")  # names in words, words after a number
     for notation in notations:
         assert notation in shown, notation
-    assert len(examples()) >= 7
+    assert len(examples()) >= 10
 
 
 @pytest.mark.parametrize(("problem", "expect", "work"), examples())

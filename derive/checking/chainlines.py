@@ -10,6 +10,8 @@ only with the student's own earlier numbers is carried.
 
 from __future__ import annotations
 
+import re
+
 import sympy
 
 from derive.checking.context import Context
@@ -26,32 +28,124 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
     names = Open({s.name: s for s in values})
+    read = _read(text, names)
+    mapping = _infer(ctx, read, values)
     true_defs: dict[sympy.Symbol, sympy.Expr] = {}
     own_defs: dict[sympy.Symbol, sympy.Expr] = {}
     items: list[Item] = []
     slips: list[str] = []
-    for r in read_relations(text):
-        if declaration(r.written):
-            continue
-        try:
-            exprs = [
-                read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1)
-                for i, s in enumerate(r.sides)
-            ]
-        except (ParseError, ValueError, TypeError):
-            continue
+    for r, sides, exprs in read:
+        exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
         if left.is_Symbol and left.name.startswith(PREFIX) and left not in true_defs and len(exprs) > 1:
             true_defs[left] = exprs[1].xreplace(true_defs).xreplace(values)
-            own_defs[left] = sympy.Rational(r.sides[-1]) if _number(r.sides[-1]) else exprs[-1].xreplace(own_defs)
-            exprs = exprs[1:]
-            sides = r.sides[1:]
-        else:
-            sides = r.sides
+            own_defs[left] = sympy.Rational(sides[-1]) if _number(sides[-1]) else exprs[-1].xreplace(own_defs)
+            exprs, sides = exprs[1:], sides[1:]
+        sides, exprs = _known_sides(sides, exprs, set(true_defs))
+        exprs = _of_the_stage(ctx, sides, exprs, values)
         items.append(_verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips))
-        if left.is_Symbol and _number(r.sides[-1]) and len(exprs) > 1:  # the student's value, carried on
-            own_defs[left] = sympy.Rational(r.sides[-1].strip())
-    return merged(items), []
+        if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
+            own_defs[left] = sympy.Rational(sides[-1].strip())
+    said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
+    return merged(items), ["Inferred from the values: " + ", ".join(said) + "."] if said else []
+
+
+def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
+    """Each relation read: its sides and their expressions (a first side in words, ``velocity
+    after = -5.24``, is a name of the student's own)."""
+    out = []
+    for r in read_relations(text):
+        if declaration(r.written):
+            continue
+        exprs = []
+        try:
+            for i, s in enumerate(r.sides):
+                try:
+                    exprs.append(read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1))
+                except ParseError:
+                    words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,3})\s*", s)
+                    if 0 < i < len(r.sides) - 1 and not words:
+                        exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
+                        continue
+                    if not words or i == len(r.sides) - 1:
+                        raise
+                    exprs.append(sympy.Symbol(PREFIX + "_".join(words.group(1).split())))
+        except (ParseError, ValueError, TypeError):
+            continue
+        sides = tuple(sd for sd, x in zip(r.sides, exprs, strict=True) if x is not None)
+        if len(sides) >= 2:
+            out.append((r, sides, [x for x in exprs if x is not None]))
+    return out
+
+
+def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.Expr]:
+    """A name of the student's own (``h``, ``velocity after``) stands for the chain's value, of
+    either sign, that makes the most relations hold where it is the only unknown; a name no
+    value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
+    found: dict[sympy.Symbol, sympy.Expr] = {}
+    cands = [c for s, v in values.items() if v.is_number and v != 0 for c in (s, -s)]
+    for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
+        for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found), key=str):
+            alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
+            alone = [a for a in alone if a is not None]
+            score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
+            best = max(cands, key=lambda c: score[c], default=None)
+            if best is not None and score[best]:
+                found[p] = best
+            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p}:
+                roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
+                if roots is not None:
+                    found[p] = roots
+    return found
+
+
+def _only(sides, exprs: list, p: sympy.Symbol, found: dict) -> tuple | None:
+    """The sides of a relation where ``p`` is the only unknown (two at least, one with p)."""
+    keep = [k for k, x in enumerate(exprs) if _own(x.xreplace(found)) <= {p}]
+    if len(keep) < 2 or not any(p in _own(exprs[k].xreplace(found)) for k in keep):
+        return None
+    return tuple(sides[k] for k in keep), [exprs[k] for k in keep]
+
+
+def _holds_with(ctx: Context, sides, exprs, subs: dict, values: dict) -> bool | None:
+    return _holds(ctx, *_known_sides(sides, [x.xreplace(subs) for x in exprs], set()), [{}, values])
+
+
+def _solved(difference: sympy.Expr, p: sympy.Symbol) -> sympy.Expr | None:
+    """The one root of a relation linear in ``p`` (None where it is not)."""
+    a, b = difference.diff(p), difference.subs(p, 0)
+    if a.has(p) or a == 0:
+        return None
+    return -b / a
+
+
+def _own(x: sympy.Expr) -> set[sympy.Symbol]:
+    return {s for s in x.free_symbols if s.name.startswith(PREFIX)}
+
+
+def _known_sides(sides, exprs: list[sympy.Expr], defined: set) -> tuple[tuple[str, ...], list[sympy.Expr]]:
+    """The sides without a name of the student's own not yet known (``impulse = m(v - u) =
+    0.3(-5.24 - 6.26) = -3.45``: ``m(v - u)`` is left out), where two sides remain."""
+    keep = [k for k, x in enumerate(exprs) if not (_own(x) - defined)]
+    if len(keep) < 2 or len(keep) == len(exprs):
+        return tuple(sides), exprs
+    return tuple(sides[k] for k in keep), [exprs[k] for k in keep]
+
+
+def _of_the_stage(ctx: Context, sides, exprs: list[sympy.Expr], values: dict) -> list[sympy.Expr]:
+    """``e = 0.7`` where the chain's e is 0.8 and its e_wall 0.7: the student's e is the stage's
+    (a given's name with a stage's suffix)."""
+    left = exprs[0]
+    if len(exprs) != 2 or left not in values or _holds(ctx, sides, exprs, [{}, values]) is not False:
+        return exprs
+    for sym in values:
+        if sym.name.startswith(left.name + "_") and _holds(ctx, sides, [sym, exprs[1]], [{}, values]):
+            return [sym, exprs[1]]
+    return exprs
+
+
+def _name(v: sympy.Expr, values: dict) -> str:
+    return f"-{(-v).name}" if isinstance(-v, sympy.Symbol) else str(v)
 
 
 def _number(text: str) -> bool:
@@ -65,12 +159,18 @@ def _number(text: str) -> bool:
 def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
     for i in range(len(exprs) - 1):
         tol = max(literal_tolerance(f"{sides[i]} = {sides[i + 1]}", ctx.data), 1e-9)
-        a, b = (number_of(x.xreplace(subs[0]).xreplace(subs[1]).xreplace(ctx.unit_subs())) for x in exprs[i : i + 2])
+        terms = [[_value(ctx, t, subs) for t in sympy.Add.make_args(x)] for x in exprs[i : i + 2]]
+        a, b = (_value(ctx, x, subs) for x in exprs[i : i + 2])
         if a is None or b is None:
             return None
-        if abs(a - b) > 2 * tol * max(abs(a), abs(b)) + 1e-12:
+        largest = max((abs(t) for side in terms for t in side if t is not None), default=0.0)
+        if abs(a - b) > 2 * tol * max(abs(a), abs(b), largest) + 1e-12:  # 0 = 5.26^2 - 2(9.8)h: at 27.7
             return False
     return True
+
+
+def _value(ctx: Context, x: sympy.Expr, subs: list[dict]) -> complex | None:
+    return number_of(x.xreplace(subs[0]).xreplace(subs[1]).xreplace(ctx.unit_subs()))
 
 
 def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips: list[str]) -> Item:

@@ -17,10 +17,22 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.naming import PREFIX, Open, common_velocity, declaration, declarations, habits, read_side, rewrite
+from derive.checking.naming import (
+    GREEK,
+    PREFIX,
+    Open,
+    common_velocity,
+    declarations,
+    declares,
+    habits,
+    of_the_body,
+    read_side,
+    rewrite,
+)
 from derive.checking.numeric import number_of
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
+from derive.problem.units import VELOCITY
 
 #: The most names inferred together (more are inferred one at a time).
 JOINT = 2
@@ -43,26 +55,50 @@ class Read:
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
 
 
-def read_lines(ctx: Context, text: str, pt: dict, truth: dict) -> tuple[list[Read], list[str]]:
-    """The relations of ``text`` in the problem's symbols, and what was inferred (sentences)."""
-    relations = tuple(r for r in read_relations(text) if not declaration(r.written))
+def read_lines(
+    ctx: Context, text: str, pt: dict, truth: dict, equations: tuple[sympy.Expr, ...] = ()
+) -> tuple[list[Read], list[str]]:
+    """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
+    ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
+    every = read_relations(text)
+    relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
-    known |= {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
-    rewritten = [tuple(rewrite(s, known) for s in r.sides) for r in relations]
+    lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
+    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
+    rewritten = [tuple(rewrite(of_the_body(s, r.label), known) for s in r.sides) for r in relations]
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
-    defs = _definitions(raw, meanings)
+    defs = _definitions(raw, meanings, [r.aside for r in relations])
+    equated = _equated(raw, meanings, defs)
+    defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
     signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, raw, meanings, defs, sg, pt, truth), sg) for sg in signs), key=lambda c: c[0]
+        ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
     lines = [_resolved(r, mapping) for r in raw]
-    return lines, _notes(meanings, declared, inferred, s, sign)
+    said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
+    return lines, _notes(meanings, declared, inferred, s, sign) + (
+        [f"Read from the relations: {', '.join(said)}."] if said else []
+    )
+
+
+def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:
+    """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's
+    names, side by side in a relation, stands for it."""
+    out: dict[sympy.Symbol, sympy.Symbol] = {}
+    for r in raw:
+        bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
+        theirs = [e for e in bare if e.name.startswith(PREFIX) and e.name[1:] not in meanings and e not in defs]
+        ours = [e for e in bare if not e.name.startswith(PREFIX)]
+        for p in theirs:
+            if ours and p not in out:
+                out[p] = ours[0]
+    return out
 
 
 def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
@@ -71,6 +107,8 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
     for b in "AB":
         if f"v_{b}2" in derived and ctx.problem.oblique:
             out[f"speed_{b}"] = derived[f"v_{b}2"][0]
+        elif not ctx.problem.oblique and getattr(ctx.model.nm, f"{b}2n", None) is not None:
+            out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
     return out
 
 
@@ -82,6 +120,10 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             try:
                 exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
             except ParseError:
+                if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
+                    exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
+                    shown = (r.lead, *r.sides[1:])
+                    continue
                 if i or len(sides) < 3:
                     raise
                 shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
@@ -94,9 +136,12 @@ def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
     return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
 
 
-def _definitions(raw: list[Read], meanings: dict[str, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+def _definitions(
+    raw: list[Read], meanings: dict[str, sympy.Expr], asides: list[bool]
+) -> dict[sympy.Symbol, sympy.Expr]:
     """``v_G = (m_A u_A + m_B u_B)/(m_A + m_B)``: a name first met alone on the left of a
-    relation whose right side uses only names with a meaning (and some name): defined."""
+    relation whose right side uses only names with a meaning (and some name): defined; so is
+    a Greek name or one after "with" (``with mu = 0.4 and w = 4``) by its number."""
     seen: set[sympy.Symbol] = set()
     defs: dict[sympy.Symbol, sympy.Expr] = {}
     for i, r in enumerate(raw):
@@ -106,7 +151,7 @@ def _definitions(raw: list[Read], meanings: dict[str, sympy.Expr]) -> dict[sympy
         if left.is_Symbol and left.name.startswith(PREFIX) and left not in seen and left.name[1:] not in meanings:
             right = r.exprs[1].xreplace(defs)
             open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
-            if right.free_symbols and not open_:
+            if (right.free_symbols or asides[i] or left.name[1:] in GREEK) and not open_:
                 defs[left] = right
                 raw[i] = Read(r.number, r.written, r.sides, r.tag, r.exprs, defines=left.name[1:])
         for e in r.exprs:
@@ -124,6 +169,7 @@ def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
     out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
     out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
     out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
+    out += [(g.name, g.symbol) for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
     nm = ctx.model.nm
     zeros = ctx.model.zeros
     out += [
@@ -139,15 +185,18 @@ def _infer(
     defs: dict[sympy.Symbol, sympy.Expr],
     sign: int,
     pt: dict,
-    truth: dict,
+    known: tuple[dict, tuple[sympy.Expr, ...]],
 ) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
-    """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign."""
+    """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign; ``known``
+    is the true velocities and the equations (1)-(4)."""
+    truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
+    shapes = _Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
@@ -167,24 +216,105 @@ def _infer(
             itertools.product(cands, repeat=len(group)),
             key=lambda combo: (
                 _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
+                + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
                 + _natural(group, combo)
             ),
         )
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
-        if _score(pairs, trial, ctx, pt, truth) < _score(pairs, mapping, ctx, pt, truth) + need:
+        fit = _score(pairs, trial, ctx, pt, truth) + shapes.score(trial)
+        if fit < _score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping) + need:
             continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what
+    _by_analogy(unknown, mapping, inferred, {c[1]: c[0] for c in cands})
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: dict) -> None:
+    """A name still unknown whose n component was read (``v_At`` where ``v_An`` is v_A2n) is
+    the same velocity's t component (and the other way round)."""
+    swap = {"n": "t", "t": "n"}
+    for p in unknown:
+        twin = sympy.Symbol(p.name[:-1] + swap.get(p.name[-1], "?"))
+        e = mapping.get(twin)
+        if p in mapping or e is None or p.name[-1] not in swap:
+            continue
+        sign, sym = (-1, -e) if isinstance(-e, sympy.Symbol) else (1, e)
+        if isinstance(sym, sympy.Symbol) and sym.name.endswith(swap[p.name[-1]]):
+            other = sympy.Symbol(sym.name[:-1] + p.name[-1], **sym.assumptions0)
+            if other in named:
+                mapping[p] = sign * other
+                inferred[p.name[1:]] = named.get(sign * other, other.name)
+
+
+class _Shapes:
+    """The relations in the student's names whose terms in the unknowns are those of one of
+    (1)-(4) up to a factor, whatever their numbers (``5x + 3y = -0.7`` after a slip is (3) in
+    its shape): a name is read by the equations it stands in, not only by the values."""
+
+    #: A shape counts for less than a relation that holds (and not at all where it holds too).
+    WEIGHT = 0.4
+
+    def __init__(self, ctx: Context, raw: list[Read], pt: dict, truth: dict, equations) -> None:
+        self.ctx, self.pt, self.U, self.truth = ctx, pt, tuple(truth), truth
+        self.targets = [c for c in (_linear_part(e.xreplace(pt), self.U) for e in equations) if c and len(c) >= 2]
+        self.diffs = [
+            ctx.in_unknowns(r.exprs[i] - r.exprs[i + 1]).xreplace(pt)
+            for r in raw
+            if r.exprs and not r.defines
+            for i in range(len(r.exprs) - 1)
+            if _placeholders(r.exprs[i]) | _placeholders(r.exprs[i + 1])
+        ]
+
+    def score(self, mapping: dict) -> float:
+        if not self.targets:
+            return 0.0
+        subs = {k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in mapping.items()}
+        n = 0
+        for d in self.diffs:
+            c = _linear_part(d.xreplace(subs), self.U)
+            if c and any(_alike(c, t) for t in self.targets) and not self._holds(d.xreplace(subs)):
+                n += 1  # two unknowns or more: (3), (4)
+        return self.WEIGHT * n
+
+    def _holds(self, d: sympy.Expr) -> bool:
+        terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
+        if any(t is None for t in terms):
+            return False
+        return abs(sum(terms)) <= 0.01 * max([abs(t) for t in terms] + [1e-12])
+
+
+def _linear_part(expr: sympy.Expr, U: tuple) -> dict | None:
+    """The coefficients of ``expr``'s terms in the unknowns (its constant left out)."""
+    if expr.free_symbols - set(U) or not expr.free_symbols:
+        return None
+    out = {}
+    for m, c in sympy.expand(expr).as_coefficients_dict().items():
+        x = number_of(c)
+        if x is None:
+            return None
+        if m != 1 and abs(x) > 1e-12:
+            out[m] = x
+    return out
+
+
+def _alike(a: dict, b: dict) -> bool:
+    if set(a) != set(b):
+        return False
+    key = next(iter(b))
+    ratio = a[key] / b[key]
+    return all(abs(a[m] - ratio * b[m]) <= 2e-3 * abs(ratio * b[m]) for m in b)
 
 
 def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
     """A bonus for the natural reading of two names met together (x, y; a, b; p, q): the first
     is A's, the second B's; it takes two more relations holding to read them the other way."""
+    if len(group) == 1 and group[0].name[1:] in ("I", "J", "J_n", "Imp") and combo[0][0] in ("J_n", "-J_n"):
+        return 1.0  # I or J for the impulse: one relation is enough
     if len(group) != 2:
         return 0.0
     first, second = (str(c[1]) for c in combo)

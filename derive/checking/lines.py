@@ -49,7 +49,7 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
-    lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0])
+    lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
@@ -138,12 +138,18 @@ class Trace:
         m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
         if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
             self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
+            last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
+            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
+                self.own[left] = last
 
     def _with_own_values(self, line: Line) -> bool:
         """Whether ``line`` holds with the values the student got wrong earlier put in."""
         if not self.own or not line.exprs:
             return False
-        exprs = tuple(x.xreplace(self.own) for x in line.exprs)
+        d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
+        lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
+        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
         if exprs == line.exprs:
             return False
         return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)

@@ -28,22 +28,31 @@ import sympy
 
 from derive.checking.context import Context
 from derive.mathtext.notation import student
+from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import DIMENSIONLESS
 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
-    (r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+KE|KE\s+loss|lost\s+KE|T_?\(?lost\)?)", "T_lost"),
+    (
+        r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
+        "T_lost",
+    ),
     (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
     (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
     (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"\|\s*(?:v_?\(?([AB])2?\)?|([AB])_?p)\s*\|", r"speed_\1\2"),  # |v_A|, |v_(A2)|: A's speed after
+    (r"direction\s+of\s+([AB])(?:\s+after)?", r"beta_\g<1>2"),  # from the line of centres (x, i)
+    (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
+    (r"(?<![\w'])([AB])\s+before\b", r"u_\1"),
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 #: Names of the common velocity.
-COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G")
+COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G", "V_cm", "V_CM", "v_com", "V_com", "v_COM", "V_c")
 PREFIX = "?"
 
 
@@ -88,10 +97,15 @@ GREEK = frozenset({"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", 
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
+    text = re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", _subscript, text)  # v₁ -> v_1, v_A₂ -> v_A2
+    text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = re.sub(r"\b([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text)
+    text = re.sub(
+        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
+    )
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
     text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
@@ -107,6 +121,34 @@ def rewrite(text: str, known: set[str]) -> str:
         return " ".join(letters) if len(letters) > 1 and all(x in known for x in letters) else word
 
     return _NAME.sub(split, notes_names(text))
+
+
+_BODY = re.compile(
+    r"^(?:(?:for|sphere|ball|particle|disc|body|puck)\s+)?([AB])(?:'s)?(?:\s+(before|after|initially|finally))?$", re.I
+)
+
+
+def of_the_body(text: str, label: str) -> str:
+    """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
+    its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
+    (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
+    m = _BODY.match(label.strip())
+    if not m:
+        return text
+    body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
+    text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
+    text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
+    prime = "'" if after else ""
+    if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
+        return f"{body}_n{prime}"
+    if re.fullmatch(r"\s*(?:across|perpendicular)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I):
+        return f"{body}_t{prime}"
+    return text
+
+
+def _subscript(m: re.Match) -> str:
+    digits = m.group(2).translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
+    return m.group(1) + ("" if "_" in m.group(1) else "_") + digits
 
 
 def notes_names(text: str) -> str:
@@ -134,7 +176,12 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
             raise
     words = text.split()
     for k in range(1, len(words)):
-        piece = " ".join(words[k:] if first and not last else words[:-k] if last and not first else words[k:])
+        cut, piece = (words[-k:], words[:-k]) if last and not first else (words[:k], words[k:])
+        if last and not first and not re.fullmatch(r"(?:[A-Za-z\s,.;:'’]|(?<=[A-Za-z])-(?=[A-Za-z]))+", " ".join(cut)):
+            continue  # "(relative speed)^2": words inside the mathematics are not trimmed
+        piece = " ".join(piece)
+        if piece.strip() in ("A", "B"):
+            continue  # "Impulse on B = …": the body, not a name
         try:
             return parse(student(piece), names).expr
         except ParseError:
@@ -161,8 +208,13 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     for body, one in (("A", "1"), ("B", "2")):
         for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
             out[spelled] = before[body]
-        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}"):
+        for spelled in (f"v_{body}", f"v_{body.lower()}", f"v_{one}", f"v{one}", f"V_{body}"):
             out[spelled] = after[body]  # the A-level habit (u before, v after), u's written or not
+        for spelled in (f"u_{body}p", f"v_{body}p", f"u_{one}p", f"v_{one}p", f"u{one}_p", f"v{one}_p"):
+            out[spelled] = after[body]  # primed: after the impact
+        for plain, primed in ((f"v_{body}", f"v_{body}p"), (f"v_{one}", f"v_{one}p"), (f"v{one}", f"v{one}_p")):
+            if used is not None and primed in used:
+                out[plain] = before[body]  # v_A and v_A': v_A is the velocity before
         out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
         if oblique:
             for c in "nt":
@@ -173,6 +225,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
             out.setdefault(alias, names[name][0])
+    if oblique:
+        out.update(_components(nm))
     out["u"] = before["A"]
     if oblique:  # a single body's components
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
@@ -183,9 +237,29 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if u_used:
         out["v"] = after["A"]
+    if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
+        out["V"] = out["v_f"] = out["v_2"] = after["A"]
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
+
+
+#: The axes' letters students use: the first (n, x, i) is the line of centres, derive's n.
+AXIS_LETTERS = {"n": "n", "x": "n", "i": "n", "t": "t", "y": "t", "j": "t"}
+
+
+def _components(nm) -> dict[str, sympy.Expr]:
+    """A body's components by its letter and an axis (``A_n``, ``A_x``, ``B_j``: before; primed
+    ``A_n'`` after), and ``u_Ax``, ``v_Ay`` (u before, v after) on x and y axes."""
+    out: dict[str, sympy.Expr] = {}
+    for body in "AB":
+        for letter, c in AXIS_LETTERS.items():
+            out[f"{body}_{letter}"] = getattr(nm, f"{body}1{c}")
+            out[f"{body}_{letter}p"] = getattr(nm, f"{body}2{c}")
+            if letter in "xy":
+                out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
+                out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
+    return out
 
 
 def _post(ctx: Context, body: str) -> sympy.Expr | None:
@@ -197,6 +271,35 @@ def declaration(line: str) -> bool:
     """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
     line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
     return bool(_DECLARE.match(line) or _POSITIVE.match(line))
+
+
+def declares(r: Relation, first: bool) -> bool:
+    """Whether the relation ``r`` is a declaration: its own text is one, or its line is one and it
+    is the line's first relation (``Positive = away from the cushion.  u = -3.00``: only the first)."""
+    return declaration(" = ".join(r.sides)) or (first and declaration(r.written) and not _POSITIVE.match(r.written))
+
+
+#: Fixed bodies students name in their sign conventions.
+_FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
+_REVERSED = re.compile(
+    rf"revers|opposite|negative|away\s+from\s+{_FIXED}|from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
+    r"|\bb'?s\s+(?:initial\s+)?(?:direction|motion)|direction\s+of\s+b\b",
+    re.I,
+)
+_FORWARD = re.compile(
+    rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
+    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive",
+    re.I,
+)
+
+
+def sign_of(words: str) -> int:
+    """The sign convention a phrase states: -1 reversed (away from the wall, B's direction), +1
+    derive's n (from A toward B, toward the wall, A's direction), 0 where it does not say
+    (up, down, left, right: inferred from the values)."""
+    if _REVERSED.search(words):
+        return -1
+    return 1 if _FORWARD.search(words) else 0
 
 
 def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
@@ -211,6 +314,7 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             out[m.group(1)] = names[m.group(2)][0]
         m = _POSITIVE.match(line)
         if m:
-            words = m.group(1).lower()
-            sign = -1 if re.search(r"revers|opposite|negative|away from the wall|from b toward a|-n\b", words) else 1
+            sign = sign_of(m.group(1).split(".")[0]) or sign
+        elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
+            sign = sign_of(line)
     return out, sign

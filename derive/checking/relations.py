@@ -69,6 +69,8 @@ def solve_with(
             return None
         eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
         eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
+        if sum(1 for x in eqs if _nonlinear(x, U)) > 1:
+            return None  # two equations of the second degree: SymPy may take minutes, undecided
         try:
             roots = sympy.solve(eqs, list(U), dict=True, rational=False)
         except (NotImplementedError, ValueError, TypeError):
@@ -78,6 +80,11 @@ def solve_with(
             return None
         out.append(roots)
     return out
+
+
+def _nonlinear(expr: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> bool:
+    cf = coefficients(expr, U)
+    return cf is None or any(sum(m) > 1 for m in cf)
 
 
 def linear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:

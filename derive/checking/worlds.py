@@ -5,6 +5,7 @@ alone on a side at its figures (±1 in its last digit)."""
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from decimal import Decimal
@@ -68,13 +69,14 @@ def written_right(u: Decimal, x: sympy.Expr) -> bool:
 
 
 def at_figures(p: Pair, left: complex, right: complex) -> bool:
-    """A side that is a number as written (``= -12``, ``= 20``) is right at its figures
-    (±1 in its last digit): -11.88 is -12 at two figures."""
+    """A side that is a number as written (``= -12``, ``= 20``, ``= 124°``) is right at its
+    figures (±1 in its last digit): -11.88 is -12 at two figures, 123.7° is 124°."""
     for text, other in zip(p.text.split(" = ", 1)[::-1], (left, right), strict=True):
         m = NUMBER_SIDE.match(student(text.strip()))
-        if m and not m.group(3) and abs(other.imag) < 1e-12:
+        if m and abs(other.imag) < 1e-12:
+            value = other.real * 180 / math.pi if m.group(3) == "deg" else other.real  # 124°: in degrees
             try:
-                return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(other.real, 30))
+                return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(value, 30))
             except (ArithmeticError, ValueError):
                 return False
     return False

@@ -76,6 +76,7 @@ def latex_to_plain(tex: str) -> str:
     s = _DROP.sub(" ", s)
     s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
     s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
+    s = _unit_vectors(s)
     for cmd in _WRAPPERS:
         s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
         s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
@@ -90,6 +91,23 @@ def latex_to_plain(tex: str) -> str:
     return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
 
 
+def _unit_vectors(s: str) -> str:
+    """``\\hat{\\imath}``, ``\\hat\\imath``, ``\\hat{x}``, ``\\hat{\\mathbf{i}}`` -> ``i_hat`` (``j_hat``,
+    ``n_hat``, ``t_hat``); ``\\hat e_t``, ``\\hat{e}_n`` -> ``e_t``; ``\\vec v_{A2}``, ``\\mathbf u_A``
+    (a wrapper without braces) -> the name alone."""
+    s = re.sub(r"\\[ij]math(?![A-Za-z])", lambda m: m.group(0)[1], s)
+    letter = r"(?:\\mathbf\s*\{\s*([A-Za-z])\s*\}|\{\s*(?:\\mathbf\s*)?\{?\s*([A-Za-z])\s*\}?\s*\}|\s*([A-Za-z]))"
+
+    def hat(m: re.Match) -> str:
+        c = next(g for g in m.groups() if g)
+        if c == "e":
+            return "e"
+        return {"x": "i", "y": "j"}.get(c, c) + "_hat"
+
+    s = re.sub(r"\\(?:hat|widehat)\s*" + letter, hat, s)
+    return re.sub(r"\\(?:vec|mathbf|bm|boldsymbol|overrightarrow|underline)(?![A-Za-z])\s*(?=[A-Za-z\\])", "", s)
+
+
 def _text(m: re.Match) -> str:
     """``\\text{…}``: a unit or words are dropped; a tag (``m/s (4)``) is kept; a name written
     in it (``\\text{KE}``, ``T_{\\text{lost}}``) is kept as a name."""
@@ -99,6 +117,8 @@ def _text(m: re.Match) -> str:
         return f" {tag.group(0).strip()} "
     if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
         return inner
+    if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
+        return f" {inner} "  # "\text{direction of } A": a name the caller knows
     if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
         return f" {inner} "  # "KE lost": a name the caller knows
     return " "

@@ -27,6 +27,12 @@ _UNICODE = {
     "θ": " theta",
     "β": " beta",
     "√": " sqrt ",
+    "½": "(1/2)",
+    "¼": "(1/4)",
+    "¾": "(3/4)",
+    "⅓": "(1/3)",
+    "[": "(",
+    "]": ")",
 }
 #: ``tan^-1``, ``tan^(-1)``, ``tan^{-1}``, ``tan⁻¹``: the inverse functions.
 _INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\s*\}|-\s*1)|⁻¹)")
@@ -47,9 +53,39 @@ def student(text: str) -> str:
     for sign, plain in _UNICODE.items():
         text = text.replace(sign, plain)
     text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
+    text = function_powers(text)
     text = degree_marks(text)
     text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
     return implicit_products(text)
+
+
+_FUNCTION_POWER = re.compile(r"\b(sin|cos|tan)\s*\^\s*\(?(\d)\)?\s*")
+
+
+def function_powers(text: str) -> str:
+    """``cos^2(alpha)`` (and ``cos^2 alpha``) as ``cos(alpha)^2``: the square of the cosine."""
+    for _ in range(20):
+        m = _FUNCTION_POWER.search(text)
+        if m is None:
+            return text
+        rest = text[m.end() :]
+        if rest.startswith("("):
+            depth, end = 0, None
+            for k, c in enumerate(rest):
+                depth += {"(": 1, ")": -1}.get(c, 0)
+                if depth == 0:
+                    end = k + 1
+                    break
+            if end is None:
+                return text
+            arg = rest[:end]
+        else:
+            word = re.match(r"[A-Za-z][A-Za-z0-9_]*|\d+\.?\d*(?:\s*°)?", rest)
+            if word is None:
+                return text
+            end, arg = word.end(), f"({word.group(0)})"
+        text = f"{text[: m.start()]}{m.group(1)}{arg}^{m.group(2)}{rest[end:]}"
+    return text
 
 
 def degree_marks(text: str) -> str:

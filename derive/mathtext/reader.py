@@ -17,9 +17,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from derive.mathtext.latex import latex_to_plain
+from derive.mathtext.vectors import split_vectors
 
 #: The most relations read from one text.
 MAX_RELATIONS = 400
@@ -36,6 +37,9 @@ class Relation:
     written: str
     sides: tuple[str, ...]
     tag: str = ""
+    lead: str = ""  # a line that continues a relation (``  = 6.4``): the first side of that relation
+    label: str = ""  # the words before a colon that lead in (``B before: along = -6``), on the line so far
+    aside: bool = False  # after "with", "where" (``KE = ½ mu w^2 with mu = 0.4``): read before the line's relation
 
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
@@ -48,9 +52,11 @@ _CLOSE = {
 }
 _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
 _ARROW = re.compile(
-    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and)(?![\w])",
+    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at)(?![\w])",
     re.I,
 )
+#: "with", "where": what follows defines the names of the relation before it.
+_ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
@@ -58,6 +64,12 @@ _UNIT_END = re.compile(
     r"(?:(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph"
     r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
+)
+#: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
+_TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
+#: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
+_UNIT_BRACKET = re.compile(
+    r"\s*\((?=[^()]*[A-Za-z])(?:[\s/*^·.-]|\(\s*-\s*1\s*\)|-?1\b|m|s|kg|N|J|ft|lb|slug)+\)\s*\.?\s*$"
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
@@ -68,12 +80,22 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
     out: list[Relation] = []
     for line, column, written, plain in pieces(text):
+        lead = ""
         if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
-            plain = f"{out[-1].sides[-1]} {plain}"
-        for part in split_relations(plain):
+            above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
+            plain = f"{above.sides[-1]} {plain}"
+            lead = above.lead or above.sides[0]
+        m = _ASIDE.search(plain)
+        main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
+        parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
+        for part, is_aside in parts:
             r = relation(line, column, written, part)
-            if r is not None:
-                out.append(r)
+            r = replace(r, aside=True) if r is not None and is_aside else r
+            r = replace(r, lead=lead) if r is not None and lead else r
+            if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
+                r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
+            for sides in split_vectors(r.sides) if r is not None else ():
+                out.append(replace(r, sides=sides))
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
     return tuple(out)
@@ -137,9 +159,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
     while True:
         m = _OPEN.search(raw, i)
         if m is None:
-            out.append(raw[i:])
+            out.append(_TEX_SPACE.sub(" ", raw[i:]))
             return " ".join(out), None, []
-        out.append(raw[i : m.start()])
+        out.append(_TEX_SPACE.sub(" ", raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
@@ -161,10 +183,23 @@ def split_relations(plain: str) -> list[str]:
     plain = plain.replace("≈", "=")
     plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
-    for chunk in _ARROW.split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
+    for chunk in _arrow_split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
         for piece in _top_level_split(chunk, ";"):
             parts += _comma_split(piece)
     return [p for p in parts if _RELATION.search(p)]
+
+
+def _arrow_split(plain: str) -> list[str]:
+    """``plain`` split at its arrows and words such as "so", outside brackets (``-1.2 (so speed
+    1.2)`` is one piece)."""
+    out, start = [], 0
+    for m in _ARROW.finditer(plain):
+        head = plain[: m.start()]
+        if head.count("(") > head.count(")"):
+            continue
+        out.append(plain[start : m.start()])
+        start = m.end()
+    return [*out, plain[start:]]
 
 
 def _comma_split(piece: str) -> list[str]:
@@ -192,6 +227,62 @@ def _top_level_split(s: str, sep: str) -> list[str]:
     return out
 
 
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is|ok|OK|it)(?![\w(])")
+#: Words that belong to the mathematics (functions, angle units, Greek letters' names).
+MATH_WORDS = frozenset(
+    [
+        "sqrt",
+        "sin",
+        "cos",
+        "tan",
+        "asin",
+        "acos",
+        "atan",
+        "atan2",
+        "log",
+        "exp",
+        "deg",
+        "degree",
+        "degrees",
+        "rad",
+        "radian",
+        "radians",
+        "pi",
+        "theta",
+        "beta",
+        "alpha",
+        "phi",
+        "mu",
+        "lambda",
+        "omega",
+        "gamma",
+        "epsilon",
+        "sigma",
+        "tau",
+        "delta",
+        "psi",
+        "Delta",
+    ]
+)
+
+
+def words_after(text: str) -> str:
+    """A relation without the words after its last number (``= 111° anticlockwise from i``,
+    ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
+    last = text.rfind("=")
+    tail = re.sub(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*[A-Za-z]{3})[^()]*\)\s*\.?\s*)$", "", text[last + 1 :])
+    text = text[: last + 1] + tail  # ", i.e. 64 %", "(reversed)": a remark
+    for m in _WORD.finditer(text, last + 1):
+        if m.group(0) in MATH_WORDS:
+            continue
+        before = text[last + 1 : m.start()].rstrip(" ,;:")
+        unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
+        if re.search(r"\d", before) and re.search(r"[\d°)]$", unitless.rstrip(" ie.")):
+            return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
+        return text
+    return text
+
+
 def relation(line: int, column: int, written: str, text: str) -> Relation | None:
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
@@ -200,14 +291,20 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
-    text = _LEAD.sub("", text.strip())
+    m = _LEAD.match(text.strip())
+    label = m.group(0).strip().rstrip(":").strip() if m and ":" in m.group(0) else ""
+    text = text.strip()[m.end() :] if m else text.strip()
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
+    text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
-    if any(not s for s in sides):
-        return None
-    return Relation(line, column, written, sides, tag)
+    if any(not re.search(r"[A-Za-z0-9]", s) for s in sides):  # "\text{angle with …} = …": words, dropped
+        sides = tuple(s for s in sides if re.search(r"[A-Za-z0-9]", s))
+        if len(sides) < 2:
+            return None
+    return Relation(line, column, written, sides, tag, label=label)

@@ -307,17 +307,16 @@ def function_nesting(expr: sympy.Basic) -> int:
 
 
 def _radians(left: Parsed, right: Parsed) -> tuple[Parsed, Parsed]:
-    """An angle added to a pure number in pi (``pi - pi/3 - leave``): the number is read in
-    radians. Any other sum of different kinds is an error."""
-    dims = {left.dim, right.dim}
-    pure = left if left.dim == DIMENSIONLESS else right
-    if dims == {ANGLE, DIMENSIONLESS} and not pure.expr.free_symbols and pure.expr.has(sympy.pi):
+    """An angle added to a pure number in pi or ``deg`` (``pi - pi/3``, ``180*deg - atan(2)``):
+    the number is read in radians. Any other sum of different kinds is an error."""
+    if {left.dim, right.dim} != {ANGLE, DIMENSIONLESS}:
+        raise ParseError(f"cannot add {describe(left.dim)} and {describe(right.dim)}")
+    pure = (left if left.dim == DIMENSIONLESS else right).expr
+    if {str(s) for s in pure.free_symbols} <= {"deg", "rad"} and pure.has(sympy.pi, *pure.free_symbols):
         return Parsed(left.expr, ANGLE), Parsed(right.expr, ANGLE)
-    if dims == {ANGLE, DIMENSIONLESS}:
-        raise ParseError(
-            "cannot add a pure number and an angle: give the number its unit (120 deg), or write it in pi (2*pi/3)"
-        )
-    raise ParseError(f"cannot add {describe(left.dim)} and {describe(right.dim)}")
+    raise ParseError(
+        "cannot add a pure number and an angle: give the number its unit (120 deg), or write it in pi (2*pi/3)"
+    )
 
 
 def _known(names: Mapping[str, object]) -> str:

@@ -1,0 +1,129 @@
+"""Vectors as students type them, written out as one relation per component.
+
+``u_A = 9i + 12j`` (also ``9\\mathbf{i}``, ``3.05\\,\\hat e_t - 1.12\\,\\hat e_n``, ``î ĵ``) and
+``A = (0, 4)`` or ``(4 cos 60°, 4 sin 60°) = (2, 2√3)`` (a component pair) are vectors: a
+relation between vectors is one relation per component. The first axis (``i``, ``x``,
+``e_n``, the first of a pair) is the line of centres, derive's n, and the second (``j``, ``y``,
+``e_t``) is t. A name standing for a vector gets the axis' letter: ``u_A`` -> ``u_An``,
+``v_A2`` -> ``v_A2n``, ``A`` -> ``A_n``, ``A'`` (after) -> ``A_n'``; ``A after`` is ``A'``.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: Unit vectors, by the component they pick: n (the first axis) or t.
+UNITS = {
+    "i": "n",
+    "i_hat": "n",
+    "e_n": "n",
+    "e_x": "n",
+    "e_1": "n",
+    "n_hat": "n",
+    "j": "t",
+    "j_hat": "t",
+    "e_t": "t",
+    "e_y": "t",
+    "e_2": "t",
+    "t_hat": "t",
+}
+_UNIT = "|".join(sorted((re.escape(u) for u in UNITS), key=len, reverse=True))
+_TERM = re.compile(rf"^(.*?)({_UNIT})$")
+_NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)('*)(?:\s+(before|after))?$")
+AXES = ("n", "t")
+
+
+def split_vectors(sides: tuple[str, ...]) -> list[tuple[str, ...]]:
+    """The relations of ``sides``: one per component where it is a relation between vectors
+    (and ``[sides]`` where it is not)."""
+    parts = [_vector(s) for s in sides]
+    if not any(p is not None for p in parts):
+        return [sides]
+    names = [None if p is not None else _NAME.match(s.strip()) for s, p in zip(sides, parts, strict=True)]
+    if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
+        return [sides]
+    out = []
+    for axis in AXES:
+        row = []
+        for p, n in zip(parts, names, strict=True):
+            row.append(p.get(axis, "0") if p is not None else component_name(n, axis))
+        if any(r != "0" for r in row):
+            out.append(tuple(row))
+    return out or [sides]
+
+
+def component_name(m: re.Match, axis: str) -> str:
+    """The name of a vector's component: ``u_A`` -> ``u_An``, ``A`` -> ``A_n``, ``A'`` -> ``A_n'``."""
+    name, primes, when = m.group(1), m.group(2), m.group(3)
+    if when == "after":
+        primes = primes or "'"
+    base = f"{name}{axis}" if "_" in name else f"{name}_{axis}"
+    return base + primes
+
+
+def _vector(side: str) -> dict[str, str] | None:
+    """A side's components by axis, where it is a vector (a pair or a sum of unit vectors)."""
+    side = re.sub(r"^(?:[A-Za-z]+\s+)+(?=\()", "", side.strip())  # "A has components (2, 3)": the pair
+    pair = _pair(side)
+    if pair is not None:
+        return dict(zip(AXES, pair, strict=True))
+    terms = _terms(side)
+    if not terms:
+        return None
+    out: dict[str, list[str]] = {}
+    for sign, term in terms:
+        m = _TERM.match(term.strip())
+        if m is None:
+            return None
+        coef = m.group(1)
+        if not _coefficient(coef):
+            return None  # "2pi", "v_Ai", "sin": not a coefficient of i
+        coef = coef.strip().rstrip("*").strip() or "1"
+        out.setdefault(UNITS[m.group(2)], []).append(sign + coef)
+    return {axis: _joined(bits) for axis, bits in out.items()}
+
+
+def _coefficient(text: str) -> bool:
+    """Whether ``text`` (what stands before a unit vector) is its coefficient: nothing, or it
+    ends in a digit, a bracket, a space or ``*``, or it is one letter (``ai``: a times i)."""
+    if not text.strip() or re.search(r"[\d)*\s]$", text):
+        return True
+    return re.fullmatch(r"\s*[A-Za-z]", text) is not None
+
+
+def _joined(bits: list[str]) -> str:
+    return " + ".join(bits).replace("+ -", "- ")
+
+
+def _terms(side: str) -> list[tuple[str, str]]:
+    """``3.05 e_t - 1.12 e_n`` -> [("", "3.05 e_t"), ("-", "1.12 e_n")]: the top-level terms."""
+    out: list[tuple[str, str]] = []
+    depth, start, sign = 0, 0, ""
+    for k, c in enumerate(side):
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if c in "+-" and depth == 0 and (k == 0 or side[:k].rstrip()[-1:] not in "*/^(eE"):
+            if side[start:k].strip():
+                out.append((sign, side[start:k].strip()))
+            sign, start = c if c == "-" else "", k + 1
+    if side[start:].strip():
+        out.append((sign, side[start:].strip()))
+    return out
+
+
+def _pair(side: str) -> tuple[str, str] | None:
+    """``(2, 2sqrt(3))`` -> ("2", "2sqrt(3)"); None where the side is not one pair."""
+    if not (side.startswith("(") and side.endswith(")")):
+        return None
+    depth, comma = 0, None
+    for k, c in enumerate(side):
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth == 0 and k < len(side) - 1:
+            return None  # "(a)(b)": not one bracket
+        if c == "," and depth == 1:
+            if comma is not None:
+                return None
+            comma = k
+    if comma is None:
+        return None
+    first, second = side[1:comma].strip(), side[comma + 1 : -1].strip()
+    return (first, second) if first and second else None

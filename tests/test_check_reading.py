@@ -1,0 +1,324 @@
+"""Reading a student's correct work as a teacher reads it (issue #31 items 1-3): vectors in i, j
+(and ê_n, ê_t, component pairs), names of components by the body's letter, words around the
+mathematics, a chain of lines whose middle side is words, conventions declared in prose.
+
+Values worked by hand: OCR M3 June 2007 Q4 (mark scheme: a = -4.5, b = 6, speed of A 12.8 m/s at
+111° anticlockwise from i): u_A = 15(0.6)i + 15(0.8)j = 9i + 12j, u_B = -12i; 4a + 3b = 0,
+b - a = 0.5(9 + 12) = 10.5. OCR M3 2006 (A at 4 m/s across the line of centres, B at 4 m/s along
+it toward A, masses 5 and 2, e = 0.75): 5a + 2b = -8, b - a = 3, a = -2, b = 1; A keeps 4 across,
+|v_A| = sqrt(4 + 16) = 4.47, direction 180° - atan(4/2) = 116.6° from x. OCR M2 2014 (2m at 4,
+3m at 2 toward each other, e = 0.4): mu = 6m^2/5m = 1.2m, loss = ½(1.2m)(1 - 0.16)(6^2) = 18.144m;
+KE before ½(2m)16 + ½(3m)4 = 22m. The cushion (0.240 kg, 3.00 m/s in, 2.40 m/s out): e = 0.8.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+from derive.mathtext.reader import read_relations
+from derive.problem.expr import parse
+
+
+def sides(text: str) -> list[tuple[str, ...]]:
+    return [r.sides for r in read_relations(text)]
+
+
+def report(problem: str, work: str) -> derive.checking.report.Report:
+    return derive.check(derive.solve(derive.load(problem)), derivation=work)
+
+
+def statuses(problem: str, work: str) -> list[str]:
+    return [i.status for i in report(problem, work).items]
+
+
+# --- vectors ----------------------------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("u_A = 15(0.6)i + 15(0.8)j = 9i + 12j", [("u_An", "15(0.6)", "9"), ("u_At", "15(0.8)", "12")]),
+        (r"$\mathbf{u}_B = -12\mathbf{i}$", [("u_Bn", "-12"), ("u_Bt", "0")]),
+        (r"$\vec v_{A2} = 3.05\,\hat e_t - 1.12\,\hat e_n$ (m/s).", [("v_A2n", "-1.12"), ("v_A2t", "3.05")]),
+        (r"$v = 2\hat{\imath} - \hat{\jmath}$", [("v_n", "2"), ("v_t", "-1")]),
+        ("After: v_A = ai + 12j", [("v_An", "a"), ("v_At", "12")]),
+        ("A after = -4.5 i + 12 j", [("A_n'", "-4.5"), ("A_t'", "12")]),
+        (r"Before: $A = (0,\; 4)$", [("A_n", "0"), ("A_t", "4")]),
+        ("A has components (4 cos 60°, 4 sin 60°) = (2, 2sqrt(3))", [("4 cos 60°", "2"), ("4 sin 60°", "2sqrt(3)")]),
+    ],
+)
+def test_a_vector_relation_is_one_relation_per_component(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["x = 2pi", "e = (v_B - v_A)/(u_A - u_B)", "theta = atan2(1.11, 3.05)", "5x + 3y = -8", "w = (a)(b)"],
+)
+def test_what_is_not_a_vector_stays_one_relation(text: str) -> None:
+    assert len(sides(text)) == 1
+
+
+def test_a_derivation_in_i_and_j_is_read_and_correct() -> None:
+    work = (
+        "i along the line of centres (A to B), j perpendicular.\n"
+        "Before: u_A = 15(0.6)i + 15(0.8)j = 9i + 12j,  u_B = -12i\n"
+        "After: v_A = ai + 12j, v_B = bi\n"
+        "4(9) + 3(-12) = 4a + 3b\n"
+        "b - a = 0.5(9 + 12) = 10.5\n"
+        "a = -4.5, b = 6\n"
+        "A after = -4.5 i + 12 j\n"
+        "direction 180° - tan^-1(12/4.5) = 111° anticlockwise from i\n"
+    )
+    r = report("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [i.status for i in r.items] == ["correct"] * 7, r.text()
+
+
+# --- names of components, speeds, directions --------------------------------------------
+def test_components_named_by_the_body_letter_and_a_prime_for_after() -> None:
+    work = (
+        "Before: $A = (0, 4)$, $B = (-4, 0)$\n"
+        "5(0) + 2(-4) = 5a + 2b\n"
+        "b - a = 0.75(0 - (-4)) = 3\n"
+        "a = -2, b = 1\n"
+        "A_y' = 4\n"
+        r"$|v_A| = \sqrt{(-2)^2 + 4^2} = 4.47$" + "\n"
+        r"$\text{direction of } A = 180^\circ - \tan^{-1}(4/2) \approx 117^\circ \text{ from } x$" + "\n"
+    )
+    r = report("ocr-m3-2006-oblique-a-across-centres", work)
+    assert [i.status for i in r.items] == ["correct"] * 7, r.text()
+    slip = "A_y' = 0.75 * 4 = 3\n"  # e applied across the line of centres: a slip, not "not read"
+    assert statuses("ocr-m3-2006-oblique-a-across-centres", slip) == ["wrong"]
+
+
+def test_a_name_for_a_symbolic_given_is_inferred() -> None:
+    # Example 4.C.12: v for the cue ball's speed before (the given v_A1), A_n its n component
+    work = "A_n = v sin 45° = 0.7071v\nA_n' + B_n' = 0.7071v\nB_n' - A_n' = 0.9(0.7071v) = 0.6364v\n"
+    r = report("notes-4c12-cue-ball", work)
+    assert [i.status for i in r.items] == ["correct"] * 3, r.text()
+    assert any("v is v_A1" in n for n in r.notes), r.notes
+
+
+def test_degrees_and_an_inverse_function_add() -> None:
+    deg = parse("180*deg - atan(12/4.5)", {"deg": (derive.checking.context.DEG, (0, 0, 0, 0))}).expr
+    assert abs(float(deg.subs(derive.checking.context.DEG, 3.141592653589793 / 180)) - 1.92964) < 1e-4
+
+
+# --- words around the mathematics -------------------------------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("x = 124° from x", ("x", "124°")),
+        ("v = -1.04 m/s (reversed)", ("v", "-1.04")),
+        ("fraction kept = 0.6912/1.08 = 0.64, i.e. 64 %", ("fraction kept", "0.6912/1.08", "0.64")),
+        ("a = -69.4 degrees to i", ("a", "-69.4 degrees")),
+        (r"$\text{angle with the line of centres} = \tan^{-1}(2/3) \approx 33.7^\circ$", ("atan(2/3)", "33.7°")),
+        ("v = -0.3 x 4 = -1.2   (so speed 1.2 m/s)", ("v", "-0.3 x 4", "-1.2")),
+    ],
+)
+def test_words_after_the_last_number_and_words_for_a_side(text: str, expected: tuple) -> None:
+    assert sides(text) == [expected]
+
+
+def test_a_speed_at_an_angle_is_two_relations() -> None:
+    text = "|v_A| = sqrt(1.108^2 + 3.051^2) = 3.246 m/s at tan^-1(3.051/1.108) = 70.0° to the line of centres"
+    assert sides(text) == [("|v_A|", "sqrt(1.108^2 + 3.051^2)", "3.246"), ("tan^-1(3.051/1.108)", "70.0°")]
+
+
+def test_a_continued_line_after_a_side_in_words_is_judged_from_the_first_side() -> None:
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\n"
+        "loss = 1/2 mu (1 - e^2) (relative speed)^2\n"
+        "     = 1/2 (1.2m)(1 - 0.16)(6^2)\n"
+        "     = 18.144m\n"
+    )
+    r = report("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    lines = {i.name: i.status for i in r.items}
+    assert lines["4"] == "correct" and lines["5"] == "correct", r.text()
+    assert lines.get("3", "not read") == "not read", r.text()
+
+
+def test_a_wrong_energy_before_carries_into_the_loss() -> None:
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\nvA = -1.04, vB = 1.36\n"
+        "KE before = 1/2(2m)(4^2) + 1/2(3m)(2^2) = 16m + 12m = 28m\n"
+        "Loss = 28m - 3.856m = 24.144m\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 3 + ["wrong", "carried"]
+
+
+# --- the sign convention declared in prose ----------------------------------------------
+@pytest.mark.parametrize(
+    ("words", "sign"),
+    [
+        ("I take the direction away from the wall as positive", -1),
+        ("away from the cushion", -1),
+        ("taking A's direction as +ve", 1),
+        ("from A towards B", 1),
+        ("down is positive", 0),
+        ("LEFT as positive", 0),
+    ],
+)
+def test_the_sign_a_phrase_states(words: str, sign: int) -> None:
+    from derive.checking.naming import sign_of
+
+    assert sign_of(words) == sign
+
+
+def test_a_convention_in_prose_and_relations_on_the_same_line() -> None:
+    work = "Positive = away from the cushion.  u = -3.00, v = +2.40\ne = -v/u = 0.800\n"
+    assert statuses("openstax-cp-8-31-billiard-ball-cushion", work) == ["correct", "correct"]
+
+
+# --- chains ----------------------------------------------------------------------------
+# Dropped from 2 m onto the floor, rebounds to 1.4 m (OCR M2 2006): v_1 = sqrt(2 g 2) = 6.261,
+# v_2 = sqrt(2 g 1.4) = 5.238, e = 0.8367, J = 0.3(6.261 + 5.238) = 3.450 N s upwards.
+DROP = "chain-ocr-m2-2006-drop-rebound"
+
+
+def test_a_chain_name_in_words_and_a_name_of_the_students_own_are_inferred() -> None:
+    work = (
+        "taking downwards as positive\n"
+        "velocity after = -5.24 m/s (upwards)\n"
+        "impulse = m(v - u) = 0.3(-5.24 - 6.26) = -3.45 N s\n"
+        "0 = 5.24^2 - 2(9.8)h  =>  h = 1.40\n"
+    )
+    r = report(DROP, work)
+    assert [i.status for i in r.items] == ["correct"] * 3, r.text()
+    assert any("velocity after is u" in n and "impulse is -J" in n for n in r.notes), r.notes
+    assert statuses(DROP, "velocity after = -5.24\nimpulse = 0.3(-5.24 - 6.26) = -3.15\n") == ["correct", "wrong"]
+
+
+def test_a_chain_stage_e_and_a_relation_with_an_inequality_after_it() -> None:
+    # AQA M3 2007: u_A = -0.6, u_B = 3.4 after the first impact; B meets the wall with e = 0.7
+    work = "B hits the wall with e = 0.7\nw_B = -0.7 * 3.4 = -2.38\nw_B = -2.38 < 0 and u_A = -0.6 < 0\n"
+    assert statuses("chain-aqa-m3-2007-collide-again", work) == ["correct"] * 3
+
+
+# --- names read from the lead-in, from a relation, from the shape of the equations -----------
+# OCR FM 2023 (discs of 5 and 3 kg; A at 4 m/s at 60° to the line of centres, B at 6 m/s along it
+# toward A; e = 3/4): A's components 4 cos 60° = 2 along, 2√3 across; 5x + 3y = -8, y - x = 6.
+DISCS = "ocr-fm-2023-oblique-discs-60deg"
+
+
+def test_a_bodys_lead_in_gives_its_names_the_body() -> None:
+    work = "A: u_x = 4cos(60°) = 2, u_y = 4sin(60°) = 2sqrt(3); B: u_x = -6\nB before: along = -6\n"
+    r = report(DISCS, work)
+    assert [i.status for i in r.items] == ["correct", "correct"], r.text()
+    assert statuses(DISCS, "B before: along = -5\n") == ["wrong"]
+
+
+def test_a_name_set_equal_to_one_of_derives_stands_for_it() -> None:
+    # Example 4.C.11 with one t velocity for both spheres (a slip): v_t is read, not "not read"
+    work = "20(3.05) + 5(-9.15) = 25 v_t\nv_t = 0.61 = v_A2t = v_B2t\n"
+    r = report("notes-4c11-two-spheres", work)
+    assert "not read" not in [i.status for i in r.items], r.text()
+    assert any("v_t is v_A2t" in n for n in r.notes), r.notes
+
+
+def test_names_after_a_slip_are_read_by_the_shape_of_their_equations() -> None:
+    # sin and cos swapped (A along = 4 sin 60° = 3.46): every x, y line after it is false for
+    # the problem, yet 5x + 3y is (3) and y - x is (4) in shape, so x and y are A's and B's
+    work = (
+        "A before: along = 4 sin 60 = 3.46\n"
+        "5(3.46) + 3(-6) = 5x + 3y, so 5x + 3y = -0.7\n"
+        "y - x = 0.75(3.46 + 6) = 7.10\n"
+        "8x = -0.7 - 21.3 = -22.0\n"
+        "x = -2.75, y = 4.35\n"
+    )
+    r = report(DISCS, work)
+    assert [i.status for i in r.items] == ["wrong"] + ["carried"] * 4, r.text()
+    assert any("x is v_A2n, y is v_B2n" in n for n in r.notes), r.notes
+
+
+# --- notation typed with a keyboard's own signs ------------------------------------------------
+# Spheres meet head-on at 5 m/s each, 2 kg and 1 kg, e = 0.8: v_A = -1, v_B = 7; KE 37.5 J before,
+# 25.5 J after, 12 J lost; the impulse on B is 1(7 + 5) = 12 N s.
+MEET = "ocr-m2-2006-spheres-meet-at-5-ke-lost"
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "2(5) + 1(-5) = 2v₁ + v₂\nv₂ - v₁ = 0.8(5 - (-5)) = 8\n",  # Unicode subscripts
+        "2(5) + 1(-5) = 2u_A' + u_B'\nu_A' = -1, u_B' = 7\n",  # primes: after
+        "v_A = 5, v_B = -5\nv_B' - v_A' = 0.8(v_A - v_B) = 8\n",  # v_A and v_A': v_A is before
+        "V_A = -1, V_B = 7\n",  # capital V after
+        "KE lost = ½(2)(5²) + ½(1)(5²) − [½(2)(1²) + ½(1)(7²)] = 37.5 − 25.5 = 12 J\n",  # ½, [ ]
+        "Loss in K.E. = 12 J\n",
+        "Impulse on B = 1(7 - (-5)) = 12 Ns\nI = 12 N s\n",  # I for the impulse; "on B" is not a name
+    ],
+)
+def test_keyboard_notation_is_read(work: str) -> None:
+    r = report(MEET, work)
+    assert r.items and all(i.status == "correct" for i in r.items), r.text()
+
+
+def test_a_function_glued_to_its_angle_and_t_components_named_like_n() -> None:
+    # Example 4.C.11 (the notes: 3.96, 3.05, -11.9, -9.15; -1.11 and 8.40 after along n)
+    work = (
+        "A: 5cos37.6° = 3.96 along n, 5sin37.6° = 3.05 along t\n"
+        "20(3.96) + 5(-11.9) = 20v_An + 5v_Bn\n"
+        "v_Bn - v_An = 0.6(3.96 + 11.9) = 9.52\n"
+        "v_An = -1.11, v_Bn = 8.40\n"
+        "v_At = 3.05, v_Bt = -9.15\n"
+    )
+    r = report("notes-4c11-two-spheres", work)
+    assert [i.status for i in r.items] == ["correct"] * 5, r.text()
+    assert any("v_At is v_A2t" in n for n in r.notes), r.notes
+
+
+# --- more names students give ------------------------------------------------------------------
+def test_definitions_after_with_a_common_velocity_v_cm_and_a_as_after() -> None:
+    # MEI FMM 2023 (0.5 kg at 6 m/s catches 2 kg at 2 m/s; A moves back at 0.2): v = 3.55,
+    # e = 3.75/4 = 0.9375; KE lost = ½ (0.4)(1 - 0.9375²)(4²) = 0.388 J (reduced mass 1/2.5 = 0.4)
+    work = (
+        "A after = -0.2 m/s\n"
+        "0.5(6) + 2(2) = 0.5(-0.2) + 2v  so  v = 3.55\n"
+        "e = (3.55 - (-0.2))/(6 - 2) = 0.9375\n"
+        "KE lost = 1/2 mu (1 - e^2) w^2 with mu = (0.5 x 2)/2.5 = 0.4 and w = 4 (closing speed)\n"
+        "     = 0.2 x (1 - 0.9375^2) x 16 = 0.388 J\n"
+    )
+    r = report("ocr-mei-fmm-2023-a-speed-0p2-backward", work)
+    assert [i.status for i in r.items] == ["correct"] * 5, r.text()
+    # satellites 4000 kg at 0.250 m/s and 7500 kg at rest: V_cm = 1000/11500 = 0.08696
+    cm = "V_{cm} = (4000(0.250) + 7500(0))/(4000 + 7500) = 0.08696\nv_1' = 2(0.08696) - 0.250 = -0.0761\n"
+    assert statuses("openstax-cp-8-satellites-elastic", cm) == ["correct", "correct"]
+
+
+def test_mu_is_m_times_u_where_m_and_u_are_given_and_a_slow_slip_is_bounded() -> None:
+    # CIE 2014: m at u hits 9m at rest, half the KE lost: x + 9y = u, y - x = eu; (1 - 9e)² +
+    # 9(1 + e)² = 50 (written 25, a slip): the report comes, in seconds, and x, y are read
+    work = "mu = mx + 9my  =>  x + 9y = u\ny - x = eu\nx^2 + 9y^2 = u^2/2\n(1 - 9e)^2 + 9(1 + e)^2 = 25\n"
+    r = report("cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost", work)
+    assert [i.status for i in r.items] == ["correct"] * 3 + ["wrong"], r.text()
+
+
+def test_words_after_a_unit_and_v_for_a_common_velocity_after() -> None:
+    # goalie 70.0 kg catches a 0.150 kg puck at 35.0 m/s: v = 5.25/70.15 = 0.0748 m/s
+    work = "0.150 x 35.0 = (0.150 + 70.0) V\nV = 0.0748 m/s\n91.9 - 0.196 = 91.7 J  ok\n"
+    assert statuses("openstax-cp-8-5-goalie-catches-puck", work) == ["correct"] * 3
+
+
+def test_a_power_of_a_function_is_read() -> None:
+    from derive.mathtext.notation import student
+
+    assert student("cos^2(alpha) + 9/16 sin^2 alpha") == "cos(alpha)^2+9/16*sin(alpha)^2"
+
+
+def test_a_chain_name_no_value_fits_is_what_its_relation_solves_it_to_be() -> None:
+    # Edexcel M2, three equal particles: A at 7 m/s hits B at rest; p, q after (no stage result
+    # for p); B then hits C and C moves off at 4 m/s: u_B = 2√7 = 5.29 (the chain's values)
+    work = "7m = mp + mq  =>  p + q = 7\nq - p = 7e\nq = 5.29\n"
+    assert statuses("chain-edexcel-m2-three-particles", work) == ["correct"] * 3
+
+
+def test_along_in_prose_before_the_mathematics_is_not_a_name() -> None:
+    # OCR M3 2013: B at 0.6 m/s at 30° to the line of centres, toward A: -0.6 cos 30° = -0.520
+    work = r"B before: along the line $-0.6\cos 30^\circ = -0.520$, across $0.6\sin 30^\circ = 0.3$" + "\n"
+    assert statuses("ocr-m3-2013-b-turns-through-right-angle", work) == ["correct"]
+
+
+def test_a_chain_side_not_read_in_the_middle_is_left_out() -> None:
+    # OCR M2 2007: thrown down at 21 m/s from 40 m: v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35 m/s
+    work = "v^2 = u^2 + 2as = 21^2 + 2(9.8)(40) = 441 + 784 = 1225\nv = 35 m/s\n"
+    assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "correct"]
