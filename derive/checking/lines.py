@@ -19,7 +19,8 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes
+from derive.checking import angles, mistakes
+from derive.checking.budget import judged
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
@@ -53,7 +54,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
-    items = [trace.item(line) for line in lines[:MAX_LINES]]
+    items = judged(trace.item, lines[:MAX_LINES], lambda line, why: trace._item(line, "not checked", why, ""))
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
@@ -61,7 +62,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
 
 
 #: A line's verdicts, least serious first: a line of several relations shows its worst once.
-RANK = ("correct", "not read", "carried", "wrong", "error")
+RANK = ("correct", "not read", "not checked", "carried", "wrong", "error")
 
 
 def merged(items: list[Item]) -> list[Item]:
@@ -101,6 +102,9 @@ class Trace:
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
         """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
+        angle = angles.judge(self, line)  # "= 74.9° to XY": the angle its words name
+        if angle is not None:
+            return angle
         if line.exprs is None:
             if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
                 return None  # prose with an "=" in it

@@ -13,6 +13,7 @@ import sympy
 
 from derive.checking.mistakes import Outcome
 from derive.checking.numeric import coefficient, is_negative, number_of, plain
+from derive.checking.polyroots import polynomial_roots
 
 Point = dict[sympy.Symbol, sympy.Expr]
 Values = dict[sympy.Symbol, sympy.Expr]
@@ -69,15 +70,25 @@ def solve_with(
             return None
         eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
         eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
-        try:
-            roots = sympy.solve(eqs, list(U), dict=True, rational=False)
-        except (NotImplementedError, ValueError, TypeError):
-            return None
-        roots = [r for r in roots if set(r) == set(U)]
+        roots = nonlinear_roots(eqs, U)
         if not roots:
             return None
         out.append(roots)
     return out
+
+
+def nonlinear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values]:
+    """The roots of ``eqs = 0`` (numbers in, 30 digits) that fix every unknown: by elimination in
+    floating point (:mod:`.polyroots`), or where that cannot take the system apart, SymPy's ``solve``
+    (a Gröbner basis over floats: seconds, where elimination takes milliseconds)."""
+    found = polynomial_roots(eqs, U)
+    if found is not None:
+        return [{u: _real(z) for u, z in r.items()} for r in found]
+    try:
+        roots = sympy.solve(eqs, list(U), dict=True, rational=False)
+    except (NotImplementedError, ValueError, TypeError):
+        return []
+    return [r for r in roots if set(r) == set(U)]
 
 
 def linear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:

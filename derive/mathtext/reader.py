@@ -60,6 +60,8 @@ _UNIT_END = re.compile(
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
+#: Words after a value that say it checks out (``= 91.7 J  ok``): not part of the value.
+_CHECKED = re.compile(r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected)[.!]?\s*$", re.I)
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
 _RELATION = re.compile(r"=|≈")
 
@@ -207,6 +209,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
+    text = _CHECKED.sub("", text.rstrip())
     sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
     if any(not s for s in sides):
         return None
