@@ -155,3 +155,22 @@ def test_the_budget_is_of_cpu_time_not_of_a_busy_machine(monkeypatch) -> None:
     monkeypatch.setattr(budget, "CPU_SECONDS", 0.3)
     out = budget.judged(lambda n: time.sleep(0.2) or n, [1, 2, 3], lambda n, why: None)
     assert out == [1, 2, 3]
+
+
+def test_an_unknown_given_angle_is_judged_once(monkeypatch) -> None:
+    """Edexcel M4 2018 (find alpha): `alpha = tan^-1(3.266) = 1.27°` (radian mode) is judged as
+    an answer once, not first as a direction of the impact and then again."""
+    from derive.checking import lines
+
+    solution = derive.solve(derive.load("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke"))
+    calls: list[str] = []
+    real = lines.Trace._answer
+
+    def answer(self, line):  # type: ignore[no-untyped-def]
+        calls.append(line.written)
+        return real(self, line)
+
+    monkeypatch.setattr(lines.Trace, "_answer", answer)
+    report = derive.check(solution, {}, derivation="tan(alpha) = sqrt(32/3) = 3.266\nalpha = tan^-1(3.266) = 1.27°\n")
+    assert report.items[1].slip == "degrees_as_radians"
+    assert calls.count("alpha = tan^-1(3.266) = 1.27°") <= 1

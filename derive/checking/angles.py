@@ -146,8 +146,8 @@ def _named(trace: Trace, line: Read) -> Item | None:
     left = line.exprs[0] if line.exprs else None
     if len(line.sides) < 3 or not isinstance(left, sympy.Symbol) or left.name not in trace.ctx.results:
         return None
-    if trace.ctx.results[left.name].unit != "deg":
-        return None
+    if trace.ctx.results[left.name].unit != "deg" or any(g.name == left.name for g in trace.ctx.problem.givens):
+        return None  # not a direction the impact gives (an unknown given angle is judged as any line)
     answer = trace._answer(replace(line, sides=(line.sides[0], line.sides[-1]), exprs=(left, line.exprs[-1])))
     if answer is None or answer.correct or not answer.diagnosis:
         return None
