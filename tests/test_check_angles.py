@@ -110,3 +110,17 @@ def test_a_named_direction_worked_in_a_chain_names_its_mistake() -> None:
         verdicts("notes-4c12-cue-ball", "v_A2n = sqrt(2)/4*(1-e)*v_A1\ntheta_2 = atan(0.05) = 2.86°\n")[2][0]
         == "correct"
     )
+
+
+def test_the_words_may_come_before_the_angle() -> None:
+    """OCR FM 2023 (ocr-fm-2023-oblique-discs-60deg): A leaves with -3.25 along the line of centres
+    and 4 sin 60° = 2√3 across it, at tan⁻¹(2√3/3.25) = 46.83° to it; 43.17° is the other axis."""
+    text = (
+        "v_A2n = -3.25\n"
+        "and the angle its path makes with the line of centres is\n"
+        "\\[ \\theta = \\tan^{-1}\\left(\\frac{3.25}{2\\sqrt3}\\right) = 43.2^\\circ \\]\n"
+        "the angle with the line of centres is tan^-1(3.464/3.25) = 46.8°\n"
+    )
+    found = verdicts("ocr-fm-2023-oblique-discs-60deg", text)
+    assert found[3] == ("wrong", "angle_other_axis")
+    assert found[4][0] == "correct"

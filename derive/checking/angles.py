@@ -45,6 +45,7 @@ class Trace(Protocol):
     slips: list[int]
     named: dict[int, set[str]]
     wrong_values: set[str]
+    text: list[str]  # the derivation's lines as typed
 
     def holds(self, pairs: list, values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list: ...
@@ -59,7 +60,7 @@ TRUE = "substituting the correct values"
 _INVERSE = (sympy.atan, sympy.asin, sympy.acos, sympy.atan2)
 _TRIG = (sympy.sin, sympy.cos, sympy.tan)
 #: The last side of a direction line: the angle, a degree mark, and the words that name it.
-CLAIM = re.compile(r"^\s*([-+]?)\(?(\d+(?:\.\d*)?|\.\d+)\)?\s*(?:°|\*?deg\b|degrees?\b)\s*([A-Za-z+].*)$")
+CLAIM = re.compile(r"^\s*([-+]?)\(?(\d+(?:\.\d*)?|\.\d+)\)?\s*(?:°|\*?deg\b|degrees?\b)\s*([A-Za-z+].*)?$")
 #: The components in ``tan⁻¹(Y/X)`` as written (plain syntax), signs kept.
 RATIO = re.compile(
     r"(?:atan|arctan|tan\^-1|tan⁻¹|tan\^\(-1\))\s*\(+\s*([-+]?\d+\.?\d*)\s*\)*\s*/\s*\(*\s*([-+]?\d+\.?\d*)\s*\)"
@@ -86,21 +87,24 @@ class Claim:
     ratio: tuple[float, float] | None  # (Y, X) of tan⁻¹(Y/X) as written
 
 
-def claim(line: Read) -> Claim | None:
-    """The angle ``line`` says it is, where the words after it name what it is measured from."""
+def claim(line: Read, before: str = "") -> Claim | None:
+    """The angle ``line`` says it is, where words name what it is measured from: after the
+    angle (``= 74.9° to XY``), else before the relation on its line (``the angle with XY is
+    θ = …``), else ending the prose line ``before`` it (``… the angle its path makes with the
+    line of centres is``)."""
     if len(line.sides) < 2:
         return None
     m = CLAIM.match(line.sides[-1].replace("−", "-").replace("\\circ", "°").replace("^°", "°"))
     if not m:
         return None
-    words = re.sub(r"[.,;:!]+$", "", m.group(3).strip().lower())
-    found = re.fullmatch(rf"{_PREP}(to|with|from|above|below|makes?\s+with)\s+(.+)", words)
-    if not found:
+    after = (m.group(3) or "").strip()
+    named = _reference(re.sub(r"[.,;:!)]+$", "", after.lower()), after=True) if after else None
+    if named is None and not after:
+        lead = line.written.split("=")[0]
+        named = _reference(_words(lead), after=False) or (_reference(_words(before), after=False) if before else None)
+    if named is None:
         return None
-    prep, ref = found.group(1), found.group(2).strip()
-    axis = next((a for a, pattern in _AXES.items() if re.fullmatch(pattern, ref)), None)
-    if axis is None:
-        return None
+    prep, ref, axis = named
     number = Decimal(m.group(2))
     value = float(number) * (-1 if m.group(1) == "-" else 1)
     unit = float(Decimal(1).scaleb(number.as_tuple().exponent))
@@ -111,12 +115,47 @@ def claim(line: Read) -> Claim | None:
     return Claim(value, unit, axis, directed, ratio)
 
 
+def _words(text: str) -> str:
+    """Prose as plain lower-case words (TeX markup, dollars and punctuation dropped)."""
+    text = re.sub(r"\\(?:text|textbf|emph|mathrm)\{([^}]*)\}", r" \1 ", text)
+    text = re.sub(r"\\[A-Za-z]+|[$*_{}\\&]", " ", text)
+    return " ".join(re.sub(r"[.,;:!()]", " ", text).lower().split())
+
+
+def _reference(words: str, after: bool) -> tuple[str, str, str] | None:
+    """(preposition, reference, axis) of ``to XY`` (the words after an angle: all of them), or
+    of ``the angle … makes with the line of centres is`` (words before one: their end)."""
+    if after:
+        found = re.fullmatch(rf"{_PREP}(to|with|from|above|below|makes?\s+with)\s+(.+)", words)
+        if not found:
+            return None
+        prep, ref = found.group(1).split()[0], found.group(2).strip()
+        axis = _axis(ref)
+        return (prep, ref, axis) if axis is not None else None
+    found = re.search(r"\b(?:angle|direction|inclined|inclination)\b.*?\b(to|with|from|above|below)\s+(.+)$", words)
+    if not found:
+        return None
+    rest = found.group(2).split()
+    for k in range(len(rest), 0, -1):  # "… with the line of centres is theta": the longest axis, then a name
+        tail = rest[k:]
+        if len(tail) > 2 or any(w not in ("is", "of", "=") and len(w) > 5 for w in tail):
+            continue
+        axis = _axis(" ".join(rest[:k]))
+        if axis is not None:
+            return found.group(1), " ".join(rest[:k]), axis
+    return None
+
+
+def _axis(ref: str) -> str | None:
+    return next((a for a, pattern in _AXES.items() if re.fullmatch(pattern, ref)), None)
+
+
 def judge(trace: Trace, line: Read) -> Item | None:
     """The verdict on a direction line as the angle it names (None: not such a line, or right
     for the problem: judged as any line is)."""
     if not trace.ctx.problem.oblique:
         return None
-    c = claim(line)
+    c = claim(line, _before(trace.text, line.number))
     if c is None:
         return _named(trace, line)
     truth = _velocities(trace, c, trace.truth[0])
@@ -137,6 +176,17 @@ def judge(trace: Trace, line: Read) -> Item | None:
     mistake = REGISTRY.get(name)
     diags = trace.ctx.diagnosis(mistake) if mistake is not None else ()
     return _slip(trace, line, diags, _expected(c, truth[body]) if body is not None else "")
+
+
+def _before(text: list[str], number: int) -> str:
+    """The prose line just before line ``number`` (blank lines passed over; "" where the line
+    before holds a relation, or there is none)."""
+    i = number - 2
+    while i >= 0 and not text[i].strip() and i > number - 4:
+        i -= 1
+    if i < 0 or i >= len(text) or "=" in text[i] or not text[i].strip():
+        return ""
+    return text[i]
 
 
 def _named(trace: Trace, line: Read) -> Item | None:

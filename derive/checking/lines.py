@@ -50,6 +50,7 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
+    trace.text = text.splitlines()
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0])
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
@@ -98,6 +99,7 @@ class Trace:
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
+        self.text: list[str] = []  # the derivation's lines as typed
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
