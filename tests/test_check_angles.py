@@ -124,3 +124,15 @@ def test_the_words_may_come_before_the_angle() -> None:
     found = verdicts("ocr-fm-2023-oblique-discs-60deg", text)
     assert found[3] == ("wrong", "angle_other_axis")
     assert found[4][0] == "correct"
+
+
+def test_the_words_are_found_on_the_line_as_typed_where_the_side_has_lost_them() -> None:
+    from derive.checking.angles import claim
+    from derive.checking.inference import Read
+
+    written = r"Direction: $\tan^{-1}\left(\frac{6.4}{1.732}\right) = 74.9^\circ$ to XY"
+    c = claim(Read(15, written, ("atan(((6.4)/(1.732)) )", "74.9°"), "", None))
+    assert c is not None and (c.value, c.axis, c.directed, c.ratio) == (74.9, "n", False, (6.4, 1.732))
+    c = claim(Read(3, "a = 45.2° from n, b = 56.8° from n", ("a", "45.2°"), "", None))
+    assert c is not None and (c.value, c.axis, c.directed) == (45.2, "n", True)
+    assert claim(Read(1, "tan^-1(1.732/6.4) = 15.1°", ("atan(1.732/6.4)", "15.1°"), "", None)) is None

@@ -45,7 +45,6 @@ class Trace(Protocol):
     slips: list[int]
     named: dict[int, set[str]]
     wrong_values: set[str]
-    text: list[str]  # the derivation's lines as typed
 
     def holds(self, pairs: list, values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list: ...
@@ -97,7 +96,7 @@ def claim(line: Read, before: str = "") -> Claim | None:
     m = CLAIM.match(line.sides[-1].replace("−", "-").replace("\\circ", "°").replace("^°", "°"))
     if not m:
         return None
-    after = (m.group(3) or "").strip()
+    after = (m.group(3) or "").strip() or _after(line.written, m.group(2))
     named = _reference(re.sub(r"[.,;:!)]+$", "", after.lower()), after=True) if after else None
     if named is None and not after:
         lead = line.written.split("=")[0]
@@ -113,6 +112,16 @@ def claim(line: Read, before: str = "") -> Claim | None:
     letter = re.fullmatch(r"\+?[a-z]", ref) is not None  # "to i", "from n": a direction from a vector
     directed = (prep == "from" and bool(_DIRECTED.match(ref))) or (prep == "to" and letter)
     return Claim(value, unit, axis, directed, ratio)
+
+
+def _after(written: str, number: str) -> str:
+    """The words after the angle ``number``° on the line as typed (``$… = 74.9^\\circ$ to XY``),
+    up to the end of its clause: where the reader has dropped them from the relation's side."""
+    text = re.sub(r"\\(?:text|mathrm|textrm)\s*\{([^}]*)\}", r" \1 ", written)
+    text = re.sub(r"\^\s*\{?\s*\\circ\s*\}?|\\degree\b", "°", text)
+    text = re.sub(r"\\[,;:! ]|\\q?quad\b|\$|\\[()\[\]]|&", " ", text)
+    found = re.search(rf"(?<![\d.]){re.escape(number)}\s*(?:°|deg(?:rees?)?\b)\s*([A-Za-z+][^,;=]*)", text)
+    return found.group(1).strip() if found else ""
 
 
 def _words(text: str) -> str:
@@ -150,12 +159,12 @@ def _axis(ref: str) -> str | None:
     return next((a for a, pattern in _AXES.items() if re.fullmatch(pattern, ref)), None)
 
 
-def judge(trace: Trace, line: Read) -> Item | None:
+def judge(trace: Trace, line: Read, text: list[str]) -> Item | None:
     """The verdict on a direction line as the angle it names (None: not such a line, or right
     for the problem: judged as any line is)."""
     if not trace.ctx.problem.oblique:
         return None
-    c = claim(line, _before(trace.text, line.number))
+    c = claim(line, _before(text, line.number))
     if c is None:
         return _named(trace, line)
     truth = _velocities(trace, c, trace.truth[0])

@@ -19,8 +19,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import angles, mistakes
-from derive.checking.budget import judged
+from derive.checking import mistakes
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
@@ -50,12 +49,19 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
-    trace.text = text.splitlines()
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0])
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
-    items = judged(trace.item, lines[:MAX_LINES], lambda line, why: trace._item(line, "not checked", why, ""))
+    from derive.checking.angles import judge as angle  # "= 74.9° to XY": the angle its words name
+    from derive.checking.budget import judged  # a line not judged in time: not checked
+
+    typed = text.splitlines()
+    items = judged(
+        lambda line: angle(trace, line, typed) or trace.item(line),
+        lines[:MAX_LINES],
+        lambda line, why: trace._item(line, "not checked", why, ""),
+    )
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
@@ -99,14 +105,10 @@ class Trace:
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
-        self.text: list[str] = []  # the derivation's lines as typed
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
         """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
-        angle = angles.judge(self, line)  # "= 74.9° to XY": the angle its words name
-        if angle is not None:
-            return angle
         if line.exprs is None:
             if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
                 return None  # prose with an "=" in it

@@ -11,10 +11,11 @@ from decimal import Decimal
 
 import sympy
 
+from derive.checking import relations
 from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
-from derive.checking.relations import Point, Values, linear_roots, nonlinear_roots, satisfied
+from derive.checking.relations import Point, Values, linear_roots, satisfied
 from derive.mathtext.notation import student
 from derive.numbers import to_decimal
 
@@ -97,7 +98,7 @@ def solve_world(
     for pt, guide in zip(pts, near, strict=True):
         roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
         if roots is None:
-            roots = nonlinear_roots(
+            roots = relations.nonlinear_roots(
                 [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()], U
             )
         if not roots:

@@ -60,8 +60,6 @@ _UNIT_END = re.compile(
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
-#: Words after a value that say it checks out (``= 91.7 J  ok``): not part of the value.
-_CHECKED = re.compile(r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected)[.!]?\s*$", re.I)
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
 _RELATION = re.compile(r"=|≈")
 
@@ -198,7 +196,12 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
     tag = ""
-    text = _TICK.sub(" ", text)
+    text = re.sub(  # a tick, and a check word after the value ("= 91.7 J  ok"): not part of it
+        r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected)[.!]?\s*$",
+        "",
+        _TICK.sub(" ", text),
+        flags=re.I,
+    )
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
@@ -209,7 +212,6 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
-    text = _CHECKED.sub("", text.rstrip())
     sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
     if any(not s for s in sides):
         return None
