@@ -14,7 +14,7 @@ import signal
 import threading
 import time
 from collections.abc import Callable, Sequence
-from typing import TypeVar
+from typing import Any, TypeVar
 
 #: CPU seconds for judging the lines of one derivation (the corpus's slowest takes about 2).
 CPU_SECONDS = 8.0
@@ -28,6 +28,19 @@ R = TypeVar("R")
 class OutOfBudget(BaseException):
     """The time for judging ran out. Not an Exception: no ``except Exception`` inside SymPy
     may swallow it."""
+
+
+def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
+    """A derivation's ``lines`` judged by ``trace`` (:class:`~.lines.Trace`) while the budget
+    lasts, an angle line as the angle its words name (:mod:`.angles`) first."""
+    from derive.checking.angles import judge as angle
+
+    typed = text.splitlines()
+    return judged(
+        lambda line: angle(trace, line, typed) or trace.item(line),
+        lines,
+        lambda line, why: trace._item(line, "not checked", why, ""),
+    )
 
 
 def judged(judge: Callable[[T], R], lines: Sequence[T], not_checked: Callable[[T, str], R]) -> list[R]:

@@ -53,15 +53,9 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
-    from derive.checking.angles import judge as angle  # "= 74.9° to XY": the angle its words name
-    from derive.checking.budget import judged  # a line not judged in time: not checked
+    from derive.checking.budget import lines_judged  # angles as their words name them; in the time
 
-    typed = text.splitlines()
-    items = judged(
-        lambda line: angle(trace, line, typed) or trace.item(line),
-        lines[:MAX_LINES],
-        lambda line, why: trace._item(line, "not checked", why, ""),
-    )
+    items = lines_judged(trace, lines[:MAX_LINES], text)
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
