@@ -136,3 +136,10 @@ def test_the_words_are_found_on_the_line_as_typed_where_the_side_has_lost_them()
     c = claim(Read(3, "a = 45.2° from n, b = 56.8° from n", ("a", "45.2°"), "", None))
     assert c is not None and (c.value, c.axis, c.directed) == (45.2, "n", True)
     assert claim(Read(1, "tan^-1(1.732/6.4) = 15.1°", ("atan(1.732/6.4)", "15.1°"), "", None)) is None
+
+
+def test_a_direction_worked_from_the_sizes_of_its_components() -> None:
+    """OCR M3 Jan 2006 (ocr-m3-2006-oblique-a-across-centres): A leaves with -2 along the line of
+    centres and 4 across, at 180° - tan⁻¹(4/2) = 116.6° from x (its sizes in tan⁻¹, not its signs)."""
+    text = "v_A2n = -2\ndirection of A = 180° - tan^-1(4/2) = 117° from x\n"
+    assert verdicts("ocr-m3-2006-oblique-a-across-centres", text)[2][0] == "correct"

@@ -170,7 +170,7 @@ def judge(trace: Trace, line: Read, text: list[str]) -> Item | None:
     truth = _velocities(trace, c, trace.truth[0])
     if truth is None:
         return None
-    if any(_is(c, v) for v in truth + (_velocities(trace, c, {}, before=True) or [])):
+    if any(_is(c, v) for v in truth) or any(_is(c, v, loose=False) for v in _velocities(trace, c, {}, True) or []):
         return _right(trace, line, c)
     world = _velocities(trace, c, trace.world[0]) if trace.world is not None else None
     if world and any(_is(c, v) for v in world):
@@ -290,17 +290,21 @@ def _acute(a: float) -> float:
     return min(a, 180 - a)
 
 
-def _is(c: Claim, v: tuple[float, float]) -> bool:
-    """Whether the claim is the angle of the velocity ``v`` (along, across)."""
+def _is(c: Claim, v: tuple[float, float], loose: bool = True) -> bool:
+    """Whether the claim is the angle of the velocity ``v`` (along, across); ``loose``: a
+    direction either way round, from the axis either way (a velocity after the impact: the
+    student's own axes), else only as derive's axes measure it (a velocity before)."""
     along, across = v
     if not (along or across):
         return False
     if not c.directed:
         return _near(_acute(c.value), math.degrees(math.atan2(abs(across), abs(along))), c, 180)
-    direction = math.degrees(math.atan2(across, along))
+    directions = [math.degrees(math.atan2(across, along))]
+    if not loose:
+        return _near(c.value, directions[0], c)
     if c.ratio is not None and _same_size(c.ratio, v) and c.ratio[1] * along < 0:
-        direction = math.degrees(math.atan2(across, -along))  # the student's axis is the other way
-    return _near(c.value, direction, c) or _near(c.value, -direction, c)  # either way round
+        directions.append(math.degrees(math.atan2(across, -along)))  # the student's axis may be the other way
+    return any(_near(c.value, d, c) or _near(c.value, -d, c) for d in directions)  # either way round
 
 
 def _same_size(ratio: tuple[float, float], v: tuple[float, float]) -> bool:
