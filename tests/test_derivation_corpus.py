@@ -24,7 +24,7 @@ from support.derivation_corpus import Case, load_cases
 
 CASES = load_cases()
 #: The verdicts of a line's relations, from the least to the most serious.
-RANK = ("not read", "error", "correct", "carried", "again", "wrong", "unit mismatch")
+RANK = ("not read", "not checked", "error", "correct", "carried", "again", "wrong", "unit mismatch")
 #: The checker's name of a slip its report gives in words (the rest are mistakes' names).
 RESULTS: dict[str, list[str]] = {}
 
@@ -59,7 +59,7 @@ def disagreements(case: Case, found: dict[int, tuple[str, str]]) -> list[str]:
     for n, teacher in v.lines.items():
         status, slip = found.get(n, ("not read", ""))
         if teacher == "skip":
-            if status not in ("not read", "correct", "error"):
+            if status not in ("not read", "not checked", "correct", "error"):
                 out.append(f"line {n}: {status}, the teacher does not mark it")
         elif status != teacher:
             out.append(f"line {n}: {status}, the teacher: {teacher}")

@@ -268,7 +268,10 @@ def relation(
     base = mistakes.correct(ctx.solution)
     if base is None:
         raise error("this problem's equations cannot be set up for checking")
-    extra = set(F.free_symbols) - set(model.unknowns)
+    # the sample points are of every symbolic given of the system it is solved with, not only of
+    # its own: (1 - 9e)^2 + 9(1 + e)^2 = 25 is solved with m u = m x + 9m y at numbers for m and u
+    known = (F, *base.equations.values(), *base.post.values())
+    extra = set().union(*(x.free_symbols for x in known)) - set(model.unknowns)
     pts = ctx.sampler().points(extra, 3) if extra else [{}]
     tol = max(literal_tolerance(text, ctx.data), 1e-9)
     found = [o for o in ctx.singles() if o.mistake is not None]

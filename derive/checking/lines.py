@@ -53,7 +53,9 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if not any(line.exprs is not None for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
-    items = [trace.item(line) for line in lines[:MAX_LINES]]
+    from derive.checking.budget import lines_judged  # angles as their words name them; in the time
+
+    items = lines_judged(trace, lines[:MAX_LINES], text)
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
@@ -61,7 +63,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
 
 
 #: A line's verdicts, least serious first: a line of several relations shows its worst once.
-RANK = ("correct", "not read", "carried", "wrong", "error")
+RANK = ("correct", "not read", "not checked", "carried", "wrong", "error")
 
 
 def merged(items: list[Item]) -> list[Item]:

@@ -13,6 +13,7 @@ import sympy
 
 from derive.checking.mistakes import Outcome
 from derive.checking.numeric import coefficient, is_negative, number_of, plain
+from derive.checking.polyroots import polynomial_roots
 
 Point = dict[sympy.Symbol, sympy.Expr]
 Values = dict[sympy.Symbol, sympy.Expr]
@@ -63,6 +64,12 @@ def solve_with(
             return None
         if fast is not None:
             out.append(fast)
+            continue
+        taken = _taken_apart([x.xreplace(pt) for j, x in equations.items() if j != k] + [F.xreplace(pt)], U)
+        if taken is not None:  # elimination in floating point, not SymPy's Gröbner basis
+            if not taken:
+                return None
+            out.append(taken)
             continue
         cf = coefficients(F.xreplace(pt), U)
         if cf is None or any(sum(m) > 2 for m in cf):  # beyond a quadratic: not an equation of this impact
@@ -188,3 +195,27 @@ def shown(expr: sympy.Expr, U: tuple[sympy.Symbol, ...], first: tuple[sympy.Symb
         else:
             out += (" - " if neg else " + ") + piece
     return f"{out} = {coefficient(-sign * const) if const != 0 else '0'}"
+
+
+def nonlinear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values]:
+    """The roots of ``eqs = 0`` (numbers in, 30 digits) that fix every unknown: by elimination in
+    floating point (:mod:`.polyroots`), or where that cannot take the system apart, SymPy's ``solve``
+    (a Gröbner basis over floats: seconds, where elimination takes milliseconds)."""
+    found = polynomial_roots(eqs, U)
+    if found is not None:
+        return [{u: _real(z) for u, z in r.items()} for r in found]
+    try:
+        roots = sympy.solve(eqs, list(U), dict=True, rational=False)
+    except (NotImplementedError, ValueError, TypeError):
+        return []
+    return [r for r in roots if set(r) == set(U)]
+
+
+def _taken_apart(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:
+    """The roots of the impact's equations with the student's last (no more than a quadratic)
+    by elimination (:mod:`.polyroots`); None where it cannot take them apart."""
+    cf = coefficients(eqs[-1], U)
+    if cf is None or any(sum(m) > 2 for m in cf):
+        return None
+    found = polynomial_roots([sympy.N(sympy.numer(sympy.together(x)), 30) for x in eqs], U)
+    return None if found is None else [{u: _real(z) for u, z in r.items()} for r in found]

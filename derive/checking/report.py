@@ -15,8 +15,16 @@ from derive.errors import InputError
 
 FORMATS = ("text", "md", "json")
 #: Every status an item can have, in the order the summary counts them.
-STATUSES = ("correct", "wrong", "unit mismatch", "carried", "not read", "error")
-_MARK = {"correct": "✓", "wrong": "✗", "unit mismatch": "✗", "carried": "↳", "not read": "?", "error": "!"}
+STATUSES = ("correct", "wrong", "unit mismatch", "carried", "not read", "not checked", "error")
+_MARK = {
+    "correct": "✓",
+    "wrong": "✗",
+    "unit mismatch": "✗",
+    "carried": "↳",
+    "not read": "?",
+    "not checked": "·",
+    "error": "!",
+}
 
 
 @dataclass(frozen=True)
@@ -120,8 +128,9 @@ class Report:
 
     @property
     def all_correct(self) -> bool:
-        """True when every answer and equation is right (a line not read is not judged)."""
-        return all(i.correct or i.status == "not read" for i in self.items)
+        """True when every answer and equation is right (a line not read, or not checked in the
+        time, is not judged)."""
+        return all(i.correct or i.status in ("not read", "not checked") for i in self.items)
 
     @property
     def exit_code(self) -> int:
@@ -173,6 +182,8 @@ class Report:
             parts.append(f"{c['carried']} right given an earlier slip (carried)")
         if c.get("not read"):
             parts.append(f"{c['not read']} not read")
+        if c.get("not checked"):
+            parts.append(f"{c['not checked']} not checked (out of time)")
         if c.get("error"):
             parts.append(f"{c['error']} could not be read")
         return ", ".join(parts) + "."

@@ -12,6 +12,7 @@ from decimal import Decimal
 
 import sympy
 
+from derive.checking import relations
 from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
@@ -99,11 +100,9 @@ def solve_world(
     for pt, guide in zip(pts, near, strict=True):
         roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
         if roots is None:
-            eqs = [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()]
-            try:
-                roots = [r for r in sympy.solve(eqs, list(U), dict=True, rational=False) if set(r) == set(U)]
-            except (NotImplementedError, ValueError, TypeError):
-                return None
+            roots = relations.nonlinear_roots(
+                [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()], U
+            )
         if not roots:
             return None
         target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}

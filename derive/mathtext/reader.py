@@ -287,7 +287,12 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
     tag = ""
-    text = _TICK.sub(" ", text)
+    text = re.sub(  # a tick, and a check word after the value ("= 91.7 J  ok"): not part of it
+        r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected)[.!]?\s*$",
+        "",
+        _TICK.sub(" ", text),
+        flags=re.I,
+    )
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]

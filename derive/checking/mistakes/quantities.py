@@ -107,15 +107,23 @@ def _acute(
         n, t = (post[getattr(nm, f"{b}2{c}")].xreplace(known) for c in "nt")
         if n == 0 and t == 0:
             continue
-        n1 = pre[getattr(nm, f"{b}1n")]
-        t1 = pre[getattr(nm, f"{b}1t")] if getattr(nm, f"{b}1t") is not None else sympy.Integer(0)
+        n, t = _float(n), _float(t)
+        n1 = _float(pre[getattr(nm, f"{b}1n")])
+        t1 = _float(pre[getattr(nm, f"{b}1t")]) if getattr(nm, f"{b}1t") is not None else sympy.Integer(0)
         pairs = {f"alpha_{b}2": (sympy.Abs(t), sympy.Abs(n)), f"gamma_{b}2": (sympy.Abs(n), sympy.Abs(t))}
         if not (n1 == 0 and t1 == 0):
             pairs[f"delta_{b}"] = (sympy.Abs(t1 * n - n1 * t), t1 * t + n1 * n)
         for name, (y, x) in pairs.items():
-            rad = sympy.atan2(y, x)
-            res[name] = Quantity(rad, None if rad.free_symbols else rad * 180 / sympy.pi)
+            rad = sympy.atan2(_float(y), _float(x))
+            res[name] = Quantity(rad, None if rad.free_symbols else _float(rad * 180 / sympy.pi))
     return res
+
+
+def _float(x: sympy.Expr) -> sympy.Expr:
+    """``x`` to 30 digits where it is a number: SymPy's exact ``Abs`` and ``atan2`` of a
+    radical with cos 20° in it ask for its sign by evaluating it again and again (a second a
+    mistake, 55 mistakes and pairs), where a 30-digit number is all a check compares."""
+    return x if x.free_symbols else sympy.N(x, 30)
 
 
 def directions(n: sympy.Expr, t: sympy.Expr, rule: str) -> tuple[Quantity, Quantity]:
@@ -135,8 +143,9 @@ def _direction(y: sympy.Expr, x: sympy.Expr, quadrant: bool) -> Quantity:
         rad = sympy.pi / 2 if y.is_positive else -sympy.pi / 2
         return Quantity(rad, rad * 180 / sympy.pi)
     if not (y.free_symbols or x.free_symbols):
+        y, x = _float(y), _float(x)
         rad = sympy.atan2(y, x) if quadrant else sympy.atan(y / x)
-        return Quantity(rad, rad * 180 / sympy.pi)
+        return Quantity(rad, _float(rad * 180 / sympy.pi))
     ratio = sympy.simplify(y / x) if x != 0 else None
     if ratio is not None and ratio.is_number:
         rad = sympy.atan(ratio)

@@ -1,0 +1,95 @@
+"""The slowest typed derivations to check: ``derive check PROBLEM --derivation FILE`` of every
+derivation in tests/data/derivations, timed (issue #31, item 8: every report in under 10 s).
+
+    python benchmarks/derivations.py [--top 8] [--limit 10] [--by wall|cpu] [--tree TREE] [--json] [NAMES...]
+
+Each derivation is checked in its own process (``python -m derive check PROBLEM --derivation
+FILE --format json``, ``DERIVE_NO_CACHE=1``), one after another, and the wall time and CPU
+seconds of the whole process are kept (start, imports, solving, checking, writing). NAMES
+(file-name prefixes such as ``n18``) limit the run to those derivations. It prints the slowest
+``--top``, and exits 1 when any takes longer than ``--limit`` seconds or gives no report (a
+report is JSON on stdout; a check stopped by its time budget prints none).
+
+The machine is shared: a wall time is a time under load. The load average is printed with the
+figures; on a busy machine compare CPU seconds (``--by cpu``). ``--tree`` runs derive from
+another source tree (a worktree of an older commit), for a before and after.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+CORPUS = ROOT / "tests" / "data" / "derivations"
+
+
+def time_one(problem: str, path: Path, tree: Path) -> tuple[float, float, bool]:
+    """One ``derive check`` process: wall seconds, CPU seconds, whether a report came back."""
+    env = {**os.environ, "PYTHONPATH": str(tree), "DERIVE_NO_CACHE": "1"}
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    proc = subprocess.run(
+        [sys.executable, "-m", "derive", "check", problem, "--derivation", str(path), "--format", "json"],
+        cwd=tree,
+        env=env,
+        stdin=subprocess.DEVNULL,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    try:
+        reported = "items" in json.loads(proc.stdout)
+    except ValueError:
+        reported = False
+    return wall, cpu, reported
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Time every derivation of the corpus (or those NAMES start); print the slowest."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("names", nargs="*", help="file-name prefixes (n18, c05-4c11): only those derivations")
+    parser.add_argument("--top", type=int, default=8)
+    parser.add_argument("--limit", type=float, default=10.0)
+    parser.add_argument("--tree", type=Path, default=ROOT, help="the source tree to run derive from")
+    parser.add_argument("--by", choices=("wall", "cpu"), default="wall", help="the time --limit applies to")
+    parser.add_argument("--json", action="store_true", help="every time, as JSON")
+    args = parser.parse_args(argv)
+    tree = args.tree.resolve()
+    cases = tomllib.loads((CORPUS / "verdicts.toml").read_text(encoding="utf-8"))["case"]
+    cases = [c for c in cases if not args.names or any(c["file"].startswith(n) for n in args.names)]
+    rows = []
+    for case in cases:
+        wall, cpu, reported = time_one(case["problem"], CORPUS / case["file"], tree)
+        rows.append({"file": case["file"], "wall": round(wall, 2), "cpu": round(cpu, 2), "report": reported})
+    rows.sort(key=lambda row: -row[args.by])
+    load = os.getloadavg()[0]
+    if args.json:
+        print(json.dumps({"load_average": round(load, 2), "cores": os.cpu_count(), "rows": rows}, indent=1))
+    else:
+        print(f"{len(rows)} derivations, tree {tree}, load average {load:.1f} on {os.cpu_count()} cores;")
+        print(f"the slowest {args.top} by {args.by} time:")
+        for row in rows[: args.top]:
+            said = "report" if row["report"] else "NO REPORT"
+            print(f"  {row['wall']:6.2f} s wall  {row['cpu']:6.2f} s CPU  {said:9}  {row['file']}")
+    bad = [row for row in rows if row[args.by] > args.limit or not row["report"]]
+    for row in bad:
+        print(
+            f"over {args.limit:g} s ({args.by}) or no report: {row['file']} ({row['wall']} s wall, {row['cpu']} s CPU)",
+            file=sys.stderr,
+        )
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
