@@ -47,6 +47,7 @@ class Equation:
     outcomes: list[Outcome]
     numbers: tuple[int, ...]
     notes: tuple[str, ...] = ()
+    forms: tuple[Outcome, ...] = ()  # mistakes' equations with no values (see mistakes.forms)
 
     @property
     def U(self) -> tuple[sympy.Symbol, ...]:
@@ -91,7 +92,7 @@ def mistaken_equation(ctx: Context, eq: Equation) -> Verdict | None:
             mistaken = j in o.equations and not proportional(o.equations[j], eq.base.equations[j], eq.U, eq.pts, 1e-9)
             return "" if mistaken and proportional(eq.F, o.equations[j], eq.U, eq.pts, eq.tol) else None
 
-        found = ctx.diagnose(fits, eq.outcomes)
+        found = ctx.diagnose(fits, [*eq.outcomes, *eq.forms])
         if found:
             return Verdict("mistaken_equation", False, j, found)
     return None
@@ -272,7 +273,7 @@ def relation(
     pts = ctx.sampler().points(extra, 3) if extra else [{}]
     tol = max(literal_tolerance(text, ctx.data), 1e-9)
     found = [o for o in ctx.singles() if o.mistake is not None]
-    return Equation(text, label, k, F, tol, pts, base, found, model.numbers, tuple(notes))
+    return Equation(text, label, k, F, tol, pts, base, found, model.numbers, tuple(notes), tuple(ctx.forms()))
 
 
 def _why_not(ctx: Context) -> str:

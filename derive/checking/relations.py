@@ -148,7 +148,7 @@ def satisfied(F: sympy.Expr, post: Values, U: tuple[sympy.Symbol, ...], pts: lis
         scale = max(abs(v) for v in vals) if vals else 0
         if scale == 0:
             return False
-        if abs(sum(vals)) > max(tol, 1e-9) * scale * 2:
+        if abs(sum(vals)) > max(tol, 1e-9) * scale * 2 * (1 - 1e-9):  # exactly two units off is not within
             return False
     return True
 

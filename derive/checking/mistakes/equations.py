@@ -193,11 +193,17 @@ class Model:
             masses = (masses[0], sympy.Integer(0))
         masses = (masses[0].xreplace(known), masses[1].xreplace(known))
         res = results_of(self.problem, nm, pre, post, masses, known, v.angles, lambda x: self.num(x, v.values))
-        eqs = self.equations(v)
-        if v.energy:
+        return Outcome(m, res, post, self.numbered(v), self.unknowns)
+
+    def numbered(self, v: Variant, equations: dict[int, sympy.Expr] | None = None) -> dict[int, sympy.Expr]:
+        """``v``'s equations (or ``equations``, in its placeholders) as ``lhs - rhs`` with the
+        numbers in and the unknowns as symbols: what a student who made the mistake writes,
+        whether or not they can be solved."""
+        eqs = dict(equations) if equations is not None else self.equations(v)
+        if v.energy and equations is None:
             eqs[4] = self.energy_equation()
-        equations = {k: self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for k, x in eqs.items()}
-        return Outcome(m, res, post, equations, self.unknowns)
+        subs = self.substitutions(v)
+        return {k: self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for k, x in eqs.items()}
 
     def _correct(self, u: sympy.Symbol) -> sympy.Expr:
         r = self.results[u.name]
