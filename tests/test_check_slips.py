@@ -98,3 +98,32 @@ def test_two_units_off_in_the_last_place_is_not_the_value() -> None:
     found = lines("ocr-mei-fmm-2023-a-speed-0p2-forward", work)
     assert found[3][:2] == ("wrong", "arithmetic")
     assert found[4][0] == "carried"
+
+
+def test_energy_conserved_in_place_of_the_momentum_in_a_plastic_impact() -> None:
+    # MSU bullet (0.020 kg at 300 m/s) lodges in a 4.0 kg block: momentum gives 6/4.02 = 1.49.
+    # Kinetic energy "conserved" instead: 0.5(0.020)(300^2) = 900 = 0.5(4.02) v^2 -> 21.16.
+    work = "0.5(0.020)(300^2) = 0.5(4.02) v_B2^2\nv_B2 = 21.2\n"
+    found = lines("msu-lectureonline-bullet-lodges-in-block", work)
+    assert found[1][:2] == ("wrong", "energy_conserved")
+    assert found[2][0] == "carried"
+
+
+def test_a_chain_stage_slip_is_named_and_its_value_carried() -> None:
+    # AQA M3 2007 chain: after the first impact u_A = -0.6, u_B = 3.4; the wall (e = 0.7)
+    # turns B back: w_B = -0.7(3.4) = -2.38. Written +2.38: the wall's restitution reversed.
+    work = "u_A = -0.6, u_B = 3.4\ne = 0.7\nw_B = 0.7(3.4) = 2.38\nw_B - u_A = 2.38 + 0.6 = 2.98\n"
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[1][0] == "correct"
+    assert found[2][0] == "correct"  # the wall's own e, not the first impact's 0.8
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    assert found[4][0] == "carried"
+
+
+def test_a_chain_slip_in_a_stage_result_is_solved_for_it_and_carried() -> None:
+    # MSU chain: the bullet's kinetic energy "conserved": 900 = 0.5(4.02) V^2, V = 21.16;
+    # the rise from the student's own V: h_2 = 21.2^2/19.62 = 22.9 m, right given it.
+    work = "0.5(0.020)(300^2) = 0.5(4.02) V^2\n900 = 2.01 V^2\nV = 21.2\nh_2 = V^2/(2g) = 22.9\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1][:2] == ("wrong", "energy_conserved")
+    assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3

@@ -145,6 +145,13 @@ class Model:
                 return None
             return {u: self.num(sol[u].xreplace(subs), v.values) for u in self.unknowns}
         eqs = [self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for x in self.equations(v).values()]
+        return self.roots(eqs)
+
+    def roots(
+        self, eqs: list[sympy.Expr], near: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> dict[sympy.Symbol, sympy.Expr] | None:
+        """The most plausible real root of ``eqs`` (numbers in) in the unknowns (then the one
+        nearest ``near``, the true values), or None."""
         # plain real unknowns: a mistaken e may come out negative, a mistaken mass too
         plain = {u: sympy.Dummy(u.name, real=True) for u in self.unknowns}
         back = {d: u for u, d in plain.items()}
@@ -160,7 +167,7 @@ class Model:
         roots = [r for r in roots if set(r) == set(self.unknowns) and all(is_real(r[u]) for u in self.unknowns)]
         if not roots:
             return None
-        roots.sort(key=lambda r: -self._plausible(r))
+        roots.sort(key=lambda r: (-self._plausible(r), _distance(r, near)))
         return roots[0]
 
     def _plausible(self, root: dict[sympy.Symbol, sympy.Expr]) -> int:
@@ -210,6 +217,12 @@ class Model:
         if r.unit == "deg":
             return r.value * sympy.pi / 180 if r.value is not None else r.partial * sympy.pi / 180
         return r.value if r.value is not None else r.partial
+
+
+def _distance(root: Mapping[sympy.Symbol, sympy.Expr], near: Mapping[sympy.Symbol, sympy.Expr] | None) -> float:
+    if not near:
+        return 0.0
+    return sum(abs((as_float(root[u]) or 0.0) - (as_float(near[u]) or 0.0)) for u in root if u in near)
 
 
 def is_real(x: sympy.Expr) -> bool:

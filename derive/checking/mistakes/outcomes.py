@@ -5,6 +5,8 @@ from __future__ import annotations
 import itertools
 import weakref
 
+import sympy
+
 from derive.checking.mistakes.equations import Model, point
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Outcome
@@ -40,7 +42,8 @@ class _Entry:
     def forms(self) -> list[Outcome]:
         """Each mistake's equations as a student writes them where solving them gives nothing
         (B's sign in a find-e problem leaves no approach) or the mistake is made on one side
-        of an equation only: equations, no values."""
+        of an equation only: their equations, and the unknowns they give where they give them
+        (``post``; no other results)."""
         if self.shapes is None:
             solved = {o.mistake.name for o in self.outcomes() if o.mistake is not None}
             found = []
@@ -51,9 +54,17 @@ class _Entry:
                 shapes = [] if m.name in solved else [self.model.numbered(variant)]
                 if m.name in FORMS:
                     shapes += FORMS[m.name](self.model, variant)
-                found += [Outcome(m, {}, {}, eqs, self.model.unknowns) for eqs in shapes]
+                found += [Outcome(m, {}, self._post(eqs), eqs, self.model.unknowns) for eqs in shapes]
             self.shapes = found
         return self.shapes
+
+    def _post(self, eqs: dict[int, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+        """The unknowns as ``eqs`` give them (numbers only; {} where they give none)."""
+        if any(x.free_symbols - set(self.model.unknowns) for x in eqs.values()):
+            return {}
+        near = self.base.post if self.base is not None else None
+        numeric = [sympy.N(x, 30) for x in eqs.values()]  # exact cosines make SymPy's solve slow
+        return self.model.roots(numeric, near) or {}
 
     def pairs(self) -> list[Outcome]:
         if self.paired is None:

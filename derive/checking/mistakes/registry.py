@@ -40,6 +40,7 @@ KINDS: tuple[Mistake, ...] = (
 #: Further ways a kind shows in the equations a student writes (its equations, numbers in).
 FORMS: dict[str, Callable[[Any, Variant], list[dict[int, sympy.Expr]]]] = {
     "masses_swapped": masses.one_side,
+    "energy_conserved": restitution.energy_for_momentum,
 }
 
 # every kind registered itself when its module was imported; here they are put in report order
