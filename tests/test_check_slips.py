@@ -5,6 +5,8 @@ files' givens (in the comments), never from derive's output."""
 
 from __future__ import annotations
 
+import time
+
 import derive
 
 
@@ -127,3 +129,17 @@ def test_a_chain_slip_in_a_stage_result_is_solved_for_it_and_carried() -> None:
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1][:2] == ("wrong", "energy_conserved")
     assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
+
+
+def test_a_number_worked_wrongly_in_a_find_e_quadratic_is_arithmetic_and_quick() -> None:
+    # CIE 2014: m at u hits 9m at rest, half the kinetic energy lost. Multiplying
+    # ((1 - 9e)^2 + 9(1 + e)^2) u^2/100 = u^2/2 by 100/u^2 gives 50, written 25: the terms in e
+    # as they were, only the number wrong. Solving the bilinear equations again (e unknown)
+    # took past the 60 s budget before.
+    work = "(1 - 9e)^2 u^2/100 + 9(1 + e)^2 u^2/100 = u^2/2\n(1 - 9e)^2 + 9(1 + e)^2 = 25\n90 e^2 = 15\n"
+    start = time.monotonic()
+    found = lines("cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost", work)
+    assert time.monotonic() - start < 30
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"

@@ -39,7 +39,7 @@ from derive.problem import units
 TRUE = "substituting the correct values"
 SOLVING = {
     "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
-    "arithmetic": ": it does not follow from the line before (an arithmetic slip in solving it).",
+    "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
 }
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
@@ -238,7 +238,7 @@ class Trace:
         if not expected and j and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
-        if line.own_names:  # derive's names are not the student's: no "expected" in them
+        if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
         named = "rounded_too_early" if "rounded too early" in detail else "arithmetic" if arithmetic else ""
@@ -280,7 +280,7 @@ class Trace:
                 return diags, j, early, ""
             world = self.world if self.world is not None else self.truth
             name = slipnames.solving_slip(
-                line.sides, self.pairs(line), self.previous, self.U, lambda p: self.holds([p], world)
+                line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)

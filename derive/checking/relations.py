@@ -67,10 +67,12 @@ def solve_with(
         cf = coefficients(F.xreplace(pt), U)
         if cf is None or any(sum(m) > 2 for m in cf):  # beyond a quadratic: not an equation of this impact
             return None
-        eqs = [sympy.N(x.xreplace(pt), 30) for j, x in equations.items() if j != k]
-        eqs.append(sympy.N(sympy.numer(sympy.together(F.xreplace(pt))), 30))
+        # exact rationals: a polynomial system in floats sends SymPy's solver down paths that
+        # take minutes (e unknown: the impact rule is bilinear in e and the velocities)
+        eqs = [_rational(x.xreplace(pt)) for j, x in equations.items() if j != k]
+        eqs.append(_rational(sympy.numer(sympy.together(F.xreplace(pt)))))
         try:
-            roots = sympy.solve(eqs, list(U), dict=True, rational=False)
+            roots = sympy.solve(eqs, list(U), dict=True)
         except (NotImplementedError, ValueError, TypeError):
             return None
         roots = [r for r in roots if set(r) == set(U)]
@@ -78,6 +80,11 @@ def solve_with(
             return None
         out.append(roots)
     return out
+
+
+def _rational(x: sympy.Expr) -> sympy.Expr:
+    """``x`` with its numbers as exact rationals (at 30 digits)."""
+    return sympy.nsimplify(sympy.N(x, 30), rational=True)
 
 
 def linear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:

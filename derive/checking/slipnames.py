@@ -30,6 +30,7 @@ from derive.checking.context import DEG, Context
 from derive.checking.figures import figures
 from derive.checking.mistakes import Mistake
 from derive.checking.numeric import listed, number_of
+from derive.checking.relations import coefficients
 from derive.checking.worlds import NUMBER_SIDE, Pair
 from derive.mathtext.notation import student
 
@@ -145,11 +146,15 @@ def _holds_with(ctx: Context, bad: Pair, subs: dict[sympy.Symbol, sympy.Expr], h
     return holds(replace(bad, left=sides[0], right=sides[1]))
 
 
-def solving_slip(line_sides: tuple[str, ...], pairs: list[Pair], previous: Previous, U: tuple, holds: Holds) -> str:
-    """``algebra`` or ``arithmetic`` where the line solves the relation just before it (which
-    holds) for its one unknown and gets it wrong; "" where that is not what the line is."""
+def solving_slip(
+    line_sides: tuple[str, ...], pairs: list[Pair], previous: Previous, at: tuple[tuple, dict], holds: Holds
+) -> str:
+    """``algebra`` or ``arithmetic`` where the line works on the relation just before it (which
+    holds), in the same one unknown, and gets it wrong; "" where that is not what the line is.
+    ``at``: the unknowns and a sample point of the symbolic givens."""
     if previous is None:
         return ""
+    U, pt = at
     prev_text, prev_pairs = previous
     unknowns = set(U)
     line_u = set().union(*(p.difference.free_symbols & unknowns for p in pairs))
@@ -165,14 +170,29 @@ def solving_slip(line_sides: tuple[str, ...], pairs: list[Pair], previous: Previ
     numbers = set(re.findall(r"\d+\.?\d*", prev_text))
     if plain and any(set(re.findall(r"\d+\.?\d*", s)) <= numbers | {"1", "2"} for s in shown):
         return "algebra"
-    # arithmetic: a bare ``c x = number`` worked wrongly from it
-    (u,) = line_u
-    bad = failing[0]
-    for a, b in ((bad.left, bad.right), (bad.right, bad.left)):
-        coefficient = sympy.expand(a).coeff(u)
-        if b.is_number and coefficient.is_number and coefficient != 0 and sympy.expand(a - coefficient * u) == 0:
-            return "arithmetic"
+    # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
+    # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
+    held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
+    if held and _same_but_number(failing[0].difference, held[-1].difference, U, pt):
+        return "arithmetic"
     return ""
+
+
+def _same_but_number(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict) -> bool:
+    """Whether ``F`` is ``c G`` but for its number (the terms free of the unknowns)."""
+    cf, cg = coefficients(F.xreplace(pt), U), coefficients(G.xreplace(pt), U)
+    if not cf or not cg:
+        return False
+    constant = (0,) * len(U)
+    terms = (set(cf) | set(cg)) - {constant}
+    if not terms:
+        return False
+    key = max(terms, key=lambda m: abs(cg.get(m, 0)))
+    if not cg.get(key) or not cf.get(key):
+        return False
+    c = cf[key] / cg[key]
+    scale = max(abs(cf.get(m, 0)) for m in terms)
+    return all(abs(cf.get(m, 0) - c * cg.get(m, 0)) <= 1e-9 * scale for m in terms)
 
 
 def _has_letters(text: str) -> bool:
