@@ -479,6 +479,8 @@ def test_formula_units() -> None:
         # the masses swapped after the impact only (19.8 is the momentum before, right)
         ("3", "5*v_A2n + 20*v_B2n = 19.8", "wrong", "has the masses swapped"),
         ("3", "20*v_A2n + 7*v_B2n = 19.8", "wrong", "does not agree with (3)"),
+        # 23.7 for 19.81 moves v_A2n from -1.109 to -0.953: not hidden by v_B2t = -9.15
+        ("3", "20*v_A2n + 5*v_B2n = 23.7", "wrong", "does not agree with (3)"),
         ("4", "20*v_A2n + 5*v_B2n = 19.81", "correct", "it is (3)"),
         ("5", "25*v_A2n = 19.8 - 5*9.5", "correct", "correct"),
     ],
