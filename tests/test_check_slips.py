@@ -143,3 +143,13 @@ def test_a_number_worked_wrongly_in_a_find_e_quadratic_is_arithmetic_and_quick()
     assert found[1][0] == "correct"
     assert found[2][:2] == ("wrong", "arithmetic")
     assert found[3][0] == "carried"
+
+
+def test_a_given_copied_wrongly_is_named() -> None:
+    # AQA M3 2014: A (2m) arrives at 2u, e = 2/3: v_B2 - v_A2 = (2/3)(2u) = 4u/3. With u for 2u
+    # the line holds once the given is put back as the problem states it.
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", "v_B2 - v_A2 = 2/3 (u - 0) = 2u/3\n")
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    # a number that looks like no given is not named so (Byju's: 4 kg at 12 m/s, 4(12) + 8(4) = 80)
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "4(13) + 8(4) = 4 v_A2 + 8 v_B2\n")
+    assert found[1][0] == "wrong" and found[1][1] != "copied_wrong"

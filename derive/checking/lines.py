@@ -41,6 +41,7 @@ SOLVING = {
     "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
     "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
 }
+COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
 
@@ -261,6 +262,8 @@ class Trace:
                 return diags, None, f": it {said}.", ""
             if self._ke_formula(bad):
                 return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth)):
+                return (), None, f": {COPIED}", "copied_wrong"
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
@@ -282,6 +285,8 @@ class Trace:
             name = slipnames.solving_slip(
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
+            if not name and slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], world)):
+                return diags, j, f": {COPIED}", "copied_wrong"
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:

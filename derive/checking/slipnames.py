@@ -220,3 +220,36 @@ def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, tru
     if drift > 3:  # more than rounding explains
         return ""
     return f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
+
+
+def copied_wrong(ctx: Context, bad: Pair, holds: Holds) -> bool:
+    """Whether ``bad`` holds once a number or letter in it that looks like one of the givens
+    (its digits in another order or place, or its coefficient dropped: ``u`` for ``2u``) is
+    put back as that given."""
+    if bad.raw is None:
+        return False
+    values = [g.value if g.value is not None else g.definition for g in ctx.problem.givens if not g.unknown]
+    givens = [x for x in values if x is not None and x != 0]
+    atoms = set().union(*(x.atoms(sympy.Number, sympy.Symbol) for x in bad.raw)) - {DEG}
+    for a in atoms:
+        for g in givens:
+            if _looks_like(a, g) and _holds_with(ctx, bad, {a: g}, holds):
+                return True
+    return False
+
+
+def _looks_like(a: sympy.Expr, g: sympy.Expr) -> bool:
+    """``a`` written for the given ``g``: the same digits in another order or place (3.64 for
+    3.46, 60 for 6), or a letter with its coefficient lost (``u`` for ``2u``)."""
+    if a == g or a == -g:
+        return False
+    if isinstance(a, sympy.Symbol):
+        ratio = sympy.simplify(g / a)
+        return bool(ratio.is_number and ratio not in (1, -1) and g.free_symbols == {a})
+    if not (a.is_number and g.is_number and a.is_Rational and g.is_Rational):
+        return False
+
+    def digits(x: sympy.Expr) -> str:
+        return re.sub(r"[^0-9]", "", format(Decimal(str(sympy.Float(x, 15))).normalize(), "f")).strip("0")
+
+    return len(digits(g)) >= 2 and sorted(digits(a)) == sorted(digits(g))
