@@ -153,3 +153,12 @@ def test_a_given_copied_wrongly_is_named() -> None:
     # a number that looks like no given is not named so (Byju's: 4 kg at 12 m/s, 4(12) + 8(4) = 80)
     found = lines("byjus-4kg-ball-catches-8kg-ball", "4(13) + 8(4) = 4 v_A2 + 8 v_B2\n")
     assert found[1][0] == "wrong" and found[1][1] != "copied_wrong"
+
+
+def test_the_same_mistake_again_is_not_counted_as_a_further_slip() -> None:
+    # Hibbeler 15-58 (numbers as above): T_2 with the weights again is "again"; the loss
+    # worked from both is right given the one slip, in line 1.
+    work = "T_1 = 0.5(15)(19.657)^2 = 2898\nT_2 = 0.5(15)(9.435)^2 + 0.5(10)(15.33)^2 = 1843\nT_lost = 2898 - 1843 = 1055\n"
+    report = derive.check(derive.solve(derive.load("hibbeler-15-58-suitcases")), derivation=work)
+    last = [i for i in report.items if i.kind == "line"][-1]
+    assert last.status == "carried" and "the slip in line 1:" in last.message

@@ -234,7 +234,7 @@ class Trace:
         else:
             lead = "The first line that is false for this problem"
         self.named[line.number] = {d.mistake for d in diags}
-        self._replace(line, bad, j)
+        self._replace(line, bad, j, slip=not again)  # the same mistake again is not a further slip
         expected = answer.expected if answer is not None else ""
         if not expected and j and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
