@@ -476,7 +476,11 @@ def test_formula_units() -> None:
         ("3", "20*v_A2n + 5*v_B2n = 20*5*cos(37.6) - 5*15*cos(37.6)", "wrong", "degrees as radians"),
         ("4", "T_1 = T_2", "wrong", "conserves kinetic energy"),
         ("4", "v_B2n - v_A2n = 0.6*(5 + 15)", "wrong", "applies e to the speeds"),
-        ("3", "5*v_A2n + 20*v_B2n = 19.8", "wrong", "does not agree with (3)"),
+        # the masses swapped after the impact only (19.8 is the momentum before, right)
+        ("3", "5*v_A2n + 20*v_B2n = 19.8", "wrong", "has the masses swapped"),
+        ("3", "20*v_A2n + 7*v_B2n = 19.8", "wrong", "does not agree with (3)"),
+        # 23.7 for 19.81 moves v_A2n from -1.109 to -0.953: not hidden by v_B2t = -9.15
+        ("3", "20*v_A2n + 5*v_B2n = 23.7", "wrong", "does not agree with (3)"),
         ("4", "20*v_A2n + 5*v_B2n = 19.81", "correct", "it is (3)"),
         ("5", "25*v_A2n = 19.8 - 5*9.5", "correct", "correct"),
     ],

@@ -45,7 +45,8 @@ def test_documented_derivation(problem: str, expect: str, work: str) -> None:
             continue
         assert n in lines, (n, report.text())
         item = lines[n]
-        verdict = wanted.get(str(n), "correct")
+        verdict, _, slip = wanted.get(str(n), "correct").partition("/")  # "wrong/algebra": the slip's name
         assert item.status == VERDICT[verdict], (n, report.text())
+        assert not slip or item.slip == slip, (n, item.slip, report.text())
         assert item.again == (verdict == "again"), (n, report.text())
     assert report.exit_code == (1 if wanted else 0), report.text()

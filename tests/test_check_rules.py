@@ -83,9 +83,20 @@ _SWAP_A2N = (_SWAP_C3 - mA * _SEP) / (mA + mB)
         ("5", "25*v_A2n = 19.8 - 5*9.5", "solves_correctly", True, 3, None),  # the notes' elimination
         ("3", f"25*v_A2n = {_SWAP_C3 - mA * _SEP:.4f}", "solves_as_mistake", False, 3, "masses_swapped"),
         ("1", "25*v_A2n = 19.8 - 5*9.5", "consistent", True, None, None),  # an n equation labelled (1)
-        ("3", "5*v_A2n + 20*v_B2n = 19.8", "no_match", False, 3, None),
+        ("3", "5*v_A2n + 20*v_B2n = 19.8", "mistaken_equation", False, 3, "masses_swapped"),  # after only
+        ("3", "20*v_A2n + 7*v_B2n = 19.8", "no_match", False, 3, None),
     ],
-    ids=["same-3", "same-4", "mistaken", "relabelled", "solves", "solves-as-mistake", "consistent", "no-match"],
+    ids=[
+        "same-3",
+        "same-4",
+        "mistaken",
+        "relabelled",
+        "solves",
+        "solves-as-mistake",
+        "consistent",
+        "masses-one-side",
+        "no-match",
+    ],
 )
 def test_each_rule_gives_its_verdict(
     label: str, text: str, rule: str, correct: bool, equation: int | None, mistake: str | None

@@ -11,15 +11,17 @@ only with the student's own earlier numbers is carried.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import sympy
 
+from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.lines import merged
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
-from derive.checking.report import Item
+from derive.checking.report import Item, merged
+from derive.errors import InputError
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 
@@ -34,6 +36,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     own_defs: dict[sympy.Symbol, sympy.Expr] = {}
     items: list[Item] = []
     slips: list[str] = []
+    stages = _stage_mistakes(ctx)
     for r, sides, exprs in read:
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
@@ -42,8 +45,16 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             own_defs[left] = sympy.Rational(sides[-1]) if _number(sides[-1]) else exprs[-1].xreplace(own_defs)
             exprs, sides = exprs[1:], sides[1:]
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
+        if _stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
+            items.append(
+                Item("line", str(r.line), r.written, "correct", "", "A given of a stage.", "the chain's values")
+            )
+            continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
-        items.append(_verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips))
+        item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
+        if item.status == "wrong" and not item.again:
+            item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+        items.append(item)
         if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
             own_defs[left] = sympy.Rational(sides[-1].strip())
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
@@ -184,9 +195,101 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         return item("not read", "Not read: a name in it is not the chain's.")
     if truly:
         return item("correct", "True for this problem.")
+    carried = f"Right given the slip in line {slips[0]}: a carried error, not a new mistake." if slips else ""
     if slips and _holds(ctx, sides, exprs[:1] + [x.xreplace(own_defs) for x in exprs[1:]], [own_defs, values]):
-        return item("carried", f"Right given the slip in line {slips[0]}: a carried error, not a new mistake.")
+        return item("carried", carried)
+    # ``h_2 = V^2/(2g) = 22.9``: the formula right, and the rest worked from the student's V
+    formula = slips and exprs[0].is_Symbol and len(exprs) > 2
+    if formula and _holds(ctx, sides[:2], exprs[:2], [true_defs, values]):
+        own = [x.xreplace(own_defs) for x in exprs[1:]]
+        if _holds(ctx, sides[1:], own, [own_defs, values]):
+            return item("carried", carried)
     first = not slips
     slips.append(str(r.line))
     lead = "The first line that is false for this problem" if first else "False: a further slip"
     return item("wrong", f"{lead}.")
+
+
+#: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
+#: and the stage's common mistakes solved (each with its values by those names).
+StageMistakes = list[tuple[str, dict[sympy.Symbol, sympy.Expr]]]
+
+
+def _stage_mistakes(ctx: Context) -> StageMistakes:
+    """Each impact stage's common mistakes, as the chain's values they give (``w_B`` = +2.38
+    with the wall's restitution reversed): a slip in a stage is named as in a single impact."""
+    out: StageMistakes = []
+    for st in getattr(ctx.solution, "stages", ()):
+        part = getattr(st, "part", None)
+        if part is None:
+            continue
+        names = {}
+        for eqn in getattr(st, "carried", ()):
+            outer, inner = (eqn.sides[0].terms[0], eqn.sides[1].terms[0])
+            if isinstance(outer, sympy.Symbol) and isinstance(inner, sympy.Symbol):
+                names[sympy.Symbol(outer.name)] = inner.name  # the chain's values are plain symbols
+        inner_ctx = Context(part, None)
+        try:
+            found = [*inner_ctx.singles(), *(o for o in inner_ctx.forms() if o.post)]
+        except (InputError, ValueError, TypeError, ArithmeticError):
+            continue
+        for o in found:
+            if o.mistake is None:
+                continue
+            post = {u.name: x for u, x in o.post.items()}
+            given = {}
+            for outer, inner in names.items():
+                q = o.results.get(inner)
+                x = q.value if q is not None and q.value is not None else post.get(inner)
+                if x is not None:
+                    given[outer] = x * 180 / sympy.pi if q is not None and q.value is None else x
+            if given:
+                out.append((o.mistake.name, given))
+    return out
+
+
+def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: StageMistakes) -> Item:
+    """The first slip named by the stage's mistake whose values make it hold (and those values
+    kept as the student's, for the lines after); else, a line in one result name unknown to
+    the student is solved for it (``½(0.020)(300²) = ½(4.02) V²``) and its root kept."""
+    for name, given in stages:
+        if _holds(ctx, sides, exprs, [{**true_defs, **given}, values]):
+            own_defs.update({k: v for k, v in given.items() if k not in own_defs})
+            phrase = mistakes.phrase(name) or name
+            return replace(item, slip=name, message=f"{item.message[:-1]}: it {phrase}.")
+    left = [x for x in exprs if x.free_symbols]
+    names = set().union(*(x.free_symbols for x in exprs)) - set(true_defs) - set(own_defs)
+    names = {s for s in names if s in values and ctx.solution.results.get(s.name) is not None}
+    if len(names) == 1 and left and len(exprs) == 2:
+        (u,) = names
+        root = _root(ctx, exprs[0] - exprs[1], u, values)
+        if root is not None:
+            own_defs[u] = root
+    return item
+
+
+def _root(ctx: Context, F: sympy.Expr, u: sympy.Symbol, values) -> sympy.Expr | None:
+    """The real root of ``F = 0`` in ``u`` (everything else known) nearest ``u``'s true value."""
+    G = F.xreplace({k: v for k, v in values.items() if k != u}).xreplace(ctx.unit_subs())
+    if G.free_symbols != {u}:
+        return None
+    try:
+        roots = [r for r in sympy.solve(sympy.nsimplify(G, rational=True), u) if r.is_real]
+    except (NotImplementedError, ValueError, TypeError):
+        return None
+    true = number_of(values[u])
+    if not roots or true is None:
+        return None
+    return min(roots, key=lambda r: abs((number_of(r) or 0) - true.real))
+
+
+def _stage_given(ctx: Context, exprs) -> bool:
+    """``e = 0.7`` where a stage's own given of that name (the wall's e) has that value."""
+    if len(exprs) != 2 or not isinstance(exprs[0], sympy.Symbol) or exprs[1].free_symbols:
+        return False
+    for st in getattr(ctx.solution, "stages", ()):
+        part = getattr(st, "part", None)
+        g = next((g for g in part.problem.givens if g.name == exprs[0].name), None) if part is not None else None
+        if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
+            return True
+    return False

@@ -136,6 +136,12 @@ class Context:
 
         return [] if self.chain else outcomes(self.solution)
 
+    def forms(self) -> list[mistakes.Outcome]:
+        """The mistakes' equations that no outcome has (unsolvable, or on one side only)."""
+        from derive.checking.mistakes import forms
+
+        return [] if self.chain else forms(self.solution)
+
     def pairs(self) -> list[mistakes.Outcome]:
         """Every pair of common mistakes that applies here, solved (bounded; slower)."""
         from derive.checking.mistakes import pair_outcomes

@@ -47,6 +47,7 @@ class Equation:
     outcomes: list[Outcome]
     numbers: tuple[int, ...]
     notes: tuple[str, ...] = ()
+    forms: tuple[Outcome, ...] = ()  # mistakes' equations with no values (see mistakes.forms)
 
     @property
     def U(self) -> tuple[sympy.Symbol, ...]:
@@ -84,14 +85,15 @@ def same_equation(ctx: Context, eq: Equation) -> Verdict | None:
 
 
 def mistaken_equation(ctx: Context, eq: Equation) -> Verdict | None:
-    """It is the mistaken (k) of a common mistake, up to a factor."""
-    for j in eq.order:
+    """It is the mistaken (k) of a common mistake, up to a factor (the mistakes as they are
+    solved first, then their other forms: energy in place of (4) before in place of (3))."""
+    for pool, j in [(pool, j) for pool in (eq.outcomes, list(eq.forms)) for j in eq.order]:
 
         def fits(o: Outcome, j: int = j) -> str | None:
             mistaken = j in o.equations and not proportional(o.equations[j], eq.base.equations[j], eq.U, eq.pts, 1e-9)
             return "" if mistaken and proportional(eq.F, o.equations[j], eq.U, eq.pts, eq.tol) else None
 
-        found = ctx.diagnose(fits, eq.outcomes)
+        found = ctx.diagnose(fits, pool)
         if found:
             return Verdict("mistaken_equation", False, j, found)
     return None
@@ -120,7 +122,10 @@ def solves_as_mistake(ctx: Context, eq: Equation) -> Verdict | None:
         roots = solve_with(eq.F, eq.base.equations, j, eq.U, eq.pts)
         if roots is None:
             continue
-        found = ctx.diagnose(lambda o, r=roots: "" if matches(r, o, eq.U, eq.pts, eq.tol) else None, eq.outcomes)
+        shapes = [o for o in eq.forms if o.post and not eq.pts[0]]  # the forms' velocities are numbers
+        found = ctx.diagnose(
+            lambda o, r=roots: "" if matches(r, o, eq.U, eq.pts, eq.tol) else None, [*eq.outcomes, *shapes]
+        )
         if found:
             return Verdict("solves_as_mistake", False, j, found)
     return None
@@ -275,7 +280,7 @@ def relation(
     pts = ctx.sampler().points(extra, 3) if extra else [{}]
     tol = max(literal_tolerance(text, ctx.data), 1e-9)
     found = [o for o in ctx.singles() if o.mistake is not None]
-    return Equation(text, label, k, F, tol, pts, base, found, model.numbers, tuple(notes))
+    return Equation(text, label, k, F, tol, pts, base, found, model.numbers, tuple(notes), tuple(ctx.forms()))
 
 
 def _why_not(ctx: Context) -> str:

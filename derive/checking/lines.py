@@ -19,24 +19,31 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes
+from derive.checking import mistakes, slipnames
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
-from derive.checking.figures import figures, literal_tolerance
+from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
-from derive.checking.relations import Point, Values, coefficients, shown
-from derive.checking.report import Diagnosis, Item
-from derive.checking.worlds import NUMBER_SIDE, Pair, alike, holds_at, solve_world, three_figures, written_right
+from derive.checking.relations import Point, Values, shown
+from derive.checking.report import Diagnosis, Item, merged
+from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
 from derive.errors import InputError
 from derive.mathtext.notation import student
 from derive.numbers import format_number
 from derive.problem import units
 
 TRUE = "substituting the correct values"
+SOLVING = {
+    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
+    "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
+}
+COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
+#: The slip is in a result worked from the velocities, not in the equations: none is replaced.
+KEPT = 0
 
 
 #: The most relations of one derivation that are judged (the rest are reported as not checked).
@@ -62,22 +69,6 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     return merged([i for i in items if i is not None]), notes
 
 
-#: A line's verdicts, least serious first: a line of several relations shows its worst once.
-RANK = ("correct", "not read", "not checked", "carried", "wrong", "error")
-
-
-def merged(items: list[Item]) -> list[Item]:
-    """One item per line of the file (``a = 1, b = 2`` and ``… ⇒ …`` are one line): its worst verdict."""
-    out: list[Item] = []
-    for item in items:
-        if out and out[-1].name == item.name and item.name:
-            if RANK.index(item.status) > RANK.index(out[-1].status):
-                out[-1] = item
-            continue
-        out.append(item)
-    return out
-
-
 class Trace:
     """The state of a derivation read so far: the student's equations and their solution."""
 
@@ -98,11 +89,20 @@ class Trace:
         self.held: list[Pair] = []  # the right relations in the unknowns, so far
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
+        self.wrong_numbers: set[str] = set()  # and their integers too
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
+        self.previous: slipnames.Previous = None  # the relation just before, if it held
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
         """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
+        out = self._judge(line)
+        if out is not None and line.exprs is not None and not line.defines:
+            held = out.status in ("correct", "carried")
+            self.previous = (" = ".join(line.sides), self.pairs(line)) if held else None
+        return out
+
+    def _judge(self, line: Line) -> Item | None:
         if line.exprs is None:
             if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
                 return None  # prose with an "=" in it
@@ -120,7 +120,7 @@ class Trace:
                 return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
-            self.wrong_values |= _decimals(line.sides[-1:])
+            self._wrote_wrong(line)
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
                 self._refine(own[0])
@@ -128,11 +128,15 @@ class Trace:
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
             return self._carried(line)
-        self.wrong_values |= _decimals(line.sides[-1:])
-        if self._with_own_values(line):
+        self._wrote_wrong(line)
+        if self._with_own_values(line) or self._with_slips_results(line, pairs):
             return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
+
+    def _wrote_wrong(self, line: Line) -> None:
+        self.wrong_values |= _decimals(line.sides[-1:])
+        self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
 
     def _own_value(self, line: Line) -> None:
         """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
@@ -209,7 +213,7 @@ class Trace:
         bad = bad or next(iter(plain), None)
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
-        diags, j, detail = self._explain(line, bad, answer)
+        diags, j, detail, name = self._explain(line, bad, answer)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
@@ -222,64 +226,89 @@ class Trace:
         else:
             lead = "The first line that is false for this problem"
         self.named[line.number] = {d.mistake for d in diags}
-        self._replace(line, bad, j)
+        self._replace(line, bad, j, slip=not again)  # the same mistake again is not a further slip
         expected = answer.expected if answer is not None else ""
-        if not expected and j is not None and bad.difference.free_symbols & set(self.U):
+        if not expected and j and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
-        if line.own_names:  # derive's names are not the student's: no "expected" in them
+        if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
         named = "rounded_too_early" if "rounded too early" in detail else "arithmetic" if arithmetic else ""
+        named = name or named
         slip = ",".join(d.mistake for d in diags) or named
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
         return replace(item, slip=slip, again=bool(again))
 
-    def _explain(self, line: Line, bad: Pair, answer: Item | None) -> tuple[tuple[Diagnosis, ...], int | None, str]:
-        """The mistakes that explain the slip ``bad``, the equation it stands for, and the
-        rest of the sentence that reports it."""
+    def _explain(
+        self, line: Line, bad: Pair, answer: Item | None
+    ) -> tuple[tuple[Diagnosis, ...], int | None, str, str]:
+        """The mistakes that explain the slip ``bad``, the equation it stands for, the rest of
+        the sentence that reports it, and the slip's name where it is not a mistake's."""
         if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
-            return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips)."
+            return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips).", ""
         if not bad.difference.free_symbols & set(self.U):
-            diags = self._before(bad)
+            diags = self._before(bad) or self._in_results(bad)
             if diags:
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
-                return diags, None, f": it {said}."
-            return (), None, ": " + self._arithmetic(bad)
+                return diags, None, f": it {said}.", ""
+            if self._ke_formula(bad):
+                return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth)):
+                return (), None, f": {COPIED}", "copied_wrong"
+            return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
+            diags = self._in_results(bad)
+            if diags:  # a result worked wrongly: the student's equations stand
+                said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
+                return diags, KEPT, f": it {said}.", ""
+        if not diags:
+            if self._ke_formula(bad):
+                return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
             early = self._rounded_early(line, bad)
-            return diags, j, early or ". No common mistake reproduces it."
+            if early:
+                return diags, j, early, ""
+            world = self.world if self.world is not None else self.truth
+            name = slipnames.solving_slip(
+                line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
+            )
+            if not name and slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], world)):
+                return diags, j, f": {COPIED}", "copied_wrong"
+            return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
-            return diags, j, f": it {said}."
-        return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}."
+            return diags, j, f": it {said}.", ""
+        return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}.", ""
+
+    def _in_results(self, bad: Pair) -> tuple[Diagnosis, ...]:
+        """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
+        world = self.world if self.world is not None else self.truth
+        found = slipnames.under_results(self.ctx, bad, lambda p: self.holds([p], world))
+        return tuple(d for m in found for d in self.ctx.diagnosis(m))
+
+    def _with_slips_results(self, line: Line, pairs: list[Pair]) -> bool:
+        """Whether the line, worked from numbers the student got wrong, holds with the results
+        as the mistakes named so far give them (``T_lost = 2898 - 1843`` after T_1 and T_2
+        worked with the weights as masses); a line that works the mistake afresh is "again"."""
+        if not self.named or not set(re.findall(r"\d+\.?\d*", " ".join(line.sides[:-1]))) & self.wrong_numbers:
+            return False
+        world = self.world if self.world is not None else self.truth
+        named = set().union(*self.named.values())
+        return slipnames.carried_by_results(self.ctx, pairs, named, lambda q: self.holds([q], world))
+
+    def _ke_formula(self, bad: Pair) -> bool:
+        world = self.world if self.world is not None else self.truth
+        return slipnames.ke_formula(self.ctx, bad, lambda p: self.holds([p], world))
 
     def _before(self, bad: Pair) -> tuple[Diagnosis, ...]:
         """The mistakes in the values before the impact (sin and cos swapped, B's sign, radians,
         masses) that make ``bad`` hold; the velocities they give become the slip's world."""
-        if bad.raw is None:
-            return ()
-        model, found = self.ctx.model, []
-        for m in mistakes.REGISTRY.values():
-            v = m.build(model)
-            if v is None or (v.pre is None and v.masses is None):
-                continue
-            subs = dict(v.pre or {})
-            if v.masses is not None:
-                subs.update({model.m_A: v.masses[0], model.m_B: v.masses[1]})
-            sides = [self.ctx.in_unknowns(x.xreplace(subs)) for x in bad.raw]
-            if self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
-                found.append(m)
-        if not found and "degrees_as_radians" in mistakes.REGISTRY:  # a calculator in radian mode
-            sides = [self.ctx.in_unknowns(x.xreplace({DEG: sympy.Integer(1)})) for x in bad.raw]
-            trig = any(x.has(DEG) for x in bad.raw)
-            if trig and self.holds([replace(bad, left=sides[0], right=sides[1])], self.truth):
-                found.append(mistakes.REGISTRY["degrees_as_radians"])
+        found = slipnames.before_impact(self.ctx, bad, lambda p: self.holds([p], self.truth))
         if not found:
             return ()
         out = next((o for o in self.ctx.singles() if o.mistake is not None and o.mistake.name == found[0].name), None)
@@ -289,25 +318,13 @@ class Trace:
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:
-        """ ": rounded too early …" where the line is worked from numbers the student rounded to
-        two figures (not the data) and misses the value by more than its last figure."""
-        early = [
-            t
-            for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(line.sides))
-            if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in self.ctx.data
-        ]
-        if not early or self.early is not None:
+        """ ": rounded too early …" (once) where the line is worked from numbers rounded early."""
+        if self.early is not None:
             return ""
-        left, right = (number_of(x.xreplace(self.pts[0]).xreplace(self.truth[0])) for x in (bad.left, bad.right))
-        if left is None or right is None or not right:
-            return ""
-        drift = abs(left - right) / max(abs(left), abs(right)) * 100
-        if drift > 3:  # more than rounding explains
-            return ""
-        self.early = line.number
-        return (
-            f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
-        )
+        words = slipnames.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
+        if words:
+            self.early = line.number
+        return words
 
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
@@ -327,7 +344,7 @@ class Trace:
         """Record ``bad`` of ``line`` (a slip, or a line that carries a wrong number on):
         in place of (j) when it has unknowns, and solve the equations again."""
         F = bad.difference
-        if F.free_symbols & set(self.U):
+        if F.free_symbols & set(self.U) and j != KEPT:
             j = j if j is not None else self._closest(F)
             if j is not None:
                 self.equations[j] = F
@@ -358,26 +375,8 @@ class Trace:
                 return
 
     def _closest(self, F: sympy.Expr) -> int | None:
-        """The equation ``F`` most likely stands for: the most alike of (1)-(4) in its unknowns
-        whose place it can take (the others with it still determine the velocities)."""
-        cf = coefficients(F.xreplace(self.pts[0]), self.U)
-        if not cf:
-            return None
-        best, score = None, (-1, False, -9, -1.0)
-        for j, G in self.equations.items():
-            cg = coefficients(G.xreplace(self.pts[0]), self.U)
-            if not cg:
-                continue
-            trial = solve_world({**self.equations, j: F}, self.U, self.pts[:1], self.truth[:1])
-            if trial is None:
-                continue
-            # first: how many of the relations the student wrote and got right still hold then
-            kept = sum(1 for p in self.held[-12:] if holds_at(p, trial, self.pts[:1], self.U))
-            near = alike(cf, cg)
-            s = (kept, near >= 0.5, -j, near)  # then the first of those much alike (substituted into)
-            if s > score:
-                best, score = j, s
-        return best
+        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`)."""
+        return closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
 
     def _carries_number(self, line: Line) -> bool:
         """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""

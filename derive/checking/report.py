@@ -256,3 +256,19 @@ def percent(x: float) -> str:
     if abs(p) < 0.001:
         return "< 0.001 %"
     return f"{p:+.2g} %"
+
+
+#: A line's verdicts, least serious first: a line of several relations shows its worst once.
+RANK = ("correct", "not read", "not checked", "carried", "wrong", "error")
+
+
+def merged(items: list[Item]) -> list[Item]:
+    """One item per line of the file (``a = 1, b = 2`` and ``… ⇒ …`` are one line): its worst verdict."""
+    out: list[Item] = []
+    for item in items:
+        if out and out[-1].name == item.name and item.name:
+            if RANK.index(item.status) > RANK.index(out[-1].status):
+                out[-1] = item
+            continue
+        out.append(item)
+    return out

@@ -16,12 +16,16 @@ from derive.checking import relations
 from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
-from derive.checking.relations import Point, Values, linear_roots, satisfied
+from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied
 from derive.mathtext.notation import student
 from derive.numbers import to_decimal
 
 #: A side that is a number as written (``-1.11``, ``(37.6*deg)``).
 NUMBER_SIDE = re.compile(r"^([-+]?)\(?((?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?:\*(deg|rad))?\)?$")
+
+
+#: Just under 1: a side exactly two units in its last place off (7.1 for 6.9) is not within them.
+BOUNDARY = 1 - 1e-9
 
 
 @dataclass(frozen=True)
@@ -46,7 +50,7 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
-        far = abs(left - right) > 2 * p.tol * scale
+        far = abs(left - right) > 2 * p.tol * scale * BOUNDARY  # two units in the last place is not the value
         if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not at_figures(p, left, right):
             return False
     return True
@@ -109,3 +113,28 @@ def solve_world(
         roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
         out.append(roots[0])
     return out
+
+
+def closest(
+    F: sympy.Expr, equations: dict[int, sympy.Expr], U: tuple[sympy.Symbol, ...], pt: Point, truth: Values, held: list
+) -> int | None:
+    """The equation ``F`` most likely stands for: the most alike of ``equations`` in its
+    unknowns whose place it can take (the others with it still determine the velocities),
+    first keeping the most of the right relations ``held`` the student wrote."""
+    cf = coefficients(F.xreplace(pt), U)
+    if not cf:
+        return None
+    best, score = None, (-1, False, -9, -1.0)
+    for j, G in equations.items():
+        cg = coefficients(G.xreplace(pt), U)
+        if not cg:
+            continue
+        trial = solve_world({**equations, j: F}, U, [pt], [truth])
+        if trial is None:
+            continue
+        kept = sum(1 for p in held if holds_at(p, trial, [pt], U))
+        near = alike(cf, cg)
+        s = (kept, near >= 0.5, -j, near)  # then the first of those much alike (substituted into)
+        if s > score:
+            best, score = j, s
+    return best

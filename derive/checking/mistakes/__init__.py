@@ -22,7 +22,7 @@ of mistakes (``velocities``, ``restitution``, ``tangential``, ``directions``,
 from __future__ import annotations
 
 from derive.checking.mistakes.equations import Model
-from derive.checking.mistakes.outcomes import changes, correct, model, outcomes, pair_outcomes
+from derive.checking.mistakes.outcomes import changes, correct, forms, model, outcomes, pair_outcomes
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Mistake, Outcome, Quantity, Variant, mistake
 from derive.checking.mistakes.registry import EQUATION_TITLES, KINDS, REGISTRY, phrase, register
@@ -40,6 +40,7 @@ __all__ = [
     "changes",
     "combine",
     "correct",
+    "forms",
     "mistake",
     "model",
     "outcomes",

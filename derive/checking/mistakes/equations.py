@@ -145,6 +145,13 @@ class Model:
                 return None
             return {u: self.num(sol[u].xreplace(subs), v.values) for u in self.unknowns}
         eqs = [self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for x in self.equations(v).values()]
+        return self.roots(eqs)
+
+    def roots(
+        self, eqs: list[sympy.Expr], near: Mapping[sympy.Symbol, sympy.Expr] | None = None
+    ) -> dict[sympy.Symbol, sympy.Expr] | None:
+        """The most plausible real root of ``eqs`` (numbers in) in the unknowns (then the one
+        nearest ``near``, the true values), or None."""
         # plain real unknowns: a mistaken e may come out negative, a mistaken mass too
         plain = {u: sympy.Dummy(u.name, real=True) for u in self.unknowns}
         back = {d: u for u, d in plain.items()}
@@ -160,7 +167,7 @@ class Model:
         roots = [r for r in roots if set(r) == set(self.unknowns) and all(is_real(r[u]) for u in self.unknowns)]
         if not roots:
             return None
-        roots.sort(key=lambda r: -self._plausible(r))
+        roots.sort(key=lambda r: (-self._plausible(r), _distance(r, near)))
         return roots[0]
 
     def _plausible(self, root: dict[sympy.Symbol, sympy.Expr]) -> int:
@@ -193,17 +200,29 @@ class Model:
             masses = (masses[0], sympy.Integer(0))
         masses = (masses[0].xreplace(known), masses[1].xreplace(known))
         res = results_of(self.problem, nm, pre, post, masses, known, v.angles, lambda x: self.num(x, v.values))
-        eqs = self.equations(v)
-        if v.energy:
+        return Outcome(m, res, post, self.numbered(v), self.unknowns)
+
+    def numbered(self, v: Variant, equations: dict[int, sympy.Expr] | None = None) -> dict[int, sympy.Expr]:
+        """``v``'s equations (or ``equations``, in its placeholders) as ``lhs - rhs`` with the
+        numbers in and the unknowns as symbols: what a student who made the mistake writes,
+        whether or not they can be solved."""
+        eqs = dict(equations) if equations is not None else self.equations(v)
+        if v.energy and equations is None:
             eqs[4] = self.energy_equation()
-        equations = {k: self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for k, x in eqs.items()}
-        return Outcome(m, res, post, equations, self.unknowns)
+        subs = self.substitutions(v)
+        return {k: self.num(x.xreplace(self.zeros).xreplace(subs), v.values) for k, x in eqs.items()}
 
     def _correct(self, u: sympy.Symbol) -> sympy.Expr:
         r = self.results[u.name]
         if r.unit == "deg":
             return r.value * sympy.pi / 180 if r.value is not None else r.partial * sympy.pi / 180
         return r.value if r.value is not None else r.partial
+
+
+def _distance(root: Mapping[sympy.Symbol, sympy.Expr], near: Mapping[sympy.Symbol, sympy.Expr] | None) -> float:
+    if not near:
+        return 0.0
+    return sum(abs((as_float(root[u]) or 0.0) - (as_float(near[u]) or 0.0)) for u in root if u in near)
 
 
 def is_real(x: sympy.Expr) -> bool:

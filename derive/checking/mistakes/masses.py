@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sympy
+
 from derive.checking.mistakes.equations import Model
 from derive.checking.mistakes.records import Variant, mistake
 
@@ -19,6 +21,23 @@ def masses_swapped(model: Model) -> Variant | None:
     if model.problem.fixed_B or model.is_zero(model.m_A - model.m_B):
         return None
     return Variant(masses=(model.m_B, model.m_A))
+
+
+def one_side(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """The n-momentum (3) with the masses swapped on one side only (before the impact, or
+    after it: ``2m(4) - 3m(2) = 3m x + 2m y``), the other side right; numbers in."""
+    eqs = model.equations(model.base())
+    if 3 not in eqs or v.masses is None:
+        return []
+    nm = model.nm
+    after = sympy.expand(eqs[3]) - sympy.expand(eqs[3]).xreplace({nm.A1n: 0, nm.B1n: 0})
+    before = sympy.expand(eqs[3]) - after
+    swap = {model.m_A: v.masses[0], model.m_B: v.masses[1]}
+    base = model.base()
+    return [
+        model.numbered(base, {**eqs, 3: before.xreplace(swap) + after}),
+        model.numbered(base, {**eqs, 3: before + after.xreplace(swap)}),
+    ]
 
 
 @mistake(

@@ -5,10 +5,12 @@ from __future__ import annotations
 import itertools
 import weakref
 
+import sympy
+
 from derive.checking.mistakes.equations import Model, point
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Outcome
-from derive.checking.mistakes.registry import REGISTRY
+from derive.checking.mistakes.registry import FORMS, REGISTRY
 from derive.steps.model import Solution
 
 
@@ -21,6 +23,7 @@ class _Entry:
         self.base = self.model.outcome(self.model.base())
         self.found: list[Outcome] | None = None
         self.paired: list[Outcome] | None = None
+        self.shapes: list[Outcome] | None = None
 
     def outcomes(self) -> list[Outcome]:
         if self.found is None:
@@ -35,6 +38,33 @@ class _Entry:
                 found.append(out)
             self.found = found
         return self.found
+
+    def forms(self) -> list[Outcome]:
+        """Each mistake's equations as a student writes them where solving them gives nothing
+        (B's sign in a find-e problem leaves no approach) or the mistake is made on one side
+        of an equation only: their equations, and the unknowns they give where they give them
+        (``post``; no other results)."""
+        if self.shapes is None:
+            solved = {o.mistake.name for o in self.outcomes() if o.mistake is not None}
+            found = []
+            for m in REGISTRY.values():
+                variant = m.build(self.model)
+                if variant is None:
+                    continue
+                shapes = [] if m.name in solved else [self.model.numbered(variant)]
+                if m.name in FORMS:
+                    shapes += FORMS[m.name](self.model, variant)
+                found += [Outcome(m, {}, self._post(eqs), eqs, self.model.unknowns) for eqs in shapes]
+            self.shapes = found
+        return self.shapes
+
+    def _post(self, eqs: dict[int, sympy.Expr]) -> dict[sympy.Symbol, sympy.Expr]:
+        """The unknowns as ``eqs`` give them (numbers only; {} where they give none)."""
+        if any(x.free_symbols - set(self.model.unknowns) for x in eqs.values()):
+            return {}
+        near = self.base.post if self.base is not None else None
+        numeric = [sympy.N(x, 30) for x in eqs.values()]  # exact cosines make SymPy's solve slow
+        return self.model.roots(numeric, near) or {}
 
     def pairs(self) -> list[Outcome]:
         if self.paired is None:
@@ -80,6 +110,12 @@ def correct(solution: Solution) -> Outcome | None:
 def outcomes(solution: Solution) -> list[Outcome]:
     """Every mistake that applies to the problem and changes some result, solved (cached)."""
     return list(_cached(solution).outcomes())
+
+
+def forms(solution: Solution) -> list[Outcome]:
+    """The mistakes' equations that are not an outcome's: unsolvable, or the mistake made on
+    one side of an equation only (cached; ``results`` and ``post`` empty)."""
+    return list(_cached(solution).forms())
 
 
 def pair_outcomes(solution: Solution) -> list[Outcome]:

@@ -6,8 +6,13 @@ it, after these); a built-in one is also one line of :data:`KINDS`.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
+import sympy
+
 from derive.checking.mistakes import directions, masses, restitution, tangential, velocities
-from derive.checking.mistakes.records import REGISTRY, Mistake
+from derive.checking.mistakes.records import REGISTRY, Mistake, Variant
 
 #: What each of the equations is, in words (the notes' three systems and the impact rule).
 EQUATION_TITLES = {
@@ -31,6 +36,12 @@ KINDS: tuple[Mistake, ...] = (
     masses.masses_swapped,
     masses.weight_as_mass,
 )
+
+#: Further ways a kind shows in the equations a student writes (its equations, numbers in).
+FORMS: dict[str, Callable[[Any, Variant], list[dict[int, sympy.Expr]]]] = {
+    "masses_swapped": masses.one_side,
+    "energy_conserved": restitution.energy_for_momentum,
+}
 
 # every kind registered itself when its module was imported; here they are put in report order
 _OTHERS = {k: m for k, m in REGISTRY.items() if m not in KINDS}

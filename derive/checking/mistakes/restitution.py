@@ -64,3 +64,12 @@ def energy_conserved(model: Model) -> Variant | None:
     if model.e in model.unknowns:
         return None
     return Variant(e=sympy.Integer(1), energy=True)
+
+
+def energy_for_momentum(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """Kinetic energy conserved in place of the momentum (3), the impact rule kept (a bullet
+    that lodges: ½ m u² = ½ (m + M) V²); numbers in."""
+    eqs = model.equations(model.base())
+    if 3 not in eqs:
+        return []
+    return [model.numbered(model.base(), {**eqs, 3: model.energy_equation()})]

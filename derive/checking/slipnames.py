@@ -1,0 +1,255 @@
+"""A slip named as a teacher names it, where the line holds exactly for the named wrong model.
+
+:mod:`.lines` finds the slip (the first false line) and tries the common mistakes of the
+equations (1)-(4) first; these name what is left, each only when the evidence supports it
+(a wrong name is worse than none):
+
+- a result's value as a mistake gives it (``T_1 = ½(15)(19.657)² = 2898``: the weight used
+  as the mass; ``θ_2 = tan⁻¹(v_t/v_n)``: the direction from the other axis), put in for the
+  result's name on the line;
+- ``ke_formula``: a kinetic energy worked with a wrong formula: ½m(u − v)² for
+  ½m(u² − v²), ½mv without the square, mv² without the half;
+- ``algebra`` and ``arithmetic``: a line solved from the relation just before it, right as
+  far as it goes, but with a sign lost in rearranging (algebra: it holds with one term of
+  that relation moved across without its sign changed, or the expression it shows is not
+  the rearranged one while its own arithmetic is right), or with a number worked wrongly
+  from it (arithmetic).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import replace
+from decimal import Decimal
+
+import sympy
+
+from derive.checking import mistakes
+from derive.checking.context import DEG, Context
+from derive.checking.figures import figures
+from derive.checking.mistakes import Mistake
+from derive.checking.numeric import listed, number_of
+from derive.checking.relations import coefficients
+from derive.checking.worlds import NUMBER_SIDE, Pair
+from derive.mathtext.notation import student
+
+Holds = Callable[[Pair], bool]
+#: The relation just before a line, if it held: its text and its pairs.
+Previous = tuple[str, list[Pair]] | None
+KE_FORMULA = (
+    "the kinetic energy is worked with the wrong formula (T = ½ m v² for each body; "
+    "the energy lost is ½ m (u² − v²), not ½ m (u − v)²)."
+)
+
+
+def before_impact(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
+    """The mistakes in the values before the impact (sin and cos swapped, B's sign, radians,
+    masses) that make ``bad`` hold."""
+    if bad.raw is None:
+        return []
+    model, found = ctx.model, []
+    for m in mistakes.REGISTRY.values():
+        v = m.build(model)
+        if v is None or (v.pre is None and v.masses is None):
+            continue
+        subs = dict(v.pre or {})
+        if v.masses is not None:
+            subs.update({model.m_A: v.masses[0], model.m_B: v.masses[1]})
+        if _holds_with(ctx, bad, subs, holds):
+            found.append(m)
+    if not found and "degrees_as_radians" in mistakes.REGISTRY:  # a calculator in radian mode
+        trig = any(x.has(DEG) for x in bad.raw)
+        if trig and _holds_with(ctx, bad, {DEG: sympy.Integer(1)}, holds):
+            found.append(mistakes.REGISTRY["degrees_as_radians"])
+    return found
+
+
+def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
+    """The mistakes whose value of a result named on the line makes ``bad`` hold."""
+    if bad.raw is None:
+        return []
+    syms = set().union(*(x.free_symbols for x in bad.raw))
+    names = {sym: name for name, (sym, _expr) in ctx.derived().items() if sym in syms}
+    found: list[Mistake] = []
+    for o in ctx.singles():
+        if o.mistake is None:
+            continue
+        subs = {s: o.results[n].partial for s, n in names.items() if n in o.results}
+        subs = {s: x for s, x in subs.items() if x is not None}
+        if subs and _holds_with(ctx, bad, subs, holds):
+            found.append(o.mistake)
+    return found
+
+
+def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: Holds) -> bool:
+    """Whether every pair of a line that is false holds with the results as one of the mistakes
+    ``named`` gives them."""
+    false = [p for p in pairs if not holds(p)]
+    return bool(false) and all({m.name for m in under_results(ctx, p, holds)} & named for p in false)
+
+
+def ke_formula(ctx: Context, bad: Pair, holds: Holds) -> bool:
+    """Whether ``bad`` holds with a kinetic energy (``T_1``, ``T_2``, ``T_lost``) worked by a
+    wrong formula, the velocities right."""
+    if bad.raw is None:
+        return False
+    derived = ctx.derived()
+    syms = set().union(*(x.free_symbols for x in bad.raw))
+    named = {n: derived[n][0] for n in ("T_1", "T_2", "T_lost") if n in derived and derived[n][0] in syms}
+    if not named:
+        return False
+    for form in wrong_energies(ctx):
+        if not set(named) <= set(form):
+            continue
+        subs = {s: form[n] for n, s in named.items()}
+        if _holds_with(ctx, bad, subs, holds):
+            return True
+    return False
+
+
+def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
+    """The kinetic energies (by result name) as the common wrong formulas give them, in the
+    components: without the square, without the half; the energy lost as ½m(u − v)² (of the
+    speeds, or of the velocities)."""
+    model, p = ctx.model, ctx.problem
+    nm = model.nm
+    bodies = [("A", model.m_A)] + ([] if p.fixed_B else [("B", model.m_B)])
+    zero = sympy.Integer(0)
+
+    def comps(b: str, k: str) -> tuple[sympy.Expr, sympy.Expr]:
+        n, t = getattr(nm, f"{b}{k}n"), getattr(nm, f"{b}{k}t") if p.oblique else None
+        return n, (t if t is not None else zero)
+
+    def speed(b: str, k: str) -> sympy.Expr:
+        n, t = comps(b, k)
+        return sympy.sqrt(n**2 + t**2)
+
+    half = sympy.Rational(1, 2)
+    forms: list[dict[str, sympy.Expr]] = []
+    for energy in (lambda m, s: half * m * s, lambda m, s: m * s**2):  # no square; no half
+        t1 = sum((energy(m, speed(b, "1")) for b, m in bodies), zero)
+        t2 = sum((energy(m, speed(b, "2")) for b, m in bodies), zero)
+        forms.append({"T_1": t1, "T_2": t2, "T_lost": t1 - t2})
+    lost_speeds = sum((half * m * (speed(b, "1") - speed(b, "2")) ** 2 for b, m in bodies), zero)
+    lost_velocities = sum(
+        (half * m * sum(((a - c) ** 2 for a, c in zip(comps(b, "1"), comps(b, "2"), strict=True)), zero))
+        for b, m in bodies
+    )
+    forms += [{"T_lost": lost_speeds}, {"T_lost": lost_velocities}]
+    return forms
+
+
+def _holds_with(ctx: Context, bad: Pair, subs: dict[sympy.Symbol, sympy.Expr], holds: Holds) -> bool:
+    assert bad.raw is not None
+    sides = [ctx.in_unknowns(x.xreplace(subs)) for x in bad.raw]
+    return holds(replace(bad, left=sides[0], right=sides[1]))
+
+
+def solving_slip(
+    line_sides: tuple[str, ...], pairs: list[Pair], previous: Previous, at: tuple[tuple, dict], holds: Holds
+) -> str:
+    """``algebra`` or ``arithmetic`` where the line works on the relation just before it (which
+    holds), in the same one unknown, and gets it wrong; "" where that is not what the line is.
+    ``at``: the unknowns and a sample point of the symbolic givens."""
+    if previous is None:
+        return ""
+    U, pt = at
+    prev_text, prev_pairs = previous
+    unknowns = set(U)
+    line_u = set().union(*(p.difference.free_symbols & unknowns for p in pairs))
+    prev_u = set().union(*(p.difference.free_symbols & unknowns for p in prev_pairs))
+    if len(line_u) != 1 or line_u != prev_u:
+        return ""
+    plain = [p for p in pairs if not p.difference.free_symbols & unknowns]
+    failing = [p for p in pairs if p.difference.free_symbols & unknowns and not holds(p)]
+    if not failing or not all(holds(p) for p in plain):
+        return ""
+    # algebra: the rearranged expression shown is not the relation's, its own arithmetic right
+    shown = [s for s in line_sides[1:] if not NUMBER_SIDE.match(student(s.strip())) and not _has_letters(s)]
+    numbers = set(re.findall(r"\d+\.?\d*", prev_text))
+    if plain and any(set(re.findall(r"\d+\.?\d*", s)) <= numbers | {"1", "2"} for s in shown):
+        return "algebra"
+    # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
+    # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
+    held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
+    if held and _same_but_number(failing[0].difference, held[-1].difference, U, pt):
+        return "arithmetic"
+    return ""
+
+
+def _same_but_number(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict) -> bool:
+    """Whether ``F`` is ``c G`` but for its number (the terms free of the unknowns)."""
+    cf, cg = coefficients(F.xreplace(pt), U), coefficients(G.xreplace(pt), U)
+    if not cf or not cg:
+        return False
+    constant = (0,) * len(U)
+    terms = (set(cf) | set(cg)) - {constant}
+    if not terms:
+        return False
+    key = max(terms, key=lambda m: abs(cg.get(m, 0)))
+    if not cg.get(key) or not cf.get(key):
+        return False
+    c = cf[key] / cg[key]
+    scale = max(abs(cf.get(m, 0)) for m in terms)
+    return all(abs(cf.get(m, 0) - c * cg.get(m, 0)) <= 1e-9 * scale for m in terms)
+
+
+def _has_letters(text: str) -> bool:
+    return (
+        re.search(r"(?<!\\)\b[A-Za-z]\w*", re.sub(r"\\(?:frac|dfrac|tfrac|times|cdot|left|right)", " ", text))
+        is not None
+    )
+
+
+def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, truth: dict) -> str:
+    """ ": rounded too early …" where the line is worked from numbers the student rounded to
+    two figures (not the data: on its sides before the last, the result's own figures are
+    not working) and misses the value by more than its last figure, by at most 3 %."""
+    early = [
+        t
+        for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
+        if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in ctx.data
+    ]
+    if not early:
+        return ""
+    left, right = (number_of(x.xreplace(pt).xreplace(truth)) for x in (bad.left, bad.right))
+    if left is None or right is None or not right:
+        return ""
+    drift = abs(left - right) / max(abs(left), abs(right)) * 100
+    if drift > 3:  # more than rounding explains
+        return ""
+    return f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
+
+
+def copied_wrong(ctx: Context, bad: Pair, holds: Holds) -> bool:
+    """Whether ``bad`` holds once a number or letter in it that looks like one of the givens
+    (its digits in another order or place, or its coefficient dropped: ``u`` for ``2u``) is
+    put back as that given."""
+    if bad.raw is None:
+        return False
+    values = [g.value if g.value is not None else g.definition for g in ctx.problem.givens if not g.unknown]
+    givens = [x for x in values if x is not None and x != 0]
+    atoms = set().union(*(x.atoms(sympy.Number, sympy.Symbol) for x in bad.raw)) - {DEG}
+    for a in atoms:
+        for g in givens:
+            if _looks_like(a, g) and _holds_with(ctx, bad, {a: g}, holds):
+                return True
+    return False
+
+
+def _looks_like(a: sympy.Expr, g: sympy.Expr) -> bool:
+    """``a`` written for the given ``g``: the same digits in another order or place (3.64 for
+    3.46, 60 for 6), or a letter with its coefficient lost (``u`` for ``2u``)."""
+    if a == g or a == -g:
+        return False
+    if isinstance(a, sympy.Symbol):
+        ratio = sympy.simplify(g / a)
+        return bool(ratio.is_number and ratio not in (1, -1) and g.free_symbols == {a})
+    if not (a.is_number and g.is_number and a.is_Rational and g.is_Rational):
+        return False
+
+    def digits(x: sympy.Expr) -> str:
+        return re.sub(r"[^0-9]", "", format(Decimal(str(sympy.Float(x, 15))).normalize(), "f")).strip("0")
+
+    return len(digits(g)) >= 2 and sorted(digits(a)) == sorted(digits(g))
