@@ -69,6 +69,40 @@ def test_a_wrong_line_fails(name: str, old: str, new: str, rule: str) -> None:
     assert rule in report.by_rule(), report.format()
 
 
+@pytest.mark.parametrize(
+    "name,old,new,rule",
+    [
+        # v_A1y = 80 sin 45° = 56.56854 m/s: 56.5686 is not its rounding, though the side's total
+        # (with cos 20° and sin 20°) stays within the rounding of its numbers together
+        (
+            "fisicalab-example-7-normal-at-20deg",
+            r"= 56.5685 \cos {20^\circ} + 56.5685 \sin {20^\circ} =",
+            r"= 56.5685 \cos {20^\circ} + 56.5686 \sin {20^\circ} =",
+            "givens",
+        ),
+        # T_2 = 0.2 (35 e)^2 / 2 = 122.5 e^2 J (OCR M2 2007: 0.2 kg at 35 m/s): 123 rounded half
+        # up; 122 is not, though 123 - 122 e^2 is within both roundings at any one e
+        (
+            "chain-ocr-m2-2007-rebounds-to-start",
+            r"= 123 e_{\mathrm{floor}}^{2}\ \mathrm{J}",
+            r"= 122 e_{\mathrm{floor}}^{2}\ \mathrm{J}",
+            "equals",
+        ),
+        (
+            "chain-ocr-m2-2007-rebounds-to-start",
+            r"\left(123 - 123 e_{\mathrm{floor}}^{2}\right)",
+            r"\left(123 - 122 e_{\mathrm{floor}}^{2}\right)",
+            "equals",
+        ),
+    ],
+)
+def test_each_number_is_a_rounding_of_its_own_value(name: str, old: str, new: str, rule: str) -> None:
+    """A number put in for a name, and a closed form's coefficient, is checked alone."""
+    for fmt in ("md", "tex"):
+        report = _report(name, old, new, fmt)
+        assert rule in report.by_rule(), report.format()
+
+
 def test_solve_together_names_equations_with_the_unknowns() -> None:
     """(2) of disc B (v_B2t = 1.732 m/s) has neither unknown that (3) and (4) find together."""
     report = _report("ocr-mei-fmm-2024-disc-a-stops", "Solve (3) and (4) together", "Solve (2) and (4) together")
