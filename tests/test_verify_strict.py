@@ -150,3 +150,22 @@ def test_chain_names_ending_in_a_digit(tmp_path: Path) -> None:
         assert "v5" in page and "w5" in page
         report = verify_text(page, facts_of(solution), fmt)
         assert report.ok and not report.unchecked, report.format()
+
+
+def test_a_carried_value_is_written_in_the_stage_names(tmp_path: Path) -> None:
+    """Stage 2's v_A1 is u_B (= v_A1/2 of the chain): its carried w_B = v_A2 = (2 - 3e) u_B/5
+    = 0.1 u_B is written in u_B, not as 0.05 v_A1, which reads as the stage's v_A1 (issue #26)."""
+    path = tmp_path / "letters.toml"
+    path.write_text(
+        'title = "t"\nkind = "chain"\nfind = ["w_B"]\n[given]\nm = "kg"\ne = 0.5\nv_A1 = "m/s"\n'
+        '[[stage]]\ntype = "impact"\ntitle = "A strikes B"\nkind = "direct"\n'
+        'given = { m_A = "m", m_B = "2*m", e = "e", v_A1 = "v_A1", v_B1 = "0 m/s" }\n'
+        'results = { v_B2 = "u_B" }\n'
+        '[[stage]]\ntype = "impact"\ntitle = "B strikes C"\nkind = "direct"\n'
+        'given = { m_A = "2*m", m_B = "3*m", e = "e", v_A1 = "u_B", v_B1 = "0 m/s" }\n'
+        'results = { v_A2 = "w_B" }\n'
+    )
+    solution = derive.solve(derive.load(str(path)))
+    for fmt in ("md", "tex"):
+        report = verify_text(render(solution, fmt, figures=False), facts_of(solution), fmt)
+        assert report.ok, report.format()
