@@ -74,7 +74,8 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
         exports.append((g.name, rname))
         value = state.value(expr)
         if {x.name for x in value.free_symbols} & {x.name for x in own}:
-            value = sympy.expand(expr.doit())
+            numbers = {g.symbol: g.value for g in state.known.values() if g.value is not None}
+            value = sympy.expand(expr.xreplace(numbers).xreplace(state.solved))
         carried.append(value)
     for g in problem.givens:  # unknowns found by this impact become known to later stages
         if g.unknown and g.name not in state.known:
