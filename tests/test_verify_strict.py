@@ -169,3 +169,30 @@ def test_a_carried_value_is_written_in_the_stage_names(tmp_path: Path) -> None:
     for fmt in ("md", "tex"):
         report = verify_text(render(solution, fmt, figures=False), facts_of(solution), fmt)
         assert report.ok, report.format()
+
+
+def test_a_value_in_a_chain_unknown_needs_its_unit() -> None:
+    """v_A2 = -e_floor v_A1 = -35 e_floor m/s (0.2 kg at 35 m/s onto the floor): e_floor is found
+    only by a later stage, so the line is a value, and a velocity without m/s is wrong (issue #26)."""
+    old = r"v_{A2} = -35 e_{\mathrm{floor}}\ \mathrm{m/s} \tag{5}"
+    report = _report("chain-ocr-m2-2007-rebounds-to-start", old, r"v_{A2} = -35 e_{\mathrm{floor}} \tag{5}")
+    assert "unit" in report.by_rule(), report.format()
+
+
+def test_a_stage_angle_in_degrees_is_an_angle(tmp_path: Path) -> None:
+    """A stage's given written "36.87 deg" is read as an angle, as derive reads it (no physics note),
+    and the wall's v_A2n = -e v_A1 sin 36.87° = -4.80 e_w shows its m/s."""
+    path = tmp_path / "wall.toml"
+    path.write_text(
+        'title = "t"\nkind = "chain"\nfind = ["e_w"]\n[given]\nm = "0.5 kg"\nv = "8 m/s"\n'
+        'I_w = "3.6 N*s"\ne_w = "?"\n[[stage]]\ntype = "impact"\ntitle = "A strikes the wall"\n'
+        'kind = "oblique"\ngiven = { m_A = "m", e = "e_w", v_A1 = "v", theta_1 = "36.87 deg" }\n'
+        'A = { angle = "theta_1", from = "+t", toward = "+n" }\nB = { fixed = true, name = "wall" }\n'
+        'results = { J_n = "J_w" }\n[[stage]]\ntype = "solve"\ncondition = "J_w = I_w"\nfor = "e_w"\n'
+    )
+    solution = derive.solve(derive.load(str(path)))
+    for fmt in ("md", "tex"):
+        page = render(solution, fmt, figures=False)
+        assert r"v_{A2n} = -4.80 e_{w}\ \mathrm{m/s}" in page
+        report = verify_text(page, facts_of(solution), fmt)
+        assert report.ok, report.format()
