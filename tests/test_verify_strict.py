@@ -80,18 +80,19 @@ def test_a_wrong_line_fails(name: str, old: str, new: str, rule: str) -> None:
             r"= 56.5685 \cos {20^\circ} + 56.5686 \sin {20^\circ} =",
             "givens",
         ),
-        # T_2 = 0.2 (35 e)^2 / 2 = 122.5 e^2 J (OCR M2 2007: 0.2 kg at 35 m/s): 123 rounded half
-        # up; 122 is not, though 123 - 122 e^2 is within both roundings at any one e
+        # T_lost = 0.2 (2.9)^2 (1 - e^2) / 2 = 0.841 - 0.841 e^2 J (OCR M2 2011: B of 0.2 kg at
+        # 2.9 m/s onto the wall): 0.842 is not the coefficient's rounding, though
+        # 0.841 - 0.842 e^2 is within both roundings at any one e
         (
-            "chain-ocr-m2-2007-rebounds-to-start",
-            r"= 123 e_{\mathrm{floor}}^{2}\ \mathrm{J}",
-            r"= 122 e_{\mathrm{floor}}^{2}\ \mathrm{J}",
+            "chain-ocr-m2-2011-find-e-mass-then-wall",
+            r"\left(0.841 - 0.841 e_{\mathrm{wall}}^{2}\right)",
+            r"\left(0.841 - 0.842 e_{\mathrm{wall}}^{2}\right)",
             "equals",
         ),
         (
-            "chain-ocr-m2-2007-rebounds-to-start",
-            r"\left(123 - 123 e_{\mathrm{floor}}^{2}\right)",
-            r"\left(123 - 122 e_{\mathrm{floor}}^{2}\right)",
+            "chain-ocr-m2-2011-find-e-mass-then-wall",
+            r"= 0.841 e_{\mathrm{wall}}^{2}\ \mathrm{J}",
+            r"= 0.842 e_{\mathrm{wall}}^{2}\ \mathrm{J}",
             "equals",
         ),
     ],

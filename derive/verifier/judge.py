@@ -31,14 +31,6 @@ def tolerance(*values: Value) -> object:
     return TOLERANCE * max([TINY, *(max(abs(v.center), v.scale) for v in values)])
 
 
-def tie_down(exact: object, shown: object, half: object, slack: object) -> bool:
-    """True when ``exact`` lies half way between two roundings and ``shown`` is the one
-    nearer zero: the rule rounds a half up (away from zero), so 0.9375 is 0.938, not 0.937."""
-    if not half:
-        return False
-    return abs(abs(exact - shown) - half) <= slack and abs(shown) < abs(exact)
-
-
 @dataclass(frozen=True)
 class Claim:
     """A line of the page, read: a display, or one relation (a given, a carried value)."""
