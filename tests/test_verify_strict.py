@@ -197,3 +197,20 @@ def test_a_stage_angle_in_degrees_is_an_angle(tmp_path: Path) -> None:
         assert r"v_{A2n} = -4.80 e_{w}\ \mathrm{m/s}" in page
         report = verify_text(page, facts_of(solution), fmt)
         assert report.ok, report.format()
+
+
+def test_a_substitution_matches_each_value_to_its_nearest_number(tmp_path: Path) -> None:
+    """Equal weights of 15 lb: m_A = m_B = 15/32.2 = 0.4658 slug, v_A1 = 0.5 ft/s; the line
+    0.5 · 0.4658 - 4 · 0.4658 puts 0.4658 in for m_A, not the 0.5 beside it (a false alarm of
+    the 2,000 generated problems, us-0406)."""
+    path = tmp_path / "us.toml"
+    path.write_text(
+        'title = "t"\nkind = "direct"\nunits = "US"\n[given]\nW_A = "15 lb"\nW_B = "15 lb"\ne = 0.1\n'
+        'v_A1 = "0.5 ft/s"\nv_B1 = "-4 ft/s"\n'
+    )
+    solution = derive.solve(derive.load(str(path)))
+    for fmt in ("md", "tex"):
+        page = render(solution, fmt, figures=False)
+        assert r"0.5 \cdot 0.4658 - 4 \cdot 0.4658" in page
+        report = verify_text(page, facts_of(solution), fmt)
+        assert report.ok, report.format()

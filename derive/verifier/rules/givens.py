@@ -149,10 +149,9 @@ def _match(judge: Judge, scopes: list, want: list, have: list, wide: bool = Fals
         return
     left = list(have)
     for value, power, label in want:
-        hit = next(
-            (h for h in left if h[1] == power and abs(abs(h[0]) - abs(value)) <= _room(judge, h[2], scopes, wide)),
-            None,
-        )
+        # the nearest number that may be this value's rounding (0.4658 for m_A, not 0.5 beside it)
+        near = [h for h in left if h[1] == power and abs(abs(h[0]) - abs(value)) <= _room(judge, h[2], scopes, wide)]
+        hit = min(near, key=lambda h: abs(abs(h[0]) - abs(value)), default=None)
         if hit is None:
             bare = [h for h in left if not h[2].degrees and abs(h[0] * DEGREE - abs(value)) <= mpf("1e-12")]
             if bare and label not in ("",) and not label[0].isdigit():
