@@ -40,12 +40,14 @@ from derive.writers.view import render
 SEED = 26
 PER_KIND = int(os.environ.get("DERIVE_MUTANTS_PER_KIND", "3"))
 OVERALL, EACH = 0.99, 0.97
-#: Kinds below the issue's 97 %, each at the floor measured (a guard against going back):
-#: a number off by one in its last figure where the rounding of the line's other numbers
-#: allows it (0.46584 v_A2 + 0.31056 v_B2 = 9.1569 for 9.1570), and a coefficient of a closed
-#: form in letters changed (123 - 122 e^2 for 123 - 123 e^2, since issue #28 writes closed
-#: forms in the notes' style): 424 of 444 caught (95.5 %).
-FLOORS = {"number": 0.95}
+#: Kinds below the issue's 97 %, each held at the floor measured (a guard against going back).
+#: None since the substitutions are checked number by number (givens) and a closed form's
+#: coefficients one by one (coefficients): a number off is caught 431/444 (97.1 %).
+FLOORS: dict[str, float] = {}
+#: Kinds the small sample does not hold to a rate (two mutants a kind: one miss is half of them);
+#: the full run measures them. The sample's number mutant on 4.C.12's
+#: ``2 v_A2n = 0.7071 v_A1 - 0.6364 v_A1`` (0.7072) is one of the 11 the full run misses.
+SAMPLE_LOOSE = {"number"}
 
 
 def _oracles(facts: Facts):
@@ -143,10 +145,11 @@ def _judge(made: Counter, caught: Counter, missed: list[str], record: Any, label
     record("verify_mutants", (label, rates))
     total, hit = sum(made.values()), sum(caught.values())
     assert total > 0
-    weak = [k for k, (c, n) in rates.items() if c < (0 if sample and k in FLOORS else FLOORS.get(k, EACH)) * n]
+    loose = set(FLOORS) | (SAMPLE_LOOSE if sample else set())
+    weak = [k for k, (c, n) in rates.items() if c < (0 if sample and k in loose else FLOORS.get(k, EACH)) * n]
     if sample:
-        total -= sum(made[k] for k in FLOORS)
-        hit -= sum(caught[k] for k in FLOORS)
+        total -= sum(made[k] for k in loose)
+        hit -= sum(caught[k] for k in loose)
     report = os.environ.get("DERIVE_MUTANTS_REPORT")
     if report:  # every mutant that passed, for a closer look
         with open(report, "w", encoding="utf-8") as out:

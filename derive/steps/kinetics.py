@@ -172,9 +172,22 @@ def _collected_line(page: Page, terms: tuple[sympy.Expr, ...], const: tuple[symp
     )
 
 
+def _pure_letters(page: Page) -> set[sympy.Symbol]:
+    """The pure-number givens kept as letters (e), and the chain's names they stand for (e_floor)."""
+    out: set[sympy.Symbol] = set()
+    for g in page.p.givens:
+        if g.value is None and not g.unknown and not any(g.dim):
+            out |= {g.symbol} | (g.definition.free_symbols if g.definition is not None else set())
+    return out
+
+
 def alone(page: Page, terms: tuple[sympy.Expr, ...], const: tuple[sympy.Expr, ...]) -> str | None:
-    """The unit of a collected line that reads ``unknown = number`` (v_A2 = -1.6 m/s), else None."""
-    if len(terms) != 1 or not isinstance(terms[0], sympy.Symbol) or any(c.free_symbols - page.varied for c in const):
+    """The unit of a collected line that reads ``unknown = number`` (v_A2 = -1.6 m/s), or a number
+    times pure-number letters (v_A2 = -35 e_floor m/s: a chain's e before a later stage finds it),
+    else None."""
+    if len(terms) != 1 or not isinstance(terms[0], sympy.Symbol):
+        return None
+    if any(c.free_symbols - page.varied - _pure_letters(page) for c in const):
         return None
     r = page.results.get(terms[0].name)
     return r.unit if r is not None and r.unit != "deg" else None

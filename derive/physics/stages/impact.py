@@ -18,7 +18,9 @@ from derive.problem import build_problem, units
 class ImpactStage:
     """The impact solved, and the results it hands on: ``exports`` pairs each new name
     for later stages with the impact's own result name; ``carried`` holds their values
-    as far as they are known at this stage (in the unknowns a later stage solves for)."""
+    as far as they are known at this stage (in the unknowns a later stage solves for). A value
+    whose chain letters the stage uses for other quantities (the chain's v_A1 where the stage's
+    v_A1 is u_B) is kept in the names the stage has (u_B): its carried line is read in them."""
 
     outcome: ImpactOutcome
     exports: tuple[tuple[str, str], ...] = ()
@@ -70,7 +72,11 @@ def impact(state: ChainState, i: int, st: dict) -> StageOutcome:
         g = state.define(i, new, expr, dim, "deg" if dim == units.ANGLE else None)
         outputs.append(g.name)
         exports.append((g.name, rname))
-        carried.append(state.value(expr))
+        value = state.value(expr)
+        if {x.name for x in value.free_symbols} & {x.name for x in own}:
+            numbers = {g.symbol: g.value for g in state.known.values() if g.value is not None}
+            value = sympy.expand(expr.xreplace(numbers).xreplace(state.solved))
+        carried.append(value)
     for g in problem.givens:  # unknowns found by this impact become known to later stages
         if g.unknown and g.name not in state.known:
             r = outcome.results[g.name]

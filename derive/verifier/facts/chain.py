@@ -11,6 +11,7 @@ finds it: a line before that must hold for every value of it.
 
 from __future__ import annotations
 
+import contextlib
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -66,7 +67,7 @@ class _Chain:
         if m:
             factor, dim, degrees = units.to_working(m.group(2), self.system)
             value = sympy.Rational(m.group(1)) * sympy.Rational(factor.numerator, factor.denominator)
-            return (value * sympy.pi / 180 if degrees else value), dim
+            return (value * sympy.pi / 180, units.ANGLE) if degrees else (value, dim)
         names = {n: (sympy.Symbol(n), self.table.dims.get(n, units.NONE)) for n in self.table.exprs}
         value, dim = evaluate(text, names)
         return self.table.resolve(value), dim
@@ -164,9 +165,13 @@ class _Chain:
     def stage_read(self, raw: dict, values: dict[str, sympy.Expr]) -> source.Read:
         """An impact stage's givens and velocities as the chain file gives them."""
         read = source.Read(system=self.system, data=raw)
+        given = raw.get("given") or {}
         for name, value in values.items():
             read.values[name] = value
             read.dims[name] = self.table.dims.get(name, source.RESERVED.get(name, units.NONE))
+            if name in given:  # its unit as the stage writes it ("36.87 deg": an angle)
+                with contextlib.suppress(Unread, units.UnitError, ValueError, TypeError):
+                    read.dims[name] = self.quantity(given[name])[1]
         for name, text in (raw.get("given") or {}).items():
             if name not in read.values and not str(text).strip().startswith("?"):
                 try:

@@ -13,6 +13,7 @@ from derive.verifier.judge import Judge
 from derive.verifier.report import Failure
 from derive.verifier.rules import (
     answers,
+    coefficients,
     consistent,
     dimensions,
     equals,
@@ -27,6 +28,7 @@ from derive.verifier.rules import (
 #: rule name -> check
 RULES: dict[str, Callable[[Judge], Iterator[Failure]]] = {
     equals.RULE: equals.check,
+    "coefficients": coefficients.check,
     "figures": figures.check,
     "units": dimensions.check,
     references.RULE: references.check,

@@ -125,14 +125,25 @@ def _unit_reasons(judge: Judge, claim: Claim, relation: Relation) -> Iterator[st
     if _unit_dim(last, scopes[0].system) is not None or not value_form(last.expr):
         return
     dim_of_last, scopes_last = _dims(judge, claim, len(relation.sides) - 1)
-    if "unknown" in judge.roles(last.expr, scopes_last):
-        return  # an equation in the unknowns, not a value
+    if any(_solved_here(judge, n, scopes_last) for n in judge.names(last.expr)):
+        return  # an equation in the unknowns, not a value (a chain's unknown before its solve stage is a letter)
     num = lone_number(last)
     if num is not None and num.value == 0:
         return
     have = dimension(last.expr, dim_of_last)
     if have is not None and have != head:
         yield f"{label} is {_name(head)}; {last.source} shows no unit"
+
+
+def _solved_here(judge: Judge, name: str, scopes: list) -> bool:
+    """An unknown the equations of this part of the page determine (not a chain's pure-number
+    unknown, e, that only a later ``solve`` stage finds: until then it is a letter, and
+    v_A2 = -35 e_floor is a value that needs its m/s)."""
+    for s in scopes:
+        q = s.quantities.get(name)
+        if q is not None:
+            return q.role == "unknown" and (s.key not in judge.facts.solved or q.dim != units.NONE)
+    return False
 
 
 def value_form(node: object) -> bool:
