@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 from derive.errors import DeriveError, InputError, RenderError
 
 if TYPE_CHECKING:
-    from derive.checking.answers import Report
+    from derive.checking.answers import CheckReport
     from derive.problem import ChainProblem, Problem
     from derive.steps.model import Solution
 
@@ -88,7 +88,7 @@ def render(
     )
 
 
-def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> Report:
+def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> CheckReport:
     """Check hand answers (and equations) against a solution; see :func:`derive.checking.answers.check`."""
     from derive.checking.answers import check as check_answers
 
@@ -96,7 +96,7 @@ def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> 
 
 
 def verify(solution: Solution, fmt: str = "md", **options: Any) -> Any:
-    """Check every line of ``solution``'s page in ``fmt``; returns a :class:`derive.verifier.Report`.
+    """Check every line of ``solution``'s page in ``fmt``; returns a :class:`derive.verifier.VerifyReport`.
 
     Imported on first use, so that ``import derive`` stays light (see :mod:`derive.verifier`).
     """

@@ -32,7 +32,7 @@ def solved(name: str) -> derive.Solution:
     return _SOLVED[name]
 
 
-def statuses(report: derive.checking.report.Report) -> dict[str, str]:
+def statuses(report: derive.checking.report.CheckReport) -> dict[str, str]:
     return {i.name: i.status for i in report.items}
 
 

@@ -24,7 +24,7 @@ def sides(text: str) -> list[tuple[str, ...]]:
     return [r.sides for r in read_relations(text)]
 
 
-def report(problem: str, work: str) -> derive.checking.report.Report:
+def report(problem: str, work: str) -> derive.checking.report.CheckReport:
     return derive.check(derive.solve(derive.load(problem)), derivation=work)
 
 

@@ -31,7 +31,7 @@ from derive.homework import variants
 from derive.problem import loads
 from derive.problem.units import plain_unit
 from derive.resources import bundled
-from derive.verifier import Report, verify, verify_text
+from derive.verifier import VerifyReport, verify, verify_text
 from derive.verifier.facts import facts_of
 
 #: Lines and relations checked, by test, for the summary line (conftest.py).
@@ -52,7 +52,7 @@ class Tally:
     pages: int = 0
     failures: list[tuple[str, str, object]] = field(default_factory=list)
 
-    def add(self, name: str, fmt: str, report: Report) -> None:
+    def add(self, name: str, fmt: str, report: VerifyReport) -> None:
         self.pages += 1
         self.lines += report.lines
         self.relations += report.relations

@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive.verifier import Report, verify_text
+from derive.verifier import VerifyReport, verify_text
 from derive.verifier.facts import Facts, facts_of
 from derive.verifier.latex import parse_display
 from derive.verifier.reader import read_latex, read_markdown
@@ -51,7 +51,7 @@ def page_text(page: str) -> str:
     return (PAGES / f"{page}.md").read_text()
 
 
-def line_failures(report: Report) -> list:
+def line_failures(report: VerifyReport) -> list:
     """Failures of lines (not the page-level notes about derive's own solver)."""
     return [f for f in report.failures if f.rule != "physics"]
 
@@ -399,7 +399,7 @@ def test_only_the_facts_touch_derive() -> None:
 def test_derive_verify_from_python() -> None:
     solution = derive.solve(derive.load("notes-4c11-two-spheres"))
     report = derive.verify(solution)
-    assert isinstance(report, Report) and report.lines > 30
+    assert isinstance(report, VerifyReport) and report.lines > 30
     assert derive.verify(solution, "tex").lines == report.lines
 
 

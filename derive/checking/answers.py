@@ -15,7 +15,7 @@ from pathlib import Path
 
 from derive.checking.check import check
 from derive.checking.entries import Answers, Entry, answer_option, equation_option, parse_tolerance
-from derive.checking.report import Diagnosis, Item, Report
+from derive.checking.report import CheckReport, Diagnosis, Item
 from derive.errors import InputError
 
 
@@ -56,7 +56,7 @@ def run(
     tolerance: str | None = None,
     fmt: str = "text",
     derivation: str | None = None,
-) -> tuple[Report, str]:
+) -> tuple[CheckReport, str]:
     """What ``derive check`` does: load, solve, check; returns the report and its rendering.
 
     ``derivation`` is the path of a typed derivation (``.md``, ``.tex`` or plain lines).
@@ -87,10 +87,10 @@ def run(
 
 __all__ = [
     "Answers",
+    "CheckReport",
     "Diagnosis",
     "Entry",
     "Item",
-    "Report",
     "answer_option",
     "check",
     "equation_option",

@@ -15,7 +15,7 @@ from typing import Any
 from derive.checking.context import NUMBER, Context
 from derive.checking.entries import Entry, as_answers, parse_tolerance
 from derive.checking.number import number_item
-from derive.checking.report import Item, Report
+from derive.checking.report import CheckReport, Item
 from derive.errors import InputError
 from derive.problem import Problem, units
 from derive.steps.model import Solution
@@ -28,7 +28,7 @@ def check(
     equations: Any = None,
     tolerance: Any = None,
     derivation: str | None = None,
-) -> Report:
+) -> CheckReport:
     """Check hand answers (and equations, and a typed derivation) against ``solution``.
 
     ``answers`` maps result names to values (``{"v_B2n": "8.40 m/s", "v_A2n": -1.11}``),
@@ -81,7 +81,7 @@ def check(
     if errors and len(errors) == len(items):
         raise errors[0]
     p = solution.problem
-    return Report(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None, tuple(notes))
+    return CheckReport(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None, tuple(notes))
 
 
 def answer_item(ctx: Context, e: Entry) -> Item:

@@ -1,6 +1,6 @@
 """The verdicts on a set of answers, equations and derivation lines, and their rendering.
 
-A :class:`Report` holds one :class:`Item` per thing checked; it renders as text
+A :class:`CheckReport` holds one :class:`Item` per thing checked; it renders as text
 (for a terminal), Markdown or JSON. The report only words and lays out what the
 checks found: it judges nothing.
 """
@@ -117,7 +117,7 @@ class Item:
 
 
 @dataclass(frozen=True)
-class Report:
+class CheckReport:
     """The verdicts on a set of answers and equations for one problem."""
 
     problem: str

@@ -20,16 +20,16 @@ from typing import Any
 from derive.verifier.facts import Facts, facts_of
 from derive.verifier.judge import Judge
 from derive.verifier.reader import read
-from derive.verifier.report import Failure, Report
+from derive.verifier.report import Failure, VerifyReport
 from derive.verifier.rules import RULES
 
-__all__ = ["Failure", "Report", "verify", "verify_text"]
+__all__ = ["Failure", "VerifyReport", "verify", "verify_text"]
 
 
-def verify_text(text: str, facts: Facts, fmt: str = "md") -> Report:
+def verify_text(text: str, facts: Facts, fmt: str = "md") -> VerifyReport:
     """Check the page ``text`` (Markdown, or LaTeX for 'tex'/'tex-fragment') against ``facts``."""
     judge = Judge(facts, read(text, fmt))
-    report = Report(lines=len(judge.claims))
+    report = VerifyReport(lines=len(judge.claims))
     report.failures += [Failure(0, "", "physics", note) for note in facts.notes]
     for check in RULES.values():
         report.failures += list(check(judge))
@@ -41,7 +41,7 @@ def verify_text(text: str, facts: Facts, fmt: str = "md") -> Report:
 
 def verify(
     solution: Any, fmt: str = "md", *, digits: int | None = None, text: str | None = None, source: str | None = None
-) -> Report:
+) -> VerifyReport:
     """Render ``solution`` in ``fmt`` ('md' or 'tex') and check every line of it.
 
     ``text`` checks a page already rendered (a homework variant's) instead; ``source`` is

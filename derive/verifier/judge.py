@@ -18,7 +18,7 @@ from derive.verifier import units
 from derive.verifier.evaluate import CTX, ZERO, Env, Undefined, Unresolved, measure, mpf, walk
 from derive.verifier.facts import Facts, Scope
 from derive.verifier.latex import parse_display, parse_inline
-from derive.verifier.reader import Line
+from derive.verifier.reader import PageLine
 from derive.verifier.tokens import LatexError
 from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 
@@ -35,7 +35,7 @@ def tolerance(*values: Value) -> object:
 class Claim:
     """A line of the page, read: a display, or one relation (a given, a carried value)."""
 
-    line: Line
+    line: PageLine
     display: Display | None
     error: str | None = None
 
@@ -44,7 +44,7 @@ class Claim:
         return self.display.relations if self.display is not None else ()
 
 
-def read_claim(line: Line) -> Claim:
+def read_claim(line: PageLine) -> Claim:
     """Parse one line; a line the reader cannot read keeps the reason."""
     try:
         if line.kind == "display":
@@ -67,7 +67,7 @@ class Value:
 class Judge:
     """The claims of a page under its facts."""
 
-    def __init__(self, facts: Facts, lines: list[Line]) -> None:
+    def __init__(self, facts: Facts, lines: list[PageLine]) -> None:
         self.facts = facts
         self.claims = [read_claim(line) for line in lines]
         self.unresolved: set[tuple[int, str]] = set()
@@ -261,7 +261,7 @@ class Judge:
                 self.unresolved.add((claim.line.number, str(exc)))
                 self.unvalued.setdefault(claim.line.number, f"{side.source} names {exc}, which has no value here")
                 out.append(None)
-            except units.UnitError as exc:
+            except units.UnknownUnit as exc:
                 self.unvalued.setdefault(claim.line.number, str(exc))
                 out.append(None)
             except (Undefined, ZeroDivisionError, ValueError, OverflowError) as exc:

@@ -1,6 +1,6 @@
 """Read a rendered page (Markdown or LaTeX) into the lines a reader checks, with their context.
 
-Each :class:`Line` is one piece of mathematics a reader takes as a claim: a
+Each :class:`PageLine` is one piece of mathematics a reader takes as a claim: a
 displayed line, a given in a Given list, a value carried to the next stage of
 a chain. It keeps where it stands: its line number in the text, the section
 and the part of the page it belongs to (a chain's stage, or the chain itself),
@@ -17,7 +17,7 @@ _STAGE = re.compile(r"Stage (\d+):")
 
 
 @dataclass(frozen=True)
-class Line:
+class PageLine:
     """One claim on the page, in its context.
 
     ``kind`` is 'display', 'given' or 'carried'; ``scope`` is '' (a problem),
@@ -42,7 +42,7 @@ class _Page:
         self.section = ""
         self.sentence = ""
         self.block = 0
-        self.lines: list[Line] = []
+        self.lines: list[PageLine] = []
 
     def heading(self, text: str, level: int) -> None:
         m = _STAGE.match(text)
@@ -60,7 +60,7 @@ class _Page:
 
     def add(self, number: int, kind: str, latex: str) -> None:
         latex = _unaligned(latex) if kind == "display" else latex
-        self.lines.append(Line(number, kind, latex.strip(), self.scope, self.section, self.sentence, self.block))
+        self.lines.append(PageLine(number, kind, latex.strip(), self.scope, self.section, self.sentence, self.block))
 
     def inline(self, number: int, text: str) -> None:
         """A paragraph that holds claims: a Given list of a stage, or carried values."""
@@ -74,7 +74,7 @@ class _Page:
             self.paragraph(text)
 
 
-def read_markdown(text: str) -> list[Line]:
+def read_markdown(text: str) -> list[PageLine]:
     """The claims of a Markdown page."""
     rows = text.splitlines()
     page = _Page(any(re.match(r"#{2,3} Stage \d+:", r) for r in rows))
@@ -143,7 +143,7 @@ def _unaligned(latex: str) -> str:
     return re.sub(r"[ \t]*\n[ \t]*", "\n", body.replace("&", " ")).strip()
 
 
-def read_latex(text: str) -> list[Line]:
+def read_latex(text: str) -> list[PageLine]:
     """The claims of a LaTeX page (a document or a fragment)."""
     rows = text.splitlines()
     page = _Page(any(re.match(r"\\subsection\*\{Stage \d+:", r) for r in rows))
@@ -178,6 +178,6 @@ def read_latex(text: str) -> list[Line]:
     return page.lines
 
 
-def read(text: str, fmt: str) -> list[Line]:
+def read(text: str, fmt: str) -> list[PageLine]:
     """The claims of a page in ``fmt`` ('md', 'tex' or 'tex-fragment')."""
     return read_markdown(text) if fmt == "md" else read_latex(text)

@@ -24,7 +24,7 @@ class Failure:
 
 
 @dataclass
-class Report:
+class VerifyReport:
     """All failures of one page, and the count of lines and relations checked."""
 
     failures: list[Failure] = field(default_factory=list)

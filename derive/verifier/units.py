@@ -73,7 +73,7 @@ DEGREES = ("deg", "°", "circ", "degree", "degrees")
 SYSTEM_BASE = {"SI": ("kg", "m", "s"), "US": ("slug", "ft", "s")}
 
 
-class UnitError(ValueError):
+class UnknownUnit(ValueError):
     """A unit this table does not know."""
 
 
@@ -93,13 +93,13 @@ def parse(text: str) -> tuple[Fraction, Dim, bool]:
         elif op == "*":
             sign = 1
         if name not in BASE:
-            raise UnitError(f"unknown unit {name!r} in {text!r}")
+            raise UnknownUnit(f"unknown unit {name!r} in {text!r}")
         f, d = BASE[name]
         p = sign * int(power or 1)
         factor *= f**p
         dim = [a + p * b for a, b in zip(dim, d, strict=True)]
     if not re.fullmatch(r"(?:[*/]?[A-Za-z]+(?:\^\{?-?\d+\}?)?)+", src):
-        raise UnitError(f"cannot read the unit {text!r}")
+        raise UnknownUnit(f"cannot read the unit {text!r}")
     return factor, (dim[0], dim[1], dim[2], dim[3]), False
 
 

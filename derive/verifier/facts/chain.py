@@ -170,13 +170,13 @@ class _Chain:
             read.values[name] = value
             read.dims[name] = self.table.dims.get(name, source.RESERVED.get(name, units.NONE))
             if name in given:  # its unit as the stage writes it ("36.87 deg": an angle)
-                with contextlib.suppress(Unread, units.UnitError, ValueError, TypeError):
+                with contextlib.suppress(Unread, units.UnknownUnit, ValueError, TypeError):
                     read.dims[name] = self.quantity(given[name])[1]
         for name, text in (raw.get("given") or {}).items():
             if name not in read.values and not str(text).strip().startswith("?"):
                 try:
                     read.values[name], read.dims[name] = self.quantity(text)
-                except (Unread, units.UnitError):
+                except (Unread, units.UnknownUnit):
                     read.unread.append(name)
         source.read_impact(read, raw)
         return read

@@ -188,7 +188,7 @@ def _define(table: Table, read: source.Read) -> None:
         names = {n: (sympy.Symbol(n), table.dims.get(n, units.NONE)) for n in table.exprs}
         try:
             value, dim = evaluate(str(text), names)
-        except (Unread, units.UnitError):
+        except (Unread, units.UnknownUnit):
             read.unread.append(f"[define] {name}")
             continue
         table.put(name, table.resolve(value), dim)

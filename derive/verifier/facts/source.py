@@ -158,7 +158,7 @@ def read_givens(read: Read, givens: Mapping[str, Any]) -> None:
                 read.pending.discard(name)
             except Unread:
                 continue
-            except units.UnitError:
+            except units.UnknownUnit:
                 read.unread.append(name)
                 done.append(name)
                 continue
@@ -188,7 +188,7 @@ def read_impact(read: Read, data: Mapping[str, Any]) -> None:
             continue
         try:
             read.motions[b] = _motion(read, b, tbl, oblique, phi)
-        except (Unread, KeyError, units.UnitError):
+        except (Unread, KeyError, units.UnknownUnit):
             read.unread.append(f"[{b}]")
 
 

@@ -80,7 +80,7 @@ def _exact_side(judge: Judge, relation: Relation, k: int, letters: set[str], sco
             try:
                 if not judge.value(side, scopes).radius:
                     return side
-            except (Unresolved, Undefined, ArithmeticError, ValueError, units.UnitError):
+            except (Unresolved, Undefined, ArithmeticError, ValueError, units.UnknownUnit):
                 continue
     return None
 

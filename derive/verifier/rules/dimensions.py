@@ -95,7 +95,7 @@ def _unit_dim(side: Side, system: str) -> FDim | None:
         return ANGLE if num is not None and num.degrees else None
     try:
         _, dim, degrees = units.to_working(side.unit, system)
-    except units.UnitError:
+    except units.UnknownUnit:
         return None
     return ANGLE if degrees else tuple(Fraction(x) for x in dim)  # type: ignore[return-value]
 

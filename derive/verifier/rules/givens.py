@@ -231,7 +231,7 @@ def _substitutes(judge: Judge, s: Side, t: Side, scopes: list) -> bool:
         return True
     try:
         factor, _, _ = units.to_working(t.unit, scopes[0].system)
-    except units.UnitError:
+    except units.UnknownUnit:
         return False
     return factor == 1
 
