@@ -322,3 +322,30 @@ def test_a_chain_side_not_read_in_the_middle_is_left_out() -> None:
     # OCR M2 2007: thrown down at 21 m/s from 40 m: v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35 m/s
     work = "v^2 = u^2 + 2as = 21^2 + 2(9.8)(40) = 441 + 784 = 1225\nv = 35 m/s\n"
     assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "correct"]
+
+
+# --- a body's quantities in words: possessives ------------------------------------------
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        # 4.C.11 (the notes): v_A2 = 3.05 e_t - 1.11 e_n, v_B2 = -9.15 e_t + 8.40 e_n (m/s), so
+        # A's speed sqrt(3.05^2 + 1.11^2) = 3.25 and B's sqrt(9.15^2 + 8.40^2) = 12.4
+        ("A's speed = 3.25 m/s", "correct"),
+        ("B’s speed after = 12.4 m/s", "correct"),
+        ("the final speed of B = 12.4 m/s", "correct"),
+        ("B's speed = 8.40 m/s", "wrong"),  # B's n component, not its speed
+    ],
+)
+def test_a_bodys_speed_in_words_is_read(line: str, status: str) -> None:
+    assert statuses("notes-4c11-two-spheres", line) == [status]
+
+
+def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
+    """2 kg at 6 m/s hits 4 kg at rest, e = 0.8: 12 = 2a + 4b, b - a = 4.8, so a = -1.2, b = 3.6."""
+    problem = tmp_path / "carts.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "2 kg"\nm_B = "4 kg"\ne = 0.8\nv_A1 = "6 m/s"\nv_B1 = 0\n'
+    )
+    work = "A's initial velocity = 6 m/s\nA's final velocity = -1.2 m/s\nB's velocity after = 3.6 m/s\n"
+    assert statuses(str(problem), work) == ["correct"] * 3
+    assert statuses(str(problem), "A's final velocity = 1.2 m/s") == ["wrong"]

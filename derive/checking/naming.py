@@ -41,7 +41,10 @@ PHRASES = (
     ),
     (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
     (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
-    (r"speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"(?:final\s+)?speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
+    (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),
+    (r"(?<![\w'])([AB])['’]s\s+(?:initial\s+velocity|velocity\s+before)", lambda m: f"v_{m[1].upper()}1"),
     (r"\|\s*(?:v_?\(?([AB])2?\)?|([AB])_?p)\s*\|", r"speed_\1\2"),  # |v_A|, |v_(A2)|: A's speed after
     (r"direction\s+of\s+([AB])(?:\s+after)?", r"beta_\g<1>2"),  # from the line of centres (x, i)
     (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
