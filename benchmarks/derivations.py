@@ -20,12 +20,11 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
-import subprocess
 import sys
-import time
 import tomllib
 from pathlib import Path
+
+from latency import run_once  # benchmarks/ is on the path when a script here runs
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "data" / "derivations"
@@ -34,22 +33,10 @@ CORPUS = ROOT / "tests" / "data" / "derivations"
 def time_one(problem: str, path: Path, tree: Path) -> tuple[float, float, bool]:
     """One ``derive check`` process: wall seconds, CPU seconds, whether a report came back."""
     env = {**os.environ, "PYTHONPATH": str(tree), "DERIVE_NO_CACHE": "1"}
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    proc = subprocess.run(
-        [sys.executable, "-m", "derive", "check", problem, "--derivation", str(path), "--format", "json"],
-        cwd=tree,
-        env=env,
-        stdin=subprocess.DEVNULL,
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    argv = [sys.executable, "-m", "derive", "check", problem, "--derivation", str(path), "--format", "json"]
+    wall, cpu, _, out = run_once(argv, str(tree), env)
     try:
-        reported = "items" in json.loads(proc.stdout)
+        reported = "items" in json.loads(out)
     except ValueError:
         reported = False
     return wall, cpu, reported

@@ -21,12 +21,11 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
+
+from latency import run_once  # benchmarks/ is on the path when a script here runs
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -34,20 +33,8 @@ ROOT = Path(__file__).resolve().parent.parent
 def time_one(target: str, tree: Path, cwd: str) -> tuple[float, float, int]:
     """One ``derive solve`` process: wall seconds, CPU seconds, exit code."""
     env = {**os.environ, "PYTHONPATH": str(tree), "DERIVE_NO_CACHE": "1"}
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    proc = subprocess.run(
-        [sys.executable, "-m", "derive", "solve", target, "--timeout", "120"],
-        cwd=cwd,
-        env=env,
-        stdin=subprocess.DEVNULL,
-        capture_output=True,
-        check=False,
-    )
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return wall, cpu, proc.returncode
+    wall, cpu, code, _ = run_once([sys.executable, "-m", "derive", "solve", target, "--timeout", "120"], cwd, env)
+    return wall, cpu, code
 
 
 def main(argv: list[str] | None = None) -> int:

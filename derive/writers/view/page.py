@@ -48,7 +48,7 @@ def view(
         1,
         solution.values,
         solution.angles,
-        decimal=frozenset(g.symbol for g in p.givens if g.decimal),
+        decimal=_decimal(p),
         letters=frozenset(g.symbol for g in p.givens if g.value is None),  # an unknown is a letter until solved
         strike=layout.strike,
         letter_units=letter_units(p),
