@@ -400,6 +400,42 @@ def _cie_2012_q2(u: float, _e: float) -> dict:
     return {"v_A2": 2 * u - 4 * u / 3, "v_B2": -u + 4 * u}
 
 
+# ---- the p batch (a held-out set) ----
+
+
+def _pre_u_2013(g: dict) -> dict:
+    """tan(theta) = 3 to the wall; the path after at phi to it, theta + phi = 90 deg, tan(phi) = e tan(theta)."""
+    theta = math.atan(3.0)
+    return {"e": math.tan(math.pi / 2 - theta) / math.tan(theta)}
+
+
+def _cie_2012_q1(u: float, e: float) -> dict:
+    """3m hits 6m at rest; the kinetic energy lost in units of m, from the energies before and after."""
+    v_a, v_b = _direct(3.0, 6.0, e, u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b, "T_lost": _energy(3.0, 6.0, u, 0.0) - _energy(3.0, 6.0, v_a, v_b)}
+
+
+def _edexcel_2024(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 2.0, e, u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _cie_2014_nov(u: float, e: float) -> dict:
+    v_a, v_b = _direct(2.0, 1.0, e, 4 * u, -3 * u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _edexcel_2011(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 3.0, e, 4 * u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _aqa_2016(u: float, e: float, along: float = 60.0) -> dict:
+    """Equal balls, B at rest; A's path at `along` degrees to the line of centres."""
+    v_a, v_b = _direct(1.0, 1.0, e, u * math.cos(math.radians(along)), 0.0)
+    return {"v_A2n": v_a, "v_B2": v_b}
+
+
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
@@ -445,6 +481,7 @@ NUMERIC = {
     "chain-ocr-m2-2007-rebounds-to-start": _rebounds_to_start,
     "chain-ocr-m2-2011-find-e-mass-then-wall": _ocr_2011_chain,
     "chain-hibbeler-15-58-suitcases": _suitcase_chain,
+    "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles": _pre_u_2013,
 }
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
@@ -459,6 +496,11 @@ SYMBOLIC = {
     "cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost": _cie_2014,
     "aqa-m3-2014-symbolic-2m-hits-m": _aqa_2014,
     "cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost": _cie_2012_q2,
+    "cie-9231-p2-2012-june-q1-3m-hits-6m-show-ke-lost": _cie_2012_q1,
+    "edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p": _edexcel_2024,
+    "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses": _cie_2014_nov,
+    "edexcel-m2-2011-june-q2-m-at-4u-hits-3m-show-e-gt-third": _edexcel_2011,
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": _aqa_2016,
 }
 
 
@@ -697,6 +739,21 @@ def _slip_n25(g: dict) -> dict:  # the weight used as the mass in the slide: (1/
     return {"d_B": _suitcase_chain(g)["u_B"] ** 2 / (2 * g["mu_k"])}
 
 
+def _slip_p10(g: dict) -> dict:  # the second car's velocity taken as +0.120
+    return {"v_A2": (g["m_A"] * g["v_A1"] - g["m_B"] * g["v_B1"]) / (g["m_A"] + g["m_B"])}
+
+
+def _slip_p13(g: dict) -> dict:  # tan = along/across: the angle with the perpendicular
+    t = _oblique_loc(g, math.degrees(math.asin(0.8)))
+    return {"angle_loc": math.degrees(math.atan(abs(t["v_A2n"]) / t["v_A2t"]))}
+
+
+def _slip_p15(g: dict) -> dict:  # cos 30 and sin 30 in radian mode; equal masses, elastic: n components swap
+    a_n, a_t = g["v_A1"] * math.cos(30.0), g["v_A1"] * math.sin(30.0)
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], a_n, g["v_B1n"])
+    return {"v_B2n": v_bn, "v_A2t": a_t, "v_A2": math.hypot(v_an, a_t), "v_B2": abs(v_bn)}
+
+
 SLIPPED = {
     "s01-4c11-bsign-in-nlr.md": _slip_s01,
     "s02-4c11-sin-cos-swapped.tex": _slip_s02,
@@ -732,6 +789,13 @@ SLIPPED = {
     "n21-ocr-m3-2007-two-slips.txt": _slip_n21,
     "n24-chain-find-e-mass-wall.tex": lambda g: {"e": _ocr_2011_chain(g, approach=g["v_A"] - g["v_B"])["e"]},
     "n25-chain-suitcases-weight-as-mass.md": _slip_n25,
+    "p10-train-cars-b-sign.txt": _slip_p10,
+    "p11-byjus-restitution-reversed.tex": _slip_reversed,
+    "p13-ocr-m3-2007-angle-wrong-axis.md": _slip_p13,
+    "p14-mcasco-weights-as-masses.txt": _slip_weight,
+    "p15-gramoll-radians.md": _slip_p15,
+    # 0.0400 x 0.150 worked as 0.06
+    "p16-pucks-find-mass-arithmetic.tex": lambda g: {"m_B": 10 * _find_mass_elastic(g)["m_B"]},
 }
 
 
@@ -773,6 +837,7 @@ SLIPPED_SYMBOLIC = {
         "v_B2": (4 * u - 2 * u / 3) / 3 + 2 * u / 9,
     },
     "n20-cie-2012-impulse-two-slips.tex": lambda u, e: {"v_A2": 2 * u / 3, "v_B2": u + 4 * u},  # m(w - u) = 4mu
+    "p12-aqa-2016-sin-cos.txt": lambda u, e: _aqa_2016(u, e, along=30.0),  # the 60 deg taken from the perpendicular
 }
 
 
