@@ -400,6 +400,59 @@ def _cie_2012_q2(u: float, _e: float) -> dict:
     return {"v_A2": 2 * u - 4 * u / 3, "v_B2": -u + 4 * u}
 
 
+# ---- the p batch (a held-out set) ----
+
+
+def _pre_u_2013(g: dict) -> dict:
+    """tan(theta) = 3 to the wall; the path after at phi to it, theta + phi = 90 deg, tan(phi) = e tan(theta)."""
+    theta = math.atan(3.0)
+    return {"e": math.tan(math.pi / 2 - theta) / math.tan(theta)}
+
+
+def _cie_2012_q1(u: float, e: float) -> dict:
+    """3m hits 6m at rest; the kinetic energy lost in units of m, from the energies before and after."""
+    v_a, v_b = _direct(3.0, 6.0, e, u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b, "T_lost": _energy(3.0, 6.0, u, 0.0) - _energy(3.0, 6.0, v_a, v_b)}
+
+
+def _edexcel_2024(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 2.0, e, u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _cie_2014_nov(u: float, e: float) -> dict:
+    v_a, v_b = _direct(2.0, 1.0, e, 4 * u, -3 * u)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _edexcel_2011(u: float, e: float) -> dict:
+    v_a, v_b = _direct(1.0, 3.0, e, 4 * u, 0.0)
+    return {"v_A2": v_a, "v_B2": v_b}
+
+
+def _aqa_2016(u: float, e: float, along: float = 60.0) -> dict:
+    """Equal balls, B at rest; A's path at `along` degrees to the line of centres."""
+    v_a, v_b = _direct(1.0, 1.0, e, u * math.cos(math.radians(along)), 0.0)
+    return {"v_A2n": v_a, "v_B2": v_b}
+
+
+def _block_spring(g: dict) -> dict:
+    """Fall, a plastic impact on the pan, then the spring (already squashed by the pan) to the lowest point."""
+    v_1 = math.sqrt(2 * g["g"] * g["h"])
+    m, k = g["m_block"] + g["m_pan"], 1000 * g["k"]  # k is given in kN/m
+    v = g["m_block"] * v_1 / m
+    d_0 = g["m_pan"] * g["g"] / k
+    # 1/2 m V^2 + m g x = 1/2 k ((d_0 + x)^2 - d_0^2): k/2 x^2 + (k d_0 - m g) x - 1/2 m V^2 = 0
+    a, b, c = k / 2, k * d_0 - m * g["g"], -0.5 * m * v**2
+    return {"v_1": v_1, "V": v, "x": (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a)}
+
+
+def _car_suv(g: dict) -> dict:
+    """The skid to rest gives the common speed; momentum gives the car's speed before."""
+    v = math.sqrt(2 * g["mu_k"] * g["g"] * g["d_skid"])
+    return {"V": v, "v_car": v * (g["m_car"] + g["m_suv"]) / g["m_car"]}
+
+
 NUMERIC = {
     "notes-4c11-two-spheres": _4c11,
     "notes-4c12-cue-ball": _4c12,
@@ -445,6 +498,9 @@ NUMERIC = {
     "chain-ocr-m2-2007-rebounds-to-start": _rebounds_to_start,
     "chain-ocr-m2-2011-find-e-mass-then-wall": _ocr_2011_chain,
     "chain-hibbeler-15-58-suitcases": _suitcase_chain,
+    "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles": _pre_u_2013,
+    "chain-block-onto-spring-pan": _block_spring,
+    "chain-car-rear-ends-suv-skid": _car_suv,
 }
 SYMBOLIC = {
     "cie-9231-p2-2018-november-q2-5m-at-u-meets-2m-at-2u": _cie_2018,
@@ -459,6 +515,12 @@ SYMBOLIC = {
     "cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost": _cie_2014,
     "aqa-m3-2014-symbolic-2m-hits-m": _aqa_2014,
     "cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost": _cie_2012_q2,
+    "cie-9231-p2-2012-june-q1-3m-hits-6m-show-ke-lost": _cie_2012_q1,
+    "edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p": _edexcel_2024,
+    "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses": _cie_2014_nov,
+    "edexcel-m2-2011-june-q2-m-at-4u-hits-3m-show-e-gt-third": _edexcel_2011,
+    "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b": _aqa_2016,
+    "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b": lambda u, e: _aqa_2016(u, e, along=30.0),
 }
 
 
@@ -697,6 +759,43 @@ def _slip_n25(g: dict) -> dict:  # the weight used as the mass in the slide: (1/
     return {"d_B": _suitcase_chain(g)["u_B"] ** 2 / (2 * g["mu_k"])}
 
 
+def _slip_p10(g: dict) -> dict:  # the second car's velocity taken as +0.120
+    return {"v_A2": (g["m_A"] * g["v_A1"] - g["m_B"] * g["v_B1"]) / (g["m_A"] + g["m_B"])}
+
+
+def _slip_p13(g: dict) -> dict:  # tan = along/across: the angle with the perpendicular
+    t = _oblique_loc(g, math.degrees(math.asin(0.8)))
+    return {"angle_loc": math.degrees(math.atan(abs(t["v_A2n"]) / t["v_A2t"]))}
+
+
+def _slip_p15(g: dict) -> dict:  # cos 30 and sin 30 in radian mode; equal masses, elastic: n components swap
+    a_n, a_t = g["v_A1"] * math.cos(30.0), g["v_A1"] * math.sin(30.0)
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], a_n, g["v_B1n"])
+    return {"v_B2n": v_bn, "v_A2t": a_t, "v_A2": math.hypot(v_an, a_t), "v_B2": abs(v_bn)}
+
+
+def _slip_p17(g: dict) -> dict:  # the masses exchanged in CLM; the energy after with the right masses
+    v_a, v_b = _direct(g["m_B"], g["m_A"], g["e"], g["v_A1"], g["v_B1"])
+    t_2 = _energy(g["m_A"], g["m_B"], v_a, v_b)
+    return {"v_A2": v_a, "v_B2": v_b, "T_2": t_2, "T_lost": _energy(g["m_A"], g["m_B"], g["v_A1"], g["v_B1"]) - t_2}
+
+
+def _slip_p18(g: dict) -> dict:  # A's component across the line of centres rounded to 2 s.f.
+    t = _oblique_loc(g, 60.0)
+    a_t = float(f"{t['v_A2t']:.2g}")
+    return {"v_A2": math.hypot(t["v_A2n"], a_t), "angle_loc": math.degrees(math.atan2(a_t, abs(t["v_A2n"])))}
+
+
+def _slip_p29(g: dict) -> dict:  # 6/4.02 worked as 1.52, carried into the energy and the height
+    m, v = g["m_bullet"] + g["m_block"], 1.52
+    return {"V": v, "T_after": 0.5 * m * v**2, "h_2": v**2 / (2 * g["g"])}
+
+
+def _slip_p30(g: dict) -> dict:  # sqrt(39.2) worked as 6.16, carried into e and the impulse
+    v_1, v_2 = 6.16, math.sqrt(2 * g["g"] * g["h_r"])
+    return {"e_floor": v_2 / v_1, "J": g["m"] * (v_1 + v_2)}
+
+
 SLIPPED = {
     "s01-4c11-bsign-in-nlr.md": _slip_s01,
     "s02-4c11-sin-cos-swapped.tex": _slip_s02,
@@ -732,6 +831,24 @@ SLIPPED = {
     "n21-ocr-m3-2007-two-slips.txt": _slip_n21,
     "n24-chain-find-e-mass-wall.tex": lambda g: {"e": _ocr_2011_chain(g, approach=g["v_A"] - g["v_B"])["e"]},
     "n25-chain-suitcases-weight-as-mass.md": _slip_n25,
+    "p10-train-cars-b-sign.txt": _slip_p10,
+    "p11-byjus-restitution-reversed.tex": _slip_reversed,
+    "p13-ocr-m3-2007-angle-wrong-axis.md": _slip_p13,
+    "p14-mcasco-weights-as-masses.txt": _slip_weight,
+    "p15-gramoll-radians.md": _slip_p15,
+    # 0.0400 x 0.150 worked as 0.06
+    "p16-pucks-find-mass-arithmetic.tex": lambda g: {"m_B": 10 * _find_mass_elastic(g)["m_B"]},
+    "p17-ocr-2006-masses-swapped.md": _slip_p17,
+    "p18-ocr-fm-2023-rounded-early.txt": _slip_p18,
+    # 1200 copied as 1020 on the right-hand side
+    "p20-web2calc-copied-wrong.md": lambda g: {"m_B": g["m_A"] * g["v_A1"] / g["v_B2"] - 1020.0},
+    # 35 x 0.3 worked as 1.05
+    "p22-beer-johnston-two-slips.txt": lambda g: {
+        "v_A2": (g["m_A"] * g["v_A1"] - 0.1 * g["m_B"] * g["v_B2"]) / g["m_A"]
+    },
+    "p23-edexcel-wall-two-slips.md": lambda g: {"v_A2": _wall(g | {"e": 0.6})["v_A2"]},  # e copied as 0.6
+    "p29-chain-bullet-arithmetic.tex": _slip_p29,
+    "p30-chain-drop-rebound.txt": _slip_p30,
 }
 
 
@@ -773,6 +890,12 @@ SLIPPED_SYMBOLIC = {
         "v_B2": (4 * u - 2 * u / 3) / 3 + 2 * u / 9,
     },
     "n20-cie-2012-impulse-two-slips.tex": lambda u, e: {"v_A2": 2 * u / 3, "v_B2": u + 4 * u},  # m(w - u) = 4mu
+    "p12-aqa-2016-sin-cos.txt": lambda u, e: _aqa_2016(u, e, along=30.0),  # the 60 deg taken from the perpendicular
+    "p21-edexcel-2024-energy-conserved.tex": lambda u, e: _edexcel_2024(u, 1.0),  # the e = 1 result
+    # B's sign lost in the approach speed: 2v_A + v_B = 5u, v_B - v_A = e(4u - 3u)
+    "p24-cie-2014-nov-two-slips.tex": lambda u, e: {"v_A2": (8 * u - 3 * u - e * (4 * u - 3 * u)) / 3},
+    # the 30 deg taken from the perpendicular, and NLR written a - b
+    "p25-aqa-2007-30deg-two-slips.md": lambda u, e: _aqa_2016(u, -e, along=60.0),
 }
 
 
