@@ -14,14 +14,16 @@ from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
+from derive.mathtext.parser import parse_display, parse_inline
+from derive.mathtext.tokens import LatexError
+from derive.mathtext.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 from derive.verifier import units
 from derive.verifier.evaluate import CTX, ZERO, Env, Undefined, Unresolved, measure, mpf, walk
 from derive.verifier.facts import Facts, Scope
-from derive.verifier.latex import parse_display, parse_inline
 from derive.verifier.reader import PageLine
-from derive.verifier.tokens import LatexError
-from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 
+#: The mark after an answer on derive's pages, as a reader sees it on the page.
+ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
 TOLERANCE = CTX.mpf(10) ** -20
 TINY = CTX.mpf(10) ** -20  # an absolute floor: 25 cos 90° at 40 digits is 1e-42, not 0
 
@@ -44,11 +46,16 @@ class Claim:
         return self.display.relations if self.display is not None else ()
 
 
+def read_display(latex: str) -> Display:
+    """A displayed line of the page read, its ANSWER marks counted."""
+    return parse_display(latex, ANSWER_MARK)
+
+
 def read_claim(line: PageLine) -> Claim:
     """Parse one line; a line the reader cannot read keeps the reason."""
     try:
         if line.kind == "display":
-            return Claim(line, parse_display(line.latex))
+            return Claim(line, read_display(line.latex))
         return Claim(line, Display(relations=(parse_inline(line.latex),), body=line.latex))
     except (LatexError, IndexError) as exc:
         return Claim(line, None, str(exc))
@@ -301,7 +308,7 @@ def walk_claim(claim: Claim) -> Iterator[object]:
 
 def lone_number(side: Side) -> Num | None:
     """The number when a side is one number (perhaps negative), else None."""
-    from derive.verifier.tree import Add
+    from derive.mathtext.tree import Add
 
     expr = side.expr
     if isinstance(expr, Add) and len(expr.terms) == 1 and expr.terms[0][0] == -1:
@@ -311,7 +318,7 @@ def lone_number(side: Side) -> Num | None:
 
 def signed_value(side: Side) -> Decimal | None:
     """A lone number's value with its sign, as shown."""
-    from derive.verifier.tree import Add
+    from derive.mathtext.tree import Add
 
     num = lone_number(side)
     if num is None:

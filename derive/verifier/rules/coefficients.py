@@ -16,11 +16,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Add, Mul, Num, Pow, Relation, Side, Sym
 from derive.verifier import units
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, mpf, walk
 from derive.verifier.judge import Claim, Judge
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Mul, Num, Pow, Relation, Side, Sym
 
 RULE = "equals"
 #: factors that move each letter away from its sample value, one point after another

@@ -14,11 +14,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Vec
 from derive.verifier import units
 from derive.verifier.evaluate import DEGREE, mpf, walk
 from derive.verifier.judge import Claim, Judge, lone_number
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Vec
 
 FDim = tuple[Fraction, Fraction, Fraction, Fraction]
 NONE: FDim = (Fraction(0),) * 4  # type: ignore[assignment]

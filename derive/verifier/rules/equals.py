@@ -12,9 +12,9 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Relation
 from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
 from derive.verifier.report import Failure
-from derive.verifier.tree import Relation
 
 RULE = "equals"
 

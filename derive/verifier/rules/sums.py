@@ -12,9 +12,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 from decimal import Decimal
 
+from derive.mathtext.tree import Add, Num, Relation, Side, Sym
 from derive.verifier.judge import Claim, Judge, is_result, lone_number, signed_value
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Num, Relation, Side, Sym
 
 RULE = "sums"
 

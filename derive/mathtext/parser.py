@@ -1,4 +1,4 @@
-"""Read one displayed line of a worked solution into a small expression tree.
+"""LaTeX mathematics read into a small expression tree (:mod:`.tree`).
 
 The reader covers the LaTeX subset a worked solution uses: numbers as shown
 (``3.05``, ``1.67 \\times 10^{-27}``, ``37.6^\\circ``), names with subscripts
@@ -7,7 +7,7 @@ powers, ``\\cdot`` and juxtaposition, ``\\left( \\right)``, ``\\left| \\right|``
 functions (``\\cos {\\theta}``, ``\\tan^{-1}\\left(x\\right)``,
 ``\\operatorname{atan2}``), ``\\cancel``, ``\\vec{v}_{A2}``, ``\\hat{e}_{t}``,
 units (``\\ \\mathrm{m/s}``, ``\\ \\%``), and the line's decorations
-(``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, the ANSWER mark).
+(``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, a mark the caller names).
 
 It is written here rather than taken from SymPy's ``parse_latex``: that one
 turns ``3.050`` into a float and forgets the figures shown, reads neither
@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import re
 
-from derive.verifier.tokens import LatexError, token_spans
-from derive.verifier.tree import (
+from derive.mathtext.tokens import LatexError, token_spans
+from derive.mathtext.tree import (
     Add,
     Deg,
     Display,
@@ -49,7 +49,6 @@ GREEK = frozenset(
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "sinh", "cosh", "tanh", "ln", "log", "exp"}
 RELATIONS = {"=": "=", "<": "<", ">": ">", r"\leq": "<=", r"\geq": ">=", r"\le": "<=", r"\ge": ">="}
 RELATIONS |= {r"\neq": "!=", r"\approx": "~", r"\ne": "!="}
-ANSWER_MARK = re.compile(r"\\quad\\longleftarrow\\ \\text\{ANSWER\}")
 TAG = re.compile(r"\\tag\{([^{}]*)\}\s*$")
 
 
@@ -391,15 +390,16 @@ def strip_boxed(body: str) -> tuple[str, bool]:
     raise LatexError(r"unbalanced braces after \boxed")
 
 
-def parse_display(body: str) -> Display:
-    """A displayed line (the text between its delimiters) read into a :class:`Display`."""
+def parse_display(body: str, mark: str = "") -> Display:
+    """A displayed line (the text between its delimiters) read into a :class:`Display`;
+    each ``mark`` in it (text that flags an answer) is counted in ``answer_marks`` and left out."""
     s = body.strip()
     tag = None
     m = TAG.search(s)
     if m:
         tag, s = m.group(1).strip(), s[: m.start()].rstrip()
-    marks = len(ANSWER_MARK.findall(s))
-    s = ANSWER_MARK.sub("", s).strip()
+    marks = s.count(mark) if mark else 0
+    s = s.replace(mark, "").strip() if mark else s
     implies = s.startswith(r"\Rightarrow")
     s = re.sub(r"^\\Rightarrow(?:\\quad|\\qquad|\\,|\s)*", "", s)
     s, boxed = strip_boxed(s)

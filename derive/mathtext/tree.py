@@ -1,4 +1,4 @@
-"""The expression trees a displayed line is read into (see :mod:`derive.verifier.latex`).
+"""The expression trees a displayed line is read into (see :mod:`derive.mathtext.parser`).
 
 Numbers keep the text they were shown with, so that a rule can ask how many
 figures a number shows and what rounding it may hide. The nodes compare by
