@@ -18,7 +18,7 @@ from pathlib import Path
 import pytest
 
 import derive
-from derive.mathtext.parser import parse_display
+from derive.mathtext.display import parse_display
 from derive.mathtext.tree import Add, Hat, Num, Sym, Vec
 from derive.verifier import VerifyReport, verify_text
 from derive.verifier.facts import Facts, facts_of

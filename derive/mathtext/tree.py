@@ -84,9 +84,11 @@ class Add:
 
 @dataclass(frozen=True, eq=False)
 class Mul:
-    """A product of factors in the order shown."""
+    """A product of factors in the order shown; ``gaps`` what stood between them where the
+    reader kept it: "*" (``\\cdot``, ``\\times``), " " (a space) or ""."""
 
     factors: tuple[object, ...]
+    gaps: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, eq=False)

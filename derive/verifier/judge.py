@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
-from derive.mathtext.parser import parse_display, parse_inline
+from derive.mathtext.display import parse_display, parse_inline
 from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 from derive.verifier import units

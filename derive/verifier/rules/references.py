@@ -20,7 +20,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
 
-from derive.mathtext.parser import parse_display
+from derive.mathtext.display import parse_display
 from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Add, Frac, Mul, Num, Side, Sym
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
