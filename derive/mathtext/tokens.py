@@ -28,11 +28,6 @@ _TOKEN = re.compile(
 _LOOSE_TOKEN = re.compile(_TOKEN.pattern + r"|(?P<other>\S)")
 
 
-def tokenize(text: str) -> list[str]:
-    """LaTeX as a list of tokens: commands, numbers, letter runs, single characters."""
-    return [tok for tok, _, _ in token_spans(text)]
-
-
 def token_spans(text: str, lenient: bool = False) -> list[tuple[str, int, int]]:
     """Tokens with where each starts and ends in ``text``."""
     out: list[tuple[str, int, int]] = []
