@@ -9,11 +9,9 @@ functions (``\\cos {\\theta}``, ``\\tan^{-1}\\left(x\\right)``,
 units (``\\ \\mathrm{m/s}``, ``\\ \\%``), and the line's decorations
 (``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, a mark the caller names: :mod:`.display`).
 
-It is written here rather than taken from SymPy's ``parse_latex``: that one
-turns ``3.050`` into a float and forgets the figures shown, reads neither
-units, ``\\cancel``, ``\\boxed`` nor ``\\tag``, and would tie the check to the
-same library that printed the line. Numbers keep their text, so a rule can ask
-how many figures a number shows and what rounding it may hide.
+Numbers keep their text, so a rule can ask how many figures a number shows and
+what rounding it may hide (SymPy's ``parse_latex`` makes ``3.050`` a float, reads
+no units, ``\\cancel``, ``\\boxed`` or ``\\tag``: docs/verify.md).
 """
 
 from __future__ import annotations
@@ -21,22 +19,7 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.tokens import LatexError, token_spans
-from derive.mathtext.tree import (
-    Add,
-    Deg,
-    Frac,
-    Func,
-    Hat,
-    Mul,
-    Num,
-    Pow,
-    Relation,
-    Side,
-    Sym,
-    Text,
-    Unknown,
-    Vec,
-)
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Text, Unknown, Vec
 
 GREEK = frozenset(
     re.findall(
@@ -45,23 +28,8 @@ GREEK = frozenset(
         "tau upsilon phi varphi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega",
     )
 )
-FUNCTIONS = {
-    "sin",
-    "cos",
-    "tan",
-    "cot",
-    "sec",
-    "csc",
-    "sinh",
-    "cosh",
-    "tanh",
-    "ln",
-    "log",
-    "exp",
-    "arcsin",
-    "arccos",
-    "arctan",
-}
+FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "sinh", "cosh", "tanh", "ln", "log", "exp"}
+FUNCTIONS |= {"arcsin", "arccos", "arctan"}  # read as asin, acos, atan
 #: How deep brackets and commands may nest (a page nests a few; a hostile text must stay cheap).
 MAX_DEPTH = 40
 RELATIONS = {"=": "=", "<": "<", ">": ">", r"\leq": "<=", r"\geq": ">=", r"\le": "<=", r"\ge": ">="}
