@@ -7,7 +7,7 @@ import re
 
 from derive.mathtext.parser import Parser
 from derive.mathtext.tokens import LatexError
-from derive.mathtext.tree import Display, Relation
+from derive.mathtext.tree import Display, ParsedRelation
 
 TAG = re.compile(r"\\tag\{([^{}]*)\}\s*$")
 
@@ -49,7 +49,7 @@ def parse_display(body: str, mark: str = "") -> Display:
     return Display(implies, boxed, marks, tag, tuple(relations), False, body)
 
 
-def parse_inline(body: str) -> Relation:
+def parse_inline(body: str) -> ParsedRelation:
     """Inline mathematics (a given, a carried value) read as one relation."""
     rels = Parser(body.strip()).relations()
     return rels[0]

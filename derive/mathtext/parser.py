@@ -19,7 +19,7 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.tokens import LatexError, token_spans
-from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Text, Unknown, Vec
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, ParsedRelation, Pow, Side, Sym, Text, Unknown, Vec
 
 GREEK = frozenset(
     re.findall(
@@ -68,7 +68,7 @@ class Parser:
         return self.i >= len(self.toks)
 
     # relations ---------------------------------------------------------
-    def relations(self) -> list[Relation]:
+    def relations(self) -> list[ParsedRelation]:
         out = [self.relation()]
         while self.peek() == r"\Rightarrow":
             self.take()
@@ -77,13 +77,13 @@ class Parser:
             raise LatexError(f"unread tokens from {self.peek()!r}")
         return out
 
-    def relation(self) -> Relation:
+    def relation(self) -> ParsedRelation:
         sides = [self.side()]
         ops = []
         while self.peek() in RELATIONS:
             ops.append(RELATIONS[self.take()])
             sides.append(self.side())
-        return Relation(tuple(sides), tuple(ops))
+        return ParsedRelation(tuple(sides), tuple(ops))
 
     def side(self) -> Side:
         start = self.i

@@ -140,8 +140,9 @@ class Side:
 
 
 @dataclass(frozen=True)
-class Relation:
-    """``side op side op ...``; ``ops`` are '=', '<', '>', '<=', '>=', '!=', '~'."""
+class ParsedRelation:
+    """A relation read into trees, ``side op side op ...``; ``ops`` are '=', '<', '>', '<=', '>=', '!=', '~' (a
+    relation of plain text, as the checker reads it, is :class:`derive.mathtext.reader.Relation`)."""
 
     sides: tuple[Side, ...]
     ops: tuple[str, ...]
@@ -155,6 +156,6 @@ class Display:
     boxed: bool = False
     answer_marks: int = 0
     tag: str | None = None
-    relations: tuple[Relation, ...] = ()
+    relations: tuple[ParsedRelation, ...] = ()
     text_only: bool = False
     body: str = field(default="", compare=False)
