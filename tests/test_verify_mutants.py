@@ -32,8 +32,7 @@ from derive.resources import bundled
 from derive.verifier import verify_text
 from derive.verifier.evaluate import Env, value
 from derive.verifier.facts import Facts, facts_of
-from derive.verifier.judge import Judge
-from derive.verifier.latex import parse_display
+from derive.verifier.judge import Judge, read_display
 from derive.verifier.reader import read
 from derive.writers.view import render
 
@@ -62,7 +61,7 @@ def _oracles(facts: Facts):
 
     def term(latex: str) -> object | None:
         try:
-            expr = parse_display(latex).relations[0].sides[0].expr
+            expr = read_display(latex).relations[0].sides[0].expr
             return value(expr, Env(scalar))
         except Exception:  # a term the reader does not take alone: keep the mutant
             return None
@@ -102,7 +101,7 @@ def _equivalence(facts: Facts, text: str, fmt: str):
             return False
         try:
             changed_core = _row(after)
-            new = parse_display(claim.line.latex.replace(core, changed_core, 1))
+            new = read_display(claim.line.latex.replace(core, changed_core, 1))
         except Exception:
             return False
         old, changed = sides(claim, claim.display), sides(claim, new)

@@ -1,9 +1,12 @@
-"""Typed mathematics read into plain relations: the one reader of what people type.
-May import: nothing of derive (a leaf; no SymPy): the checker and the verifier both read with it.
+"""Typed mathematics read: the one reader of LaTeX and plain text for the checker and the verifier.
+May import: nothing of derive (a leaf; no SymPy): checking/ and the verifier both read with it.
 
-``reader.read_relations`` turns a text (plain lines, Markdown, LaTeX) into the relations
-it holds, each with its line and column and its sides in plain syntax; ``latex`` rewrites
-a row of LaTeX as plain text; ``notation`` writes students' habits (``20 v``, ``5 cos 37.6°``)
-out for the parser. It knows no physics and imports nothing of derive's: checking/ (and
-the verifier) read with it and give the names their meaning.
+``tokens`` and ``parser`` read LaTeX into the expression tree of ``tree`` (numbers keep the
+text they were shown with); ``display`` reads a displayed line's decorations. The verifier
+reads derive's own pages with the parser strictly; ``latex`` reads a student's row with it
+leniently and prints it back as plain text, and ``reader.read_relations`` turns a text (plain
+lines, Markdown, LaTeX) into its relations, each with its line and column and its sides in
+plain syntax; ``vectors`` splits a relation between vectors by component; ``notation`` writes
+students' habits (``20 v``, ``5 cos 37.6°``) out for the parser of problem files. It knows no
+physics: checking/ and the verifier give the names their meaning.
 """

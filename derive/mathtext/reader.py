@@ -20,6 +20,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
 from derive.mathtext.latex import latex_to_plain
+from derive.mathtext.notation import FUNCTIONS
+from derive.mathtext.parser import GREEK
 from derive.mathtext.vectors import split_vectors
 
 #: The most relations read from one text.
@@ -229,41 +231,7 @@ def _top_level_split(s: str, sep: str) -> list[str]:
 
 _WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is|ok|OK|it)(?![\w(])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
-MATH_WORDS = frozenset(
-    [
-        "sqrt",
-        "sin",
-        "cos",
-        "tan",
-        "asin",
-        "acos",
-        "atan",
-        "atan2",
-        "log",
-        "exp",
-        "deg",
-        "degree",
-        "degrees",
-        "rad",
-        "radian",
-        "radians",
-        "pi",
-        "theta",
-        "beta",
-        "alpha",
-        "phi",
-        "mu",
-        "lambda",
-        "omega",
-        "gamma",
-        "epsilon",
-        "sigma",
-        "tau",
-        "delta",
-        "psi",
-        "Delta",
-    ]
-)
+MATH_WORDS = GREEK | FUNCTIONS | {"deg", "degree", "degrees", "rad", "radian", "radians"}
 
 
 def words_after(text: str) -> str:

@@ -1,9 +1,10 @@
 """An independent check that every line of a worked solution is true.
-May import: nothing of derive but its facts/ package, which alone reads derive's objects (and the leaves).
+May import: the leaf mathtext (the LaTeX reader); only its facts/ package reads derive's objects.
 
 It reads the page as a reader does (the rendered Markdown or LaTeX, not the
-objects that produced it), parses each displayed relation with a reader of its
-own (:mod:`.latex`), and checks it against facts about the problem (:mod:`.facts`,
+objects that produced it), parses each displayed relation with the one reader of
+typed mathematics (:mod:`derive.mathtext.parser`, which keeps the figures a number
+shows), and checks it against its own facts about the problem (:mod:`.facts`,
 the only part that touches derive's objects): each ``=`` holds to the precision
 shown, the givens are the right ones, equation references exist and do what
 they say, sums add up, numbers have the figures the rule allows, units match.

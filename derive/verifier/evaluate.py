@@ -1,4 +1,4 @@
-"""Numbers for the expression trees of :mod:`derive.verifier.latex`, with the rounding they may hide.
+"""Numbers for the expression trees of :mod:`derive.mathtext.parser`, with the rounding they may hide.
 
 Values are mpmath numbers at 40 digits, in a context of their own (the global
 mpmath precision, which SymPy uses, is never touched). A rounded number shown
@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 
 import mpmath
 
-from derive.verifier.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 
 CTX = mpmath.MPContext()
 CTX.dps = 40

@@ -14,14 +14,16 @@ from dataclasses import dataclass
 from decimal import Decimal
 from fractions import Fraction
 
+from derive.mathtext.display import parse_display, parse_inline
+from derive.mathtext.tokens import LatexError
+from derive.mathtext.tree import Display, Hat, Num, ParsedRelation, Side, Sym, Unknown, Vec
 from derive.verifier import units
 from derive.verifier.evaluate import CTX, ZERO, Env, Undefined, Unresolved, measure, mpf, walk
 from derive.verifier.facts import Facts, Scope
-from derive.verifier.latex import parse_display, parse_inline
 from derive.verifier.reader import PageLine
-from derive.verifier.tokens import LatexError
-from derive.verifier.tree import Display, Hat, Num, Relation, Side, Sym, Unknown, Vec
 
+#: The mark after an answer on derive's pages, as a reader sees it on the page.
+ANSWER_MARK = r"\quad\longleftarrow\ \text{ANSWER}"
 TOLERANCE = CTX.mpf(10) ** -20
 TINY = CTX.mpf(10) ** -20  # an absolute floor: 25 cos 90° at 40 digits is 1e-42, not 0
 
@@ -40,15 +42,20 @@ class Claim:
     error: str | None = None
 
     @property
-    def relations(self) -> tuple[Relation, ...]:
+    def relations(self) -> tuple[ParsedRelation, ...]:
         return self.display.relations if self.display is not None else ()
+
+
+def read_display(latex: str) -> Display:
+    """A displayed line of the page read, its ANSWER marks counted."""
+    return parse_display(latex, ANSWER_MARK)
 
 
 def read_claim(line: PageLine) -> Claim:
     """Parse one line; a line the reader cannot read keeps the reason."""
     try:
         if line.kind == "display":
-            return Claim(line, parse_display(line.latex))
+            return Claim(line, read_display(line.latex))
         return Claim(line, Display(relations=(parse_inline(line.latex),), body=line.latex))
     except (LatexError, IndexError) as exc:
         return Claim(line, None, str(exc))
@@ -227,7 +234,7 @@ class Judge:
             unit_dim = units.ANGLE
         return Value(center, radius, unit_dim, scale)
 
-    def axes(self, relation: Relation) -> list[str | None]:
+    def axes(self, relation: ParsedRelation) -> list[str | None]:
         """The components a relation is read in: none, or those of its unit vectors."""
         found: list[str] = []
         has_vec = False
@@ -244,7 +251,7 @@ class Judge:
             return ["x", "y"]
         return found or [None]
 
-    def values(self, claim: Claim, relation: Relation, axis: str | None) -> list[Value | None]:
+    def values(self, claim: Claim, relation: ParsedRelation, axis: str | None) -> list[Value | None]:
         """Each side's value (None where a name has no value or the side no number)."""
         out: list[Value | None] = []
         # places a line shares among its numbers (0.31 v_A2 + 0.12 v_B2 = 8.54): at those, a short
@@ -270,7 +277,7 @@ class Judge:
         self.shared = None  # only while this claim is valued
         return out
 
-    def _unknown_given(self, claim: Claim, relation: Relation) -> None:
+    def _unknown_given(self, claim: Claim, relation: ParsedRelation) -> None:
         first = relation.sides[0].expr
         scopes = self.side_scopes(claim, 0)
         q = self.quantity(first.name, scopes) if isinstance(first, Sym) else None
@@ -301,7 +308,7 @@ def walk_claim(claim: Claim) -> Iterator[object]:
 
 def lone_number(side: Side) -> Num | None:
     """The number when a side is one number (perhaps negative), else None."""
-    from derive.verifier.tree import Add
+    from derive.mathtext.tree import Add
 
     expr = side.expr
     if isinstance(expr, Add) and len(expr.terms) == 1 and expr.terms[0][0] == -1:
@@ -311,7 +318,7 @@ def lone_number(side: Side) -> Num | None:
 
 def signed_value(side: Side) -> Decimal | None:
     """A lone number's value with its sign, as shown."""
-    from derive.verifier.tree import Add
+    from derive.mathtext.tree import Add
 
     num = lone_number(side)
     if num is None:
@@ -320,7 +327,7 @@ def signed_value(side: Side) -> Decimal | None:
     return -num.value if neg else num.value
 
 
-def is_stated(claim: Claim, relation: Relation, index: int) -> bool:
+def is_stated(claim: Claim, relation: ParsedRelation, index: int) -> bool:
     """True for the last side of a line that states a value (with a unit, boxed, carried):
     its numbers are roundings, even one that happens to read like a given."""
     if index == 0 or index != len(relation.sides) - 1 or claim.line.kind == "given":
@@ -329,7 +336,7 @@ def is_stated(claim: Claim, relation: Relation, index: int) -> bool:
     return relation.sides[index].unit is not None or boxed or claim.line.kind == "carried"
 
 
-def is_result(claim: Claim, relation: Relation, index: int) -> bool:
+def is_result(claim: Claim, relation: ParsedRelation, index: int) -> bool:
     """True for the last side of a line that states a result: one number, with a unit or boxed."""
     side = relation.sides[index]
     if index != len(relation.sides) - 1 or index == 0 or lone_number(side) is None or claim.line.kind == "given":

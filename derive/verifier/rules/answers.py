@@ -12,9 +12,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Sym, Vec
 from derive.verifier.judge import Judge
 from derive.verifier.report import Failure
-from derive.verifier.tree import Sym, Vec
 
 RULE = "answers"
 

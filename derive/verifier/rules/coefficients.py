@@ -16,11 +16,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Add, Mul, Num, ParsedRelation, Pow, Side, Sym
 from derive.verifier import units
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, mpf, walk
 from derive.verifier.judge import Claim, Judge
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Mul, Num, Pow, Relation, Side, Sym
 
 RULE = "equals"
 #: factors that move each letter away from its sample value, one point after another
@@ -66,7 +66,7 @@ def _constant(judge: Judge, name: str, scopes: list, solved: list | None) -> boo
     return other is None or other.value == q.value
 
 
-def _exact_side(judge: Judge, relation: Relation, k: int, letters: set[str], scopes: list) -> Side | None:
+def _exact_side(judge: Judge, relation: ParsedRelation, k: int, letters: set[str], scopes: list) -> Side | None:
     """A side other than ``k`` that writes the letters out over constant givens, with no rounding."""
     view = judge.solved_view()
     solved = view.chain_of(scopes[0].key) if view is not None else None
@@ -107,7 +107,7 @@ def _coefficients(judge: Judge, side: Side, terms: list[Term], scopes: list) -> 
     return list(coef)
 
 
-def _closed_form(judge: Judge, claim: Claim, relation: Relation) -> str | None:
+def _closed_form(judge: Judge, claim: Claim, relation: ParsedRelation) -> str | None:
     scopes = judge.chain_of(claim.line.scope)
     for k, side in enumerate(relation.sides):
         terms = _poly(side.expr)

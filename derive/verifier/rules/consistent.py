@@ -14,12 +14,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 from decimal import Decimal
 
+from derive.mathtext.tree import Num, Sym
 from derive.verifier.evaluate import walk
 from derive.verifier.judge import Claim, Judge, is_result
 from derive.verifier.report import Failure
 from derive.verifier.rules.dimensions import value_form
 from derive.verifier.rules.references import steps
-from derive.verifier.tree import Num, Sym
 
 RULE = "consistent"
 

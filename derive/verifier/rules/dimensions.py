@@ -14,11 +14,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator
 from fractions import Fraction
 
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, ParsedRelation, Pow, Side, Sym, Vec
 from derive.verifier import units
 from derive.verifier.evaluate import DEGREE, mpf, walk
 from derive.verifier.judge import Claim, Judge, lone_number
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Relation, Side, Sym, Vec
 
 FDim = tuple[Fraction, Fraction, Fraction, Fraction]
 NONE: FDim = (Fraction(0),) * 4  # type: ignore[assignment]
@@ -104,7 +104,7 @@ def _name(d: FDim) -> str:
     return units.words(tuple(int(x) if x.denominator == 1 else x for x in d))  # type: ignore[arg-type]
 
 
-def _unit_reasons(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+def _unit_reasons(judge: Judge, claim: Claim, relation: ParsedRelation) -> Iterator[str]:
     dim_of, scopes = _dims(judge, claim, 0)
     head = dimension(relation.sides[0].expr, dim_of)
     if head is None:
@@ -157,7 +157,7 @@ def value_form(node: object) -> bool:
     return isinstance(node, Sym)
 
 
-def _bare_degrees(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+def _bare_degrees(judge: Judge, claim: Claim, relation: ParsedRelation) -> Iterator[str]:
     """An angle in degrees put into sin, cos or tan without its degree sign (cos {30})."""
     angles = [q.value / DEGREE for q in _angles(judge, claim)]
     for side in relation.sides:
@@ -179,7 +179,7 @@ def _angles(judge: Judge, claim: Claim) -> list:
     ]
 
 
-def _angle_reasons(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+def _angle_reasons(judge: Judge, claim: Claim, relation: ParsedRelation) -> Iterator[str]:
     yield from _bare_degrees(judge, claim, relation)
     first = relation.sides[0].expr
     if not isinstance(first, Sym):

@@ -12,9 +12,9 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
+from derive.mathtext.tree import ParsedRelation
 from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
 from derive.verifier.report import Failure
-from derive.verifier.tree import Relation
 
 RULE = "equals"
 
@@ -28,12 +28,12 @@ def _agree(a: Value, b: Value) -> bool:
     return abs(a.center - b.center) <= a.radius + b.radius + tolerance(a, b)
 
 
-def _side_text(relation: Relation, i: int) -> str:
+def _side_text(relation: ParsedRelation, i: int) -> str:
     s = relation.sides[i].source
     return s if len(s) <= 60 else s[:57] + "..."
 
 
-def _reason(relation: Relation, i: int, j: int, a: Value, b: Value, axis: str | None) -> str:
+def _reason(relation: ParsedRelation, i: int, j: int, a: Value, b: Value, axis: str | None) -> str:
     comp = f" ({axis} component)" if axis else ""
     num = lone_number(relation.sides[j])
     if num is not None and not a.radius:
@@ -44,7 +44,7 @@ def _reason(relation: Relation, i: int, j: int, a: Value, b: Value, axis: str | 
     )
 
 
-def check_relation(judge: Judge, claim: Claim, relation: Relation) -> Iterator[str]:
+def check_relation(judge: Judge, claim: Claim, relation: ParsedRelation) -> Iterator[str]:
     """Reasons why ``relation`` is false (nothing when it holds or cannot be valued)."""
     for axis in judge.axes(relation):
         vals = judge.values(claim, relation, axis)
@@ -68,7 +68,7 @@ def check_relation(judge: Judge, claim: Claim, relation: Relation) -> Iterator[s
                 break
 
 
-def _inequalities(relation: Relation, vals: list[Value | None]) -> Iterator[str]:
+def _inequalities(relation: ParsedRelation, vals: list[Value | None]) -> Iterator[str]:
     for k, op in enumerate(relation.ops):
         a, b = vals[k], vals[k + 1]
         if a is None or b is None or op not in ("<", ">", "<=", ">="):

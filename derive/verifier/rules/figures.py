@@ -13,10 +13,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 from decimal import Decimal
 
+from derive.mathtext.tree import Num
 from derive.verifier.evaluate import walk
 from derive.verifier.judge import Claim, Judge, is_result
 from derive.verifier.report import Failure
-from derive.verifier.tree import Num
 
 SMALL, LARGE = Decimal("1e-4"), Decimal("1e6")
 

@@ -18,11 +18,11 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Add, Frac, Func, Mul, Num, Pow, Side, Sym
 from derive.verifier import units
 from derive.verifier.evaluate import DEGREE, mpf, walk
 from derive.verifier.judge import Claim, Judge, lone_number, signed_value
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Frac, Func, Mul, Num, Pow, Side, Sym
 
 RULE = "givens"
 

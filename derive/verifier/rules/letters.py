@@ -10,10 +10,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Num, Sym
 from derive.verifier.evaluate import walk
 from derive.verifier.judge import Judge
 from derive.verifier.report import Failure
-from derive.verifier.tree import Num, Sym
 
 RULE = "letters"
 #: The letters judged: standard gravity, whose number derive supplies when the file gives none.

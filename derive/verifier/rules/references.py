@@ -20,12 +20,12 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from decimal import Decimal
 
+from derive.mathtext.display import parse_display
+from derive.mathtext.tokens import LatexError
+from derive.mathtext.tree import Add, Frac, Mul, Num, Side, Sym
 from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
 from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
-from derive.verifier.latex import parse_display
 from derive.verifier.report import Failure
-from derive.verifier.tokens import LatexError
-from derive.verifier.tree import Add, Frac, Mul, Num, Side, Sym
 
 RULE = "references"
 OPERATIONS = (

@@ -12,9 +12,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 from decimal import Decimal
 
+from derive.mathtext.tree import Add, Num, ParsedRelation, Side, Sym
 from derive.verifier.judge import Claim, Judge, is_result, lone_number, signed_value
 from derive.verifier.report import Failure
-from derive.verifier.tree import Add, Num, Relation, Side, Sym
 
 RULE = "sums"
 
@@ -71,7 +71,7 @@ def _shown_values(judge: Judge) -> dict[int, dict[str, Decimal]]:
     return out
 
 
-def _same_line(judge: Judge, claim: Claim, rel: Relation, shown: dict[str, Decimal]) -> Iterator[str]:
+def _same_line(judge: Judge, claim: Claim, rel: ParsedRelation, shown: dict[str, Decimal]) -> Iterator[str]:
     """A sum and a total on one line. Names stand for the values shown for them above,
     unless the line writes their numbers out itself (T_1 - T_2 = 812.5 - 491.1 = 321)."""
     written = any(numeric_sum(side, {}) is not None for side in rel.sides)

@@ -14,9 +14,9 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
+from derive.mathtext.tree import Sym
 from derive.verifier.judge import Claim, Judge
 from derive.verifier.report import Failure
-from derive.verifier.tree import Sym
 
 
 def _derived(judge: Judge, claim: Claim, before: list[Claim]) -> str | None:

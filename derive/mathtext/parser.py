@@ -1,4 +1,4 @@
-"""Read one displayed line of a worked solution into a small expression tree.
+"""LaTeX mathematics read into a small expression tree (:mod:`.tree`).
 
 The reader covers the LaTeX subset a worked solution uses: numbers as shown
 (``3.05``, ``1.67 \\times 10^{-27}``, ``37.6^\\circ``), names with subscripts
@@ -7,37 +7,19 @@ powers, ``\\cdot`` and juxtaposition, ``\\left( \\right)``, ``\\left| \\right|``
 functions (``\\cos {\\theta}``, ``\\tan^{-1}\\left(x\\right)``,
 ``\\operatorname{atan2}``), ``\\cancel``, ``\\vec{v}_{A2}``, ``\\hat{e}_{t}``,
 units (``\\ \\mathrm{m/s}``, ``\\ \\%``), and the line's decorations
-(``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, the ANSWER mark).
+(``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, a mark the caller names: :mod:`.display`).
 
-It is written here rather than taken from SymPy's ``parse_latex``: that one
-turns ``3.050`` into a float and forgets the figures shown, reads neither
-units, ``\\cancel``, ``\\boxed`` nor ``\\tag``, and would tie the check to the
-same library that printed the line. Numbers keep their text, so a rule can ask
-how many figures a number shows and what rounding it may hide.
+Numbers keep their text, so a rule can ask how many figures a number shows and
+what rounding it may hide (SymPy's ``parse_latex`` makes ``3.050`` a float, reads
+no units, ``\\cancel``, ``\\boxed`` or ``\\tag``: docs/verify.md).
 """
 
 from __future__ import annotations
 
 import re
 
-from derive.verifier.tokens import LatexError, token_spans
-from derive.verifier.tree import (
-    Add,
-    Deg,
-    Display,
-    Frac,
-    Func,
-    Hat,
-    Mul,
-    Num,
-    Pow,
-    Relation,
-    Side,
-    Sym,
-    Text,
-    Unknown,
-    Vec,
-)
+from derive.mathtext.tokens import LatexError, token_spans
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, ParsedRelation, Pow, Side, Sym, Text, Unknown, Vec
 
 GREEK = frozenset(
     re.findall(
@@ -47,22 +29,29 @@ GREEK = frozenset(
     )
 )
 FUNCTIONS = {"sin", "cos", "tan", "cot", "sec", "csc", "sinh", "cosh", "tanh", "ln", "log", "exp"}
+FUNCTIONS |= {"arcsin", "arccos", "arctan"}  # read as asin, acos, atan
+#: How deep brackets and commands may nest (a page nests a few; a hostile text must stay cheap).
+MAX_DEPTH = 40
 RELATIONS = {"=": "=", "<": "<", ">": ">", r"\leq": "<=", r"\geq": ">=", r"\le": "<=", r"\ge": ">="}
 RELATIONS |= {r"\neq": "!=", r"\approx": "~", r"\ne": "!="}
-ANSWER_MARK = re.compile(r"\\quad\\longleftarrow\\ \\text\{ANSWER\}")
-TAG = re.compile(r"\\tag\{([^{}]*)\}\s*$")
 
 
 # ---------------------------------------------------------------- parser
 
 
-class _Parser:
-    def __init__(self, text: str) -> None:
-        spans = token_spans(text)
+class Parser:
+    """A recursive-descent reader of ``text``. ``lenient`` reads what students type too
+    (:data:`LOOSE_ATOMS`, a single token for a group, primes, ``°``) and keeps how the
+    factors of a product were joined."""
+
+    def __init__(self, text: str, lenient: bool = False) -> None:
+        spans = token_spans(text, lenient)
+        self.lenient = lenient
+        self.atoms = _ATOMS | LOOSE_ATOMS if lenient else _ATOMS
         self.text = text
         self.toks = [t for t, _, _ in spans]
         self.spans = [(a, b) for _, a, b in spans]
-        self.i = 0
+        self.i = self.depth = 0
 
     def peek(self, k: int = 0) -> str | None:
         j = self.i + k
@@ -79,7 +68,7 @@ class _Parser:
         return self.i >= len(self.toks)
 
     # relations ---------------------------------------------------------
-    def relations(self) -> list[Relation]:
+    def relations(self) -> list[ParsedRelation]:
         out = [self.relation()]
         while self.peek() == r"\Rightarrow":
             self.take()
@@ -88,13 +77,13 @@ class _Parser:
             raise LatexError(f"unread tokens from {self.peek()!r}")
         return out
 
-    def relation(self) -> Relation:
+    def relation(self) -> ParsedRelation:
         sides = [self.side()]
         ops = []
         while self.peek() in RELATIONS:
             ops.append(RELATIONS[self.take()])
             sides.append(self.side())
-        return Relation(tuple(sides), tuple(ops))
+        return ParsedRelation(tuple(sides), tuple(ops))
 
     def side(self) -> Side:
         start = self.i
@@ -140,22 +129,24 @@ class _Parser:
         return Add(tuple(terms))
 
     def term(self) -> object:
-        factors = [self.factor()]
+        factors, gaps = [self.factor()], []
         while True:
             tok = self.peek()
             if tok in (r"\cdot", r"\times", "*", "·"):
                 self.take()
                 factors.append(self.factor())
+                gaps.append("*")
             elif tok == "/":
                 self.take()
                 den = self.factor()
-                num = factors[0] if len(factors) == 1 else Mul(tuple(factors))
-                factors = [Frac(num, den)]
+                num = factors[0] if len(factors) == 1 else Mul(tuple(factors), tuple(gaps))
+                factors, gaps = [Frac(num, den)], []
             elif self.starts_factor(tok):
+                gaps.append(" " if self.spans[self.i - 1][1] < self.spans[self.i][0] else "")
                 factors.append(self.factor())
             else:
                 break
-        return factors[0] if len(factors) == 1 else Mul(tuple(factors))
+        return factors[0] if len(factors) == 1 else Mul(tuple(factors), tuple(gaps))
 
     def starts_factor(self, tok: str | None) -> bool:
         if tok is None:
@@ -166,13 +157,15 @@ class _Parser:
             return tok != "|"
         if tok.startswith("\\"):
             name = tok[1:]
-            return name in GREEK or name in FUNCTIONS or name in _ATOMS
-        return False
+            return name in GREEK or name in FUNCTIONS or name in self.atoms
+        return self.lenient and tok.isalpha()  # θ
 
     def factor(self) -> object:
         node = self.atom()
-        while self.peek() == "^":
-            self.take()
+        while self.peek() == "^" or (self.lenient and self.peek() in ("°", r"\degree")):
+            if self.take() != "^":
+                node = Num(node.mantissa, node.exponent, True) if isinstance(node, Num) else Deg(node)
+                continue
             if self.peek() == r"\circ":
                 self.take()
                 node = Num(node.mantissa, node.exponent, True) if isinstance(node, Num) else Deg(node)
@@ -188,14 +181,17 @@ class _Parser:
         """A superscript: a braced group or a single token."""
         if self.peek() == "{":
             return self.group()
+        self.first_digit()
         tok = self.take()
         if tok[0].isdigit():
-            return Num(tok[0]) if len(tok) > 1 and "." not in tok else Num(tok)
+            return Num(tok)
         if tok.isalpha():
             return Sym(tok)
         raise LatexError(f"cannot read the superscript {tok!r}")
 
     def group(self) -> object:
+        if self.lenient and self.peek() != "{":
+            return self.loose_group()
         self.take("{")
         if self.peek() == "}":
             self.take()
@@ -204,8 +200,23 @@ class _Parser:
         self.take("}")
         return node
 
+    def loose_group(self) -> object:
+        """A group written without braces, as students do: ``\\frac12``, ``\\sqrt3``, ``\\vec v``."""
+        self.first_digit()
+        return self.atom()
+
+    def first_digit(self) -> None:
+        """A whole number next splits after its first digit: TeX's ``x^23`` is ``x^{2}3``."""
+        tok = self.peek()
+        if tok is not None and tok[0].isdigit() and len(tok) > 1 and "." not in tok:
+            begin, end = self.spans[self.i]
+            self.toks[self.i : self.i + 1] = [tok[0], tok[1:]]
+            self.spans[self.i : self.i + 1] = [(begin, begin + 1), (begin + 1, end)]
+
     def group_tokens(self) -> list[str]:
         """The raw tokens of a braced group."""
+        if self.lenient and self.peek() != "{":
+            return [self.take()]
         self.take("{")
         depth, out = 1, []
         while True:
@@ -219,6 +230,16 @@ class _Parser:
             out.append(tok)
 
     def atom(self) -> object:
+        """A number, a name, a bracket or a command (at most :data:`MAX_DEPTH` inside each other)."""
+        self.depth += 1
+        try:
+            if self.depth > MAX_DEPTH:
+                raise LatexError(f"more than {MAX_DEPTH} brackets or commands inside each other")
+            return self.bare_atom()
+        finally:
+            self.depth -= 1
+
+    def bare_atom(self) -> object:
         tok = self.peek()
         if tok is None:
             raise LatexError("the line ends where a term was expected")
@@ -257,12 +278,15 @@ class _Parser:
         return Num(mant)
 
     def subscript(self) -> str:
-        if self.peek() != "_":
-            return ""
-        self.take()
-        if self.peek() == "{":
-            return "_" + _plain(self.group_tokens())
-        return "_" + _plain([self.take()])
+        """A name's subscript as plain text (``_{A2n}`` -> ``_A2n``); read leniently, with the
+        primes after it (``v_A'``: after) and no comma (``v_{A,2}``)."""
+        sub = ""
+        if self.peek() == "_":
+            self.take()
+            sub = "_" + _plain(self.group_tokens() if self.peek() == "{" else [self.take()])
+        while self.lenient and self.peek() == "'":
+            sub += self.take()
+        return sub.replace(",", "") if self.lenient else sub
 
     def command(self) -> object:
         tok = self.take()
@@ -271,12 +295,13 @@ class _Parser:
             return Sym(name + self.subscript())
         if name in FUNCTIONS:
             return self.function(name)
-        handler = _ATOMS.get(name)
+        handler = self.atoms.get(name)
         if handler is None:
             raise LatexError(f"unknown command {tok}")
         return handler(self)
 
     def function(self, name: str) -> object:
+        name = "a" + name[3:] if name.startswith("arc") else name  # \arctan
         power = None
         if self.peek() == "^":
             self.take()
@@ -320,7 +345,7 @@ class _Parser:
         toks = self.group_tokens()
         base = _plain(toks)
         sub = self.subscript()
-        axis = {"imath": "x", "i": "x", "jmath": "y", "j": "y"}.get(base) or sub.lstrip("_")
+        axis = {"imath": "x", "i": "x", "jmath": "y", "j": "y"}.get(base) or sub.lstrip("_") or base
         return Hat(axis)
 
     def cancel(self) -> object:
@@ -328,7 +353,12 @@ class _Parser:
         return Sym(node.name, cancelled=True) if isinstance(node, Sym) else node
 
     def text(self) -> object:
-        return Text(" ".join(self.group_tokens()))
+        """Words in the maths, as written between the braces."""
+        if self.peek() != "{":
+            return Text(" ".join(self.group_tokens()))
+        begin = self.spans[self.i][1]
+        self.group_tokens()
+        return Text(self.text[begin : self.spans[self.i - 1][0]].strip())
 
     def mathrm(self) -> object:
         return Sym(_plain(self.group_tokens()) + self.subscript())
@@ -336,20 +366,38 @@ class _Parser:
     def boxed(self) -> object:
         return self.group()
 
+    def brace(self) -> object:
+        """``\\underbrace{x}_{\\text{...}}``: the x."""
+        node = self.group()
+        if self.peek() in ("_", "^"):
+            self.take()
+            self.group_tokens()
+        return node
+
 
 _ATOMS = {
-    "frac": _Parser.frac,
-    "dfrac": _Parser.frac,
-    "sqrt": _Parser.sqrt,
-    "operatorname": _Parser.operatorname,
-    "vec": _Parser.vec,
-    "hat": _Parser.hat,
-    "cancel": _Parser.cancel,
-    "text": _Parser.text,
-    "mathrm": _Parser.mathrm,
-    "boxed": _Parser.boxed,
+    "frac": Parser.frac,
+    "dfrac": Parser.frac,
+    "sqrt": Parser.sqrt,
+    "operatorname": Parser.operatorname,
+    "vec": Parser.vec,
+    "hat": Parser.hat,
+    "cancel": Parser.cancel,
+    "text": Parser.text,
+    "mathrm": Parser.mathrm,
+    "boxed": Parser.boxed,
     "imath": lambda p: Sym("i"),
     "jmath": lambda p: Sym("j"),
+}
+#: What students write besides: more wrappers, ``\\tfrac``, words.
+LOOSE_ATOMS = {
+    **dict.fromkeys(("mathbf", "bm", "boldsymbol", "bar", "overline", "overrightarrow", "underline"), Parser.vec),
+    **dict.fromkeys(("mathit", "textbf", "pmb"), Parser.vec),
+    **dict.fromkeys(("text", "textrm", "mbox", "textit", "mathrm", "mathsf"), Parser.text),
+    **dict.fromkeys(("bcancel", "xcancel"), Parser.cancel),
+    **dict.fromkeys(("underbrace", "overbrace"), Parser.brace),
+    "tfrac": Parser.frac,
+    "widehat": Parser.hat,
 }
 
 
@@ -368,48 +416,3 @@ def _plain(tokens: list[str]) -> str:
         else:
             out.append(tok)
     return "".join(out)
-
-
-# ---------------------------------------------------------------- lines
-
-
-def strip_boxed(body: str) -> tuple[str, bool]:
-    """``\\boxed{X}`` (the whole line) -> X."""
-    s = body.strip()
-    if not s.startswith(r"\boxed{"):
-        return s, False
-    depth = 0
-    for i, ch in enumerate(s[len(r"\boxed") :], len(r"\boxed")):
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-            if depth == 0:
-                if s[i + 1 :].strip():
-                    return s, False
-                return s[len(r"\boxed{") : i], True
-    raise LatexError(r"unbalanced braces after \boxed")
-
-
-def parse_display(body: str) -> Display:
-    """A displayed line (the text between its delimiters) read into a :class:`Display`."""
-    s = body.strip()
-    tag = None
-    m = TAG.search(s)
-    if m:
-        tag, s = m.group(1).strip(), s[: m.start()].rstrip()
-    marks = len(ANSWER_MARK.findall(s))
-    s = ANSWER_MARK.sub("", s).strip()
-    implies = s.startswith(r"\Rightarrow")
-    s = re.sub(r"^\\Rightarrow(?:\\quad|\\qquad|\\,|\s)*", "", s)
-    s, boxed = strip_boxed(s)
-    if re.fullmatch(r"\\text\{[^{}]*\}", s):
-        return Display(implies, boxed, marks, tag, (), True, body)
-    relations = _Parser(s).relations()
-    return Display(implies, boxed, marks, tag, tuple(relations), False, body)
-
-
-def parse_inline(body: str) -> Relation:
-    """Inline mathematics (a given, a carried value) read as one relation."""
-    rels = _Parser(body.strip()).relations()
-    return rels[0]

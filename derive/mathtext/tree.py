@@ -1,4 +1,4 @@
-"""The expression trees a displayed line is read into (see :mod:`derive.verifier.latex`).
+"""The expression trees a displayed line is read into (see :mod:`derive.mathtext.parser`).
 
 Numbers keep the text they were shown with, so that a rule can ask how many
 figures a number shows and what rounding it may hide. The nodes compare by
@@ -84,9 +84,11 @@ class Add:
 
 @dataclass(frozen=True, eq=False)
 class Mul:
-    """A product of factors in the order shown."""
+    """A product of factors in the order shown; ``gaps`` what stood between them where the
+    reader kept it: "*" (``\\cdot``, ``\\times``), " " (a space) or ""."""
 
     factors: tuple[object, ...]
+    gaps: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True, eq=False)
@@ -138,8 +140,9 @@ class Side:
 
 
 @dataclass(frozen=True)
-class Relation:
-    """``side op side op ...``; ``ops`` are '=', '<', '>', '<=', '>=', '!=', '~'."""
+class ParsedRelation:
+    """A relation read into trees, ``side op side op ...``; ``ops`` are '=', '<', '>', '<=', '>=', '!=', '~' (a
+    relation of plain text, as the checker reads it, is :class:`derive.mathtext.reader.Relation`)."""
 
     sides: tuple[Side, ...]
     ops: tuple[str, ...]
@@ -153,6 +156,6 @@ class Display:
     boxed: bool = False
     answer_marks: int = 0
     tag: str | None = None
-    relations: tuple[Relation, ...] = ()
+    relations: tuple[ParsedRelation, ...] = ()
     text_only: bool = False
     body: str = field(default="", compare=False)
