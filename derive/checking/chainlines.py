@@ -233,7 +233,10 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         return item("correct", "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])
     if truly is None:
-        return item("not read", "Not read: a name in it is not the chain's.")
+        unknown = sorted({x.name[len(PREFIX) :] for e in exprs for x in _own(e) if x not in true_defs})
+        if not unknown:
+            return item("not read", "Not read: a name in it is not the chain's.")
+        return item("not read", f"Not read: {words.not_read('unknown name ' + ', '.join(unknown), sides, r.written)}.")
     if truly:
         return item("correct", "True for this problem.")
     carried = f"Right given the slip in line {slips[0]}: a carried error, not a new mistake." if slips else ""

@@ -250,12 +250,23 @@ _COMMAND = re.compile(r"\\[A-Za-z]+|\\.")
 def not_read(error: str, sides: tuple[str, ...] | list[str], written: str) -> str:
     """ "not read: …" for a student: which part of the line derive could not read, and what to
     write instead where that is clear (``mv_Q``: write ``m v_Q``)."""
-    m = re.match(r"unknown name '?([^'\s,]+)'?", error)
+    m = re.match(r"unknown name '([^']+)'", error)  # the expression parser's, with the names it knows
     if m:
         return _unknown_name(m.group(1))
-    m = re.match(r"could not read '([^']*)'", error)
+    m = re.match(r"unknown names? (.*?)\.?$", error)
     if m:
-        return f"derive could not read “{m.group(1)}” as a quantity: write it as a symbol (for example T_1 or v_A)"
+        unknown = [n.strip("'\" ") for n in m.group(1).split(",") if n.strip("'\" ")]
+        if len(unknown) == 1:
+            return _unknown_name(unknown[0])
+        shown_names = " and ".join(f"`{n}`" for n in unknown)
+        return f"derive does not know the names {shown_names}: say what each is on a line of its own (for example `let {unknown[0]} = v_A2`)"
+    m = re.match(r"could not read '(.*)'$", error)
+    if m:
+        part = m.group(1).replace("\\\\", "\\")
+        if re.fullmatch(r"[A-Za-z]{2,}(?:\s+[A-Za-z]{2,})*", part):
+            return f"derive could not read the words “{part}” as a quantity (write a quantity as a symbol, such as T_1 or v_A)"
+        command = _COMMAND.search(part)
+        return f"derive could not read “{command.group(0) if command else part}” here"
     text = " ".join(s for s in sides if s) or written
     words = None
     rest = written.replace(sides[0], " ", 1) if sides and sides[0] else written
