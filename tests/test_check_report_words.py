@@ -179,3 +179,37 @@ def test_a_report_reads_as_a_student_reads_it(prefix: str, problem: str) -> None
     written = [i.written for i in r.items if i.kind == "line" and i.name]
     assert len(written) == len(set(written))
     assert " of 1 correct" not in text or len(r.items) == 1
+
+
+def test_the_checkers_notes_become_one_sentence_a_name() -> None:
+    """The notes in derive's names, as :mod:`derive.checking.words` says them to a student: a
+    vector's components as the vector, a primed name with its prime, a Greek name read as a
+    product, the sign convention; a note it does not know as it is."""
+    known = {
+        "v_A1v": "A's velocity before the impact (the vector)",
+        "v_B2": "B's velocity after the impact",
+        "v_A2n": "A's velocity after the impact, along the line of centres",
+        "positive": "from B toward A along the line of centres",
+    }
+    notes = [
+        "Read u_An as v_A1n, u_At as v_A1t, v_Bp as v_B2, mu as m*u.",
+        "Inferred from the relations: x is -v_A2n.",
+        "Inferred from the values written: the positive direction is opposite to derive's n (B toward A).",
+        "Declared: y is v_B2.",
+        "Something else.",
+    ]
+    assert words.notes_in_words(notes, known) == [
+        "u_A: read as A's velocity before the impact (the vector).",
+        "v_B′: read as B's velocity after the impact.",
+        "μ: read as m × u (the product of the given m and u), not as a name of its own.",
+        "I took x to be A's velocity after the impact, along the line of centres, taken positive the other way"
+        " (from your relations).",
+        "I took your positive direction to be from B toward A along the line of centres (from the values you wrote).",
+        "y: B's velocity after the impact (as you declared).",
+        "Something else.",
+    ]
+    assert words.reminder("θ: read as the angle of A's velocity before the impact.") == (
+        "Here θ was read as the angle of A's velocity before the impact."
+    )
+    assert words.on_line("θ", r"\tan\theta = 2") and words.on_line("v_B′", "v_B' = 3")
+    assert not words.on_line("v_B", "v_B' = 3")

@@ -98,7 +98,7 @@ def meaning(name: str, problem: Any) -> str:
         "T_2": "the kinetic energy after the impact",
         "T_lost": "the kinetic energy lost",
         "J_n": "the impulse on B along the line of impact",
-        "the common velocity": "the common velocity (of the centre of mass)",
+        "the common velocity": "the common velocity, the velocity of the centre of mass",
     }
     if name in fixed:
         return fixed[name]
@@ -168,6 +168,8 @@ def notes_in_words(notes: tuple[str, ...] | list[str], known: dict[str, str]) ->
         if form[2] == "habit":
             pairs = _vectors(pairs)
         for student, name in pairs:
+            if form[2] == "habit":
+                student = re.sub(r"(?<=[A-Za-z0-9])_?p$", "′", student) if re.search(r"_\w*p$", student) else student
             if "*" in name:
                 out.append(product_note(student))
             else:
@@ -180,8 +182,8 @@ def _vectors(pairs: list[tuple[str, str]]) -> list[tuple[str, str]]:
     read = dict(pairs)
     out: list[tuple[str, str]] = []
     for student, name in pairs:
-        stem, c = student[:-1], student[-1:]
-        other = stem + ("t" if c == "n" else "n")
+        stem, c = student[:-1].rstrip("_") or student[:-1], student[-1:]
+        other = student[:-1] + ("t" if c == "n" else "n")
         if c in ("n", "t") and other in read and name[-1:] == c and read[other][-1:] != c:
             if stem not in read and (stem, name[:-1] + "v") not in out:
                 out.append((stem, name[:-1] + "v"))
@@ -228,11 +230,12 @@ def reminder(note: str) -> str:
 def on_line(name: str, written: str) -> bool:
     """Whether the student's ``name`` (as :func:`shown` gives it) is written on a line."""
     plain = re.sub(r"\\(?:mathbf|mathrm|boldsymbol|vec|text|bm)\s*\{([^{}]*)\}", r"\1", written)
-    plain = re.sub(r"[{}]", "", plain)
+    plain = re.sub(r"\\([A-Za-z]+)", r" \1 ", re.sub(r"[{}]", "", plain))  # \tan\theta: tan theta
     for greek, letter in GREEK_SHOWN.items():
         plain = re.sub(rf"\\?{greek}(?![A-Za-z])", letter, plain)
-    spelled = re.escape(name).replace("_", "_?")  # v_1 is also written v1
-    return re.search(rf"(?<![\w\\]){spelled}(?![\w])", plain) is not None
+    spelled = re.escape(name).replace("_", "_?")  # v_1 is also written v1; v_B′ as v_B'
+    spelled = spelled.replace("′", r"(?:′|'|\^\s*prime)")
+    return re.search(rf"(?<![\w\\]){spelled}(?![\w'′])", plain) is not None
 
 
 def equations_in_words(text: str) -> str:
