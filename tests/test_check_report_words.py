@@ -128,6 +128,7 @@ def test_a_chain_report_has_its_stages_and_says_why() -> None:
     assert slip.status == "wrong"
     assert f"V is {6 / 4.02:.3f}, not 1.52" in slip.message
     assert json.loads(r.json())["items"][0]["stage"].startswith("Stage 1")
+    assert "\n**Stage 1: The bullet lodges in the block (perfectly plastic)**\n" in r.markdown()
 
 
 def test_a_derivation_not_read_is_not_counted_as_one_line() -> None:
@@ -137,6 +138,7 @@ def test_a_derivation_not_read_is_not_counted_as_one_line() -> None:
     assert r.exit_code == 2
     assert "of 1" not in r.text() and "0 of" not in r.text()
     assert "Nothing was judged" in r.summary()
+    assert "line 2: derive could not read the words “momentum before” as a quantity" in r.items[0].message
 
 
 def test_json_keeps_its_fields() -> None:

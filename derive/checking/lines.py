@@ -56,7 +56,9 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     trace = Trace(ctx)
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     if not any(line.exprs is not None for line in lines):
-        why = f" ({lines[0].error})" if lines else " (no line with '=')"
+        first = lines[0] if lines else None
+        why = f" (line {first.number}: {words.not_read(first.error, first.sides, first.written)})" if first else ""
+        why = why or " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
     from derive.checking.budget import lines_judged  # angles as their words name them; in the time
 

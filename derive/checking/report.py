@@ -254,9 +254,10 @@ class CheckReport:
         out += ["", f"**{self.summary()}**", ""]
         said: dict[str, str] = {}
         for i in self.items:
-            stage = f"{i.stage}: " if i.stage else ""
+            if i.kind == "line" and i.stage and i.stage != _stage_before(self.items, i):
+                out += ([""] if out[-1] else []) + [f"**{md(i.stage)}**", ""]
             text = " ".join(details(i, said, names))
-            out.append(f"- **{md(stage + (i.shown or 'equation'))}** ({i.status}): " + md(text))
+            out.append(f"- **{md(i.shown or 'equation')}** ({i.status}): " + md(text))
         return "\n".join(out) + "\n"
 
 
