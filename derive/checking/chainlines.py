@@ -90,13 +90,14 @@ def _in_stages(ctx: Context, items: list[Item], known: tuple[dict, dict, dict], 
             w = number_of(y) if v is not None else None
             if w is not None and abs(v - w) <= 1e-6 * max(abs(w), 1e-12):
                 same[p] = sym
-    names = {
-        str(r.line): set().union(*(x.xreplace(mapping).xreplace(same).free_symbols for x in ex)) for r, _s, ex in read
-    }
+    named = {str(r.line): set().union(*(x.xreplace(same).free_symbols for x in ex)) for r, _s, ex in read}
+    inferred = {str(r.line): set().union(*(x.xreplace(mapping).free_symbols for x in ex)) for r, _s, ex in read}
     out, k = [], 0
     for item in items:
-        used = names.get(item.name, set()) | {sympy.Symbol(w) for w in re.findall(r"\w+", item.written)}
+        used = named.get(item.name, set()) | {sympy.Symbol(w) for w in re.findall(r"\w+", item.written)}
         ks = [j for j, (_h, found) in enumerate(stages) if found & used]
+        if not ks:  # a name inferred moves the line on by one stage at most (an inference can be wrong)
+            ks = [j for j, (_h, found) in enumerate(stages) if found & inferred.get(item.name, set()) and j <= k + 1]
         k = max(ks) if ks else k
         out.append(replace(item, stage=stages[k][0]))
     return out

@@ -361,9 +361,19 @@ def tidy(plain: str) -> str:
     while before != plain:
         before = plain
         plain = re.sub(r"\(([\w.]+)\)", r"\1", plain)
-    if plain.startswith("(") and plain.endswith(")") and plain.count("(") == 1:
+    while plain.startswith("(") and _closing(plain, 0) == len(plain) - 1:
         plain = plain[1:-1]
     return plain
+
+
+def _closing(text: str, i: int) -> int:
+    """The index of the bracket that closes the one at ``i`` (-1 where none does)."""
+    depth = 0
+    for k in range(i, len(text)):
+        depth += {"(": 1, ")": -1}.get(text[k], 0)
+        if depth == 0:
+            return k
+    return -1
 
 
 def _last_place(number: str) -> int:
