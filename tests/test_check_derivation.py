@@ -163,7 +163,8 @@ def test_plain_lines_with_a_sin_cos_swap() -> None:
     }, report.text()
     slip = report.items[1]
     assert [d.mistake for d in slip.diagnosis] == ["sin_cos_swapped"]
-    assert "first line that is false" in slip.message and "(3)" in slip.message
+    assert "first line that is false" in slip.message  # (3), in words (issue #31, item 7)
+    assert "momentum of A and B together along the line of impact" in slip.message
 
 
 def test_the_same_mistake_made_again_is_said_so() -> None:

@@ -15,7 +15,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import mistakes
+from derive.checking import mistakes, words
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
@@ -58,7 +58,53 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
             own_defs[left] = sympy.Rational(sides[-1].strip())
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
-    return merged(items), ["Inferred from the values: " + ", ".join(said) + "."] if said else []
+    notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
+    return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
+
+
+def _stages(ctx: Context) -> list[tuple[str, set[sympy.Symbol]]]:
+    """Each stage's heading ("Stage 1: The bullet lodges in the block") and the names of the
+    values it finds (the chain's values known after it, not before)."""
+    stages = list(getattr(ctx.solution, "stages", ()))
+    out = []
+    for k, st in enumerate(stages):
+        before = {sympy.Symbol(str(n)) for n in getattr(st, "values", None) or {}}
+        after = (stages[k + 1].values if k + 1 < len(stages) else ctx.solution.values) or {}
+        found = {sympy.Symbol(str(n)) for n in after} - before
+        out.append((f"Stage {k + 1}: {getattr(st, 'title', '') or getattr(st, 'kind', '')}", found))
+    return out
+
+
+def _in_stages(ctx: Context, items: list[Item], known: tuple[dict, dict, dict], read: list) -> list[Item]:
+    """Each line with the heading of its stage: the last stage whose values it names, or whose
+    value a name of the student's own truly is (a line that names none is in the stage of the
+    line before it). ``known``: the names inferred, the student's names' true values, the chain's."""
+    stages = _stages(ctx)
+    if len(stages) < 2:
+        return items
+    mapping, true_defs, values = known
+    same = {}
+    for p, x in true_defs.items():  # h = 1.49²/(2 g): h is the chain's h_2
+        v = number_of(x.xreplace(values).xreplace(ctx.unit_subs()))
+        for sym, y in values.items():
+            w = number_of(y) if v is not None else None
+            if w is not None and abs(v - w) <= 1e-6 * max(abs(w), 1e-12):
+                same[p] = sym
+    named = {str(r.line): set().union(*(x.xreplace(same).free_symbols for x in ex)) for r, _s, ex in read}
+    inferred = {str(r.line): set().union(*(x.xreplace(mapping).free_symbols for x in ex)) for r, _s, ex in read}
+    out, k = [], 0
+    for item in items:
+        used = named.get(item.name, set()) | {sympy.Symbol(w) for w in re.findall(r"\w+", item.written)}
+        ks = [j for j, (_h, found) in enumerate(stages) if found & used]
+        if not ks:  # a name inferred moves the line on by one stage at most (an inference can be wrong)
+            ks = [j for j, (_h, found) in enumerate(stages) if found & inferred.get(item.name, set()) and j <= k + 1]
+        k = max(ks) if ks else k
+        out.append(replace(item, stage=stages[k][0]))
+    return out
+
+
+def _name(v: sympy.Expr, values: dict) -> str:
+    return f"-{(-v).name}" if isinstance(-v, sympy.Symbol) else str(v)
 
 
 def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
@@ -155,10 +201,6 @@ def _of_the_stage(ctx: Context, sides, exprs: list[sympy.Expr], values: dict) ->
     return exprs
 
 
-def _name(v: sympy.Expr, values: dict) -> str:
-    return f"-{(-v).name}" if isinstance(-v, sympy.Symbol) else str(v)
-
-
 def _number(text: str) -> bool:
     try:
         sympy.Rational(text.strip())
@@ -192,7 +234,10 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         return item("correct", "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])
     if truly is None:
-        return item("not read", "Not read: a name in it is not the chain's.")
+        unknown = sorted({x.name[len(PREFIX) :] for e in exprs for x in _own(e) if x not in true_defs})
+        if not unknown:
+            return item("not read", "Not read: a name in it is not the chain's.")
+        return item("not read", f"Not read: {words.not_read('unknown name ' + ', '.join(unknown), sides, r.written)}.")
     if truly:
         return item("correct", "True for this problem.")
     carried = f"Right given the slip in line {slips[0]}: a carried error, not a new mistake." if slips else ""
@@ -207,7 +252,22 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     first = not slips
     slips.append(str(r.line))
     lead = "The first line that is false for this problem" if first else "False: a further slip"
-    return item("wrong", f"{lead}.")
+    return item("wrong", f"{lead}: {_why(ctx, sides, exprs, [true_defs, values])}")
+
+
+def _why(ctx: Context, sides, exprs: list[sympy.Expr], subs: list[dict]) -> str:
+    """Why a chain's line is false, in the student's names: the true value of the name on its
+    left (``V is 1.493, not 1.52``), or of a side of numbers (:func:`.words.unequal`)."""
+    for i in range(len(exprs) - 1):
+        if _holds(ctx, sides[i : i + 2], exprs[i : i + 2], subs):
+            continue
+        left, right = (_value(ctx, x, subs) for x in exprs[i : i + 2])
+        if left is None or right is None:
+            break
+        if exprs[i].free_symbols and not words.numbers_only(sides[i]) and not exprs[i].is_Symbol:
+            break  # a formula in names: its value is none the student wrote
+        return words.unequal(words.student_text(sides[i].strip()), left.real, sides[i + 1], right.real)
+    return "its two sides are not equal (an arithmetic or algebra slip)."
 
 
 #: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
@@ -256,7 +316,8 @@ def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: S
         if _holds(ctx, sides, exprs, [{**true_defs, **given}, values]):
             own_defs.update({k: v for k, v in given.items() if k not in own_defs})
             phrase = mistakes.phrase(name) or name
-            return replace(item, slip=name, message=f"{item.message[:-1]}: it {phrase}.")
+            lead = item.message.split(": ")[0]
+            return replace(item, slip=name, message=f"{lead}: it {phrase}.")
     left = [x for x in exprs if x.free_symbols]
     names = set().union(*(x.free_symbols for x in exprs)) - set(true_defs) - set(own_defs)
     names = {s for s in names if s in values and ctx.solution.results.get(s.name) is not None}

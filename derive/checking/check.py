@@ -12,6 +12,7 @@ import math
 import re
 from typing import Any
 
+from derive.checking import words
 from derive.checking.context import NUMBER, Context
 from derive.checking.entries import Entry, as_answers, parse_tolerance
 from derive.checking.number import number_item
@@ -70,6 +71,7 @@ def check(
                 errors.append(exc)
                 items.append(error_item("answer" if judge is answer_item else "equation", e, exc))
     notes: list[str] = []
+    known: dict[str, str] = {}
     if derivation is not None:
         if ctx.chain:
             from derive.checking.chainlines import chain_items as derivation_items
@@ -78,10 +80,12 @@ def check(
 
         lines, notes = derivation_items(ctx, derivation)
         items += lines
+        known = words.glossary(solution, () if ctx.chain else ctx.equation_names())
     if errors and len(errors) == len(items):
         raise errors[0]
     p = solution.problem
-    return CheckReport(p.name or p.path, p.title, tuple(items), float(tol) if tol is not None else None, tuple(notes))
+    tol_value = float(tol) if tol is not None else None
+    return CheckReport(p.name or p.path, p.title, tuple(items), tol_value, tuple(notes), tuple(known.items()))
 
 
 def answer_item(ctx: Context, e: Entry) -> Item:

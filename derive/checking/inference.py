@@ -34,6 +34,8 @@ from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
 
+#: Greek letters typed as themselves (a student who types μ means a name of its own).
+_GREEK_LETTERS = {"mu": "μ", "lambda": "λ", "omega": "ω", "gamma": "γ", "alpha": "α", "phi": "φ", "sigma": "σ"}
 #: The most names inferred together (more are inferred one at a time).
 JOINT = 2
 #: The most names inferred in one derivation (the search is bounded; the rest stay unknown).
@@ -82,9 +84,14 @@ def read_lines(
     )
     lines = [_resolved(r, mapping) for r in raw]
     said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
+    greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
+        n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
+    }
+    split = sorted(greek & GREEK - known)
+    split = [w for w in split if all(c in problem for c in w)]  # \mu as m u, where m and u are given
     return lines, _notes(meanings, declared, inferred, s, sign) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
-    )
+    ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
 
 def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:

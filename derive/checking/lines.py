@@ -19,13 +19,12 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes, slipnames
+from derive.checking import mistakes, slipnames, words
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
-from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
 from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, shown
@@ -33,7 +32,6 @@ from derive.checking.report import Diagnosis, Item, merged
 from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
 from derive.errors import InputError
 from derive.mathtext.notation import student
-from derive.numbers import format_number
 from derive.problem import units
 
 TRUE = "substituting the correct values"
@@ -58,7 +56,9 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     trace = Trace(ctx)
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     if not any(line.exprs is not None for line in lines):
-        why = f" ({lines[0].error})" if lines else " (no line with '=')"
+        first = lines[0] if lines else None
+        why = f" (line {first.number}: {words.not_read(first.error, first.sides, first.written)})" if first else ""
+        why = why or " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
     from derive.checking.budget import lines_judged  # angles as their words name them; in the time
 
@@ -106,7 +106,9 @@ class Trace:
         if line.exprs is None:
             if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
                 return None  # prose with an "=" in it
-            return self._item(line, "not read", f"Not read: {line.error}.", "")
+            return self._item(
+                line, "not read", f"Not read: {words.not_read(line.error, line.sides, line.written)}.", ""
+            )
         if (
             line.defines and line.exprs and len(line.exprs) >= 3
         ):  # J = m(u + v) = 0.8(5.2) = 4.16: the working is judged
@@ -197,7 +199,9 @@ class Trace:
             notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
         if answer is not None:
             return self._item(line, "correct", answer.message, answer.method, notes=notes, expected=answer.expected)
-        return self._item(line, "correct", "True for this problem.", TRUE, notes=notes)
+        arithmetic = not any(p.difference.free_symbols & set(self.U) for p in pairs) and not line.own_names
+        said = "Its arithmetic is right." if arithmetic else "True for this problem."
+        return self._item(line, "correct", said, TRUE, notes=notes)
 
     def _carried(self, line: Line) -> Item:
         replaced = [f"line {n} in place of ({j})" for n, j in self.replaced]
@@ -283,7 +287,7 @@ class Trace:
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
             return diags, j, f": it {said}.", ""
-        return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}.", ""
+        return diags, j, f": it is {words.EQUATION_WORDS[j]}, but it {said}.", ""
 
     def _in_results(self, bad: Pair) -> tuple[Diagnosis, ...]:
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
@@ -336,8 +340,7 @@ class Trace:
             self.wrong_number = (sides[1], bad.left)
         elif NUMBER_SIDE.match(sides[0]):
             self.wrong_number = (sides[0], bad.right)
-        right_text = sides[1] if NUMBER_SIDE.match(sides[1]) else format_number(right.real, 4)
-        return f"{left_text} is {format_number(left.real, 4)}, not {right_text} (an arithmetic slip)."
+        return words.unequal(words.student_text(left_text), left.real, sides[1], right.real)
 
     # the world of the slips ------------------------------------------------
     def _replace(self, line: Line, bad: Pair, j: int | None = None, slip: bool = True) -> None:

@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from derive import escape
+from derive.checking import words
 from derive.errors import InputError
 
 FORMATS = ("text", "md", "json")
@@ -78,6 +79,7 @@ class Item:
     diagnosis: tuple[Diagnosis, ...] = ()
     slip: str = ""
     again: bool = False
+    stage: str = ""  # a chain's stage the line is in ("Stage 1: …"), for its heading
 
     @property
     def correct(self) -> bool:
@@ -113,6 +115,7 @@ class Item:
             "diagnosis": [d.as_dict() for d in self.diagnosis],
             "slip": self.slip,
             "again": self.again,
+            "stage": self.stage,
         }
 
 
@@ -124,7 +127,13 @@ class CheckReport:
     title: str
     items: tuple[Item, ...]
     tolerance: float | None = None
-    notes: tuple[str, ...] = ()  # how a derivation's names were read
+    notes: tuple[str, ...] = ()  # how a derivation's names were read (derive's names)
+    glossary: tuple[tuple[str, str], ...] = ()  # derive's names in words, for the student
+
+    @property
+    def names(self) -> list[str]:
+        """The notes in the student's terms, one sentence a name (:func:`.words.notes_in_words`)."""
+        return words.notes_in_words(self.notes, dict(self.glossary))
 
     @property
     def all_correct(self) -> bool:
@@ -154,6 +163,7 @@ class CheckReport:
             "counts": self.counts(),
             "tolerance": self.tolerance,
             "notes": list(self.notes),
+            "names": self.names,
             "items": [i.as_dict() for i in self.items],
         }
 
@@ -171,9 +181,13 @@ class CheckReport:
         return dumps_json(self.as_dict())  # strict: no NaN or Infinity
 
     def summary(self) -> str:
-        """One sentence: how many are right, wrong, carried, unreadable."""
-        c = self.counts()
-        parts = [f"{c['correct']} of {len(self.items)} correct"]
+        """One sentence: how many are right, wrong, carried, unreadable (a derivation none of
+        whose lines could be read is said so, not counted as "0 of 1")."""
+        judged = [i for i in self.items if not _whole(i)]
+        if not judged:
+            return "Nothing was judged: no line could be read as a relation."
+        c = CheckReport(self.problem, self.title, tuple(judged)).counts()
+        parts = [f"{c['correct']} of {len(judged)} correct"]
         if c["wrong"]:
             parts.append(f"{c['wrong']} wrong")
         if c["unit mismatch"]:
@@ -201,16 +215,22 @@ class CheckReport:
         shown_width = max([len(r[1]) for r in rows] + [0])
         status_width = max([len(i.status) for i in self.items if i.kind == "line"] + [0])
         lines = [f"derive check: {self.title} ({self.problem})", ""]
-        lines += [f"  {note}" for note in self.notes] + ([""] if self.notes else [])
+        names = tuple(self.names)
+        lines += [f"  {note}" for note in names] + ([""] if names else [])
+        said: dict[str, str] = {}  # each mistake's paragraph once: mistake -> the line it was said at
         for i, row in zip(self.items, rows, strict=True):
-            if i.kind == "line":
+            if i.kind == "line" and i.stage and i.stage != _stage_before(self.items, i):
+                lines.append(f"  {i.stage}")
+            if _whole(i):
+                lines.append(f"  {row[0]}  the derivation could not be read")
+            elif i.kind == "line":
                 lines.append(
                     f"  {row[0]}  {row[1].ljust(shown_width)}  {i.status.ljust(status_width)}  {i.written}".rstrip()
                 )
             else:
                 cells = [row[c].ljust(widths[c]) for c in range(5)]
                 lines.append(("  " + "  ".join(cells) + "  " + row[5]).rstrip())
-            shown = details(i)
+            shown = details(i, said, names)
             if i.kind == "line" and i.expected:
                 shown.insert(1, f"Expected: {i.expected}.")
             lines += ["        " + detail for detail in shown]
@@ -221,7 +241,8 @@ class CheckReport:
         """The report as a Markdown table and a list of details."""
         md = escape.markdown
         out = [f"## Check: {md(self.title)}", ""]
-        out += [md(note) for note in self.notes] + ([""] if self.notes else [])
+        names = tuple(self.names)
+        out += [md(note) for note in names] + ([""] if names else [])
         out.append("| | | Written | Expected | Error | Verdict |")
         out.append("|---|---|---|---|---|---|")
         for i in self.items:
@@ -231,19 +252,64 @@ class CheckReport:
                 f"| {md(err)} | {i.status} |"
             )
         out += ["", f"**{self.summary()}**", ""]
+        said: dict[str, str] = {}
         for i in self.items:
-            out.append(f"- **{md(i.shown or 'equation')}** ({i.status}): " + md(" ".join(details(i))))
+            if i.kind == "line" and i.stage and i.stage != _stage_before(self.items, i):
+                out += ([""] if out[-1] else []) + [f"**{md(i.stage)}**", ""]
+            text = " ".join(details(i, said, names))
+            out.append(f"- **{md(i.shown or 'equation')}** ({i.status}): " + md(text))
         return "\n".join(out) + "\n"
 
 
-def details(i: Item) -> list[str]:
-    """The sentences shown under an item: its message, notes and diagnosis."""
+def details(i: Item, said: dict[str, str] | None = None, notes: tuple[str, ...] = ()) -> list[str]:
+    """The sentences shown under an item: its message, notes and diagnosis. For a line of a
+    derivation, the student's names on a wrong line are said again as they were read
+    (``notes``), and the mistake in words; a mistake already described (``said``: mistake ->
+    the line it was described at) is named, not described again."""
     lines = [i.message]
     lines += list(i.notes)
+    if i.kind == "line" and i.status == "wrong":
+        lines += _names_read(i.written, notes)
     for d in i.diagnosis:
         value = f" (it gives {d.value})" if d.value else ""
-        lines.append(f"Mistake: {d.title}{value}. {d.description} It enters in {d.where}.")
+        if said is not None and d.mistake in said:
+            lines.append(f"Mistake: {d.title}{value}, as in {said[d.mistake]}.")
+            continue
+        if said is not None:
+            said[d.mistake] = i.shown or "the answers"
+        if i.kind == "line":
+            lines.append(
+                f"Mistake: {d.title}{value}. {d.description} It enters through {words.equations_in_words(d.where)}."
+            )
+        else:
+            lines.append(f"Mistake: {d.title}{value}. {d.description} It enters in {d.where}.")
     return lines
+
+
+def _names_read(written: str, notes: tuple[str, ...]) -> list[str]:
+    """The notes on how the names written on a line were read ("θ: read as …")."""
+    out = []
+    for note in notes:
+        name = words.names_on(note)
+        if name and words.on_line(name, written):
+            out.append(words.reminder(note))
+    return out
+
+
+def _whole(i: Item) -> bool:
+    """The item of a derivation none of whose lines could be read (it is no line of the file)."""
+    return i.kind == "line" and not i.name and i.status == "error"
+
+
+def _stage_before(items: tuple[Item, ...], item: Item) -> str:
+    """The stage of the line before ``item`` ("" for the first)."""
+    before = ""
+    for i in items:
+        if i is item:
+            return before
+        if i.kind == "line":
+            before = i.stage
+    return before
 
 
 def percent(x: float) -> str:
