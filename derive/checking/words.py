@@ -314,6 +314,9 @@ def _unknown_name(name: str) -> str:
 #: Functions and constants a side of numbers may have (a side with any other letter has names).
 _NUMERIC = re.compile(r"(?<![A-Za-z])(?:sqrt|sin|cos|tan|atan|asin|acos|arctan|log|ln|exp|pi|deg|rad)(?![A-Za-z])|°")
 _NUMBER_UNIT = re.compile(r"^\s*\(?([-+]?(?:\d+\.?\d*|\.\d+))\)?\s*([^\d\s].*)$")
+#: What a unit typed after a number looks like (m s^-1, m/s, ms-1, kg m s⁻¹): letters, and
+#: exponents only after a letter; not a function, a bracketed term or a division by a number.
+_UNIT_LIKE = re.compile(r"[A-Za-zµμΩ°%](?:[A-Za-zµμΩ°%\s/·*.]|\^[({]?[-−]?\d[)}]?|[-−]\d|[⁻¹²³])*")
 
 
 def student_text(plain: str) -> str:
@@ -341,7 +344,8 @@ def unequal(left_text: str, left: float, right_text: str, right: float) -> str:
     if re.fullmatch(r"[-+]?\(?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\)?", rt):
         return f"{left_text} is {value}, not {rt} (an arithmetic slip)."
     unit = _NUMBER_UNIT.match(rt)
-    if unit:  # 4.75 m s^-1: the number as written, and the words after it not read as a unit
+    if unit and _UNIT_LIKE.fullmatch(unit.group(2)) and not _NUMERIC.search(unit.group(2)):
+        # 4.75 m s^-1: the number as written, and the words after it not read as a unit
         number = unit.group(1)
         if abs(float(number) - left) <= 0.51 * 10 ** _last_place(number) + 1e-12 * abs(left):
             return (
