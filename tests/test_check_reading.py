@@ -349,3 +349,74 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
     work = "A's initial velocity = 6 m/s\nA's final velocity = -1.2 m/s\nB's velocity after = 3.6 m/s\n"
     assert statuses(str(problem), work) == ["correct"] * 3
     assert statuses(str(problem), "A's final velocity = 1.2 m/s") == ["wrong"]
+
+
+# --- notation students type: Greek letters, LaTeX sizing, units, colons, remarks ------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("APB = 90° so θ + φ = 90°, φ = 90° − θ", [("θ + φ", "90°"), ("φ", "90° − θ")]),  # three points: words
+        ("Substituting y = x + 2: 5x + 6 = -4", [("Substituting y", "x + 2"), ("5x + 6", "-4")]),
+        ("A: 3cos30 = 2.6,   B: -4", [("3cos30", "2.6")]),  # a body's lead-in after a comma
+        ("v_P = -u/3 (v_P = u is before the collision)", [("v_P", "-u/3")]),  # a root turned down
+        ("x = 3 or x = -1 (rejected)", []),
+        (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "((2)/(5)) (7 - (-3 ) )", "4")]),
+    ],
+)
+def test_greek_letters_colons_labels_remarks_and_sizing_are_read(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "v_B = 3 m s⁻¹",
+        "v_B = 3 ms-1",
+        "v_B = 3 m s^(-1)",
+        "v_B = 3 ms^-1",
+        "v_B = 3 m·s⁻¹",
+        r"$v_B = 3\ \text{m\,s}^{-1}$",
+        r"$v_B = 3\ \mathrm{m\,s^{-1}}$",
+        r"$v_B = 3\,\mathrm{m}\cdot\mathrm{s}^{-1}$",
+        "v_B = 3 kg m/s",
+        "v_B = 3 N·s",
+    ],
+)
+def test_a_unit_typed_any_way_after_a_number_is_taken_off(text: str) -> None:
+    assert sides(text) == [("v_B", "3")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "22/1000"), ("u1", "3.5")]),
+        (r"$m_A = 20\ \mathrm{Mg} = 20\,000$ kg", [("m_A", "20*1000", "20000")]),
+        ("u = 54 km/h", [("u", "54*5/18")]),
+        ("u = 54 km h⁻¹", [("u", "54*5/18")]),
+    ],
+)
+def test_a_number_in_a_multiple_of_an_si_unit_is_read_in_the_si_unit(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_masses_in_grams_restated_are_right() -> None:
+    # uoguelph superballs (22 g and 27 g): the masses restated in grams are the givens
+    assert statuses("uoguelph-8-34-superballs-grams", "m_A = 22 g, m_B = 27 g\n") == ["correct"]
+    assert statuses("uoguelph-8-34-superballs-grams", "m_A = 27 g\n") == ["wrong"]
+
+
+def test_letters_after_a_number_that_are_no_unit_stay() -> None:
+    assert sides("v^2 = 2 g h") == [("v^2", "2 g h")]
+    assert sides("x = 2s-1") == [("x", "2s-1")]
+
+
+def test_latex_sizing_bars_and_a_unit_in_text_are_read() -> None:
+    # OCR M2 2014: 2m at 4 m/s, 3m at 2 m/s toward it, e = 0.4: 2a + 3b = 2, b - a = 2.4,
+    # so 5a = 2 - 7.2, a = -1.04, b = 1.36; A's speed 1.04 m/s
+    work = (
+        "$2(4) + 3(-2) = 2a + 3b$\n"
+        r"$b - a = 0.4\bigl(4 - (-2)\bigr) = 2.4$" + "\n"
+        r"$\Rightarrow\ 5a = 2 - 7.2$, so $a = -1.04$, $b = 1.36$" + "\n"
+        r"$\lvert a \rvert = 1.04\ \text{m\,s}^{-1}$" + "\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4

@@ -6,10 +6,16 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.units import SCALED, is_unit, plain_unit
+
 _DROP = re.compile(
-    r"\\(?:left|right|displaystyle|textstyle|quad|qquad|big|Big|bigg|Bigg)(?![A-Za-z])|\\[,;:! ]|&|~"
+    r"\\(?:left|right|middle|displaystyle|textstyle|scriptstyle|quad|qquad|(?:big|Big|bigg|Bigg)[lrm]?)(?![A-Za-z])"
+    r"|\\[,;:! ]|&|~|\\(?:hspace|vspace|phantom|hphantom|vphantom)\*?\{[^{}]*\}"
     r"|\\label\{[^}]*\}|\\nonumber|\\notag"
 )
+#: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
+_ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
+_TEXT_UNIT = re.compile(rf"({_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*)()(?!\s*_)")
 _WORDS = {
     r"\theta": " theta ",
     r"\beta": " beta ",
@@ -18,12 +24,26 @@ _WORDS = {
     r"\varphi": " phi ",
     r"\pi": " pi ",
     r"\Delta": " Delta ",
-    r"\mu": " mu ",
+    r"\mu": " μ ",  # the Greek letter, never m times u
     r"\lambda": " lambda ",
     r"\omega": " omega ",
     r"\gamma": " gamma ",
+    r"\delta": " delta ",
+    r"\sigma": " sigma ",
+    r"\tau": " tau ",
+    r"\psi": " psi ",
+    r"\rho": " rho ",
+    r"\eta": " eta ",
+    r"\Theta": " theta ",
+    r"\Phi": " phi ",
     r"\epsilon": " epsilon ",
     r"\varepsilon": " epsilon ",
+    r"\lvert": "|",
+    r"\rvert": "|",
+    r"\lVert": "|",
+    r"\rVert": "|",
+    r"\vert": "|",
+    r"\Vert": "|",
     r"\cdot": "*",
     r"\times": "*",
     r"\div": "/",
@@ -70,7 +90,7 @@ def latex_to_plain(tex: str) -> str:
     """
     s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
     s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
-    s = re.sub(r"\\(?:text|mathrm)\s*\{\s*(?:m|kg|N|J|s|ms|m\s*s|N\s*s)\s*\}\s*\^\s*\{\s*-\s*\d\s*\}", " ", s)
+    s = _TEXT_UNIT.sub(_unit_text, s)
     s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
     s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
     s = _DROP.sub(" ", s)
@@ -82,6 +102,7 @@ def latex_to_plain(tex: str) -> str:
         s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
     s = re.sub(r"\\sqrt\s*(\d+|[A-Za-z])(?![\w{])", r"sqrt(\1)", s)  # \sqrt3
     s = fracs(s)
+    s = s.replace("\\|", "|")  # \|v\|: a norm
     for word, plain in _WORDS.items():
         s = re.sub(re.escape(word) + r"(?![A-Za-z])", plain, s)
     s = re.sub(r"_\{([A-Za-z0-9]+)\}", r"_\1", s)
@@ -89,6 +110,16 @@ def latex_to_plain(tex: str) -> str:
     s = re.sub(r"\s+_", "_", s)
     s = " ".join(s.replace("{", "(").replace("}", ")").split())
     return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
+
+
+def _unit_text(m: re.Match) -> str:
+    """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
+    of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
+    text = m.group(1) + (m.group(2) or "")
+    if not is_unit(text):
+        return m.group(0)
+    plain = plain_unit(text)
+    return f" {plain} " if plain in SCALED or plain.startswith("km") else " "
 
 
 def _unit_vectors(s: str) -> str:
@@ -119,6 +150,10 @@ def _text(m: re.Match) -> str:
         return inner
     if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
         return f" {inner} "  # "\text{direction of } A": a name the caller knows
+    if re.fullmatch(
+        r"(?:(?:speed|velocity)\s+of\s+)?(?:approach|separation|closing|relative)(?:\s+speed)?", inner, re.I
+    ):
+        return f" {inner} "  # "(\text{approach speed})^2": a quantity the caller knows
     if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
         return f" {inner} "  # "KE lost": a name the caller knows
     return " "
