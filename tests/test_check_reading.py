@@ -420,3 +420,62 @@ def test_latex_sizing_bars_and_a_unit_in_text_are_read() -> None:
         r"$\lvert a \rvert = 1.04\ \text{m\,s}^{-1}$" + "\n"
     )
     assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+
+
+def test_an_angle_name_worked_out_to_another_value_is_the_students_own() -> None:
+    # 4.C.12 (e = 0.9, θ1 = 45° given as theta_1, equal masses, B at rest): v_A2t = v cos 45°,
+    # v_A2n = v sin 45° (1 - e)/2 = 0.05 v sin 45°, so tan θ2 = 0.05 and θ2 = 2.86° from the
+    # plane of contact: the student's theta is that angle, not the given 45°
+    work = (
+        "v_A2t = v_A1 cos 45°\n"
+        "v_A2n + v_B2n = v_A1 sin 45°\n"
+        "v_B2n - v_A2n = 0.9 v_A1 sin 45°\n"
+        "v_A2n = 0.05 v_A1 sin 45°\n"
+        "tan theta = v_A2n / v_A2t = 0.05 tan 45° = 0.05\n"
+        "θ = 2.86° to the plane of contact\n"
+    )
+    assert statuses("notes-4c12-cue-ball", work) == ["correct"] * 6
+
+
+def test_the_same_letter_under_before_and_after_is_two_quantities() -> None:
+    # Giancoli 7-18: 28 m/s at 45° to the normal, e = 1: the normal part reverses, the other stays
+    work = "Before: x = 28 cos 45°, y = 28 sin 45°\nAfter: x = -28 cos 45°, y = 28 sin 45°\n"
+    assert statuses("giancoli-7-18-tennis-ball-wall-45deg", work) == ["correct", "correct"]
+
+
+# --- names the student introduces ------------------------------------------------------------
+def _inverse_carts(tmp_path, given: str) -> str:
+    problem = tmp_path / "carts.toml"
+    problem.write_text(f'title = "t"\nkind = "direct"\n[given]\n{given}')
+    return str(problem)
+
+
+def test_v_alone_is_the_one_velocity_after_not_given_and_words_are_not_bad_input(tmp_path) -> None:
+    # 2 kg at 6 m/s hits 4 kg at rest, B moves off at 3.6 m/s: 12 = 2v + 14.4, v = -1.2; the
+    # student works 4(3.6) as 1.44 (a slip): v = (12 - 1.44)/2 = 5.28, carried
+    problem = _inverse_carts(
+        tmp_path, 'm_A = "2 kg"\nm_B = "4 kg"\ne = "?"\nv_A1 = "6 m/s"\nv_B1 = 0\nv_B2 = "3.6 m/s"\n'
+    )
+    work = "momentum before = momentum after\n2(6) + 4(0) = 2v + 4(3.6)\n12 = 2v + 1.44\nv = 5.28 m/s\n"
+    assert statuses(problem, work) == ["correct", "wrong", "carried"]
+
+
+def test_m_alone_is_the_one_unknown_mass(tmp_path) -> None:
+    # 1500 kg at 8 m/s into a car at rest; they move on together at 5 m/s: 12000 = 5(1500 + M),
+    # M = 900 kg; 1500 copied as 1050: 12000 = 5250 + 5M, M = 1350, carried
+    given = 'm_A = "1500 kg"\nm_B = "? kg"\ne = "?"\nv_A1 = "8 m/s"\nv_B1 = 0\nv_A2 = "5 m/s"\nv_B2 = "5 m/s"\n'
+    work = "Let M be the mass of the second car.\n1500 × 8 = (1050 + M) × 5\n12000 = 5250 + 5M\nM = 1350 kg\n"
+    assert statuses(_inverse_carts(tmp_path, given), work) == ["wrong", "carried", "carried"]
+
+
+def test_a_mass_times_a_students_own_name_and_v_names_after_the_impact() -> None:
+    # Edexcel M2 2003: 2m at u hits m at rest: 2u = 2v_P + v_Q holds for the velocities after;
+    # kinetic energy conserved (e is 1/3, not 1) is the slip, though the velocities before
+    # (v_P = u, v_Q = 0) satisfy both lines: v_P and v_Q are after (v after, as u is before)
+    work = (
+        "CLM: 2mu = 2mv_P + mv_Q  =>  2u = 2v_P + v_Q\n"
+        "KE conserved: ½(2m)u² = ½(2m)v_P² + ½ m v_Q²  =>  2u² = 2v_P² + v_Q²\n"
+    )
+    r = report("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert [i.status for i in r.items] == ["correct", "wrong"], r.text()
+    assert any("v_P is v_A2" in n for n in r.notes), r.notes

@@ -78,6 +78,9 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
                     if 0 < i < len(r.sides) - 1 and not words:
                         exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
                         continue
+                    if i == 0 and not words and len(r.sides) >= 3 and re.fullmatch(r"[A-Za-z\s'’,-]+", s):
+                        exprs.append(None)  # "energy lost in the bounce = ½(0.2)(…) = 2.87": words, then working
+                        continue
                     if not words or i == len(r.sides) - 1:
                         raise
                     exprs.append(sympy.Symbol(PREFIX + "_".join(words.group(1).split())))
@@ -95,8 +98,9 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
     value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
     found: dict[sympy.Symbol, sympy.Expr] = {}
     cands = [c for s, v in values.items() if v.is_number and v != 0 for c in (s, -s)]
+    defined = _introduced(read)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
-        for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found), key=str):
+        for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
             alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
             alone = [a for a in alone if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
@@ -108,6 +112,19 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
                 if roots is not None:
                     found[p] = roots
     return found
+
+
+def _introduced(read: list) -> set[sympy.Symbol]:
+    """The names of the student's own first met alone on the left of a relation whose next side
+    is in the chain's names (``δ_0 = m_pan g/k = …``): defined there, not inferred."""
+    seen: set[sympy.Symbol] = set()
+    out: set[sympy.Symbol] = set()
+    for _r, _sides, exprs in read:
+        left = exprs[0]
+        if left.is_Symbol and left in _own(left) and left not in seen and len(exprs) > 2 and not _own(exprs[1]):
+            out.add(left)
+        seen |= set().union(*(_own(x) for x in exprs))
+    return out
 
 
 def _only(sides, exprs: list, p: sympy.Symbol, found: dict) -> tuple | None:

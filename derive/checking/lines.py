@@ -57,7 +57,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
-    if not any(line.exprs is not None for line in lines):
+    if not any(line.exprs is not None or line.error.startswith("unknown name") for line in lines):
         why = f" ({lines[0].error})" if lines else " (no line with '=')"
         return [Item("line", "", "", "error", "", f"The derivation has no relation that could be read{why}.")], notes
     from derive.checking.budget import lines_judged  # angles as their words name them; in the time
