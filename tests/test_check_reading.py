@@ -479,3 +479,23 @@ def test_a_mass_times_a_students_own_name_and_v_names_after_the_impact() -> None
     r = report("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
     assert [i.status for i in r.items] == ["correct", "wrong"], r.text()
     assert any("v_P is v_A2" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (r"$v_Q = \frac{2u}{3} \quad (v_Q = 0 \text{ is the initial velocity})$", [("v_Q", "((2u)/(3))")]),
+        ("lost = 37.5 - 49.5 = -12 J ???", [("lost", "37.5 - 49.5", "-12")]),  # the doubt is not the value
+    ],
+)
+def test_a_root_turned_down_in_latex_words_and_a_doubt_after_a_value(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_a_chain_product_with_a_name_of_the_students_own_and_its_own_value_carried() -> None:
+    # OCR M2 2007: thrown down at 21 m/s from 40 m: v = 35; e = 0.8, so it rebounds at 28 and
+    # rises 28²/19.6 = 40 m. 0.8 × 35 worked as 26 (a slip): ½ v_2² = gh holds for the problem,
+    # and with the student's 26 gives h = 26²/19.6 = 34.5: carried, not a further slip
+    work = "v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35\nv_2 = 0.8 × 35 = 26\n½ v_2^2 = gh\nh = 26^2/(2 × 9.8) = 34.5 m\n"
+    assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "wrong", "correct", "carried"]
+

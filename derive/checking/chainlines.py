@@ -55,6 +55,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
         items.append(item)
+        if item.status == "correct" and slips and len(exprs) == 2:
+            _own_root(exprs, values, own_defs, _givens(ctx))
         if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
             own_defs[left] = sympy.Rational(sides[-1].strip())
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
@@ -97,7 +99,10 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
     either sign, that makes the most relations hold where it is the only unknown; a name no
     value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
     found: dict[sympy.Symbol, sympy.Expr] = {}
-    cands = [c for s, v in values.items() if v.is_number and v != 0 for c in (s, -s)]
+    given = _givens(ctx)  # where a given and a result have one value (h_0 = h_2), the result first
+    cands = [
+        c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
+    ]
     defined = _introduced(read)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
         for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
@@ -112,6 +117,31 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
                 if roots is not None:
                     found[p] = roots
     return found
+
+
+def _givens(ctx: Context) -> set[sympy.Symbol]:
+    return {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
+
+
+def _own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) -> None:
+    """``½V² = gh`` after a slip in V: right for the problem, and with the student's own V it
+    gives the student's own value of the chain's latest name in it (h), carried on to the lines
+    after (``h = 1.52²/(2 × 9.81) = 0.118`` is then carried, not a further slip)."""
+    d = exprs[0] - exprs[1]
+    own = d.xreplace(own_defs)
+    order = list(values)
+    open_ = sorted(
+        (x for x in own.free_symbols if x in values and x not in own_defs and x not in given), key=order.index
+    )
+    if own == d or not open_:
+        return  # none of the student's own values in it
+    x = open_[-1]
+    eq = own.xreplace({k: v for k, v in values.items() if k != x})
+    if eq.free_symbols != {x} or not eq.is_polynomial(x) or sympy.degree(eq, x) not in (1, 2):
+        return
+    roots = [r for r in sympy.solve(eq, x) if r.is_real]
+    if roots:
+        own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
 
 
 def _introduced(read: list) -> set[sympy.Symbol]:

@@ -129,6 +129,8 @@ def rewrite(text: str, known: set[str]) -> str:
             return " ".join(letters)
         if sub and head not in GREEK and len(letters) > 1 and all(x in known for x in letters[:-1]):
             return " ".join(letters)  # mv_Q: m times the student's own v_Q
+        if len(word) == 2 and word[0] in known and not _SHORT_WORDS.fullmatch(word.lower()) and word not in GREEK:
+            return " ".join(letters)  # gh: g times the student's own h
         return word
 
     return _NAME.sub(split, notes_names(text))
@@ -189,6 +191,8 @@ def notes_names(text: str) -> str:
     return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
 
 
+#: Words of two letters, never two names side by side.
+_SHORT_WORDS = re.compile(r"at|of|is|on|or|in|it|to|as|an|be|by|if|so|up|we|no|do|go|he|me|my|us|am|ok|ie|eg|re|vs")
 FUNCTION_WORDS = frozenset(
     {"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"}
 )

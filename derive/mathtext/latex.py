@@ -16,6 +16,12 @@ _DROP = re.compile(
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
 _TEXT_UNIT = re.compile(rf"({_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*)()(?!\s*_)")
+#: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
+REJECTED = re.compile(
+    r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
+    r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
+    re.I,
+)
 _WORDS = {
     r"\theta": " theta ",
     r"\beta": " beta ",
@@ -148,6 +154,8 @@ def _text(m: re.Match) -> str:
         return f" {tag.group(0).strip()} "
     if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
         return inner
+    if REJECTED.search(inner):
+        return f" {inner} "  # "v_P = u \text{ is before the collision}": the reader turns it down
     if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
         return f" {inner} "  # "\text{direction of } A": a name the caller knows
     if re.fullmatch(

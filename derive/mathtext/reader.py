@@ -19,7 +19,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.latex import latex_to_plain
+from derive.mathtext.latex import REJECTED, latex_to_plain
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -74,12 +74,6 @@ _UNIT_BRACKET = re.compile(
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
 _RELATION = re.compile(r"=|≈")
-#: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
-_REJECTED = re.compile(
-    r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
-    r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
-    re.I,
-)
 #: An angle named by three points (``APB = 90°``, ``∠ABC``, ``angle PQR``): geometry in words.
 _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 #: What a side has: a letter (Latin or Greek: ``θ + φ = 90°``) or a digit.
@@ -315,7 +309,7 @@ def words_after(text: str) -> str:
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
-    text = text.strip().rstrip(",;:.").rstrip()
+    text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     return in_si(text) or _UNIT_END.sub("", text).strip()
 
 
@@ -340,7 +334,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
-    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or _REJECTED.search(text[text.rfind("=") :]):
+    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
         return None
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
