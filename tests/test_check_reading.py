@@ -380,6 +380,9 @@ def test_greek_letters_colons_labels_remarks_and_sizing_are_read(text: str, expe
         r"$v_B = 3\,\mathrm{m}\cdot\mathrm{s}^{-1}$",
         "v_B = 3 kg m/s",
         "v_B = 3 N·s",
+        "v_B = 3 m s−1",  # a Unicode minus
+        "v_B = 3 m s -1",
+        "v_B = 3 m/sec",
     ],
 )
 def test_a_unit_typed_any_way_after_a_number_is_taken_off(text: str) -> None:
@@ -499,3 +502,13 @@ def test_a_chain_product_with_a_name_of_the_students_own_and_its_own_value_carri
     work = "v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35\nv_2 = 0.8 × 35 = 26\n½ v_2^2 = gh\nh = 26^2/(2 × 9.8) = 34.5 m\n"
     assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "wrong", "correct", "carried"]
 
+
+def test_a_size_is_judged_where_the_files_conditions_hold(tmp_path) -> None:
+    # m at u hits 3m at rest: u = v_A + 3v_B, v_B - v_A = eu, so v_A = u(1 - 3e)/4, and A
+    # reverses when e > 1/3: its speed is then u(3e - 1)/4
+    head = 'title = "t"\nkind = "direct"\n'
+    given = '[given]\nm = "kg"\nu = "m/s"\ne = "e"\nm_A = "m"\nm_B = "3*m"\nv_A1 = "u"\nv_B1 = 0\n'
+    problem = tmp_path / "reverses.toml"
+    problem.write_text(head + 'conditions = ["e > 1/3"]\n' + given)
+    assert statuses(str(problem), r"$\lvert v_A \rvert = \frac{u(3e - 1)}{4}$" + "\n") == ["correct"]
+    assert statuses(str(problem), "|v_A| = u(1 - 3e)/4\n") == ["wrong"]

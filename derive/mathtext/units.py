@@ -15,10 +15,10 @@ from __future__ import annotations
 import re
 
 _LENGTH = r"(?:km|cm|mm|ft|mi|m)"
-_TIME = r"(?:s|h|min|hr)"
+_TIME = r"(?:secs?|s|hr|h|min)"
 _JOIN = r"(?:\s*[·*.⋅]\s*|\s+|)"
 #: A power -1 or -2 of a time: ``s^-1``, ``s^{-1}``, ``s^(-1)``, ``s⁻¹``, ``s-1``.
-_INVERSE = r"(?:\s*\^\s*(?:\{\s*-\s*[12]\s*\}|\(\s*-\s*[12]\s*\)|-\s*[12])|⁻[¹²]|-[12](?!\d))"
+_INVERSE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−]\s*[12])|⁻[¹²]|\s*[-−–][12](?!\d))"
 #: ``/s``, ``/s²``, ``/s^2``, or a time to the power -1 (-2).
 _PER_TIME = rf"(?:\s*/\s*{_TIME}(?:\s*\^\s*\{{?2\}}?|²)?|{_JOIN}{_TIME}{_INVERSE})"
 #: A speed (an acceleration), a momentum, an impulse.
