@@ -512,3 +512,16 @@ def test_a_size_is_judged_where_the_files_conditions_hold(tmp_path) -> None:
     problem.write_text(head + 'conditions = ["e > 1/3"]\n' + given)
     assert statuses(str(problem), r"$\lvert v_A \rvert = \frac{u(3e - 1)}{4}$" + "\n") == ["correct"]
     assert statuses(str(problem), "|v_A| = u(1 - 3e)/4\n") == ["wrong"]
+
+
+def test_a_number_glued_to_a_name_after_a_slash_is_one_divisor() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): reduced mass 2m·3m/(5m) = 1.2m; loss
+    # ½(1.2m)(1 - 0.16)(6²) = 18.144m (KE 22m before, 1.0816m + 2.7744m = 3.856m after)
+    work = (
+        "speed of approach = 4 + 2 = 6\n"
+        "speed of separation = 0.4 × 6 = 2.4\n"
+        "KE lost = ½ μ (1 − e²) w² with μ = 2m·3m/5m = 1.2m and w = 6\n"
+        "= 0.6m × 0.84 × 36 = 18.144m J\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", "μ = 2m·3m/5m = 1.5m\n") == ["wrong"]

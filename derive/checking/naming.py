@@ -111,6 +111,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
+    text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
@@ -134,6 +135,11 @@ def rewrite(text: str, known: set[str]) -> str:
         return word
 
     return _NAME.sub(split, notes_names(text))
+
+
+#: A number glued to one name after a slash, the term ending there (``/5m``, ``/2g)``, not
+#: ``/2mv^2``): one divisor, as the student means it.
+_GLUED_DIVISOR = re.compile(r"/\s*(\d+\.?\d*[A-Za-z](?:_[A-Za-z0-9]+)?)(?=\s*(?:$|[)+\-=*/,;]))")
 
 
 _BODY = re.compile(
