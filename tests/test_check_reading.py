@@ -525,3 +525,27 @@ def test_a_number_glued_to_a_name_after_a_slash_is_one_divisor() -> None:
     )
     assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
     assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", "μ = 2m·3m/5m = 1.5m\n") == ["wrong"]
+
+
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        # 4.C.11 (the notes): A's speed after sqrt(3.05² + 1.11²) = 3.25, B's sqrt(9.15² + 8.40²) = 12.4
+        (r"$\text{Speed of A after} = 3.25\ \text{m/s}$", "correct"),
+        (r"$\text{B's final speed} = 12.4$", "correct"),
+        (r"$\text{speed of B} = 8.40$", "wrong"),  # B's n component, not its speed
+    ],
+)
+def test_a_bodys_quantity_in_latex_text_is_read(line: str, status: str) -> None:
+    assert statuses("notes-4c11-two-spheres", line + "\n") == [status]
+
+
+def test_a_value_with_the_direction_opposite_to_the_positive_one_is_negative() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): A moves back at 1.04, B on at 1.36
+    work = (
+        "Taking right as positive.\n2(4) + 3(-2) = 2v_A + 3v_B\nv_B - v_A = 0.4(4 + 2) = 2.4\n"
+        "v_A = 1.04 m/s to the left\nv_B = 1.36 m/s to the right\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+    wrong = "Taking right as positive.\n2(4) + 3(-2) = 2v_A + 3v_B\nv_A = 1.04 m/s to the right\n"
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", wrong)[-1] == "wrong"

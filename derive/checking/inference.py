@@ -29,7 +29,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.numeric import number_of
-from derive.checking.ownnames import combos, named_later, own_angles, velocities_before
+from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
@@ -60,7 +60,7 @@ def read_lines(
 ) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
-    every = read_relations(text)
+    every = directed(read_relations(text), text)
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))

@@ -3,7 +3,9 @@
 An angle name the habits give a given (θ for θ_A1) that the student works out to another value
 is the student's own angle; a name met first in a relation and set equal, alone, to an expression
 in known names later (``φ = 90° − θ``) stands for it on every line; where the text writes u for
-what comes before, a name in v (``v_P``, ``v1``) is not a velocity before the impact.
+what comes before, a name in v (``v_P``, ``v1``) is not a velocity before the impact; a value
+with a direction opposite to the one the student takes as positive (``right positive``, then
+``v_A = 1.04 m/s to the left``) is negative.
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ from __future__ import annotations
 import itertools
 import re
 from dataclasses import replace
+from typing import Any
 
 import sympy
 
@@ -86,3 +89,31 @@ def combos(group: list[sympy.Symbol], cands: list, raw: list, before: set[sympy.
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
     return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
+
+
+_DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
+_WAY = r"(left|right|up|down)(?:wards?)?"
+_POSITIVE = re.compile(
+    rf"(?:taking|take|with)?\s*(?:the\s+)?(?:direction\s+)?(?:to\s+the\s+)?{_WAY}\s*(?:is|=|as|taken\s+as)?\s*"
+    rf"(?:positive|\+\s?ve|\+)(?![\w])|positive\s*(?:is|=|:)?\s*(?:to\s+the\s+|to\s+|towards\s+the\s+)?{_WAY}",
+    re.I,
+)
+
+
+def directed(relations: tuple, text: str) -> tuple:
+    """The relations with a value written with a direction opposite to the positive one the
+    text declares (``right as positive``; ``v_A = 1.04 m/s to the left``) made negative."""
+    m = _POSITIVE.search(text)
+    if m is None:
+        return relations
+    opposite = _DIRECTIONS[(m.group(1) or m.group(2)).lower()]
+    out: list[Any] = []
+    for r in relations:
+        last = r.sides[-1].strip()
+        way = rf"(?:to(?:wards)?\s+the\s+|to\s+)?{opposite}(?:wards?)?\b"
+        if re.fullmatch(r"\d+\.?\d*", last) and re.search(
+            rf"(?<![\d.]){re.escape(last)}\b[^=\d]*?\b{way}", r.written, re.I
+        ):
+            r = replace(r, sides=(*r.sides[:-1], f"-{last}"))
+        out.append(r)
+    return tuple(out)

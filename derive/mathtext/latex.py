@@ -22,6 +22,12 @@ REJECTED = re.compile(
     r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
     re.I,
 )
+#: A body's quantity in words (``speed of A after``, ``B's final velocity``).
+_BODY_WORDS = re.compile(
+    r"(?:the\s+)?(?:final\s+|initial\s+)?(?:speed|velocity|direction)\s+of\s+[AB](?:\s+(?:after|before))?"
+    r"|[AB]['’]s\s+(?:final\s+|initial\s+)?(?:speed|velocity)(?:\s+(?:after|before))?",
+    re.I,
+)
 _WORDS = {
     r"\theta": " theta ",
     r"\beta": " beta ",
@@ -156,6 +162,8 @@ def _text(m: re.Match) -> str:
         return inner
     if REJECTED.search(inner):
         return f" {inner} "  # "v_P = u \text{ is before the collision}": the reader turns it down
+    if _BODY_WORDS.fullmatch(inner):
+        return f" {inner} "  # "\text{speed of A after} = 1.04": a body's quantity the caller knows
     if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
         return f" {inner} "  # "\text{direction of } A": a name the caller knows
     if re.fullmatch(
