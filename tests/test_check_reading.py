@@ -349,3 +349,203 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
     work = "A's initial velocity = 6 m/s\nA's final velocity = -1.2 m/s\nB's velocity after = 3.6 m/s\n"
     assert statuses(str(problem), work) == ["correct"] * 3
     assert statuses(str(problem), "A's final velocity = 1.2 m/s") == ["wrong"]
+
+
+# --- notation students type: Greek letters, LaTeX sizing, units, colons, remarks ------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("APB = 90° so θ + φ = 90°, φ = 90° − θ", [("θ + φ", "90°"), ("φ", "90° − θ")]),  # three points: words
+        ("Substituting y = x + 2: 5x + 6 = -4", [("Substituting y", "x + 2"), ("5x + 6", "-4")]),
+        ("A: 3cos30 = 2.6,   B: -4", [("3cos30", "2.6")]),  # a body's lead-in after a comma
+        ("v_P = -u/3 (v_P = u is before the collision)", [("v_P", "-u/3")]),  # a root turned down
+        ("x = 3 or x = -1 (rejected)", []),
+        (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "((2)/(5)) (7 - (-3 ) )", "4")]),
+    ],
+)
+def test_greek_letters_colons_labels_remarks_and_sizing_are_read(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "v_B = 3 m s⁻¹",
+        "v_B = 3 ms-1",
+        "v_B = 3 m s^(-1)",
+        "v_B = 3 ms^-1",
+        "v_B = 3 m·s⁻¹",
+        r"$v_B = 3\ \text{m\,s}^{-1}$",
+        r"$v_B = 3\ \mathrm{m\,s^{-1}}$",
+        r"$v_B = 3\,\mathrm{m}\cdot\mathrm{s}^{-1}$",
+        "v_B = 3 kg m/s",
+        "v_B = 3 N·s",
+        "v_B = 3 m s−1",  # a Unicode minus
+        "v_B = 3 m s -1",
+        "v_B = 3 m/sec",
+    ],
+)
+def test_a_unit_typed_any_way_after_a_number_is_taken_off(text: str) -> None:
+    assert sides(text) == [("v_B", "3")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "22/1000"), ("u1", "3.5")]),
+        (r"$m_A = 20\ \mathrm{Mg} = 20\,000$ kg", [("m_A", "20*1000", "20000")]),
+        ("u = 54 km/h", [("u", "54*5/18")]),
+        ("u = 54 km h⁻¹", [("u", "54*5/18")]),
+    ],
+)
+def test_a_number_in_a_multiple_of_an_si_unit_is_read_in_the_si_unit(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_masses_in_grams_restated_are_right() -> None:
+    # uoguelph superballs (22 g and 27 g): the masses restated in grams are the givens
+    assert statuses("uoguelph-8-34-superballs-grams", "m_A = 22 g, m_B = 27 g\n") == ["correct"]
+    assert statuses("uoguelph-8-34-superballs-grams", "m_A = 27 g\n") == ["wrong"]
+
+
+def test_letters_after_a_number_that_are_no_unit_stay() -> None:
+    assert sides("v^2 = 2 g h") == [("v^2", "2 g h")]
+    assert sides("x = 2s-1") == [("x", "2s-1")]
+
+
+def test_latex_sizing_bars_and_a_unit_in_text_are_read() -> None:
+    # OCR M2 2014: 2m at 4 m/s, 3m at 2 m/s toward it, e = 0.4: 2a + 3b = 2, b - a = 2.4,
+    # so 5a = 2 - 7.2, a = -1.04, b = 1.36; A's speed 1.04 m/s
+    work = (
+        "$2(4) + 3(-2) = 2a + 3b$\n"
+        r"$b - a = 0.4\bigl(4 - (-2)\bigr) = 2.4$" + "\n"
+        r"$\Rightarrow\ 5a = 2 - 7.2$, so $a = -1.04$, $b = 1.36$" + "\n"
+        r"$\lvert a \rvert = 1.04\ \text{m\,s}^{-1}$" + "\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+
+
+def test_an_angle_name_worked_out_to_another_value_is_the_students_own() -> None:
+    # 4.C.12 (e = 0.9, θ1 = 45° given as theta_1, equal masses, B at rest): v_A2t = v cos 45°,
+    # v_A2n = v sin 45° (1 - e)/2 = 0.05 v sin 45°, so tan θ2 = 0.05 and θ2 = 2.86° from the
+    # plane of contact: the student's theta is that angle, not the given 45°
+    work = (
+        "v_A2t = v_A1 cos 45°\n"
+        "v_A2n + v_B2n = v_A1 sin 45°\n"
+        "v_B2n - v_A2n = 0.9 v_A1 sin 45°\n"
+        "v_A2n = 0.05 v_A1 sin 45°\n"
+        "tan theta = v_A2n / v_A2t = 0.05 tan 45° = 0.05\n"
+        "θ = 2.86° to the plane of contact\n"
+    )
+    assert statuses("notes-4c12-cue-ball", work) == ["correct"] * 6
+
+
+def test_the_same_letter_under_before_and_after_is_two_quantities() -> None:
+    # Giancoli 7-18: 28 m/s at 45° to the normal, e = 1: the normal part reverses, the other stays
+    work = "Before: x = 28 cos 45°, y = 28 sin 45°\nAfter: x = -28 cos 45°, y = 28 sin 45°\n"
+    assert statuses("giancoli-7-18-tennis-ball-wall-45deg", work) == ["correct", "correct"]
+
+
+# --- names the student introduces ------------------------------------------------------------
+def _inverse_carts(tmp_path, given: str) -> str:
+    problem = tmp_path / "carts.toml"
+    problem.write_text(f'title = "t"\nkind = "direct"\n[given]\n{given}')
+    return str(problem)
+
+
+def test_v_alone_is_the_one_velocity_after_not_given_and_words_are_not_bad_input(tmp_path) -> None:
+    # 2 kg at 6 m/s hits 4 kg at rest, B moves off at 3.6 m/s: 12 = 2v + 14.4, v = -1.2; the
+    # student works 4(3.6) as 1.44 (a slip): v = (12 - 1.44)/2 = 5.28, carried
+    problem = _inverse_carts(
+        tmp_path, 'm_A = "2 kg"\nm_B = "4 kg"\ne = "?"\nv_A1 = "6 m/s"\nv_B1 = 0\nv_B2 = "3.6 m/s"\n'
+    )
+    work = "momentum before = momentum after\n2(6) + 4(0) = 2v + 4(3.6)\n12 = 2v + 1.44\nv = 5.28 m/s\n"
+    assert statuses(problem, work) == ["correct", "wrong", "carried"]
+
+
+def test_m_alone_is_the_one_unknown_mass(tmp_path) -> None:
+    # 1500 kg at 8 m/s into a car at rest; they move on together at 5 m/s: 12000 = 5(1500 + M),
+    # M = 900 kg; 1500 copied as 1050: 12000 = 5250 + 5M, M = 1350, carried
+    given = 'm_A = "1500 kg"\nm_B = "? kg"\ne = "?"\nv_A1 = "8 m/s"\nv_B1 = 0\nv_A2 = "5 m/s"\nv_B2 = "5 m/s"\n'
+    work = "Let M be the mass of the second car.\n1500 × 8 = (1050 + M) × 5\n12000 = 5250 + 5M\nM = 1350 kg\n"
+    assert statuses(_inverse_carts(tmp_path, given), work) == ["wrong", "carried", "carried"]
+
+
+def test_a_mass_times_a_students_own_name_and_v_names_after_the_impact() -> None:
+    # Edexcel M2 2003: 2m at u hits m at rest: 2u = 2v_P + v_Q holds for the velocities after;
+    # kinetic energy conserved (e is 1/3, not 1) is the slip, though the velocities before
+    # (v_P = u, v_Q = 0) satisfy both lines: v_P and v_Q are after (v after, as u is before)
+    work = (
+        "CLM: 2mu = 2mv_P + mv_Q  =>  2u = 2v_P + v_Q\n"
+        "KE conserved: ½(2m)u² = ½(2m)v_P² + ½ m v_Q²  =>  2u² = 2v_P² + v_Q²\n"
+    )
+    r = report("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert [i.status for i in r.items] == ["correct", "wrong"], r.text()
+    assert any("v_P is v_A2" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (r"$v_Q = \frac{2u}{3} \quad (v_Q = 0 \text{ is the initial velocity})$", [("v_Q", "((2u)/(3))")]),
+        ("lost = 37.5 - 49.5 = -12 J ???", [("lost", "37.5 - 49.5", "-12")]),  # the doubt is not the value
+    ],
+)
+def test_a_root_turned_down_in_latex_words_and_a_doubt_after_a_value(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_a_chain_product_with_a_name_of_the_students_own_and_its_own_value_carried() -> None:
+    # OCR M2 2007: thrown down at 21 m/s from 40 m: v = 35; e = 0.8, so it rebounds at 28 and
+    # rises 28²/19.6 = 40 m. 0.8 × 35 worked as 26 (a slip): ½ v_2² = gh holds for the problem,
+    # and with the student's 26 gives h = 26²/19.6 = 34.5: carried, not a further slip
+    work = "v^2 = 21^2 + 2(9.8)(40) = 1225, v = 35\nv_2 = 0.8 × 35 = 26\n½ v_2^2 = gh\nh = 26^2/(2 × 9.8) = 34.5 m\n"
+    assert statuses("chain-ocr-m2-2007-rebounds-to-start", work) == ["correct", "wrong", "correct", "carried"]
+
+
+def test_a_size_is_judged_where_the_files_conditions_hold(tmp_path) -> None:
+    # m at u hits 3m at rest: u = v_A + 3v_B, v_B - v_A = eu, so v_A = u(1 - 3e)/4, and A
+    # reverses when e > 1/3: its speed is then u(3e - 1)/4
+    head = 'title = "t"\nkind = "direct"\n'
+    given = '[given]\nm = "kg"\nu = "m/s"\ne = "e"\nm_A = "m"\nm_B = "3*m"\nv_A1 = "u"\nv_B1 = 0\n'
+    problem = tmp_path / "reverses.toml"
+    problem.write_text(head + 'conditions = ["e > 1/3"]\n' + given)
+    assert statuses(str(problem), r"$\lvert v_A \rvert = \frac{u(3e - 1)}{4}$" + "\n") == ["correct"]
+    assert statuses(str(problem), "|v_A| = u(1 - 3e)/4\n") == ["wrong"]
+
+
+def test_a_number_glued_to_a_name_after_a_slash_is_one_divisor() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): reduced mass 2m·3m/(5m) = 1.2m; loss
+    # ½(1.2m)(1 - 0.16)(6²) = 18.144m (KE 22m before, 1.0816m + 2.7744m = 3.856m after)
+    work = (
+        "speed of approach = 4 + 2 = 6\n"
+        "speed of separation = 0.4 × 6 = 2.4\n"
+        "KE lost = ½ μ (1 − e²) w² with μ = 2m·3m/5m = 1.2m and w = 6\n"
+        "= 0.6m × 0.84 × 36 = 18.144m J\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", "μ = 2m·3m/5m = 1.5m\n") == ["wrong"]
+
+
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        # 4.C.11 (the notes): A's speed after sqrt(3.05² + 1.11²) = 3.25, B's sqrt(9.15² + 8.40²) = 12.4
+        (r"$\text{Speed of A after} = 3.25\ \text{m/s}$", "correct"),
+        (r"$\text{B's final speed} = 12.4$", "correct"),
+        (r"$\text{speed of B} = 8.40$", "wrong"),  # B's n component, not its speed
+    ],
+)
+def test_a_bodys_quantity_in_latex_text_is_read(line: str, status: str) -> None:
+    assert statuses("notes-4c11-two-spheres", line + "\n") == [status]
+
+
+def test_a_value_with_the_direction_opposite_to_the_positive_one_is_negative() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): A moves back at 1.04, B on at 1.36
+    work = (
+        "Taking right as positive.\n2(4) + 3(-2) = 2v_A + 3v_B\nv_B - v_A = 0.4(4 + 2) = 2.4\n"
+        "v_A = 1.04 m/s to the left\nv_B = 1.36 m/s to the right\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 4
+    wrong = "Taking right as positive.\n2(4) + 3(-2) = 2v_A + 3v_B\nv_A = 1.04 m/s to the right\n"
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", wrong)[-1] == "wrong"

@@ -55,6 +55,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
         items.append(item)
+        if item.status == "correct" and slips and len(exprs) == 2:
+            _own_root(exprs, values, own_defs, _givens(ctx))
         if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
             own_defs[left] = sympy.Rational(sides[-1].strip())
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
@@ -124,6 +126,9 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
                     if 0 < i < len(r.sides) - 1 and not words:
                         exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
                         continue
+                    if i == 0 and not words and len(r.sides) >= 3 and re.fullmatch(r"[A-Za-z\s'’,-]+", s):
+                        exprs.append(None)  # "energy lost in the bounce = ½(0.2)(…) = 2.87": words, then working
+                        continue
                     if not words or i == len(r.sides) - 1:
                         raise
                     exprs.append(sympy.Symbol(PREFIX + "_".join(words.group(1).split())))
@@ -140,9 +145,13 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
     either sign, that makes the most relations hold where it is the only unknown; a name no
     value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
     found: dict[sympy.Symbol, sympy.Expr] = {}
-    cands = [c for s, v in values.items() if v.is_number and v != 0 for c in (s, -s)]
+    given = _givens(ctx)  # where a given and a result have one value (h_0 = h_2), the result first
+    cands = [
+        c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
+    ]
+    defined = _introduced(read)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
-        for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found), key=str):
+        for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
             alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
             alone = [a for a in alone if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
@@ -154,6 +163,44 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
                 if roots is not None:
                     found[p] = roots
     return found
+
+
+def _givens(ctx: Context) -> set[sympy.Symbol]:
+    return {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
+
+
+def _own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) -> None:
+    """``½V² = gh`` after a slip in V: right for the problem, and with the student's own V it
+    gives the student's own value of the chain's latest name in it (h), carried on to the lines
+    after (``h = 1.52²/(2 × 9.81) = 0.118`` is then carried, not a further slip)."""
+    d = exprs[0] - exprs[1]
+    own = d.xreplace(own_defs)
+    order = list(values)
+    open_ = sorted(
+        (x for x in own.free_symbols if x in values and x not in own_defs and x not in given), key=order.index
+    )
+    if own == d or not open_:
+        return  # none of the student's own values in it
+    x = open_[-1]
+    eq = own.xreplace({k: v for k, v in values.items() if k != x})
+    if eq.free_symbols != {x} or not eq.is_polynomial(x) or sympy.degree(eq, x) not in (1, 2):
+        return
+    roots = [r for r in sympy.solve(eq, x) if r.is_real]
+    if roots:
+        own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
+
+
+def _introduced(read: list) -> set[sympy.Symbol]:
+    """The names of the student's own first met alone on the left of a relation whose next side
+    is in the chain's names (``δ_0 = m_pan g/k = …``): defined there, not inferred."""
+    seen: set[sympy.Symbol] = set()
+    out: set[sympy.Symbol] = set()
+    for _r, _sides, exprs in read:
+        left = exprs[0]
+        if left.is_Symbol and left in _own(left) and left not in seen and len(exprs) > 2 and not _own(exprs[1]):
+            out.add(left)
+        seen |= set().union(*(_own(x) for x in exprs))
+    return out
 
 
 def _only(sides, exprs: list, p: sympy.Symbol, found: dict) -> tuple | None:

@@ -9,7 +9,6 @@ problem's true values (a slip later on does not move them: the lines before it h
 
 from __future__ import annotations
 
-import itertools
 import re
 from dataclasses import dataclass
 
@@ -30,6 +29,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.numeric import number_of
+from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
@@ -62,26 +62,31 @@ def read_lines(
 ) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
-    every = read_relations(text)
+    every = directed(read_relations(text), text)
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
-    rewritten = [tuple(rewrite(of_the_body(s, r.label), known) for s in r.sides) for r in relations]
+    rewritten: list[tuple[str, ...]] = []
+    for r in relations:
+        seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
+        rewritten.append(tuple(rewrite(of_the_body(s, r.label, seen), known) for s in r.sides))
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
+    own_angles(ctx, raw, meanings)
     defs = _definitions(raw, meanings, [r.aside for r in relations])
-    equated = _equated(raw, meanings, defs)
+    equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
     signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
     _, mapping, inferred, s = max(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
+    named_later(raw, mapping)
     lines = [_resolved(r, mapping) for r in raw]
     said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
@@ -94,14 +99,15 @@ def read_lines(
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
 
-def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:
+def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:
     """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's
-    names, side by side in a relation, stands for it."""
+    names of what is worked out, side by side in a relation, stands for it (not a given:
+    ``v_P = u`` is a root the student turns down, not a name for u)."""
     out: dict[sympy.Symbol, sympy.Symbol] = {}
     for r in raw:
         bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
         theirs = [e for e in bare if e.name.startswith(PREFIX) and e.name[1:] not in meanings and e not in defs]
-        ours = [e for e in bare if not e.name.startswith(PREFIX)]
+        ours = [e for e in bare if not e.name.startswith(PREFIX) and e not in givens]
         for p in theirs:
             if ours and p not in out:
                 out[p] = ours[0]
@@ -116,12 +122,17 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
             out[f"speed_{b}"] = derived[f"v_{b}2"][0]
         elif not ctx.problem.oblique and getattr(ctx.model.nm, f"{b}2n", None) is not None:
             out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
+    nm = ctx.model.nm
+    b1, b2 = nm.B1n if nm.B1n is not None else 0, nm.B2n if nm.B2n is not None else 0
+    out["speed_app"] = nm.A1n - b1  # the speed of approach along n (positive: they approach)
+    if nm.A2n is not None:
+        out["speed_sep"] = b2 - nm.A2n
     return out
 
 
 def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
     exprs: list[sympy.Expr] = []
-    shown = r.sides
+    shown = list(r.sides)
     try:
         for i, side in enumerate(sides):
             try:
@@ -129,14 +140,22 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             except ParseError:
                 if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
-                    shown = (r.lead, *r.sides[1:])
+                    shown[0] = r.lead
                     continue
-                if i or len(sides) < 3:
+                if i == len(sides) - 1 or len(sides) < 3 or (i and len(exprs) < 1):
                     raise
-                shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
+                shown[i] = None  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
+        first = exprs[0] if exprs else None
+        if (
+            first is not None
+            and first.is_Symbol
+            and (first.name.startswith(PREFIX) or _velocity(first))
+            and re.search(r"\bspeed\b", r.label, re.I)
+        ):
+            exprs[0] = sympy.sqrt(exprs[0] ** 2)  # "speed after: v = eu = 1.2": the size of v
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
-    return Read(r.line, r.written, shown, r.tag, tuple(exprs))
+    return Read(r.line, r.written, tuple(s for s in shown if s is not None), r.tag, tuple(exprs))
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
@@ -220,7 +239,7 @@ def _infer(
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
     for group in groups:
         best = max(
-            itertools.product(cands, repeat=len(group)),
+            combos(group, cands, raw, velocities_before(ctx)),
             key=lambda combo: (
                 _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
                 + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
@@ -367,6 +386,9 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
     left = set().union(*(_placeholders(e) for e in exprs))
+    if left and len(exprs) >= 3 and not r.defines and not set().union(*(_placeholders(e) for e in exprs[1:])):
+        r = Read(r.number, r.written, r.sides[1:], r.tag, r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
+        exprs, left = exprs[1:], set()
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")

@@ -55,7 +55,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
     lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
-    if not any(line.exprs is not None for line in lines):
+    if not any(line.exprs is not None or line.error.startswith("unknown name") for line in lines):
         first = lines[0] if lines else None
         why = f" (line {first.number}: {words.not_read(first.error, first.sides, first.written)})" if first else ""
         why = why or " (no line with '=')"

@@ -30,7 +30,7 @@ from derive.checking.context import Context
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
-from derive.problem.units import DIMENSIONLESS
+from derive.problem.units import DIMENSIONLESS, MASS
 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
@@ -50,6 +50,8 @@ PHRASES = (
     (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
     (r"(?<![\w'])([AB])\s+before\b", r"u_\1"),
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
+    (r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed", "speed_app"),  # not "relative speed":
+    (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
@@ -89,13 +91,15 @@ class Open(Mapping):
 
 def name_like(name: str) -> bool:
     """A name, not a word: ``x``, ``V``, ``u_A``, ``u1``, ``v_G`` (not ``of``, ``the``, ``KE``)."""
-    if name in GREEK:
-        return True
+    if name in GREEK or (name.partition("_")[0] in GREEK and re.fullmatch(r"[A-Za-z]+_[A-Za-z0-9]{1,6}", name)):
+        return True  # mu, delta_0, theta_2
     return len(name) == 1 or re.fullmatch(r"[A-Za-z]{1,2}(?:_[A-Za-z0-9]{1,6}|\d{1,2})", name) is not None
 
 
 #: Greek letters students name things with (mu the reduced mass, omega, lambda).
-GREEK = frozenset({"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", "psi", "sigma", "tau", "delta"})
+GREEK = frozenset(
+    {"mu", "lambda", "omega", "gamma", "epsilon", "alpha", "phi", "psi", "sigma", "tau", "delta", "theta", "beta"}
+)
 
 
 def rewrite(text: str, known: set[str]) -> str:
@@ -107,6 +111,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
+    text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
@@ -121,9 +126,20 @@ def rewrite(text: str, known: set[str]) -> str:
         letters = list(head)
         if sub:
             letters[-1] += "_" + sub
-        return " ".join(letters) if len(letters) > 1 and all(x in known for x in letters) else word
+        if len(letters) > 1 and all(x in known for x in letters):
+            return " ".join(letters)
+        if sub and head not in GREEK and len(letters) > 1 and all(x in known for x in letters[:-1]):
+            return " ".join(letters)  # mv_Q: m times the student's own v_Q
+        if len(word) == 2 and word[0] in known and not _SHORT_WORDS.fullmatch(word.lower()) and word not in GREEK:
+            return " ".join(letters)  # gh: g times the student's own h
+        return word
 
     return _NAME.sub(split, notes_names(text))
+
+
+#: A number glued to one name after a slash, the term ending there (``/5m``, ``/2g)``, not
+#: ``/2mv^2``): one divisor, as the student means it.
+_GLUED_DIVISOR = re.compile(r"/\s*(\d+\.?\d*[A-Za-z](?:_[A-Za-z0-9]+)?)(?=\s*(?:$|[)+\-=*/,;]))")
 
 
 _BODY = re.compile(
@@ -131,13 +147,13 @@ _BODY = re.compile(
 )
 
 
-def of_the_body(text: str, label: str) -> str:
+def of_the_body(text: str, label: str, seen: set[str] = frozenset()) -> str:
     """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
     its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
     (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
     m = _BODY.match(label.strip())
     if not m:
-        return text
+        return _after_label(text, label, seen)
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
     text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
     text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
@@ -147,6 +163,24 @@ def of_the_body(text: str, label: str) -> str:
     if re.fullmatch(r"\s*(?:across|perpendicular)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I):
         return f"{body}_t{prime}"
     return text
+
+
+#: A lead-in that says the names under it are after the impact (``After: x = u cos θ``).
+_AFTER = re.compile(r"^(?:after(?:wards)?|finally|final|after\s+(?:the\s+)?(?:impact|collision|bounce))$", re.I)
+
+
+def _after_label(text: str, label: str, seen: set[str]) -> str:
+    """A side under ``After:`` with the one-letter names of the student's own used before it
+    primed (``x`` -> ``x'``): ``Before: x = u cos θ`` and ``After: x = u cos θ`` are two
+    quantities. Names with a time of their own (``u``, ``v``, ``V``, ``w``), ``e``, ``m``, ``g``
+    and ``i``, ``j`` are kept."""
+    if not _AFTER.match(label.strip()):
+        return text
+
+    def primed(m: re.Match) -> str:
+        return m.group(1) + ("'" if m.group(1) in seen else "")
+
+    return re.sub(r"(?<![A-Za-z_'.])([a-dfhk-lnoprstx-zA-LN-UX-Z])(?![\w'(])", primed, text)
 
 
 def _subscript(m: re.Match) -> str:
@@ -163,6 +197,8 @@ def notes_names(text: str) -> str:
     return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
 
 
+#: Words of two letters, never two names side by side.
+_SHORT_WORDS = re.compile(r"at|of|is|on|or|in|it|to|as|an|be|by|if|so|up|we|no|do|go|he|me|my|us|am|ok|ie|eg|re|vs")
 FUNCTION_WORDS = frozenset(
     {"sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2", "exp", "log", "pi", "deg", "rad"}
 )
@@ -242,9 +278,26 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
         out["V"] = out["v_f"] = out["v_2"] = after["A"]
+    out.update(_lone(ctx, after, u_used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
+
+
+def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool) -> dict[str, sympy.Expr]:
+    """``v`` (``V``) alone where one velocity after is not given (``20v + 35(0.3)`` when B's is),
+    or the bodies move off together (e = 0): that velocity; ``M`` where one mass is unknown."""
+    p = ctx.problem
+    out: dict[str, sympy.Expr] = {}
+    given = {g.name for g in p.givens if not g.unknown}
+    open_ = [b for b in "AB" if not ({f"v_{b}2", f"v_{b}2n"} & given)]
+    together = any(g.name == "e" and g.value == 0 for g in p.givens)
+    if not p.oblique and not u_used and (len(open_) == 1 or together) and after[(open_ or ["A"])[0]] is not None:
+        out["v"] = out["V"] = after[(open_ or ["A"])[0]]
+    masses = [g.symbol for g in p.givens if g.unknown and g.dim == MASS]
+    if len(masses) == 1:
+        out["M"] = masses[0]
+    return out
 
 
 #: The axes' letters students use: the first (n, x, i) is the line of centres, derive's n.

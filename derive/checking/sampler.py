@@ -19,12 +19,15 @@ _RANGES = {MASS: (0.5, 5.0), ANGLE: (0.1, 1.45), FORCE: (5.0, 50.0), ACCELERATIO
 
 class Sampler:
     """Random admissible values of the givens: masses positive, 0 < e < 1, speeds positive,
-    angles between 6° and 83°, and bodies that approach along n."""
+    angles between 6° and 83°, bodies that approach along n, and the file's conditions on its
+    givens met."""
 
     def __init__(self, problem: Problem, ind: Mapping[sympy.Symbol, sympy.Expr]) -> None:
         self.by_symbol = {g.symbol: g for g in problem.givens}
         self.approach = (problem.motion_A.n - problem.motion_B.n).xreplace(dict(ind))
         self.numeric = problem.numeric()
+        given = set(self.by_symbol)  # the file's conditions on its givens ("e > 1/2": P reverses)
+        self.conditions = [c for c in problem.conditions if (c.lhs - c.rhs).free_symbols <= given]
 
     def range(self, s: sympy.Symbol) -> tuple[float, float]:
         """The interval the values of ``s`` are drawn from."""
@@ -48,9 +51,16 @@ class Sampler:
             for s in syms:
                 lo, hi = self.range(s)
                 pt[s] = sympy.Rational(rng.randint(int(lo * 1000), int(hi * 1000)), 1000)
-            if self._approaching(pt):
+            if self._approaching(pt) and all(self._meets(c, pt) for c in self.conditions):
                 out.append(pt)
         return out
+
+    def _meets(self, c, pt: dict) -> bool:
+        try:
+            d = float((c.lhs - c.rhs).xreplace(pt).xreplace(self.numeric).evalf(20))
+        except (TypeError, ValueError):
+            return True
+        return {"<": d < 0, "<=": d <= 0, ">": d > 0, ">=": d >= 0}[c.op]
 
     def _approaching(self, pt: dict) -> bool:
         a = self.approach.xreplace(pt).xreplace(self.numeric)

@@ -1,143 +1,208 @@
-"""A row of LaTeX mathematics as plain text, read through the one parser (:mod:`.parser`,
-leniently) and printed back: ``\\frac{a}{b}`` -> ``a/b``, ``v_{A2n}`` -> ``v_A2n``,
-``5 \\cos 37.6^\\circ`` -> ``5 cos(37.6°)``, ``\\tan^{-1}`` -> ``atan``, ``\\approx`` -> ``=``,
-spacing and alignment dropped, a unit after a value dropped, words in ``\\text{}`` kept where
-they may name something. What the parser does not take (prose, a lone bracket, an arrow, an
-unknown command) is kept token by token as written, so that nothing typed is lost."""
+"""A row of LaTeX mathematics as plain text: ``\\frac{a}{b}`` -> ``((a)/(b))``, ``v_{A2n}`` ->
+``v_A2n``, ``5 \\cos 37.6^\\circ`` -> ``5 cos 37.6°``, spacing (``\\,`` ``\\;`` ``\\quad``) and
+alignment (``&``) dropped, ``\\approx`` read as ``=``, ``\\tan^{-1}`` as ``atan``."""
 
 from __future__ import annotations
 
 import re
 
-from derive.mathtext.parser import FUNCTIONS, GREEK, Parser
-from derive.mathtext.tokens import LatexError
-from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
+from derive.mathtext.units import SCALED, is_unit, plain_unit
 
-_THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
-_TAG = re.compile(r"\\tag\*?\{([^{}]*)\}|\\label\{[^{}]*\}")
-_TAG_END = re.compile(r"(?:&&|\\q?quad|\s)\s*\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
-#: Tokens the parser leaves to the caller, as plain text.
-_PLAIN = {
-    **dict.fromkeys(("{", r"\{", r"\left(", r"\left[", r"\left\{"), "("),
-    **dict.fromkeys(("}", r"\}", r"\right)", r"\right]", r"\right\}"), ")"),
-    **dict.fromkeys((r"\left|", r"\right|", r"\vert", r"\lvert", r"\rvert"), "|"),
-    **dict.fromkeys((r"\cdot", r"\times", r"\ast"), "*"),
-    **dict.fromkeys((r"\approx", r"\simeq", r"\equiv"), "="),
-    **dict.fromkeys((r"\le", r"\leq", r"\leqslant"), "≤"),
-    **dict.fromkeys((r"\ge", r"\geq", r"\geqslant"), "≥"),
-    **dict.fromkeys((r"\ne", r"\neq"), "≠"),
-    **dict.fromkeys((r"\circ", r"\degree"), "°"),
-    **dict.fromkeys((r"\checkmark", r"\ "), ""),
+_DROP = re.compile(
+    r"\\(?:left|right|middle|displaystyle|textstyle|scriptstyle|quad|qquad|(?:big|Big|bigg|Bigg)[lrm]?)(?![A-Za-z])"
+    r"|\\[,;:! ]|&|~|\\(?:hspace|vspace|phantom|hphantom|vphantom)\*?\{[^{}]*\}"
+    r"|\\label\{[^}]*\}|\\nonumber|\\notag"
+)
+#: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
+_ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
+_TEXT_UNIT = re.compile(rf"({_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*)()(?!\s*_)")
+#: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
+REJECTED = re.compile(
+    r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
+    r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
+    re.I,
+)
+#: A body's quantity in words (``speed of A after``, ``B's final velocity``).
+_BODY_WORDS = re.compile(
+    r"(?:the\s+)?(?:final\s+|initial\s+)?(?:speed|velocity|direction)\s+of\s+[AB](?:\s+(?:after|before))?"
+    r"|[AB]['’]s\s+(?:final\s+|initial\s+)?(?:speed|velocity)(?:\s+(?:after|before))?",
+    re.I,
+)
+_WORDS = {
+    r"\theta": " theta ",
+    r"\beta": " beta ",
+    r"\alpha": " alpha ",
+    r"\phi": " phi ",
+    r"\varphi": " phi ",
+    r"\pi": " pi ",
+    r"\Delta": " Delta ",
+    r"\mu": " μ ",  # the Greek letter, never m times u
+    r"\lambda": " lambda ",
+    r"\omega": " omega ",
+    r"\gamma": " gamma ",
+    r"\delta": " delta ",
+    r"\sigma": " sigma ",
+    r"\tau": " tau ",
+    r"\psi": " psi ",
+    r"\rho": " rho ",
+    r"\eta": " eta ",
+    r"\Theta": " theta ",
+    r"\Phi": " phi ",
+    r"\epsilon": " epsilon ",
+    r"\varepsilon": " epsilon ",
+    r"\lvert": "|",
+    r"\rvert": "|",
+    r"\lVert": "|",
+    r"\rVert": "|",
+    r"\vert": "|",
+    r"\Vert": "|",
+    r"\cdot": "*",
+    r"\times": "*",
     r"\div": "/",
+    r"\circ": "°",
+    r"\approx": "=",
+    r"\simeq": "=",
+    r"\degree": "°",
+    r"\arctan": " atan ",
+    r"\arcsin": " asin ",
+    r"\arccos": " acos ",
+    r"\sin": " sin ",
+    r"\cos": " cos ",
+    r"\tan": " tan ",
+    r"\ln": " log ",
+    r"\sqrt": "sqrt",
+    r"\checkmark": " ",
     r"\%": "%",
-    r"\_": "_",
-    r"\imath": "i",
-    r"\jmath": "j",
-    r"\ln": "log",
 }
-#: A row longer than this is kept token by token (the parser retries at each token where it
-#: fails: a hostile row must stay cheap).
-MAX_TOKENS = 160
-_UNIT_WORDS = frozenset({"m", "s", "kg", "J", "N", "Ns", "ms", "ft", "lb", "slug", "deg", "rad", "g", "kJ", "km", "h"})
+_WRAPPERS = (
+    "cancel",
+    "bcancel",
+    "xcancel",
+    "boxed",
+    "vec",
+    "bar",
+    "mathbf",
+    "mathit",
+    "mathrm",
+    "overline",
+    "operatorname",
+    "textbf",
+    "bm",
+    "boldsymbol",
+)
 
 
 def latex_to_plain(tex: str) -> str:
     """A row of LaTeX mathematics as plain text.
 
     >>> latex_to_plain(r"v_{A2n} &= \\frac{19.8 - 5(9.51)}{25} \\approx -1.11\\,\\text{m/s}")
-    'v_A2n = (19.8 - 5*9.51)/25 = -1.11'
-    >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11) \\tag{3}")
-    'theta = atan(3.05/1.11) (3)'
+    'v_A2n = ((19.8 - 5(9.51))/(25)) = -1.11'
+    >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11)")
+    'theta = atan(3.05/1.11)'
     """
-    tags: list[str] = []
-    s = _TAG.sub(lambda m: tags.append(m.group(1)) or " " if m.group(1) else " ", _THOUSANDS.sub("", tex))
-    m = _TAG_END.search(s)
-    if m:
-        s, tags = s[: m.start()], [m.group(1), *tags]
-    parser, out, end = Parser(s, lenient=True), [], 0
-    parse = len(parser.toks) <= MAX_TOKENS
-    while not parser.at_end():
-        start = parser.i
-        try:
-            if not parse:
-                raise LatexError("too long to parse")
-            piece = show(parser.expr())
-            piece = f"({piece})" if parser.toks[start] == "{" and not re.fullmatch(r"[\w.']*", piece) else piece
-        except LatexError:
-            parser.i = start
-            tok = parser.take()
-            piece = _PLAIN.get(tok, tok[1:] if tok[1:] in GREEK | FUNCTIONS else tok)
-        out.append(piece if parser.spans[start][0] == end else " " + piece)
-        end = parser.spans[parser.i - 1][1]
-    return " ".join("".join([*out, *(f" ({t})" for t in tags)]).split())
+    s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
+    s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
+    s = _TEXT_UNIT.sub(_unit_text, s)
+    s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
+    s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
+    s = _DROP.sub(" ", s)
+    s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
+    s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
+    s = _unit_vectors(s)
+    for cmd in _WRAPPERS:
+        s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
+        s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
+    s = re.sub(r"\\sqrt\s*(\d+|[A-Za-z])(?![\w{])", r"sqrt(\1)", s)  # \sqrt3
+    s = fracs(s)
+    s = s.replace("\\|", "|")  # \|v\|: a norm
+    for word, plain in _WORDS.items():
+        s = re.sub(re.escape(word) + r"(?![A-Za-z])", plain, s)
+    s = re.sub(r"_\{([A-Za-z0-9]+)\}", r"_\1", s)
+    s = re.sub(r"_\{([A-Za-z0-9]+),?\s*([A-Za-z0-9]+)\}", r"_\1\2", s)
+    s = re.sub(r"\s+_", "_", s)
+    s = " ".join(s.replace("{", "(").replace("}", ")").split())
+    return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
 
 
-def show(node: object) -> str:
-    """A node of the tree in plain syntax (brackets where the reading needs them)."""
-    if isinstance(node, Num):
-        power = f"*10^({node.exponent})" if node.exponent else ""
-        return node.mantissa + power + ("°" if node.degrees else "")
-    if isinstance(node, (Sym, Vec)):
-        return node.name
-    if isinstance(node, Hat):
-        return {"x": "i_hat", "y": "j_hat"}.get(node.axis, f"e_{node.axis}")
-    if isinstance(node, Text):
-        return _text(node.text)
-    if isinstance(node, Add):
-        out = "".join(f" {'-' if sign < 0 else '+'} {_wrapped(t, Add)}" for sign, t in node.terms)
-        return out[3:] if out.startswith(" + ") else "-" + out[3:]
-    if isinstance(node, Mul):
-        return _product(node)
-    if isinstance(node, Frac):
-        return f"{_wrapped(node.num, Add)}/{_wrapped(node.den, Add, Mul, Frac)}"
-    if isinstance(node, Pow):
-        base = show(node.base)
-        if not base:
-            return ""  # \text{m}^{-1}: a unit's power
-        exp = show(node.exp)
-        exp = exp if re.fullmatch(r"\w+", exp) else f"({exp})"
-        return f"{_wrapped(node.base, Add, Mul, Frac, Pow, Deg)}^{exp}"
-    if isinstance(node, Func):
-        args = ", ".join(show(a) for a in node.args)
-        return f"|{args}|" if node.name == "abs" else f"{'log' if node.name == 'ln' else node.name}({args})"
-    if isinstance(node, Deg):
-        return _wrapped(node.inner, Add, Mul, Frac) + "°"
-    return "?" if isinstance(node, Unknown) else str(node)
+def _unit_text(m: re.Match) -> str:
+    """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
+    of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
+    text = m.group(1) + (m.group(2) or "")
+    if not is_unit(text):
+        return m.group(0)
+    plain = plain_unit(text)
+    return f" {plain} " if plain in SCALED or plain.startswith("km") else " "
 
 
-def _wrapped(node: object, *kinds: type) -> str:
-    """``node`` shown, in brackets where it is one of ``kinds`` (or a number with a power of ten)."""
-    text = show(node)
-    bare = not isinstance(node, kinds) and not (isinstance(node, Num) and node.exponent)
-    return text if bare or not text else f"({text})"
+def _unit_vectors(s: str) -> str:
+    """``\\hat{\\imath}``, ``\\hat\\imath``, ``\\hat{x}``, ``\\hat{\\mathbf{i}}`` -> ``i_hat`` (``j_hat``,
+    ``n_hat``, ``t_hat``); ``\\hat e_t``, ``\\hat{e}_n`` -> ``e_t``; ``\\vec v_{A2}``, ``\\mathbf u_A``
+    (a wrapper without braces) -> the name alone."""
+    s = re.sub(r"\\[ij]math(?![A-Za-z])", lambda m: m.group(0)[1], s)
+    letter = r"(?:\\mathbf\s*\{\s*([A-Za-z])\s*\}|\{\s*(?:\\mathbf\s*)?\{?\s*([A-Za-z])\s*\}?\s*\}|\s*([A-Za-z]))"
+
+    def hat(m: re.Match) -> str:
+        c = next(g for g in m.groups() if g)
+        if c == "e":
+            return "e"
+        return {"x": "i", "y": "j"}.get(c, c) + "_hat"
+
+    s = re.sub(r"\\(?:hat|widehat)\s*" + letter, hat, s)
+    return re.sub(r"\\(?:vec|mathbf|bm|boldsymbol|overrightarrow|underline)(?![A-Za-z])\s*(?=[A-Za-z\\])", "", s)
 
 
-def _product(node: Mul) -> str:
-    """Factors joined as written: a space kept (``1.41 m``: a unit the reader may drop), side by
-    side a number and a name or a bracket (``5v_A``, ``0.2(v + 4)``), else ``*`` (``m(u)``)."""
-    out = ""
-    gaps = node.gaps or (" ",) * (len(node.factors) - 1)
-    for k, factor in enumerate(node.factors):
-        text = _wrapped(factor, Add, Mul)
-        if k and text:
-            gap = gaps[k - 1]
-            glued = text[0] == "(" or (re.match(r"[A-Za-z]", text) and re.search(r"[\d)]$", out))
-            out += gap if gap or glued else "*"
-        out += text
-    return out
-
-
-def _text(inner: str) -> str:
+def _text(m: re.Match) -> str:
     """``\\text{…}``: a unit or words are dropped; a tag (``m/s (4)``) is kept; a name written
     in it (``\\text{KE}``, ``T_{\\text{lost}}``) is kept as a name."""
-    inner = inner.strip()
+    inner = m.group(1).strip()
     tag = re.search(r"\(\s*\d{1,2}[a-z]?\s*\)\s*$", inner)
     if tag:
         return f" {tag.group(0).strip()} "
     if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
         return inner
+    if REJECTED.search(inner):
+        return f" {inner} "  # "v_P = u \text{ is before the collision}": the reader turns it down
+    if _BODY_WORDS.fullmatch(inner):
+        return f" {inner} "  # "\text{speed of A after} = 1.04": a body's quantity the caller knows
     if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
         return f" {inner} "  # "\text{direction of } A": a name the caller knows
+    if re.fullmatch(
+        r"(?:(?:speed|velocity)\s+of\s+)?(?:approach|separation|closing|relative)(?:\s+speed)?", inner, re.I
+    ):
+        return f" {inner} "  # "(\text{approach speed})^2": a quantity the caller knows
     if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
         return f" {inner} "  # "KE lost": a name the caller knows
-    return ""
+    return " "
+
+
+_UNIT_WORDS = frozenset({"m", "s", "kg", "J", "N", "Ns", "ms", "ft", "lb", "slug", "deg", "rad", "g", "kJ", "km", "h"})
+
+
+def fracs(s: str) -> str:
+    """``\\frac{a}{b}`` (also ``\\dfrac``, ``\\tfrac``, ``\\frac12``) as ``{(a)/(b)}``, nested ones too."""
+    pattern = re.compile(r"\\[dt]?frac\s*")
+    while True:
+        m = pattern.search(s)
+        if not m:
+            return s
+        num, after = group(s, m.end())
+        den, end = group(s, after)
+        if num is None or den is None:
+            return s[: m.start()] + s[m.end() :]
+        s = s[: m.start()] + "{(" + num + ")/(" + den + ")}" + s[end:]
+
+
+def group(s: str, i: int) -> tuple[str | None, int]:
+    """The brace group (or single character) at ``s[i]``, and where it ends."""
+    while i < len(s) and s[i] == " ":
+        i += 1
+    if i >= len(s):
+        return None, i
+    if s[i] != "{":
+        return s[i], i + 1
+    depth = 0
+    for j in range(i, len(s)):
+        depth += {"{": 1, "}": -1}.get(s[j], 0)
+        if depth == 0:
+            return s[i + 1 : j], j + 1
+    return None, len(s)

@@ -3,7 +3,7 @@
 ``20 v_A2n + 5 v_B2n``, ``0.6(5 cos 37.6° + 15 cos 37.6°)``, ``5·sin(37.6 deg)``,
 ``v_A2n(20 + 5)``: products without ``*``, functions without parentheses around a
 single number or name, degree marks (``°``, ``deg``) after a number, and a few
-Unicode signs (− × · ÷ ² ³ π θ β √). Only the text changes: the result is read by
+Unicode signs (− × · ÷ ² ³ √, Greek letters). Only the text changes: the result is read by
 the same parser as everything else, so nothing is evaluated that it would refuse.
 """
 
@@ -26,6 +26,18 @@ _UNICODE = {
     "π": " pi ",
     "θ": " theta",
     "β": " beta",
+    "α": " alpha",
+    "γ": " gamma",
+    "δ": " delta",
+    "ε": " epsilon",
+    "λ": " lambda",
+    "μ": " mu",
+    "σ": " sigma",
+    "τ": " tau",
+    "φ": " phi",
+    "ϕ": " phi",
+    "ψ": " psi",
+    "ω": " omega",
     "√": " sqrt ",
     "½": "(1/2)",
     "¼": "(1/4)",
@@ -36,6 +48,8 @@ _UNICODE = {
 }
 #: ``tan^-1``, ``tan^(-1)``, ``tan^{-1}``, ``tan⁻¹``: the inverse functions.
 _INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\s*\}|-\s*1)|⁻¹)")
+#: ``|x|``: the size of what stands between two bars.
+_BARS = re.compile(r"\|([^|]+)\|")
 _NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
 _BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
@@ -52,6 +66,7 @@ def student(text: str) -> str:
     """
     for sign, plain in _UNICODE.items():
         text = text.replace(sign, plain)
+    text = _BARS.sub(r" sqrt((\1)^2) ", text.replace("‖", "|"))  # |v_P|: its size
     text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
     text = function_powers(text)
     text = degree_marks(text)

@@ -19,9 +19,10 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.latex import latex_to_plain
+from derive.mathtext.latex import REJECTED, latex_to_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.parser import GREEK
+from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
 #: The most relations read from one text.
@@ -61,10 +62,9 @@ _ARROW = re.compile(
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
-_LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
+_LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
-    r"(?:(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph"
-    r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 #: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
@@ -76,6 +76,10 @@ _UNIT_BRACKET = re.compile(
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
 _RELATION = re.compile(r"=|≈")
+#: An angle named by three points (``APB = 90°``, ``∠ABC``, ``angle PQR``): geometry in words.
+_POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
+#: What a side has: a letter (Latin or Greek: ``θ + φ = 90°``) or a digit.
+_SIDE = re.compile(r"[A-Za-z0-9\u0391-\u03c9\u03d5]")
 
 
 def read_relations(text: str) -> tuple[Relation, ...]:
@@ -187,7 +191,8 @@ def split_relations(plain: str) -> list[str]:
     parts: list[str] = []
     for chunk in _arrow_split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
         for piece in _top_level_split(chunk, ";"):
-            parts += _comma_split(piece)
+            for part in _colon_split(piece):
+                parts += _comma_split(part)
     return [p for p in parts if _RELATION.search(p)]
 
 
@@ -204,12 +209,30 @@ def _arrow_split(plain: str) -> list[str]:
     return [*out, plain[start:]]
 
 
+def _colon_split(piece: str) -> list[str]:
+    """``Substituting b = a + 6: 8a + 18 = -8`` -> two: a colon between two relations ends the
+    first (one after words alone, ``CLM: …``, leads in and stays)."""
+    bits = [b for b in re.split(r":(?!=)", piece)]
+    out: list[str] = [bits[0]]
+    for bit in bits[1:]:
+        if "=" in bit and "=" in out[-1] and out[-1].count("(") == out[-1].count(")"):
+            out.append(bit)
+        else:
+            out[-1] += ":" + bit
+    return out
+
+
+#: A body's or a quantity's lead-in after a comma (``A: 4cos60 = 2, B: -6``): a piece of its own.
+_LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
+
+
 def _comma_split(piece: str) -> list[str]:
-    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one."""
+    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one; ``A: 2, B: -6``
+    two."""
     bits = _top_level_split(piece, ",")
     out: list[str] = []
     for bit in bits:
-        if out and "=" in bit and "=" in out[-1]:
+        if out and (("=" in bit and "=" in out[-1]) or _LABEL.match(bit)):
             out.append(bit)
         elif out:
             out[-1] += "," + bit
@@ -251,6 +274,13 @@ def words_after(text: str) -> str:
     return text
 
 
+def _side(text: str) -> str:
+    """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
+    ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
+    text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
+    return in_si(text) or _UNIT_END.sub("", text).strip()
+
+
 def relation(line: int, column: int, written: str, text: str) -> Relation | None:
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
@@ -265,19 +295,19 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
     m = _LEAD.match(text.strip())
-    label = m.group(0).strip().rstrip(":").strip() if m and ":" in m.group(0) else ""
+    label = (m.group(1) or "").strip() if m else ""
     text = text.strip()[m.end() :] if m else text.strip()
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
-    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
+    if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
         return None
     text = _UNIT_BRACKET.sub("", words_after(text))
-    sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
-    if any(not re.search(r"[A-Za-z0-9]", s) for s in sides):  # "\text{angle with …} = …": words, dropped
-        sides = tuple(s for s in sides if re.search(r"[A-Za-z0-9]", s))
+    sides = tuple(_side(s) for s in text.split("="))
+    if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words
+        sides = tuple(s for s in sides if re.search(_SIDE, s) and not _POINTS.match(s))
         if len(sides) < 2:
             return None
     return Relation(line, column, written, sides, tag, label=label)

@@ -1,0 +1,119 @@
+"""Names of the student's own that a first reading gets wrong (:mod:`.inference` reads with them).
+
+An angle name the habits give a given (θ for θ_A1) that the student works out to another value
+is the student's own angle; a name met first in a relation and set equal, alone, to an expression
+in known names later (``φ = 90° − θ``) stands for it on every line; where the text writes u for
+what comes before, a name in v (``v_P``, ``v1``) is not a velocity before the impact; a value
+with a direction opposite to the one the student takes as positive (``right positive``, then
+``v_A = 1.04 m/s to the left``) is negative.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+from dataclasses import replace
+from typing import Any
+
+import sympy
+
+from derive.checking.context import DEG, Context
+from derive.checking.naming import GREEK, PREFIX
+from derive.checking.numeric import number_of
+from derive.problem.units import VELOCITY
+
+
+def own_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr]) -> None:
+    """``tan θ = 2√3/3.25 ⇒ θ = 46.8°``: a habitual angle name (θ for the given θ_A1) that the
+    student works out to another value than the given's is the student's own angle, not the given."""
+    numeric = {s: v for s, v in ((sympy.Symbol(n), v) for n, v in ((str(k), v) for k, v in ctx.numeric.items()))}
+    for name, e in list(meanings.items()):
+        if name not in GREEK or not isinstance(e, sympy.Symbol) or sympy.Symbol(e.name) not in numeric:
+            continue
+        p, value = sympy.Symbol(PREFIX + name), numeric[sympy.Symbol(e.name)]
+        verdicts = [_holds_at(r.exprs, {p: value, DEG: sympy.pi / 180}) for r in raw if r.exprs and _alone(r.exprs, p)]
+        if False in verdicts and True not in verdicts:
+            del meanings[name]
+
+
+def _alone(exprs: tuple[sympy.Expr, ...], p: sympy.Symbol) -> bool:
+    """Whether ``p`` is the one name of a relation (degrees aside)."""
+    found = set().union(*(e.free_symbols for e in exprs)) - {DEG}
+    return found == {p}
+
+
+def _holds_at(exprs: tuple[sympy.Expr, ...], values: dict) -> bool | None:
+    nums = [number_of(e.xreplace(values)) for e in exprs]
+    if any(x is None for x in nums):
+        return None
+    return all(abs(a - nums[0]) <= 0.01 * max(abs(a), abs(nums[0]), 1e-9) for a in nums[1:])
+
+
+def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr]) -> None:
+    """``φ = 90° − θ`` after ``tan φ = e tan θ``: a name nothing else gave a meaning, set equal
+    alone to an expression in known names, is the student's name for it on every line."""
+    for i, r in enumerate(raw):
+        if r.exprs is None or len(r.exprs) != 2 or r.defines:
+            continue
+        left, right = r.exprs[0], r.exprs[1].xreplace(mapping)
+        if (
+            left.is_Symbol
+            and left.name.startswith(PREFIX)
+            and left not in mapping
+            and right.free_symbols - {DEG}
+            and not _placeholders(right)
+        ):
+            mapping[left] = right
+            raw[i] = replace(r, defines=left.name[1:])
+
+
+def velocities_before(ctx: Context) -> set[sympy.Expr]:
+    """The velocities before the impact, and the velocity givens (u for v_A1 = u)."""
+    nm = ctx.model.nm
+    out = {c for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None}
+    return out | {g.symbol for g in ctx.problem.givens if g.dim == VELOCITY}
+
+
+def combos(group: list[sympy.Symbol], cands: list, raw: list, before: set[sympy.Expr]) -> list[tuple]:
+    """What the names of ``group`` may stand for together: where the text writes u for what
+    comes before (``mu = mv_P + 2mv_Q``), a name in v (``v_P``, ``v1``) is not a velocity before."""
+    u_used = any(re.search(r"(?<![A-Za-z])u(?![A-Za-z])", s) for r in raw for s in r.sides)
+
+    def allowed(p: sympy.Symbol) -> list:
+        if u_used and re.match(r"[vV](?:_|\d|$)", p.name[1:]):
+            return [c for c in cands if c[1] not in before and -c[1] not in before]
+        return cands
+
+    return list(itertools.product(*(allowed(p) for p in group)))
+
+
+def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
+    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
+
+
+_DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
+_WAY = r"(left|right|up|down)(?:wards?)?"
+_POSITIVE = re.compile(
+    rf"(?:taking|take|with)?\s*(?:the\s+)?(?:direction\s+)?(?:to\s+the\s+)?{_WAY}\s*(?:is|=|as|taken\s+as)?\s*"
+    rf"(?:positive|\+\s?ve|\+)(?![\w])|positive\s*(?:is|=|:)?\s*(?:to\s+the\s+|to\s+|towards\s+the\s+)?{_WAY}",
+    re.I,
+)
+
+
+def directed(relations: tuple, text: str) -> tuple:
+    """The relations with a value written with a direction opposite to the positive one the
+    text declares (``right as positive``; ``v_A = 1.04 m/s to the left``) made negative."""
+    m = _POSITIVE.search(text)
+    if m is None:
+        return relations
+    opposite = _DIRECTIONS[(m.group(1) or m.group(2)).lower()]
+    out: list[Any] = []
+    for r in relations:
+        last = r.sides[-1].strip()
+        way = rf"(?:to(?:wards)?\s+the\s+|to\s+)?{opposite}(?:wards?)?\b"
+        if re.fullmatch(r"\d+\.?\d*", last) and re.search(
+            rf"(?<![\d.]){re.escape(last)}\b[^=\d]*?\b{way}", r.written, re.I
+        ):
+            r = replace(r, sides=(*r.sides[:-1], f"-{last}"))
+        out.append(r)
+    return tuple(out)

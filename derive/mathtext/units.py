@@ -1,0 +1,56 @@
+"""Units as students type them after a number, recognised so that they can be taken off.
+
+A speed ``m/s``, ``m s⁻¹``, ``ms^-1``, ``m s^(-1)``, ``ms-1``, ``m·s⁻¹``, ``km/h``, ``km h⁻¹``,
+``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``kg m s⁻¹``,
+``N s``, ``Ns``, ``N·s``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
+A unit of one atom (``J``, ``kg``, ``m``) is left to the caller, which knows whether a lone
+letter (``2 m``: metres, or two times m?) is a unit.
+
+>>> [bool(UNIT.fullmatch(u)) for u in ("m s⁻¹", "ms-1", "kg m/s", "N s", "g h", "m u")]
+[True, True, True, True, False, False]
+"""
+
+from __future__ import annotations
+
+import re
+
+_LENGTH = r"(?:km|cm|mm|ft|mi|m)"
+_TIME = r"(?:secs?|s|hr|h|min)"
+_JOIN = r"(?:\s*[·*.⋅]\s*|\s+|)"
+#: A power -1 or -2 of a time: ``s^-1``, ``s^{-1}``, ``s^(-1)``, ``s⁻¹``, ``s-1``.
+_INVERSE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−]\s*[12])|⁻[¹²]|\s*[-−–][12](?!\d))"
+#: ``/s``, ``/s²``, ``/s^2``, or a time to the power -1 (-2).
+_PER_TIME = rf"(?:\s*/\s*{_TIME}(?:\s*\^\s*\{{?2\}}?|²)?|{_JOIN}{_TIME}{_INVERSE})"
+#: A speed (an acceleration), a momentum, an impulse.
+UNIT = re.compile(rf"(?:kg{_JOIN})?{_LENGTH}{_PER_TIME}|N{_JOIN}s|mph")
+#: One atom: a unit of its own where the caller says so (``J``, ``kg``, ``kJ``, ``g``).
+ATOM = re.compile(r"kg|Mg|g|kJ|J|N|m|s|km|cm|ft|lb|slug|deg|rad|W")
+#: LaTeX spacing and product signs inside a unit (``m\,s^{-1}``, ``\mathrm{kg}\cdot\mathrm{m}``).
+_TEX = re.compile(r"\\[,;:! ]|\\cdot|~|\\mathrm|\\text|[{}]")
+
+
+def plain_unit(text: str) -> str:
+    """A unit typed in LaTeX as plain text: ``m\\,s^{-1}`` -> ``m s^-1``, ``\\mathrm{Mg}`` -> ``Mg``."""
+    return re.sub(r"\s*\^\s*", "^", " ".join(_TEX.sub(" ", text).split()))
+
+
+def is_unit(text: str) -> bool:
+    """Whether ``text`` is all unit (``m\\,s^{-1}``, ``m s⁻¹``, ``kg``), LaTeX spacing aside."""
+    plain = plain_unit(text)
+    return bool(UNIT.fullmatch(plain) or ATOM.fullmatch(plain))
+
+
+#: Units that are a multiple of the SI unit of their kind, by that multiple (as a factor to write).
+SCALED = {"g": "/1000", "Mg": "*1000", "t": "*1000", "kJ": "*1000", "km": "*1000", "cm": "/100", "mm": "/1000"}
+_SCALED = re.compile(
+    r"^\s*([-+−]?(?:\d+\.?\d*|\.\d+))\s*(?:(g|Mg|t|kJ|km|cm|mm)|(km\s*/\s*h|km\s*h\s*\^?\s*\(?-1\)?|km\s*h⁻¹|kph))\s*$"
+)
+
+
+def in_si(side: str) -> str | None:
+    """A side that is a number and a multiple of an SI unit (``22 g``, ``20 Mg``, ``45 km/h``) as
+    that number in the SI unit (``22/1000``, ``20*1000``, ``45*5/18``); None for any other side."""
+    m = _SCALED.match(side)
+    if m is None:
+        return None
+    return m.group(1) + (SCALED[m.group(2)] if m.group(2) else "*5/18")
