@@ -162,3 +162,18 @@ def test_the_same_mistake_again_is_not_counted_as_a_further_slip() -> None:
     report = derive.check(derive.solve(derive.load("hibbeler-15-58-suitcases")), derivation=work)
     last = [i for i in report.items if i.kind == "line"][-1]
     assert last.status == "carried" and "the slip in line 1:" in last.message
+
+
+def test_a_chain_value_worked_wrongly_is_arithmetic_and_the_lines_from_it_carried() -> None:
+    # OCR M2 2015 chain (thrown down at 5 m/s from 1.6 m, e = 0.7, g = 9.8): v_1^2 = 25 +
+    # 2(9.8)(1.6) = 56.36, v_1 = 7.507, written 7.53. From it v_2 = 0.7(7.53) = 5.271 and
+    # h_2 = 5.27^2/19.6 = 1.417: each within one in the last figure of the true 5.255 and
+    # 1.409, yet worked from the wrong 7.53: carried, not correct.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 56.36\nv_1 = 7.53\nv_2 = 0.7(7.53) = 5.27\nh_2 = 5.27^2/(2(9.8)) = 1.42\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == found[4][0] == "carried"
+    # a wrong rule worked from the wrong number is a further slip, not carried: 0.8(7.53)
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work.replace("0.7(7.53) = 5.27", "0.8(7.53) = 6.02"))
+    assert found[3][0] == "wrong"
