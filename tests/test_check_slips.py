@@ -177,3 +177,63 @@ def test_a_chain_value_worked_wrongly_is_arithmetic_and_the_lines_from_it_carrie
     # a wrong rule worked from the wrong number is a further slip, not carried: 0.8(7.53)
     found = lines("chain-ocr-m2-2015-thrown-down-bounce", work.replace("0.7(7.53) = 5.27", "0.8(7.53) = 6.02"))
     assert found[3][0] == "wrong"
+
+
+def test_rounded_too_early_is_named_once_and_the_angle_from_the_same_numbers_carried() -> None:
+    # Notes 4.C.11: v_A2t = 5 sin 37.6 = 3.0505 and v_A2n = -1.1092, so A's speed is
+    # sqrt(1.2303 + 9.3056) = 3.246 and its angle with n atan(3.0505/1.1092) = 70.0 deg. With
+    # v_A2t rounded to 3.1 first: sqrt(1.11^2 + 3.1^2) = 3.29 (1.4 % off) and
+    # atan(3.1/1.11) = 70.3 deg -- within the angle's room for rounding, yet from the same 3.1.
+    work = (
+        "v_A2t = 5 sin 37.6 = 3.1\n"
+        "v_A2n = -1.11\n"
+        "speed of A after = sqrt(1.11^2 + 3.1^2) = 3.29\n"
+        "angle with the line of centres = tan^-1(3.1/1.11) = 70.3 deg\n"
+    )
+    found = lines("notes-4c11-two-spheres", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "rounded_too_early")
+    assert found[4][0] == "carried"
+
+
+def test_a_line_of_numbers_that_comes_to_the_slips_value_of_a_result_is_carried() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: 4 v_A2 + 8 v_B2 = 80, v_B2 - v_A2 = 4 give
+    # 4 and 8; T_1 = 288 + 64 = 352, T_2 = 32 + 256 = 288. The masses swapped: 8(12) + 4(4) =
+    # 112 gives 8 and 12, and T_2 from them 0.5(4)(64) + 0.5(8)(144) = 704: right arithmetic,
+    # the slip's T_2 (carried); T_1, which the slip does not touch, stays correct.
+    work = (
+        "8(12) + 4(4) = 8 v_A2 + 4 v_B2\n"
+        "v_B2 - v_A2 = 0.5(12 - 4)\n"
+        "v_A2 = 8, v_B2 = 12\n"
+        "0.5(4)(12^2) + 0.5(8)(4^2) = 352\n"
+        "0.5(4)(8^2) + 0.5(8)(12^2) = 704\n"
+    )
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "masses_swapped")
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["correct", "carried", "correct", "carried"]
+
+
+def test_a_step_of_a_lines_own_working_done_wrongly_is_arithmetic() -> None:
+    # Byju's (as above): v_B2 = v_A2 + 4, so 4 v_A2 + 8(v_A2 + 4) = 80; expanded, 12 v_A2 + 32,
+    # written 12 v_A2 + 4: the claim right, a step of its working wrong. The student goes on
+    # from 12 v_A2 + 4 = 80: 12 v_A2 = 76, v_A2 = 6.33, v_B2 = 10.3 (carried).
+    work = (
+        "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n"
+        "v_B2 - v_A2 = 0.5(12 - 4) = 4\n"
+        "v_B2 = v_A2 + 4\n"
+        "4 v_A2 + 8(v_A2 + 4) = 12 v_A2 + 4 = 80\n"
+        "12 v_A2 = 76\n"
+        "v_A2 = 6.33\n"
+        "v_B2 = 6.33 + 4 = 10.3\n"
+    )
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert [found[n][0] for n in (5, 6, 7)] == ["carried"] * 3
+    # AQA M3 2014 (2m at 2u hits m at rest, e = 2/3): 2 v_A2 + v_B2 = 4u, v_B2 - v_A2 = 4u/3 give
+    # v_A2 = 8u/9, v_B2 = 8u/9 + 12u/9 = 20u/9: the rule right, its working 16u/9 wrong
+    work = "2 v_A2 + v_B2 = 4u\nv_B2 - v_A2 = 4u/3\n3 v_A2 = 8u/3\nv_A2 = 8u/9\nv_B2 = v_A2 + 4u/3 = 16u/9\n"
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+    assert found[5][:2] == ("wrong", "arithmetic")
+

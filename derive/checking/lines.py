@@ -19,7 +19,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes, slipnames
+from derive.checking import carried, mistakes, slipnames
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
@@ -41,6 +41,10 @@ SOLVING = {
     "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
     "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
 }
+#: A line whose rule holds but whose working does not come to what it claims.
+WORKING = (
+    ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
+)
 COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
@@ -116,7 +120,7 @@ class Trace:
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
-            if self.slips and self._uses_wrong_numbers(line, pairs):
+            if self.slips and (self._uses_wrong_numbers(line, pairs) or carried.slips_result(self, line, pairs)):
                 return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
@@ -214,6 +218,8 @@ class Trace:
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail, name = self._explain(line, bad, answer)
+        if detail == WORKING:  # what the student carries on: the rule's left side = its last
+            bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
@@ -277,6 +283,8 @@ class Trace:
             name = slipnames.solving_slip(
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
+            if not name and carried.worked_wrongly(self, line, world):
+                return diags, None, WORKING, "arithmetic"
             if not name and slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], world)):
                 return diags, j, f": {COPIED}", "copied_wrong"
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
@@ -322,8 +330,9 @@ class Trace:
         if self.early is not None:
             return ""
         words = slipnames.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
-        if words:
+        if words:  # named once: the lines after, worked from the same numbers, are carried
             self.early = line.number
+            self.wrong_values |= {t for t in slipnames.early_numbers(self.ctx, line.sides) if "." in t}
         return words
 
     def _arithmetic(self, bad: Pair) -> str:
