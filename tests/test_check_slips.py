@@ -237,3 +237,13 @@ def test_a_step_of_a_lines_own_working_done_wrongly_is_arithmetic() -> None:
     assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
     assert found[5][:2] == ("wrong", "arithmetic")
 
+
+def test_a_given_replaced_by_another_number_is_copied_wrong_and_carried() -> None:
+    # Byju's: e = 0.5 in the problem, written 0.8. With 0.8: v_B2 - v_A2 = 0.8(12 - 4) = 6.4,
+    # 4 v_A2 + 8(v_A2 + 6.4) = 80 -> 12 v_A2 + 51.2 = 80 -> v_A2 = 2.4, v_B2 = 8.8: all right
+    # given the e copied wrongly (carried); the momentum, free of e, stays correct.
+    work = "e = 0.8\n4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.8(12 - 4) = 6.4\n12 v_A2 + 51.2 = 80\nv_A2 = 2.4, v_B2 = 8.8\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == "correct"
+    assert [found[n][0] for n in (3, 4, 5)] == ["carried"] * 3

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
+from derive.checking.mistakes import Variant
 from derive.checking.numeric import number_of
 from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
 from derive.mathtext.notation import student
@@ -29,9 +30,12 @@ class Trace(Protocol):
     pts: list[Point]
     truth: list[Values]
     world: list[Values] | None
+    equations: dict[int, sympy.Expr]
+    copied: dict[sympy.Symbol, sympy.Expr]
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list[Pair]: ...
+
 
 #: The results whose value a line of numbers may come to.
 RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")
@@ -84,3 +88,26 @@ def carried_on(trace: Trace, line: Read) -> tuple[Pair, Pair]:
     """What a line with a slip in its working carries on, in order of preference: its first
     side = its last (``v_B = (5 + 4e)u/3``), else its last step (``12v + 4 = 80``)."""
     return sides(trace, line, 0, -1), sides(trace, line, -2, -1)
+
+
+def given_copied(trace: Trace, bad: Pair) -> str:
+    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number. The
+    slip's world is then the problem solved with the number as copied (the lines after, right
+    with it, are carried); the words of the verdict ("" where it is not such a line)."""
+    if bad.raw is None or not isinstance(bad.raw[0], sympy.Symbol) or not bad.raw[1].is_Rational:
+        return ""
+    g = next((g for g in trace.ctx.problem.givens if g.symbol == bad.raw[0] and not g.unknown), None)
+    if g is None or g.value is None or not g.value.is_Rational or g.value == bad.raw[1] or trace.world is not None:
+        return ""
+    out = trace.ctx.model.outcome(Variant(values={g.symbol: bad.raw[1]}))
+    if out is None:
+        return ""
+    trace.copied[g.symbol] = bad.raw[1]
+    trace.world = [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
+    trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
+    written = bad.text.split(" = ")[-1].strip()
+    return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
+
+
+def _shown(x: sympy.Expr) -> str:
+    return str(x) if x.is_Integer else f"{float(x):g}"

@@ -15,26 +15,23 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
-from decimal import Decimal
 
 import sympy
 
 from derive.checking import carried, mistakes, slipnames
 from derive.checking.context import DEG, Context
-from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
-from derive.checking.number import number_item
+from derive.checking.number import line_answer
 from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
-from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
+from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures
 from derive.errors import InputError
 from derive.mathtext.notation import student
 from derive.numbers import format_number
-from derive.problem import units
 
 TRUE = "substituting the correct values"
 SOLVING = {
@@ -96,6 +93,7 @@ class Trace:
         self.wrong_numbers: set[str] = set()  # and their integers too
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
+        self.copied: dict[sympy.Symbol, sympy.Expr] = {}  # the givens copied wrongly, as copied
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -173,7 +171,7 @@ class Trace:
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
-        raw = list(line.exprs or ())
+        raw = [x.xreplace(self.copied) for x in line.exprs or ()]  # a given copied wrongly: as the student has it
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         # a chain that ends in a number as written: each side is compared with that number
@@ -260,6 +258,9 @@ class Trace:
                 return diags, None, f": it {said}.", ""
             if self._ke_formula(bad):
                 return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            given = carried.given_copied(self, bad)
+            if given:
+                return (), None, given, "copied_wrong"
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth)):
                 return (), None, f": {COPIED}", "copied_wrong"
             return (), None, ": " + self._arithmetic(bad), ""
@@ -409,26 +410,8 @@ class Trace:
 
     # answers -----------------------------------------------------------------
     def _answer(self, line: Line) -> Item | None:
-        """``v_A2n = -1.11``: a result's name = a number, judged as an answer is (figures
-        written, rounding of intermediates, the mistakes that give it)."""
-        left = line.exprs[0] if line.exprs else None
-        if len(line.sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in self.ctx.results:
-            return None
-        m = NUMBER_SIDE.match(student(line.sides[1]))
-        if not m:
-            return None
-        sign, number, unit = m.groups()
-        number = ("-" if sign == "-" else "") + number
-        r = self.ctx.results[left.name]
-        try:
-            u = units.parse_unit(unit) if unit else None
-            item = number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
-        except InputError:
-            return None
-        x = item.expected_value
-        if item.correct and x is not None and not written_right(Decimal(number), sympy.Float(x, 15)):
-            return None  # one figure, not the value rounded: judged as a relation
-        return item
+        """``v_A2n = -1.11``: judged as an answer is (:func:`~.number.line_answer`)."""
+        return line_answer(self.ctx, line.sides, line.exprs, line.written)
 
     def _item(
         self,
