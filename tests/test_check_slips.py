@@ -247,3 +247,17 @@ def test_a_given_replaced_by_another_number_is_copied_wrong_and_carried() -> Non
     assert found[1][:2] == ("wrong", "copied_wrong")
     assert found[2][0] == "correct"
     assert [found[n][0] for n in (3, 4, 5)] == ["carried"] * 3
+
+
+def test_a_further_slip_is_named_by_the_mistake_made_on_the_students_own_equations() -> None:
+    # OCR M2 2006: 2 kg at 5 hits 1 kg at rest, A carries on at 2: 10 = 4 + v_B2, v_B2 = 6
+    # (written 0.5: arithmetic). From 0.5, e = (v_B2 - v_A2)/5 = -0.3; written (2 - 0.5)/5 = 0.3,
+    # the separation the wrong way round: restitution reversed, though it holds for neither the
+    # problem's velocities nor its reversed rule (which gives (2 - 6)/5 = -0.8).
+    work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\nv_B2 = 0.5\ne = (2 - 0.5)/(5 - 0) = 0.3\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][:2] == ("wrong", "restitution_reversed")
+    # a further slip no mistake on those equations gives is not named so
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("(5 - 0) = 0.3", "(5 + 1) = 0.25"))
+    assert found[4][0] == "wrong" and found[4][1] != "restitution_reversed"

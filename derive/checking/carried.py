@@ -11,9 +11,10 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
-from derive.checking.mistakes import Variant
+from derive.checking.mistakes import REGISTRY, Mistake, Variant
+from derive.checking.mistakes.pairs import merge
 from derive.checking.numeric import number_of
-from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
+from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
 
 if TYPE_CHECKING:
@@ -32,6 +33,8 @@ class Trace(Protocol):
     world: list[Values] | None
     equations: dict[int, sympy.Expr]
     copied: dict[sympy.Symbol, sympy.Expr]
+    variant: Variant
+    replaced: list[tuple[int, int]]
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list[Pair]: ...
@@ -103,10 +106,34 @@ def given_copied(trace: Trace, bad: Pair) -> str:
     if out is None:
         return ""
     trace.copied[g.symbol] = bad.raw[1]
+    trace.variant = Variant(values={g.symbol: bad.raw[1]})
     trace.world = [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
     trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
     written = bad.text.split(" = ")[-1].strip()
     return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
+
+
+def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
+    """A further slip that is a common mistake made on the student's own equations so far
+    (``e = (0.4475 - 0.3)/0.5`` after a slip gave v_A2 = 0.4475: restitution reversed): the
+    first whose equations, in place of those the student has not written for themselves,
+    give velocities that make ``bad`` hold; with the first equation it changes."""
+    if trace.world is None or not bad.difference.free_symbols & set(trace.U):
+        return None
+    model, own = trace.ctx.model, {j for _n, j in trace.replaced}
+    for m in REGISTRY.values():
+        v = m.build(model.under(trace.variant))
+        both = merge(trace.variant, v) if v is not None else None
+        if both is None:
+            continue
+        eqs = model.numbered(both)
+        changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
+        if not changed or all(trace.equations[j] == F for j, F in changed.items()):
+            continue
+        world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
+        if world is not None and trace.holds([bad], world):
+            return m, min(changed)
+    return None
 
 
 def _shown(x: sympy.Expr) -> str:

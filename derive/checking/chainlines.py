@@ -60,8 +60,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-        if item.status in ("wrong", "carried"):
-            wrote |= _decimals(sides[-1:])
+        if item.status in ("wrong", "carried") and _number(sides[-1]) and sympy.Rational(sides[-1]) not in ctx.data:
+            wrote |= _decimals(sides[-1:])  # the student's own value (not a fraction of data, 0.9/1.5)
         previous = exprs if item.status == "correct" else []
         items.append(item)
         if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on

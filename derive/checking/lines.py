@@ -94,6 +94,7 @@ class Trace:
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
         self.copied: dict[sympy.Symbol, sympy.Expr] = {}  # the givens copied wrongly, as copied
+        self.variant = mistakes.Variant()  # the common mistake (or given copied) the world is made with
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -280,6 +281,9 @@ class Trace:
             early = self._rounded_early(line, bad)
             if early:
                 return diags, j, early, ""
+            further = carried.world_mistake(self, bad)  # a common mistake made on the student's equations
+            if further is not None:
+                return self.ctx.diagnosis(further[0]), further[1], f": it {further[0].phrase}.", ""
             world = self.world if self.world is not None else self.truth
             name = slipnames.solving_slip(
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
@@ -324,6 +328,7 @@ class Trace:
         if out is not None and self.world is None:  # the student's equations are now the mistake's
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
+            self.variant = found[0].build(self.ctx.model) or self.variant
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:
