@@ -261,3 +261,27 @@ def test_a_further_slip_is_named_by_the_mistake_made_on_the_students_own_equatio
     # a further slip no mistake on those equations gives is not named so
     found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("(5 - 0) = 0.3", "(5 + 1) = 0.25"))
     assert found[4][0] == "wrong" and found[4][1] != "restitution_reversed"
+
+
+def test_a_component_named_in_words_is_checked_against_the_true_component() -> None:
+    # Notes 4.C.11: A at 5 m/s, 37.6 deg from the line of centres: along it 5 cos 37.6 = 3.96,
+    # across it 5 sin 37.6 = 3.05. Written the other way round, each line is right arithmetic
+    # but the wrong component: the slip is at the first (sin and cos swapped), the second is
+    # the same mistake again, and A's t velocity after, unchanged from the swapped 3.96, carried.
+    work = (
+        "Component of A's velocity along the line of centres = 5 sin 37.6 = 3.05\n"
+        "perpendicular to the line of centres = 5 cos 37.6 = 3.96\n"
+        "v_A2t = 3.96\n"
+    )
+    found = lines("notes-4c11-two-spheres", work)
+    assert found[1] == ("wrong", "sin_cos_swapped", False)
+    assert found[2] == ("wrong", "sin_cos_swapped", True)
+    assert found[3][0] == "carried"
+    right = "\n".join(
+        (
+            "Component of A's velocity along the line of centres = 5 cos 37.6 = 3.96",
+            "perpendicular to the line of centres = 5 sin 37.6 = 3.05",
+            "v_A2t = 3.05",
+        )
+    )
+    assert [v[0] for v in lines("notes-4c11-two-spheres", right).values()] == ["correct"] * 3

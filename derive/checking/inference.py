@@ -21,6 +21,7 @@ from derive.checking.naming import (
     GREEK,
     PREFIX,
     Open,
+    body_labels,
     common_velocity,
     declarations,
     declares,
@@ -66,7 +67,11 @@ def read_lines(
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
-    rewritten = [tuple(rewrite(of_the_body(s, r.label), known) for s in r.sides) for r in relations]
+    labels = body_labels(list(relations))
+    rewritten = [
+        tuple(rewrite(of_the_body(s, lb, lb == r.label), known) for s in r.sides)
+        for r, lb in zip(relations, labels, strict=True)
+    ]
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}

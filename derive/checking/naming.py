@@ -131,7 +131,34 @@ _BODY = re.compile(
 )
 
 
-def of_the_body(text: str, label: str) -> str:
+#: "the component of A's velocity" before "along the line of centres" (the body is its label).
+_COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
+#: A component named by its axis alone: "along the line of centres", "perpendicular to it".
+_AXIS_ONLY = re.compile(
+    r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
+)
+
+
+def body_labels(relations: list[Relation]) -> list[str]:
+    """Each relation's body: its lead-in (``A:``), else the body its first side names a
+    component of (``Component of A's velocity along the line of centres = …``), else, for a
+    component named by its axis alone (``perpendicular to the line of centres = …``), the
+    body of such a component just before."""
+    out, body = [], ""
+    for r in relations:
+        m = _COMPONENT_OF.match(r.sides[0])
+        if m:
+            body = m.group(1).upper()
+            out.append(r.label or body)
+        elif not r.label and body and _AXIS_ONLY.match(r.sides[0]):
+            out.append(body)
+        else:
+            body = "" if r.label else body
+            out.append(r.label)
+    return out
+
+
+def of_the_body(text: str, label: str, names: bool = True) -> str:
     """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
     its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
     (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
@@ -139,12 +166,16 @@ def of_the_body(text: str, label: str) -> str:
     if not m:
         return text
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
-    text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
-    text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
+    if names:  # a lead-in's body is in the names under it (not a body found from the words)
+        text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
+        text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
     prime = "'" if after else ""
+    text = _COMPONENT_OF.sub("", text)
     if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
         return f"{body}_n{prime}"
-    if re.fullmatch(r"\s*(?:across|perpendicular)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I):
+    if re.fullmatch(
+        r"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I
+    ):
         return f"{body}_t{prime}"
     return text
 
