@@ -285,3 +285,23 @@ def test_a_component_named_in_words_is_checked_against_the_true_component() -> N
         )
     )
     assert [v[0] for v in lines("notes-4c11-two-spheres", right).values()] == ["correct"] * 3
+
+
+def test_components_and_names_in_words_and_a_second_mistake_made_on_the_first() -> None:
+    # AQA M3 2016 (identical balls, A at u along the wall, the line of centres at 60 deg to A's
+    # path, B at rest): along it u cos 60 = u/2, across it u sin 60. Swapped, the momentum along
+    # it is m(sqrt3/2)u = ma + mb (carried); the restitution a - b = e(sqrt3/2)u has, besides,
+    # the separation the wrong way round: the new mistake is named, not the swap again; with
+    # both, a = sqrt3 u (1 + e)/4 (carried). a and b are declared in words.
+    work = (
+        "Along the line of centres A has $u\\sin 60° = \\frac{\\sqrt3}{2}u$; across it $u\\cos 60° = \\frac{u}{2}$.\n\n"
+        "Let $a$ and $b$ be the velocities of A and B along the line of centres after.\n\n"
+        "CLM: $m\\cdot\\frac{\\sqrt3}{2}u = ma + mb$\n\n"
+        "NLR: $a - b = e\\frac{\\sqrt3}{2}u$\n\n"
+        "Adding: $2a = \\frac{\\sqrt3}{2}u(1 + e)$, so $a = \\frac{\\sqrt3}{4}u(1 + e)$\n"
+    )
+    found = lines("aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b", work)
+    assert found[1] == ("wrong", "sin_cos_swapped", False)
+    assert found[5][0] == "carried"
+    assert found[7] == ("wrong", "restitution_reversed", False)
+    assert found[9][0] == "carried"

@@ -268,6 +268,9 @@ class Trace:
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
+        before = set().union(*self.named.values()) if self.named else set()
+        fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
+        diags = fresh if fresh and len(fresh) < len(diags) else diags
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
