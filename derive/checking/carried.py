@@ -94,13 +94,20 @@ def carried_on(trace: Trace, line: Read) -> tuple[Pair, Pair]:
 
 
 def given_copied(trace: Trace, bad: Pair) -> str:
-    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number. The
-    slip's world is then the problem solved with the number as copied (the lines after, right
-    with it, are carried); the words of the verdict ("" where it is not such a line)."""
+    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number (not the
+    same with its sign turned: the student's own axis). The slip's world is then the problem
+    solved with the number as copied (the lines after, right with it, are carried); the words
+    of the verdict ("" where it is not such a line)."""
     if bad.raw is None or not isinstance(bad.raw[0], sympy.Symbol) or not bad.raw[1].is_Rational:
         return ""
     g = next((g for g in trace.ctx.problem.givens if g.symbol == bad.raw[0] and not g.unknown), None)
-    if g is None or g.value is None or not g.value.is_Rational or g.value == bad.raw[1] or trace.world is not None:
+    if (
+        g is None
+        or g.value is None
+        or not g.value.is_Rational
+        or abs(g.value) == abs(bad.raw[1])
+        or trace.world is not None
+    ):
         return ""
     out = trace.ctx.model.outcome(Variant(values={g.symbol: bad.raw[1]}))
     if out is None:
