@@ -84,6 +84,7 @@ class Claim:
     axis: str  # "n", "t", "x" or "y"
     directed: bool  # from the axis (a direction), not with the line (an acute angle)
     ratio: tuple[float, float] | None  # (Y, X) of tan⁻¹(Y/X) as written
+    room: float = 0.005  # relative room for the student's own components rounded to three figures
 
 
 def claim(line: Read, before: str = "") -> Claim | None:
@@ -171,7 +172,7 @@ def judge(trace: Trace, line: Read, text: list[str]) -> Item | None:
     if truth is None:
         return None
     if any(_is(c, v) for v in truth) or any(_is(c, v, loose=False) for v in _velocities(trace, c, {}, True) or []):
-        return _right(trace, line, c)
+        return _right(trace, line, c, exact=any(_is(replace(c, room=0.0), v) for v in truth))
     world = _velocities(trace, c, trace.world[0]) if trace.world is not None else None
     if world and any(_is(c, v) for v in world):
         return trace._carried(line)
@@ -217,9 +218,11 @@ def _named(trace: Trace, line: Read) -> Item | None:
     return _slip(trace, line, answer.diagnosis, answer.expected, f"the direction {line.sides[0].strip()}")
 
 
-def _right(trace: Trace, line: Read, c: Claim) -> Item | None:
+def _right(trace: Trace, line: Read, c: Claim, exact: bool = True) -> Item | None:
     """A line whose angle is the one its words name: correct where its working (each side, in
-    degrees) comes to that angle too, or cannot be read; else judged as any line (None)."""
+    degrees) comes to that angle too, or cannot be read; else judged as any line (None). Not
+    ``exact`` (off by more than its last figure) and worked from a number the student got
+    wrong or rounded too early: carried."""
     for x in line.exprs or ():
         if isinstance(x, sympy.Symbol) or x.has(*_TRIG):
             continue  # a name; a side of sines and cosines (not an angle)
@@ -229,6 +232,12 @@ def _right(trace: Trace, line: Read, c: Claim) -> Item | None:
             value = number_of(x.xreplace({DEG: sympy.Integer(1)}))
         if value is None or not _near(value.real, c.value, c):
             return None
+    if (
+        not exact
+        and trace.slips
+        and set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(line.sides[:-1]))) & trace.wrong_values
+    ):
+        return trace._carried(line)  # within its figures, but worked from a number got wrong (or rounded early)
     return trace._item(line, "correct", "True for this problem: it is the angle its words name.", TRUE)
 
 
@@ -260,7 +269,7 @@ def _velocities(trace: Trace, c: Claim, values: dict, before: bool = False) -> l
     ctx, nm = trace.ctx, trace.ctx.model.nm
     phi = number_of(ctx.num(ctx.problem.phi)) if ctx.problem.phi is not None else None
     if c.axis in "xy" and phi is None:  # no x-y frame given: x is the line of centres
-        c = Claim(c.value, c.unit, "n" if c.axis == "x" else "t", c.directed, c.ratio)
+        c = replace(c, axis="n" if c.axis == "x" else "t")
     out = []
     for b in "AB" if not ctx.problem.fixed_B else "A":
         comps = []
@@ -282,7 +291,7 @@ def _near(a: float, b: float, c: Claim, turn: float = 360.0) -> bool:
     """``a`` is ``b`` at the figures written (give or take whole turns), with room for the
     student's own components rounded to three figures."""
     d = (a - b) % turn
-    return min(d, turn - d) <= c.unit + 0.005 * max(abs(a), abs(b), 1.0)
+    return min(d, turn - d) <= c.unit + c.room * max(abs(a), abs(b), 1.0)
 
 
 def _acute(a: float) -> float:

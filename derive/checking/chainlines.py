@@ -37,6 +37,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     items: list[Item] = []
     slips: list[str] = []
     stages = _stage_mistakes(ctx)
+    previous: list[sympy.Expr] = []  # the relation just before, where it held
+    wrote: set[str] = set()  # the decimals the student wrote on wrong and carried lines
     for r, sides, exprs in read:
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
@@ -52,8 +54,15 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
+        if item.status == "correct" and slips and _decimals(sides[:-1]) & wrote:
+            item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+            if not item.slip and _solved_wrongly(exprs, previous, sides):
+                item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
+        if item.status in ("wrong", "carried") and _number(sides[-1]) and sympy.Rational(sides[-1]) not in ctx.data:
+            wrote |= _decimals(sides[-1:])  # the student's own value (not a fraction of data, 0.9/1.5)
+        previous = exprs if item.status == "correct" else []
         items.append(item)
         if item.status == "correct" and slips and len(exprs) == 2:
             _own_root(exprs, values, own_defs, _givens(ctx))
@@ -107,6 +116,28 @@ def _in_stages(ctx: Context, items: list[Item], known: tuple[dict, dict, dict], 
 
 def _name(v: sympy.Expr, values: dict) -> str:
     return f"-{(-v).name}" if isinstance(-v, sympy.Symbol) else str(v)
+
+
+#: The slip named where a value is worked wrongly from the relation just before it.
+ARITHMETIC = ": it does not follow from the line before (an arithmetic slip: a number worked wrongly)."
+
+
+def _carried(slips: list[str]) -> str:
+    return f"Right given the slip in line {slips[0]}: a carried error, not a new mistake."
+
+
+def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
+    """The decimals written in ``sides`` (``6.16``), as written, sign dropped."""
+    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))
+
+
+def _solved_wrongly(exprs: list[sympy.Expr], previous: list[sympy.Expr], sides: tuple[str, ...]) -> bool:
+    """``v1 = 6.16`` after ``v1^2 = 39.2`` (which held): a name's value worked wrongly from the
+    relation just before it, the one name it is in (an arithmetic slip)."""
+    if len(exprs) != 2 or not exprs[0].is_Symbol or not _number(sides[-1]) or not previous:
+        return False
+    names = set().union(*(x.free_symbols for x in previous))
+    return names == {exprs[0]}
 
 
 def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
@@ -287,7 +318,7 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         return item("not read", f"Not read: {words.not_read('unknown name ' + ', '.join(unknown), sides, r.written)}.")
     if truly:
         return item("correct", "True for this problem.")
-    carried = f"Right given the slip in line {slips[0]}: a carried error, not a new mistake." if slips else ""
+    carried = _carried(slips) if slips else ""
     if slips and _holds(ctx, sides, exprs[:1] + [x.xreplace(own_defs) for x in exprs[1:]], [own_defs, values]):
         return item("carried", carried)
     # ``h_2 = V^2/(2g) = 22.9``: the formula right, and the rest worked from the student's V
@@ -295,6 +326,10 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     if formula and _holds(ctx, sides[:2], exprs[:2], [true_defs, values]):
         own = [x.xreplace(own_defs) for x in exprs[1:]]
         if _holds(ctx, sides[1:], own, [own_defs, values]):
+            return item("carried", carried)
+    if slips and exprs[0].is_Symbol and len(exprs) > 2 and _holds(ctx, sides[1:], exprs[1:], [true_defs, values]):
+        fixed = _put_right(sides[1], own_defs, values)  # ``v_2 = 0.7(7.53) = 5.27``, 7.53 the student's v_1
+        if fixed is not None and _holds(ctx, sides[:2], [exprs[0], fixed], [true_defs, values]):
             return item("carried", carried)
     first = not slips
     slips.append(str(r.line))
@@ -315,6 +350,29 @@ def _why(ctx: Context, sides, exprs: list[sympy.Expr], subs: list[dict]) -> str:
             break  # a formula in names: its value is none the student wrote
         return words.unequal(words.student_text(sides[i].strip()), left.real, sides[i + 1], right.real)
     return "its two sides are not equal (an arithmetic or algebra slip)."
+
+
+def _put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
+    """A side of numbers with each the student worked wrongly (a chain value's, as written on
+    its line) put back as its true value; None where it has none, or does not read."""
+    wrong = {v: values[k] for k, v in own_defs.items() if k in values and v.is_Rational and v != values[k]}
+    found = False
+
+    def true(m: re.Match) -> str:
+        nonlocal found
+        x = sympy.Rational(m.group(0))
+        if x not in wrong:
+            return m.group(0)
+        found = True
+        return f"({sympy.N(wrong[x], 15)})"
+
+    text = re.sub(r"(?<![\w.])\d+\.\d+", true, side)
+    if not found:
+        return None
+    try:
+        return read_side(text, Open({}), False, False)
+    except (ParseError, ValueError, TypeError):
+        return None
 
 
 #: A stage's mistakes: the chain's names of its results -> the results' names in the stage,

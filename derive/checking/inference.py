@@ -20,6 +20,7 @@ from derive.checking.naming import (
     GREEK,
     PREFIX,
     Open,
+    body_labels,
     common_velocity,
     declarations,
     declares,
@@ -68,12 +69,15 @@ def read_lines(
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
-    rewritten: list[tuple[str, ...]] = []
-    for r in relations:
-        seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
-        rewritten.append(tuple(rewrite(of_the_body(s, r.label, seen), known) for s in r.sides))
-    used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     declared, sign = declarations(text, ctx)
+    known |= set(declared)  # "let a and b be …": ma + mb is m a + m b
+    split, labels = body_labels(list(relations))
+    relations = tuple(split)
+    rewritten: list[tuple[str, ...]] = []
+    for r, lb in zip(relations, labels, strict=True):
+        seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
+        rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label), known) for s in r.sides))
+    used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]

@@ -15,30 +15,31 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
-from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes, slipnames, words
+from derive.checking import carried, mistakes, slipnames, words
 from derive.checking.context import DEG, Context
-from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
-from derive.checking.number import number_item
+from derive.checking.number import line_answer
 from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
-from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
+from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures
 from derive.errors import InputError
 from derive.mathtext.notation import student
-from derive.problem import units
 
 TRUE = "substituting the correct values"
 SOLVING = {
     "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
     "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
 }
+#: A line whose rule holds but whose working does not come to what it claims.
+WORKING = (
+    ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
+)
 COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
@@ -92,6 +93,8 @@ class Trace:
         self.wrong_numbers: set[str] = set()  # and their integers too
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
+        self.copied: dict[sympy.Symbol, sympy.Expr] = {}  # the givens copied wrongly, as copied
+        self.variant = mistakes.Variant()  # the common mistake (or given copied) the world is made with
 
     # one line ----------------------------------------------------------------
     def item(self, line: Line) -> Item | None:
@@ -118,7 +121,7 @@ class Trace:
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
-            if self.slips and self._uses_wrong_numbers(line, pairs):
+            if self.slips and (self._uses_wrong_numbers(line, pairs) or carried.slips_result(self, line, pairs)):
                 return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
@@ -171,7 +174,7 @@ class Trace:
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
-        raw = list(line.exprs or ())
+        raw = [x.xreplace(self.copied) for x in line.exprs or ()]  # a given copied wrongly: as the student has it
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         # a chain that ends in a number as written: each side is compared with that number
@@ -218,6 +221,8 @@ class Trace:
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail, name = self._explain(line, bad, answer)
+        if detail == WORKING:  # what the student carries on: the rule's left side = its last
+            bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
@@ -258,12 +263,18 @@ class Trace:
                 return diags, None, f": it {said}.", ""
             if self._ke_formula(bad):
                 return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            given = carried.given_copied(self, bad)
+            if given:
+                return (), None, given, "copied_wrong"
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth)):
                 return (), None, f": {COPIED}", "copied_wrong"
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
+        before = set().union(*self.named.values()) if self.named else set()
+        fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
+        diags = fresh if fresh and len(fresh) < len(diags) else diags
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
@@ -277,10 +288,15 @@ class Trace:
             early = self._rounded_early(line, bad)
             if early:
                 return diags, j, early, ""
+            further = carried.world_mistake(self, bad)  # a common mistake made on the student's equations
+            if further is not None:
+                return self.ctx.diagnosis(further[0]), further[1], f": it {further[0].phrase}.", ""
             world = self.world if self.world is not None else self.truth
             name = slipnames.solving_slip(
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
+            if not name and carried.worked_wrongly(self, line, world):
+                return diags, None, WORKING, "arithmetic"
             if not name and slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], world)):
                 return diags, j, f": {COPIED}", "copied_wrong"
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
@@ -319,6 +335,7 @@ class Trace:
         if out is not None and self.world is None:  # the student's equations are now the mistake's
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
+            self.variant = found[0].build(self.ctx.model) or self.variant
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:
@@ -326,8 +343,9 @@ class Trace:
         if self.early is not None:
             return ""
         words = slipnames.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
-        if words:
+        if words:  # named once: the lines after, worked from the same numbers, are carried
             self.early = line.number
+            self.wrong_values |= {t for t in slipnames.early_numbers(self.ctx, line.sides) if "." in t}
         return words
 
     def _arithmetic(self, bad: Pair) -> str:
@@ -403,26 +421,8 @@ class Trace:
 
     # answers -----------------------------------------------------------------
     def _answer(self, line: Line) -> Item | None:
-        """``v_A2n = -1.11``: a result's name = a number, judged as an answer is (figures
-        written, rounding of intermediates, the mistakes that give it)."""
-        left = line.exprs[0] if line.exprs else None
-        if len(line.sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in self.ctx.results:
-            return None
-        m = NUMBER_SIDE.match(student(line.sides[1]))
-        if not m:
-            return None
-        sign, number, unit = m.groups()
-        number = ("-" if sign == "-" else "") + number
-        r = self.ctx.results[left.name]
-        try:
-            u = units.parse_unit(unit) if unit else None
-            item = number_item(self.ctx, Entry(r.name, number), r, line.written, number, u)
-        except InputError:
-            return None
-        x = item.expected_value
-        if item.correct and x is not None and not written_right(Decimal(number), sympy.Float(x, 15)):
-            return None  # one figure, not the value rounded: judged as a relation
-        return item
+        """``v_A2n = -1.11``: judged as an answer is (:func:`~.number.line_answer`)."""
+        return line_answer(self.ctx, line.sides, line.exprs, line.written)
 
     def _item(
         self,

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Mapping
+from dataclasses import replace
 
 import sympy
 
@@ -147,7 +148,50 @@ _BODY = re.compile(
 )
 
 
-def of_the_body(text: str, label: str, seen: set[str] = frozenset()) -> str:
+#: "the component of A's velocity" before "along the line of centres" (the body is its label).
+_COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
+#: A component named by its axis alone: "along the line of centres", "perpendicular to it".
+_AXIS_ONLY = re.compile(
+    r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
+)
+
+
+#: "Along the line of centres A has u sin 30°", "across it u cos 30°": a component, then its value.
+_HAS = re.compile(
+    r"^\s*((?:along|across|perpendicular\s+to)\s+(?:it|the\s+line\s+of\s+(?:centres|impact)))\s*,?\s*"
+    r"(?:([AB])\s+has\s+)?(\S.*)$",
+    re.I,
+)
+
+
+def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
+    """The relations, a component's value named in words split off (``Along the line of centres
+    A has u sin 30° = u/2`` -> ``along the line of centres = u sin 30° = u/2``), and each one's
+    body: its lead-in (``A:``), else the body its first side names a component of
+    (``Component of A's velocity along the line of centres = …``), else, for a component named
+    by its axis alone (``perpendicular to the line of centres = …``), the body of such a
+    component just before."""
+    out, labels, body = [], [], ""
+    for r in relations:
+        m = _COMPONENT_OF.match(r.sides[0])
+        h = _HAS.match(r.sides[0]) if not r.label else None
+        if m:
+            body = m.group(1).upper()
+            labels.append(r.label or body)
+        elif h and (h.group(2) or body):
+            body = (h.group(2) or body).upper()
+            r = replace(r, sides=(h.group(1), h.group(3), *r.sides[1:]))
+            labels.append(body)
+        elif not r.label and body and _AXIS_ONLY.match(r.sides[0]):
+            labels.append(body)
+        else:
+            body = "" if r.label else body
+            labels.append(r.label)
+        out.append(r)
+    return out, labels
+
+
+def of_the_body(text: str, label: str, seen: set[str] = frozenset(), names: bool = True) -> str:
     """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
     its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
     (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
@@ -155,12 +199,16 @@ def of_the_body(text: str, label: str, seen: set[str] = frozenset()) -> str:
     if not m:
         return _after_label(text, label, seen)
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
-    text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
-    text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
+    if names:  # a lead-in's body is in the names under it (not a body found from the words)
+        text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
+        text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
     prime = "'" if after else ""
+    text = _COMPONENT_OF.sub("", text)
     if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
         return f"{body}_n{prime}"
-    if re.fullmatch(r"\s*(?:across|perpendicular)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I):
+    if re.fullmatch(
+        r"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I
+    ):
         return f"{body}_t{prime}"
     return text
 
@@ -368,9 +416,35 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         m = _DECLARE.match(line)
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
+        out.update(in_words(line, ctx))
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign
         elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
             sign = sign_of(line)
     return out, sign
+
+
+#: "Let $a$ and $b$ be the velocities of A and B along the line of centres after": names in words.
+_IN_WORDS = re.compile(
+    r"\blet\s+(\w+)(?:\s+and\s+(\w+))?\s+be\s+(?:the\s+)?(?:final\s+)?velocit(?:y|ies)\s+of\s+([AB])"
+    r"(?:\s+and\s+([AB]))?(\s+along\s+the\s+line\s+of\s+(?:centres|impact))?\s*,?\s*"
+    r"(?:just\s+|immediately\s+)?(after|afterwards|before)\b",
+    re.I,
+)
+
+
+def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``Let a and b be the velocities of A and B along the line of centres after`` -> {a: v_A2n,
+    b: v_B2n}: a name declared in words, where they say whose, when, and (an oblique impact)
+    along which line."""
+    m = _IN_WORDS.search(re.sub(r"\$|\\[()]", "", line))
+    if not m or (ctx.problem.oblique and not m.group(5)) or bool(m.group(2)) != bool(m.group(4)):
+        return {}
+    when = "1" if m.group(6).lower() == "before" else "2"
+    out = {}
+    for name, body in ((m.group(1), m.group(3)), (m.group(2), m.group(4))):
+        x = getattr(ctx.model.nm, f"{body.upper()}{when}n", None) if name else None
+        if x is not None:
+            out[name] = x
+    return out

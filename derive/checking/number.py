@@ -18,6 +18,9 @@ from derive.checking.entries import Entry
 from derive.checking.figures import figures, judge, method, slack
 from derive.checking.report import Diagnosis, Item
 from derive.checking.rounding import INTERMEDIATE_FIGURES, rounded_values
+from derive.checking.worlds import NUMBER_SIDE, written_right
+from derive.errors import InputError
+from derive.mathtext.notation import student
 from derive.numbers import format_number, to_decimal
 from derive.physics.results import Result
 from derive.problem import units
@@ -186,3 +189,27 @@ def _hints(
             fix = "the unit is wrong" if unit_written else "give its unit"
             hints.append(f"{number} is the right value in {units.plain_unit(alt_unit.text)}: {fix}.")
     return hints
+
+
+def line_answer(ctx: Context, sides: tuple[str, ...], exprs: tuple | None, written: str) -> Item | None:
+    """A derivation's line ``v_A2n = -1.11`` (a result's name = a number) judged as an answer is
+    (figures written, rounding of intermediates, the mistakes that give it); None where the
+    line is not one, or is right only as a number of one figure that is not the value rounded."""
+    left = exprs[0] if exprs else None
+    if len(sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in ctx.results:
+        return None
+    m = NUMBER_SIDE.match(student(sides[1]))
+    if not m:
+        return None
+    sign, number, unit = m.groups()
+    number = ("-" if sign == "-" else "") + number
+    r = ctx.results[left.name]
+    try:
+        u = units.parse_unit(unit) if unit else None
+        item = number_item(ctx, Entry(r.name, number), r, written, number, u)
+    except InputError:
+        return None
+    x = item.expected_value
+    if item.correct and x is not None and not written_right(Decimal(number), sympy.Float(x, 15)):
+        return None  # one figure, not the value rounded: judged as a relation
+    return item

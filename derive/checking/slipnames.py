@@ -202,15 +202,21 @@ def _has_letters(text: str) -> bool:
     )
 
 
-def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, truth: dict) -> str:
-    """ ": rounded too early …" where the line is worked from numbers the student rounded to
-    two figures (not the data: on its sides before the last, the result's own figures are
-    not working) and misses the value by more than its last figure, by at most 3 %."""
-    early = [
+def early_numbers(ctx: Context, sides: tuple[str, ...]) -> list[str]:
+    """The numbers on a line's sides before the last that are rounded to two figures and are
+    not the problem's data (``3.5`` for 4 sin 60 = 3.464)."""
+    return [
         t
         for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
         if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in ctx.data
     ]
+
+
+def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, truth: dict) -> str:
+    """ ": rounded too early …" where the line is worked from numbers the student rounded to
+    two figures (not the data: on its sides before the last, the result's own figures are
+    not working) and misses the value by more than its last figure, by at most 3 %."""
+    early = early_numbers(ctx, sides)
     if not early:
         return ""
     left, right = (number_of(x.xreplace(pt).xreplace(truth)) for x in (bad.left, bad.right))

@@ -1,0 +1,147 @@
+"""Where a typed derivation's line stands to a slip before it, beyond "it holds in the slip's
+world" (:mod:`.lines`): a line of numbers that comes to the slip's value of a result
+(carried, though it is right arithmetic), and a line whose rule holds while a step of its own
+working does not (an arithmetic slip inside the line, and what the student carries on)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from decimal import Decimal
+from typing import TYPE_CHECKING, Protocol
+
+import sympy
+
+from derive.checking.mistakes import REGISTRY, Mistake, Variant
+from derive.checking.mistakes.pairs import merge
+from derive.checking.numeric import number_of
+from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
+from derive.mathtext.notation import student
+
+if TYPE_CHECKING:
+    from derive.checking.context import Context
+    from derive.checking.inference import Read
+    from derive.checking.relations import Point, Values
+
+
+class Trace(Protocol):
+    """What of :class:`~.lines.Trace` (the derivation read so far) these verdicts use."""
+
+    ctx: Context
+    U: tuple[sympy.Symbol, ...]
+    pts: list[Point]
+    truth: list[Values]
+    world: list[Values] | None
+    equations: dict[int, sympy.Expr]
+    copied: dict[sympy.Symbol, sympy.Expr]
+    variant: Variant
+    replaced: list[tuple[int, int]]
+
+    def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
+    def pairs(self, line: Read) -> list[Pair]: ...
+
+
+#: The results whose value a line of numbers may come to.
+RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")
+
+
+def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
+    """A line of numbers only, right as arithmetic, that comes to what the slip makes of a
+    result and to no result of the problem (``½(2)(7²) + ½(1)(1²) = 49.5``: T_2 with the
+    velocities the swapped masses gave): carried, not correct."""
+    U = set(trace.U)
+    if trace.world is None or any(p.difference.free_symbols & U for p in pairs):
+        return False
+    m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
+    if not m or m.group(3):
+        return False
+    written = Decimal(m.group(1) + m.group(2))
+    d = trace.ctx.derived()
+    exprs = [d[n][1] for n in RESULTS if n in d] + list(trace.U)
+
+    def comes_to(values: Values) -> bool:
+        for x in exprs:
+            v = number_of(trace.ctx.in_unknowns(x).xreplace(trace.pts[0]).xreplace(values))
+            if v is not None and abs(v.imag) < 1e-12 and written_right(written, sympy.Float(v.real, 15)):
+                return True
+        return False
+
+    return comes_to(trace.world[0]) and not comes_to(trace.truth[0])
+
+
+def sides(trace: Trace, line: Read, i: int, k: int) -> Pair:
+    """The pair of ``line``'s sides ``i`` and ``k``, as a relation of its own."""
+    assert line.exprs is not None
+    two = replace(line, sides=(line.sides[i], line.sides[k]), exprs=(line.exprs[i], line.exprs[k]))
+    return trace.pairs(two)[0]
+
+
+def worked_wrongly(trace: Trace, line: Read, world: list[Values]) -> bool:
+    """``v_B = v_A + eu = (5 + 4e)u/3`` (its rule right, the working from it wrong) or
+    ``4v + 8(v + 4) = 12v + 4 = 80`` (its claim right, a step of its working wrong): an
+    arithmetic slip inside the line."""
+    if len(line.sides) < 3 or line.exprs is None or len(line.exprs) != len(line.sides):
+        return False
+    if not (trace.holds([sides(trace, line, 0, 1)], world) or trace.holds([sides(trace, line, 0, -1)], world)):
+        return False
+    steps = [sides(trace, line, i, i + 1) for i in range(len(line.sides) - 1)]
+    return not all(trace.holds([p], world) for p in steps)
+
+
+def carried_on(trace: Trace, line: Read) -> tuple[Pair, Pair]:
+    """What a line with a slip in its working carries on, in order of preference: its first
+    side = its last (``v_B = (5 + 4e)u/3``), else its last step (``12v + 4 = 80``)."""
+    return sides(trace, line, 0, -1), sides(trace, line, -2, -1)
+
+
+def given_copied(trace: Trace, bad: Pair) -> str:
+    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number (not the
+    same with its sign turned: the student's own axis). The slip's world is then the problem
+    solved with the number as copied (the lines after, right with it, are carried); the words
+    of the verdict ("" where it is not such a line)."""
+    if bad.raw is None or not isinstance(bad.raw[0], sympy.Symbol) or not bad.raw[1].is_Rational:
+        return ""
+    g = next((g for g in trace.ctx.problem.givens if g.symbol == bad.raw[0] and not g.unknown), None)
+    if (
+        g is None
+        or g.value is None
+        or not g.value.is_Rational
+        or abs(g.value) == abs(bad.raw[1])
+        or trace.world is not None
+    ):
+        return ""
+    out = trace.ctx.model.outcome(Variant(values={g.symbol: bad.raw[1]}))
+    if out is None:
+        return ""
+    trace.copied[g.symbol] = bad.raw[1]
+    trace.variant = Variant(values={g.symbol: bad.raw[1]})
+    trace.world = [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
+    trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
+    written = bad.text.split(" = ")[-1].strip()
+    return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
+
+
+def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
+    """A further slip that is a common mistake made on the student's own equations so far
+    (``e = (0.4475 - 0.3)/0.5`` after a slip gave v_A2 = 0.4475: restitution reversed): the
+    first whose equations, in place of those the student has not written for themselves,
+    give velocities that make ``bad`` hold; with the first equation it changes."""
+    if trace.world is None or not bad.difference.free_symbols & set(trace.U):
+        return None
+    model, own = trace.ctx.model, {j for _n, j in trace.replaced}
+    for m in REGISTRY.values():
+        v = m.build(model.under(trace.variant))
+        both = merge(trace.variant, v) if v is not None else None
+        if both is None:
+            continue
+        eqs = model.numbered(both)
+        changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
+        if not changed or all(trace.equations[j] == F for j, F in changed.items()):
+            continue
+        world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
+        if world is not None and trace.holds([bad], world):
+            return m, min(changed)
+    return None
+
+
+def _shown(x: sympy.Expr) -> str:
+    return str(x) if x.is_Integer else f"{float(x):g}"
