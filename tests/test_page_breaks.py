@@ -88,7 +88,13 @@ def test_the_preamble_keeps_headings_with_what_follows() -> None:
     body = tex[tex.index(r"\begin{document}") :]
     head = body[body.index(r"\begin{derivewhole}") : body.index(r"\end{derivewhole}")]
     assert r"\section*{Example 4.C.11" in head and "Given." in head and "Find." in head
-    assert "1) Geometry" not in head and body.count(r"\begin{derivewhole}") == 1
+    assert "1) Geometry" not in head
+    # and each figure with its heading: 1) Geometry, 4) Answer
+    units = body.split(r"\begin{derivewhole}")[2:]
+    assert len(units) == 2 == body.count(r"\begin{tikzpicture}")
+    for unit, title in zip(units, ("1) Geometry", "4) Answer"), strict=True):
+        unit = unit[: unit.index(r"\end{derivewhole}")]
+        assert unit.lstrip().startswith(rf"\subsection*{{{title}") and unit.rstrip().endswith(r"\end{center}")
 
 
 def test_a_sentence_stays_with_its_lines_and_the_answers_together() -> None:
@@ -136,6 +142,21 @@ def test_no_page_ends_half_empty(name: str) -> None:
     pages = read_pages(build_pdf(derive.render(solution(name), "tex")))
     short = [(p.number, round(p.fill, 2), p.lines[-1].text[:40]) for p in pages[:-1] if p.fill < HALF]
     assert not short, (name, short)
+
+
+@pytest.mark.slow
+def test_a_chain_stage_heading_goes_with_its_first_figure() -> None:
+    # "Stage 2: B strikes the wall" and its Given ended page 3; its "2.1) Geometry" and the
+    # figure began page 4
+    pages = read_pages(build_pdf(derive.render(solution("chain-aqa-m3-2007-collide-again"), "tex")))
+    for stage, first in (
+        ("Stage 1: A and B collide", "1.1) Geometry"),
+        ("Stage 2: B strikes the wall", "2.1) Geometry"),
+    ):
+        (page,) = [p for p in pages if stage in p.text]
+        assert first in page.text, (stage, page.number, page.lines[-3:])
+        after = page.text[page.text.index(first) :]
+        assert "Take n along the line of impact" in after, (stage, page.number)  # the figure and the text below it
 
 
 def _problems(pages: list[Page]) -> list[tuple[int, float, float]]:
