@@ -102,6 +102,13 @@ def test_a_sentence_stays_with_its_lines_and_the_answers_together() -> None:
     ke = tex.index("Kinetic energy, for the record")
     assert tex[ke : tex.index(r"\begin{equation*}", ke)].count(r"\nopagebreak") == 1
     assert r"\postdisplaypenalty=9999" in tex[ke : tex.index(r"\begin{equation*}", ke)]
+    # the boxed answers before it stay with it; the figure above them may end a page
+    answers = tex[tex.rindex(r"\subsection*{4) Answer}") : ke]
+    glue = answers.index(r"\postdisplaypenalty=10000")  # set before the last line: after it, no break
+    assert answers.count(r"\postdisplaypenalty=10000") == 1 and answers.index(r"\boxed") < glue < answers.rindex(
+        r"\boxed"
+    )
+    assert answers.index(r"\end{derivewhole}") < answers.index(r"\penalty0 ") < answers.index("The velocities")
     chain = derive.render(solution("chain-aqa-m3-2007-collide-again"), "tex")
     answers = chain[chain.rindex(r"\subsection*{Answer}") :]
     assert answers.count(r"\postdisplaypenalty=10000") == 1 and answers.count(r"\boxed") == 4
@@ -132,6 +139,9 @@ def test_no_page_ends_with_a_heading_and_the_energy_block_is_whole(name: str, tm
     answers = [k for k, page in enumerate(pages) if any(ln.endswith("ANSWER") for ln in page)]
     if name.startswith("chain-"):  # a chain's boxed answers all on one page
         assert len(answers) == 1, (name, answers)
+    else:  # the last boxed answer and the energy for the record on one page: never the energy alone
+        energy = [k for k, page in enumerate(pages) if "Kinetic energy, for the record" in " ".join(page)]
+        assert energy == answers[-1:], (name, answers, energy)
 
 
 @pytest.mark.slow
