@@ -25,12 +25,15 @@ from derive.homework.handout import build_handout
 from derive.writers.pdf import build_pdf
 
 # the pages the issue names: the KE block that went alone to the last page (4.C.11), the
-# chain with its answers on a page of their own, a drop chain, a wall problem
+# chain with its answers on a page of their own, a drop chain, a wall problem; and one whose
+# two blocks of boxed answers (the velocities, then the asked speed and e) cannot both go with
+# the energy block on its page (its page 3 ended 0.20 full)
 PROBLEMS = (
     "notes-4c11-two-spheres",
     "notes-4c12-cue-ball",
     "chain-aqa-m3-2007-collide-again",
     "chain-ocr-m2-2006-drop-rebound",
+    "ocr-m3-2013-b-turns-through-right-angle",
 )
 SHEET = (
     "notes-4c11-two-spheres",
