@@ -154,9 +154,12 @@ _TEX_UNICODE = {
     "¾": r"\textthreequarters{}",
     "µ": r"\textmu{}",
     "`": r"\textasciigrave{}",
-    "'": r"\textquotesingle{}",
-    '"': r"{\ttfamily\char34}",  # a straight double quote in any font encoding
 }
+#: A typed quote mark as the curly one it stands for: opening at the start of a word or after a
+#: bracket or dash (' 'v = 3' ' ‘v = 3’), closing elsewhere (A's ⇒ A’s, the notes' ⇒ notes’).
+#: A quote before another is closed with {}, so that the two never join into one mark ('' ⇒ ”).
+_TEX_QUOTES = {"'": ("`", "'"), '"': ("``", "''")}
+_OPENS_AFTER = frozenset('([{<-/\u2013\u2014\u2018\u201c"')
 for _i in range(10):  # θ₂, x⁴: the digits written below and above the line
     _TEX_UNICODE[chr(0x2080 + _i)] = rf"\textsubscript{{{_i}}}"
     _TEX_UNICODE.setdefault("⁰¹²³⁴⁵⁶⁷⁸⁹"[_i], rf"\textsuperscript{{{_i}}}")
@@ -207,7 +210,13 @@ def tex(text: str) -> str:
 
 def _tex_word(word: str, breakable: bool, text: str) -> str:
     out = []
-    for ch in word:
+    for i, ch in enumerate(word):
+        if ch in _TEX_QUOTES:
+            opening = i == 0 or word[i - 1] in _OPENS_AFTER
+            out.append(_TEX_QUOTES[ch][0 if opening else 1])
+            if word[i + 1 : i + 2] in ("'", '"', "`"):
+                out.append("{}")
+            continue
         out.append(_tex_char(ch, text))
         if breakable and ch in _BREAK_AFTER:
             out.append(r"\allowbreak{}")

@@ -126,3 +126,23 @@ def test_repro_tex_text_question_marks_names_the_character(
     assert r.err.startswith("Error: ") and "U+041C CYRILLIC CAPITAL LETTER EM" in r.err
     md = cli("solve", "q.toml")
     assert md.code == 0 and "Мяч Ω ∞" in md.out
+
+
+def test_quote_marks_are_the_curly_ones_they_stand_for() -> None:
+    # was \textquotesingle{}: a straight typewriter mark in "A's" and "the notes'"
+    assert tex("A's speed, the notes' equations") == "A's speed, the notes' equations"
+    assert tex("(answers 'v = 3', \"u = 4\")") == "(answers `v = 3', ``u = 4'')"
+    assert tex("5'' of rain") == "5'{}' of rain"  # two marks never join into one
+    assert "textquotesingle" not in tex("it's") and "ttfamily" not in tex('"x"')
+
+
+@pytest.mark.slow
+def test_pdf_text_has_curly_apostrophes_and_quotes(problem_from, tmp_path: Path) -> None:
+    _need_tex()
+    problem = problem_from(
+        'title = "A\'s first impact, \'quoted\' and \\"double\\""\nkind = "direct"\n'
+        '[given]\nm_A = "2 kg"\nm_B = "3 kg"\ne = 0.8\nv_A1 = "4 m/s"\nv_B1 = 0\n'
+    )
+    text = _pdftotext(build_pdf(derive.render(derive.solve(problem), "tex")), tmp_path)
+    assert "A\u2019s first impact, \u2018quoted\u2019 and \u201cdouble\u201d" in text
+    assert "'" not in text and '"' not in text
