@@ -21,7 +21,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
-from derive.errors import InputError
+from derive.checking.stageslips import StageMistakes, stage_given, stage_mistakes
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 
@@ -36,7 +36,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     own_defs: dict[sympy.Symbol, sympy.Expr] = {}
     items: list[Item] = []
     slips: list[str] = []
-    stages = _stage_mistakes(ctx)
+    stages = stage_mistakes(ctx)
     previous: list[sympy.Expr] = []  # the relation just before, where it held
     wrote: set[str] = set()  # the decimals the student wrote on wrong and carried lines
     for r, sides, exprs in read:
@@ -47,7 +47,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             own_defs[left] = sympy.Rational(sides[-1]) if _number(sides[-1]) else exprs[-1].xreplace(own_defs)
             exprs, sides = exprs[1:], sides[1:]
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
-        if _stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
+        if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
             items.append(
                 Item("line", str(r.line), r.written, "correct", "", "A given of a stage.", "the chain's values")
             )
@@ -375,44 +375,6 @@ def _put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
         return None
 
 
-#: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
-#: and the stage's common mistakes solved (each with its values by those names).
-StageMistakes = list[tuple[str, dict[sympy.Symbol, sympy.Expr]]]
-
-
-def _stage_mistakes(ctx: Context) -> StageMistakes:
-    """Each impact stage's common mistakes, as the chain's values they give (``w_B`` = +2.38
-    with the wall's restitution reversed): a slip in a stage is named as in a single impact."""
-    out: StageMistakes = []
-    for st in getattr(ctx.solution, "stages", ()):
-        part = getattr(st, "part", None)
-        if part is None:
-            continue
-        names = {}
-        for eqn in getattr(st, "carried", ()):
-            outer, inner = (eqn.sides[0].terms[0], eqn.sides[1].terms[0])
-            if isinstance(outer, sympy.Symbol) and isinstance(inner, sympy.Symbol):
-                names[sympy.Symbol(outer.name)] = inner.name  # the chain's values are plain symbols
-        inner_ctx = Context(part, None)
-        try:
-            found = [*inner_ctx.singles(), *(o for o in inner_ctx.forms() if o.post)]
-        except (InputError, ValueError, TypeError, ArithmeticError):
-            continue
-        for o in found:
-            if o.mistake is None:
-                continue
-            post = {u.name: x for u, x in o.post.items()}
-            given = {}
-            for outer, inner in names.items():
-                q = o.results.get(inner)
-                x = q.value if q is not None and q.value is not None else post.get(inner)
-                if x is not None:
-                    given[outer] = x * 180 / sympy.pi if q is not None and q.value is None else x
-            if given:
-                out.append((o.mistake.name, given))
-    return out
-
-
 def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: StageMistakes) -> Item:
     """The first slip named by the stage's mistake whose values make it hold (and those values
     kept as the student's, for the lines after); else, a line in one result name unknown to
@@ -447,15 +409,3 @@ def _root(ctx: Context, F: sympy.Expr, u: sympy.Symbol, values) -> sympy.Expr | 
     if not roots or true is None:
         return None
     return min(roots, key=lambda r: abs((number_of(r) or 0) - true.real))
-
-
-def _stage_given(ctx: Context, exprs) -> bool:
-    """``e = 0.7`` where a stage's own given of that name (the wall's e) has that value."""
-    if len(exprs) != 2 or not isinstance(exprs[0], sympy.Symbol) or exprs[1].free_symbols:
-        return False
-    for st in getattr(ctx.solution, "stages", ()):
-        part = getattr(st, "part", None)
-        g = next((g for g in part.problem.givens if g.name == exprs[0].name), None) if part is not None else None
-        if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
-            return True
-    return False

@@ -206,8 +206,11 @@ def name_note(student: str, words: str, how: str) -> str:
 
 
 def product_note(word: str) -> str:
-    """A Greek letter's name read as the givens it spells: μ (``mu``) as m × u."""
-    return f"{shown(word)}: read as {' × '.join(word)} (the product of the given {' and '.join(word)}), not as a name of its own."
+    """A Greek letter's name typed in letters read as the givens it spells: ``mu`` as m × u
+    (said as typed: a μ typed as the letter is the Greek name, never this)."""
+    return (
+        f"{word}: read as {' × '.join(word)} (the product of the given {' and '.join(word)}), not as a name of its own."
+    )
 
 
 def names_on(note: str) -> str | None:

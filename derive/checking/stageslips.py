@@ -1,0 +1,59 @@
+"""A chain's stages as single impacts for the checker: each impact stage's common mistakes as
+the chain's values they give, and a stage's own givens (the wall's e), so that a slip in a
+stage is named as in a single impact."""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking.context import Context
+from derive.errors import InputError
+
+#: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
+#: and the stage's common mistakes solved (each with its values by those names).
+StageMistakes = list[tuple[str, dict[sympy.Symbol, sympy.Expr]]]
+
+
+def stage_mistakes(ctx: Context) -> StageMistakes:
+    """Each impact stage's common mistakes, as the chain's values they give (``w_B`` = +2.38
+    with the wall's restitution reversed): a slip in a stage is named as in a single impact."""
+    out: StageMistakes = []
+    for st in getattr(ctx.solution, "stages", ()):
+        part = getattr(st, "part", None)
+        if part is None:
+            continue
+        names = {}
+        for eqn in getattr(st, "carried", ()):
+            outer, inner = (eqn.sides[0].terms[0], eqn.sides[1].terms[0])
+            if isinstance(outer, sympy.Symbol) and isinstance(inner, sympy.Symbol):
+                names[sympy.Symbol(outer.name)] = inner.name  # the chain's values are plain symbols
+        inner_ctx = Context(part, None)
+        try:
+            found = [*inner_ctx.singles(), *(o for o in inner_ctx.forms() if o.post)]
+        except (InputError, ValueError, TypeError, ArithmeticError):
+            continue
+        for o in found:
+            if o.mistake is None:
+                continue
+            post = {u.name: x for u, x in o.post.items()}
+            given = {}
+            for outer, inner in names.items():
+                q = o.results.get(inner)
+                x = q.value if q is not None and q.value is not None else post.get(inner)
+                if x is not None:
+                    given[outer] = x * 180 / sympy.pi if q is not None and q.value is None else x
+            if given:
+                out.append((o.mistake.name, given))
+    return out
+
+
+def stage_given(ctx: Context, exprs) -> bool:
+    """``e = 0.7`` where a stage's own given of that name (the wall's e) has that value."""
+    if len(exprs) != 2 or not isinstance(exprs[0], sympy.Symbol) or exprs[1].free_symbols:
+        return False
+    for st in getattr(ctx.solution, "stages", ()):
+        part = getattr(st, "part", None)
+        g = next((g for g in part.problem.givens if g.name == exprs[0].name), None) if part is not None else None
+        if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
+            return True
+    return False
