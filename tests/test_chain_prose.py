@@ -58,3 +58,43 @@ def test_a_problem_shaped_view_typesets_the_name() -> None:
     stages = data["stages"][0]["stages"]
     solve = next(st for st in stages if st["title"].startswith("Solve for"))
     assert solve["heading"] == [("text", "Solve for "), ("math", r"e_{\mathrm{floor}}")]
+
+
+def _sum_before_unit(tex: str) -> list[str]:
+    """Lines whose last side is a sum written straight before a unit: ``1.88 + 1.88 e N·s``."""
+    bad = []
+    for line in re.findall(r"\$\$\n(.*?)\n\$\$|\$([^$]+)\$", tex):
+        body = line[0] or line[1]
+        m = re.search(r"= ([^=]*?)\\ \\mathrm\{[^}]*\}\}?(?: \\tag\{\d+\})?$", body.removesuffix(ANSWER).strip())
+        if m and _top_level_sum(m[1]):
+            bad.append(body)
+    return bad
+
+
+ANSWER = r"\quad\longleftarrow\ \text{ANSWER}"
+
+
+def _top_level_sum(side: str) -> bool:
+    """Whether a side is a sum outside every group ({...}, \\left( ... \\right))."""
+    flat, before = side, None
+    while flat != before:
+        before = flat
+        flat = re.sub(r"\{[^{}]*\}", "", flat)
+        flat = re.sub(r"\\left\((?:(?!\\left\().)*?\\right\)", "", flat)
+    return bool(re.search(r"\S [+-] ", flat))
+
+
+@pytest.mark.parametrize(
+    "name", ["chain-ocr-m2-2006-drop-rebound", "chain-ocr-m2-2007-rebounds-to-start", "notes-4c11-two-spheres"]
+)
+def test_a_sum_before_its_unit_is_bracketed(name: str) -> None:
+    # J = m_A (v_A1 - v_A2) = m (1 + e) v_1: a sum times N·s; the vectors' components times m/s
+    md = derive.render(_solution(name), "md")
+    assert not _sum_before_unit(md), _sum_before_unit(md)
+
+
+def test_the_impulse_from_the_ground_is_bracketed() -> None:
+    # OCR June 2006 Q2: J = m (1 + e) sqrt(2 g h_0) = 0.3 * 6.261 (1 + e) = 1.878 (1 + e) N s
+    md = derive.render(_solution("chain-ocr-m2-2006-drop-rebound"), "md")
+    assert r"J = J_{n} = \left(1.88 + 1.88 e_{\mathrm{floor}}\right)\ \mathrm{N\cdot s}" in md
+    assert r"= \left(1.88 + 1.88 e_{\mathrm{floor}}\right)\ \mathrm{N\cdot s}}" in md

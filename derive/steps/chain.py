@@ -21,6 +21,7 @@ from derive.physics.state import StageOutcome
 from derive.problem import Problem, units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
+from derive.steps.notation import notes_form
 from derive.steps.page import Counter, Tags, as_float, interval_text
 from derive.symbols import symbol
 
@@ -106,7 +107,9 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
             "After the impact, energy is conserved while the spring compresses: kinetic energy becomes spring energy.",
         )
     lines = (
-        Eqn((Side(s.lhs), Side(s.rhs))),
+        Eqn(
+            (Side(s.lhs), Side(tuple(notes_form(t, {}) for t in s.rhs)))
+        ),  # (kx + m g)²/(2k): no fraction in a fraction
         Eqn((Side((X,)), Side((s.root,), "result")), unit=s.result.unit, implies=True, tag=numbers.next()),
     )
     return Stage(st.number, st.title, (Block(text, lines),), kind=st.type, values=st.values)
