@@ -5,10 +5,13 @@ in every format and in the sentences that quote a stage's title."""
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import pytest
 
 import derive
+from derive.verifier import verify
+from derive.verifier.facts.chain import stage_letters
 from derive.writers.view import problem_view
 
 #: The chains whose pages have a "solve" stage or a symbol in a stage's title.
@@ -96,5 +99,75 @@ def test_a_sum_before_its_unit_is_bracketed(name: str) -> None:
 def test_the_impulse_from_the_ground_is_bracketed() -> None:
     # OCR June 2006 Q2: J = m (1 + e) sqrt(2 g h_0) = 0.3 * 6.261 (1 + e) = 1.878 (1 + e) N s
     md = derive.render(_solution("chain-ocr-m2-2006-drop-rebound"), "md")
-    assert r"J = J_{n} = \left(1.88 + 1.88 e_{\mathrm{floor}}\right)\ \mathrm{N\cdot s}" in md
+    assert r"$J = \left(1.88 + 1.88 e_{\mathrm{floor}}\right)\ \mathrm{N\cdot s}$" in md  # carried on
     assert r"= \left(1.88 + 1.88 e_{\mathrm{floor}}\right)\ \mathrm{N\cdot s}}" in md
+
+
+def _stage(md: str, k: int) -> str:
+    start = md.index(f"## Stage {k}:")
+    end = md.find("## Stage", start + 1)
+    return md[start : end if end > 0 else None]
+
+
+def test_a_wall_stage_writes_the_chain_names_throughout() -> None:
+    """OCR M2 June 2011 Q4: B (0.2 kg) leaves A at 2.9 m/s (u_B), strikes the wall and comes
+    back at w_B; the wall's impulse 0.58 (1 + e_wall) = 0.68 N s gives e_wall = 5/29 and
+    w_B = -0.5 m/s (mark scheme: 0.5, e = 0.172). The wall stage calls them u_B, w_B, J_w:
+    not v_B1 and v_B2, which stage 1 uses for B before and after the first impact."""
+    sol = _solution("chain-ocr-m2-2011-find-e-mass-then-wall")
+    md = derive.render(sol, "md", figures=False)
+    wall = _stage(md, 2)
+    assert "v_{B1}" not in wall and "v_{B2}" not in wall and "J_{n}" not in wall, wall
+    assert r"**Given.** $m_{B} = 0.2\ \mathrm{kg}$, $e_{\mathrm{wall}}$, $u_{B} = 2.9\ \mathrm{m/s}$" in wall
+    assert r"e_{\mathrm{wall}} = \frac{v_{W2} - w_{B}}{u_{B} - v_{W1}}" in wall
+    assert r"\boxed{w_{B} = -2.9 e_{\mathrm{wall}}\ \mathrm{m/s}}" in wall
+    assert r"\boxed{J_{w} = m_{B} \left(u_{B} - w_{B}\right) = \left(0.58 + 0.58 e_{\mathrm{wall}}\right)" in wall
+    assert r"Carried to the next stages: $J_{w} = \left(0.58 + 0.58 e_{\mathrm{wall}}\right)" in wall
+    assert r"$w_{B} = -2.9 e_{\mathrm{wall}}\ \mathrm{m/s}$." in wall
+    assert r"\boxed{w_{B} = -0.500\ \mathrm{m/s}}" in md  # the mark scheme's 0.5
+    assert "v_{B2} = 2.90" in _stage(md, 1)  # stage 1 keeps the notes' names for its own impact
+
+
+def test_a_wall_stage_figure_labels_its_arrows_by_the_chain_names() -> None:
+    tex = derive.render(_solution("chain-aqa-m3-2007-collide-again"), "tex")
+    wall = tex[tex.index("Stage 2: B strikes the wall") : tex.index("Stage 3:")]
+    labels = re.findall(r"text=red!70!black\] at \([^)]*\) \{\$([^$]*)\$\}", wall)
+    assert labels == ["u_{B}", "w_{B}"], labels
+
+
+def test_the_ground_has_its_own_letter_and_the_sphere_the_chain_names() -> None:
+    """OCR M2 June 2006 Q2: v_1 = sqrt(2 g h_0) = 6.26 m/s at impact, u = -e v_1 after,
+    J = m (1 + e) v_1; the ground is G (never B, nor the sphere's v_A1/v_A2)."""
+    md = derive.render(_solution("chain-ocr-m2-2006-drop-rebound"), "md", figures=False)
+    ground = _stage(md, 2)
+    assert "G is the fixed ground" in ground
+    assert r"e_{\mathrm{floor}} = \frac{v_{G2} - u}{v_{1} - v_{G1}}" in ground
+    assert not re.search(r"v_\{[AB][12]\}", ground), ground
+    assert r"\boxed{J = m \left(v_{1} - u\right) = \left(1.88 + 1.88 e_{\mathrm{floor}}\right)" in ground
+
+
+@pytest.mark.parametrize(
+    "name", sorted(p.stem for p in (Path(derive.__file__).parent.parent / "problems").glob("chain-*.toml"))
+)
+def test_the_verifier_passes_every_chain_page(name: str) -> None:
+    sol = _solution(name)
+    for fmt in ("md", "tex"):
+        report = verify(sol, fmt)
+        assert not report.failures, [(f.line, f.rule, f.reason) for f in report.failures]
+
+
+def test_the_verifier_reads_a_wall_stage_in_its_own_names() -> None:
+    """A wrong number in the wall stage's own names is caught (w_B = -2.7 e_wall for -2.9 e_wall)."""
+    sol = _solution("chain-ocr-m2-2011-find-e-mass-then-wall")
+    text = derive.render(sol, "md", figures=False)
+    good = r"w_{B} = -2.9 e_{\mathrm{wall}}\ \mathrm{m/s} \tag{3}"
+    assert good in text
+    report = verify(sol, "md", text=text.replace(good, good.replace("2.9", "2.7"), 1))
+    assert "equals" in [f.rule for f in report.failures]
+
+
+def test_the_verifier_names_a_stage_s_bodies_from_the_file() -> None:
+    assert stage_letters({"A": {"label": "B"}, "B": {"fixed": True, "name": "wall"}}) == ("B", "W")
+    assert stage_letters({"B": {"fixed": True, "name": "ground"}}) == ("A", "G")
+    assert stage_letters({"B": {"fixed": True, "name": "ground"}, "A": {"label": "G"}}) == ("G", "W")
+    assert stage_letters({}) == ("A", "B")

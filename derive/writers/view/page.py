@@ -14,7 +14,6 @@ from typing import Any
 import sympy
 
 from derive.problem.units import latex_unit
-from derive.steps.chain import own_names
 from derive.steps.model import Solution
 from derive.symbols import latex_name, relabel, symbol
 from derive.writers.printing import Style, exact_latex, latex_eqn
@@ -129,7 +128,7 @@ def _stages(sol: Solution, style: Style, layout: Layout, figures: bool) -> list[
             falls=falls.get(st.number, False),
             known=sol.values,
         )
-        renamed = {old.name for old in own_names(st.part.problem)}  # e = e_wall: the page says e_wall
+        renamed = set(st.part.names)  # e = e_wall, v_A1 = u_B: the page says e_wall, u_B
         for g, shown in zip(st.part.problem.givens, v["givens"], strict=True):
             if g.name in renamed:
                 shown["latex"] = shown["latex"].split(" = ", 1)[1]
