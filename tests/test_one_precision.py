@@ -136,3 +136,23 @@ def test_the_signs_read_as_the_notes_write_them() -> None:
         assert sympy.simplify(y - x) == 0
         assert not sympy.latex(y).startswith(minus), sympy.latex(y)
         assert "e - 1" not in sympy.latex(y) and "lam - 1" not in sympy.latex(y)
+
+
+def test_no_bundled_page_breaks_the_notes_style() -> None:
+    """Every bundled page as committed (tests/golden): no (e - 1) where the notes write (1 - e),
+    no |x| but in an acute angle's tan^-1(|a|/|b|), no fraction inside a fraction."""
+    from pathlib import Path
+
+    pages = sorted((Path(__file__).parent / "golden" / "pages").glob("*.md"))
+    assert len(pages) > 60
+    bad = []
+    for page in pages:
+        text = re.sub(r"<svg.*?</svg>", "", page.read_text(), flags=re.S)
+        for ln in text.splitlines():
+            if (
+                re.search(r"\\left\(e(_\{[^}]*\})? - 1\\right\)", ln)
+                or (r"\left|" in ln and r"\tan^{-1}" not in ln)
+                or _nested_fraction(ln)
+            ):
+                bad.append(f"{page.name}: {ln[:120]}")
+    assert not bad, bad
