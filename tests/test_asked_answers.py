@@ -94,8 +94,8 @@ def test_the_notes_mark_both_velocity_vectors_of_4c11() -> None:
     md = derive.render(solution("notes-4c11-two-spheres"), "md")
     marked = [ln for ln in md.splitlines() if "ANSWER" in ln]
     assert len(marked) == 2
-    assert r"\vec{v}_{A2} = 3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}" in marked[0]
-    assert r"\vec{v}_{B2} = -9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}" in marked[1]
+    assert r"\vec{v}_{A2} = \left(3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}\right)" in marked[0]
+    assert r"\vec{v}_{B2} = \left(-9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}\right)" in marked[1]
     assert not any(ln.lstrip().startswith(r"\boxed{v_{") for ln in _boxed(md))
 
 

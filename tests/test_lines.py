@@ -154,8 +154,8 @@ def test_example_4c11_marks_both_velocity_vectors_as_the_notes_do() -> None:
     answer = md.split("## 4) Answer")[1].split("Kinetic energy")[0]
     marked = [ln for ln in answer.splitlines() if "ANSWER" in ln]
     assert len(marked) == 2
-    assert r"\vec{v}_{A2} = 3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}" in marked[0]
-    assert r"\vec{v}_{B2} = -9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}" in marked[1]
+    assert r"\vec{v}_{A2} = \left(3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}\right)" in marked[0]
+    assert r"\vec{v}_{B2} = \left(-9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}\right)" in marked[1]
 
 
 def test_a_chain_carries_no_number_before_the_unknown_it_depends_on_is_found() -> None:

@@ -53,8 +53,8 @@ def test_elimination_is_written_out(md11: str) -> None:
 
 
 def test_answer_is_boxed_and_marked(md11: str) -> None:
-    assert r"\boxed{\vec{v}_{A2} = 3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}\ \mathrm{m/s}}" in md11
-    assert r"\boxed{\vec{v}_{B2} = -9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}\ \mathrm{m/s}}" in md11
+    assert r"\boxed{\vec{v}_{A2} = \left(3.05 \hat{e}_{t} - 1.11 \hat{e}_{n}\right)\ \mathrm{m/s}}" in md11
+    assert r"\boxed{\vec{v}_{B2} = \left(-9.15 \hat{e}_{t} + 8.40 \hat{e}_{n}\right)\ \mathrm{m/s}}" in md11
     assert "ANSWER" in md11
 
 

@@ -175,8 +175,8 @@ def test_a_carried_value_is_written_in_the_stage_names(tmp_path: Path) -> None:
 def test_a_value_in_a_chain_unknown_needs_its_unit() -> None:
     """v_A2 = -e_floor v_A1 = -35 e_floor m/s (0.2 kg at 35 m/s onto the floor): e_floor is found
     only by a later stage, so the line is a value, and a velocity without m/s is wrong (issue #26)."""
-    old = r"v_{A2} = -35 e_{\mathrm{floor}}\ \mathrm{m/s} \tag{2}"
-    report = _report("chain-ocr-m2-2007-rebounds-to-start", old, r"v_{A2} = -35 e_{\mathrm{floor}} \tag{2}")
+    old = r"u = -35 e_{\mathrm{floor}}\ \mathrm{m/s} \tag{2}"  # the stage's v_A2, by the chain's name u
+    report = _report("chain-ocr-m2-2007-rebounds-to-start", old, r"u = -35 e_{\mathrm{floor}} \tag{2}")
     assert "unit" in report.by_rule(), report.format()
 
 

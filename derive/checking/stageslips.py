@@ -27,6 +27,8 @@ def stage_mistakes(ctx: Context) -> StageMistakes:
             outer, inner = (eqn.sides[0].terms[0], eqn.sides[1].terms[0])
             if isinstance(outer, sympy.Symbol) and isinstance(inner, sympy.Symbol):
                 names[sympy.Symbol(outer.name)] = inner.name  # the chain's values are plain symbols
+        for inner_name, outer_name in getattr(part, "names", {}).items():  # a wall stage writes w_B for v_B2
+            names.setdefault(sympy.Symbol(outer_name), inner_name)
         inner_ctx = Context(part, None)
         try:
             found = [*inner_ctx.singles(), *(o for o in inner_ctx.forms() if o.post)]

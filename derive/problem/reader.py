@@ -82,7 +82,7 @@ def build_problem(data: dict[str, Any], ctx: Source, name: str, seed: Mapping[st
             name=name,
             fixed_B=fixed_B,
             name_B=bodies["B"].get("name"),
-            labels=_labels(bodies, fixed_B, ctx),
+            labels=_labels(bodies, fixed_B, ctx, in_chain=seed is not None),
             phi=phi,
             answer_units=fields.answer_units(data.get("answer_units"), ctx),
             vary=fields.vary(data.get("vary"), by_name, ctx, oblique, system),
@@ -193,9 +193,13 @@ def _take_from_seed(
 _LABEL = re.compile(r"[A-Z][0-9]?")
 
 
-def _labels(bodies: Mapping[str, Mapping[str, Any]], fixed_B: bool, ctx: Source) -> tuple[str, str]:
+def _labels(
+    bodies: Mapping[str, Mapping[str, Any]], fixed_B: bool, ctx: Source, in_chain: bool = False
+) -> tuple[str, str]:
     """The letters the page calls A and B by: the file's ``label``; a fixed B not
-    labelled whose letter A took is called by its name's initial (W for a wall)."""
+    labelled whose letter A took, or any fixed B of a chain's stage (whose B may be a
+    sphere of another stage), is called by its name's initial (W for a wall, G for the
+    ground): a wall's velocities are never v_B1 and v_B2 beside a sphere B's."""
     for b in "AB":
         label = bodies[b].get("label")
         if label is not None and not _LABEL.fullmatch(label):
@@ -204,7 +208,8 @@ def _labels(bodies: Mapping[str, Mapping[str, Any]], fixed_B: bool, ctx: Source)
     b = bodies["B"].get("label")
     if b is None:
         initial = (bodies["B"].get("name") or "wall")[:1].upper() if fixed_B else ""
-        b = "B" if a != "B" else (initial if _LABEL.fullmatch(initial) and initial != a else "W")
+        named = initial if _LABEL.fullmatch(initial) and initial != a else "W"
+        b = "B" if a != "B" and not (in_chain and fixed_B) else named
     if a == b:
         raise ctx.error(f'A and B are both called "{a}": give each body its own letter', "B", "label", b)
     return a, b

@@ -15,7 +15,6 @@ from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.derived import derived_line
 from derive.steps.model import Block, Eqn, Math, Side, Text
-from derive.steps.notation import notes_form
 from derive.steps.page import Page, interval_text, nonzero
 from derive.symbols import symbol, vector
 
@@ -52,7 +51,7 @@ def shown(page: Page, s: Shown) -> Block:
     """A "show that" result: the closed form found, and whether it is the one to show."""
     rel = s.relation
     text: Text = ("Show that ", Math(sympy.Eq(rel.lhs, rel.rhs, evaluate=False)), ":")
-    line = Eqn((Side((rel.lhs,)), Side((s.lhs,), "numeric"), Side((rel.rhs,))), boxed=s.holds)
+    line = Eqn((Side((rel.lhs,)), Side((page.notes(s.lhs),), "numeric"), Side((rel.rhs,))), boxed=s.holds)
     if s.holds:
         how = (
             ""
@@ -225,8 +224,8 @@ def _closed_forms(page: Page) -> Block | None:
         Eqn(
             (
                 Side((r.symbol,)),
-                Side((notes_form(r.closed, page.numeric),)),
-                Side((page.value_of(r.symbol),), "result"),
+                Side((page.notes(r.closed),)),
+                Side((page.notes(page.value_of(r.symbol)),), "result"),
             ),
             unit=r.unit,
         )
@@ -290,8 +289,8 @@ def energy(page: Page) -> Block:
         sides = [Side((r.symbol,)), Side(terms)]
         if r.value is None:
             if r.closed != r.partial and r.partial.free_symbols - page.varied:
-                sides.append(Side((notes_form(r.closed, page.numeric),)))
-            sides.append(Side((page.value_of(r.symbol),), "result"))
+                sides.append(Side((page.notes(r.closed),)))
+            sides.append(Side((page.notes(page.value_of(r.symbol)),), "result"))
         else:
             sides.append(Side((r.value,), "result"))
         lines.append(Eqn(tuple(sides), unit=r.unit))
@@ -336,8 +335,8 @@ def _loss_line(page: Page) -> Eqn:
     if r.value is None and r.partial.free_symbols - page.varied:  # letters, not a variant's open numbers
         sides = [Side((r.symbol,)), Side((symbol("T_1"), -symbol("T_2")))]
         if r.closed != r.partial and r.partial.free_symbols - page.varied:
-            sides.append(Side((notes_form(r.closed, page.numeric),)))
-        sides.append(Side((page.value_of(r.symbol),), "result"))
+            sides.append(Side((page.notes(r.closed),)))
+        sides.append(Side((page.notes(page.value_of(r.symbol)),), "result"))
         return Eqn(tuple(sides), unit=r.unit)
     p, e = page.p, page.e
     a, b = (page.nm.A1n, page.nm.B1n) if p.oblique else (symbol("v_A1"), symbol("v_B1"))

@@ -21,8 +21,9 @@ from derive.physics.state import StageOutcome
 from derive.problem import Problem, units
 from derive.steps.impact import write_impact
 from derive.steps.model import Answer, Block, Eqn, Math, Side, Solution, Stage, Text
+from derive.steps.notation import notes_form
 from derive.steps.page import Counter, Tags, as_float, interval_text
-from derive.symbols import symbol
+from derive.symbols import relabel, symbol
 
 
 def write_chain(outcome: ChainOutcome) -> Solution:
@@ -106,7 +107,9 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
             "After the impact, energy is conserved while the spring compresses: kinetic energy becomes spring energy.",
         )
     lines = (
-        Eqn((Side(s.lhs), Side(s.rhs))),
+        Eqn(
+            (Side(s.lhs), Side(tuple(notes_form(t, {}) for t in s.rhs)))
+        ),  # (kx + m g)²/(2k): no fraction in a fraction
         Eqn((Side((X,)), Side((s.root,), "result")), unit=s.result.unit, implies=True, tag=numbers.next()),
     )
     return Stage(st.number, st.title, (Block(text, lines),), kind=st.type, values=st.values)
@@ -115,34 +118,47 @@ def _spring(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
 def _impact(outcome: ChainOutcome, st: StageOutcome, numbers: Counter) -> Stage:
     data: ImpactStage = st.data
     inner = data.outcome
-    written = _one_name(write_impact(inner, Tags(running=numbers), marks=False), inner.problem)
-    values = {
-        **inner.values,
-        **{new: inner.values[old] for old, new in own_names(inner.problem).items() if old in inner.values},
-    }
-    part = Solution(inner.problem, inner.results, written, values, inner.angles)
+    to = own_names(inner.problem, data.exports)
+    written = _one_name(write_impact(inner, Tags(running=numbers), marks=False), to)
+    values = {**inner.values, **{new: inner.values[old] for old, new in to.items() if old in inner.values}}
+    names = {old.name: new.name for old, new in to.items()}
+    part = Solution(inner.problem, inner.results, written, values, inner.angles, names=names)
     carried = []
     for (new, rname), value in zip(data.exports, data.carried, strict=True):
         r = outcome.results[new]
         shown = _in_unit(sympy.factor(value) if value.free_symbols else value, r.unit)
-        carried.append(Eqn((Side((r.symbol,)), Side((symbol(rname),)), Side((shown,), "result")), unit=r.unit or None))
+        slot = (
+            () if symbol(rname) in to else (Side((symbol(rname),)),)
+        )  # w_B = v_B2 = ..., or w_B = ... where w_B is written
+        carried.append(Eqn((Side((r.symbol,)), *slot, Side((shown,), "result")), unit=r.unit or None))
     return Stage(st.number, st.title, part=part, carried=tuple(carried), kind=st.type, values=st.values)
 
 
-def own_names(problem: Problem) -> dict[sympy.Symbol, sympy.Symbol]:
-    """An impact stage's symbols the page writes in the chain's names: its coefficient ``e``
-    where the stage takes it from a coefficient of the chain's (e = "e_wall"), so that the
-    page has one name per quantity (e_wall, not e beside e_wall, nor e for two coefficients)."""
-    given = {g.name: g for g in problem.givens}.get("e")
-    named = given.definition if given is not None else None
-    if not isinstance(named, sympy.Symbol) or named.name == "e":
-        return {}
-    return {given.symbol: named}
+def own_names(problem: Problem, exports: tuple[tuple[str, str], ...] = ()) -> dict[sympy.Symbol, sympy.Symbol]:
+    """An impact stage's symbols the page writes in the chain's names, so that the page has
+    one name per quantity: its coefficient ``e`` where the stage takes it from a coefficient
+    of the chain's (e = "e_wall": e_wall, not e beside e_wall, nor e for two coefficients);
+    against a wall or floor, also each given the chain names (v_A1 = "u_B": u_B) and each
+    result it hands on (``exports``: v_A2 -> w_B, J_n -> J_w), so that v_B1 and v_B2 of a
+    wall stage are not v_B1 and v_B2 of the impact before it (the wall's stage writes
+    u_B, w_B). A chain name that is itself a body's name (v_B) is left out: the stage's
+    letters would rename it."""
+    out: dict[sympy.Symbol, sympy.Symbol] = {}
+    for g in problem.givens:
+        named = g.definition
+        if g.name != "e" and not problem.fixed_B:
+            continue
+        if isinstance(named, sympy.Symbol) and named.name != g.name and relabel(named.name, ("B", "A")) == named.name:
+            out[g.symbol] = named
+    if problem.fixed_B:
+        for new, slot in exports:
+            if relabel(new, ("B", "A")) == new and new != slot:
+                out.setdefault(symbol(slot), symbol(new))
+    return out
 
 
-def _one_name(stages: tuple[Stage, ...], problem: Problem) -> tuple[Stage, ...]:
+def _one_name(stages: tuple[Stage, ...], to: dict[sympy.Symbol, sympy.Symbol]) -> tuple[Stage, ...]:
     """The stages of an impact written in its own names (:func:`own_names`)."""
-    to = own_names(problem)
     if not to:
         return stages
 

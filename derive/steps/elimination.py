@@ -93,8 +93,9 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
     lhs = (a * x, sympy.Mul(b, sub, evaluate=False))
     coef = sympy.Add(a, b, evaluate=False)
     bk = sympy.Mul(as_float(-b), as_float(k), evaluate=False)
-    frac_num = sympy.Add(as_float(c), bk, evaluate=False)
-    fraction = show(sympy.Mul(frac_num, sympy.Pow(as_float(a + b), -1, evaluate=False), evaluate=False))
+    fraction = show(
+        _over_one_denominator((c, -b * k), a + b) or _fraction(sympy.Add(as_float(c), bk, evaluate=False), a + b)
+    )
     return [
         Block((f"From ({page.tags(4)}):",), (Eqn((Side((y,)), Side((x, k), "numeric"))),)),
         Block(
@@ -111,6 +112,24 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
             (((xv, k), yv),) if not ((xv.free_symbols | yv.free_symbols) - page.varied) else (),
         ),
     ]
+
+
+def _fraction(num: sympy.Expr, den: sympy.Expr) -> sympy.Expr:
+    return sympy.Mul(num, sympy.Pow(as_float(den), -1, evaluate=False), evaluate=False)
+
+
+def _over_one_denominator(terms: tuple[sympy.Expr, ...], den: sympy.Expr) -> sympy.Expr | None:
+    """(4u - 4u/3)/3 written as the notes would, with no fraction inside the fraction: each
+    term and the denominator times the terms' common denominator ((12u - 4u)/9). None where
+    no term has a fraction of its own (nothing to clear) or a number is not exact."""
+    exact = [t.as_coeff_Mul()[0] for t in terms] + [den]
+    if any(not x.is_Rational for x in exact) or not any(t.free_symbols for t in terms):
+        return None
+    lcm = sympy.ilcm(*(x.q for x in exact[:-1]))
+    if lcm == 1:
+        return None
+    num = sympy.Add(*(sympy.expand(lcm * t) for t in terms), evaluate=False)
+    return _fraction(num, lcm * den)
 
 
 def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
@@ -142,8 +161,11 @@ def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
             app = sympy.Add(*nonzero(tuple(page.givens(t) for t in (nm.A1n, -nm.B1n))), evaluate=False)
             frac = sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False)
             sides.append(Side((frac,)))
-            sides.append(Side((show(_substituted(page, frac, known)),), "numeric"))
-        sides.append(Side((page.value_of(u),), "result"))
+            put_in = _substituted(page, sep, known), _substituted(page, app, known)
+            sides.append(Side((show(_cleared(*put_in) or _substituted(page, frac, known)),), "numeric"))
+            sides.append(Side((page.notes(page.value_of(u)),), "result"))
+        else:
+            sides.append(Side((page.value_of(u),), "result"))
         why = _root_reason(page, u)
         text: Text = (f"From ({page.tags(k)}):" + (f" {why}" if why else ""),)
         lines = (Eqn(tuple(sides), unit=page.unit_of(u)),)
@@ -154,6 +176,28 @@ def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
         remaining.remove(u)
         del eqs[k]
     return blocks
+
+
+def _cleared(num: sympy.Expr, den: sympy.Expr) -> sympy.Expr | None:
+    """num/den with no fraction inside it, where a term of either has one of its own:
+    (3u - 2u/3)/(2u + u) as (9u - 2u)/(6u + 3u), (λu + u/k - 0)/(u - λu) as
+    (kλu + u - 0)/(ku - kλu): each term times the terms' common denominator. None where no
+    term has a denominator, or a number in them is a decimal."""
+    terms = [*sympy.Add.make_args(num), *sympy.Add.make_args(den)]
+    if not any(t.free_symbols for t in terms):  # numbers only: 8.4 prints as a decimal, no fraction in it
+        return None
+    if any(isinstance(a, sympy.Float) for t in terms for a in sympy.preorder_traversal(t)):
+        return None
+    lcm = sympy.lcm_list([sympy.fraction(sympy.together(t))[1] for t in terms])
+    if lcm == 1:
+        return None
+
+    def times(side: sympy.Expr) -> sympy.Expr:
+        return sympy.Add(
+            *(t if t.is_zero else sympy.expand(lcm * t) for t in sympy.Add.make_args(side)), evaluate=False
+        )
+
+    return sympy.Mul(times(num), sympy.Pow(times(den), -1, evaluate=False), evaluate=False)
 
 
 def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:

@@ -151,6 +151,9 @@ class Solution:
     shown: tuple[Any, ...] = ()
     ranges: tuple[Any, ...] = ()
     others: tuple[Mapping[str, Result], ...] = ()
+    #: A chain's impact stage: its quantities by the chain's names (v_A1 -> u_B, v_A2 -> w_B),
+    #: for the figure's labels (the steps are written in them already).
+    names: Mapping[str, str] = field(default_factory=dict)
 
     @property
     def is_chain(self) -> bool:

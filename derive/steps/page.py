@@ -15,6 +15,7 @@ from derive.physics.impact import equation_numbers, evaluate
 from derive.physics.outcome import ImpactOutcome, xy_motions
 from derive.physics.results import working_unit
 from derive.steps.model import Math, Text
+from derive.steps.notation import notes_form
 from derive.symbols import symbol
 
 
@@ -92,6 +93,12 @@ class Page:
     @property
     def numeric(self) -> dict[sympy.Symbol, sympy.Expr]:
         return self.p.numeric()
+
+    def notes(self, expr: sympy.Expr) -> sympy.Expr:
+        """``expr`` as the notes write it (:func:`derive.steps.notation.notes_form`): its
+        signs decided by the givens' numbers and by the angles assumed acute."""
+        acute = [g.symbol for g in self.p.givens if self.p.assume.get(g.name) == "acute"]
+        return notes_form(expr, self.numeric, acute)
 
     @property
     def m_A(self) -> sympy.Symbol:

@@ -13,6 +13,9 @@ def chain_result_words(c: Compiled, name: str) -> list[tuple[str, str]]:
     from derive.problem.chain import stage_results
     from derive.problem.schema.chain import STAGES
     from derive.symbols import latex_name, relabel
+    from derive.writers.view.lines import heading_parts
+
+    names = frozenset(c.givens) | frozenset(str(k) for k in c.solution.values)
 
     steps = {st.number: st for st in c.solution.stages}
     for i, raw in enumerate(c.problem.stages, 1):
@@ -24,15 +27,16 @@ def chain_result_words(c: Compiled, name: str) -> list[tuple[str, str]]:
                     lead = "t" + title[1:] if title.startswith("The ") else title
                     return [
                         ("math", latex_name(relabel(str(slot), st.part.problem.labels))),
-                        ("text", f" after {lead}"),
+                        ("text", " after "),
+                        *heading_parts(lead, names),
                     ]
         elif any(new == name for _, new in stage_results(i, raw)):
             if raw["type"] in ("fall", "rise", "slide", "spring"):
                 return [("text", STAGES[raw["type"]].meaning.partition(":")[0])]
             if title.startswith("The "):  # a define stage's title: "The rebound speed"
                 return [("text", "t" + title[1:])]
-            return [("text", f"the result of stage {i} ({title})")]
+            return [("text", f"the result of stage {i} ("), *heading_parts(title, names), ("text", ")")]
     g = c.givens.get(name)
     if g is not None and g.unknown:
         return [("text", "the unknown of the problem")]
-    return [("text", f"the result {name}")]
+    return [("text", "the result "), ("math", latex_name(name))]

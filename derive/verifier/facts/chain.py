@@ -160,7 +160,8 @@ class _Chain:
         for g in problem.givens:
             if g.unknown and g.name not in self.table.exprs:
                 self.define(i, g.name, table.exprs[g.name], dim_of(g))
-        table.relabel(getattr(problem, "labels", ("A", "B")))  # the page's letters for the stage's bodies
+        _own_names(table, raw, self.table)
+        table.relabel(stage_letters(raw))  # the page's letters for the stage's bodies, as the file names them
 
     def stage_read(self, raw: dict, values: dict[str, sympy.Expr]) -> source.Read:
         """An impact stage's givens and velocities as the chain file gives them."""
@@ -274,3 +275,31 @@ def chain_facts(solution: Any, read: source.Read | None = None) -> Facts:
         if state(i) != state(last):
             solved.update(full.stage_scopes(i))
     return Facts(scopes, chain.digits, True, tuple(full.notes), solved)
+
+
+def stage_letters(raw: dict) -> tuple[str, str]:
+    """The letters a chain's impact stage calls its bodies by, read from the file: A's
+    ``label`` (else A); B's ``label``, else, B being a wall or the ground, the initial of
+    its name (W, G): a fixed body is never called B in a chain, where B may be a sphere."""
+    a = str((raw.get("A") or {}).get("label") or "A")
+    b_table = raw.get("B") or {}
+    if b_table.get("label"):
+        return a, str(b_table["label"])
+    if not b_table.get("fixed"):
+        return a, "B"
+    initial = str(b_table.get("name") or "wall")[:1].upper()
+    return a, initial if re.fullmatch(r"[A-Z]", initial) and initial != a else "W"
+
+
+def _own_names(table: Table, raw: dict, chain: Table) -> None:
+    """A wall or floor stage's quantities under the chain's names too, as the file gives them
+    (v_A1 = "u_B", results v_A2 = "w_B"): its page writes u_B and w_B in their places. A
+    letter of the chain (e_wall, still unknown here) stays the chain's letter."""
+    if not (raw.get("B") or {}).get("fixed"):
+        return
+    pairs = [(slot, str(text).strip()) for slot, text in (raw.get("given") or {}).items()]
+    pairs += [(slot, str(name)) for slot, name in (raw.get("results") or {}).items()]
+    for slot, name in pairs:
+        letter = chain.roles.get(name) in ("unknown", "param")
+        if re.fullmatch(r"[A-Za-z]\w*", name) and slot in table.exprs and name not in table.exprs and not letter:
+            table.put(name, table.exprs[slot], table.dims.get(slot, units.NONE), table.roles.get(slot, "result"))

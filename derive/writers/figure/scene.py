@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Mapping
 from decimal import Decimal
+from typing import Any
 
 import sympy
 
@@ -278,7 +279,7 @@ def _motion_shapes(
         if v is None:
             continue
         if math.hypot(*v) * scale < 1e-6:
-            specs.append(Spec(relabel(name, p.labels), "velocity", _ring(body), tail=" = 0"))
+            specs.append(Spec(_label(solution, name), "velocity", _ring(body), tail=" = 0"))
             continue
         others = [o for o in bodies.values() if o is not body]
         d = _unit(fr, v)
@@ -287,7 +288,7 @@ def _motion_shapes(
         )
         shapes.append(arrow)
         free, outward = ((arrow.x2, arrow.y2), d) if side > 0 else ((arrow.x1, arrow.y1), (-d[0], -d[1]))
-        specs.append(arrow_spec(arrow, free, outward, relabel(name, p.labels)))
+        specs.append(arrow_spec(arrow, free, outward, _label(solution, name)))
         leg = (side * d[0], side * d[1])
         found = _after_angles(p, b, fr, d) if after else _before_angle(p, b, fr)
         for ref, label, guide in found:
@@ -383,7 +384,7 @@ def describe(
     specs.sort(key=lambda s: ORDER[s.role])  # the most constrained labels first
     own = scales(vel)
     longer = tuple(  # named as the labels name them (a chain stage that calls A "B")
-        (relabel(a.name, p.labels), speed_words(solution, a.name[2:], math.hypot(*vel[a.name[2:]]), known))
+        (_label(solution, a.name), speed_words(solution, a.name[2:], math.hypot(*vel[a.name[2:]]), known))
         for a in more
         if isinstance(a, Arrow) and a.lengthened
     )
@@ -417,3 +418,10 @@ def _masses_drawn_otherwise(p: Problem, values: Mapping, numbers: Numbers) -> bo
         if stated is not None and drawn is not None and abs(stated - drawn) > 1e-9 * max(1.0, abs(stated)):
             return True
     return False
+
+
+def _label(solution: Any, name: str) -> str:
+    """A velocity's label: a chain stage's own name for it (u_B, w_B), else its name under
+    the stage's letters (v_B1 where the stage calls A "B")."""
+    own = getattr(solution, "names", {}).get(name)
+    return own if own is not None else relabel(name, solution.problem.labels)

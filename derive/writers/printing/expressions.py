@@ -68,8 +68,15 @@ def _prepared(
 
 
 def _values_printer(expr: sympy.Expr, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> StepPrinter:
-    """A substitution line: each given's number in place of its symbol."""
+    """A substitution line: each given's number in place of its symbol; in a line that keeps
+    letters, with no decimal data in it, a fraction no decimal writes exactly as a fraction
+    (2/3 (2u - 0), not 0.6667 (2u - 0): one precision per line, a symbolic page stays exact)."""
     vals = values_map(style, style.digits, extra, expr.free_symbols)
+    if _letters(expr, style) and not expr.free_symbols & style.decimal:
+        for s in expr.free_symbols & set(style.values):
+            v = style.values[s]
+            if s not in style.angles and v.is_Rational and v.q <= 12 and not short_decimal(v):
+                vals[s] = ("-" if v < 0 else "") + rf"\frac{{{abs(v.p)}}}{{{v.q}}}"
     return StepPrinter(
         vals,
         cancel,

@@ -250,7 +250,7 @@ class StepPrinter(LatexPrinter):
                 s = self._print(inner)
                 wrap = isinstance(inner, sympy.Add) or s.startswith("-")
                 return "-" + (r"\left(" + s + r"\right)" if wrap else s)
-        args = [a for a in expr.args if a != 1] or [sympy.Integer(1)]  # 1 (v + 4u/3) is v + 4u/3
+        args = [a for a in _over_letters(expr.args) if a != 1] or [sympy.Integer(1)]  # 1 (v + 4u/3) is v + 4u/3
         if len(args) == 1:
             return self._print(args[0])
         # beside a surd a fraction stays a fraction: sqrt(2)/2, not 0.5 sqrt(2)
@@ -304,7 +304,7 @@ class StepPrinter(LatexPrinter):
     def _print_Pow(self, expr: sympy.Pow) -> str:
         if expr.base in self._values and expr.exp.is_Integer and expr.exp > 0:
             base = self._values[expr.base]
-            if base.startswith("-") or " " in base:
+            if base.startswith(("-", "\\frac")) or " " in base:
                 base = r"\left(" + base + r"\right)"
             return f"{base}^{{{expr.exp}}}"
         if isinstance(expr.base, sympy.Float) and expr.exp.is_Integer:
@@ -320,3 +320,18 @@ class StepPrinter(LatexPrinter):
             return super()._print_Pow(expr)
         finally:
             self._round_integers = saved
+
+
+def _over_letters(args: tuple[sympy.Expr, ...]) -> list[sympy.Expr]:
+    """A product's factors; beside a fraction's number, a factor that is itself a product
+    over letters taken apart, so that the product is one fraction: m u² (kλ + 1)²/(2k),
+    never (m u² (kλ + 1)²/k)/2."""
+    if not any(a.is_Rational and a.q != 1 for a in args):
+        return list(args)
+    out: list[sympy.Expr] = []
+    for a in args:
+        over = isinstance(a, sympy.Mul) and any(
+            isinstance(f, sympy.Pow) and f.exp.is_negative and f.base.free_symbols for f in a.args
+        )
+        out += _over_letters(a.args) if over else [a]
+    return out

@@ -37,7 +37,7 @@ def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     """The line's LaTeX (without delimiters) and its tag."""
     printed = _printed_sides(eqn, style, extra)
     texts = [join_terms(terms) for terms in printed]
-    if line_unit(eqn, style)[1]:
+    if _bracketed(eqn, style, printed):
         texts[-1] = r"\left(" + texts[-1] + r"\right)"
     body = " = ".join(texts) + unit_latex(eqn, style)
     if eqn.boxed:
@@ -45,6 +45,12 @@ def latex_eqn(eqn: Eqn, style: Style, extra: int = 1) -> tuple[str, str | None]:
     if eqn.implies:
         body = IMPLIES + body
     return body, eqn.tag
+
+
+def _bracketed(eqn: Eqn, style: Style, printed: list[list[tuple[str, str]]]) -> bool:
+    """Whether the last side goes in brackets before its unit: a sum, however it came to be
+    printed as one ((1.88 + 1.88 e_floor) N·s, never 1.88 + 1.88 e_floor N·s)."""
+    return bool(unit_latex(eqn, style)) and (line_unit(eqn, style)[1] or len(printed[-1]) > 1)
 
 
 IMPLIES = r"\Rightarrow\quad "
@@ -80,9 +86,10 @@ def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: fl
     if len(sides) < 2:
         return ()
     unit = unit_latex(eqn, style)
+    bracket = _bracketed(eqn, style, sides)
     if unit:
         sign, text = sides[-1][-1]
-        sides[-1][-1] = (sign, text + unit)
+        sides[-1][-1] = (sign, text + (")" if bracket else "") + unit)
     room = width - reserve - (_BOX_PT if eqn.boxed else 0.0)
     lhs = (IMPLIES if eqn.implies else "") + join_terms(sides[0])
     if width_pt(lhs + " = " + " = ".join(join_terms(t) for t in sides[1:])) <= room:
@@ -98,7 +105,8 @@ def latex_rows(eqn: Eqn, style: Style, width: float, extra: int = 1, reserve: fl
                 chunks.append([term])
             else:
                 chunks[-1] = trial
-        rows.append(Row(lhs if not rows else "", "=", join_terms(chunks[0])))
+        opening = "(" if bracket and terms is sides[-1] else ""
+        rows.append(Row(lhs if not rows else "", "=", opening + join_terms(chunks[0])))
         rows.extend(Row("", chunk[0][0], _continued(chunk), continued=True) for chunk in chunks[1:])
     return tuple(rows)
 

@@ -126,9 +126,11 @@ class _Formulas:
             self.line(line)
         if solution:
             for st in data["stages"]:
+                st["heading"] = self.parts(st.get("heading") or [("text", st["title"])])
                 for g in st["givens"]:
                     self.given(g)
                 for stage in st["stages"]:
+                    stage["heading"] = self.parts(stage.get("heading") or [("text", stage["title"])])
                     self.blocks(stage["blocks"])
                 st["carried"] = self.parts([("math", c) for c in st["carried"]])
                 self.blocks(st["blocks"])

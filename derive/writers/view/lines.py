@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import re
+from collections.abc import Collection
 from typing import Any
 
 from derive.steps.model import Eqn, Math
+from derive.symbols import latex_name
 from derive.writers.printing import IMPLIES, Row, Style, block_style, latex_eqn, latex_inline, latex_rows
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.width import width_pt
@@ -54,3 +57,26 @@ def blocks_view(blocks_in: tuple, style: Style, layout: Layout = GITHUB) -> list
             text = [("math", latex_inline(t.expr, style)) if isinstance(t, Math) else ("text", t) for t in block.text]
         blocks.append({"text": text, "lines": lines})
     return blocks
+
+
+#: A word that may be a symbol's name: letters, an underscore, letters or digits (e_floor, m_A),
+#: or one small letter but the article "a" (e, u).
+_NAME = re.compile(r"(?<![\w\\])([A-Za-z]+_[A-Za-z0-9]+|[b-z])(?![\w'’])")
+
+
+def heading_parts(title: str, names: Collection[str]) -> list[tuple[str, str]]:
+    """A heading's text and mathematics: each of the page's symbol names in it (``names``)
+    typeset as the page writes that symbol ("Solve for e_floor" -> "Solve for $e_{\\mathrm{floor}}$"),
+    so that no raw name reaches a heading; other words as they are."""
+    out: list[tuple[str, str]] = []
+    at = 0
+    for m in _NAME.finditer(title):
+        if m[1] not in names:
+            continue
+        if m.start() > at:
+            out.append(("text", title[at : m.start()]))
+        out.append(("math", latex_name(m[1])))
+        at = m.end()
+    if at < len(title) or not out:
+        out.append(("text", title[at:]))
+    return out

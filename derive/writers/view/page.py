@@ -14,13 +14,12 @@ from typing import Any
 import sympy
 
 from derive.problem.units import latex_unit
-from derive.steps.chain import own_names
 from derive.steps.model import Solution
 from derive.symbols import latex_name, relabel, symbol
 from derive.writers.printing import Style, exact_latex, latex_eqn
 from derive.writers.targets import GITHUB, Layout
 from derive.writers.view.givens import given_latex, letter_units, result_units, source_parts, statement, worked_out
-from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
+from derive.writers.view.lines import ANSWER_MARK, blocks_view, heading_parts, line_view
 from derive.writers.view.problem import convention, impact_view
 
 
@@ -55,7 +54,6 @@ def view(
         derived=worked_out(p, solution.values),
     )
     names = [a.name for a in solution.answers]
-    find = p.question or ("The quantities " + ", ".join(names).replace("_", " ") + "." if names else "")
     return {
         "answer_names": _answer_names(solution, names),
         "title": p.title,
@@ -64,7 +62,7 @@ def view(
         "source_parts": source_parts(p.source),
         "statement": statement(p, style),
         "givens": _givens(solution, style),
-        "find": [("text", find)],
+        "find": [("text", p.question)] if p.question or not names else _quantities(names),
         "stages": _stages(solution, style, layout, figures),
         "answers": _answers(solution, style, layout),
         "plot_svg": "",
@@ -74,14 +72,41 @@ def view(
     }
 
 
-def _stage(number: int, title: str, **parts: Any) -> dict[str, Any]:
-    """A stage of the view: an impact's (``stages``, ``givens``, ``carried``), or any other's ``blocks``."""
-    return {"number": number, "title": title, "stages": [], "givens": [], "carried": [], "blocks": [], **parts}
+def _stage(number: int, title: str, names: frozenset[str] = frozenset(), **parts: Any) -> dict[str, Any]:
+    """A stage of the view: an impact's (``stages``, ``givens``, ``carried``), or any other's
+    ``blocks``; ``heading`` its title as text and mathematics, each of the page's ``names`` in
+    it typeset (Solve for $e_{\\mathrm{floor}}$), ``title`` the words as the file or stage says them."""
+    heading = heading_parts(title, names)
+    return {
+        "number": number,
+        "title": title,
+        "heading": heading,
+        "stages": [],
+        "givens": [],
+        "carried": [],
+        "blocks": [],
+        **parts,
+    }
+
+
+def _quantities(names: list[str]) -> list[tuple[str, str]]:
+    """Find, where the file asks no question: "The quantities $v_{1}$, $e_{\\mathrm{floor}}$."."""
+    out: list[tuple[str, str]] = [("text", "The quantities ")]
+    for i, name in enumerate(names):
+        out += [("text", ", ")] if i else []
+        out.append(("math", latex_name(name)))
+    return [*out, ("text", ".")]
+
+
+def _names(sol: Solution) -> frozenset[str]:
+    """The names of a chain's quantities: its givens and every value its stages found."""
+    return frozenset(g.name for g in sol.problem.givens) | frozenset(str(k) for k in sol.values)
 
 
 def _stages(sol: Solution, style: Style, layout: Layout, figures: bool) -> list[dict[str, Any]]:
     """Each stage of the chain printed: an impact as its own view, any other stage as blocks."""
     stages = []
+    names = _names(sol)
     falls: dict[int, bool] = {}
     if figures:  # the figure modules only where a page draws one (JSON draws none)
         from derive.writers.figure import chain_falls
@@ -90,7 +115,7 @@ def _stages(sol: Solution, style: Style, layout: Layout, figures: bool) -> list[
     for st in sol.stages:
         stage_style = style if st.values is None else replace(style, values=st.values)
         if st.part is None:
-            stages.append(_stage(st.number, st.title, blocks=blocks_view(st.blocks, stage_style, layout)))
+            stages.append(_stage(st.number, st.title, names, blocks=blocks_view(st.blocks, stage_style, layout)))
             continue
         v = impact_view(
             st.part,
@@ -103,13 +128,13 @@ def _stages(sol: Solution, style: Style, layout: Layout, figures: bool) -> list[
             falls=falls.get(st.number, False),
             known=sol.values,
         )
-        renamed = {old.name for old in own_names(st.part.problem)}  # e = e_wall: the page says e_wall
+        renamed = set(st.part.names)  # e = e_wall, v_A1 = u_B: the page says e_wall, u_B
         for g, shown in zip(st.part.problem.givens, v["givens"], strict=True):
             if g.name in renamed:
                 shown["latex"] = shown["latex"].split(" = ", 1)[1]
         own = replace(stage_style, labels=st.part.problem.labels)  # v_A2 of a stage that calls A "B"
         carried = [latex_eqn(eqn, own)[0] for eqn in st.carried]
-        stages.append(_stage(st.number, st.title, stages=v["stages"], givens=v["givens"], carried=carried))
+        stages.append(_stage(st.number, st.title, names, stages=v["stages"], givens=v["givens"], carried=carried))
     return stages
 
 
@@ -191,7 +216,7 @@ def _answer_names(sol: Solution, names: list[str]) -> list[tuple[str, str]]:
         if name in said:
             slot_tex, title = said[name]
             out += [("text", "; " if out else "Where "), ("math", latex_name(name)), ("text", " is ")]
-            out += [("math", slot_tex), ("text", f" after {title}")]
+            out += [("math", slot_tex), ("text", " after "), *heading_parts(title, _names(sol))]
     return [*out, ("text", ".")] if out else []
 
 
@@ -212,10 +237,15 @@ def problem_view(
         if not st["title"]:
             stages += st["stages"]
         elif not st["stages"]:
-            stages.append({"number": st["number"], "title": st["title"], "blocks": st["blocks"], **_NO_FIGURE})
+            stages.append({**{k: st[k] for k in ("number", "title", "heading", "blocks")}, **_NO_FIGURE})
         else:
             subs = [
-                {**sub, "number": f"{st['number']}.{sub['number']}", "title": f"{st['title']}: {sub['title']}"}
+                {
+                    **sub,
+                    "number": f"{st['number']}.{sub['number']}",
+                    "title": f"{st['title']}: {sub['title']}",
+                    "heading": [*st["heading"], ("text", f": {sub['title']}")],
+                }
                 for sub in st["stages"]
             ]
             subs[0] = {
@@ -232,6 +262,7 @@ def problem_view(
         answer = {
             "number": len(data["stages"]) + 1,
             "title": "Answer",
+            "heading": [("text", "Answer")],
             "blocks": [{"text": [], "lines": data["answers"]}],
         }
         stages.append({**answer, **_NO_FIGURE})
@@ -258,7 +289,7 @@ def conventions(data: dict[str, Any]) -> list[tuple[str, str]]:
             kind, first = parts[0]
             if kind == "text" and first.startswith("Take "):
                 parts[0] = (kind, "take " + first[len("Take ") :])
-            parts.insert(0, ("text", f"{st['title']}: "))
+            parts[:0] = [*st["heading"], ("text", ": ")]
         out += ([("text", " ")] if out else []) + parts
     return out
 

@@ -161,7 +161,8 @@ def _stages(
     stages = []
     for stage in solution.stages:
         blocks = blocks_view(stage.blocks, style, layout)
-        entry = {"number": stage.number, "title": stage.title, "blocks": blocks, "figure_svg": "", "figure_tikz": ""}
+        entry = {"number": stage.number, "title": stage.title, "heading": [("text", stage.title)], "blocks": blocks}
+        entry.update(figure_svg="", figure_tikz="")
         if figures and stage.figure is not None:
             from derive.writers import figure
 
