@@ -162,3 +162,23 @@ def test_the_same_mistake_again_is_not_counted_as_a_further_slip() -> None:
     report = derive.check(derive.solve(derive.load("hibbeler-15-58-suitcases")), derivation=work)
     last = [i for i in report.items if i.kind == "line"][-1]
     assert last.status == "carried" and "the slip in line 1:" in last.message
+
+
+def test_a_wrong_number_with_a_compound_unit_after_it_is_carried() -> None:
+    # OpenStax 8.5: a 0.150 kg puck at 35.0 m/s is caught by a 70.0 kg goalie (e = 0).
+    # p = 0.150 x 35.0 = 5.25 kg m/s; written 52.5 kg m/s (a factor 10), the lines after
+    # are right given it: 70.15 v_A2 = 52.5, v_A2 = 52.5/70.15 = 0.748 (truly 0.0748).
+    work = "p = 0.150 x 35.0 = 52.5 kg m/s\n70.15 v_A2 = 52.5\nv_A2 = 52.5/70.15 = 0.748 m/s\n"
+    found = lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_the_common_velocity_after_a_plastic_impact_carries_a_momentum_slip() -> None:
+    # OpenStax 8.5 again, V the one velocity of puck and goalie after (e = 0). A slip in the
+    # momentum, 0.150 x 35.0 = 52.5 (for 5.25): 70.15 V = 52.5 gives V = 0.748 (truly 0.0748),
+    # and both move at it: KE after = ½(70.15)(0.748)^2 = 19.6 J (truly 0.196) is carried.
+    work = "0.150 x 35.0 = 52.5\n70.15 V = 52.5\nV = 0.748\nKE after = 1/2 (70.15)(0.748)^2 = 19.6\n"
+    found = lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == found[4][0] == "carried"

@@ -360,6 +360,9 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
     left = set().union(*(_placeholders(e) for e in exprs))
+    if left and not r.defines and len(exprs) >= 3 and left == _placeholders(exprs[0]) and exprs[0].is_Symbol:
+        # "p = 0.150 x 35.0 = 5.25": a name of the student's own that nothing places, and its working
+        return _resolved(Read(r.number, r.written, r.sides[1:], r.tag, r.exprs[1:]), mapping)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")

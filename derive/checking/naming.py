@@ -241,7 +241,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if u_used:
         out["v"] = after["A"]
     if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
-        out["V"] = out["v_f"] = out["v_2"] = after["A"]
+        out["V"] = out["v_f"] = out["v_2"] = _together(ctx, after["A"], after["B"])
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
@@ -263,6 +263,16 @@ def _components(nm) -> dict[str, sympy.Expr]:
                 out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
                 out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
     return out
+
+
+def _together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) -> sympy.Expr | None:
+    """The one velocity of two bodies that move off together (e = 0): the velocity of their
+    centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
+    when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
+    if ctx.problem.fixed_B or a is None or b is None:
+        return a
+    m = ctx.model
+    return (m.m_A * a + m.m_B * b) / (m.m_A + m.m_B)
 
 
 def _post(ctx: Context, body: str) -> sympy.Expr | None:

@@ -65,6 +65,16 @@ _UNIT_END = re.compile(
     r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
+
+#: A momentum's unit after a number: ``60 kg m/s``, ``12 kg m s^-1``, ``3 kg·m/s``.
+_MOMENTUM_UNIT = re.compile(r"(?<=[\d.)\s])\s*kg\s*[·*]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$")
+
+
+def without_unit(side: str) -> str:
+    """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
+    return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
+
+
 #: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
 _TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
@@ -307,7 +317,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
     text = _UNIT_BRACKET.sub("", words_after(text))
-    sides = tuple(_UNIT_END.sub("", s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
+    sides = tuple(without_unit(s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
     if any(not re.search(r"[A-Za-z0-9]", s) for s in sides):  # "\text{angle with …} = …": words, dropped
         sides = tuple(s for s in sides if re.search(r"[A-Za-z0-9]", s))
         if len(sides) < 2:
