@@ -182,3 +182,43 @@ def test_the_common_velocity_after_a_plastic_impact_carries_a_momentum_slip() ->
     found = lines("openstax-cp-8-5-goalie-catches-puck", work)
     assert found[1][:2] == ("wrong", "arithmetic")
     assert found[2][0] == found[3][0] == found[4][0] == "carried"
+
+
+def test_a_slip_in_a_chain_stage_that_finds_a_mass_is_named() -> None:
+    # OCR M2 June 2011 as a chain: A (3 m/s) and B (0.2 kg, 1.5 m/s toward A) collide; A goes
+    # on at 2, B back at 2.9. Momentum, B's velocity -1.5: 3m_A - 0.3 = 2m_A + 0.58, m_A = 0.88.
+    # With B's sign lost: 3m_A + 0.3 = 2m_A + 0.58 gives m_A = 0.28 (carried).
+    work = "e = (2.9 - 2)/(3 + 1.5) = 0.2\n3 m_A + 0.2(1.5) = 2 m_A + 0.2(2.9)\nm_A = 0.58 - 0.3 = 0.28\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+
+
+def test_a_chain_line_worked_from_a_wrong_number_is_carried_not_correct() -> None:
+    # OCR M2 June 2015 as a chain: 0.2 kg thrown down at 5 m/s from 1.6 m. v_1^2 = 25 + 31.36
+    # = 56.36; written 36.36 (a slip), v_1 = 6.03 is carried, and so is the kinetic energy at
+    # the ground worked from it, ½(0.2)(6.03^2) = 3.64 (right as arithmetic; truly 5.64).
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 36.36\nv_1 = 6.03\nKE at the ground = 1/2 (0.2)(6.03^2) = 3.64\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "wrong"
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_weight_used_as_the_mass_in_a_chain_slide_is_named_and_d_is_the_distance() -> None:
+    # Hibbeler 15-58 as a chain: B (10 lb) leaves the impact at 15.33 ft/s and slides on a floor
+    # with mu = 0.4: ½(10/32.2)(15.33^2) = 0.4(10) d gives d = 9.13 ft. With the weight as the
+    # mass in the kinetic energy: 4d = 0.5(10)(235.0) = 1175.0, d = 293.8 ft (carried); the
+    # friction 0.4(10) = 4 lb is a force, rightly the weight. "d" is the chain's one d, d_B.
+    work = "friction = 0.4(10) = 4 lb\n4 d = 0.5(10)(15.33^2)\nd = 1175/4 = 293.8 ft\n"
+    found = lines("chain-hibbeler-15-58-suitcases", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "weight_as_mass")
+    assert found[3][0] == "carried"
+
+
+def test_a_chain_number_written_as_an_integer_is_right_at_its_figures() -> None:
+    # The same slide worked right: d = 15.33^2/(2 x 0.4 x 32.2) = 235.0/25.76 = 9.123, and as a
+    # whole number of feet, 9 (9.126 at one figure); 10 is not.
+    assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 9\n")[1][0] == "correct"
+    assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 10\n")[1][0] == "wrong"

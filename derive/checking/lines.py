@@ -27,7 +27,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
-from derive.checking.numeric import listed, number_of
+from derive.checking.numeric import decimals, listed, number_of
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
 from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
@@ -135,7 +135,7 @@ class Trace:
         return self._slip(line, pairs, answer)
 
     def _wrote_wrong(self, line: Line) -> None:
-        self.wrong_values |= _decimals(line.sides[-1:])
+        self.wrong_values |= decimals(line.sides[-1:])
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
 
     def _own_value(self, line: Line) -> None:
@@ -165,7 +165,7 @@ class Trace:
         earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct."""
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             return False
-        return bool(_decimals(line.sides[:-1]) & self.wrong_values)
+        return bool(decimals(line.sides[:-1]) & self.wrong_values)
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
@@ -434,8 +434,3 @@ class Trace:
         return Item(
             "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
         )
-
-
-def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
-    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
-    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))

@@ -62,7 +62,7 @@ _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\
 _LEAD = re.compile(r"^\s*(?:[^=:()]*:\s*|[-*+•]\s+|\d{1,2}[.)]\s+)")
 _UNIT_END = re.compile(
     r"(?:(?<=[\d.)\s°])\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1|m\s*s\^?-1|ft/s|km/h|mi/h|mph"
-    r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    r"|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*\s]?lb|slug|ft|lb)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 
