@@ -349,3 +349,12 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
     work = "A's initial velocity = 6 m/s\nA's final velocity = -1.2 m/s\nB's velocity after = 3.6 m/s\n"
     assert statuses(str(problem), work) == ["correct"] * 3
     assert statuses(str(problem), "A's final velocity = 1.2 m/s") == ["wrong"]
+
+
+def test_v_a_as_the_magnitude_of_its_components_is_the_speed_in_an_oblique_impact() -> None:
+    # OCR M3 June 2007 (mark scheme: a = -4.5, b = 6, speed of A 12.8): along the line of
+    # centres v_A, v_B are the n components; A keeps 12 across it, so v_A = sqrt(4.5^2 + 12^2)
+    # = sqrt(164.25) = 12.8 is A's speed. sqrt(4.5^2 + 6^2) = 7.5 is not A's speed.
+    work = "4(9) + 3(-12) = 4 v_A + 3 v_B\nv_B - v_A = 0.5(9 + 12) = 10.5\nv_A = -4.5, v_B = 6\n"
+    assert statuses("ocr-m3-2007-oblique-sin-alpha-0p8", work + "v_A = sqrt(4.5^2 + 12^2) = 12.8\n") == ["correct"] * 4
+    assert statuses("ocr-m3-2007-oblique-sin-alpha-0p8", work + "v_A = sqrt(4.5^2 + 6^2) = 7.5\n")[-1] == "wrong"

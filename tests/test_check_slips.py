@@ -222,3 +222,27 @@ def test_a_chain_number_written_as_an_integer_is_right_at_its_figures() -> None:
     # whole number of feet, 9 (9.126 at one figure); 10 is not.
     assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 9\n")[1][0] == "correct"
     assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 10\n")[1][0] == "wrong"
+
+
+def test_a_speed_near_the_true_one_but_worked_from_a_carried_component_is_carried() -> None:
+    # OCR M3 June 2007: A (15 m/s at alpha to the line of centres, cos alpha = 0.6) keeps its
+    # t component 12; along the line 4(9) + 3(-12) = 0 = 4v_A + 3v_B, v_B - v_A = 10.5, so
+    # 7v_A = -31.5 and v_A = -4.5. Worked as -4.2 (a slip), A's speed sqrt(4.2^2 + 12^2) =
+    # sqrt(161.64) = 12.7 is carried, though the true sqrt(164.25) = 12.8 is one off in its
+    # last digit; a speed the slip does not move (4.5^2 for (-4.5)^2) is correct (as s14's
+    # energy lost from the speeds).
+    work = (
+        "4(9) + 3(-12) = 4 v_A + 3 v_B\nv_B - v_A = 0.5(9 + 12) = 10.5\n7 v_A = -31.5\n"
+        "v_A = -31.5/7 = -4.2\nv_A = sqrt(4.2^2 + 12^2) = 12.7\n"
+    )
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert found[1][0] == found[2][0] == found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == "carried"
+    reversed_ = (
+        "u_A = 15(0.6) = 9, u_B = -12\n4(9) + 3(-12) = 4 v_A + 3 v_B\nv_A - v_B = 0.5(9 + 12) = 10.5\n"
+        "v_A = 4.5\nv_A = sqrt(4.5^2 + 12^2) = 12.8\n"
+    )
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", reversed_)
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    assert found[4][0] == "carried" and found[5][0] == "correct"

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import itertools
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy
 
@@ -30,6 +30,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.numeric import number_of
+from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
@@ -80,11 +81,28 @@ def read_lines(
     _, mapping, inferred, s = max(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
-    lines = [_resolved(r, mapping) for r in raw]
+    lines = [_magnitude(ctx, _resolved(r, mapping)) for r in raw]
     said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
     return lines, _notes(meanings, declared, inferred, s, sign) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     )
+
+
+#: A side that is the magnitude of a vector from its components: ``sqrt(0.3^2 + 0.173^2)``.
+_MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){2}).*\)\s*$")
+
+
+def _magnitude(ctx: Context, r: Read) -> Read:
+    """``v_B = sqrt(0.3^2 + 0.173^2)`` in an oblique impact: the student's ``v_B``, read
+    elsewhere as B's n component after (``m u_A + m u_B = m v_A + m v_B``), is here the
+    magnitude of its components, B's speed."""
+    if not ctx.problem.oblique or not r.own_names or not r.exprs or len(r.sides) < 2:
+        return r
+    nm, speeds = ctx.model.nm, _speeds(ctx)
+    body = next((b for b in "AB" if r.exprs[0] in (getattr(nm, f"{b}2n"), -getattr(nm, f"{b}2n"))), None)
+    if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
+        return r
+    return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
 
 
 def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:

@@ -20,6 +20,7 @@ from decimal import Decimal
 import sympy
 
 from derive.checking import mistakes, slipnames
+from derive.checking.carrying import Carrying
 from derive.checking.context import DEG, Context
 from derive.checking.entries import Entry
 from derive.checking.equation import judge, relation
@@ -27,7 +28,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.mistakes import EQUATION_TITLES
 from derive.checking.number import number_item
-from derive.checking.numeric import decimals, listed, number_of
+from derive.checking.numeric import listed, number_of
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
 from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures, written_right
@@ -69,7 +70,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     return merged([i for i in items if i is not None]), notes
 
 
-class Trace:
+class Trace(Carrying):
     """The state of a derivation read so far: the student's equations and their solution."""
 
     def __init__(self, ctx: Context) -> None:
@@ -133,39 +134,6 @@ class Trace:
             return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
-
-    def _wrote_wrong(self, line: Line) -> None:
-        self.wrong_values |= decimals(line.sides[-1:])
-        self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
-
-    def _own_value(self, line: Line) -> None:
-        """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
-        left = line.exprs[0] if line.exprs else None
-        m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
-        if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
-            self.own[left] = sympy.Rational(m.group(1) + m.group(2))
-        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
-            last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
-            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
-                self.own[left] = last
-
-    def _with_own_values(self, line: Line) -> bool:
-        """Whether ``line`` holds with the values the student got wrong earlier put in."""
-        if not self.own or not line.exprs:
-            return False
-        d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
-        lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
-        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
-        if exprs == line.exprs:
-            return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
-
-    def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
-        """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
-        earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct."""
-        if any(p.difference.free_symbols & set(self.U) for p in pairs):
-            return False
-        return bool(decimals(line.sides[:-1]) & self.wrong_values)
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
@@ -377,22 +345,6 @@ class Trace:
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for (:func:`~.worlds.closest`)."""
         return closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
-
-    def _carries_number(self, line: Line) -> bool:
-        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
-        assert self.wrong_number is not None
-        wrong, right = self.wrong_number
-        value = number_of(right.xreplace(self.pts[0]))
-        if value is None:
-            return False
-        try:
-            written = sympy.Rational(wrong.lstrip("+-"))
-        except (TypeError, ValueError):
-            return False
-        exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
-        if exprs == line.exprs:
-            return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
 
     def _slips_named(self) -> str:
         numbers = [str(n) for n in dict.fromkeys(self.slips)]
