@@ -358,3 +358,19 @@ def test_v_a_as_the_magnitude_of_its_components_is_the_speed_in_an_oblique_impac
     work = "4(9) + 3(-12) = 4 v_A + 3 v_B\nv_B - v_A = 0.5(9 + 12) = 10.5\nv_A = -4.5, v_B = 6\n"
     assert statuses("ocr-m3-2007-oblique-sin-alpha-0p8", work + "v_A = sqrt(4.5^2 + 12^2) = 12.8\n") == ["correct"] * 4
     assert statuses("ocr-m3-2007-oblique-sin-alpha-0p8", work + "v_A = sqrt(4.5^2 + 6^2) = 7.5\n")[-1] == "wrong"
+
+
+@pytest.mark.parametrize(
+    ("line", "declared"),
+    [
+        ("Let $p$, $q$ be the speeds of P and Q after the impact.", "p is v_A2, q is v_B2"),
+        ("p = velocity of Q after, q = velocity of P after", "p is v_B2, q is v_A2"),
+        ("a and b are the velocities of the m and the 3m particle after", "a is v_B2, b is v_A2"),
+        ("Let s and r denote the velocities of A and B before the collision", "s is v_A1, r is v_B1"),
+    ],
+)
+def test_names_declared_in_words(line: str, declared: str) -> None:
+    # CIE 2012: A has mass 3m, B mass m (a direct impact); the words name each body by its
+    # letter, P and Q, or its mass.
+    notes = report("cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost", line + "\nm_A = 3m\n").notes
+    assert f"Declared: {declared}." in notes

@@ -246,3 +246,23 @@ def test_a_speed_near_the_true_one_but_worked_from_a_carried_component_is_carrie
     found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", reversed_)
     assert found[3][:2] == ("wrong", "restitution_reversed")
     assert found[4][0] == "carried" and found[5][0] == "correct"
+
+
+def test_names_declared_in_words_are_read_and_energy_conserved_is_carried_through_a_factorised_quadratic() -> None:
+    # Byju's: 4 kg at 12 m/s catches 8 kg at 4 m/s, e = 0.5. The student names the velocities
+    # after in words, then conserves kinetic energy: x + 2y = 20 and x^2 + 2y^2 = 144 + 32 = 176
+    # give 6y^2 - 80y + 224 = 0, i.e. 3y^2 - 40y + 112 = (3y - 28)(y - 4) = 0, y = 28/3 = 9.33
+    # (y = 4 is B before), x = 20 - 2(9.33) = 1.33: all carried (truly x = 4, y = 8). Read
+    # without the words, x = 12 and y = 4 (the velocities before) would satisfy every line.
+    work = (
+        "Let x and y be the velocities of the 4 kg and the 8 kg ball after the collision.\n"
+        "4(12) + 8(4) = 4x + 8y\n"
+        "1/2 (4)(12^2) + 1/2 (8)(4^2) = 1/2 (4) x^2 + 1/2 (8) y^2\n"
+        "0 = 3y^2 - 40y + 112 = (3y - 28)(y - 4)\n"
+        "y = 28/3 = 9.33\n"
+        "x = 20 - 2(9.33) = 1.33\n"
+    )
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "energy_conserved")
+    assert found[4][0] == found[5][0] == found[6][0] == "carried"

@@ -325,9 +325,58 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         m = _DECLARE.match(line)
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
+        out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign
         elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
             sign = sign_of(line)
     return out, sign
+
+
+#: Names declared in words: "let x, y be the speeds of P and Q after the collision", "x and y are
+#: the velocities of A and B after", "x = velocity of A after".
+_NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
+_WHAT = r"(?:be|are|is|as|=|denote|represent|for)\s+(?:the\s+)?(?:final\s+)?(?:speeds?|velocit(?:y|ies))\s+of\s+"
+_PAIR_WORDS = re.compile(
+    rf"\b{_NAME_WORD}\s*(?:,|and)\s*{_NAME_WORD}\s+{_WHAT}(.{{1,30}}?)\s+and\s+(.{{1,30}}?)\s+(after|before)\b", re.I
+)
+_ONE_WORDS = re.compile(rf"\b{_NAME_WORD}\s*{_WHAT}(.{{1,30}}?)\s+(after|before)\b", re.I)
+_BODY_WORDS = re.compile(r"\b(?:the|sphere|ball|particle|disc|body|puck|car|trolley)s?\b", re.I)
+
+
+def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """The names a line declares in words (``Let $x$, $y$ be the speeds of P and Q after the
+    collision``), for a direct impact: each the velocity of the body it names (by its letter,
+    P and Q for A and B, or its mass: "the 3m particle"), after or before."""
+    if ctx.problem.oblique:
+        return {}
+    plain = re.sub(r"\\[A-Za-z]+\{[^{}]*\}|\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    found = [((m[1], m[3]), (m[2], m[4]), m[5]) for m in _PAIR_WORDS.finditer(plain)]
+    found += [((m[1], m[2]), None, m[3]) for m in _ONE_WORDS.finditer(plain)]
+    for first, second, when in found:
+        for name, body in (first, second) if second else (first,):
+            b = _body(body, ctx)
+            key = f"v_{b}{'2' if when.lower() == 'after' else '1'}"
+            if b and key in names:
+                out.setdefault(name.replace("{", "").replace("}", ""), names[key][0])
+    return out
+
+
+def _body(words: str, ctx: Context) -> str:
+    """ "A", "B" or "" for the words that name a body: its letter, P or Q, first or second, its mass."""
+    w = re.sub(r"(?<=\d)(?:kg|g|lb)$", "", re.sub(r"\s+", "", _BODY_WORDS.sub(" ", words)))  # the 4 kg ball
+    a, b = ctx.problem.labels
+    if w in (a, "A", "P", "first"):
+        return "A"
+    if w in (b, "B", "Q", "second"):
+        return "B"
+    masses = {}
+    for g in ctx.problem.givens:
+        if g.name in ("m_A", "m_B"):
+            x = g.value if g.value is not None else getattr(g, "definition", None)
+            masses[g.name[-1]] = re.sub(r"[\s*]", "", str(x))
+    hits = [k for k, v in masses.items() if v == w.replace("*", "")]
+    return hits[0] if len(hits) == 1 else ""

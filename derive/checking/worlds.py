@@ -52,8 +52,17 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         scale = max(abs(left), abs(right))
         far = abs(left - right) > 2 * p.tol * scale * BOUNDARY  # two units in the last place is not the value
         if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not at_figures(p, left, right):
-            return False
+            return identity(p)
     return True
+
+
+def identity(p: Pair) -> bool:
+    """Whether the two sides of ``p`` are the same expression (``6x^2 - 8ux + 2u^2 =
+    2(3x - u)(x - u)``): it holds wherever they are both 0, where no tolerance can say so."""
+    try:
+        return sympy.expand(p.difference) == 0
+    except (TypeError, ValueError, RecursionError):
+        return False
 
 
 def three_figures(sides: tuple[str, ...], data: set) -> str:
