@@ -266,3 +266,24 @@ def test_names_declared_in_words_are_read_and_energy_conserved_is_carried_throug
     assert found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "energy_conserved")
     assert found[4][0] == found[5][0] == found[6][0] == "carried"
+
+
+def test_names_solved_for_are_unknowns_not_the_velocities_before() -> None:
+    # OCR M2 2014: 2m at 4 m/s, 3m at 2 m/s toward it, e = 0.4; a, b the velocities after.
+    # With the masses swapped, 3(4) + 2(-2) = 3a + 2b would hold for a = 4, b = -2 (the
+    # velocities before) -- but a and b are then solved for (a = 0.64), so they are unknowns:
+    # the line is the slip, b - a = 0.4(6) = 2.4 is right, 5a + 4.8 = 8 gives a = 0.64 and
+    # b = 3.04 (carried; truly 2a + 3b = 2: a = -1.04, b = 1.36).
+    work = "3(4) + 2(-2) = 3a + 2b => 3a + 2b = 8\nb - a = 0.4(4 + 2) = 2.4\n3a + 2(a + 2.4) = 8\na = 0.64, b = 3.04\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[1][:2] == ("wrong", "masses_swapped")
+    assert found[2][0] == "correct"
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_vector_after_in_i_and_j_is_read_with_v_for_after() -> None:
+    # OCR M3 June 2007: A after is -4.5i + 12j (mark scheme a = -4.5), speed 12.8; v_A's
+    # components are A's after, as v_A is, where no u names are used.
+    work = "4a + 3b = 0\nb - a = 10.5\na = -4.5\nv_A = -4.5i + 12j\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4

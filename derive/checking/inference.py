@@ -229,9 +229,17 @@ def _infer(
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
+    solved, known = _solved_for(raw), _knowns(ctx)
     for group in groups:
+        combos = [
+            c
+            for c in itertools.product(cands, repeat=len(group))
+            if not any(p in solved and e in known for p, (_w, e) in zip(group, c, strict=True))
+        ]
+        if not combos:
+            continue
         best = max(
-            itertools.product(cands, repeat=len(group)),
+            combos,
             key=lambda combo: (
                 _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
                 + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
@@ -250,6 +258,31 @@ def _infer(
     _by_analogy(unknown, mapping, inferred, {c[1]: c[0] for c in cands})
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+
+
+def _solved_for(raw: list[Read]) -> set[sympy.Symbol]:
+    """The student's names solved for: met first in a relation with more in it (``3a + 4b =
+    -21``), then alone = a number (``a = -9``). Such a name is an unknown, never a velocity
+    before the impact or a given (which would make ``3(9) + 4(-12) = 3a + 4b`` say nothing)."""
+    seen: set[sympy.Symbol] = set()
+    out: set[sympy.Symbol] = set()
+    for r in raw:
+        if r.exprs is None:
+            continue
+        first = r.exprs[0]
+        if first in seen and len(r.exprs) >= 2 and not _placeholders(r.exprs[-1]) and first.is_Symbol:
+            out.add(first)
+        alone = first.is_Symbol and len(r.exprs) >= 2 and not any(_placeholders(e) for e in r.exprs[1:])
+        if not alone:
+            seen |= set().union(*(_placeholders(e) for e in r.exprs))
+    return out
+
+
+def _knowns(ctx: Context) -> set[sympy.Expr]:
+    """What is known before the impact: the components before and the velocities given."""
+    nm = ctx.model.nm
+    out = {c for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None}
+    return out | {g.symbol for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY}
 
 
 def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: dict) -> None:

@@ -222,8 +222,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         if oblique:
             for c in "nt":
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
-                if u_used:
-                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
+                if u_used or (used is not None and f"v_{body}p" not in used and f"v_{body}{c}p" not in used):
+                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is)
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
