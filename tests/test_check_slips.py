@@ -287,3 +287,26 @@ def test_a_vector_after_in_i_and_j_is_read_with_v_for_after() -> None:
     work = "4a + 3b = 0\nb - a = 10.5\na = -4.5\nv_A = -4.5i + 12j\n"
     found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
     assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+
+
+def test_one_t_velocity_for_both_bodies_is_the_systems_t_momentum_and_carried() -> None:
+    # OCR M3 June 2007: A (4 kg) has t component 12, B (3 kg) 0; each keeps its own. With the
+    # system's t momentum, 4(12) + 3(0) = 7 v_t gives one t velocity 48/7 = 6.86 for both:
+    # the first line is the slip (system_t), the second carried.
+    work = "4(12) + 3(0) = 7 v_t\nv_t = 48/7 = 6.86 = v_At = v_Bt\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert found[1][:2] == ("wrong", "system_t")
+    assert found[2][0] == "carried"
+
+
+def test_b_sign_in_the_approach_after_an_earlier_slip_is_named_with_the_students_value() -> None:
+    # OCR MEI 2023 (A moves back at 0.2 m/s): 0.5(6) + 2(2) = 0.5(-0.2) + 2v, 7 = -0.1 + 2v,
+    # 2v = 7.1 (written 7.3: a slip), v = 3.65 (carried). Both move forward, so the approach
+    # is 6 - 2 = 4; with B's sign lost it is 6 + 2: e = (3.65 + 0.2)/(6 + 2) = 0.481 is that
+    # mistake, worked from the student's own 3.65 (truly e = 3.75/4 = 0.9375).
+    work = "0.5(6) + 2(2) = 0.5(-0.2) + 2v\n7 = -0.1 + 2v\n2v = 7.3\nv = 3.65\ne = (3.65 + 0.2)/(6 + 2) = 0.481\n"
+    found = lines("ocr-mei-fmm-2023-a-speed-0p2-backward", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
+    assert found[5][:2] == ("wrong", "b_sign")

@@ -43,7 +43,10 @@ class Carrying:
         raise NotImplementedError
 
     def _wrote_wrong(self, line: Line) -> None:
-        self.wrong_values |= decimals(line.sides[-1:])
+        """The numbers a wrong or carried line states: its last side, and any side that is a
+        number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``)."""
+        stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
+        self.wrong_values |= decimals([*stated, *line.sides[-1:]])
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
 
     def _own_value(self, line: Line) -> None:

@@ -82,7 +82,7 @@ def read_lines(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
     lines = [_magnitude(ctx, _resolved(r, mapping)) for r in raw]
-    said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
+    said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     return lines, _notes(meanings, declared, inferred, s, sign) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     )
@@ -112,7 +112,7 @@ def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, 
     for r in raw:
         bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
         theirs = [e for e in bare if e.name.startswith(PREFIX) and e.name[1:] not in meanings and e not in defs]
-        ours = [e for e in bare if not e.name.startswith(PREFIX)]
+        ours = [e for e in bare if not e.name.startswith(PREFIX) or e.name[1:] in meanings]  # derive's, or a habit's
         for p in theirs:
             if ours and p not in out:
                 out[p] = ours[0]

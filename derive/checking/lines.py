@@ -231,8 +231,8 @@ class Trace(Carrying):
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
-            diags = self._in_results(bad)
-            if diags:  # a result worked wrongly: the student's equations stand
+            diags = self._in_results(bad) or self._in_mistake_world(bad)
+            if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
         if not diags:
@@ -252,6 +252,26 @@ class Trace(Carrying):
         if j is None or answer is not None:
             return diags, j, f": it {said}.", ""
         return diags, j, f": it is ({j}), {EQUATION_TITLES[j]}, but it {said}.", ""
+
+    def _in_mistake_world(self, bad: Pair) -> tuple[Diagnosis, ...]:
+        """The mistake whose equations, in place of those it changes (the student's own slips
+        kept), give velocities ``bad`` holds for: ``20(3.05) + 5(-9.15) = 25 v_t`` is right for
+        one t velocity (the system's t momentum); ``e = (3.55 - 0.2)/(6 + 2)`` for B's sign lost
+        in the approach, with the student's 3.55. Those velocities become the student's."""
+        own = {j for _n, j in self.replaced}
+        current = self.world if self.world is not None else self.truth
+        for o in self.ctx.singles():
+            if o.mistake is None:
+                continue
+            changed = [j for j in o.mistake.enters if j in o.equations and j in self.equations and j not in own]
+            if not changed:
+                continue
+            equations = {**self.equations, **{j: o.equations[j] for j in changed}}
+            world = solve_world(equations, self.U, self.pts, current)
+            if world is not None and self.holds([bad], world) and not self.holds([bad], current):
+                self.world, self.equations = world, equations
+                return self.ctx.diagnosis(o.mistake)
+        return ()
 
     def _in_results(self, bad: Pair) -> tuple[Diagnosis, ...]:
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
