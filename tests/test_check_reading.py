@@ -374,3 +374,14 @@ def test_names_declared_in_words(line: str, declared: str) -> None:
     # letter, P and Q, or its mass.
     notes = report("cie-9231-p2-2012-june-q2-impulse-4mu-show-ke-lost", line + "\nm_A = 3m\n").notes
     assert f"Declared: {declared}." in notes
+
+
+def test_a_direction_in_words_after_a_number_gives_its_sign() -> None:
+    # OCR M2 2014: 2m at 4 m/s meets 3m at 2 m/s, e = 0.4: 2a + 3b = 2, b - a = 2.4, so
+    # a = -1.04 (A goes back, to the left: A came from the left) and b = 1.36 (to the right).
+    lead = "2m(4) - 3m(2) = 2m a + 3m b\nb - a = 0.4(6) = 2.4\n"
+    problem = "ocr-m2-2014-particles-2m-3m-ke-lost"
+    assert statuses(problem, lead + "v_A = 1.04 m/s to the left\nv_B = 1.36 m/s to the right\n") == ["correct"] * 4
+    assert statuses(problem, lead + "v_A = 1.04 m/s to the right\n")[-1] == "wrong"
+    assert statuses(problem, "v_A2 = 1.04 m/s in the opposite direction\n") == ["correct"]
+    assert statuses(problem, "v_B2 = 1.36 m/s (to the left)\n") == ["wrong"]

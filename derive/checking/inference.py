@@ -30,6 +30,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.numeric import number_of
+from derive.checking.shapes import Shapes
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -54,6 +55,7 @@ class Read:
     error: str = ""
     defines: str = ""
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
+    direction: int = 0  # its last number's direction in words (:attr:`~.reader.Relation.direction`)
 
 
 def read_lines(
@@ -81,7 +83,7 @@ def read_lines(
     _, mapping, inferred, s = max(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
-    lines = [_magnitude(ctx, _resolved(r, mapping)) for r in raw]
+    lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     return lines, _notes(meanings, declared, inferred, s, sign) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
@@ -103,6 +105,18 @@ def _magnitude(ctx: Context, r: Read) -> Read:
     if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
         return r
     return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
+
+
+def _directed(r: Read, sign: int) -> Read:
+    """``v_A = 1.04 m/s to the left``: the number signed by its direction in words, which is
+    derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
+    already signed stays as written."""
+    m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
+    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols:
+        return r
+    if r.direction * sign > 0:
+        return r
+    return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
 
 
 def _equated(raw: list[Read], meanings: dict, defs: dict) -> dict[sympy.Symbol, sympy.Symbol]:
@@ -147,7 +161,7 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
                 shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
-    return Read(r.line, r.written, shown, r.tag, tuple(exprs))
+    return Read(r.line, r.written, shown, r.tag, tuple(exprs), direction=r.direction)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
@@ -214,7 +228,7 @@ def _infer(
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
-    shapes = _Shapes(ctx, raw, pt, truth, equations)
+    shapes = Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
@@ -302,65 +316,6 @@ def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: d
                 inferred[p.name[1:]] = named.get(sign * other, other.name)
 
 
-class _Shapes:
-    """The relations in the student's names whose terms in the unknowns are those of one of
-    (1)-(4) up to a factor, whatever their numbers (``5x + 3y = -0.7`` after a slip is (3) in
-    its shape): a name is read by the equations it stands in, not only by the values."""
-
-    #: A shape counts for less than a relation that holds (and not at all where it holds too).
-    WEIGHT = 0.4
-
-    def __init__(self, ctx: Context, raw: list[Read], pt: dict, truth: dict, equations) -> None:
-        self.ctx, self.pt, self.U, self.truth = ctx, pt, tuple(truth), truth
-        self.targets = [c for c in (_linear_part(e.xreplace(pt), self.U) for e in equations) if c and len(c) >= 2]
-        self.diffs = [
-            ctx.in_unknowns(r.exprs[i] - r.exprs[i + 1]).xreplace(pt)
-            for r in raw
-            if r.exprs and not r.defines
-            for i in range(len(r.exprs) - 1)
-            if _placeholders(r.exprs[i]) | _placeholders(r.exprs[i + 1])
-        ]
-
-    def score(self, mapping: dict) -> float:
-        if not self.targets:
-            return 0.0
-        subs = {k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in mapping.items()}
-        n = 0
-        for d in self.diffs:
-            c = _linear_part(d.xreplace(subs), self.U)
-            if c and any(_alike(c, t) for t in self.targets) and not self._holds(d.xreplace(subs)):
-                n += 1  # two unknowns or more: (3), (4)
-        return self.WEIGHT * n
-
-    def _holds(self, d: sympy.Expr) -> bool:
-        terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
-        if any(t is None for t in terms):
-            return False
-        return abs(sum(terms)) <= 0.01 * max([abs(t) for t in terms] + [1e-12])
-
-
-def _linear_part(expr: sympy.Expr, U: tuple) -> dict | None:
-    """The coefficients of ``expr``'s terms in the unknowns (its constant left out)."""
-    if expr.free_symbols - set(U) or not expr.free_symbols:
-        return None
-    out = {}
-    for m, c in sympy.expand(expr).as_coefficients_dict().items():
-        x = number_of(c)
-        if x is None:
-            return None
-        if m != 1 and abs(x) > 1e-12:
-            out[m] = x
-    return out
-
-
-def _alike(a: dict, b: dict) -> bool:
-    if set(a) != set(b):
-        return False
-    key = next(iter(b))
-    ratio = a[key] / b[key]
-    return all(abs(a[m] - ratio * b[m]) <= 2e-3 * abs(ratio * b[m]) for m in b)
-
-
 def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
     """A bonus for the natural reading of two names met together (x, y; a, b; p, q): the first
     is A's, the second B's; it takes two more relations holding to read them the other way."""
@@ -380,7 +335,7 @@ def _pairs(ctx: Context, raw: list[Read], pt: dict, truth: dict) -> list[list[tu
     """For each relation, each ``=`` as (tolerance, left - right with the true values in)."""
     out = []
     for r in raw:
-        if r.exprs is None or r.defines:
+        if r.exprs is None or r.defines or r.direction:  # a direction in words is derive's: no sign to infer
             out.append([])
             continue
         diffs = []
@@ -413,12 +368,12 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
     left = set().union(*(_placeholders(e) for e in exprs))
     if left and not r.defines and len(exprs) >= 3 and left == _placeholders(exprs[0]) and exprs[0].is_Symbol:
         # "p = 0.150 x 35.0 = 5.25": a name of the student's own that nothing places, and its working
-        return _resolved(Read(r.number, r.written, r.sides[1:], r.tag, r.exprs[1:]), mapping)
+        return _resolved(replace(r, sides=r.sides[1:], exprs=r.exprs[1:]), mapping)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
     own = any(_placeholders(e) for e in r.exprs)
-    return Read(r.number, r.written, r.sides, r.tag, exprs, defines=r.defines, own_names=own)
+    return replace(r, exprs=exprs, own_names=own)
 
 
 def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:

@@ -40,6 +40,7 @@ class Relation:
     lead: str = ""  # a line that continues a relation (``  = 6.4``): the first side of that relation
     label: str = ""  # the words before a colon that lead in (``B before: along = -6``), on the line so far
     aside: bool = False  # after "with", "where" (``KE = ½ mu w^2 with mu = 0.4``): read before the line's relation
+    direction: int = 0  # the last number's direction in words: -1 "to the left", "backwards"; +1 "to the right"
 
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
@@ -316,10 +317,39 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text):
         return None
+    direction = direction_of(text[text.rfind("=") + 1 :])
+    if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
+        text = _DIRECTION_END.sub("", text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(without_unit(s.strip().rstrip(",;:.").rstrip()).strip() for s in text.split("="))
     if any(not re.search(r"[A-Za-z0-9]", s) for s in sides):  # "\text{angle with …} = …": words, dropped
         sides = tuple(s for s in sides if re.search(r"[A-Za-z0-9]", s))
         if len(sides) < 2:
             return None
-    return Relation(line, column, written, sides, tag, label=label)
+    return Relation(line, column, written, sides, tag, label=label, direction=direction)
+
+
+#: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
+_DIRECTION = re.compile(
+    r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
+    r"|in\s+the\s+same\s+direction))\b",
+    re.I,
+)
+
+
+_DIRECTION_END = re.compile(
+    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
+    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
+    re.I,
+)
+
+
+def direction_of(tail: str) -> int:
+    """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
+    direction against the usual positive one ("to the left", "backwards", "in the opposite
+    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
+    m = _DIRECTION.match(tail.strip())
+    if not m:
+        return 0
+    return -1 if m.group(1) else 1
