@@ -310,3 +310,21 @@ def test_b_sign_in_the_approach_after_an_earlier_slip_is_named_with_the_students
     assert found[3][:2] == ("wrong", "arithmetic")
     assert found[4][0] == "carried"
     assert found[5][:2] == ("wrong", "b_sign")
+
+
+def test_a_wrong_value_in_letters_and_a_wrong_energy_under_a_heading_are_carried() -> None:
+    # Edexcel M2 2003: 2m at u hits m at rest, e = 1/3: x = 5u/9, y = 8u/9. KE before is
+    # ½(2m)u^2 = mu^2 (written 2mu^2: a slip); KE after ½(2m)(5u/9)^2 + ½m(8u/9)^2 = 19/27 mu^2;
+    # the loss from the student's own KE before, 2 - 19/27 = 35/27 mu^2, is carried.
+    work = (
+        "KE before:\n1/2 (2m) u^2 = 2mu^2\n"
+        "KE after = 1/2 (2m)(5u/9)^2 + 1/2 m (8u/9)^2 = 19/27 mu^2\n"
+        "KE lost = 2mu^2 - 19/27 mu^2 = 35/27 mu^2\n"
+    )
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[2][0] == "wrong" and found[3][0] == "correct" and found[4][0] == "carried"
+    # y = 2u - 2x worked as 10u/9 (for 8u/9): its kinetic energy ½m(10u/9)^2 = 50/81 mu^2 is
+    # right as arithmetic, worked from the wrong 10u/9: carried, not correct.
+    work = "y - x = u/3\n2x + y = 2u\nx = 5u/9\ny = 2u - 10u/9 = 10u/9\n1/2 m (10u/9)^2 = 50/81 mu^2\n"
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[4][0] == "wrong" and found[5][0] == "carried"

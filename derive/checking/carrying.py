@@ -23,6 +23,10 @@ from derive.mathtext.notation import student
 Line = Read
 
 
+#: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
+_TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")
+
+
 class Carrying:
     """The numbers and values the student got wrong so far, and the tests that use them."""
 
@@ -33,6 +37,7 @@ class Carrying:
     world: list[Values] | None
     wrong_values: set[str]
     wrong_numbers: set[str]
+    wrong_terms: set[str]
     own: dict[sympy.Symbol, sympy.Expr]
     wrong_number: tuple[str, sympy.Expr] | None
 
@@ -48,6 +53,9 @@ class Carrying:
         stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
         self.wrong_values |= decimals([*stated, *line.sides[-1:]])
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
+        term = _TERM.match(line.sides[-1].replace(" ", "").replace("*", ""))
+        if term and line.exprs and line.exprs[-1].free_symbols and not set(self.U) & line.exprs[-1].free_symbols:
+            self.wrong_terms.add(term.group(1))  # "w = 5u": a value in the symbolic givens
 
     def _own_value(self, line: Line) -> None:
         """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
@@ -59,6 +67,22 @@ class Carrying:
             last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
             if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
                 self.own[left] = last
+        elif left is not None and len(line.exprs or ()) >= 2:
+            self._worked_result(left, line.exprs[-1])
+
+    def _worked_result(self, first: sympy.Expr, last: sympy.Expr) -> None:
+        """``½(3m)(2u)^2 + ½mu^2 = … = 7/2 mu^2`` under a heading "KE before": a first side
+        that is a result's true value (here T_1, 13/2 mu^2) worked to a wrong last one is the
+        student's value of that result."""
+        if set(self.U) & (first.free_symbols | self.ctx.in_unknowns(last).free_symbols):
+            return
+        x = number_of(first.xreplace(self.pts[0]))
+        for name in ("T_1", "T_2", "T_lost", "J_n"):
+            sym, _expr = self.ctx.derived().get(name, (None, None))
+            true = number_of(self.ctx.in_unknowns(sym).xreplace(self.pts[0]).xreplace(self.truth[0])) if sym else None
+            if x is not None and true is not None and abs(x - true) <= 1e-9 * max(abs(true), 1e-12):
+                self.own[sym] = last
+                return
 
     def _with_own_values(self, line: Line) -> bool:
         """Whether ``line`` holds with the values the student got wrong earlier put in."""
@@ -76,7 +100,9 @@ class Carrying:
         earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct;
         so is one in the unknowns that holds given the slip too (``v_B = sqrt(71.0^2 + 108.3^2)
         = 129.5``, near the true 128.9 only because the t component is the larger)."""
-        if not decimals(line.sides[:-1]) & self.wrong_values:
+        working = " ".join(line.sides[:-1]).replace(" ", "").replace("*", "")
+        terms = any(re.search(rf"(?<![\w.]){re.escape(t)}(?!\w)", working) for t in self.wrong_terms)
+        if not decimals(line.sides[:-1]) & self.wrong_values and not terms:
             return False
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             return self.world is not None and self.holds(pairs, self.world) and self._moved(pairs)

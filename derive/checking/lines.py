@@ -91,6 +91,7 @@ class Trace(Carrying):
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.wrong_numbers: set[str] = set()  # and their integers too
+        self.wrong_terms: set[str] = set()  # values in the symbolic givens written wrong (5u for 3u)
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
 
