@@ -328,3 +328,28 @@ def test_a_wrong_value_in_letters_and_a_wrong_energy_under_a_heading_are_carried
     work = "y - x = u/3\n2x + y = 2u\nx = 5u/9\ny = 2u - 10u/9 = 10u/9\n1/2 m (10u/9)^2 = 50/81 mu^2\n"
     found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
     assert found[4][0] == "wrong" and found[5][0] == "carried"
+
+
+def test_an_angle_aside_in_brackets_is_read_in_degrees_and_carried_from_a_wrong_number() -> None:
+    # OCR M3 June 2007 (mark scheme: A at 111° anticlockwise from i): a = -4.5, A keeps 12 across,
+    # tan^-1(12/4.5) = 69.4° to the line of centres, so 180 - 69.4 = 110.6° from i; the bare
+    # 180 - 69.4 is in degrees as the 110.6° it equals. Worked from a wrong a = -3.5 (for -4.5):
+    # tan^-1(12/3.5) = 73.7° and 180 - 73.7 = 106.3° are carried.
+    lead = "4a + 3b = 0\nb - a = 10.5\n"
+    right = lead + "a = -4.5\ntan^-1(12/4.5) = 69.4°\n(angle with i = 180 - 69.4 = 110.6°)\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", right)
+    assert [found[n][0] for n in range(1, 6)] == ["correct"] * 5
+    slip = lead + "7a = -31.5\na = -31.5/7 = -3.5\ntan^-1(12/3.5) = 73.7°\n(angle with i = 180 - 73.7 = 106.3°)\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", slip)
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == found[6][0] == "carried"
+
+
+def test_an_angle_its_words_name_worked_from_a_wrong_angle_is_carried() -> None:
+    # Edexcel M4 2018 (60 % of the KE kept, e = 3/4): tan(alpha) = sqrt(32/3) = 3.266, alpha =
+    # 72.98° to the wall; in radian mode tan^-1(3.266) = 1.27 (the slip). The angle with the
+    # normal worked from it, 90 - 1.27 = 88.73°, is right as arithmetic: carried, not a new slip.
+    work = "tan(alpha) = sqrt(32/3) = 3.266\nalpha = tan^-1(3.266) = 1.27°\nso the angle with the normal = 90 - 1.27 = 88.73°\n"
+    found = lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke", work)
+    assert found[2][:2] == ("wrong", "degrees_as_radians")
+    assert found[3][0] == "carried"

@@ -15,7 +15,7 @@ from dataclasses import dataclass, replace
 
 import sympy
 
-from derive.checking.context import Context
+from derive.checking.context import DEG, Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import (
     GREEK,
@@ -161,7 +161,17 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
                 shown = r.sides[1:]  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
-    return Read(r.line, r.written, shown, r.tag, tuple(exprs), direction=r.direction)
+    return Read(r.line, r.written, shown, r.tag, _in_degrees(tuple(exprs)), direction=r.direction)
+
+
+def _in_degrees(exprs: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
+    """``90 - 1.27 = 88.7°``: where the last side is a number of degrees, the sides that are
+    plain numbers are degrees too (the student marks the answer's unit only)."""
+    last = exprs[-1] if exprs else None
+    if last is None or last.free_symbols != {DEG} or not (last / DEG).is_number:
+        return exprs
+    plain = [x.is_number and x != 0 and not x.atoms(sympy.Function) for x in exprs[:-1]]  # not tan^-1(3.266)
+    return (*(x * DEG if p else x for x, p in zip(exprs[:-1], plain, strict=True)), last)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:

@@ -294,6 +294,22 @@ def words_after(text: str) -> str:
     return text
 
 
+def _outer(text: str) -> str:
+    """A relation written inside one pair of brackets, as an aside (``(angle with the normal =
+    90 - 1.27 = 88.7°)``), without them."""
+    t = text.strip()
+    if t.endswith(")") and t.count(")") == t.count("(") + 1:
+        return t[:-1]  # its opening bracket went with the words before it
+    if not (t.startswith("(") and t.endswith(")") and "=" in t):
+        return text
+    depth = 0
+    for i, ch in enumerate(t):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and i < len(t) - 1:
+            return text  # "(a + b) = (c + d)": not one pair around it all
+    return t[1:-1]
+
+
 def relation(line: int, column: int, written: str, text: str) -> Relation | None:
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
@@ -304,6 +320,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         _TICK.sub(" ", text),
         flags=re.I,
     )
+    text = _outer(text)
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
