@@ -385,3 +385,14 @@ def test_a_direction_in_words_after_a_number_gives_its_sign() -> None:
     assert statuses(problem, lead + "v_A = 1.04 m/s to the right\n")[-1] == "wrong"
     assert statuses(problem, "v_A2 = 1.04 m/s in the opposite direction\n") == ["correct"]
     assert statuses(problem, "v_B2 = 1.36 m/s (to the left)\n") == ["wrong"]
+
+
+def test_names_solved_for_in_a_find_the_speeds_before_problem_are_the_speeds_before() -> None:
+    # Edexcel M2 Jan 2017 (mark scheme: u_P = 8v, u_Q = 4.5v): P (2m) at x, Q (3m) at y toward it;
+    # after, P at -v and Q at 3v/2. 2x - 3y = -2v + 4.5v = 2.5v; 2.5v = (x + y)/5, x + y = 12.5v;
+    # 5x = 40v. x and y are solved for, and here the velocities before are the unknowns.
+    work = (
+        "2m x - 3m y = 2m(-v) + 3m(3v/2)\n2x - 3y = 2.5v\n3v/2 + v = 1/5 (x + y)\nx + y = 12.5v\n"
+        "5x = 40v\nx = 8v, y = 4.5v\n"
+    )
+    assert statuses("edexcel-m2-2017-january-q5-both-reverse-find-speeds-before", work) == ["correct"] * 6

@@ -253,7 +253,7 @@ def _infer(
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
-    solved, known = _solved_for(raw), _knowns(ctx)
+    solved, known = _solved_for(raw), _knowns(ctx) - set(truth)  # an unknown before (find u) may be solved for
     for group in groups:
         combos = [
             c
