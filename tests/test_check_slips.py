@@ -305,3 +305,194 @@ def test_components_and_names_in_words_and_a_second_mistake_made_on_the_first() 
     assert found[5][0] == "carried"
     assert found[7] == ("wrong", "restitution_reversed", False)
     assert found[9][0] == "carried"
+
+
+def test_a_wrong_number_with_a_compound_unit_after_it_is_carried() -> None:
+    # OpenStax 8.5: a 0.150 kg puck at 35.0 m/s is caught by a 70.0 kg goalie (e = 0).
+    # p = 0.150 x 35.0 = 5.25 kg m/s; written 52.5 kg m/s (a factor 10), the lines after
+    # are right given it: 70.15 v_A2 = 52.5, v_A2 = 52.5/70.15 = 0.748 (truly 0.0748).
+    work = "p = 0.150 x 35.0 = 52.5 kg m/s\n70.15 v_A2 = 52.5\nv_A2 = 52.5/70.15 = 0.748 m/s\n"
+    found = lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_the_common_velocity_after_a_plastic_impact_carries_a_momentum_slip() -> None:
+    # OpenStax 8.5 again, V the one velocity of puck and goalie after (e = 0). A slip in the
+    # momentum, 0.150 x 35.0 = 52.5 (for 5.25): 70.15 V = 52.5 gives V = 0.748 (truly 0.0748),
+    # and both move at it: KE after = ½(70.15)(0.748)^2 = 19.6 J (truly 0.196) is carried.
+    work = "0.150 x 35.0 = 52.5\n70.15 V = 52.5\nV = 0.748\nKE after = 1/2 (70.15)(0.748)^2 = 19.6\n"
+    found = lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == found[4][0] == "carried"
+
+
+def test_a_slip_in_a_chain_stage_that_finds_a_mass_is_named() -> None:
+    # OCR M2 June 2011 as a chain: A (3 m/s) and B (0.2 kg, 1.5 m/s toward A) collide; A goes
+    # on at 2, B back at 2.9. Momentum, B's velocity -1.5: 3m_A - 0.3 = 2m_A + 0.58, m_A = 0.88.
+    # With B's sign lost: 3m_A + 0.3 = 2m_A + 0.58 gives m_A = 0.28 (carried).
+    work = "e = (2.9 - 2)/(3 + 1.5) = 0.2\n3 m_A + 0.2(1.5) = 2 m_A + 0.2(2.9)\nm_A = 0.58 - 0.3 = 0.28\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+
+
+def test_a_chain_line_worked_from_a_wrong_number_is_carried_not_correct() -> None:
+    # OCR M2 June 2015 as a chain: 0.2 kg thrown down at 5 m/s from 1.6 m. v_1^2 = 25 + 31.36
+    # = 56.36; written 36.36 (a slip), v_1 = 6.03 is carried, and so is the kinetic energy at
+    # the ground worked from it, ½(0.2)(6.03^2) = 3.64 (right as arithmetic; truly 5.64).
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 36.36\nv_1 = 6.03\nKE at the ground = 1/2 (0.2)(6.03^2) = 3.64\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "wrong"
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_weight_used_as_the_mass_in_a_chain_slide_is_named_and_d_is_the_distance() -> None:
+    # Hibbeler 15-58 as a chain: B (10 lb) leaves the impact at 15.33 ft/s and slides on a floor
+    # with mu = 0.4: ½(10/32.2)(15.33^2) = 0.4(10) d gives d = 9.13 ft. With the weight as the
+    # mass in the kinetic energy: 4d = 0.5(10)(235.0) = 1175.0, d = 293.8 ft (carried); the
+    # friction 0.4(10) = 4 lb is a force, rightly the weight. "d" is the chain's one d, d_B.
+    work = "friction = 0.4(10) = 4 lb\n4 d = 0.5(10)(15.33^2)\nd = 1175/4 = 293.8 ft\n"
+    found = lines("chain-hibbeler-15-58-suitcases", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "weight_as_mass")
+    assert found[3][0] == "carried"
+
+
+def test_a_chain_number_written_as_an_integer_is_right_at_its_figures() -> None:
+    # The same slide worked right: d = 15.33^2/(2 x 0.4 x 32.2) = 235.0/25.76 = 9.123, and as a
+    # whole number of feet, 9 (9.126 at one figure); 10 is not.
+    assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 9\n")[1][0] == "correct"
+    assert lines("chain-hibbeler-15-58-suitcases", "d_B = 15.33^2/(2 x 0.4 x 32.2) = 10\n")[1][0] == "wrong"
+
+
+def test_a_speed_near_the_true_one_but_worked_from_a_carried_component_is_carried() -> None:
+    # OCR M3 June 2007: A (15 m/s at alpha to the line of centres, cos alpha = 0.6) keeps its
+    # t component 12; along the line 4(9) + 3(-12) = 0 = 4v_A + 3v_B, v_B - v_A = 10.5, so
+    # 7v_A = -31.5 and v_A = -4.5. Worked as -4.2 (a slip), A's speed sqrt(4.2^2 + 12^2) =
+    # sqrt(161.64) = 12.7 is carried, though the true sqrt(164.25) = 12.8 is one off in its
+    # last digit; a speed the slip does not move (4.5^2 for (-4.5)^2) is correct (as s14's
+    # energy lost from the speeds).
+    work = (
+        "4(9) + 3(-12) = 4 v_A + 3 v_B\nv_B - v_A = 0.5(9 + 12) = 10.5\n7 v_A = -31.5\n"
+        "v_A = -31.5/7 = -4.2\nv_A = sqrt(4.2^2 + 12^2) = 12.7\n"
+    )
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert found[1][0] == found[2][0] == found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == "carried"
+    reversed_ = (
+        "u_A = 15(0.6) = 9, u_B = -12\n4(9) + 3(-12) = 4 v_A + 3 v_B\nv_A - v_B = 0.5(9 + 12) = 10.5\n"
+        "v_A = 4.5\nv_A = sqrt(4.5^2 + 12^2) = 12.8\n"
+    )
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", reversed_)
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    assert found[4][0] == "carried" and found[5][0] == "correct"
+
+
+def test_names_declared_in_words_are_read_and_energy_conserved_is_carried_through_a_factorised_quadratic() -> None:
+    # Byju's: 4 kg at 12 m/s catches 8 kg at 4 m/s, e = 0.5. The student names the velocities
+    # after in words, then conserves kinetic energy: x + 2y = 20 and x^2 + 2y^2 = 144 + 32 = 176
+    # give 6y^2 - 80y + 224 = 0, i.e. 3y^2 - 40y + 112 = (3y - 28)(y - 4) = 0, y = 28/3 = 9.33
+    # (y = 4 is B before), x = 20 - 2(9.33) = 1.33: all carried (truly x = 4, y = 8). Read
+    # without the words, x = 12 and y = 4 (the velocities before) would satisfy every line.
+    work = (
+        "Let x and y be the velocities of the 4 kg and the 8 kg ball after the collision.\n"
+        "4(12) + 8(4) = 4x + 8y\n"
+        "1/2 (4)(12^2) + 1/2 (8)(4^2) = 1/2 (4) x^2 + 1/2 (8) y^2\n"
+        "0 = 3y^2 - 40y + 112 = (3y - 28)(y - 4)\n"
+        "y = 28/3 = 9.33\n"
+        "x = 20 - 2(9.33) = 1.33\n"
+    )
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "energy_conserved")
+    assert found[4][0] == found[5][0] == found[6][0] == "carried"
+
+
+def test_names_solved_for_are_unknowns_not_the_velocities_before() -> None:
+    # OCR M2 2014: 2m at 4 m/s, 3m at 2 m/s toward it, e = 0.4; a, b the velocities after.
+    # With the masses swapped, 3(4) + 2(-2) = 3a + 2b would hold for a = 4, b = -2 (the
+    # velocities before) -- but a and b are then solved for (a = 0.64), so they are unknowns:
+    # the line is the slip, b - a = 0.4(6) = 2.4 is right, 5a + 4.8 = 8 gives a = 0.64 and
+    # b = 3.04 (carried; truly 2a + 3b = 2: a = -1.04, b = 1.36).
+    work = "3(4) + 2(-2) = 3a + 2b => 3a + 2b = 8\nb - a = 0.4(4 + 2) = 2.4\n3a + 2(a + 2.4) = 8\na = 0.64, b = 3.04\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[1][:2] == ("wrong", "masses_swapped")
+    assert found[2][0] == "correct"
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_vector_after_in_i_and_j_is_read_with_v_for_after() -> None:
+    # OCR M3 June 2007: A after is -4.5i + 12j (mark scheme a = -4.5), speed 12.8; v_A's
+    # components are A's after, as v_A is, where no u names are used.
+    work = "4a + 3b = 0\nb - a = 10.5\na = -4.5\nv_A = -4.5i + 12j\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+
+
+def test_one_t_velocity_for_both_bodies_is_the_systems_t_momentum_and_carried() -> None:
+    # OCR M3 June 2007: A (4 kg) has t component 12, B (3 kg) 0; each keeps its own. With the
+    # system's t momentum, 4(12) + 3(0) = 7 v_t gives one t velocity 48/7 = 6.86 for both:
+    # the first line is the slip (system_t), the second carried.
+    work = "4(12) + 3(0) = 7 v_t\nv_t = 48/7 = 6.86 = v_At = v_Bt\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert found[1][:2] == ("wrong", "system_t")
+    assert found[2][0] == "carried"
+
+
+def test_b_sign_in_the_approach_after_an_earlier_slip_is_named_with_the_students_value() -> None:
+    # OCR MEI 2023 (A moves back at 0.2 m/s): 0.5(6) + 2(2) = 0.5(-0.2) + 2v, 7 = -0.1 + 2v,
+    # 2v = 7.1 (written 7.3: a slip), v = 3.65 (carried). Both move forward, so the approach
+    # is 6 - 2 = 4; with B's sign lost it is 6 + 2: e = (3.65 + 0.2)/(6 + 2) = 0.481 is that
+    # mistake, worked from the student's own 3.65 (truly e = 3.75/4 = 0.9375).
+    work = "0.5(6) + 2(2) = 0.5(-0.2) + 2v\n7 = -0.1 + 2v\n2v = 7.3\nv = 3.65\ne = (3.65 + 0.2)/(6 + 2) = 0.481\n"
+    found = lines("ocr-mei-fmm-2023-a-speed-0p2-backward", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
+    assert found[5][:2] == ("wrong", "b_sign")
+
+
+def test_a_wrong_value_in_letters_and_a_wrong_energy_under_a_heading_are_carried() -> None:
+    # Edexcel M2 2003: 2m at u hits m at rest, e = 1/3: x = 5u/9, y = 8u/9. KE before is
+    # ½(2m)u^2 = mu^2 (written 2mu^2: a slip); KE after ½(2m)(5u/9)^2 + ½m(8u/9)^2 = 19/27 mu^2;
+    # the loss from the student's own KE before, 2 - 19/27 = 35/27 mu^2, is carried.
+    work = (
+        "KE before:\n1/2 (2m) u^2 = 2mu^2\n"
+        "KE after = 1/2 (2m)(5u/9)^2 + 1/2 m (8u/9)^2 = 19/27 mu^2\n"
+        "KE lost = 2mu^2 - 19/27 mu^2 = 35/27 mu^2\n"
+    )
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[2][0] == "wrong" and found[3][0] == "correct" and found[4][0] == "carried"
+    # y = 2u - 2x worked as 10u/9 (for 8u/9): its kinetic energy ½m(10u/9)^2 = 50/81 mu^2 is
+    # right as arithmetic, worked from the wrong 10u/9: carried, not correct.
+    work = "y - x = u/3\n2x + y = 2u\nx = 5u/9\ny = 2u - 10u/9 = 10u/9\n1/2 m (10u/9)^2 = 50/81 mu^2\n"
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[4][0] == "wrong" and found[5][0] == "carried"
+
+
+def test_an_angle_aside_in_brackets_is_read_in_degrees_and_carried_from_a_wrong_number() -> None:
+    # OCR M3 June 2007 (mark scheme: A at 111° anticlockwise from i): a = -4.5, A keeps 12 across,
+    # tan^-1(12/4.5) = 69.4° to the line of centres, so 180 - 69.4 = 110.6° from i; the bare
+    # 180 - 69.4 is in degrees as the 110.6° it equals. Worked from a wrong a = -3.5 (for -4.5):
+    # tan^-1(12/3.5) = 73.7° and 180 - 73.7 = 106.3° are carried.
+    lead = "4a + 3b = 0\nb - a = 10.5\n"
+    right = lead + "a = -4.5\ntan^-1(12/4.5) = 69.4°\n(angle with i = 180 - 69.4 = 110.6°)\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", right)
+    assert [found[n][0] for n in range(1, 6)] == ["correct"] * 5
+    slip = lead + "7a = -31.5\na = -31.5/7 = -3.5\ntan^-1(12/3.5) = 73.7°\n(angle with i = 180 - 73.7 = 106.3°)\n"
+    found = lines("ocr-m3-2007-oblique-sin-alpha-0p8", slip)
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == found[6][0] == "carried"
+
+
+def test_an_angle_its_words_name_worked_from_a_wrong_angle_is_carried() -> None:
+    # Edexcel M4 2018 (60 % of the KE kept, e = 3/4): tan(alpha) = sqrt(32/3) = 3.266, alpha =
+    # 72.98° to the wall; in radian mode tan^-1(3.266) = 1.27 (the slip). The angle with the
+    # normal worked from it, 90 - 1.27 = 88.73°, is right as arithmetic: carried, not a new slip.
+    work = "tan(alpha) = sqrt(32/3) = 3.266\nalpha = tan^-1(3.266) = 1.27°\nso the angle with the normal = 90 - 1.27 = 88.73°\n"
+    found = lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke", work)
+    assert found[2][:2] == ("wrong", "degrees_as_radians")
+    assert found[3][0] == "carried"

@@ -176,6 +176,8 @@ def judge(trace: Trace, line: Read, text: list[str]) -> Item | None:
     world = _velocities(trace, c, trace.world[0]) if trace.world is not None else None
     if world and any(_is(c, v) for v in world):
         return trace._carried(line)
+    if trace.slips and trace.world is None and _worked_from_wrong(trace, line):
+        return trace._carried(line)
     found = [(i, m) for vels in (world or [], truth) for i, v in enumerate(vels) if (m := _mistake(c, v))]
     if not found and _own_quadrant(c):
         found = [(i, "angle_quadrant") for i, v in enumerate(truth) if any(v)][:1]
@@ -186,6 +188,15 @@ def judge(trace: Trace, line: Read, text: list[str]) -> Item | None:
     mistake = REGISTRY.get(name)
     diags = trace.ctx.diagnosis(mistake) if mistake is not None else ()
     return _slip(trace, line, diags, _expected(c, truth[body]) if body is not None else "")
+
+
+def _worked_from_wrong(trace: Trace, line: Read) -> bool:
+    """``90 - 1.27 = 88.7°`` after a wrong angle 1.27 (no velocities to judge the angle by): the
+    line is worked from a number the student got wrong, and right as arithmetic."""
+    if not line.exprs or len(line.exprs) != len(line.sides) or len(line.exprs) < 2:
+        return False
+    pairs = trace.pairs(line)
+    return trace._uses_wrong_numbers(line, pairs) and trace.holds(pairs, trace.truth)
 
 
 def _before(text: list[str], number: int) -> str:

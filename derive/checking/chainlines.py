@@ -11,6 +11,7 @@ only with the student's own earlier numbers is carried.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import replace
 
 import sympy
@@ -19,11 +20,14 @@ from derive.checking import mistakes, words
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
-from derive.checking.numeric import number_of
+from derive.checking.numeric import decimals, number_of
 from derive.checking.report import Item, merged
 from derive.checking.stageslips import StageMistakes, stage_given, stage_mistakes
+from derive.checking.worlds import NUMBER_SIDE, number_at_figures
+from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
+from derive.problem.units import FORCE
 
 
 def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
@@ -32,13 +36,17 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     names = Open({s.name: s for s in values})
     read = _read(text, names)
     mapping = _infer(ctx, read, values)
+
+    def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
+        return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
+
     true_defs: dict[sympy.Symbol, sympy.Expr] = {}
     own_defs: dict[sympy.Symbol, sympy.Expr] = {}
     items: list[Item] = []
     slips: list[str] = []
     stages = stage_mistakes(ctx)
     previous: list[sympy.Expr] = []  # the relation just before, where it held
-    wrote: set[str] = set()  # the decimals the student wrote on wrong and carried lines
+    wrong: set[str] = set()  # the numbers the student got wrong: a line worked from them is carried
     for r, sides, exprs in read:
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
@@ -54,14 +62,17 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
-        if item.status == "correct" and slips and _decimals(sides[:-1]) & wrote:
+        if item.status == "correct" and slips and decimals(sides[:-1]) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+            if not item.slip and _weight_as_mass(ctx, sides, reread, values, true_defs):
+                phrase = mistakes.phrase("weight_as_mass")
+                item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-        if item.status in ("wrong", "carried") and _number(sides[-1]) and sympy.Rational(sides[-1]) not in ctx.data:
-            wrote |= _decimals(sides[-1:])  # the student's own value (not a fraction of data, 0.9/1.5)
+        if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
+            wrong |= {x for x in decimals(sides[-1:]) if sympy.Rational(x) not in ctx.data}  # not a given
         previous = exprs if item.status == "correct" else []
         items.append(item)
         if item.status == "correct" and slips and len(exprs) == 2:
@@ -126,11 +137,6 @@ def _carried(slips: list[str]) -> str:
     return f"Right given the slip in line {slips[0]}: a carried error, not a new mistake."
 
 
-def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
-    """The decimals written in ``sides`` (``6.16``), as written, sign dropped."""
-    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))
-
-
 def _solved_wrongly(exprs: list[sympy.Expr], previous: list[sympy.Expr], sides: tuple[str, ...]) -> bool:
     """``v1 = 6.16`` after ``v1^2 = 39.2`` (which held): a name's value worked wrongly from the
     relation just before it, the one name it is in (an arithmetic slip)."""
@@ -187,8 +193,11 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
             alone = [a for a in alone if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
             best = max(cands, key=lambda c: score[c], default=None)
+            letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
             if best is not None and score[best]:
                 found[p] = best
+            elif len(letter) == 1 and "_" not in p.name and letter[0].name != p.name[1:]:
+                found[p] = letter[0]  # "d" where the chain has one d (d_B): the result the student works out
             elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p}:
                 roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
                 if roots is not None:
@@ -288,14 +297,20 @@ def _number(text: str) -> bool:
 
 
 def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
+    """Whether each ``=`` holds, within the decimals written; where the line ends in a number
+    as written (``d = 1175/4 = 294``), each side is compared with it, at its figures (the
+    student's own rounded working between)."""
+    ends = len(exprs) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
     for i in range(len(exprs) - 1):
-        tol = max(literal_tolerance(f"{sides[i]} = {sides[i + 1]}", ctx.data), 1e-9)
-        terms = [[_value(ctx, t, subs) for t in sympy.Add.make_args(x)] for x in exprs[i : i + 2]]
-        a, b = (_value(ctx, x, subs) for x in exprs[i : i + 2])
+        k = len(exprs) - 1 if ends else i + 1
+        tol = max(literal_tolerance(f"{sides[i]} = {sides[k]}", ctx.data), 1e-9)
+        terms = [[_value(ctx, t, subs) for t in sympy.Add.make_args(x)] for x in (exprs[i], exprs[k])]
+        a, b = (_value(ctx, x, subs) for x in (exprs[i], exprs[k]))
         if a is None or b is None:
             return None
         largest = max((abs(t) for side in terms for t in side if t is not None), default=0.0)
-        if abs(a - b) > 2 * tol * max(abs(a), abs(b), largest) + 1e-12:  # 0 = 5.26^2 - 2(9.8)h: at 27.7
+        far = abs(a - b) > 2 * tol * max(abs(a), abs(b), largest) + 1e-12  # 0 = 5.26^2 - 2(9.8)h: at 27.7
+        if far and not (number_at_figures(sides[k], a) or number_at_figures(sides[i], b)):
             return False
     return True
 
@@ -388,12 +403,35 @@ def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: S
     left = [x for x in exprs if x.free_symbols]
     names = set().union(*(x.free_symbols for x in exprs)) - set(true_defs) - set(own_defs)
     names = {s for s in names if s in values and ctx.solution.results.get(s.name) is not None}
-    if len(names) == 1 and left and len(exprs) == 2:
-        (u,) = names
-        root = _root(ctx, exprs[0] - exprs[1], u, values)
+    if len(names) == 1 and left and (exprs[0].free_symbols | exprs[-1].free_symbols) & names:
+        (u,) = names  # the first side = the last: what the student carries on (v_1^2 = … = 36.36)
+        root = _root(ctx, exprs[0] - exprs[-1], u, values)
         if root is not None:
             own_defs[u] = root
     return item
+
+
+def _weight_as_mass(ctx: Context, sides, reread: Callable[[str], sympy.Expr], values: dict, true_defs: dict) -> bool:
+    """Whether the line holds once a weight written in it (``½(10)(15.33)^2`` for B's 10 lb) is
+    put back as the mass, W/g: in every side, or in one side only (the friction ``0.4(10)``
+    on the other is a force, rightly the weight). ``reread`` reads a side as written."""
+    g = values.get(sympy.Symbol("g"))
+    weights = [x.value for x in ctx.problem.givens if x.dim == FORCE and x.value is not None]
+    if g is None or not weights:
+        return False
+    for w in (w for w in weights if w.is_Rational and w != 0):
+        at = re.compile(rf"(?<![\w.]){re.escape(str(w))}(?![\w.]|\.\d)")
+        for k in (None, *range(len(sides))):
+            mass = [at.sub(f"({w}/({g}))", t) if k in (None, i) else t for i, t in enumerate(sides)]
+            if mass == list(sides):
+                continue
+            try:
+                exprs = [reread(t) for t in mass]
+            except (ParseError, ValueError, TypeError):
+                continue
+            if _holds(ctx, sides, exprs, [true_defs, values]):
+                return True
+    return False
 
 
 def _root(ctx: Context, F: sympy.Expr, u: sympy.Symbol, values) -> sympy.Expr | None:

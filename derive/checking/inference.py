@@ -10,11 +10,11 @@ problem's true values (a slip later on does not move them: the lines before it h
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy
 
-from derive.checking.context import Context
+from derive.checking.context import DEG, Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import (
     GREEK,
@@ -31,6 +31,8 @@ from derive.checking.naming import (
 )
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
+from derive.checking.shapes import Shapes
+from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
@@ -56,6 +58,7 @@ class Read:
     error: str = ""
     defines: str = ""
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
+    direction: int = 0  # its last number's direction in words (:attr:`~.reader.Relation.direction`)
 
 
 def read_lines(
@@ -91,8 +94,8 @@ def read_lines(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
     )
     named_later(raw, mapping)
-    lines = [_resolved(r, mapping) for r in raw]
-    said = [f"{p.name[1:]} is {e.name}" for p, e in equated.items()]
+    lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
+    said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
         n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
     }
@@ -103,6 +106,35 @@ def read_lines(
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
 
+#: A side that is the magnitude of a vector from its components: ``sqrt(0.3^2 + 0.173^2)``.
+_MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){2}).*\)\s*$")
+
+
+def _magnitude(ctx: Context, r: Read) -> Read:
+    """``v_B = sqrt(0.3^2 + 0.173^2)`` in an oblique impact: the student's ``v_B``, read
+    elsewhere as B's n component after (``m u_A + m u_B = m v_A + m v_B``), is here the
+    magnitude of its components, B's speed."""
+    if not ctx.problem.oblique or not r.own_names or not r.exprs or len(r.sides) < 2:
+        return r
+    nm, speeds = ctx.model.nm, _speeds(ctx)
+    body = next((b for b in "AB" if r.exprs[0] in (getattr(nm, f"{b}2n"), -getattr(nm, f"{b}2n"))), None)
+    if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
+        return r
+    return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
+
+
+def _directed(r: Read, sign: int) -> Read:
+    """``v_A = 1.04 m/s to the left``: the number signed by its direction in words, which is
+    derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
+    already signed stays as written."""
+    m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
+    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols:
+        return r
+    if r.direction * sign > 0:
+        return r
+    return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
+
+
 def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:
     """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's
     names of what is worked out, side by side in a relation, stands for it (not a given:
@@ -111,7 +143,9 @@ def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[s
     for r in raw:
         bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
         theirs = [e for e in bare if e.name.startswith(PREFIX) and e.name[1:] not in meanings and e not in defs]
-        ours = [e for e in bare if not e.name.startswith(PREFIX) and e not in givens]
+        ours = [  # derive's (not a given), or a habit's
+            e for e in bare if (not e.name.startswith(PREFIX) and e not in givens) or e.name[1:] in meanings
+        ]
         for p in theirs:
             if ours and p not in out:
                 out[p] = ours[0]
@@ -159,7 +193,24 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             exprs[0] = sympy.sqrt(exprs[0] ** 2)  # "speed after: v = eu = 1.2": the size of v
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
-    return Read(r.line, r.written, tuple(s for s in shown if s is not None), r.tag, tuple(exprs))
+    return Read(
+        r.line,
+        r.written,
+        tuple(s for s in shown if s is not None),
+        r.tag,
+        _in_degrees(tuple(exprs)),
+        direction=r.direction,
+    )
+
+
+def _in_degrees(exprs: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
+    """``90 - 1.27 = 88.7°``: where the last side is a number of degrees, the sides that are
+    plain numbers are degrees too (the student marks the answer's unit only)."""
+    last = exprs[-1] if exprs else None
+    if last is None or last.free_symbols != {DEG} or not (last / DEG).is_number:
+        return exprs
+    plain = [x.is_number and x != 0 and not x.atoms(sympy.Function) for x in exprs[:-1]]  # not tan^-1(3.266)
+    return (*(x * DEG if p else x for x, p in zip(exprs[:-1], plain, strict=True)), last)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
@@ -226,7 +277,7 @@ def _infer(
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
-    shapes = _Shapes(ctx, raw, pt, truth, equations)
+    shapes = Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
@@ -241,9 +292,17 @@ def _infer(
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
+    solved, known = _solved_for(raw), _knowns(ctx) - set(truth)  # an unknown before (find u) may be solved for
     for group in groups:
+        options = [
+            c
+            for c in combos(group, cands, raw, velocities_before(ctx))
+            if not any(p in solved and e in known for p, (_w, e) in zip(group, c, strict=True))
+        ]
+        if not options:
+            continue
         best = max(
-            combos(group, cands, raw, velocities_before(ctx)),
+            options,
             key=lambda combo: (
                 _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
                 + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
@@ -264,6 +323,31 @@ def _infer(
     return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
 
 
+def _solved_for(raw: list[Read]) -> set[sympy.Symbol]:
+    """The student's names solved for: met first in a relation with more in it (``3a + 4b =
+    -21``), then alone = a number (``a = -9``). Such a name is an unknown, never a velocity
+    before the impact or a given (which would make ``3(9) + 4(-12) = 3a + 4b`` say nothing)."""
+    seen: set[sympy.Symbol] = set()
+    out: set[sympy.Symbol] = set()
+    for r in raw:
+        if r.exprs is None:
+            continue
+        first = r.exprs[0]
+        if first in seen and len(r.exprs) >= 2 and not _placeholders(r.exprs[-1]) and first.is_Symbol:
+            out.add(first)
+        alone = first.is_Symbol and len(r.exprs) >= 2 and not any(_placeholders(e) for e in r.exprs[1:])
+        if not alone:
+            seen |= set().union(*(_placeholders(e) for e in r.exprs))
+    return out
+
+
+def _knowns(ctx: Context) -> set[sympy.Expr]:
+    """What is known before the impact: the components before and the velocities given."""
+    nm = ctx.model.nm
+    out = {c for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None}
+    return out | {g.symbol for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY}
+
+
 def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: dict) -> None:
     """A name still unknown whose n component was read (``v_At`` where ``v_An`` is v_A2n) is
     the same velocity's t component (and the other way round)."""
@@ -279,65 +363,6 @@ def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: d
             if other in named:
                 mapping[p] = sign * other
                 inferred[p.name[1:]] = named.get(sign * other, other.name)
-
-
-class _Shapes:
-    """The relations in the student's names whose terms in the unknowns are those of one of
-    (1)-(4) up to a factor, whatever their numbers (``5x + 3y = -0.7`` after a slip is (3) in
-    its shape): a name is read by the equations it stands in, not only by the values."""
-
-    #: A shape counts for less than a relation that holds (and not at all where it holds too).
-    WEIGHT = 0.4
-
-    def __init__(self, ctx: Context, raw: list[Read], pt: dict, truth: dict, equations) -> None:
-        self.ctx, self.pt, self.U, self.truth = ctx, pt, tuple(truth), truth
-        self.targets = [c for c in (_linear_part(e.xreplace(pt), self.U) for e in equations) if c and len(c) >= 2]
-        self.diffs = [
-            ctx.in_unknowns(r.exprs[i] - r.exprs[i + 1]).xreplace(pt)
-            for r in raw
-            if r.exprs and not r.defines
-            for i in range(len(r.exprs) - 1)
-            if _placeholders(r.exprs[i]) | _placeholders(r.exprs[i + 1])
-        ]
-
-    def score(self, mapping: dict) -> float:
-        if not self.targets:
-            return 0.0
-        subs = {k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in mapping.items()}
-        n = 0
-        for d in self.diffs:
-            c = _linear_part(d.xreplace(subs), self.U)
-            if c and any(_alike(c, t) for t in self.targets) and not self._holds(d.xreplace(subs)):
-                n += 1  # two unknowns or more: (3), (4)
-        return self.WEIGHT * n
-
-    def _holds(self, d: sympy.Expr) -> bool:
-        terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
-        if any(t is None for t in terms):
-            return False
-        return abs(sum(terms)) <= 0.01 * max([abs(t) for t in terms] + [1e-12])
-
-
-def _linear_part(expr: sympy.Expr, U: tuple) -> dict | None:
-    """The coefficients of ``expr``'s terms in the unknowns (its constant left out)."""
-    if expr.free_symbols - set(U) or not expr.free_symbols:
-        return None
-    out = {}
-    for m, c in sympy.expand(expr).as_coefficients_dict().items():
-        x = number_of(c)
-        if x is None:
-            return None
-        if m != 1 and abs(x) > 1e-12:
-            out[m] = x
-    return out
-
-
-def _alike(a: dict, b: dict) -> bool:
-    if set(a) != set(b):
-        return False
-    key = next(iter(b))
-    ratio = a[key] / b[key]
-    return all(abs(a[m] - ratio * b[m]) <= 2e-3 * abs(ratio * b[m]) for m in b)
 
 
 def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
@@ -359,7 +384,7 @@ def _pairs(ctx: Context, raw: list[Read], pt: dict, truth: dict) -> list[list[tu
     """For each relation, each ``=`` as (tolerance, left - right with the true values in)."""
     out = []
     for r in raw:
-        if r.exprs is None or r.defines:
+        if r.exprs is None or r.defines or r.direction:  # a direction in words is derive's: no sign to infer
             out.append([])
             continue
         diffs = []
@@ -390,14 +415,18 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
     left = set().union(*(_placeholders(e) for e in exprs))
-    if left and len(exprs) >= 3 and not r.defines and not set().union(*(_placeholders(e) for e in exprs[1:])):
-        r = Read(r.number, r.written, r.sides[1:], r.tag, r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
-        exprs, left = exprs[1:], set()
+    if left and len(exprs) >= 3 and not r.defines:
+        if not set().union(*(_placeholders(e) for e in exprs[1:])):
+            r = replace(r, sides=r.sides[1:], exprs=r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
+            exprs, left = exprs[1:], set()
+        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:
+            # "p = 0.150 x 35.0 = 5.25": a name of the student's own that nothing places, and its working
+            return _resolved(replace(r, sides=r.sides[1:], exprs=r.exprs[1:]), mapping)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
     own = any(_placeholders(e) for e in r.exprs)
-    return Read(r.number, r.written, r.sides, r.tag, exprs, defines=r.defines, own_names=own)
+    return replace(r, exprs=exprs, own_names=own)
 
 
 def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:

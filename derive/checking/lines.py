@@ -19,6 +19,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking import carried, mistakes, slipnames, words
+from derive.checking.carrying import Carrying
 from derive.checking.context import DEG, Context
 from derive.checking.equation import judge, relation
 from derive.checking.figures import literal_tolerance
@@ -70,7 +71,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     return merged([i for i in items if i is not None]), notes
 
 
-class Trace:
+class Trace(Carrying):
     """The state of a derivation read so far: the student's equations and their solution."""
 
     def __init__(self, ctx: Context) -> None:
@@ -91,6 +92,7 @@ class Trace:
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.wrong_numbers: set[str] = set()  # and their integers too
+        self.wrong_terms: set[str] = set()  # values in the symbolic givens written wrong (5u for 3u)
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
         self.copied: dict[sympy.Symbol, sympy.Expr] = {}  # the givens copied wrongly, as copied
@@ -138,39 +140,6 @@ class Trace:
             return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
-
-    def _wrote_wrong(self, line: Line) -> None:
-        self.wrong_values |= _decimals(line.sides[-1:])
-        self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
-
-    def _own_value(self, line: Line) -> None:
-        """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
-        left = line.exprs[0] if line.exprs else None
-        m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
-        if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
-            self.own[left] = sympy.Rational(m.group(1) + m.group(2))
-        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
-            last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
-            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
-                self.own[left] = last
-
-    def _with_own_values(self, line: Line) -> bool:
-        """Whether ``line`` holds with the values the student got wrong earlier put in."""
-        if not self.own or not line.exprs:
-            return False
-        d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
-        lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
-        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
-        if exprs == line.exprs:
-            return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
-
-    def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
-        """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
-        earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct."""
-        if any(p.difference.free_symbols & set(self.U) for p in pairs):
-            return False
-        return bool(_decimals(line.sides[:-1]) & self.wrong_values)
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
@@ -278,8 +247,8 @@ class Trace:
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
-            diags = self._in_results(bad)
-            if diags:  # a result worked wrongly: the student's equations stand
+            diags = self._in_results(bad) or self._in_mistake_world(bad)
+            if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
         if not diags:
@@ -304,6 +273,26 @@ class Trace:
         if j is None or answer is not None:
             return diags, j, f": it {said}.", ""
         return diags, j, f": it is {words.EQUATION_WORDS[j]}, but it {said}.", ""
+
+    def _in_mistake_world(self, bad: Pair) -> tuple[Diagnosis, ...]:
+        """The mistake whose equations, in place of those it changes (the student's own slips
+        kept), give velocities ``bad`` holds for: ``20(3.05) + 5(-9.15) = 25 v_t`` is right for
+        one t velocity (the system's t momentum); ``e = (3.55 - 0.2)/(6 + 2)`` for B's sign lost
+        in the approach, with the student's 3.55. Those velocities become the student's."""
+        own = {j for _n, j in self.replaced}
+        current = self.world if self.world is not None else self.truth
+        for o in self.ctx.singles():
+            if o.mistake is None:
+                continue
+            changed = [j for j in o.mistake.enters if j in o.equations and j in self.equations and j not in own]
+            if not changed:
+                continue
+            equations = {**self.equations, **{j: o.equations[j] for j in changed}}
+            world = solve_world(equations, self.U, self.pts, current)
+            if world is not None and self.holds([bad], world) and not self.holds([bad], current):
+                self.world, self.equations = world, equations
+                return self.ctx.diagnosis(o.mistake)
+        return ()
 
     def _in_results(self, bad: Pair) -> tuple[Diagnosis, ...]:
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
@@ -399,22 +388,6 @@ class Trace:
         """The equation ``F`` most likely stands for (:func:`~.worlds.closest`)."""
         return closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
 
-    def _carries_number(self, line: Line) -> bool:
-        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
-        assert self.wrong_number is not None
-        wrong, right = self.wrong_number
-        value = number_of(right.xreplace(self.pts[0]))
-        if value is None:
-            return False
-        try:
-            written = sympy.Rational(wrong.lstrip("+-"))
-        except (TypeError, ValueError):
-            return False
-        exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
-        if exprs == line.exprs:
-            return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
-
     def _slips_named(self) -> str:
         numbers = [str(n) for n in dict.fromkeys(self.slips)]
         return f"the slip in line {numbers[0]}" if len(numbers) == 1 else f"the slips in lines {listed(numbers)}"
@@ -437,8 +410,3 @@ class Trace:
         return Item(
             "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
         )
-
-
-def _decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
-    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
-    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))

@@ -28,6 +28,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.wordnames import in_words
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
@@ -306,8 +307,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         if oblique:
             for c in "nt":
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
-                if u_used:
-                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")
+                if u_used or (used is not None and f"v_{body}p" not in used and f"v_{body}{c}p" not in used):
+                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is)
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
@@ -325,23 +326,28 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if u_used:
         out["v"] = after["A"]
     if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
-        out["V"] = out["v_f"] = out["v_2"] = after["A"]
-    out.update(_lone(ctx, after, u_used))
+        out["V"] = out["v_f"] = out["v_2"] = _together(ctx, after["A"], after["B"])
+    out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
 
 
-def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool) -> dict[str, sympy.Expr]:
+def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both: bool) -> dict[str, sympy.Expr]:
     """``v`` (``V``) alone where one velocity after is not given (``20v + 35(0.3)`` when B's is),
-    or the bodies move off together (e = 0): that velocity; ``M`` where one mass is unknown."""
+    or the bodies move off together (e = 0): that velocity; ``M`` where one mass is unknown.
+    Where the text uses ``v`` and ``V`` (``both``) and they move off together, V is their
+    velocity and v another quantity (the bullet's ``v = 300 m/s`` before)."""
     p = ctx.problem
     out: dict[str, sympy.Expr] = {}
     given = {g.name for g in p.givens if not g.unknown}
     open_ = [b for b in "AB" if not ({f"v_{b}2", f"v_{b}2n"} & given)]
     together = any(g.name == "e" and g.value == 0 for g in p.givens)
-    if not p.oblique and not u_used and (len(open_) == 1 or together) and after[(open_ or ["A"])[0]] is not None:
-        out["v"] = out["V"] = after[(open_ or ["A"])[0]]
+    lone = _together(ctx, after["A"], after["B"]) if together else after[open_[0]] if len(open_) == 1 else None
+    if not p.oblique and not u_used and lone is not None:
+        out["V"] = lone  # together: their common velocity after (:func:`_together`)
+        if not (together and both):
+            out["v"] = lone
     masses = [g.symbol for g in p.givens if g.unknown and g.dim == MASS]
     if len(masses) == 1:
         out["M"] = masses[0]
@@ -364,6 +370,16 @@ def _components(nm) -> dict[str, sympy.Expr]:
                 out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
                 out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
     return out
+
+
+def _together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) -> sympy.Expr | None:
+    """The one velocity of two bodies that move off together (e = 0): the velocity of their
+    centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
+    when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
+    if ctx.problem.fixed_B or a is None or b is None:
+        return a
+    m = ctx.model
+    return (m.m_A * a + m.m_B * b) / (m.m_A + m.m_B)
 
 
 def _post(ctx: Context, body: str) -> sympy.Expr | None:
@@ -416,35 +432,10 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         m = _DECLARE.match(line)
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
-        out.update(in_words(line, ctx))
+        out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign
         elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
             sign = sign_of(line)
     return out, sign
-
-
-#: "Let $a$ and $b$ be the velocities of A and B along the line of centres after": names in words.
-_IN_WORDS = re.compile(
-    r"\blet\s+(\w+)(?:\s+and\s+(\w+))?\s+be\s+(?:the\s+)?(?:final\s+)?velocit(?:y|ies)\s+of\s+([AB])"
-    r"(?:\s+and\s+([AB]))?(\s+along\s+the\s+line\s+of\s+(?:centres|impact))?\s*,?\s*"
-    r"(?:just\s+|immediately\s+)?(after|afterwards|before)\b",
-    re.I,
-)
-
-
-def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
-    """``Let a and b be the velocities of A and B along the line of centres after`` -> {a: v_A2n,
-    b: v_B2n}: a name declared in words, where they say whose, when, and (an oblique impact)
-    along which line."""
-    m = _IN_WORDS.search(re.sub(r"\$|\\[()]", "", line))
-    if not m or (ctx.problem.oblique and not m.group(5)) or bool(m.group(2)) != bool(m.group(4)):
-        return {}
-    when = "1" if m.group(6).lower() == "before" else "2"
-    out = {}
-    for name, body in ((m.group(1), m.group(3)), (m.group(2), m.group(4))):
-        x = getattr(ctx.model.nm, f"{body.upper()}{when}n", None) if name else None
-        if x is not None:
-            out[name] = x
-    return out

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 from decimal import Decimal
 
 import sympy
@@ -100,3 +101,8 @@ def pct_plain(x: sympy.Expr) -> str:
 def listed(words: list[str]) -> str:
     """``a and b``, ``a, b and c``."""
     return " and ".join(words) if len(words) < 3 else ", ".join(words[:-1]) + " and " + words[-1]
+
+
+def decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
+    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
+    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))

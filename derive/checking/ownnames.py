@@ -102,7 +102,8 @@ _POSITIVE = re.compile(
 
 def directed(relations: tuple, text: str) -> tuple:
     """The relations with a value written with a direction opposite to the positive one the
-    text declares (``right as positive``; ``v_A = 1.04 m/s to the left``) made negative."""
+    text declares (``right as positive``; ``v_A = 1.04 m/s to the left``) made negative; their
+    directions in words are then read (not taken as derive's, right along +n)."""
     m = _POSITIVE.search(text)
     if m is None:
         return relations
@@ -115,5 +116,5 @@ def directed(relations: tuple, text: str) -> tuple:
             rf"(?<![\d.]){re.escape(last)}\b[^=\d]*?\b{way}", r.written, re.I
         ):
             r = replace(r, sides=(*r.sides[:-1], f"-{last}"))
-        out.append(r)
+        out.append(replace(r, direction=0) if getattr(r, "direction", 0) else r)
     return tuple(out)

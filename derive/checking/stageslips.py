@@ -29,6 +29,10 @@ def stage_mistakes(ctx: Context) -> StageMistakes:
                 names[sympy.Symbol(outer.name)] = inner.name  # the chain's values are plain symbols
         for inner_name, outer_name in getattr(part, "names", {}).items():  # a wall stage writes w_B for v_B2
             names.setdefault(sympy.Symbol(outer_name), inner_name)
+        chain = {str(k) for k in ctx.solution.values}
+        for g in part.problem.givens:  # the stage's unknowns (e and m_A found): the chain's by their names
+            if g.unknown and g.name in chain:
+                names.setdefault(sympy.Symbol(g.name), g.name)
         inner_ctx = Context(part, None)
         try:
             found = [*inner_ctx.singles(), *(o for o in inner_ctx.forms() if o.post)]

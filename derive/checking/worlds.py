@@ -52,8 +52,17 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         scale = max(abs(left), abs(right))
         far = abs(left - right) > 2 * p.tol * scale * BOUNDARY  # two units in the last place is not the value
         if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not at_figures(p, left, right):
-            return False
+            return identity(p)
     return True
+
+
+def identity(p: Pair) -> bool:
+    """Whether the two sides of ``p`` are the same expression (``6x^2 - 8ux + 2u^2 =
+    2(3x - u)(x - u)``): it holds wherever they are both 0, where no tolerance can say so."""
+    try:
+        return sympy.expand(p.difference) == 0
+    except (TypeError, ValueError, RecursionError):
+        return False
 
 
 def three_figures(sides: tuple[str, ...], data: set) -> str:
@@ -77,14 +86,22 @@ def at_figures(p: Pair, left: complex, right: complex) -> bool:
     """A side that is a number as written (``= -12``, ``= 20``, ``= 124°``) is right at its
     figures (±1 in its last digit): -11.88 is -12 at two figures, 123.7° is 124°."""
     for text, other in zip(p.text.split(" = ", 1)[::-1], (left, right), strict=True):
-        m = NUMBER_SIDE.match(student(text.strip()))
-        if m and abs(other.imag) < 1e-12:
-            value = other.real * 180 / math.pi if m.group(3) == "deg" else other.real  # 124°: in degrees
-            try:
-                return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(value, 30))
-            except (ArithmeticError, ValueError):
-                return False
+        if NUMBER_SIDE.match(student(text.strip())):
+            return number_at_figures(text, other)
     return False
+
+
+def number_at_figures(text: str, value: complex) -> bool:
+    """Whether ``text``, a number as written (``-12``, ``294``, ``124°``), is ``value`` at its
+    figures (±1 in its last digit)."""
+    m = NUMBER_SIDE.match(student(text.strip()))
+    if not m or abs(value.imag) >= 1e-12:
+        return False
+    x = value.real * 180 / math.pi if m.group(3) == "deg" else value.real  # 124°: in degrees
+    try:
+        return written_right(Decimal(m.group(1) + m.group(2)), sympy.Float(x, 30))
+    except (ArithmeticError, ValueError):
+        return False
 
 
 def alike(a: dict, b: dict) -> float:

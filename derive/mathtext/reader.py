@@ -43,6 +43,7 @@ class Relation:
     lead: str = ""  # a line that continues a relation (``  = 6.4``): the first side of that relation
     label: str = ""  # the words before a colon that lead in (``B before: along = -6``), on the line so far
     aside: bool = False  # after "with", "where" (``KE = ½ mu w^2 with mu = 0.4``): read before the line's relation
+    direction: int = 0  # the last number's direction in words: -1 "to the left", "backwards"; +1 "to the right"
 
 
 _ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
@@ -64,9 +65,20 @@ _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
-    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|lb[·*]s|kg|kJ|J|ft[·*]lb|slug)|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*\s]?lb|slug|ft|lb)"
+    r"|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
+
+#: A momentum's unit after a number: ``60 kg m/s``, ``12 kg m s^-1``, ``3 kg·m/s``.
+_MOMENTUM_UNIT = re.compile(r"(?<=[\d.)\s])\s*kg\s*[·*]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$")
+
+
+def without_unit(side: str) -> str:
+    """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
+    return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
+
+
 #: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
 _TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
@@ -278,7 +290,31 @@ def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
-    return in_si(text) or _UNIT_END.sub("", text).strip()
+    return in_si(text) or without_unit(text).strip()
+
+
+def _outer(text: str) -> str:
+    """A relation written inside one pair of brackets, as an aside (``(angle with the normal =
+    90 - 1.27 = 88.7°)``), without them."""
+    t = text.strip()
+    if t.endswith(")") and _closes_nothing(t):
+        return t[:-1]  # its opening bracket went with the words before it
+    if not (t.startswith("(") and t.endswith(")") and "=" in t):
+        return text
+    depth = 0
+    for i, ch in enumerate(t):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and i < len(t) - 1:
+            return text  # "(a + b) = (c + d)": not one pair around it all
+    return t[1:-1]
+
+
+def _closes_nothing(t: str) -> bool:
+    """Whether the last ``)`` of ``t`` closes no ``(`` of ``t`` (``1) v = 1.2 (away)``: it does)."""
+    depth = 0
+    for ch in t[:-1]:
+        depth = max(depth + {"(": 1, ")": -1}.get(ch, 0), 0)  # "1)": a label's bracket, opening none
+    return depth == 0
 
 
 def relation(line: int, column: int, written: str, text: str) -> Relation | None:
@@ -291,6 +327,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         _TICK.sub(" ", text),
         flags=re.I,
     )
+    text = _outer(text)
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
@@ -304,10 +341,39 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
         return None
+    direction = direction_of(text[text.rfind("=") + 1 :])
+    if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
+        text = _DIRECTION_END.sub("", text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words
         sides = tuple(s for s in sides if re.search(_SIDE, s) and not _POINTS.match(s))
         if len(sides) < 2:
             return None
-    return Relation(line, column, written, sides, tag, label=label)
+    return Relation(line, column, written, sides, tag, label=label, direction=direction)
+
+
+#: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
+_DIRECTION = re.compile(
+    r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
+    r"|in\s+the\s+same\s+direction))\b",
+    re.I,
+)
+
+
+_DIRECTION_END = re.compile(
+    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
+    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
+    re.I,
+)
+
+
+def direction_of(tail: str) -> int:
+    """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
+    direction against the usual positive one ("to the left", "backwards", "in the opposite
+    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
+    m = _DIRECTION.match(tail.strip())
+    if not m:
+        return 0
+    return -1 if m.group(1) else 1

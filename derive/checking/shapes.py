@@ -1,0 +1,76 @@
+"""A derivation's relations read by their shape: the terms in the unknowns of one of (1)-(4)
+up to a factor, whatever their numbers, so that a name is read by the equations it stands
+in (``5x + 3y = -0.7`` after a slip is (3) in its shape: x is A's, y is B's), not only by
+the values that make its relations hold (:mod:`.inference`)."""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.naming import PREFIX
+from derive.checking.numeric import number_of
+
+
+def placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
+    """The student's names in ``expr`` not yet given a meaning."""
+    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
+
+
+class Shapes:
+    """The relations in the student's names whose terms in the unknowns are those of one of
+    (1)-(4) up to a factor, whatever their numbers (``5x + 3y = -0.7`` after a slip is (3) in
+    its shape): a name is read by the equations it stands in, not only by the values."""
+
+    #: A shape counts for less than a relation that holds (and not at all where it holds too).
+    WEIGHT = 0.4
+
+    def __init__(self, ctx: Context, raw: list, pt: dict, truth: dict, equations) -> None:
+        self.ctx, self.pt, self.U, self.truth = ctx, pt, tuple(truth), truth
+        self.targets = [c for c in (linear_part(e.xreplace(pt), self.U) for e in equations) if c and len(c) >= 2]
+        self.diffs = [
+            ctx.in_unknowns(r.exprs[i] - r.exprs[i + 1]).xreplace(pt)
+            for r in raw
+            if r.exprs and not r.defines
+            for i in range(len(r.exprs) - 1)
+            if placeholders(r.exprs[i]) | placeholders(r.exprs[i + 1])
+        ]
+
+    def score(self, mapping: dict) -> float:
+        if not self.targets:
+            return 0.0
+        subs = {k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in mapping.items()}
+        n = 0
+        for d in self.diffs:
+            c = linear_part(d.xreplace(subs), self.U)
+            if c and any(alike(c, t) for t in self.targets) and not self._holds(d.xreplace(subs)):
+                n += 1  # two unknowns or more: (3), (4)
+        return self.WEIGHT * n
+
+    def _holds(self, d: sympy.Expr) -> bool:
+        terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
+        if any(t is None for t in terms):
+            return False
+        return abs(sum(terms)) <= 0.01 * max([abs(t) for t in terms] + [1e-12])
+
+
+def linear_part(expr: sympy.Expr, U: tuple) -> dict | None:
+    """The coefficients of ``expr``'s terms in the unknowns (its constant left out)."""
+    if expr.free_symbols - set(U) or not expr.free_symbols:
+        return None
+    out = {}
+    for m, c in sympy.expand(expr).as_coefficients_dict().items():
+        x = number_of(c)
+        if x is None:
+            return None
+        if m != 1 and abs(x) > 1e-12:
+            out[m] = x
+    return out
+
+
+def alike(a: dict, b: dict) -> bool:
+    if set(a) != set(b):
+        return False
+    key = next(iter(b))
+    ratio = a[key] / b[key]
+    return all(abs(a[m] - ratio * b[m]) <= 2e-3 * abs(ratio * b[m]) for m in b)
