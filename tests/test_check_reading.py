@@ -605,6 +605,9 @@ def test_names_solved_for_in_a_find_the_speeds_before_problem_are_the_speeds_bef
         ("1) speed after: v = 0.3 x 4 = 1.2 m/s (away from the wall)", [("v", "0.3 x 4", "1.2")]),
         # an aside whose opening bracket went with the words before it
         ("so (the angle with the normal = 90 - 1.27 = 88.7°)", [("the normal", "90 - 1.27", "88.7°")]),
+        # a sentence in brackets after the relation's full stop is the student's remark
+        ("Speed of B = u(1 - e)/4. (The question has (sqrt3/4)u(1 + e): why?)", [("Speed of B", "u(1 - e)/4")]),
+        ("x = (a) + (b)", [("x", "(a) + (b)")]),
     ],
 )
 def test_a_label_bracket_is_not_an_aside_bracket(text: str, expected: list) -> None:

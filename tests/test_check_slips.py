@@ -496,3 +496,13 @@ def test_an_angle_its_words_name_worked_from_a_wrong_angle_is_carried() -> None:
     found = lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke", work)
     assert found[2][:2] == ("wrong", "degrees_as_radians")
     assert found[3][0] == "carried"
+
+
+def test_a_given_copied_with_its_zero_moved_inside_a_bracket_is_copied_wrong() -> None:
+    # web2calc: a 1200 kg car at 10 m/s locks onto a parked car, both then at 6 m/s:
+    # 12000 = 6(1200 + M), M = 800 kg. 1200 copied as 1020 inside the bracket (read as
+    # 6M + 6120): the slip is the copy; 12000 = 6120 + 6M and M = 980 are carried.
+    work = "1200 x 10 = (1020 + M) x 6\n12000 = 6120 + 6M\nM = 980\n"
+    found = lines("web2calc-car-rear-ends-car-find-mass", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == found[3][0] == "carried"

@@ -370,6 +370,8 @@ class Trace(Carrying):
         changes (its rounded numbers), so that later lines are judged from the student's."""
         assert self.world is not None
         F = pair.difference
+        if any(not p.exp.is_Integer and p.base.free_symbols & set(self.U) for p in F.atoms(sympy.Pow)):
+            return  # a speed (the size of a velocity) stands for none of the world's equations
         for j in list(self.equations):
             trial = solve_world({**self.equations, j: F}, self.U, self.pts, self.world)
             if trial is None:

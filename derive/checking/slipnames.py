@@ -236,11 +236,13 @@ def copied_wrong(ctx: Context, bad: Pair, holds: Holds) -> bool:
         return False
     values = [g.value if g.value is not None else g.definition for g in ctx.problem.givens if not g.unknown]
     givens = [x for x in values if x is not None and x != 0]
-    atoms = set().union(*(x.atoms(sympy.Number, sympy.Symbol) for x in bad.raw)) - {DEG}
-    for a in atoms:
-        for g in givens:
-            if _looks_like(a, g) and _holds_with(ctx, bad, {a: g}, holds):
-                return True
+    factored = tuple(sympy.factor_terms(x) for x in bad.raw)  # 6(1020 + M), read as 6M + 6120: 1020 again
+    for raw in (bad.raw, factored) if factored != bad.raw else (bad.raw,):
+        atoms = set().union(*(x.atoms(sympy.Number, sympy.Symbol) for x in raw)) - {DEG}
+        for a in atoms:
+            for g in givens:
+                if _looks_like(a, g) and _holds_with(ctx, replace(bad, raw=raw), {a: g}, holds):
+                    return True
     return False
 
 
@@ -258,4 +260,7 @@ def _looks_like(a: sympy.Expr, g: sympy.Expr) -> bool:
     def digits(x: sympy.Expr) -> str:
         return re.sub(r"[^0-9]", "", format(Decimal(str(sympy.Float(x, 15))).normalize(), "f")).strip("0")
 
-    return len(digits(g)) >= 2 and sorted(digits(a)) == sorted(digits(g))
+    if len(digits(g)) >= 2 and sorted(digits(a)) == sorted(digits(g)):
+        return True
+    whole = [format(Decimal(str(sympy.Float(x, 15))).normalize(), "f") for x in (a, g)]  # 1020 for 1200: zeros too
+    return "." not in "".join(whole) and len(whole[1]) >= 3 and sorted(whole[0]) == sorted(whole[1])

@@ -309,6 +309,25 @@ def _outer(text: str) -> str:
     return t[1:-1]
 
 
+#: A sentence in brackets after a relation's full stop: ``= u(1 - e)/4. (The question has …)``.
+_REMARK = re.compile(r"\s*\.\s+\((?=\s*[A-Za-z][a-z']+\s+[A-Za-z])")
+
+
+def _without_remark(text: str) -> str:
+    """``text`` without a remark in brackets after its full stop (a sentence, its brackets
+    balanced, to the end), which is the student's aside, not part of the value."""
+    m = _REMARK.search(text)
+    if m is None or not text.rstrip().endswith(")"):
+        return text
+    tail = text[m.end() - 1 :].rstrip()
+    depth = 0
+    for i, ch in enumerate(tail):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and i < len(tail) - 1:
+            return text  # "(a) and (b)": not one bracket to the end
+    return text[: m.start()] if depth == 0 else text
+
+
 def _closes_nothing(t: str) -> bool:
     """Whether the last ``)`` of ``t`` closes no ``(`` of ``t`` (``1) v = 1.2 (away)``: it does)."""
     depth = 0
@@ -338,6 +357,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if m:
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    text = _without_remark(text)
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
         return None
