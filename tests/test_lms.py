@@ -459,3 +459,18 @@ def test_every_bundled_table_exports_to_moodle_and_prairielearn(name: str, cli, 
     for q, row in zip(questions, key["variants"], strict=True):
         right = next(a for a in q.findall("answer") if a.get("fraction") == "100")
         assert Decimal(_text(right, "text")) == Decimal(row["results"][asked]["shown"].split()[0])
+
+
+def test_a_mistake_with_surds_in_the_variant_still_gives_its_value() -> None:
+    """ocr-m3-2013, variant 1 of seed 3: the mistaken equations of e_speeds (restitution with
+    speeds) have cos/sin of the angle among their numbers; solved exactly they were factored
+    over the surds' number field for a minute and gave nothing, so the STACK question lost
+    that mistake. Its value is a root of the mistaken equations, in [0, 1] and not the key's."""
+    compiled = variants.compile_problem(derive.load("ocr-m3-2013-b-turns-through-right-angle"), None, "md")
+    v = variants.draw(compiled, 2, 3)[0]
+    model = lms.MistakeModel(compiled)
+    found = dict(model.outcomes(v))
+    assert "e_speeds" in found
+    e = float(found["e_speeds"]["e"].value)
+    key = float(variants.answers(compiled, v)["e"]["value"])
+    assert 0 <= e <= 1 and abs(e - key) > 1e-3

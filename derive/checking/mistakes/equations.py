@@ -157,9 +157,16 @@ class Model:
         back = {d: u for u, d in plain.items()}
         try:
             system = [sympy.expand(x.xreplace(plain)) for x in eqs]
+            # a mistake's value is a number to show: with surds among the numbers (cos 30° of a
+            # drawn variant), solving exactly factors over their number field (a minute for
+            # ocr-m3-2013's STACK export), so such a system is solved in 30-digit decimals
+            exact = not any(_surd(a) for x in system for a in x.atoms(sympy.Pow, sympy.Function))
+            system = system if exact else [x.evalf(30) for x in system]
             # SymPy's check of each root simplifies every equation (seconds for an angle among
             # letters, issue #19); satisfies() decides the same, mostly by numbers
-            found = sympy.solve(system, list(plain.values()), dict=True, check=False, simplify=False)
+            found = sympy.solve(
+                system, list(plain.values()), dict=True, check=False, simplify=False, rational=None if exact else False
+            )
             found = [r for r in found if satisfies(system, r)]
         except (NotImplementedError, BasePolynomialError):  # NotInvertible: SymPy's algebraic domain gave up
             return None  # this mistake gives no value here (as with no root)
@@ -223,6 +230,11 @@ def _distance(root: Mapping[sympy.Symbol, sympy.Expr], near: Mapping[sympy.Symbo
     if not near:
         return 0.0
     return sum(abs((as_float(root[u]) or 0.0) - (as_float(near[u]) or 0.0)) for u in root if u in near)
+
+
+def _surd(a: sympy.Expr) -> bool:
+    """A number that is not rational: a root (``sqrt(3)``) or a function of a number (``cos(1)``)."""
+    return a.is_number and not a.is_Rational and (not isinstance(a, sympy.Pow) or not a.exp.is_Integer)
 
 
 def is_real(x: sympy.Expr) -> bool:
