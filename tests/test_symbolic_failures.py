@@ -363,10 +363,10 @@ def test_pounds_mass_is_a_unit() -> None:
 
 def test_a_chain_worked_from_decimal_data_shows_decimals_beside_letters() -> None:
     # g = 9.8 m/s², h = 2 m: v_1 = sqrt(2 g h) = sqrt(39.2) = 6.261 m/s; against the floor
-    # (4) gives v_A2 = -e v_A1 = -6.26 e_floor m/s, a decimal as the line before it (6.261 e = -v_A2),
+    # (4) gives u = v_A2 = -e v_A1 = -6.26 e_floor m/s, a decimal as the line before it (6.261 e = -v_A2),
     # a value with its unit at the result's three figures (issue #26: it had no m/s)
     md = derive.render(derive.solve(derive.load("chain-ocr-m2-2006-drop-rebound")), "md")
     assert (
-        f"v_{{A2}} = -{math.sqrt(39.2):.2f} e_{{\\mathrm{{floor}}}}\\ \\mathrm{{m/s}} \\tag{{2}}" in md
-    )  # the page's (2): (1) is the fall
+        f"u = -{math.sqrt(39.2):.2f} e_{{\\mathrm{{floor}}}}\\ \\mathrm{{m/s}} \\tag{{2}}" in md
+    )  # the page's (2): (1) is the fall; the floor stage writes the chain's name u for A's velocity after (#28)
     assert "\\sqrt{5}" not in md

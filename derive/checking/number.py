@@ -18,7 +18,6 @@ from derive.checking.entries import Entry
 from derive.checking.figures import figures, judge, method, slack
 from derive.checking.report import Diagnosis, Item
 from derive.checking.rounding import INTERMEDIATE_FIGURES, rounded_values
-from derive.checking.worlds import NUMBER_SIDE, written_right
 from derive.errors import InputError
 from derive.mathtext.notation import student
 from derive.numbers import format_number, to_decimal
@@ -195,6 +194,8 @@ def line_answer(ctx: Context, sides: tuple[str, ...], exprs: tuple | None, writt
     """A derivation's line ``v_A2n = -1.11`` (a result's name = a number) judged as an answer is
     (figures written, rounding of intermediates, the mistakes that give it); None where the
     line is not one, or is right only as a number of one figure that is not the value rounded."""
+    from derive.checking.worlds import NUMBER_SIDE, written_right  # a derivation's, not an answer's (start-up)
+
     left = exprs[0] if exprs else None
     if len(sides) != 2 or not isinstance(left, sympy.Symbol) or left.name not in ctx.results:
         return None
