@@ -210,3 +210,19 @@ def test_the_checkers_notes_become_one_sentence_a_name() -> None:
     )
     assert words.on_line("θ", r"\tan\theta = 2") and words.on_line("v_B′", "v_B' = 3")
     assert not words.on_line("v_B", "v_B' = 3")
+
+
+def test_bold_unit_vectors_after_a_lead_in_are_components_not_names() -> None:
+    """OCR FM 2023 (discs at 60°, masses 5 and 3, e = 3/4, A at 4 m/s, B at 6 m/s toward A):
+    ``Then write $\\mathbf{v}_A = p\\mathbf{i} + …$``: p is A's velocity after along the line of
+    centres (by hand: 5p + 3q = 5(2) + 3(-6) = -8, q - p = 0.75(2 + 6) = 6, p = -3.25, q = 2.75),
+    and the bold i is a unit vector, never a name of the student's."""
+    text = (
+        "Then write $\\mathbf{v}_A = p\\mathbf{i} + 2\\sqrt{3}\\,\\mathbf{j}$ and $\\mathbf{v}_B = q\\mathbf{i}$.\n\n"
+        "$5p + 3q = -8$\n\n$q - p = 6$\n\nso $p = -3.25$ and $q = 2.75$.\n"
+    )
+    r = derive.check(derive.solve(derive.load("ocr-fm-2023-oblique-discs-60deg")), derivation=text)
+    assert "I took p to be A's velocity after the impact, along the line of centres (from your relations)." in r.names
+    assert "I took q to be B's velocity after the impact, along the line of centres (from your relations)." in r.names
+    assert not any(re.match(r"I took [ij] ", n) for n in r.names)
+    assert [i.status for i in r.items] == ["correct"] * len(r.items) and len(r.items) >= 4

@@ -155,6 +155,13 @@ def notes_in_words(notes: tuple[str, ...] | list[str], known: dict[str, str]) ->
         ("Inferred from the values: ", " is ", "values"),
         ("Read ", " as ", "habit"),
     )
+    # a name read by habit (v_An as v_A2n) means what derive's name means, where another note
+    # says a student's name is it ("a is v_An")
+    for note in notes:
+        if note.startswith("Read ") and note.endswith("."):
+            for student, name in _pairs(note[len("Read ") : -1], " as "):
+                if name in known and student not in known:
+                    known = {**known, student: known[name]}
     for note in notes:
         if note.startswith("Inferred from the values written: the positive direction"):
             where = known.get("positive", "opposite to derive's n")

@@ -109,6 +109,8 @@ def latex_to_plain(tex: str) -> str:
     s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
     s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
     s = _unit_vectors(s)
+    # a bold i, j, k is a unit vector, a factor of its own (a\mathbf{i}: a times i, never a name "ai")
+    s = re.sub(r"\\(?:mathbf|boldsymbol|bm)\s*\{\s*([ijk])\s*\}(?!\s*_)", r" \1 ", s)
     for cmd in _WRAPPERS:
         s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
         s = re.sub(rf"\\{cmd}\s*\{{", "{", s)

@@ -39,6 +39,9 @@ def split_vectors(sides: tuple[str, ...]) -> list[tuple[str, ...]]:
     parts = [_vector(s) for s in sides]
     if not any(p is not None for p in parts):
         return [sides]
+    # a lead-in in words before the first name ("After impact write v_A = a i + …"): the name
+    first = re.sub(r"^(?:[A-Za-z]{2,}\s+)+(?=\S+$)", "", sides[0].strip()) if parts[0] is None else sides[0]
+    sides = (first, *sides[1:]) if _NAME.match(first.strip()) else sides
     names = [None if p is not None else _NAME.match(s.strip()) for s, p in zip(sides, parts, strict=True)]
     if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
         return [sides]
