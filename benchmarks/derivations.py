@@ -24,7 +24,7 @@ import sys
 import tomllib
 from pathlib import Path
 
-from latency import run_once  # benchmarks/ is on the path when a script here runs
+from latency import against_env, run_once  # benchmarks/ is on the path when a script here runs
 
 ROOT = Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "tests" / "data" / "derivations"
@@ -32,7 +32,7 @@ CORPUS = ROOT / "tests" / "data" / "derivations"
 
 def time_one(problem: str, path: Path, tree: Path) -> tuple[float, float, bool]:
     """One ``derive check`` process: wall seconds, CPU seconds, whether a report came back."""
-    env = {**os.environ, "PYTHONPATH": str(tree), "DERIVE_NO_CACHE": "1"}
+    env = {**against_env(str(tree)), "DERIVE_NO_CACHE": "1"}
     argv = [sys.executable, "-m", "derive", "check", problem, "--derivation", str(path), "--format", "json"]
     wall, cpu, _, out = run_once(argv, str(tree), env)
     try:

@@ -21,7 +21,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from latency import run_once  # benchmarks/ is on the path when a script here runs
+from latency import against_env, run_once  # benchmarks/ is on the path when a script here runs
 
 ROOT = Path(__file__).resolve().parent.parent
 
@@ -39,7 +39,7 @@ def main() -> int:
     ap.add_argument("--top", type=int, default=5)
     ap.add_argument("--tree", type=Path, default=ROOT, help="the source tree to run derive from")
     a = ap.parse_args()
-    env = {**os.environ, "PYTHONPATH": str(a.tree.resolve()), "DERIVE_NO_CACHE": "1"}
+    env = {**against_env(str(a.tree)), "DERIVE_NO_CACHE": "1"}
     times = []
     with tempfile.TemporaryDirectory() as tmp:
         for name in a.names or tables():

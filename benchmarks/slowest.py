@@ -25,14 +25,14 @@ import sys
 import tempfile
 from pathlib import Path
 
-from latency import run_once  # benchmarks/ is on the path when a script here runs
+from latency import against_env, run_once  # benchmarks/ is on the path when a script here runs
 
 ROOT = Path(__file__).resolve().parent.parent
 
 
 def time_one(target: str, tree: Path, cwd: str) -> tuple[float, float, int]:
     """One ``derive solve`` process: wall seconds, CPU seconds, exit code."""
-    env = {**os.environ, "PYTHONPATH": str(tree), "DERIVE_NO_CACHE": "1"}
+    env = {**against_env(str(tree)), "DERIVE_NO_CACHE": "1"}
     wall, cpu, code, _ = run_once([sys.executable, "-m", "derive", "solve", target, "--timeout", "120"], cwd, env)
     return wall, cpu, code
 
