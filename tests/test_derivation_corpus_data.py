@@ -917,3 +917,127 @@ def test_a_chains_stages_are_the_problem_files_stages(case: Case) -> None:
     known = {s.get("title", s["type"]) for s in stages} | {s["type"] for s in stages}
     assert set(case.verdict.stages) <= known
     assert any(case.verdict.stages.values())
+
+
+# ---- the r batch (a second held-out set) ----
+
+
+def _edexcel_2013(u: float, _e: float) -> dict:
+    """2m at u hits m at rest; the energy after is 3/4 m u^2: momentum and energy, then e."""
+    # y = 2u - 2x and x^2 + y^2/2 = 3u^2/4: 3x^2 - 4ux + 5u^2/4 = 0
+    a, b, c = 3.0, -4.0 * u, 1.25 * u * u
+    roots = [(-b + s * math.sqrt(b * b - 4 * a * c)) / (2 * a) for s in (1, -1)]
+    x = next(r for r in roots if 2 * u - 2 * r >= r)  # Q ahead of P after the impact
+    y = 2 * u - 2 * x
+    return {"v_A2": x, "v_B2": y, "e": (y - x) / u}
+
+
+def _pre_u_specimen(u: float, e: float) -> dict:
+    """Equal balls, the second at rest, the first at 30 deg to the line of centres."""
+    v_a, v_b = _direct(1.0, 1.0, e, u * math.cos(math.radians(30)), 0.0)
+    return {"v_A2n": v_a, "v_B2n": v_b}
+
+
+def _glancing_impulse(g: dict) -> dict:
+    """The glancing disks with the impulse on B along the line of centres (m = W/32.2)."""
+    worked = _glancing(g)
+    return worked | {"J_n": g["W_B"] / 32.2 * worked["v_B2n"]}
+
+
+NUMERIC["mcasco-glancing-disks-us"] = _glancing_impulse
+SYMBOLIC["edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters"] = _edexcel_2013
+SYMBOLIC["pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg"] = _pre_u_specimen
+
+
+def _slip_r05(g: dict) -> dict:  # the weights in lb used as masses in the kinetic energies
+    v = (g["W_A"] * g["v_A1"] + g["W_B"] * g["v_B1"]) / (g["W_A"] + g["W_B"])
+    t1 = _energy(g["W_A"], g["W_B"], g["v_A1"], g["v_B1"])
+    t2 = _energy(g["W_A"] + g["W_B"], 0, v)
+    return {"T_1": t1, "T_2": t2, "T_lost": t1 - t2}
+
+
+def _slip_r06(g: dict) -> dict:  # A's components with sin and cos swapped (B's right)
+    c, s = (lambda d: math.cos(math.radians(d))), (lambda d: math.sin(math.radians(d)))
+    a_n, a_t, b_n, b_t = g["v_A1"] * s(25), g["v_A1"] * c(25), g["v_B1"] * c(100), g["v_B1"] * s(100)
+    v_an, v_bn = _direct(g["m_A"], g["m_B"], g["e"], a_n, b_n)
+    return {
+        "v_A2n": v_an,
+        "v_B2n": v_bn,
+        "v_A2": math.hypot(v_an, a_t),
+        "v_B2": math.hypot(v_bn, b_t),
+        "psi_A2": math.degrees(math.atan2(a_t, v_an)) + g["phi_n"],
+    }
+
+
+def _slip_r09(g: dict) -> dict:  # alpha taken from the normal: sin^2 + e^2 cos^2 = 3/5
+    cos2 = (1 - 0.6) / (1 - g["e"] ** 2)
+    return {"alpha": math.degrees(math.acos(math.sqrt(cos2)))}
+
+
+def _slip_r10(g: dict) -> dict:  # e applied to A's tangential component too
+    a_n, a_t = math.sin(math.radians(g["theta_1"])), math.cos(math.radians(g["theta_1"]))
+    v_an, _ = _direct(1.0, 1.0, g["e"], a_n, 0.0)
+    return {"theta_A2": math.degrees(math.atan2(v_an, g["e"] * a_t))}
+
+
+def _slip_r12(g: dict) -> dict:  # 5.25/70.15 worked as 0.0784; KE before without the 1/2
+    v = 0.0784
+    t1 = g["m_A"] * g["v_A1"] ** 2
+    t2 = _energy(g["m_A"] + g["m_B"], 0, v)
+    return {"v_B2": v, "T_1": t1, "T_2": t2, "T_lost": t1 - t2}
+
+
+def _slip_r14(g: dict) -> dict:  # 441 + 784 added as 1125, carried into e and the impulse
+    v_1 = math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"] - 100.0)
+    v_2 = math.sqrt(2 * g["g"] * g["h_0"])
+    return {"v_1": v_1, "e_floor": v_2 / v_1, "J": g["m"] * (v_1 + v_2)}
+
+
+SLIPPED_R = {
+    "r05-mcasco-cars-weights-in-ke.txt": _slip_r05,
+    "r06-fisicalab-20deg-sin-cos.tex": _slip_r06,
+    # 0.0400 x 0.150 worked as 0.06
+    "r08-pucks-find-mass-arithmetic.txt": lambda g: {"m_B": 10 * _find_mass_elastic(g)["m_B"]},
+    "r09-m4-2018-wall-angle-from-normal.md": _slip_r09,
+    "r10-4c12-cue-ball-e-on-t.tex": _slip_r10,
+    "r12-goalie-two-slips.txt": _slip_r12,
+    "r14-chain-rebounds-arithmetic.tex": _slip_r14,
+}
+
+
+def _slip_r11(u: float, e: float) -> dict:  # masses exchanged (u = 2a + b); mu = 3m for 2m
+    a = (u - e * u) / 3
+    mu = 3.0
+    return {"v_A2": a, "v_B2": a + e * u, "T_lost": 0.5 * mu * (1 - e * e) * u * u}
+
+
+SLIPPED_R_SYMBOLIC = {
+    "r07-cie-2019-nel-backwards.md": lambda u, e: _cie_2019(u, -e),  # v_A - v_B = e(approach)
+    "r11-cie-2012-q1-two-slips.tex": _slip_r11,
+}
+
+
+@pytest.mark.parametrize("name", sorted(SLIPPED_R))
+def test_the_r_batchs_values_given_the_slip(name: str) -> None:
+    """The r batch's carried values (slip_values) are what the slip gives, to the 3-4 s.f. written."""
+    case = next(c for c in CASES if c.name == name)
+    worked = SLIPPED_R[name](_given(case.verdict.problem))
+    assert case.verdict.slip_values
+    for key, value in case.verdict.slip_values.items():
+        assert key in worked, f"{name}: {key} is not worked here"
+        assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+@pytest.mark.parametrize("name", sorted(SLIPPED_R_SYMBOLIC))
+def test_the_r_batchs_closed_forms_given_the_slip(name: str) -> None:
+    case = next(c for c in CASES if c.name == name)
+    assert case.verdict.slip_values
+    for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
+        worked = SLIPPED_R_SYMBOLIC[name](u, e)
+        for key, formula in case.verdict.slip_values.items():
+            assert _formula(str(formula), u, e) == pytest.approx(worked[key], rel=1e-5), f"{name}: {key}"
+
+
+def test_every_r_slip_case_has_its_carried_values_worked() -> None:
+    names = {c.name for c in CASES if c.name.startswith("r") and c.verdict.slip_values}
+    assert names == set(SLIPPED_R) | set(SLIPPED_R_SYMBOLIC)
