@@ -532,8 +532,15 @@ _OPERATORS = {
 }
 
 
-def _formula(text: str, u: float, e: float) -> float:
-    """A verdict's closed form ("u*(1 - 6*e)/7") at one point: u, e, numbers and + - * / only."""
+# Letters other than u and e a problem keeps (v, alpha, k, lam), at the point u: filled by a batch below.
+LETTERS: dict = {}
+_FUNCTIONS = {"sqrt": math.sqrt, "cos": math.cos, "sin": math.sin}
+
+
+def _formula(text: str, u: float, e: float, letters: dict[str, float] | None = None) -> float:
+    """A verdict's closed form ("u*(1 - 6*e)/7") at one point: u, e, the problem's other letters,
+    numbers, + - * / and sqrt, cos, sin only."""
+    names = {"u": u, "e": e} | (letters or {})
 
     def value(node: ast.AST) -> float:
         if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
@@ -542,8 +549,15 @@ def _formula(text: str, u: float, e: float) -> float:
             return -value(node.operand)
         if isinstance(node, ast.Constant) and isinstance(node.value, int | float):
             return float(node.value)
-        if isinstance(node, ast.Name) and node.id in ("u", "e"):
-            return u if node.id == "u" else e
+        if isinstance(node, ast.Name) and node.id in names:
+            return names[node.id]
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in _FUNCTIONS
+            and len(node.args) == 1
+        ):
+            return _FUNCTIONS[node.func.id](value(node.args[0]))
         raise AssertionError(f"not a formula in u and e: {text!r}")
 
     return value(ast.parse(text, mode="eval").body)
@@ -556,8 +570,9 @@ def test_the_true_values_of_each_verdict(case: Case) -> None:
     if verdict.problem in SYMBOLIC:
         for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
             truth = SYMBOLIC[verdict.problem](u, e)
+            letters = LETTERS.get(verdict.problem, lambda _u: {})(u)
             for name, formula in verdict.values.items():
-                assert _formula(str(formula), u, e) == pytest.approx(truth[name], rel=1e-9), name
+                assert _formula(str(formula), u, e, letters) == pytest.approx(truth[name], rel=1e-9), name
         return
     truth = NUMERIC[verdict.problem](_given(verdict.problem))
     for name, value in verdict.values.items():
@@ -1041,3 +1056,133 @@ def test_the_r_batchs_closed_forms_given_the_slip(name: str) -> None:
 def test_every_r_slip_case_has_its_carried_values_worked() -> None:
     names = {c.name for c in CASES if c.name.startswith("r") and c.verdict.slip_values}
     assert names == set(SLIPPED_R) | set(SLIPPED_R_SYMBOLIC)
+
+
+# ---- the q batch ----
+# A second held-out batch: the true values from the givens, with the letters a symbolic
+# problem keeps (v, alpha, k, lam) taken at a point.
+
+_ALPHA, _K, _LAM = 0.7, 2.5, 0.3  # alpha in radians; k and lambda pure numbers
+
+
+def _q_edexcel_2013(u: float, _e: float) -> dict:
+    """2m at u hits m at rest; the kinetic energy after is 3/4 m u^2 (in units of m)."""
+    # y = 2u - 2x into x^2 + y^2/2 = 3u^2/4: 12x^2 - 16ux + 5u^2 = 0; Q cannot be behind P: y >= x
+    root = math.sqrt(16**2 - 4 * 12 * 5) * u
+    for x in ((16 * u + root) / 24, (16 * u - root) / 24):
+        y = 2 * u - 2 * x
+        if y >= x:
+            return {"v_A2": x, "v_B2": y, "e": (y - x) / u}
+    raise AssertionError("no root with Q ahead of P")
+
+
+def _edexcel_2017(v: float, _e: float) -> dict:
+    """Both reverse: P (2m) after -v, Q (3m) after 3v/2, e = 1/5; the velocities before."""
+    e = _given("edexcel-m2-2017-january-q5-both-reverse-find-speeds-before")["e"]
+    a_2, b_2 = -v, 1.5 * v
+    approach = (b_2 - a_2) / e  # a_1 - b_1
+    a_1 = (2 * a_2 + 3 * b_2 + 3 * approach) / 5  # 2 a_1 + 3 b_1 = 2 a_2 + 3 b_2
+    return {"v_A1": a_1, "v_B1": a_1 - approach}
+
+
+def _ocr_m3_2012(u: float, _e: float) -> dict:
+    e = _given("ocr-m3-2012-january-q2-opposite-directions-each-at-alpha")["e"]
+    c, s = math.cos(_ALPHA), math.sin(_ALPHA)
+    v_an, v_bn = _direct(2.0, 1.0, e, u * c, -u * c)
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_B2": math.hypot(v_bn, u * s)}
+
+
+def _edexcel_s_at_rest(u: float, _e: float, approach_sign: float = -1.0) -> dict:
+    """S (m) at u stopped by T (km) at lambda u: k w = u + k lambda u; w = e (u - lambda u)."""
+    w = (u + _K * _LAM * u) / _K
+    return {"v_B2": w, "e": w / (u + approach_sign * _LAM * u)}
+
+
+def _q_pre_u_specimen(u: float, e: float, along: float = math.cos(math.radians(30))) -> dict:
+    return {"v_A2n": _direct(1.0, 1.0, e, u * along, 0.0)[0]}
+
+
+NUMERIC.update({"openstax-cp-8-31-billiard-ball-cushion": _cushion})
+SYMBOLIC.update(
+    {
+        "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters": _q_edexcel_2013,
+        "edexcel-m2-2017-january-q5-both-reverse-find-speeds-before": _edexcel_2017,
+        "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha": _ocr_m3_2012,
+        "edexcel-m2-undated-q5-s-brought-to-rest-show-e": _edexcel_s_at_rest,
+        "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg": _q_pre_u_specimen,
+    }
+)
+LETTERS.update(
+    {
+        "edexcel-m2-2017-january-q5-both-reverse-find-speeds-before": lambda u: {"v": u},
+        "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha": lambda _u: {"alpha": _ALPHA},
+        "edexcel-m2-undated-q5-s-brought-to-rest-show-e": lambda _u: {"k": _K, "lam": _LAM},
+    }
+)
+
+
+def _slip_q11(g: dict) -> dict:  # 1/2 m (u - V)^2 for the bullet, with V = 1.49
+    v = round(g["m_A"] * g["v_A1"] / (g["m_A"] + g["m_B"]), 2)
+    return {"T_lost": 0.5 * g["m_A"] * (g["v_A1"] - v) ** 2}
+
+
+def _slip_q13(g: dict) -> dict:  # B's velocity taken +6; then the weights in lb used as masses
+    w_a, w_b = g["W_A"], g["W_B"]
+    v = (w_a * g["v_A1"] - w_b * g["v_B1"]) / (w_a + w_b)
+    t_1 = 0.5 * w_a * g["v_A1"] ** 2 + 0.5 * w_b * g["v_B1"] ** 2
+    t_2 = 0.5 * (w_a + w_b) * v**2
+    return {"v_A2": v, "v_B2": v, "T_1": t_1, "T_2": t_2, "T_lost": t_1 - t_2}
+
+
+Q_SLIPPED = {
+    "q08-satellites-u1-v1-v2-nlr-reversed.md": _slip_reversed,
+    "q11-msu-bullet-ke-formula.txt": _slip_q11,
+    "q13-mcasco-cars-two-slips.md": _slip_q13,
+    "q14-chain-three-particles-copied.txt": lambda g: _three_particles(g | {"v_0": 9.0}),  # 7 copied as 9
+}
+
+
+def _slip_q09(u: float, e: float) -> dict:  # 12u = 7x + y (the masses exchanged after)
+    x = (12 * u - 4 * e * u) / 8
+    return {"v_A2": x, "v_B2": x + 4 * e * u}
+
+
+def _slip_q12(u: float, e: float) -> dict:  # Q's momentum +mu; then 3eu added as 15eu/3
+    a = (5 * u - 3 * e * u) / 3
+    return {"v_A2": a, "v_B2": a + 15 * e * u / 3}
+
+
+Q_SLIPPED_SYMBOLIC = {
+    # the approach u + lambda u
+    "q06-edexcel-s-at-rest-b-sign.txt": lambda u, e: _edexcel_s_at_rest(u, e, approach_sign=1.0),
+    # the component along the line of centres u sin 30
+    "q07-pre-u-30deg-sin-cos-swapped.tex": lambda u, e: _q_pre_u_specimen(u, e, along=math.sin(math.radians(30))),
+    "q09-aqa-2009-masses-swapped.txt": _slip_q09,
+    "q10-edexcel-2004-5u-arithmetic.md": lambda u, e: {"v_A2": 2 * u + 3 * e * u},  # 2eu - 5eu worked as +3eu
+    "q12-edexcel-2010-two-slips.tex": _slip_q12,
+}
+
+
+@pytest.mark.parametrize("name", sorted(Q_SLIPPED))
+def test_the_q_batch_values_given_the_slip(name: str) -> None:
+    case = next(c for c in CASES if c.name == name)
+    worked = Q_SLIPPED[name](_given(case.verdict.problem))
+    assert case.verdict.slip_values
+    for key, value in case.verdict.slip_values.items():
+        assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+@pytest.mark.parametrize("name", sorted(Q_SLIPPED_SYMBOLIC))
+def test_the_q_batch_closed_forms_given_the_slip(name: str) -> None:
+    case = next(c for c in CASES if c.name == name)
+    letters = LETTERS.get(case.verdict.problem, lambda _u: {})
+    assert case.verdict.slip_values
+    for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
+        worked = Q_SLIPPED_SYMBOLIC[name](u, e)
+        for key, formula in case.verdict.slip_values.items():
+            assert _formula(str(formula), u, e, letters(u)) == pytest.approx(worked[key], rel=1e-5), f"{name}: {key}"
+
+
+def test_every_q_slip_case_has_its_slip_worked() -> None:
+    slipped = {c.name for c in CASES if c.name.startswith("q") and c.verdict.slip_values}
+    assert slipped == set(Q_SLIPPED) | set(Q_SLIPPED_SYMBOLIC)
