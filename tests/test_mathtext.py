@@ -52,6 +52,8 @@ def test_words_inside_a_power_a_fraction_or_a_root_are_kept(tex: str, plain: str
         (r"v = \frac{u(2e-1)}{3}.", "v = (u(2e - 1))/3."),
         (r"\mu = \frac{1}{2}mu", "μ = (1/2)mu"),
         (r"\frac{\sin\theta}{2} = \tan \frac{x}{2}", "(sin theta)/2 = tan(x/2)"),
+        (r"\text{KE}_{\text{lost}} = 5", "KE_lost = 5"),
+        (r"v = 36\,\text{km/h}, m = 500\,\mathrm{g}", "v = 36 km/h, m = 500 g"),
     ],
 )
 def test_a_students_latex_is_read_through_the_tree(tex: str, plain: str) -> None:

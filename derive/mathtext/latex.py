@@ -70,9 +70,7 @@ def latex_to_plain(tex: str) -> str:
     while not parser.at_end():
         start = parser.i
         try:
-            if work > WORK:
-                raise LatexError("too much to read")
-            node = parser.expr()
+            node = parser.expr() if work <= WORK else None
             work += parser.i - start
         except LatexError:
             work += 2 * (parser.i - start) + 1
@@ -110,10 +108,9 @@ def _prefix(parser: Parser, start: int, far: int) -> object | None:
 def _unit_text(m: re.Match) -> str:
     """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
     of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
-    if not is_unit(m.group(0)):
-        return m.group(0)
     plain = plain_unit(m.group(0))
-    return f" {plain} " if plain in SCALED or plain.startswith("km") else " "
+    scaled = plain in SCALED or plain.startswith("km")  # the reader writes 20 Mg, 36 km/h in SI
+    return m.group(0) if not is_unit(plain) else rf"\text{{{plain}}}" if scaled else " "
 
 
 def show(node: object, top: bool = False) -> str:
@@ -121,8 +118,7 @@ def show(node: object, top: bool = False) -> str:
     (``\\text{}``) that say nothing the caller reads are left out only at the ``top`` of a row,
     never from inside a power, a fraction or a function (``(\\text{approach speed})^2``)."""
     if isinstance(node, Num):
-        power = f" * 10^({node.exponent})" if node.exponent else ""
-        return node.mantissa + power + ("°" if node.degrees else "")
+        return node.mantissa + (f" * 10^({node.exponent})" if node.exponent else "") + ("°" if node.degrees else "")
     if isinstance(node, (Sym, Vec)):
         return f"({node.name})" if getattr(node, "cancelled", False) else node.name
     if isinstance(node, Hat):
@@ -173,19 +169,18 @@ def _wrapped(node: object, top: bool, *kinds: type) -> str:
 def _product(node: Mul, top: bool) -> str:
     """Factors joined as written: ``*`` where ``\\cdot`` or ``\\times`` stood, a space where one
     stood, side by side where they were (``5eu``, ``5(9.51)``), a space between two names."""
-    out, apart = "", False
+    out = ""
     gaps = node.gaps or (" ",) * (len(node.factors) - 1)
     for k, factor in enumerate(node.factors):
         text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
         if k and text and out:
             gap = {"*": " * "}.get(gaps[k - 1], gaps[k - 1])
-            if apart or (isinstance(factor, Vec) and factor.name in ("i", "j", "k")):
+            if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
                 gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
             elif not gap and out[-1].isalnum() and text[0].isalnum():
                 gap = "" if out[-1].isdigit() and text[0].isalpha() and " " not in text else " "  # 5eu; 5 cos x
             out += gap
         out += text
-        apart = isinstance(factor, Vec) and factor.name in ("i", "j", "k")
     return out
 
 
@@ -199,6 +194,6 @@ def _text(inner: str) -> str:
         return f" {tag.group(0).strip()} "
     if re.fullmatch(r"[A-Za-z]{1,6}", inner) and not is_unit(inner):
         return inner
-    if REJECTED.search(inner) or _NAMING.fullmatch(inner):
+    if REJECTED.search(inner) or _NAMING.fullmatch(inner) or (is_unit(inner) and (inner in SCALED or "km" in inner)):
         return f" {inner} "
     return ""

@@ -358,12 +358,14 @@ class Parser:
         return Sym(node.name, cancelled=True) if isinstance(node, Sym) else node
 
     def text(self) -> object:
-        """Words in the maths, as written between the braces."""
+        """Words in the maths, as written between the braces; read leniently, a word with a
+        subscript is a name (``\\text{KE}_{\\text{lost}}``: ``KE_lost``)."""
         if self.peek() != "{":
             return Text(" ".join(self.group_tokens()))
         begin = self.spans[self.i][1]
         self.group_tokens()
-        return Text(self.text[begin : self.spans[self.i - 1][0]].strip())
+        words = self.text[begin : self.spans[self.i - 1][0]].strip()
+        return Sym(words + self.subscript()) if self.lenient and self.peek() == "_" and words.isalnum() else Text(words)
 
     def mathrm(self) -> object:
         return Sym(_plain(self.group_tokens()) + self.subscript())
