@@ -43,12 +43,12 @@ def statuses(report: derive.checking.report.CheckReport) -> dict[str, str]:
     ("tex", "plain"),
     [
         (r"v_{A2t} = 5 \sin 37.6^\circ", "v_A2t = 5 sin 37.6°"),
-        (r"e = \frac{v_{B2n} - v_{A2n}}{v_{A1n} - v_{B1n}}", "e = ((v_B2n - v_A2n)/(v_A1n - v_B1n))"),
-        (r"\frac{\sqrt{2}}{4} (1-e) v_{A1}", "((sqrt(2))/(4)) (1-e) v_A1"),
+        (r"e = \frac{v_{B2n} - v_{A2n}}{v_{A1n} - v_{B1n}}", "e = (v_B2n - v_A2n)/(v_A1n - v_B1n)"),
+        (r"\frac{\sqrt{2}}{4} (1-e) v_{A1}", "(sqrt(2)/4) (1 - e) v_A1"),
         (r"\cancel{m_A} v_{At2} = \cancel{m_A} v_{At1}", "(m_A) v_At2 = (m_A) v_At1"),
         (r"\theta_2 = \tan^{-1}(0.05)", "theta_2 = atan(0.05)"),
         (r"v_{B2n} - v_{A2n} = 9.5 \text{ m/s (4)}", "v_B2n - v_A2n = 9.5 (4)"),
-        (r"\underbrace{v_{A2} \cos \theta_2}_{v_{A2t}} = 3", "(v_A2 cos theta_2) = 3"),
+        (r"\underbrace{v_{A2} \cos \theta_2}_{v_{A2t}} = 3", "v_A2 cos theta_2 = 3"),
         (r"a \cdot b \times c", "a * b * c"),
     ],
 )

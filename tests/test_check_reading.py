@@ -360,7 +360,7 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
         ("A: 3cos30 = 2.6,   B: -4", [("3cos30", "2.6")]),  # a body's lead-in after a comma
         ("v_P = -u/3 (v_P = u is before the collision)", [("v_P", "-u/3")]),  # a root turned down
         ("x = 3 or x = -1 (rejected)", []),
-        (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "((2)/(5)) (7 - (-3 ) )", "4")]),
+        (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "(2/5) (7 - (-3))", "4")]),
     ],
 )
 def test_greek_letters_colons_labels_remarks_and_sizing_are_read(text: str, expected: list) -> None:
@@ -487,7 +487,7 @@ def test_a_mass_times_a_students_own_name_and_v_names_after_the_impact() -> None
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        (r"$v_Q = \frac{2u}{3} \quad (v_Q = 0 \text{ is the initial velocity})$", [("v_Q", "((2u)/(3))")]),
+        (r"$v_Q = \frac{2u}{3} \quad (v_Q = 0 \text{ is the initial velocity})$", [("v_Q", "(2u)/3")]),
         ("lost = 37.5 - 49.5 = -12 J ???", [("lost", "37.5 - 49.5", "-12")]),  # the doubt is not the value
     ],
 )

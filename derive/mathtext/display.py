@@ -6,28 +6,20 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.parser import Parser
-from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Display, ParsedRelation
 
 TAG = re.compile(r"\\tag\{([^{}]*)\}\s*$")
 
 
 def strip_boxed(body: str) -> tuple[str, bool]:
-    """``\\boxed{X}`` (the whole line) -> X."""
+    """``\\boxed{X}`` (the whole line) -> X (its braces found by the tokens of the parser)."""
     s = body.strip()
     if not s.startswith(r"\boxed{"):
         return s, False
-    depth = 0
-    for i, ch in enumerate(s[len(r"\boxed") :], len(r"\boxed")):
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-            if depth == 0:
-                if s[i + 1 :].strip():
-                    return s, False
-                return s[len(r"\boxed{") : i], True
-    raise LatexError(r"unbalanced braces after \boxed")
+    p = Parser(s)
+    p.take()
+    p.group_tokens()  # LatexError where the braces do not close
+    return (s[len(r"\boxed{") : p.spans[p.i - 1][0]], True) if p.at_end() else (s, False)
 
 
 def parse_display(body: str, mark: str = "") -> Display:

@@ -1,210 +1,199 @@
-"""A row of LaTeX mathematics as plain text: ``\\frac{a}{b}`` -> ``((a)/(b))``, ``v_{A2n}`` ->
-``v_A2n``, ``5 \\cos 37.6^\\circ`` -> ``5 cos 37.6°``, spacing (``\\,`` ``\\;`` ``\\quad``) and
-alignment (``&``) dropped, ``\\approx`` read as ``=``, ``\\tan^{-1}`` as ``atan``."""
+"""A row of a student's LaTeX mathematics read by the one parser (:mod:`.parser`, leniently) and
+printed back as plain text (``\\frac{a}{b}`` -> ``a/b``, ``\\tan^{-1}`` -> ``atan``), after a
+pre-pass that is not maths grammar (a thousands space, a tag, a unit in ``\\text{}``). What the
+parser does not take is kept token by token as written: the checker reads it, or reports the
+line not read; nothing typed is lost."""
 
 from __future__ import annotations
 
 import re
 
+from derive.mathtext.parser import FUNCTIONS, GREEK, RELATIONS, Parser
+from derive.mathtext.tokens import LatexError
+from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 from derive.mathtext.units import SCALED, is_unit, plain_unit
 
-_DROP = re.compile(
-    r"\\(?:left|right|middle|displaystyle|textstyle|scriptstyle|quad|qquad|(?:big|Big|bigg|Bigg)[lrm]?)(?![A-Za-z])"
-    r"|\\[,;:! ]|&|~|\\(?:hspace|vspace|phantom|hphantom|vphantom)\*?\{[^{}]*\}"
-    r"|\\label\{[^}]*\}|\\nonumber|\\notag"
-)
+_THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
+_TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
+#: A tag written after the relation: ``\\quad (3)``, ``&& (ii)``.
+_TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
-_TEXT_UNIT = re.compile(rf"({_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*)()(?!\s*_)")
+_TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*(?!\s*_)")
 #: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
 REJECTED = re.compile(
     r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
     r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
     re.I,
 )
-#: A body's quantity in words (``speed of A after``, ``B's final velocity``).
-_BODY_WORDS = re.compile(
-    r"(?:the\s+)?(?:final\s+|initial\s+)?(?:speed|velocity|direction)\s+of\s+[AB](?:\s+(?:after|before))?"
-    r"|[AB]['’]s\s+(?:final\s+|initial\s+)?(?:speed|velocity)(?:\s+(?:after|before))?",
+#: Words in ``\\text{}`` that name what the caller knows: a body's quantity (``speed of A after``,
+#: ``B's final velocity``, ``direction of``), a relative speed, a kinetic energy (``KE lost``).
+_NAMING = re.compile(
+    r"(?:the\s+)?(?:final\s+|initial\s+)?(?:speed|velocity|direction)\s+of(?:\s+[AB](?:\s+(?:after|before))?)?"
+    r"|[AB]['’]s\s+(?:final\s+|initial\s+)?(?:speed|velocity)(?:\s+(?:after|before))?"
+    r"|(?:(?:speed|velocity)\s+of\s+)?(?:approach|separation|closing|relative)(?:\s+speed)?"
+    r"|(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+",
     re.I,
 )
-_WORDS = {
-    r"\theta": " theta ",
-    r"\beta": " beta ",
-    r"\alpha": " alpha ",
-    r"\phi": " phi ",
-    r"\varphi": " phi ",
-    r"\pi": " pi ",
-    r"\Delta": " Delta ",
-    r"\mu": " μ ",  # the Greek letter, never m times u
-    r"\lambda": " lambda ",
-    r"\omega": " omega ",
-    r"\gamma": " gamma ",
-    r"\delta": " delta ",
-    r"\sigma": " sigma ",
-    r"\tau": " tau ",
-    r"\psi": " psi ",
-    r"\rho": " rho ",
-    r"\eta": " eta ",
-    r"\Theta": " theta ",
-    r"\Phi": " phi ",
-    r"\epsilon": " epsilon ",
-    r"\varepsilon": " epsilon ",
-    r"\lvert": "|",
-    r"\rvert": "|",
-    r"\lVert": "|",
-    r"\rVert": "|",
-    r"\vert": "|",
-    r"\Vert": "|",
-    r"\cdot": "*",
-    r"\times": "*",
-    r"\div": "/",
-    r"\circ": "°",
-    r"\approx": "=",
-    r"\simeq": "=",
-    r"\degree": "°",
-    r"\arctan": " atan ",
-    r"\arcsin": " asin ",
-    r"\arccos": " acos ",
-    r"\sin": " sin ",
-    r"\cos": " cos ",
-    r"\tan": " tan ",
-    r"\ln": " log ",
-    r"\sqrt": "sqrt",
-    r"\checkmark": " ",
-    r"\%": "%",
+#: Tokens the parser leaves to the caller, as plain text.
+_PLAIN = {
+    **dict.fromkeys(("{", r"\{", r"\left(", r"\left[", r"\left\{"), "("),
+    **dict.fromkeys(("}", r"\}", r"\right)", r"\right]", r"\right\}"), ")"),
+    **dict.fromkeys(
+        (r"\left|", r"\right|", r"\vert", r"\lvert", r"\rvert", r"\Vert", r"\lVert", r"\rVert", r"\|"), "|"
+    ),
+    **dict.fromkeys((r"\cdot", r"\times", r"\ast"), "*"),
+    **{tok: {"~": "="}.get(op, op) for tok, op in RELATIONS.items()},  # \approx: =, \leq: <=
+    **dict.fromkeys((r"\circ", r"\degree"), "°"),
+    **dict.fromkeys((r"\checkmark", r"\ ", r"\boxed", r"\fbox"), ""),  # \boxed{v = 2}: the relation in it
+    **{r"\div": "/", r"\%": "%", r"\_": "_"},
 }
-_WRAPPERS = (
-    "cancel",
-    "bcancel",
-    "xcancel",
-    "boxed",
-    "vec",
-    "bar",
-    "mathbf",
-    "mathit",
-    "mathrm",
-    "overline",
-    "operatorname",
-    "textbf",
-    "bm",
-    "boldsymbol",
-)
+#: How many tokens the parser may read in one row, tries again included (a hostile row stays cheap).
+WORK = 4000
 
 
 def latex_to_plain(tex: str) -> str:
     """A row of LaTeX mathematics as plain text.
 
     >>> latex_to_plain(r"v_{A2n} &= \\frac{19.8 - 5(9.51)}{25} \\approx -1.11\\,\\text{m/s}")
-    'v_A2n = ((19.8 - 5(9.51))/(25)) = -1.11'
-    >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11)")
-    'theta = atan(3.05/1.11)'
+    'v_A2n = (19.8 - 5(9.51))/25 = -1.11'
+    >>> latex_to_plain(r"\\theta = \\tan^{-1}(3.05/1.11) \\tag{3}")
+    'theta = atan(3.05/1.11) (3)'
     """
-    s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
-    s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
+    tags = [f" ({t.strip()})" for t in _TAG.findall(tex)]
+    s = _TAG.sub(" ", _THOUSANDS.sub("", tex))
+    m = _TAG_END.search(s)
+    if m:
+        s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]
     s = _TEXT_UNIT.sub(_unit_text, s)
-    s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
-    s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
-    s = _DROP.sub(" ", s)
-    s = re.sub(r"\\(sin|cos|tan)\s*\^\s*(?:\{\s*-\s*1\s*\}|-\s*1)", r"\\arc\1", s)
-    s = re.sub(r"\^\s*\{\s*\\circ\s*\}|\^\s*\\circ", "°", s)
-    s = _unit_vectors(s)
-    # a bold i, j, k is a unit vector, a factor of its own (a\mathbf{i}: a times i, never a name "ai")
-    s = re.sub(r"\\(?:mathbf|boldsymbol|bm)\s*\{\s*([ijk])\s*\}(?!\s*_)", r" \1 ", s)
-    for cmd in _WRAPPERS:
-        s = re.sub(rf"\\{cmd}\s*\{{([A-Za-z0-9]+)\}}", r"\1", s)  # \mathbf{v}_A: the letter
-        s = re.sub(rf"\\{cmd}\s*\{{", "{", s)
-    s = re.sub(r"\\sqrt\s*(\d+|[A-Za-z])(?![\w{])", r"sqrt(\1)", s)  # \sqrt3
-    s = fracs(s)
-    s = s.replace("\\|", "|")  # \|v\|: a norm
-    for word, plain in _WORDS.items():
-        s = re.sub(re.escape(word) + r"(?![A-Za-z])", plain, s)
-    s = re.sub(r"_\{([A-Za-z0-9]+)\}", r"_\1", s)
-    s = re.sub(r"_\{([A-Za-z0-9]+),?\s*([A-Za-z0-9]+)\}", r"_\1\2", s)
-    s = re.sub(r"\s+_", "_", s)
-    s = " ".join(s.replace("{", "(").replace("}", ")").split())
-    return re.sub(r"\b(a?(?:sin|cos|tan)|sqrt|log|exp) \(", r"\1(", s)
+    parser, out, end, work = Parser(s, lenient=True), [], 0, 0  # leniently, any character is a token
+    while not parser.at_end():
+        start = parser.i
+        try:
+            node = parser.expr() if work <= WORK else None
+            work += parser.i - start
+        except LatexError:
+            work += 2 * (parser.i - start) + 1
+            node = _prefix(parser, start, parser.i) if work <= WORK else None
+        tok = parser.toks[start]
+        if node is None:  # the token as plain text, as written where it has no plain form
+            parser.i, piece = start + 1, _PLAIN.get(tok, tok[1:] if tok[1:] in GREEK | FUNCTIONS else tok)
+        else:
+            piece = show(node, top=True)
+            piece = f"({piece})" if piece and tok == "{" else piece  # a group
+        out.append(piece if parser.spans[start][0] == end else " " + piece)
+        end = parser.spans[parser.i - 1][1]
+    return " ".join("".join([*out, *tags]).split())
+
+
+def _prefix(parser: Parser, start: int, far: int) -> object | None:
+    """The longest expression from token ``start`` that ends before ``far``, where reading failed
+    (``\\frac{2u}{3}`` of ``\\frac{2u}{3} (v_Q = 0 …``), the parser past it; None: none (12 tried)."""
+    full, spans = parser.toks, parser.spans
+    for k in range(min(far, len(full)), max(start, far - 12), -1):
+        parser.toks, parser.spans, parser.i = full[:k], spans[:k], start
+        try:
+            node = parser.expr()
+        except LatexError:
+            continue
+        finally:
+            toks, cut = parser.toks, parser.spans  # a number split after its first digit stays split
+            parser.toks, parser.spans = full, spans
+        if parser.i == len(toks):
+            parser.toks, parser.spans = toks + full[k:], cut + spans[k:]
+            return node
+    return None
 
 
 def _unit_text(m: re.Match) -> str:
     """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
     of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
-    text = m.group(1) + (m.group(2) or "")
-    if not is_unit(text):
-        return m.group(0)
-    plain = plain_unit(text)
-    return f" {plain} " if plain in SCALED or plain.startswith("km") else " "
+    plain = plain_unit(m.group(0))
+    scaled = plain in SCALED or plain.startswith("km")  # the reader writes 20 Mg, 36 km/h in SI
+    return m.group(0) if not is_unit(plain) else rf"\text{{{plain}}}" if scaled else " "
 
 
-def _unit_vectors(s: str) -> str:
-    """``\\hat{\\imath}``, ``\\hat\\imath``, ``\\hat{x}``, ``\\hat{\\mathbf{i}}`` -> ``i_hat`` (``j_hat``,
-    ``n_hat``, ``t_hat``); ``\\hat e_t``, ``\\hat{e}_n`` -> ``e_t``; ``\\vec v_{A2}``, ``\\mathbf u_A``
-    (a wrapper without braces) -> the name alone."""
-    s = re.sub(r"\\[ij]math(?![A-Za-z])", lambda m: m.group(0)[1], s)
-    letter = r"(?:\\mathbf\s*\{\s*([A-Za-z])\s*\}|\{\s*(?:\\mathbf\s*)?\{?\s*([A-Za-z])\s*\}?\s*\}|\s*([A-Za-z]))"
+def show(node: object, top: bool = False) -> str:
+    """A node of the tree in plain syntax, with brackets where the reading needs them. Words
+    (``\\text{}``) that say nothing the caller reads are left out only at the ``top`` of a row,
+    never from inside a power, a fraction or a function (``(\\text{approach speed})^2``)."""
+    if isinstance(node, Num):
+        return node.mantissa + (f" * 10^({node.exponent})" if node.exponent else "") + ("°" if node.degrees else "")
+    if isinstance(node, (Sym, Vec)):
+        return f"({node.name})" if getattr(node, "cancelled", False) else node.name
+    if isinstance(node, Hat):
+        return {"x": "i_hat", "y": "j_hat", "e": "e"}.get(node.axis, f"{node.axis}_hat")
+    if isinstance(node, Text):
+        return _text(node.text) if top else _text(node.text) or node.text
+    if isinstance(node, Add):
+        out = "".join(f" {'-' if sign < 0 else '+'} {_wrapped(t, top, Add)}" for sign, t in node.terms)
+        return out[3:] if out.startswith(" + ") else "-" + out[3:]
+    if isinstance(node, Mul):
+        return _product(node, top)
+    if isinstance(node, Frac):
+        return f"{_wrapped(node.num, False, Add, Mul, Frac, Text)}/{_wrapped(node.den, False, Add, Mul, Frac, Pow, Deg, Text)}"
+    if isinstance(node, Pow):
+        exp = show(node.exp)
+        exp = exp if re.fullmatch(r"\w+", exp) else f"({exp})"
+        base = _function(node.base, bare=False) if isinstance(node.base, Func) else None
+        return f"{base or _wrapped(node.base, False, Add, Mul, Frac, Pow, Deg, Text)}^{exp}"
+    if isinstance(node, Func):
+        return _function(node, top=top)
+    if isinstance(node, Deg):
+        return _wrapped(node.inner, False, Add, Mul, Frac, Pow) + "°"
+    return "?" if isinstance(node, Unknown) else str(node)
 
-    def hat(m: re.Match) -> str:
-        c = next(g for g in m.groups() if g)
-        if c == "e":
-            return "e"
-        return {"x": "i", "y": "j"}.get(c, c) + "_hat"
 
-    s = re.sub(r"\\(?:hat|widehat)\s*" + letter, hat, s)
-    return re.sub(r"\\(?:vec|mathbf|bm|boldsymbol|overrightarrow|underline)(?![A-Za-z])\s*(?=[A-Za-z\\])", "", s)
+def _function(node: Func, bare: bool = True, top: bool = False) -> str:
+    """``sin theta``, ``cos 37.6°`` (of one atom, as the checker reads them; not ``bare``: in
+    brackets), ``sin(x + y)``, ``atan(0.5)``, ``sqrt(x)``, ``|x|``, ``atan2(a, b)``, ``(x)``."""
+    name = "log" if node.name == "ln" else node.name
+    args = ", ".join(show(a, top and name == "()") for a in node.args)
+    if name in ("abs", "()"):
+        return f"|{args}|" if name == "abs" else f"({args.strip()})" if args.strip() else ""
+    atom = isinstance(node.args[0], (Sym, Vec, Num)) and not getattr(node.args[0], "exponent", 0)
+    if bare and atom and name in ("sin", "cos", "tan"):
+        return f"{name} {args}"
+    return name + args if isinstance(node.args[0], Func) and node.args[0].name == "()" else f"{name}({args})"
 
 
-def _text(m: re.Match) -> str:
-    """``\\text{…}``: a unit or words are dropped; a tag (``m/s (4)``) is kept; a name written
-    in it (``\\text{KE}``, ``T_{\\text{lost}}``) is kept as a name."""
-    inner = m.group(1).strip()
+def _wrapped(node: object, top: bool, *kinds: type) -> str:
+    """``node`` shown, in brackets where it is one of ``kinds`` (or a number with a power of ten,
+    or in a fraction a function written without brackets: ``(sin x)/2``)."""
+    text = show(node, top).strip()
+    bare = not isinstance(node, kinds) and not (isinstance(node, Num) and node.exponent)
+    bare = bare and not (isinstance(node, Func) and text.startswith(node.name + " ") and Text in kinds)
+    return text if bare or not text or (isinstance(node, Mul) and len(node.factors) < 2) else f"({text})"
+
+
+def _product(node: Mul, top: bool) -> str:
+    """Factors joined as written: ``*`` where ``\\cdot`` or ``\\times`` stood, a space where one
+    stood, side by side where they were (``5eu``, ``5(9.51)``), a space between two names."""
+    out = ""
+    gaps = node.gaps or (" ",) * (len(node.factors) - 1)
+    for k, factor in enumerate(node.factors):
+        text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
+        if k and text and out:
+            gap = {"*": " * "}.get(gaps[k - 1], gaps[k - 1])
+            if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
+                gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
+            elif not gap and out[-1].isalnum() and text[0].isalnum():
+                gap = "" if out[-1].isdigit() and text[0].isalpha() and " " not in text else " "  # 5eu; 5 cos x
+            out += gap
+        out += text
+    return out
+
+
+def _text(inner: str) -> str:
+    """``\\text{…}`` at the top of a row: a unit or words are dropped; a tag (``m/s (4)``) is
+    kept; a name written in it (``\\text{KE}``), words that name what the caller knows
+    (``speed of A after``, ``approach speed``) or turn the relation down (``rejected``) are kept."""
+    inner = inner.strip()
     tag = re.search(r"\(\s*\d{1,2}[a-z]?\s*\)\s*$", inner)
     if tag:
         return f" {tag.group(0).strip()} "
-    if re.fullmatch(r"[A-Za-z]{1,6}", inner) and inner not in _UNIT_WORDS:
+    if re.fullmatch(r"[A-Za-z]{1,6}", inner) and not is_unit(inner):
         return inner
-    if REJECTED.search(inner):
-        return f" {inner} "  # "v_P = u \text{ is before the collision}": the reader turns it down
-    if _BODY_WORDS.fullmatch(inner):
-        return f" {inner} "  # "\text{speed of A after} = 1.04": a body's quantity the caller knows
-    if re.fullmatch(r"(?:direction|speed|velocity)\s+of", inner, re.I):
-        return f" {inner} "  # "\text{direction of } A": a name the caller knows
-    if re.fullmatch(
-        r"(?:(?:speed|velocity)\s+of\s+)?(?:approach|separation|closing|relative)(?:\s+speed)?", inner, re.I
-    ):
-        return f" {inner} "  # "(\text{approach speed})^2": a quantity the caller knows
-    if re.fullmatch(r"(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+", inner, re.I):
-        return f" {inner} "  # "KE lost": a name the caller knows
-    return " "
-
-
-_UNIT_WORDS = frozenset({"m", "s", "kg", "J", "N", "Ns", "ms", "ft", "lb", "slug", "deg", "rad", "g", "kJ", "km", "h"})
-
-
-def fracs(s: str) -> str:
-    """``\\frac{a}{b}`` (also ``\\dfrac``, ``\\tfrac``, ``\\frac12``) as ``{(a)/(b)}``, nested ones too."""
-    pattern = re.compile(r"\\[dt]?frac\s*")
-    while True:
-        m = pattern.search(s)
-        if not m:
-            return s
-        num, after = group(s, m.end())
-        den, end = group(s, after)
-        if num is None or den is None:
-            return s[: m.start()] + s[m.end() :]
-        s = s[: m.start()] + "{(" + num + ")/(" + den + ")}" + s[end:]
-
-
-def group(s: str, i: int) -> tuple[str | None, int]:
-    """The brace group (or single character) at ``s[i]``, and where it ends."""
-    while i < len(s) and s[i] == " ":
-        i += 1
-    if i >= len(s):
-        return None, i
-    if s[i] != "{":
-        return s[i], i + 1
-    depth = 0
-    for j in range(i, len(s)):
-        depth += {"{": 1, "}": -1}.get(s[j], 0)
-        if depth == 0:
-            return s[i + 1 : j], j + 1
-    return None, len(s)
+    if REJECTED.search(inner) or _NAMING.fullmatch(inner) or (is_unit(inner) and (inner in SCALED or "km" in inner)):
+        return f" {inner} "
+    return ""

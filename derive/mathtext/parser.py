@@ -9,6 +9,9 @@ functions (``\\cos {\\theta}``, ``\\tan^{-1}\\left(x\\right)``,
 units (``\\ \\mathrm{m/s}``, ``\\ \\%``), and the line's decorations
 (``\\Rightarrow\\quad``, ``\\boxed{}``, ``\\tag{}``, a mark the caller names: :mod:`.display`).
 
+Read ``lenient`` (what students type: :mod:`.latex`), it takes more: ``\\tfrac12``, ``\\sqrt3``,
+``\\mathbf{v}``, ``\\bigl(``, ``\\hspace{}``, primes, ``°``, ``\\mu`` as μ.
+
 Numbers keep their text, so a rule can ask how many figures a number shows and
 what rounding it may hide (SymPy's ``parse_latex`` makes ``3.050`` a float, reads
 no units, ``\\cancel``, ``\\boxed`` or ``\\tag``: docs/verify.md).
@@ -33,7 +36,9 @@ FUNCTIONS |= {"arcsin", "arccos", "arctan"}  # read as asin, acos, atan
 #: How deep brackets and commands may nest (a page nests a few; a hostile text must stay cheap).
 MAX_DEPTH = 40
 RELATIONS = {"=": "=", "<": "<", ">": ">", r"\leq": "<=", r"\geq": ">=", r"\le": "<=", r"\ge": ">="}
-RELATIONS |= {r"\neq": "!=", r"\approx": "~", r"\ne": "!="}
+RELATIONS |= {r"\neq": "!=", r"\approx": "~", r"\simeq": "~", r"\ne": "!="}
+#: Greek letters as the checker names them, read leniently (``\mu``: μ, never m times u).
+LOOSE_GREEK = {"mu": "μ", "varphi": "phi", "Phi": "phi", "Theta": "theta", "varepsilon": "epsilon"}
 
 
 # ---------------------------------------------------------------- parser
@@ -151,8 +156,8 @@ class Parser:
     def starts_factor(self, tok: str | None) -> bool:
         if tok is None:
             return False
-        if tok[0].isdigit() or tok[0] == "." or tok[0].isalpha():
-            return True
+        if tok[0].isdigit() or (tok[0] == "." and len(tok) > 1) or tok[0].isalpha():
+            return True  # ".5", not a full stop
         if tok in ("{", "(", "[", r"\left(", r"\left[", r"\left|", r"\left\{", "|"):
             return tok != "|"
         if tok.startswith("\\"):
@@ -180,7 +185,7 @@ class Parser:
     def script(self) -> object:
         """A superscript: a braced group or a single token."""
         if self.peek() == "{":
-            return self.group()
+            return self.atom()  # counted as deep as a bracket: x^{x^{x^{…}}}
         self.first_digit()
         tok = self.take()
         if tok[0].isdigit():
@@ -243,7 +248,7 @@ class Parser:
         tok = self.peek()
         if tok is None:
             raise LatexError("the line ends where a term was expected")
-        if tok[0].isdigit() or tok[0] == ".":
+        if tok[0].isdigit() or (tok[0] == "." and len(tok) > 1):
             return self.number()
         if tok[0].isalpha():
             self.take()
@@ -254,7 +259,7 @@ class Parser:
             self.take()
             inner = self.expr()
             self.take({"(": ")", r"\left(": r"\right)", "[": "]", r"\left[": r"\right]"}[tok])
-            return inner
+            return Func("()", (inner,)) if self.lenient else inner  # leniently, the brackets as written
         if tok == r"\left|":
             self.take()
             inner = self.expr()
@@ -292,7 +297,7 @@ class Parser:
         tok = self.take()
         name = tok[1:]
         if name in GREEK:
-            return Sym(name + self.subscript())
+            return Sym((LOOSE_GREEK.get(name, name) if self.lenient else name) + self.subscript())
         if name in FUNCTIONS:
             return self.function(name)
         handler = self.atoms.get(name)
@@ -353,18 +358,27 @@ class Parser:
         return Sym(node.name, cancelled=True) if isinstance(node, Sym) else node
 
     def text(self) -> object:
-        """Words in the maths, as written between the braces."""
+        """Words in the maths, as written between the braces; read leniently, a word with a
+        subscript is a name (``\\text{KE}_{\\text{lost}}``: ``KE_lost``)."""
         if self.peek() != "{":
             return Text(" ".join(self.group_tokens()))
         begin = self.spans[self.i][1]
         self.group_tokens()
-        return Text(self.text[begin : self.spans[self.i - 1][0]].strip())
+        words = self.text[begin : self.spans[self.i - 1][0]].strip()
+        return Sym(words + self.subscript()) if self.lenient and self.peek() == "_" and words.isalnum() else Text(words)
 
     def mathrm(self) -> object:
         return Sym(_plain(self.group_tokens()) + self.subscript())
 
     def boxed(self) -> object:
         return self.group()
+
+    def skip(self) -> object:
+        """``\\hspace{1em}``, ``\\phantom{x}``, ``\\label{…}``: layout, nothing to read."""
+        if self.peek() == "*":
+            self.take()
+        self.group_tokens()
+        return Mul(())
 
     def brace(self) -> object:
         """``\\underbrace{x}_{\\text{...}}``: the x."""
@@ -396,6 +410,7 @@ LOOSE_ATOMS = {
     **dict.fromkeys(("text", "textrm", "mbox", "textit", "mathrm", "mathsf"), Parser.text),
     **dict.fromkeys(("bcancel", "xcancel"), Parser.cancel),
     **dict.fromkeys(("underbrace", "overbrace"), Parser.brace),
+    **dict.fromkeys(("hspace", "vspace", "phantom", "hphantom", "vphantom", "label"), Parser.skip),
     "tfrac": Parser.frac,
     "widehat": Parser.hat,
 }
@@ -405,7 +420,7 @@ def _plain(tokens: list[str]) -> str:
     """A subscript or unit group as plain text: ``\\mathrm { lost }`` -> ``lost``."""
     out = []
     for tok in tokens:
-        if tok in ("{", "}", r"\mathrm", r"\text", r"\rm"):
+        if tok in ("{", "}", r"\mathrm", r"\text", r"\rm", r"\mathbf", r"\bm", r"\boldsymbol"):
             continue
         if tok == r"\cdot":
             out.append("*")

@@ -1,8 +1,8 @@
 """The relations of a typed text, each with where it stands: plain lines, Markdown, LaTeX.
 
 A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( … \\)``,
-``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is rewritten as plain
-text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
+``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is read by the parser, as
+plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
 HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
 relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
 "and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag

@@ -105,7 +105,7 @@ class Pow:
 
 @dataclass(frozen=True, eq=False)
 class Func:
-    """A function: sin, asin, sqrt, abs, atan2, ... of its arguments."""
+    """A function: sin, asin, sqrt, abs, atan2, ... of its arguments; "()": brackets as written (lenient)."""
 
     name: str
     args: tuple[object, ...]
