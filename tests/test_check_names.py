@@ -145,3 +145,29 @@ def test_the_direction_a_body_moves_declared_positive(words: str, sign: int) -> 
     from derive.checking.naming import sign_of
 
     assert sign_of(words) == sign
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Let the impulse be J.", {"J": IMPULSE}),
+        ("the mass of A is M", {"M": MASS}),
+        ("energy is conserved; the impulse on B acts along n", {}),
+        ("the mass A moves at 4 m/s", {}),
+    ],
+)
+def test_a_kind_declared_in_words_and_words_that_declare_none(text: str, expected: dict) -> None:
+    assert kinds(tuple(read_relations(text)), text, set()) == expected
+
+
+def test_with_e_zero_a_name_for_the_velocity_after_carries_a_slip_into_the_energy() -> None:
+    # the bullet and block move off together at 6/4.02 = 1.4925 m/s; 1.94 is an arithmetic slip,
+    # and ½(4.02)(1.94²) = 7.565 J is worked from it: carried
+    work = "0.020(300) = 4.02 v'\nv' = 6/4.02 = 1.94\nKE after = ½(4.02)(1.94)^2 = 7.56 J\n"
+    assert by_line(BULLET, work) == {"1": "correct", "2": "wrong", "3": "carried"}
+
+
+def test_a_mass_letter_set_to_a_given_mass_without_a_unit_is_that_mass() -> None:
+    # the bullet (0.020 kg) and block (4.0 kg): m1(300) = (m1 + m2) w, w = 6/4.02 = 1.49
+    work = "m1 = 0.020, M = 4.0\nm1(300) = (m1 + M) w\nw = 6/4.02 = 1.49\nJ = M w = 5.97\n"
+    assert by_line(BULLET, work) == {"1": "correct", "2": "correct", "3": "correct", "4": "correct"}

@@ -32,7 +32,7 @@ from derive.checking.naming import (
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.checking.shapes import Shapes
-from derive.checking.valuenames import by_value, candidates, kinds, of_kind
+from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -74,10 +74,11 @@ def read_lines(
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
     declared, sign = declarations(text, ctx)
-    kinded = kinds(relations, text, set(problem) | set(declared))
+    reserved = set(problem) | set(declared)
+    kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {
         **by_value(ctx, relations, kinded, (pt, truth)),
-        **components(relations, ctx, set(problem) | set(declared)),
+        **components(relations, ctx, reserved),
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
     split, labels = body_labels(list(relations))

@@ -59,12 +59,12 @@ def _in_words(text: str) -> dict[str, Dim]:
     plain = re.sub(r"\\[()]|\\text\{|[{}]", " ", text)
     out: dict[str, Dim] = {}
     for words, dim in _KIND_WORDS:
-        before = rf"\b(?:{words})\s+(?:of\s+(?:each|the\s+\w+|[AB])\s+)?(?:is\s+|as\s+)?{_NAME}(?![\w'(])"
+        before = rf"\b(?:{words})\s+(?:of\s+(?:each|the\s+\w+|[AB])\s+)?(?:is\s+|as\s+|be\s+)?{_NAME}(?![\w'(])"
         after = rf"(?<![\w\\]){_NAME}\s*(?:is|be|=|denotes?|for|as)\s+(?:the\s+)?(?:\w+\s+)?(?:{words})\b"
         for pattern in (before, after):
             for m in re.finditer(pattern, plain, re.I):
                 name = m.group(1).replace("{", "").replace("}", "")
-                if name.lower() not in ("a", "i", "s") or name in ("I",):
+                if name not in ("a", "i", "s", "A", "B"):  # words and the bodies' letters
                     out.setdefault(name, dim)
     return out
 
@@ -101,6 +101,25 @@ def kinds(relations: tuple[Relation, ...], text: str, reserved: set[str]) -> dic
         if dim is not None:
             out[name] = dim
     return {k: v for k, v in out.items() if k not in reserved}
+
+
+#: The letters students name a mass or an impulse with: a number set to them is that kind even
+#: without a unit (``M = 70.0``, ``J = 5.97``).
+_LETTERS = ((re.compile(r"[mM](?:_?\w{1,3})?"), MASS), (re.compile(r"[IJ](?:_?\w{1,2})?"), IMPULSE))
+
+
+def by_letter(relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, Dim]:
+    """The names set to a number whose letter says its kind (``m``, ``M_2`` a mass; ``J``, ``I`` an
+    impulse), a kind that a unit or words after it may still overrule (:func:`kinds`)."""
+    out: dict[str, Dim] = {}
+    for r in relations:
+        name = r.sides[0].strip()
+        if len(r.sides) < 2 or name in reserved or not re.match(r"[-+]?\d", r.sides[-1].strip()):
+            continue
+        for pattern, dim in _LETTERS:
+            if pattern.fullmatch(name):
+                out[name] = dim
+    return out
 
 
 def quantities(ctx: Context) -> dict[Dim, list[tuple[str, sympy.Expr]]]:
