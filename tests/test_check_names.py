@@ -114,6 +114,8 @@ OCR_FM = "ocr-fm-2023-oblique-discs-60deg"
         "\\text{perp.:}\\quad u_2 &= 4\\sin 60^\\circ = 3.46\n\\end{align*}\n",
         "u_1 = 4 cos 60° = 2 (along the line of centres)\nu_2 = 4 sin 60° = 3.46 (perpendicular to it)\n",
         "Along the line of centres: u_1 = 4 cos 60° = 2\nPerpendicular: u_2 = 4 sin 60° = 3.46\n",
+        "∥ l.o.c.: u_1 = 4 cos 60° = 2\n⊥ l.o.c.: u_2 = 4 sin 60° = 3.46\n",
+        "along the common normal: u_1 = 4 cos 60° = 2\ntangential: u_2 = 4 sin 60° = 3.46\n",
     ],
 )
 def test_names_labelled_with_an_axis_are_that_component_of_the_body_resolved(work: str) -> None:

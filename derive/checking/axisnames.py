@@ -17,8 +17,12 @@ from derive.checking.context import Context
 from derive.mathtext.reader import Relation
 
 #: Words that name the line of centres (derive's n) or the axis across it (t), for two bodies.
-_ALONG = r"along\s+(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact))|normal(?:\s+comp\w*)?"
-_ACROSS = r"perp(?:\.|endicular)?(?:\s+to\s+(?:it|the\s+l\w*))?|across(?:\s+it)?|tangent(?:ial)?(?:\s+comp\w*)?"
+_LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact)|common\s+normal)"
+_ALONG = rf"(?:along|parallel\s+to|∥)\s*{_LINE}|∥|(?:along\s+the\s+)?normal(?:\s+comp\w*)?"
+_ACROSS = (
+    r"(?:perp(?:\.|endicular)?|⊥)(?:\s*to)?(?:\s*(?:it|the\s+l\w*|l\.?\s?o\.?\s?c\.?))?|across(?:\s+it)?"
+    r"|(?:along\s+the\s+(?:common\s+)?)?tangent(?:ial)?(?:\s+comp\w*)?"
+)
 #: For a wall (or cushion): along it is t, into it (normal to it) is n.
 _FIXED = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface)"
 _WALL_T = rf"along\s+{_FIXED}|parallel\s+to\s+{_FIXED}"
