@@ -18,7 +18,9 @@ import sympy
 from derive.checking.context import Context
 from derive.checking.naming import common_velocity, moving_together
 from derive.checking.numeric import number_of
+from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
+from derive.problem.expr import ParseError, parse
 from derive.problem.units import ENERGY, IMPULSE, MASS, VELOCITY, Dim
 
 #: Units as students type them, by the kind of quantity they measure (longest first).
@@ -41,16 +43,33 @@ _KIND_WORDS: tuple[tuple[str, Dim], ...] = (
 _NAME = r"\$?([A-Za-z](?:_\{?[A-Za-z0-9]{1,3}\}?)?)\$?"
 
 
-def _kind_of_unit(text: str) -> Dim | None:
-    """The kind of quantity the unit at the start of ``text`` measures (None: no unit there)."""
+def _kind_of_unit(text: str) -> tuple[Dim, str] | None:
+    """The kind of quantity the unit at the start of ``text`` measures, and the unit as typed
+    (None: no unit there)."""
+    if not re.match(r"\s|\\[ ,;:]|\\(?:text|mathrm|mbox)|\$|~", text):
+        return None  # glued to its number: 2g is 2 times g, not 2 grams
     text = _WRAP.sub(" ", text).strip()
     m = _UNIT.match(text)
     if m is None or (m.end() < len(text) and text[m.end()].isalpha()):
         return None
     for pattern, dim in _UNITS:
         if re.fullmatch(pattern, m.group(0)):
-            return dim
+            return dim, m.group(0)
     return None
+
+
+def _unit_of(r: Relation) -> tuple[Dim, str] | None:
+    """The kind and unit of the number a relation ends with: in its last side (``9.10 lb.s``) or
+    after it on the line (``$m = 0.150$ kg puck``)."""
+    value = r.sides[-1].strip()
+    m = re.match(r"[-+]?\d[\d.]*", value)
+    if m is None:
+        return None
+    found = _kind_of_unit(value[m.end() :]) if value[m.end() :].strip() else None
+    if found is None:  # the unit outside the relation as read (or read into it: 20 g as 20/1000)
+        at = re.search(rf"(?<![\d.]){re.escape(m.group(0))}(?![\d])", r.written)
+        found = _kind_of_unit(r.written[at.end() :]) if at else None
+    return found
 
 
 def _in_words(text: str) -> dict[str, Dim]:
@@ -87,19 +106,12 @@ def kinds(relations: tuple[Relation, ...], text: str, reserved: set[str]) -> dic
         for name, dim in _in_words(line).items():
             out.setdefault(name, dim)
     for r in relations:
-        name, value = r.sides[0].strip(), r.sides[-1].strip()
+        name = r.sides[0].strip()
         if len(r.sides) < 2 or not re.fullmatch(r"[A-Za-z]\w{0,4}", name):
             continue
-        m = re.match(r"[-+]?\d[\d.]*", value)
-        if m is None:
-            continue
-        tail = value[m.end() :]
-        if not tail.strip():  # the unit outside the relation as read: after the number in the line
-            at = re.search(rf"(?<![\d.]){re.escape(m.group(0))}(?![\d])", r.written)
-            tail = r.written[at.end() :] if at else ""
-        dim = _kind_of_unit(tail)
-        if dim is not None:
-            out[name] = dim
+        unit = _unit_of(r)
+        if unit is not None:
+            out[name] = unit[0]
     return {k: v for k, v in out.items() if k not in reserved}
 
 
@@ -150,10 +162,14 @@ def by_value(
         if dim is None or name in out or len(r.sides) < 2 or any(re.search(r"[A-Za-z]", x) for x in r.sides[1:-1]):
             continue  # "mu = m1 m2/(m1 + m2) = 0.1497 kg": a name defined by its expression
         m = re.match(r"([-+]?)(\d+)\.?(\d*)", r.sides[-1].strip())
-        if m is None:
+        try:  # "20/1000": 20 g read in kg
+            value = number_of(parse(student(r.sides[-1]), {}).expr) if m else None
+        except ParseError:
+            value = None
+        if m is None or value is None or float(m.group(0)) == 0:
             continue
-        written = float(m.group(0))
-        half = 0.5 * 10 ** -len(m.group(3)) + 1e-12  # to the figures written
+        written = value.real
+        half = (0.5 * 10 ** -len(m.group(3)) + 1e-12) * abs(written / float(m.group(0)))  # to the figures written
         hits = []
         for _what, e in table.get(dim, []):
             x = number_of(ctx.in_unknowns(e).xreplace(values[0]).xreplace(values[1]))
