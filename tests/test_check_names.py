@@ -174,3 +174,9 @@ def test_a_mass_letter_set_to_a_given_mass_without_a_unit_is_that_mass() -> None
     # the bullet (0.020 kg) and block (4.0 kg): m1(300) = (m1 + m2) w, w = 6/4.02 = 1.49
     work = "m1 = 0.020, M = 4.0\nm1(300) = (m1 + M) w\nw = 6/4.02 = 1.49\nJ = M w = 5.97\n"
     assert by_line(BULLET, work) == {"1": "correct", "2": "correct", "3": "correct", "4": "correct"}
+
+
+def test_a_sentence_after_the_last_number_is_not_part_of_it() -> None:
+    # the wall (e = 0.4): "e = 0.4. The ball …" is e = 0.4, not 0.4 times a name
+    work = "e = 0.4. The ball rebounds.\ne = 0.4. θ is the angle with the wall\n"
+    assert by_line("edexcel-m2-ball-rebounds-from-wall", work) == {"1": "correct", "2": "correct"}

@@ -252,6 +252,8 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
     """One side of a relation in the problem's symbols (placeholders for unknown names); where
     it does not read, the first side is read without its leading words and the last without
     its trailing ones (prose around the mathematics)."""
+    if last:  # "e = 3/4. α is the angle …": the sentence ends at the number
+        text = re.split(r"(?<=\d)\.\s+(?=[^\d\s.])", text, maxsplit=1)[0]
     try:
         return parse(student(text), names).expr
     except ParseError:
