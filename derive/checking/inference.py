@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 
 import sympy
 
+from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import (
@@ -21,7 +22,6 @@ from derive.checking.naming import (
     PREFIX,
     Open,
     body_labels,
-    common_velocity,
     declarations,
     declares,
     habits,
@@ -32,10 +32,11 @@ from derive.checking.naming import (
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.checking.shapes import Shapes
+from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
-from derive.problem.units import VELOCITY
+from derive.problem.units import VELOCITY, Dim
 
 #: Greek letters typed as themselves (a student who types μ means a name of its own).
 _GREEK_LETTERS = {"mu": "μ", "lambda": "λ", "omega": "ω", "gamma": "γ", "alpha": "α", "phi": "φ", "sigma": "σ"}
@@ -73,15 +74,21 @@ def read_lines(
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
     declared, sign = declarations(text, ctx)
-    known |= set(declared)  # "let a and b be …": ma + mb is m a + m b
+    reserved = set(problem) | set(declared)
+    kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
+    valued = {
+        **by_value(ctx, relations, kinded, (pt, truth)),
+        **components(relations, ctx, reserved),
+    }
+    known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
     split, labels = body_labels(list(relations))
     relations = tuple(split)
     rewritten: list[tuple[str, ...]] = []
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
-        rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label), known) for s in r.sides))
+        rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides))
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
-    meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **declared}
+    meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **valued, **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)
@@ -91,7 +98,8 @@ def read_lines(
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
     signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations)), sg) for sg in signs), key=lambda c: c[0]
+        ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
+        key=lambda c: c[0],
     )
     named_later(raw, mapping)
     lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
@@ -240,25 +248,6 @@ def _definitions(
     return defs
 
 
-def _candidates(ctx: Context, truth: dict) -> list[tuple[str, sympy.Expr]]:
-    """What an unknown name may stand for: a velocity after the impact, the common velocity,
-    an unknown given, the energy lost, the impulse; with either sign for velocities."""
-    U = list(truth)
-    out = [(u.name, u) for u in U]
-    out.append(("the common velocity", common_velocity(ctx)))
-    derived = ctx.derived()
-    out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
-    out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
-    out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
-    out += [(g.name, g.symbol) for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
-    nm = ctx.model.nm
-    zeros = ctx.model.zeros
-    out += [
-        (c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros
-    ]
-    return out
-
-
 def _infer(
     ctx: Context,
     raw: list[Read],
@@ -267,9 +256,11 @@ def _infer(
     sign: int,
     pt: dict,
     known: tuple[dict, tuple[sympy.Expr, ...]],
+    kinded: dict[str, Dim] | None = None,
 ) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
     """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign; ``known``
-    is the true velocities and the equations (1)-(4)."""
+    is the true velocities and the equations (1)-(4); ``kinded`` the names whose kind the text
+    states (a mass, an impulse): only a quantity of that kind is inferred for them."""
     truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
@@ -288,7 +279,8 @@ def _infer(
             unknown += [p for p in new if p not in unknown]
             if len(new) >= 2 and not together:
                 together = new[:JOINT]
-    cands = _candidates(ctx, truth)
+    cands = candidates(ctx, truth, set((kinded or {}).values()))
+    kind = {sympy.Symbol(PREFIX + n): d for n, d in (kinded or {}).items()}
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
@@ -298,6 +290,7 @@ def _infer(
             c
             for c in combos(group, cands, raw, velocities_before(ctx))
             if not any(p in solved and e in known for p, (_w, e) in zip(group, c, strict=True))
+            and all(of_kind(kind.get(p), w) for p, (w, _e) in zip(group, c, strict=True))
         ]
         if not options:
             continue

@@ -28,6 +28,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.spellings import greek_letters, notes_names, subscript
 from derive.checking.wordnames import in_words
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
@@ -106,7 +107,8 @@ GREEK = frozenset(
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
-    text = re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", _subscript, text)  # v₁ -> v_1, v_A₂ -> v_A2
+    text = re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text)  # v₁ -> v_1, v_A₂ -> v_A2
+    text = greek_letters(text, known)
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
@@ -192,17 +194,24 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
     return out, labels
 
 
-def of_the_body(text: str, label: str, seen: set[str] = frozenset(), names: bool = True) -> str:
+def of_the_body(
+    text: str, label: str, seen: set[str] = frozenset(), names: bool = True, keep: set[str] = frozenset()
+) -> str:
     """A side under a body's lead-in (``A: u_x = 2``, ``B before: along = -6``) with the body in
     its names: ``u_x`` -> ``u_Ax``, ``v_y`` -> ``v_Ay``, ``u`` -> ``u_A``, ``along`` -> ``A_n``
-    (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``."""
+    (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``. The problem's own names
+    (``keep``: a given speed u) stay as they are."""
     m = _BODY.match(label.strip())
     if not m:
-        return _after_label(text, label, seen)
+        return _after_label(text, label, seen - set(keep))
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
+
+    def own(k: re.Match, name: str) -> str:
+        return k.group(0) if k.group(0) in keep else name
+
     if names:  # a lead-in's body is in the names under it (not a body found from the words)
-        text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: f"{k.group(1)}_{body}{k.group(2)}", text)
-        text = re.sub(r"\b([uv])\b(?!_)", lambda k: f"{k.group(1)}_{body}", text)
+        text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: own(k, f"{k.group(1)}_{body}{k.group(2)}"), text)
+        text = re.sub(r"\b([uv])\b(?!_)", lambda k: own(k, f"{k.group(1)}_{body}"), text)
     prime = "'" if after else ""
     text = _COMPONENT_OF.sub("", text)
     if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
@@ -232,20 +241,6 @@ def _after_label(text: str, label: str, seen: set[str]) -> str:
     return re.sub(r"(?<![A-Za-z_'.])([a-dfhk-lnoprstx-zA-LN-UX-Z])(?![\w'(])", primed, text)
 
 
-def _subscript(m: re.Match) -> str:
-    digits = m.group(2).translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
-    return m.group(1) + ("" if "_" in m.group(1) else "_") + digits
-
-
-def notes_names(text: str) -> str:
-    """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
-    ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""
-    text = re.sub(r"\b[vV]_([AB])([12])([nt])\b", r"v_\1\2\3", text)
-    text = re.sub(r"\b[vV]_([AB])([nt])([12])\b", r"v_\1\3\2", text)
-    text = re.sub(r"\bM_([AB])\b", r"m_\1", text)
-    return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
-
-
 #: Words of two letters, never two names side by side.
 _SHORT_WORDS = re.compile(r"at|of|is|on|or|in|it|to|as|an|be|by|if|so|up|we|no|do|go|he|me|my|us|am|ok|ie|eg|re|vs")
 FUNCTION_WORDS = frozenset(
@@ -257,6 +252,8 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
     """One side of a relation in the problem's symbols (placeholders for unknown names); where
     it does not read, the first side is read without its leading words and the last without
     its trailing ones (prose around the mathematics)."""
+    if last:  # "e = 3/4. α is the angle …": the sentence ends at the number
+        text = re.split(r"(?<=\d)\.\s+(?=[^\d\s.])", text, maxsplit=1)[0]
     try:
         return parse(student(text), names).expr
     except ParseError:
@@ -305,10 +302,14 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                 out[plain] = before[body]  # v_A and v_A': v_A is the velocity before
         out[f"m{one}"] = out[f"m_{one}"] = ctx.model.m_A if body == "A" else ctx.model.m_B
         if oblique:
+            primed = used is not None and any(f"v_{body}{c}p" in used for c in ("", "n", "t"))
             for c in "nt":
                 out[f"u_{body}{c}"] = getattr(nm, f"{body}1{c}")
-                if u_used or (used is not None and f"v_{body}p" not in used and f"v_{body}{c}p" not in used):
-                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is)
+                out[f"v_{body}{c}p"] = getattr(nm, f"{body}2{c}")  # v_At': after
+                if not primed:
+                    out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is used)
+                else:
+                    out[f"v_{body}{c}"] = getattr(nm, f"{body}1{c}")  # v_An beside v_A', v_At': before
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
@@ -326,7 +327,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if u_used:
         out["v"] = after["A"]
     if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
-        out["V"] = out["v_f"] = out["v_2"] = _together(ctx, after["A"], after["B"])
+        out["V"] = out["v_f"] = out["v_2"] = moving_together(ctx, after["A"], after["B"])
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
@@ -343,9 +344,9 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
     given = {g.name for g in p.givens if not g.unknown}
     open_ = [b for b in "AB" if not ({f"v_{b}2", f"v_{b}2n"} & given)]
     together = any(g.name == "e" and g.value == 0 for g in p.givens)
-    lone = _together(ctx, after["A"], after["B"]) if together else after[open_[0]] if len(open_) == 1 else None
+    lone = moving_together(ctx, after["A"], after["B"]) if together else after[open_[0]] if len(open_) == 1 else None
     if not p.oblique and not u_used and lone is not None:
-        out["V"] = lone  # together: their common velocity after (:func:`_together`)
+        out["V"] = lone  # together: their common velocity after (:func:`moving_together`)
         if not (together and both):
             out["v"] = lone
     masses = [g.symbol for g in p.givens if g.unknown and g.dim == MASS]
@@ -372,7 +373,7 @@ def _components(nm) -> dict[str, sympy.Expr]:
     return out
 
 
-def _together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) -> sympy.Expr | None:
+def moving_together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) -> sympy.Expr | None:
     """The one velocity of two bodies that move off together (e = 0): the velocity of their
     centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
     when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
@@ -408,6 +409,7 @@ _REVERSED = re.compile(
 )
 _FORWARD = re.compile(
     rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
+    r"|direction\s+(?:that\s+|in\s+which\s+)?a\s+(?:moves|travels|is\s+(?:moving|travelling)|goes|starts)"
     r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive",
     re.I,
 )

@@ -52,7 +52,9 @@ def _along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
 #: Names declared in words: "let x, y be the speeds of P and Q after the collision", "x and y are
 #: the velocities of A and B after", "x = velocity of A after".
 _NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
-_WHAT = r"(?:be|are|is|as|=|denote|represent|for)\s+(?:the\s+)?(?:final\s+)?(?:speeds?|velocit(?:y|ies))\s+of\s+"
+_WHAT = (
+    r"(?:be|are|is|as|=|denote|represent|for)\s+(?:the\s+)?(?:final\s+)?(?:speeds?|velocit(?:y|ies)|vels?\.?)\s+of\s+"
+)
 _PAIR_WORDS = re.compile(
     rf"\b{_NAME_WORD}\s*(?:,|and)\s*{_NAME_WORD}\s+{_WHAT}(.{{1,30}}?)\s+and\s+(.{{1,30}}?)\s+(after|before)\b", re.I
 )

@@ -1,0 +1,102 @@
+"""Names a student declares as a component by the words beside them: ``\\text{along l.o.c.:}\\quad
+u_1 = u\\sin 30°``, ``perp.: u_2 = u cos 30°``, ``u_x = U sin α (along wall)``, ``u_y = U cos α
+(into wall)``. The words name the axis (the line of centres, or across it); the body is the one
+whose given velocity the right side resolves, and the time is before, unless the line leads in
+with ``After:``. A name in another letter with the same subscript under ``After:`` (``v_x`` after
+``u_x``) is the same axis after the impact. The words win over the habits (``u_1``, ``u_2`` are
+not A and B here).
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.mathtext.reader import Relation
+
+#: Words that name the line of centres (derive's n) or the axis across it (t), for two bodies.
+_LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact)|common\s+normal)"
+_ALONG = rf"(?:along|parallel\s+to|∥)\s*{_LINE}|∥|(?:along\s+the\s+)?normal(?:\s+comp\w*)?"
+_ACROSS = (
+    r"(?:perp(?:\.|endicular)?|⊥)(?:\s*to)?(?:\s*(?:it|the\s+l\w*|l\.?\s?o\.?\s?c\.?))?|across(?:\s+it)?"
+    r"|(?:along\s+the\s+(?:common\s+)?)?tangent(?:ial)?(?:\s+comp\w*)?"
+)
+#: For a wall (or cushion): along it is t, into it (normal to it) is n.
+_FIXED = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface)"
+_WALL_T = rf"along\s+{_FIXED}|parallel\s+to\s+{_FIXED}"
+_WALL_N = rf"(?:into|towards?|normal\s+to|perpendicular\s+to|away\s+from)\s+{_FIXED}"
+_AFTER = re.compile(r"^\s*(?:after(?:wards)?|finally)\b", re.I)
+_STRIP = re.compile(r"\\(?:text|textrm|mathrm|mbox)\s*\{([^{}]*)\}|\\q?quad|\\[,;: ]|[$&]")
+
+
+def _axis(words: str, fixed: bool) -> str:
+    """``n`` or ``t`` for the words naming an axis, "" where they name none."""
+    words = words.strip().rstrip(":").strip()
+    if fixed:
+        if re.fullmatch(_WALL_N, words, re.I):
+            return "n"
+        if re.fullmatch(_WALL_T, words, re.I):
+            return "t"
+    if re.fullmatch(_ALONG, words, re.I):
+        return "n"
+    return "t" if re.fullmatch(_ACROSS, words, re.I) else ""
+
+
+def _words_beside(r: Relation, name: str) -> str:
+    """The words just before ``name`` on its line (a lead-in) or in brackets after the relation."""
+    plain = _STRIP.sub(lambda m: f" {m.group(1)} " if m.group(1) else " ", r.written)
+    at = re.search(rf"(?<![\w']){re.escape(name)}(?![\w'])\s*=", plain)
+    if at is None:
+        return ""
+    before = ([p for p in re.split(r"[,;]|\s{3,}", plain[: at.start()]) if p.strip()] or [""])[-1]
+    before = re.sub(r"^\s*(?:before|after(?:wards)?|initially|finally)\s*:\s*", "", before, flags=re.I)
+    if before.strip():
+        return before
+    bracket = re.match(r"[^(,;]*?\(\s*([A-Za-z .]+?)\s*\)", plain[at.end() :])
+    return bracket.group(1) if bracket else ""
+
+
+def _body(side: str, ctx: Context) -> str:
+    """The body whose given velocity before the impact the side resolves ("" where none or both)."""
+    found = set()
+    for g in ctx.problem.givens:
+        m = re.fullmatch(r"v_([AB])1", g.name)
+        if m is None:
+            continue
+        x = getattr(g, "definition", None)
+        spelled = {str(s) for s in x.free_symbols} if isinstance(x, sympy.Expr) else set()
+        if isinstance(g.value, sympy.Number) and g.value != 0:  # a speed given as a number: as written
+            spelled |= {str(g.value), f"{float(g.value):g}"}
+        for word in spelled | {g.name}:
+            if re.search(rf"(?<![\w.]){re.escape(word)}(?![\w]|\.\d)", side):
+                found.add(m.group(1))
+    return found.pop() if len(found) == 1 else ""
+
+
+def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]) -> dict[str, sympy.Expr]:
+    """The names declared as components by the words beside them -> derive's component."""
+    if not ctx.problem.oblique:
+        return {}
+    fixed = bool(ctx.problem.fixed_B)
+    nm = ctx.model.nm
+    out: dict[str, sympy.Expr] = {}
+    letters: dict[str, str] = {}  # a subscript -> the axis its names were declared on
+    for r in relations:
+        name = r.sides[0].strip()
+        if len(r.sides) < 2 or name in reserved or not re.fullmatch(r"[A-Za-z]_?\w{1,3}", name):
+            continue
+        after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
+        axis = _axis(_words_beside(r, name), fixed)
+        sub = name.split("_")[-1] if "_" in name else name[1:]
+        if not axis and after and sub in letters:
+            axis = letters[sub]
+        body = "A" if fixed else _body(r.sides[1], ctx)
+        if not axis or not body:
+            continue
+        x = getattr(nm, f"{body}{'2' if after else '1'}{axis}", None)
+        if x is not None:
+            out.setdefault(name, x)
+            letters.setdefault(sub, axis)
+    return out

@@ -1,0 +1,48 @@
+"""Names as students spell them, in derive's spelling: subscripts typed as characters (``v₁``),
+the notes' spellings (``V_At2``), Greek letters typed as themselves (``λ`` for the problem's
+``lam``). :func:`.naming.rewrite` puts a side through them before reading it.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: Greek letters typed as themselves, by their names.
+_UNICODE_GREEK = {
+    "α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "ε": "epsilon", "θ": "theta", "λ": "lambda",
+    "μ": "mu", "σ": "sigma", "τ": "tau", "φ": "phi", "ϕ": "phi", "ψ": "psi", "ω": "omega",
+}  # fmt: skip
+
+
+def greek_letters(text: str, known: set[str]) -> str:
+    """Greek letters as the problem names them: ``λ`` and ``lambda`` are the problem's ``lam``
+    (a name the Greek name starts with), and a letter typed beside a name is a product
+    (``kλu`` -> ``k lam u``)."""
+
+    def alias(name: str) -> str:
+        if name in known:
+            return name
+        short = [k for k in known if len(k) >= 3 and k.isalpha() and name.startswith(k) and k != name]
+        return short[0] if len(short) == 1 else name
+
+    def letter(m: re.Match) -> str:
+        name = alias(_UNICODE_GREEK[m.group(1)])
+        return (m.group(1) if name == _UNICODE_GREEK[m.group(1)] else f" {name}") + (" " if m.group(2) else "")
+
+    text = re.sub(rf"([{''.join(_UNICODE_GREEK)}])(?=([A-Za-z(])?)", letter, text)
+    return re.sub(r"(?<![A-Za-z\\])(" + "|".join(sorted(set(_UNICODE_GREEK.values()))) + r")(?![A-Za-z])",
+                  lambda m: alias(m.group(1)), text)  # fmt: skip
+
+
+def subscript(m: re.Match) -> str:
+    digits = m.group(2).translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
+    return m.group(1) + ("" if "_" in m.group(1) else "_") + digits
+
+
+def notes_names(text: str) -> str:
+    """The notes' spellings of names as derive's: ``V_At2``, ``V_An2`` -> ``v_A2t``, ``v_A2n``;
+    ``V_A2t`` -> ``v_A2t``; ``M_A`` -> ``m_A``; ``0.5 x 0.8`` (x for times) -> ``0.5 * 0.8``."""
+    text = re.sub(r"\b[vV]_([AB])([12])([nt])\b", r"v_\1\2\3", text)
+    text = re.sub(r"\b[vV]_([AB])([nt])([12])\b", r"v_\1\3\2", text)
+    text = re.sub(r"\bM_([AB])\b", r"m_\1", text)
+    return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)

@@ -1,0 +1,212 @@
+"""Names known by what they are, not by inference: a name set equal to a number with a unit
+(``m = 47/32.2 = 1.4596 slug``, ``$m = 0.150$ kg puck``, ``J = 9.10 lb.s``) or declared in words
+as a mass, an impulse or an energy (``impulse J on B``, ``m is the mass of each disc``) is that
+kind of quantity, never a velocity.
+
+Where its value is the problem's value of one quantity of that kind (the mass 0.150 kg is the
+puck's), the name stands for it, as if declared; where it is not, only quantities of that kind
+may be inferred for it (:func:`.inference._infer`). A velocity's unit says nothing new (names of
+velocities are inferred anyway), so only masses, impulses and energies are kinds here.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.naming import common_velocity, moving_together
+from derive.checking.numeric import number_of
+from derive.mathtext.notation import student
+from derive.mathtext.reader import Relation
+from derive.problem.expr import ParseError, parse
+from derive.problem.units import ENERGY, IMPULSE, MASS, VELOCITY, Dim
+
+#: Units as students type them, by the kind of quantity they measure (longest first).
+_UNITS: tuple[tuple[str, Dim], ...] = (
+    (r"kg\s*[·.*]?\s*m\s*(?:/\s*s|s\^?\{?-1\}?)", IMPULSE),
+    (r"(?:N|lb|lbf)\s*[·.*]?\s*s(?:ec)?", IMPULSE),
+    (r"ft\s*[·.*-]?\s*lbf?|kJ|J|joules?", ENERGY),
+    (r"(?:m|ft|cm|km|mi)\s*(?:/\s*(?:s|h|hr|sec)|s\^?\{?-1\}?)|mph|km/h", VELOCITY),
+    (r"kg|kilograms?|grams?|g|slugs?|lbm|tonnes?", MASS),
+)
+_UNIT = re.compile(r"|".join(f"(?:{u})" for u, _ in _UNITS))
+#: LaTeX around a unit: ``\ \mathrm{m\,s^{-1}}``, ``\text{ kg}``, a closing ``$``.
+_WRAP = re.compile(r"\\(?:mathrm|text|textrm|mbox|operatorname)\s*\{|\\[,;: ]|\\quad|[${}~]")
+#: Words naming a kind of quantity, before the name (``impulse J``) or after it (``J is the impulse``).
+_KIND_WORDS: tuple[tuple[str, Dim], ...] = (
+    (r"impulse", IMPULSE),
+    (r"(?:kinetic\s+)?energy|KE|K\.E\.", ENERGY),
+    (r"mass(?:es)?", MASS),
+)
+_NAME = r"\$?([A-Za-z](?:_\{?[A-Za-z0-9]{1,3}\}?)?)\$?"
+
+
+def _kind_of_unit(text: str) -> tuple[Dim, str] | None:
+    """The kind of quantity the unit at the start of ``text`` measures, and the unit as typed
+    (None: no unit there)."""
+    if not re.match(r"\s|\\[ ,;:]|\\(?:text|mathrm|mbox)|\$|~", text):
+        return None  # glued to its number: 2g is 2 times g, not 2 grams
+    text = _WRAP.sub(" ", text).strip()
+    m = _UNIT.match(text)
+    if m is None or (m.end() < len(text) and text[m.end()].isalpha()):
+        return None
+    for pattern, dim in _UNITS:
+        if re.fullmatch(pattern, m.group(0)):
+            return dim, m.group(0)
+    return None
+
+
+def _unit_of(r: Relation) -> tuple[Dim, str] | None:
+    """The kind and unit of the number a relation ends with: in its last side (``9.10 lb.s``) or
+    after it on the line (``$m = 0.150$ kg puck``)."""
+    value = r.sides[-1].strip()
+    m = re.match(r"[-+]?\d[\d.]*", value)
+    if m is None:
+        return None
+    found = _kind_of_unit(value[m.end() :]) if value[m.end() :].strip() else None
+    if found is None:  # the unit outside the relation as read (or read into it: 20 g as 20/1000)
+        at = re.search(rf"(?<![\d.]){re.escape(m.group(0))}(?![\d])", r.written)
+        found = _kind_of_unit(r.written[at.end() :]) if at else None
+    return found
+
+
+def _in_words(text: str) -> dict[str, Dim]:
+    """Names a line declares in words as a kind: ``impulse J on B``, ``the mass m``, ``let m be the
+    mass``, ``J is the impulse``, ``m = mass of each disc``."""
+    plain = re.sub(r"\\[()]|\\text\{|[{}]", " ", text)
+    out: dict[str, Dim] = {}
+    for words, dim in _KIND_WORDS:
+        before = rf"\b(?:{words})\s+(?:of\s+(?:each|the\s+\w+|[AB])\s+)?(?:is\s+|as\s+|be\s+)?{_NAME}(?![\w'(])"
+        after = rf"(?<![\w\\]){_NAME}\s*(?:is|be|=|denotes?|for|as)\s+(?:the\s+)?(?:\w+\s+)?(?:{words})\b"
+        for pattern in (before, after):
+            for m in re.finditer(pattern, plain, re.I):
+                name = m.group(1).replace("{", "").replace("}", "")
+                if name not in ("a", "i", "s", "A", "B"):  # words and the bodies' letters
+                    out.setdefault(name, dim)
+    return out
+
+
+def kind_of(what: str) -> Dim:
+    """The kind of one of :func:`candidates`' quantities, by derive's name for it."""
+    if what in ("J_n", "-J_n"):
+        return IMPULSE
+    if what in ("T_1", "T_2", "T_lost"):
+        return ENERGY
+    return MASS if what in ("m_A", "m_B") else VELOCITY
+
+
+def kinds(relations: tuple[Relation, ...], text: str, reserved: set[str]) -> dict[str, Dim]:
+    """Each name of the student's own whose kind the text states: by the unit after its value
+    (``m = 1.4596 slug``) or in words (``impulse J``). ``reserved`` are names with a meaning
+    already (the problem's, derive's)."""
+    out: dict[str, Dim] = {}
+    for line in text.splitlines():
+        for name, dim in _in_words(line).items():
+            out.setdefault(name, dim)
+    for r in relations:
+        name = r.sides[0].strip()
+        if len(r.sides) < 2 or not re.fullmatch(r"[A-Za-z]\w{0,4}", name):
+            continue
+        unit = _unit_of(r)
+        if unit is not None:
+            out[name] = unit[0]
+    return {k: v for k, v in out.items() if k not in reserved}
+
+
+#: The letters students name a mass or an impulse with: a number set to them is that kind even
+#: without a unit (``M = 70.0``, ``J = 5.97``).
+_LETTERS = ((re.compile(r"[mM](?:_?\w{1,3})?"), MASS), (re.compile(r"[IJ](?:_?\w{1,2})?"), IMPULSE))
+
+
+def by_letter(relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, Dim]:
+    """The names set to a number whose letter says its kind (``m``, ``M_2`` a mass; ``J``, ``I`` an
+    impulse), a kind that a unit or words after it may still overrule (:func:`kinds`)."""
+    out: dict[str, Dim] = {}
+    for r in relations:
+        name = r.sides[0].strip()
+        if len(r.sides) < 2 or name in reserved or not re.match(r"[-+]?\d", r.sides[-1].strip()):
+            continue
+        for pattern, dim in _LETTERS:
+            if pattern.fullmatch(name):
+                out[name] = dim
+    return out
+
+
+def quantities(ctx: Context) -> dict[Dim, list[tuple[str, sympy.Expr]]]:
+    """The problem's quantities of each kind a name may stand for (derive's name, symbol)."""
+    model = ctx.model
+    derived = {k: v[0] for k, v in ctx.derived().items()}
+    out: dict[Dim, list[tuple[str, sympy.Expr]]] = {
+        MASS: [("m_A", model.m_A), ("m_B", model.m_B)] if not ctx.problem.fixed_B else [("m_A", model.m_A)],
+        ENERGY: [(n, derived[n]) for n in ("T_1", "T_2", "T_lost") if n in derived],
+        IMPULSE: [(n, derived[n]) for n in ("J_n",) if n in derived],
+    }
+    if "J_n" in derived:
+        out[IMPULSE].append(("-J_n", -derived["J_n"]))
+    return out
+
+
+def by_value(
+    ctx: Context, relations: tuple[Relation, ...], found: dict[str, Dim], values: tuple[dict, dict]
+) -> dict[str, sympy.Expr]:
+    """The names of ``found`` (name -> kind) set equal to a number that is the problem's value of
+    one quantity of their kind (to the figures written): name -> that quantity. ``values`` (the
+    point of the givens, the true values of the unknowns) puts the numbers in."""
+    out: dict[str, sympy.Expr] = {}
+    table = quantities(ctx)
+    for r in relations:
+        name = r.sides[0].strip()
+        dim = found.get(name)
+        if dim is None or name in out or len(r.sides) < 2 or any(re.search(r"[A-Za-z]", x) for x in r.sides[1:-1]):
+            continue  # "mu = m1 m2/(m1 + m2) = 0.1497 kg": a name defined by its expression
+        m = re.match(r"([-+]?)(\d+)\.?(\d*)", r.sides[-1].strip())
+        try:  # "20/1000": 20 g read in kg
+            value = number_of(parse(student(r.sides[-1]), {}).expr) if m else None
+        except ParseError:
+            value = None
+        if m is None or value is None or float(m.group(0)) == 0:
+            continue
+        written = value.real
+        half = (0.5 * 10 ** -len(m.group(3)) + 1e-12) * abs(written / float(m.group(0)))  # to the figures written
+        hits = []
+        for _what, e in table.get(dim, []):
+            x = number_of(ctx.in_unknowns(e).xreplace(values[0]).xreplace(values[1]))
+            if x is not None and abs(x.imag) < 1e-12 and abs(x.real - written) <= 1.01 * half:
+                hits.append(e)
+        if hits:
+            out[name] = hits[0]  # equal masses: either, and the first is A's
+    return out
+
+
+def of_kind(dim: Dim | None, what: str) -> bool:
+    """Whether a name of the kind ``dim`` (None: not stated) may stand for the candidate ``what``:
+    a stated kind takes its own only; a name of no stated kind is no mass and no energy but the loss."""
+    if dim is None:
+        return kind_of(what) != MASS and what not in ("T_1", "T_2")
+    return kind_of(what) == dim
+
+
+def candidates(ctx: Context, truth: dict, dims: set[Dim] = frozenset()) -> list[tuple[str, sympy.Expr]]:
+    """What an unknown name may stand for: a velocity after the impact, the common velocity,
+    an unknown given, the energy lost, the impulse; with either sign for velocities; and, for
+    names stated to be a mass or an energy (``dims``), the masses and energies."""
+    U = list(truth)
+    out = [(u.name, u) for u in U]
+    nm = ctx.model.nm
+    if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens) and not ctx.problem.fixed_B:
+        out.insert(0, ("the common velocity after", moving_together(ctx, nm.A2n, nm.B2n)))  # e = 0: one velocity
+    out.append(("the common velocity", common_velocity(ctx)))
+    derived = ctx.derived()
+    out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
+    out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
+    out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
+    out += [(g.name, g.symbol) for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
+    zeros = ctx.model.zeros
+    out += [
+        (c.name, c) for c in (nm.A1n, nm.B1n, nm.A1t, nm.B1t) if c is not None and c not in truth and c not in zeros
+    ]
+    table = quantities(ctx)
+    out += [c for d in dims & {MASS, ENERGY} for c in table[d] if c not in out]
+    return out

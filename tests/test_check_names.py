@@ -1,0 +1,182 @@
+"""What a student's names stand for (issue #31, names): a name set equal to a value with a mass,
+impulse or energy unit, or declared in words as one, is that quantity, never a velocity; the
+problem's own letters keep their meaning under a body's lead-in.
+
+Values worked by hand. MSU bullet (0.020 kg at 300 m/s lodges in a 4.0 kg block at rest):
+w = 0.020 x 300 / 4.020 = 6/4.02 = 1.4925 m/s; the impulse on the block 4.0 x 1.4925 = 5.970 N s;
+KE before ½(0.020)(300²) = 900 J. OCR M3 Jan 2012 Q2 (2m at u, m at u opposite, each at alpha to
+the line of centres, e = 0.5): along the line 2u cos a and -u cos a, V = u cos a / 3,
+v_A = V - e(u cos a - V) = 0, v_B = V + e(V + u cos a) = u cos a.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+from derive.checking.valuenames import kinds
+from derive.mathtext.reader import read_relations
+from derive.problem.units import ENERGY, IMPULSE, MASS
+
+
+def report(problem: str, work: str) -> derive.checking.report.CheckReport:
+    return derive.check(derive.solve(derive.load(problem)), derivation=work)
+
+
+def by_line(problem: str, work: str) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for i in report(problem, work).items:
+        if i.kind == "line" and i.name.isdigit():
+            worst = ("wrong", "carried", "error", "correct")
+            old = out.get(i.name)
+            out[i.name] = i.status if old is None or worst.index(i.status) < worst.index(old) else old
+    return out
+
+
+BULLET = "msu-lectureonline-bullet-lodges-in-block"
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("m = 47/32.2 = 1.4596 slug", {"m": MASS}),
+        ("$p = 0.150$ kg puck, $q = 70.0$ kg goalie", {"p": MASS, "q": MASS}),
+        ("J = 1.4596 * 6.235 = 9.10 lb.s", {"J": IMPULSE}),
+        (r"I = 4.0(1.49) = 5.97\ \mathrm{N\,s}", {"I": IMPULSE}),
+        ("L = 0.5(4)(3^2) = 18 J", {"L": ENERGY}),
+        ("impulse J on B along the line of centres: J = m vB", {"J": IMPULSE}),
+        ("Let P be the impulse on the block. P = 3", {"P": IMPULSE}),
+        ("x = 3.0 m/s, then y = 2g", {}),  # a velocity is no kind of its own; 2g is 2 times g
+        ("x = 3 given", {}),
+    ],
+)
+def test_the_kind_of_a_name_by_its_unit_or_words(text: str, expected: dict) -> None:
+    found = kinds(tuple(read_relations(text)), text, set())
+    assert {k: v for k, v in found.items() if v in (MASS, IMPULSE, ENERGY)} == expected
+
+
+@pytest.mark.parametrize("masses", ["p = 0.020 kg bullet, q = 4.0 kg block", "p = 20 g bullet, q = 4.0 kg block"])
+def test_names_set_to_a_mass_and_declared_an_impulse_are_not_velocities(masses: str) -> None:
+    work = "\n".join(
+        [
+            masses,
+            "Let P be the impulse on the block.",
+            "p(300) = (p + q) w",
+            "w = 6/4.02 = 1.49 m/s",
+            "P = q w = 4.0(1.49) = 5.97 N s",
+        ]
+    )
+    assert by_line(BULLET, work) == {"1": "correct", "3": "correct", "4": "correct", "5": "correct"}
+
+
+def test_a_slip_in_an_impulse_named_in_words_is_wrong_on_its_line() -> None:
+    work = "m = 0.020 kg, M = 4.0 kg\nJ is the impulse on the block\nw = 0.020(300)/4.02 = 1.49\nJ = M w = 4.0(1.49) = 5.79 N s"
+    lines = by_line(BULLET, work)
+    assert lines["3"] == "correct" and lines["4"] == "wrong"
+
+
+def test_a_given_letter_under_a_bodys_lead_in_is_the_given() -> None:
+    work = "\n".join(
+        [
+            "V = (2m u cos(alpha) - m u cos(alpha))/(3m) = u cos(alpha)/3",
+            "A: v_A = V - e(u cos(alpha) - V) = 0",
+            "B: v_B = V + e(V + u cos(alpha)) = u cos(alpha)",
+        ]
+    )
+    lines = by_line("ocr-m3-2012-january-q2-opposite-directions-each-at-alpha", work)
+    assert lines == {"1": "correct", "2": "correct", "3": "correct"}
+
+
+def test_components_unprimed_beside_primed_ones_are_before_the_impact() -> None:
+    # Pre-U specimen Q2 (equal balls, A at u at 30° to the line of centres, B at rest): before,
+    # along u cos 30°, across u sin 30°; m u cos 30° = m v_A' + m v_B', v_B' - v_A' = e u cos 30°,
+    # and A's component across is unchanged.
+    work = "\n".join(
+        [
+            r"$v_{An} = u\cos 30^\circ$",
+            r"$v_{At} = u\sin 30^\circ$",
+            r"$m v_{An} = m v_A' + m v_B'$",
+            r"$v_B' - v_A' = e v_{An}$",
+            r"$v_{At}' = v_{At}$",
+        ]
+    )
+    lines = by_line("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg", work)
+    assert lines == {str(n): "correct" for n in range(1, 6)}
+
+
+OCR_FM = "ocr-fm-2023-oblique-discs-60deg"
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        # OCR FM 2023 (A 4 m/s at 60° to the line of centres): along 4 cos 60° = 2, across 4 sin 60° = 3.46
+        "\\begin{align*}\n\\text{along l.o.c.:}\\quad u_1 &= 4\\cos 60^\\circ = 2\\\\\n"
+        "\\text{perp.:}\\quad u_2 &= 4\\sin 60^\\circ = 3.46\n\\end{align*}\n",
+        "u_1 = 4 cos 60° = 2 (along the line of centres)\nu_2 = 4 sin 60° = 3.46 (perpendicular to it)\n",
+        "Along the line of centres: u_1 = 4 cos 60° = 2\nPerpendicular: u_2 = 4 sin 60° = 3.46\n",
+        "∥ l.o.c.: u_1 = 4 cos 60° = 2\n⊥ l.o.c.: u_2 = 4 sin 60° = 3.46\n",
+        "along the common normal: u_1 = 4 cos 60° = 2\ntangential: u_2 = 4 sin 60° = 3.46\n",
+    ],
+)
+def test_names_labelled_with_an_axis_are_that_component_of_the_body_resolved(work: str) -> None:
+    assert list(by_line(OCR_FM, work).values()) == ["correct", "correct"]
+
+
+def test_a_component_labelled_with_an_axis_and_resolved_wrongly_is_wrong() -> None:
+    work = "along l.o.c.: u_1 = 4 cos 60° = 2\nperp.: u_2 = 4 cos 60° = 2\n"
+    assert by_line(OCR_FM, work) == {"1": "correct", "2": "wrong"}
+
+
+def test_a_greek_letter_typed_is_the_problems_letter_for_it(tmp_path) -> None:
+    # m at u catches 2m at λu (λ < 1, written lam in the file): u + 2λu = v_A + 2 v_B,
+    # v_B - v_A = e(u - λu); the approach u - λu.
+    problem = tmp_path / "lam.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm = "kg"\nu = "m/s"\nlam = "lam"\ne = "e"\n'
+        'm_A = "m"\nm_B = "2*m"\nv_A1 = "u"\nv_B1 = "lam*u"\n'
+    )
+    work = "mu + 2mλu = m v_A + 2m v_B\nu + 2λu = v_A + 2v_B\nv_B - v_A = e(u - λu)\nv_B - v_A = eu(1 + λ)\n"
+    assert by_line(str(problem), work) == {"1": "correct", "2": "correct", "3": "correct", "4": "wrong"}
+
+
+@pytest.mark.parametrize(
+    ("words", "sign"),
+    [("Let right be +ve (direction A moves)", 1), ("positive: the direction in which A travels", 1)],
+)
+def test_the_direction_a_body_moves_declared_positive(words: str, sign: int) -> None:
+    from derive.checking.naming import sign_of
+
+    assert sign_of(words) == sign
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Let the impulse be J.", {"J": IMPULSE}),
+        ("the mass of A is M", {"M": MASS}),
+        ("energy is conserved; the impulse on B acts along n", {}),
+        ("the mass A moves at 4 m/s", {}),
+    ],
+)
+def test_a_kind_declared_in_words_and_words_that_declare_none(text: str, expected: dict) -> None:
+    assert kinds(tuple(read_relations(text)), text, set()) == expected
+
+
+def test_with_e_zero_a_name_for_the_velocity_after_carries_a_slip_into_the_energy() -> None:
+    # the bullet and block move off together at 6/4.02 = 1.4925 m/s; 1.94 is an arithmetic slip,
+    # and ½(4.02)(1.94²) = 7.565 J is worked from it: carried
+    work = "0.020(300) = 4.02 v'\nv' = 6/4.02 = 1.94\nKE after = ½(4.02)(1.94)^2 = 7.56 J\n"
+    assert by_line(BULLET, work) == {"1": "correct", "2": "wrong", "3": "carried"}
+
+
+def test_a_mass_letter_set_to_a_given_mass_without_a_unit_is_that_mass() -> None:
+    # the bullet (0.020 kg) and block (4.0 kg): m1(300) = (m1 + m2) w, w = 6/4.02 = 1.49
+    work = "m1 = 0.020, M = 4.0\nm1(300) = (m1 + M) w\nw = 6/4.02 = 1.49\nJ = M w = 5.97\n"
+    assert by_line(BULLET, work) == {"1": "correct", "2": "correct", "3": "correct", "4": "correct"}
+
+
+def test_a_sentence_after_the_last_number_is_not_part_of_it() -> None:
+    # the wall (e = 0.4): "e = 0.4. The ball …" is e = 0.4, not 0.4 times a name
+    work = "e = 0.4. The ball rebounds.\ne = 0.4. θ is the angle with the wall\n"
+    assert by_line("edexcel-m2-ball-rebounds-from-wall", work) == {"1": "correct", "2": "correct"}
