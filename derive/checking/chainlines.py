@@ -22,7 +22,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
 from derive.checking.report import Item, merged
-from derive.checking.stageslips import StageMistakes, stage_given, stage_mistakes
+from derive.checking.stageslips import StageMistakes, named_arithmetic, stage_given, stage_mistakes
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -71,6 +71,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
                 item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
+            item = named_arithmetic(item)  # 441 + 784 = 1125
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= {x for x in decimals(sides[-1:]) if sympy.Rational(x) not in ctx.data}  # not a given
         previous = exprs if item.status == "correct" else []

@@ -4,9 +4,12 @@ stage is named as in a single impact."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.report import Item
 from derive.errors import InputError
 
 #: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
@@ -63,3 +66,11 @@ def stage_given(ctx: Context, exprs) -> bool:
         if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
             return True
     return False
+
+
+def named_arithmetic(item: Item) -> Item:
+    """A stage's line found false with no mistake named, where a side of numbers is not what the
+    student wrote it comes to (``441 + 784 = 1125``): an arithmetic slip, named so."""
+    if item.status != "wrong" or item.slip or not item.message.endswith("(an arithmetic slip)."):
+        return item
+    return replace(item, slip="arithmetic")
