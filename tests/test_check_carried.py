@@ -149,3 +149,14 @@ def test_sin_and_cos_swapped_on_a_then_again_on_b_carries_with_both_swapped() ->
     assert found[1] == ("wrong", "sin_cos_swapped", False)
     assert found[2] == ("wrong", "sin_cos_swapped", True)
     assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_chain_value_in_letters_got_wrong_carries_through_the_next_stage_and_the_solve() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 m/s, C leaves at 4 m/s): B leaves the
+    # first impact at u_B = 7(1 + e)/2. Written 9(1 + e)/2 (a wrong number), then by the same
+    # working C leaves at u_B(1 + e)/2 = 9(1 + e)^2/4; = 4 gives (1 + e)^2 = 16/9, e = 1/3
+    # (the true e is 4/sqrt(7) - 1 = 0.512): every line after the slip is right given it.
+    work = "u_B = 9(1 + e)/2\nu_C = u_B(1 + e)/2 = 9(1 + e)^2/4\n9(1 + e)^2/4 = 4\n(1 + e)^2 = 16/9\ne = 1/3\n"
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["carried"] * 4
