@@ -8,6 +8,7 @@ number carried on.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import replace
 
@@ -36,6 +37,18 @@ def together(G: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> bool:
     x = sympy.expand(G)
     pair = [u for u in U if x.has(u)]
     return len(pair) == 2 and sympy.expand(x - (pair[0] - pair[1])) in (0, -2 * (pair[0] - pair[1]))
+
+
+@functools.lru_cache(maxsize=4096)
+def side_value(text: str) -> float | None:
+    """The value of a side of numbers only, read again (None where it does not read); kept,
+    as a line's pairs are made again at each verdict."""
+    try:
+        x = read_side(rewrite(text, set()), Open({}), True, True)
+    except (ParseError, ValueError, TypeError, RecursionError):
+        return None
+    v = number_of(x) if not x.free_symbols else None
+    return v.real if v is not None and abs(v.imag) < 1e-12 else None
 
 
 class Carrying:
@@ -70,21 +83,11 @@ class Carrying:
         values = [abs(complex(number_of(raw[j]))) for j in plain]  # type: ignore[arg-type]
         if not plain or max(values) == 0:
             return whole
-        slack = [figures.side_slack(sides[j], self.ctx.data, self._side_value) for j in plain]
+        slack = [figures.side_slack(sides[j], self.ctx.data, side_value) for j in plain]
         if any(x is None for x in slack):
             return whole
         rest = literal_tolerance(" ".join([*(sides[j] for j in ik if j not in plain), worked]), self.ctx.data)
         return min(whole, sum(x for x in slack if x is not None) / max(values) + rest)
-
-    @staticmethod
-    def _side_value(text: str) -> float | None:
-        """The value of a side of numbers only, read again (None where it does not read)."""
-        try:
-            x = read_side(rewrite(text, set()), Open({}), True, True)
-        except (ParseError, ValueError, TypeError, RecursionError):
-            return None
-        v = number_of(x) if not x.free_symbols else None
-        return v.real if v is not None and abs(v.imag) < 1e-12 else None
 
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a
