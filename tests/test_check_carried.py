@@ -160,3 +160,12 @@ def test_a_chain_value_in_letters_got_wrong_carries_through_the_next_stage_and_t
     found = lines("chain-edexcel-m2-three-particles", work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (2, 3, 4, 5)] == ["carried"] * 4
+
+
+def test_a_chain_line_of_arithmetic_from_a_wrong_whole_number_is_carried() -> None:
+    # OCR M2 2015 chain (5 m/s down from 1.6 m, g = 9.8): v_1^2 = 25 + 31.36 = 56.36, written
+    # 65; then sqrt(65) = 8.06 is right as arithmetic but worked from the wrong 65: carried.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 65\nsqrt(65) = 8.06\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "wrong"
+    assert found[2][0] == "carried"

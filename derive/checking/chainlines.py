@@ -20,11 +20,12 @@ from derive.checking import mistakes, words
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
-from derive.checking.numeric import decimals, number_of
+from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
 from derive.checking.stageslips import (
     StageMistakes,
     named_arithmetic,
+    numbers_written,
     own_root,
     own_sides,
     own_value,
@@ -70,7 +71,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
-        if item.status == "correct" and slips and decimals(sides[:-1]) & wrong:
+        if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
@@ -80,7 +81,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
-            wrong |= {x for x in decimals(sides[-1:]) if sympy.Rational(x) not in ctx.data}  # not a given
+            wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
         previous = exprs if item.status == "correct" else []
         items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
         if item.status == "correct" and slips and len(exprs) == 2:

@@ -4,6 +4,7 @@ stage is named as in a single impact."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import replace
 
@@ -119,3 +120,11 @@ def own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) 
     roots = [r for r in sympy.solve(eq, x) if r.is_real]
     if roots:
         own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
+
+
+def numbers_written(sides: tuple[str, ...] | list[str], data: set) -> set[str]:
+    """The decimals written in ``sides`` and the whole numbers of two figures or more
+    (``1125`` in ``sqrt(1125)``), as written, but the problem's ``data``: a number a wrong line
+    came to, and a later line worked from it."""
+    found = re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", " ".join(sides))
+    return {t for t in found if ("." in t or len(t.strip("0")) >= 2) and sympy.Rational(t) not in data}
