@@ -8,23 +8,47 @@ number carried on.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import replace
 
 import sympy
 
+from derive.checking import figures
 from derive.checking.context import Context
+from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read
+from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
 from derive.checking.relations import Point, Values
 from derive.checking.worlds import NUMBER_SIDE, Pair
 from derive.mathtext.notation import student
+from derive.problem.expr import ParseError
 
 Line = Read
 
 
 #: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
 _TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")
+
+
+def together(G: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> bool:
+    """Whether ``G = 0`` says two velocities after are equal (u1 - u2 = 0), and nothing more."""
+    x = sympy.expand(G)
+    pair = [u for u in U if x.has(u)]
+    return len(pair) == 2 and sympy.expand(x - (pair[0] - pair[1])) in (0, -2 * (pair[0] - pair[1]))
+
+
+@functools.lru_cache(maxsize=4096)
+def side_value(text: str) -> float | None:
+    """The value of a side of numbers only, read again (None where it does not read); kept,
+    as a line's pairs are made again at each verdict."""
+    try:
+        x = read_side(rewrite(text, set()), Open({}), True, True)
+    except (ParseError, ValueError, TypeError, RecursionError):
+        return None
+    v = number_of(x) if not x.free_symbols else None
+    return v.real if v is not None and abs(v.imag) < 1e-12 else None
 
 
 class Carrying:
@@ -40,6 +64,8 @@ class Carrying:
     wrong_terms: set[str]
     own: dict[sympy.Symbol, sympy.Expr]
     wrong_number: tuple[str, sympy.Expr] | None
+    wrong_amounts: list[float]
+    right_terms: dict[str, sympy.Expr]
 
     def pairs(self, line: Line) -> list[Pair]:  # pragma: no cover - the trace's
         raise NotImplementedError
@@ -47,12 +73,32 @@ class Carrying:
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:  # pragma: no cover - the trace's
         raise NotImplementedError
 
+    def _tolerance(self, sides: tuple[str, ...], raw: list[sympy.Expr], ik: tuple[int, int], worked: str) -> float:
+        """The relative slack of the pair of sides ``ik``: each rounded decimal's last digit,
+        carried through the arithmetic of a side of numbers only (so a number near the value
+        from another formula, ``½(0.020)(300 - 1.49)²`` for 900 - 4.48, is not within it)."""
+        texts = [sides[j] for j in ik]
+        whole = literal_tolerance(f"{' = '.join(texts)} {worked}", self.ctx.data)
+        plain = [j for j in ik if not raw[j].free_symbols and number_of(raw[j]) is not None]
+        values = [abs(complex(number_of(raw[j]))) for j in plain]  # type: ignore[arg-type]
+        if not plain or max(values) == 0:
+            return whole
+        slack = [figures.side_slack(sides[j], self.ctx.data, side_value) for j in plain]
+        if any(x is None for x in slack):
+            return whole
+        rest = literal_tolerance(" ".join([*(sides[j] for j in ik if j not in plain), worked]), self.ctx.data)
+        return min(whole, sum(x for x in slack if x is not None) / max(values) + rest)
+
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a
         number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``)."""
         stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
         self.wrong_values |= decimals([*stated, *line.sides[-1:]])
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
+        last = line.exprs[-1] if line.exprs else None
+        value = number_of(last) if last is not None and not last.free_symbols else None
+        if value is not None and abs(value.imag) < 1e-12 and value.real != 0:
+            self.wrong_amounts.append(value.real)  # "= 0.01 x 89108" on the next line goes on from it
         term = _TERM.match(line.sides[-1].replace(" ", "").replace("*", ""))
         if term and line.exprs and line.exprs[-1].free_symbols and not set(self.U) & line.exprs[-1].free_symbols:
             self.wrong_terms.add(term.group(1))  # "w = 5u": a value in the symbolic givens
@@ -60,6 +106,9 @@ class Carrying:
     def _own_value(self, line: Line) -> None:
         """``u_n = 28 cos 45 = 14.7`` wrong: the student's own value of u_n, for the lines after."""
         left = line.exprs[0] if line.exprs else None
+        term = _TERM.match(line.sides[-1].replace(" ", "").replace("*", "")) if len(line.sides) >= 2 else None
+        if term and line.exprs and len(line.exprs) >= 2 and not self._in_unknowns(line.exprs[-2:]):
+            self.right_terms[term.group(1)] = line.exprs[-2]  # "μ = 3m·6m/9m = 3m": 3m, where 2m is right
         m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
         if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
             self.own[left] = sympy.Rational(m.group(1) + m.group(2))
@@ -69,6 +118,36 @@ class Carrying:
                 self.own[left] = last
         elif left is not None and len(line.exprs or ()) >= 2:
             self._worked_result(left, line.exprs[-1])
+
+    def _in_unknowns(self, exprs: tuple[sympy.Expr, ...]) -> bool:
+        return any(self.ctx.in_unknowns(x).free_symbols & set(self.U) for x in exprs)
+
+    def _with_terms_put_right(self, line: Line) -> bool:
+        """Whether ``line`` holds once a value in letters the student worked wrongly, written
+        again on it (``½(3m)(1 - e²)u²`` after ``μ = 3m·6m/9m = 3m``), is put right (2m)."""
+        if not self.right_terms or not line.exprs:
+            return False
+        names = Open({n: s for n, (s, _d) in self.ctx.equation_names().items()})
+        exprs, changed = list(line.exprs), False
+        for i, side in enumerate(line.sides):
+            text = side
+            for term, right in self.right_terms.items():
+                text = re.sub(rf"(?<![\w.]){re.escape(term)}(?![\w.])", f"({sympy.sstr(right)})", text)
+            if text == side:
+                continue
+            try:
+                exprs[i] = read_side(rewrite(text, set(names.known)), names, i == 0, i == len(line.sides) - 1)
+            except (ParseError, ValueError, TypeError, RecursionError):
+                return False
+            changed = True
+        if not changed or names.placeholders:
+            return False
+        fixed = self.pairs(replace(line, exprs=tuple(exprs)))
+        for world in [w for w in (self.world, self.truth) if w is not None]:  # a formula of the givens only
+            pairs = zip(self.pairs(line), fixed, strict=True)  # each step right as written, or put right
+            if all(self.holds([p], world) or self.holds([q], world) for p, q in pairs):
+                return True
+        return False
 
     def _worked_result(self, first: sympy.Expr, last: sympy.Expr) -> None:
         """``½(3m)(2u)^2 + ½mu^2 = … = 7/2 mu^2`` under a heading "KE before": a first side
@@ -102,11 +181,35 @@ class Carrying:
         = 129.5``, near the true 128.9 only because the t component is the larger)."""
         working = " ".join(line.sides[:-1]).replace(" ", "").replace("*", "")
         terms = any(re.search(rf"(?<![\w.]){re.escape(t)}(?!\w)", working) for t in self.wrong_terms)
-        if not decimals(line.sides[:-1]) & self.wrong_values and not terms:
-            return False
+        if not decimals(line.sides[:-1]) & self.wrong_values and not terms and not self._wrong_integers(line):
+            return self._goes_on(line, pairs)
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             return self.world is not None and self.holds(pairs, self.world) and self._moved(pairs)
         return True
+
+    def _wrong_integers(self, line: Line) -> bool:
+        """Whether the working of ``line`` has a whole number the student wrote as the value of a
+        wrong or carried line (``74250 - 1350 = 72900`` after ``KE before = … = 74250`` worked
+        with the weights as masses): two figures or more, and not a number of the problem's data."""
+        found = re.findall(r"(?<![\w.])\d+(?![\w.])", " ".join(line.sides[:-1]))
+        return any(
+            t in self.wrong_numbers and len(t.strip("0")) >= 2 and sympy.Integer(t) not in self.ctx.data for t in found
+        )
+
+    def _goes_on(self, line: Line, pairs: list[Pair]) -> bool:
+        """Whether a line of numbers only goes on from the value a wrong or carried line came
+        to (``= 0.01 x 89108`` under ``KE lost = ½(0.020)(300 - 1.49)² ``): a side of it is that
+        value, at the precision the line is written with."""
+        if not self.wrong_amounts or not line.exprs or any(p.difference.free_symbols & set(self.U) for p in pairs):
+            return False
+        tol = max((p.tol for p in pairs), default=0.0)
+        for x in line.exprs[:1]:
+            v = number_of(x) if not x.free_symbols else None
+            if v is None or abs(v.imag) >= 1e-12:
+                continue
+            if any(abs(v.real - w) <= max(2 * tol, 1e-9) * abs(w) for w in self.wrong_amounts[-1:]):
+                return True
+        return False
 
     def _moved(self, pairs: list[Pair]) -> bool:
         """Whether the slip moves the value of a side of ``pairs`` (a kinetic energy lost from

@@ -20,9 +20,18 @@ from derive.checking import mistakes, words
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
-from derive.checking.numeric import decimals, number_of
+from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
-from derive.checking.stageslips import StageMistakes, stage_given, stage_mistakes
+from derive.checking.stageslips import (
+    StageMistakes,
+    named_arithmetic,
+    numbers_written,
+    own_root,
+    own_sides,
+    own_value,
+    stage_given,
+    stage_mistakes,
+)
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -62,7 +71,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
-        if item.status == "correct" and slips and decimals(sides[:-1]) & wrong:
+        if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and not item.again:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
@@ -72,13 +81,14 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
-            wrong |= {x for x in decimals(sides[-1:]) if sympy.Rational(x) not in ctx.data}  # not a given
+            wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
         previous = exprs if item.status == "correct" else []
-        items.append(item)
+        items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
         if item.status == "correct" and slips and len(exprs) == 2:
-            _own_root(exprs, values, own_defs, _givens(ctx))
-        if left.is_Symbol and _number(sides[-1]) and len(exprs) > 1:  # the student's value, carried on
-            own_defs[left] = sympy.Rational(sides[-1].strip())
+            own_root(exprs, values, own_defs, _givens(ctx))
+        if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
+            _keep_root(ctx, exprs, values, true_defs, own_defs)
+        own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
     notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
@@ -209,27 +219,6 @@ def _givens(ctx: Context) -> set[sympy.Symbol]:
     return {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
 
 
-def _own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) -> None:
-    """``½V² = gh`` after a slip in V: right for the problem, and with the student's own V it
-    gives the student's own value of the chain's latest name in it (h), carried on to the lines
-    after (``h = 1.52²/(2 × 9.81) = 0.118`` is then carried, not a further slip)."""
-    d = exprs[0] - exprs[1]
-    own = d.xreplace(own_defs)
-    order = list(values)
-    open_ = sorted(
-        (x for x in own.free_symbols if x in values and x not in own_defs and x not in given), key=order.index
-    )
-    if own == d or not open_:
-        return  # none of the student's own values in it
-    x = open_[-1]
-    eq = own.xreplace({k: v for k, v in values.items() if k != x})
-    if eq.free_symbols != {x} or not eq.is_polynomial(x) or sympy.degree(eq, x) not in (1, 2):
-        return
-    roots = [r for r in sympy.solve(eq, x) if r.is_real]
-    if roots:
-        own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
-
-
 def _introduced(read: list) -> set[sympy.Symbol]:
     """The names of the student's own first met alone on the left of a relation whose next side
     is in the chain's names (``δ_0 = m_pan g/k = …``): defined there, not inferred."""
@@ -336,6 +325,8 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     carried = _carried(slips) if slips else ""
     if slips and _holds(ctx, sides, exprs[:1] + [x.xreplace(own_defs) for x in exprs[1:]], [own_defs, values]):
         return item("carried", carried)
+    if slips and _holds(ctx, sides, own_sides(exprs, own_defs), [true_defs, values]):  # 9(1 + e)²/4 = 4: u_C = 4
+        return item("carried", carried)
     # ``h_2 = V^2/(2g) = 22.9``: the formula right, and the rest worked from the student's V
     formula = slips and exprs[0].is_Symbol and len(exprs) > 2
     if formula and _holds(ctx, sides[:2], exprs[:2], [true_defs, values]):
@@ -400,6 +391,11 @@ def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: S
             phrase = mistakes.phrase(name) or name
             lead = item.message.split(": ")[0]
             return replace(item, slip=name, message=f"{lead}: it {phrase}.")
+    _keep_root(ctx, exprs, values, true_defs, own_defs)
+    return item
+
+
+def _keep_root(ctx, exprs, values, true_defs, own_defs) -> None:
     left = [x for x in exprs if x.free_symbols]
     names = set().union(*(x.free_symbols for x in exprs)) - set(true_defs) - set(own_defs)
     names = {s for s in names if s in values and ctx.solution.results.get(s.name) is not None}
@@ -408,7 +404,6 @@ def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: S
         root = _root(ctx, exprs[0] - exprs[-1], u, values)
         if root is not None:
             own_defs[u] = root
-    return item
 
 
 def _weight_as_mass(ctx: Context, sides, reread: Callable[[str], sympy.Expr], values: dict, true_defs: dict) -> bool:

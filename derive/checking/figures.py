@@ -8,6 +8,7 @@ equation are allowed the same slack (:func:`literal_tolerance`).
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from decimal import ROUND_HALF_UP, Decimal, InvalidOperation, localcontext
 
 import sympy
@@ -89,3 +90,26 @@ def literal_tolerance(text: str, data: set[sympy.Rational]) -> float:
             continue  # one figure (0.5, 0.6) is data, not a rounded intermediate
         tol += float(last_place(d) / abs(d))
     return min(tol, 0.05)
+
+
+def side_slack(side: str, data: set[sympy.Rational], read: Callable[[str], float | None]) -> float | None:
+    """How far a side of numbers only moves when each rounded decimal in it moves by one unit
+    in its last place (the decimals :func:`literal_tolerance` allows for), absolute: 1.49 in
+    ``½(0.020)(300 - 1.49)²`` moves it by 0.06, not by 0.7 % of it. ``read`` gives a side's
+    value (None where it does not read); None where a changed side does not read."""
+    total = 0.0
+    start = read(side)
+    if start is None:
+        return None
+    for m in _LITERAL.finditer(side):
+        tok = m.group(1)
+        if not tok or not re.search(r"[.eE]", tok) or len(tok) > 30:
+            continue
+        d = Decimal(tok)
+        if abs(d.adjusted()) > 30 or d == 0 or figures(d) < 2 or sympy.Rational(tok) in data:
+            continue
+        moved = read(side[: m.start(1)] + str(d + last_place(d)) + side[m.end(1) :])
+        if moved is None:
+            return None
+        total += abs(moved - start)
+    return total

@@ -19,10 +19,9 @@ from dataclasses import replace
 import sympy
 
 from derive.checking import carried, mistakes, slipnames, words
-from derive.checking.carrying import Carrying
+from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
 from derive.checking.equation import judge, relation
-from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read, read_lines
 from derive.checking.number import line_answer
 from derive.checking.numeric import listed, number_of
@@ -92,10 +91,13 @@ class Trace(Carrying):
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.wrong_numbers: set[str] = set()  # and their integers too
+        self.right_terms: dict[str, sympy.Expr] = {}  # values in letters worked wrongly: "3m" -> 2m
+        self.wrong_amounts: list[float] = []  # the values wrong or carried lines of numbers came to
         self.wrong_terms: set[str] = set()  # values in the symbolic givens written wrong (5u for 3u)
         self.own: dict[sympy.Symbol, sympy.Expr] = {}  # the student's own values of names got wrong
         self.previous: slipnames.Previous = None  # the relation just before, if it held
         self.copied: dict[sympy.Symbol, sympy.Expr] = {}  # the givens copied wrongly, as copied
+        self.partial = ""  # a mistake of the values before, so far made on one body's only
         self.variant = mistakes.Variant()  # the common mistake (or given copied) the world is made with
 
     # one line ----------------------------------------------------------------
@@ -124,6 +126,7 @@ class Trace(Carrying):
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             if self.slips and (self._uses_wrong_numbers(line, pairs) or carried.slips_result(self, line, pairs)):
+                self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
         if self.world is not None and self.holds(pairs, self.world):
@@ -136,7 +139,7 @@ class Trace(Carrying):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
             return self._carried(line)
         self._wrote_wrong(line)
-        if self._with_own_values(line) or self._with_slips_results(line, pairs):
+        if self._with_own_values(line) or self._with_terms_put_right(line) or self._with_slips_results(line, pairs):
             return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
@@ -154,7 +157,7 @@ class Trace(Carrying):
         for i in range(len(sides) - 1):
             k = len(sides) - 1 if ends else i + 1
             text = f"{sides[i]} = {sides[k]}"
-            tol = max(literal_tolerance(f"{text} {worked}", self.ctx.data), 1e-9)
+            tol = max(self._tolerance(sides, raw, (i, k), worked), 1e-9)
             out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
         return out
 
@@ -321,10 +324,17 @@ class Trace(Carrying):
         if not found:
             return ()
         out = next((o for o in self.ctx.singles() if o.mistake is not None and o.mistake.name == found[0].name), None)
+        variant = found[0].build(self.ctx.model)
+        one = mistakes.of_one_body(self.ctx.model, variant, set().union(*(x.free_symbols for x in bad.raw or ())))
+        widen = self.partial == found[0].name and self.world is not None and one != self.variant
+        if one is not None and not widen:  # A's velocity resolved wrongly, B's not (yet): the mistake on A's only
+            out, variant, self.partial = self.ctx.model.outcome(one, found[0]) or out, one, found[0].name
+        if out is not None and widen:  # then B's resolved the same wrong way: the mistake on both
+            self.world, self.partial = None, ""
         if out is not None and self.world is None:  # the student's equations are now the mistake's
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
-            self.variant = found[0].build(self.ctx.model) or self.variant
+            self.variant = variant or self.variant
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:
@@ -387,8 +397,16 @@ class Trace(Carrying):
                 return
 
     def _closest(self, F: sympy.Expr) -> int | None:
-        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`)."""
-        return closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
+        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one
+        unknown (``v' = 0.0784``) never stands for "they move off together", v_B2 = v_A2 (e = 0:
+        the student's one name is both velocities)."""
+        j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
+        if j is None or len(F.free_symbols & set(self.U)) != 1 or not together(self.equations[j], self.U):
+            return j
+        for k in self.equations:  # the first other equation whose place it can take
+            if k != j and solve_world({**self.equations, k: F}, self.U, self.pts[:1], self.truth[:1]) is not None:
+                return k
+        return j
 
     def _slips_named(self) -> str:
         numbers = [str(n) for n in dict.fromkeys(self.slips)]

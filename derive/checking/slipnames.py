@@ -86,7 +86,31 @@ def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: 
     """Whether every pair of a line that is false holds with the results as one of the mistakes
     ``named`` gives them."""
     false = [p for p in pairs if not holds(p)]
-    return bool(false) and all({m.name for m in under_results(ctx, p, holds)} & named for p in false)
+    return bool(false) and all(
+        {m.name for m in under_results(ctx, p, holds)} & named or _with_mistakes_values(ctx, p, named, holds)
+        for p in false
+    )
+
+
+def _with_mistakes_values(ctx: Context, bad: Pair, named: set[str], holds: Holds) -> bool:
+    """Whether ``bad`` holds with the masses or the values before the impact as one of the
+    mistakes ``named`` has them, in every result on the line, and the velocities after as
+    ``holds`` has them (``KE after = ½(7500)(4.2²)``: the weights as masses, and the common
+    velocity an earlier slip gave)."""
+    if bad.raw is None:
+        return False
+    for name in sorted(named):
+        m = mistakes.REGISTRY.get(name)
+        v = m.build(ctx.model) if m is not None else None
+        if v is None or (v.pre is None and v.masses is None and not v.values):
+            continue
+        subs = {**v.values, **(v.pre or {})}
+        if v.masses is not None:
+            subs.update({ctx.model.m_A: v.masses[0], ctx.model.m_B: v.masses[1]})
+        results = {sym: x.xreplace(subs) for sym, x in ctx.derived().values()}
+        if _holds_with(ctx, bad, {**results, **subs}, holds):
+            return True
+    return False
 
 
 def ke_formula(ctx: Context, bad: Pair, holds: Holds) -> bool:
@@ -111,7 +135,8 @@ def ke_formula(ctx: Context, bad: Pair, holds: Holds) -> bool:
 def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
     """The kinetic energies (by result name) as the common wrong formulas give them, in the
     components: without the square, without the half; the energy lost as ½m(u − v)² (of the
-    speeds, or of the velocities)."""
+    speeds, or of the velocities; of both bodies, or of one alone: the bullet's, the block
+    left out)."""
     model, p = ctx.model, ctx.problem
     nm = model.nm
     bodies = [("A", model.m_A)] + ([] if p.fixed_B else [("B", model.m_B)])
@@ -137,6 +162,10 @@ def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
         for b, m in bodies
     )
     forms += [{"T_lost": lost_speeds}, {"T_lost": lost_velocities}]
+    for b, m in bodies if len(bodies) > 1 else ():  # ½m(u − V)² of one body, the other left out
+        forms.append(
+            {"T_lost": half * m * sum(((a - c) ** 2 for a, c in zip(comps(b, "1"), comps(b, "2"), strict=True)), zero)}
+        )
     return forms
 
 

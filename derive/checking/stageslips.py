@@ -4,9 +4,14 @@ stage is named as in a single impact."""
 
 from __future__ import annotations
 
+import re
+from collections.abc import Callable
+from dataclasses import replace
+
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.report import Item
 from derive.errors import InputError
 
 #: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
@@ -63,3 +68,63 @@ def stage_given(ctx: Context, exprs) -> bool:
         if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
             return True
     return False
+
+
+def named_arithmetic(item: Item) -> Item:
+    """A stage's line found false with no mistake named, where a side of numbers is not what the
+    student wrote it comes to (``441 + 784 = 1125``): an arithmetic slip, named so."""
+    if item.status != "wrong" or item.slip or item.again or not item.message.endswith("(an arithmetic slip)."):
+        return item
+    return replace(item, slip="arithmetic")
+
+
+def own_value(own: dict, left: sympy.Expr, line: tuple, status: str, number: Callable[[str], bool]) -> None:
+    """The student's value of a chain's name on the left of a line, for the lines after: the
+    number written last, or on a wrong or carried line the expression in the unknowns it comes
+    to (``u_B = 9(1 + e)/2``, with 9 copied for 7)."""
+    sides, exprs = line
+    if not left.is_Symbol or len(exprs) < 2:
+        return
+    if number(sides[-1]):
+        own[left] = sympy.Rational(sides[-1].strip())
+    elif status in ("wrong", "carried") and exprs[-1].free_symbols and left not in exprs[-1].free_symbols:
+        own[left] = exprs[-1].xreplace(own)
+
+
+def own_sides(exprs: list[sympy.Expr], own: dict) -> list[sympy.Expr]:
+    """The sides of a line that are the student's own value of a name in the unknowns, put
+    back as that name (``9(1 + e)²/4 = 4`` with the student's u_C = 9(1 + e)²/4: u_C = 4)."""
+    out = []
+    for x in exprs:
+        same = (k for k, v in own.items() if x.free_symbols and v.free_symbols and sympy.expand(x - v) == 0)
+        out.append(next(same, x))
+    return out
+
+
+def own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) -> None:
+    """``½V² = gh`` after a slip in V: right for the problem, and with the student's own V it
+    gives the student's own value of the chain's latest name in it (h), carried on to the lines
+    after (``h = 1.52²/(2 × 9.81) = 0.118`` is then carried, not a further slip)."""
+    d = exprs[0] - exprs[1]
+    own = d.xreplace(own_defs)
+    order = list(values)
+    open_ = sorted(
+        (x for x in own.free_symbols if x in values and x not in own_defs and x not in given), key=order.index
+    )
+    if own == d or not open_:
+        return  # none of the student's own values in it
+    x = open_[-1]
+    eq = own.xreplace({k: v for k, v in values.items() if k != x})
+    if eq.free_symbols != {x} or not eq.is_polynomial(x) or sympy.degree(eq, x) not in (1, 2):
+        return
+    roots = [r for r in sympy.solve(eq, x) if r.is_real]
+    if roots:
+        own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
+
+
+def numbers_written(sides: tuple[str, ...] | list[str], data: set) -> set[str]:
+    """The decimals written in ``sides`` and the whole numbers of two figures or more
+    (``1125`` in ``sqrt(1125)``), as written, but the problem's ``data``: a number a wrong line
+    came to, and a later line worked from it."""
+    found = re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", " ".join(sides))
+    return {t for t in found if ("." in t or len(t.strip("0")) >= 2) and sympy.Rational(t) not in data}

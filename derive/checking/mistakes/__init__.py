@@ -26,6 +26,7 @@ from derive.checking.mistakes.outcomes import changes, correct, forms, model, ou
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Mistake, Outcome, Quantity, Variant, mistake
 from derive.checking.mistakes.registry import EQUATION_TITLES, KINDS, REGISTRY, phrase, register
+from derive.checking.mistakes.velocities import of_one_body
 
 __all__ = [
     "EQUATION_TITLES",
@@ -43,6 +44,7 @@ __all__ = [
     "forms",
     "mistake",
     "model",
+    "of_one_body",
     "outcomes",
     "pair_outcomes",
     "phrase",

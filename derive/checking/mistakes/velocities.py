@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from derive.checking.mistakes.equations import Model
@@ -38,16 +40,19 @@ def b_sign(model: Model) -> Variant | None:
     "has sin and cos swapped",
 )
 def sin_cos_swapped(model: Model) -> Variant | None:
-    """Each velocity given by a speed and an angle resolved with the complement of the angle."""
+    """Each velocity given by a speed and an angle resolved with the complement of its angle
+    to the line of impact (80 sin 25° along n for a velocity at 25° to it; where n is at φ to
+    x, the angle θ from x becomes π/2 + 2φ − θ, so that θ − φ becomes π/2 − (θ − φ))."""
     p = model.problem
     motions = [m for m in (p.motion_A, p.motion_B) if m.angle is not None and m.speed is not None]
     if not p.oblique or not motions:
         return None
     nm = model.nm
     pre = dict(model.pre)
+    phi = p.phi if p.phi is not None else sympy.Integer(0)
     for motion, (n, t) in ((p.motion_A, (nm.A1n, nm.A1t)), (p.motion_B, (nm.B1n, nm.B1t))):
         if motion in motions:
-            swap = {motion.angle: sympy.pi / 2 - motion.angle}
+            swap = {motion.angle: sympy.pi / 2 + 2 * phi - motion.angle}
             pre[n] = model.pre[n].xreplace(swap)
             pre[t] = model.pre[t].xreplace(swap)
     return Variant(pre=pre)
@@ -71,3 +76,19 @@ def degrees_as_radians(model: Model) -> Variant | None:
     if not values:
         return None
     return Variant(values=values)
+
+
+def of_one_body(model: Model, v: Variant | None, named: set[sympy.Symbol]) -> Variant | None:
+    """``v`` made on one body's velocity before the impact only, where the line it is found on
+    names that body's components and not the other's (A's resolved with sin and cos swapped,
+    B's not, or not yet); None where ``v`` changes one body only already, or the line names both."""
+    if v is None or v.pre is None:
+        return None
+    nm = model.nm
+    bodies = [{c for c in (nm.A1n, nm.A1t) if c is not None}, {c for c in (nm.B1n, nm.B1t) if c is not None}]
+    touched = [b for b in bodies if b & named]
+    changed = [b for b in bodies if any(v.pre.get(c, model.pre.get(c)) != model.pre.get(c) for c in b)]
+    if len(touched) != 1 or len(changed) < 2:
+        return None
+    pre = {c: (x if c in touched[0] else model.pre[c]) for c, x in v.pre.items()}
+    return replace(v, pre=pre)

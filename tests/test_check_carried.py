@@ -1,0 +1,171 @@
+"""After a student's first slip, what each later line is (issue #31): a line whose values
+depend on a slipped value is carried even when its own arithmetic is right; a line right
+given two earlier slips is carried, not a further slip; a number near the value but from a
+wrong formula is not accepted when enough figures are written to tell them apart. Every
+number here is worked by hand from the problem files' givens (in the comments)."""
+
+from __future__ import annotations
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
+    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+
+
+def test_whole_numbers_from_wrong_lines_make_a_line_of_arithmetic_carried() -> None:
+    # Hibbeler 15-58: W_A = 15 lb at 19.657 ft/s, W_B = 10 lb at rest, e = 0.3; g cancels in
+    # the momentum, so 15(19.657) = 294.855 = 15 v_A2 + 10 v_B2 and v_B2 - v_A2 = 5.8971 give
+    # v_A2 = 9.4354, v_B2 = 15.3325 with the weights too. The energies with the weights as
+    # masses: 7.5(19.657^2) = 2898; 7.5(9.4354^2) + 5(15.3325^2) = 667.7 + 1175.4 = 1843;
+    # the difference of those two numbers is right as arithmetic, but carries the slip.
+    work = (
+        "KE before = 0.5(15)(19.657)^2 = 2898\n"
+        "KE after = 0.5(15)(9.435)^2 + 0.5(10)(15.33)^2 = 1843\n"
+        "2898 - 1843 = 1055 ft lb lost\n"
+    )
+    found = lines("hibbeler-15-58-suitcases", work)
+    assert found[1][:2] == ("wrong", "weight_as_mass")
+    assert found[3][0] == "carried"
+
+
+def test_a_number_near_the_loss_from_a_wrong_formula_is_not_accepted_and_its_working_is_carried() -> None:
+    # OpenStax 8-5 goalie: 0.150 kg at 35.0 m/s caught by 70.0 kg at rest: v = 5.25/70.15
+    # = 0.074840; T_1 = 0.075(1225) = 91.875, T_2 = 35.075(0.07484^2) = 0.19645, lost 91.6785.
+    # ½m(u − v)² for the puck alone: 0.075(35.0 - 0.0748)^2 = 0.075(1219.77) = 91.48: 0.2 %
+    # from the loss, but 0.0748 moves it by 0.0005 only: a different formula's value.
+    work = (
+        "0.150(35.0) = (0.150 + 70.0) v_B2\n"
+        "v_B2 = 0.0748\n"
+        "KE lost = 1/2 (0.150)(35.0 - 0.0748)^2\n"
+        "        = 0.075 x 1219.77\n"
+        "        = 91.48 J\n"
+    )
+    found = lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "ke_formula")
+    assert found[4][0] == found[5][0] == "carried"
+
+
+def test_a_line_right_given_both_earlier_slips_is_carried() -> None:
+    # Hibbeler 15-58 (weights 15 and 10 lb, e = 0.3, 19.657 ft/s): the masses exchanged in
+    # the momentum, 10 v_A2 + 15 v_B2 = 294.855, with v_B2 - v_A2 = 5.8971: 25 v_A2 = 206.40,
+    # v_A2 = 8.256, v_B2 = 14.153. Then the weights as masses: T_1 = 7.5(19.657^2) = 2898 (a
+    # further slip) and T_2 = 7.5(8.256^2) + 5(14.153^2) = 511.2 + 1001.5 = 1513: right given
+    # both slips; and 2898 - 1513 = 1385 carried.
+    work = (
+        "15(19.657) = 10 v_A2 + 15 v_B2\n"
+        "v_B2 - v_A2 = 0.3(19.657)\n"
+        "25 v_A2 = 294.855 - 88.457 = 206.398\n"
+        "v_A2 = 8.256\n"
+        "v_B2 = 8.256 + 5.897 = 14.153\n"
+        "T_1 = 0.5(15)(19.657)^2 = 2898\n"
+        "T_2 = 0.5(15)(8.256)^2 + 0.5(10)(14.153)^2 = 1513\n"
+        "2898 - 1513 = 1385\n"
+    )
+    found = lines("hibbeler-15-58-suitcases", work)
+    assert found[1][:2] == ("wrong", "masses_swapped")
+    assert found[2][0] == "correct"
+    assert all(found[n][0] == "carried" for n in (3, 4, 5)), found
+    assert found[6][:2] == ("wrong", "weight_as_mass")
+    assert found[7][0] == found[8][0] == "carried", found
+
+
+def test_a_sum_worked_wrongly_in_a_chain_stage_is_named_arithmetic() -> None:
+    # OCR M2 2015 chain (thrown down at 5 m/s from 1.6 m, e = 0.7, g = 9.8): v_1^2 = 25 +
+    # 31.36 = 56.36, written 65.36 (digits swapped): an arithmetic slip, named so; then
+    # v_1 = sqrt(65.36) = 8.085 and v_2 = 0.7(8.08) = 5.66 are right given it.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 25 + 31.36 = 65.36\nv_1 = 8.08\nv_2 = 0.7(8.08) = 5.66\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_sin_and_cos_swapped_on_one_body_only_carries_through_the_equations() -> None:
+    # Notes 4.C.11 (20 kg at 5 m/s, 5 kg at 15 m/s, each at 37.6 deg to n, e = 0.6): A's
+    # components swapped (5 sin 37.6 = 3.05 along n; the t one the same slip again), B's right
+    # (-15 cos 37.6 = -11.9). Momentum 61.0 - 59.5 = 1.5 = 20 v_A2n + 5 v_B2n; restitution
+    # v_B2n - v_A2n = 0.6(14.95) = 8.97; 25 v_A2n = 1.5 - 44.85, v_A2n = -1.734: all carried.
+    work = (
+        "v_A1n = 5 sin 37.6° = 3.05\n"
+        "v_A1t = 5 cos 37.6° = 3.96\n"
+        "v_B1n = -15 cos 37.6° = -11.9\n"
+        "20(3.05) + 5(-11.9) = 20 v_A2n + 5 v_B2n\n"
+        "v_B2n - v_A2n = 0.6(3.05 + 11.9) = 8.97\n"
+        "25 v_A2n = 1.5 - 44.85\n"
+        "v_A2n = -1.73\n"
+    )
+    found = lines("notes-4c11-two-spheres", work)
+    assert found[1] == ("wrong", "sin_cos_swapped", False)
+    assert found[2] == ("wrong", "sin_cos_swapped", True)
+    assert found[3][0] == "correct"
+    assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_sin_and_cos_swapped_about_a_line_of_impact_not_along_x() -> None:
+    # A line of impact at phi = 20 deg to x with A
+    # at 45 deg to x is at 25 deg to n: its n component is v cos 25 deg; swapped, v sin 25 deg
+    # (not v sin 45 deg + ... about x). Fisicalab example 7 (80 m/s): 80 sin 25 = 33.81.
+    found = lines("fisicalab-example-7-normal-at-20deg", "v_A1n = 80 sin 25° = 33.81\nv_B1n = 110 cos 100° = -19.10\n")
+    assert found[1][:2] == ("wrong", "sin_cos_swapped")
+    assert found[2][0] == "correct"
+
+
+def test_a_common_velocity_worked_wrongly_is_both_velocities_in_the_carried_lines() -> None:
+    # MSU bullet: 0.020 kg at 300 m/s lodges in 4.0 kg: 6 = 4.02 v', v' = 1.4925, written
+    # 1.439 (an arithmetic slip). They move together, so KE after from the student's v' is
+    # ½(4.02)(1.439²) = 2.01(2.0707) = 4.16 (not the true 4.48): carried, not a new mistake.
+    work = "0.020(300) = (0.020 + 4.0) v'\n6 = 4.02 v'\nv' = 6/4.02 = 1.439\nKE after = 1/2 (4.02)(1.439)^2 = 4.16\n"
+    found = lines("msu-lectureonline-bullet-lodges-in-block", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
+
+
+def test_a_value_in_letters_worked_wrongly_is_carried_where_it_is_written_again() -> None:
+    # Edexcel M2 2010: P (2m) at 2u meets Q (m) at u: the reduced mass is 2m·m/3m = 2m/3,
+    # written 3m/2; the approach speed is 3u, so the energy lost is ½(2m/3)(1 - e²)(9u²)
+    # = 3mu²(1 - e²). With the student's 3m/2: ½(3m/2)(1 - e²)(9u²) = 27/4 mu²(1 - e²):
+    # right given the slip, a carried error, not a new mistake.
+    work = "μ = (2m × m)/(3m) = 3m/2\nKE lost = ½ (3m/2)(1 - e²)(3u)² = 27/4 mu²(1 - e²)\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == "carried"
+
+
+def test_sin_and_cos_swapped_on_a_then_again_on_b_carries_with_both_swapped() -> None:
+    # Notes 4.C.11: A's n component 5 sin 37.6 = 3.05 (swapped), then B's the same wrong way,
+    # -15 sin 37.6 = -9.15 (the same slip again). Momentum 61.0 - 45.75 = 15.25 = 20 v_A2n +
+    # 5 v_B2n and v_B2n - v_A2n = 0.6(12.2) = 7.32 hold given both: carried.
+    work = (
+        "v_A1n = 5 sin 37.6° = 3.05\n"
+        "v_B1n = -15 sin 37.6° = -9.15\n"
+        "20(3.05) + 5(-9.15) = 20 v_A2n + 5 v_B2n\n"
+        "v_B2n - v_A2n = 0.6(3.05 + 9.15) = 7.32\n"
+    )
+    found = lines("notes-4c11-two-spheres", work)
+    assert found[1] == ("wrong", "sin_cos_swapped", False)
+    assert found[2] == ("wrong", "sin_cos_swapped", True)
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_chain_value_in_letters_got_wrong_carries_through_the_next_stage_and_the_solve() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 m/s, C leaves at 4 m/s): B leaves the
+    # first impact at u_B = 7(1 + e)/2. Written 9(1 + e)/2 (a wrong number), then by the same
+    # working C leaves at u_B(1 + e)/2 = 9(1 + e)^2/4; = 4 gives (1 + e)^2 = 16/9, e = 1/3
+    # (the true e is 4/sqrt(7) - 1 = 0.512): every line after the slip is right given it.
+    work = "u_B = 9(1 + e)/2\nu_C = u_B(1 + e)/2 = 9(1 + e)^2/4\n9(1 + e)^2/4 = 4\n(1 + e)^2 = 16/9\ne = 1/3\n"
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["carried"] * 4
+
+
+def test_a_chain_line_of_arithmetic_from_a_wrong_whole_number_is_carried() -> None:
+    # OCR M2 2015 chain (5 m/s down from 1.6 m, g = 9.8): v_1^2 = 25 + 31.36 = 56.36, written
+    # 65; then sqrt(65) = 8.06 is right as arithmetic but worked from the wrong 65: carried.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 65\nsqrt(65) = 8.06\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "wrong"
+    assert found[2][0] == "carried"
