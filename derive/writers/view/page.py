@@ -264,6 +264,7 @@ def problem_view(
             "title": "Answer",
             "heading": [("text", "Answer")],
             "blocks": [{"text": [], "lines": data["answers"]}],
+            "closing": True,  # the answers alone: a document keeps them with what precedes them
         }
         stages.append({**answer, **_NO_FIGURE})
     boxed = [line for block in stages[-1]["blocks"] for line in block["lines"] if line["boxed"]]
