@@ -159,3 +159,27 @@ def test_a_chain_marks_each_result_it_asks_for(name: str, fmt: str) -> None:
     for line, asked in zip(marked, CHAIN_ASKS[name], strict=True):
         head = r"\boxed{\text{Do they collide again?" if asked == "again" else rf"\boxed{{{latex_name(asked)} = "
         assert line.startswith(head), (asked, line)
+
+
+@pytest.mark.parametrize(
+    ("name", "heads"),
+    [
+        # OCR H245 June 2023 Q3: "the velocities after the collision and the angle A's velocity
+        # then makes with the line of centres" (find: v_A2, alpha_A2, v_B2): each marked
+        ("ocr-fm-2023-oblique-discs-60deg", [r"v_{A2} = ", r"\alpha_{A2} = ", r"v_{B2} = "]),
+        # AQA MM03 June 2009 Q6: the speeds of both after the collision (find: v_B2, v_A2)
+        ("aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u", [r"v_{A2} = ", r"v_{B2} = "]),
+        # Edexcel FM1 June 2023 Q7(a): "Show that tan(beta) = e_1 tan(alpha)": the relation
+        # shown is the answer, not beta's own line beside it
+        ("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", [r"\tan {\beta} = "]),
+        # Pre-U specimen Q2: the component along the line of centres (v_A2n) and "show tan(theta)"
+        ("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg", [r"v_{A2n} = ", r"\tan {deflection} = "]),
+    ],
+    ids=lambda x: x if isinstance(x, str) else "",
+)
+def test_a_single_impact_marks_each_result_it_asks_for(name: str, heads: list[str]) -> None:
+    """Each result the question asks for carries an ANSWER mark once (was: only the last), on
+    the line that states it, as a chain's answer marks each (and 4.C.11 both vectors)."""
+    md = derive.render(solution(name), "md", figures=False)
+    marked = [ln.removeprefix(r"\boxed{") for ln in md.splitlines() if ln.endswith(r"\longleftarrow\ \text{ANSWER}")]
+    assert [next((h for h in heads if ln.startswith(h)), ln) for ln in marked] == heads
