@@ -9,11 +9,13 @@ from __future__ import annotations
 
 import math
 import re
+import tomllib
 
 import pytest
 from support.output_cases import bundled_names, solution
 
 import derive
+from derive.resources import bundled
 from derive.symbols import latex_name
 
 #: (problem, result boxed, published value, how many figures the source gives, source)
@@ -113,3 +115,71 @@ def test_every_result_asked_is_boxed(name: str) -> None:
         found = any(st.startswith(h) and st[len(h) : len(h) + 1] in (" ", "=", "") for st in starts for h in heads)
         shown = any(asked in str(x.relation.lhs.free_symbols | x.relation.rhs.free_symbols) for x in s.shown)
         assert found or shown, (asked, starts)
+
+
+#: What each bundled chain's file asks for (its ``find``, read here from the file), in the order
+#: its final "Answer" lists them. E.g. chain-aqa-m3-2007-collide-again asks (AQA MM03 June 2007
+#: Q4) for A's and B's velocities after the first impact (u_A, u_B), B's after the wall (w_B)
+#: and whether they collide again (again); chain-hibbeler-15-58-suitcases for A's speed at the
+#: ramp's foot (v_1), both velocities after the impact (u_A, u_B) and B's slide (d_B).
+CHAIN_ASKS = {
+    "chain-aqa-m3-2007-collide-again": ["u_A", "u_B", "w_B", "again"],
+    "chain-block-onto-spring-pan": ["x"],
+    "chain-car-rear-ends-suv-skid": ["V", "v_car"],
+    "chain-edexcel-m2-three-particles": ["u_B", "e"],
+    "chain-hibbeler-15-58-suitcases": ["v_1", "u_A", "u_B", "d_B"],
+    "chain-msu-bullet-block-swings": ["T_after", "h_2"],
+    "chain-ocr-m2-2006-drop-rebound": ["v_1", "v_2", "J", "e_floor"],
+    "chain-ocr-m2-2007-rebounds-to-start": ["v_1", "v_2", "e_floor", "J"],
+    "chain-ocr-m2-2011-find-e-mass-then-wall": ["e", "m_A", "e_wall", "w_B"],
+    "chain-ocr-m2-2015-thrown-down-bounce": ["v_1", "v_2", "h_2", "J", "E_lost"],
+}
+
+
+def test_every_bundled_chain_is_listed_with_what_it_asks() -> None:
+    chains = [n for n in bundled_names() if n.startswith("chain-")]
+    assert sorted(CHAIN_ASKS) == sorted(chains)
+    for name, asks in CHAIN_ASKS.items():
+        with open(bundled()[name], "rb") as f:
+            assert tomllib.load(f)["find"] == asks, name
+
+
+@pytest.mark.parametrize("fmt", ["md", "tex"])
+@pytest.mark.parametrize("name", sorted(CHAIN_ASKS))
+def test_a_chain_marks_each_result_it_asks_for(name: str, fmt: str) -> None:
+    """A chain's final "Answer" boxes each result asked for and marks each ANSWER (as the notes
+    mark each asked vector of 4.C.11), and nothing else on the page is marked."""
+    text = derive.render(solution(name), fmt, figures=False)
+    heading = "\n## Answer\n" if fmt == "md" else "\n\\subsection*{Answer}\n"
+    before, answer = text.split(heading)
+    assert "ANSWER" not in before
+    boxed = [ln.strip() for ln in answer.splitlines() if ln.strip().startswith(r"\boxed{")]
+    marked = [ln for ln in boxed if ln.endswith(r"\quad\longleftarrow\ \text{ANSWER}")]
+    assert marked == boxed and len(marked) == len(CHAIN_ASKS[name])
+    for line, asked in zip(marked, CHAIN_ASKS[name], strict=True):
+        head = r"\boxed{\text{Do they collide again?" if asked == "again" else rf"\boxed{{{latex_name(asked)} = "
+        assert line.startswith(head), (asked, line)
+
+
+@pytest.mark.parametrize(
+    ("name", "heads"),
+    [
+        # OCR H245 June 2023 Q3: "the velocities after the collision and the angle A's velocity
+        # then makes with the line of centres" (find: v_A2, alpha_A2, v_B2): each marked
+        ("ocr-fm-2023-oblique-discs-60deg", [r"v_{A2} = ", r"\alpha_{A2} = ", r"v_{B2} = "]),
+        # AQA MM03 June 2009 Q6: the speeds of both after the collision (find: v_B2, v_A2)
+        ("aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u", [r"v_{A2} = ", r"v_{B2} = "]),
+        # Edexcel FM1 June 2023 Q7(a): "Show that tan(beta) = e_1 tan(alpha)": the relation
+        # shown is the answer, not beta's own line beside it
+        ("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", [r"\tan {\beta} = "]),
+        # Pre-U specimen Q2: the component along the line of centres (v_A2n) and "show tan(theta)"
+        ("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg", [r"v_{A2n} = ", r"\tan {deflection} = "]),
+    ],
+    ids=lambda x: x if isinstance(x, str) else "",
+)
+def test_a_single_impact_marks_each_result_it_asks_for(name: str, heads: list[str]) -> None:
+    """Each result the question asks for carries an ANSWER mark once (was: only the last), on
+    the line that states it, as a chain's answer marks each (and 4.C.11 both vectors)."""
+    md = derive.render(solution(name), "md", figures=False)
+    marked = [ln.removeprefix(r"\boxed{") for ln in md.splitlines() if ln.endswith(r"\longleftarrow\ \text{ANSWER}")]
+    assert [next((h for h in heads if ln.startswith(h)), ln) for ln in marked] == heads

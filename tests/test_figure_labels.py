@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 
+import pytest
 from support.output_cases import solution
 
 import derive
@@ -83,3 +84,39 @@ def test_the_acute_angle_asked_is_drawn_from_the_line_of_centres() -> None:
     arc = next(a for a in _arcs(fig) if a.name == "alpha_A2")
     assert abs(abs(arc.end - arc.start) - 46.8) < 0.05
     assert any(lab.text == "alpha_A2" for lab in fig.labels)
+
+
+def _along(fig, name: str) -> tuple[float, float]:
+    """The unit vector of the axis ``name`` (n or t) as drawn."""
+    axis = next(a for a in fig.shapes if getattr(a, "name", "") == name and not isinstance(a, Arrow))
+    dx, dy = axis.x2 - axis.x1, axis.y2 - axis.y1
+    return dx / math.hypot(dx, dy), dy / math.hypot(dx, dy)
+
+
+def test_a_coefficient_kept_as_a_letter_is_drawn_at_a_half_and_the_caption_says_so() -> None:
+    """Pre-U 9795/2 specimen Q2: equal balls, B at rest, the line of centres at 30° to A's path;
+    the mark scheme's v_1 = (√3/4) u (1 − e) along the line of centres, and A keeps u sin 30° = u/2
+    across it. Drawn with every letter 1, e = 1 made v_A2n = 0: A went off along t whatever e.
+    At e = 1/2 A's arrow makes tan⁻¹((√3/8)/(1/2)) = tan⁻¹(√3/4) with t."""
+    fig = describe(solution("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg"), after=True)
+    arrow = next(a for a in fig.shapes if isinstance(a, Arrow) and a.name == "v_A2")
+    dx, dy = arrow.x2 - arrow.x1, arrow.y2 - arrow.y1
+    (nx, ny), (tx, ty) = _along(fig, "n"), _along(fig, "t")
+    assert (dx * nx + dy * ny) / (dx * tx + dy * ty) == pytest.approx(math.sqrt(3) / 4, rel=1e-6)
+    assert fig.drawn_for == (("e", "0.5"),)
+    assert "drawn for e = 0.5" in fig.caption
+    md = derive.render(solution("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg"), "md")
+    assert "drawn for <i>e</i> = 0.5, a letter in the problem" in md
+    # a number for e, or none needed (the figure before the impact): nothing drawn for
+    assert describe(solution("notes-4c11-two-spheres"), after=True).drawn_for == ()
+    assert describe(solution("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg")).drawn_for == ()
+
+
+def test_a_coefficient_kept_as_a_letter_is_not_drawn_where_it_stops_a_body() -> None:
+    """Edexcel M2 January 2015 Q7 (mark scheme: v = u - 2ue, w = u(1 + e)): at e = 1/2 P would
+    stand still; it is drawn at e = 0.6 instead, P moving back at u(1 - 1.2) = -0.2u."""
+    fig = describe(solution("edexcel-m2-2015-january-q7-m-at-3u-hits-2m-p-reverses"), after=True)
+    assert fig.drawn_for == (("e", "0.6"),)
+    arrow = next(a for a in fig.shapes if isinstance(a, Arrow) and a.name == "v_A2")
+    (nx, ny) = _along(fig, "n")
+    assert (arrow.x2 - arrow.x1) * nx + (arrow.y2 - arrow.y1) * ny < 0

@@ -170,7 +170,8 @@ def test_a_chain_carries_no_number_before_the_unknown_it_depends_on_is_found() -
     assert r"e_{\mathrm{floor}} = 0.800" in after
     assert r"u = -35 e_{\mathrm{floor}} = -28.0\ \mathrm{m/s}" in after
     assert r"J = 7 + 7 e_{\mathrm{floor}} = 12.6\ \mathrm{N\cdot s}" in after  # 7 (1 + 0.8)
-    assert md.count("ANSWER") == 1 and "## Answer" in md.split("ANSWER")[0]
+    # the file asks for v_1, v_2, e_floor and J: each marked in the chain's Answer, nothing before it
+    assert md.count("ANSWER") == 4 and "ANSWER" not in md.split("## Answer")[0]
 
 
 def test_the_kinetic_energy_lost_is_not_shown_as_a_difference_that_does_not_add_up() -> None:

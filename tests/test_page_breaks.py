@@ -80,7 +80,9 @@ def test_the_preamble_keeps_headings_with_what_follows() -> None:
         # \Needspace (a break only when too little room is left), not \needspace, whose
         # stretch made a break before any heading cheaper than filling the page
         assert re.search(rf"\\renewcommand{{\\{level}}}{{\\derive@room{{\d\\baselineskip}}", preamble), level
-    assert re.search(r"\\newcommand{\\derive@room}\[1\]{\\ifderive@whole\\else\\Needspace{#1}", preamble)
+    assert re.search(
+        r"\\newcommand{\\derive@room}\[1\]{\\ifderive@whole\\else\\ifderive@glued\\else\\Needspace{#1}", preamble
+    )
     assert r"\needspace{" not in preamble
     # the page builder weighs its breaks: a short page costs more than a break between blocks
     assert re.search(r"\\setlength{\\topskip}{10pt plus \d+pt}", preamble) and r"\raggedbottom" in preamble
@@ -115,6 +117,21 @@ def test_a_sentence_stays_with_its_lines_and_the_answers_together() -> None:
     chain = derive.render(solution("chain-aqa-m3-2007-collide-again"), "tex")
     answers = chain[chain.rindex(r"\subsection*{Answer}") :]
     assert answers.count(r"\postdisplaypenalty=10000") == 1 and answers.count(r"\boxed") == 4
+
+
+def test_a_chain_keeps_its_answers_with_what_precedes_them() -> None:
+    # chain-msu-bullet-block-swings put its "Answer" (two boxed lines) on a page of its own, a
+    # tenth full: no break before the answers' heading, nor a \Needspace there
+    preamble = derive.render(solution("notes-4c11-two-spheres"), "tex")
+    assert re.search(r"\\newcommand{\\derivewithprevious}{\\par\\nopagebreak\\global\\@nobreaktrue", preamble)
+    tex = derive.render(solution("chain-msu-bullet-block-swings"), "tex")
+    assert "\\derivewithprevious\n\\subsection*{Answer}" in tex and tex.count("\\derivewithprevious\n") == 1
+    # a handout's worked chain: its answers are its last numbered stage
+    body, failures = build_handout(["chain-msu-bullet-block-swings"], title="Sheet", mode="solutions", fmt="tex")  # type: ignore[arg-type]
+    assert not failures and isinstance(body, str)
+    assert re.search(r"\\derivewithprevious\n\\(sub)*section\*{\d\) Answer}", body), body[-600:]
+    fragment = derive.render(solution("chain-msu-bullet-block-swings"), "tex-fragment")
+    assert "derivewithprevious" not in fragment  # the host document's preamble has no such command
 
 
 def test_a_fragment_needs_no_new_package() -> None:
@@ -155,6 +172,17 @@ def test_no_page_ends_half_empty(name: str) -> None:
     pages = read_pages(build_pdf(derive.render(solution(name), "tex")))
     short = [(p.number, round(p.fill, 2), p.lines[-1].text[:40]) for p in pages[:-1] if p.fill < HALF]
     assert not short, (name, short)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", [n for n in resources.bundled() if n.startswith("chain-")])
+def test_a_chain_answer_never_starts_a_page(name: str) -> None:
+    # chain-aqa-m3-2007-collide-again and chain-msu-bullet-block-swings had their "Answer" alone
+    # on a last page 0.17 and 0.09 full: the page before was full
+    pages = read_pages(build_pdf(derive.render(solution(name), "tex")))
+    (page,) = [p for p in pages if any(ln.text == "Answer" for ln in p.lines)]
+    assert page.lines[0].text != "Answer", (name, page.number, round(page.fill, 2))
+    assert page.number == len(pages) and all(ln.text.endswith("ANSWER") for ln in page.lines[-1:])
 
 
 @pytest.mark.slow

@@ -228,6 +228,42 @@ BUGS = [
         r"\boxed{v_{A2} = 3.20",
         {"answers"},
     ),
+    # An ANSWER mark on each result asked (a chain marks each of its answers): one missing,
+    # one result marked twice, a result not asked marked.
+    (
+        "chain-answer-not-marked",  # chain-edexcel's file asks for u_B and e; e boxed but unmarked
+        "chain-edexcel",
+        r"\boxed{e = 0.512}\quad\longleftarrow\ \text{ANSWER}",
+        r"\boxed{e = 0.512}",
+        r"\boxed{e = 0.512}",
+        {"answers"},
+    ),
+    (
+        "chain-answer-not-asked-marked",  # u_C = 1.75 (1 + e)^2 = 4.00 m/s is a step, not asked
+        "chain-edexcel",
+        r"\boxed{e = 0.512}\quad\longleftarrow\ \text{ANSWER}",
+        r"\boxed{e = 0.512}\quad\longleftarrow\ \text{ANSWER}"
+        "\n$$\n\n$$\n"
+        r"\boxed{u_{C} = 4.00\ \mathrm{m/s}}\quad\longleftarrow\ \text{ANSWER}",
+        r"\boxed{u_{C} = 4.00",
+        {"answers"},
+    ),
+    (
+        "one-result-marked-twice",  # 4.C.11: B's vector is marked; its speed is the same result again
+        "notes-4c11",
+        r"= 12.4\ \mathrm{m/s}}",
+        r"= 12.4\ \mathrm{m/s}}\quad\longleftarrow\ \text{ANSWER}",
+        "= 12.4",
+        {"answers"},
+    ),
+    (
+        "answer-with-no-mark",  # 4.C.12 asks for theta_A2: boxed, its mark gone
+        "notes-4c12",
+        r"\quad\longleftarrow\ \text{ANSWER}",
+        "",
+        r"\boxed{\theta_{A2}",
+        {"answers"},
+    ),
     # Chains: a value carried before the unknown it depends on is found; a solve stage with no
     # algebra; v_2 = -u = -u; an impulse carried but never worked out.
     (

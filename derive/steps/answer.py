@@ -22,14 +22,13 @@ from derive.symbols import symbol, vector
 def answer(page: Page) -> list[Block]:
     """The answer blocks: velocities, x-y components, closed forms, what was asked, energy.
 
-    The notes' "⟵ ANSWER" mark goes on the last boxed line of the last block that
-    answers the question (what it asks, a "show that"), or, where that block is the
-    velocities, on each velocity vector asked for (4.C.11 marks both).
+    The notes' "⟵ ANSWER" mark goes on each result the question asks for (4.C.11 marks
+    both velocity vectors): see :func:`_mark_each`.
     """
     p = page.p
     velocities = {"v_A2", "v_B2", "v_A2t", "v_A2n", "v_B2t", "v_B2n", "v_A2x", "v_A2y", "v_B2x", "v_B2y"}
     asks_velocities = bool(velocities & set(p.find))
-    candidates = [  # (block, whether it answers the question)
+    candidates = [  # (block, whether it answers the question); the "show that" blocks 5th on
         (_velocities(page), asks_velocities),
         (_xy(page), asks_velocities),
         (_closed_forms(page), False),
@@ -38,13 +37,47 @@ def answer(page: Page) -> list[Block]:
         *((ranged(page, f), False) for f in page.outcome.ranges),
         (others(page), False),
     ]
-    # one mark, as in the notes: on the last boxed line of the last block that answers
-    last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
-    # the velocity vectors asked for are marked each, as the notes mark both of 4.C.11
-    blocks = [
-        _marked(page, b, True, every=i == 0 and p.oblique) if i == last else b for i, (b, _) in enumerate(candidates)
-    ]
+    blocks = _mark_each(page, candidates)
     return [b for b in blocks if b is not None] + [energy(page)]
+
+
+def _mark_each(page: Page, candidates: list[tuple[Block | None, bool]]) -> list[Block | None]:
+    """The blocks with an ANSWER mark on each result the question asks for, on the last boxed
+    line that states it (A's speed asked: its speed's line, not its vector's; v_A2n and v_A2t
+    asked: the vector's, as the notes mark both vectors of 4.C.11), as a chain's answer marks
+    each, and on each "show that" proved (tan β = e₁ tan α, not β's own line too). Where none
+    is boxed, the last boxed line of the last block that answers the question is marked."""
+    blocks = [b for b, _ in candidates]
+    if not page.marks:
+        return blocks
+    shown = range(4, 4 + len(page.outcome.shown))  # where answer() lists the "show that" blocks
+    proved = {x.name for s in page.outcome.shown for x in (s.relation.lhs - s.relation.rhs).free_symbols}  # tan β: β
+    where: dict[str, tuple[int, int]] = {}
+    marks: set[tuple[int, int]] = set()
+    for i, (b, answers) in enumerate(candidates):
+        for j, ln in enumerate(b.lines if b is not None and answers else ()):
+            if ln.boxed and i in shown:  # a "show that" proved: the answer to it
+                marks.add((i, j))
+            for f in page.p.find:
+                if ln.boxed and f not in proved and _states(ln, f):
+                    where[f] = (i, j)
+    marks |= set(where.values())
+    if not marks:
+        last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
+        return [_marked(page, b, True) if i == last else b for i, b in enumerate(blocks)]
+    return [
+        None
+        if b is None
+        else replace(b, lines=tuple(replace(ln, mark=True) if (i, j) in marks else ln for j, ln in enumerate(b.lines)))
+        for i, b in enumerate(blocks)
+    ]
+
+
+def _states(line: Eqn, asked: str) -> bool:
+    """True when the line states ``asked``: itself, or the vector of a component asked (v_A2 of v_A2n)."""
+    first = line.sides[0].terms[0] if line.sides and line.sides[0].terms else None
+    name = getattr(first, "name", "").removeprefix("vec:")
+    return bool(name) and (asked == name or (asked[:-1] == name and asked[-1] in "ntxy"))
 
 
 def shown(page: Page, s: Shown) -> Block:
@@ -158,18 +191,16 @@ def _about(line: Eqn, find: tuple[str, ...]) -> bool:
     return bool(name) and any(f == name or f.startswith(name) for f in find)
 
 
-def _marked(page: Page, block: Block | None, asked: bool, every: bool = False) -> Block | None:
-    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it;
-    ``every``: on each boxed line asked for (the velocity vectors of both bodies)."""
+def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
     if block is None or not asked or not page.marks:
         return block
     boxed = [i for i, ln in enumerate(block.lines) if ln.boxed]
-    asked = [i for i in boxed if _about(block.lines[i], page.p.find)]
-    last = max(asked or boxed, default=-1)  # the last line asked for, else the last boxed
+    asked_lines = [i for i in boxed if _about(block.lines[i], page.p.find)]
+    last = max(asked_lines or boxed, default=-1)  # the last line asked for, else the last boxed
     if last < 0:
         return block
-    marks = set(asked) if every and asked else {last}
-    lines = tuple(replace(ln, mark=True) if i in marks else ln for i, ln in enumerate(block.lines))
+    lines = tuple(replace(ln, mark=True) if i == last else ln for i, ln in enumerate(block.lines))
     return replace(block, lines=lines)
 
 

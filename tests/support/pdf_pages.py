@@ -25,20 +25,24 @@ _WORD = re.compile(r'<word xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax=
 
 @dataclass(frozen=True)
 class Line:
-    """One line of text: its words and the bottom of its box (points from the page's top)."""
+    """One line of text: its words, the top and bottom of its box (points from the page's top)
+    and its left and right ends (points from the page's left edge)."""
 
     text: str
     top: float
     bottom: float
+    left: float = 0.0
+    right: float = 0.0
 
 
 @dataclass(frozen=True)
 class Page:
-    """One page: its lines of text top to bottom (the page number left out) and its height."""
+    """One page: its lines of text top to bottom (the page number left out), its height and width."""
 
     number: int
     lines: tuple[Line, ...]
     height: float
+    width: float = 0.0
 
     @property
     def fill(self) -> float:
@@ -62,16 +66,16 @@ def read_pages(pdf: bytes) -> list[Page]:
         path.write_bytes(pdf)
         html = subprocess.run(["pdftotext", "-bbox", str(path), "-"], capture_output=True, text=True, check=True).stdout
     pages = []
-    for k, (_, height, body) in enumerate(_PAGE.findall(html), 1):
-        words = [(float(y0), float(y1), float(x0), unescape(w)) for x0, y0, _, y1, w in _WORD.findall(body)]
-        pages.append(Page(k, _lines(words, float(height)), float(height)))
+    for k, (width, height, body) in enumerate(_PAGE.findall(html), 1):
+        words = [(float(y0), float(y1), float(x0), unescape(w), float(x1)) for x0, y0, x1, y1, w in _WORD.findall(body)]
+        pages.append(Page(k, _lines(words, float(height)), float(height), float(width)))
     return pages
 
 
-def _lines(words: list[tuple[float, float, float, str]], height: float) -> tuple[Line, ...]:
+def _lines(words: list[tuple[float, float, float, str, float]], height: float) -> tuple[Line, ...]:
     """Words grouped into lines (a word whose box overlaps the line's middle joins it), the
     page number (a lone number in the footer) left out."""
-    lines: list[list[tuple[float, float, float, str]]] = []
+    lines: list[list[tuple[float, float, float, str, float]]] = []
     for word in sorted(words):
         for line in lines:
             middle = (line[0][0] + line[0][1]) / 2
@@ -86,5 +90,5 @@ def _lines(words: list[tuple[float, float, float, str]], height: float) -> tuple
         text = " ".join(w[3] for w in sorted(line, key=lambda w: w[2]))
         if top > height - MARGIN and text.isdigit():
             continue  # the page number, in the footer
-        out.append(Line(text, top, bottom))
+        out.append(Line(text, top, bottom, min(w[2] for w in line), max(w[4] for w in line)))
     return tuple(sorted(out, key=lambda ln: ln.top))

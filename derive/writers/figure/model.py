@@ -139,6 +139,7 @@ class Figure:
     own_scale: bool = False
     lengthened: tuple[tuple[str, str], ...] = ()
     schematic: bool = False  # the bodies' sizes are not this variant's (its masses vary, the radii do not)
+    drawn_for: tuple[tuple[str, str], ...] = ()  # (name, value) of a letter drawn at a number (e = 0.5)
 
     @property
     def caption(self) -> str:
@@ -158,6 +159,9 @@ class Figure:
             out += text(", except ") + listed + text(f", drawn longer to show {whose}")
         if self.schematic:
             out += text("; the bodies' sizes are schematic (the radii stated, not this variant's masses)")
+        if self.drawn_for:
+            each = [name(n) + text(f" = {v}") for n, v in self.drawn_for]
+            out += text("; drawn for ") + (text(", ").join(each)) + text(", a letter in the problem")
         return out
 
     def bounds(self, pad: float = 0.25) -> tuple[float, float, float, float]:

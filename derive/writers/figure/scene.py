@@ -3,7 +3,8 @@ angles, walls and floors, x-y axes, with every label placed.
 
 The figure reads the solution's numbers; it does no physics of its own. A symbol
 without a number (a symbolic mass or speed) is drawn as 1, so that arrows stay in
-proportion: in Example 4.C.12 every speed is a multiple of v_A1.
+proportion: in Example 4.C.12 every speed is a multiple of v_A1; a coefficient of
+restitution kept as a letter is drawn at 0.5 or so, and the caption says so (:mod:`.letters`).
 
 Which way is down: :mod:`.frame`.
 """
@@ -24,6 +25,7 @@ from derive.steps.model import Solution
 from derive.symbols import relabel
 from derive.writers.figure.frame import Frame, chain_falls, frame, number
 from derive.writers.figure.layout import AROUND, Spec, place
+from derive.writers.figure.letters import restitution_drawn
 from derive.writers.figure.model import HEAD, Arc, Arrow, Axis, Body, Figure, Guide, Point, Shape, Surface
 
 ARROW_MAX = 3.0  # cm: the arrow of the greatest speed, before or after
@@ -371,7 +373,9 @@ def describe(
     A = Body(*fr.at(-rA, 0), rA, "A")
     B = None if p.fixed_B else Body(*fr.at(rB, 0), rB, "B")
     bodies = {"A": A} if B is None else {"A": A, "B": B}
-    vel = velocities(solution, known, numbers)
+    moved = [c for key, pair in _components(solution).items() if key.endswith("2") for c in pair if c is not None]
+    stand_ins = restitution_drawn(p, known, moved, numbers) if after else {}
+    vel = velocities(solution, {**stand_ins, **known}, numbers)
     more, more_specs = _motion_shapes(solution, fr, bodies, vel, after)
     shapes, specs = _frame_shapes(p, fr, A, B, [s for s in more if isinstance(s, Arrow)])
     shapes += more
@@ -395,6 +399,7 @@ def describe(
         own_scale=own["1"] != own["2"],
         lengthened=longer,
         schematic=_masses_drawn_otherwise(p, values or {}, numbers),
+        drawn_for=tuple((s.name, f"{float(v):g}") for s, v in stand_ins.items()),
     )
 
 

@@ -84,8 +84,9 @@ def given_latex(g: Given, style: Style) -> tuple[str, str]:
     if g.value is None:
         if g.definition is not None:
             return f"{name} = {StepPrinter().doprint(g.definition)}", ""
-        unit = plain_unit(g.unit) if g.unit else "a pure number"
-        return name, f"kept as a symbol ({unit})"
+        # in words beside the given, in parentheses: not "(kept as a symbol (kg))"
+        unit = ("in degrees" if g.unit == "deg" else f"in {plain_unit(g.unit)}") if g.unit else "a pure number"
+        return name, f"kept as a symbol, {unit}"
     if g.unit == "deg":
         deg = g.value * 180 / sympy.pi
         value = exact_latex(deg, style.digits, 1, derived=g.symbol in style.derived) + r"^\circ"

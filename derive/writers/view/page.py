@@ -139,16 +139,16 @@ def _stages(sol: Solution, style: Style, layout: Layout, figures: bool) -> list[
 
 
 def _answers(sol: Solution, style: Style, layout: Layout) -> list[dict[str, Any]]:
-    """The chain's answers, boxed, the last with the ANSWER mark."""
+    """The chain's answers, boxed, each with the ANSWER mark: each is a result the question
+    asks for (the file's ``find``, else the last stage's), as the notes mark each asked vector."""
     answers = []
-    for i, a in enumerate(sol.answers):
-        last = i == len(sol.answers) - 1
+    for a in sol.answers:
         if a.verdict is not None:
             verdict = rf"\boxed{{\text{{Do they collide again? {a.verdict}}}}}"
-            answers.append({"latex": verdict + (ANSWER_MARK if last else ""), "tag": None, "boxed": True})
+            answers.append({"latex": verdict + ANSWER_MARK, "tag": None, "boxed": True})
         else:
             assert a.line is not None
-            answers.append({**line_view(a.line, _own_data(sol, a.name, style), layout, answer=last), "tag": None})
+            answers.append({**line_view(a.line, _own_data(sol, a.name, style), layout, answer=True), "tag": None})
     return answers
 
 
@@ -264,6 +264,7 @@ def problem_view(
             "title": "Answer",
             "heading": [("text", "Answer")],
             "blocks": [{"text": [], "lines": data["answers"]}],
+            "closing": True,  # the answers alone: a document keeps them with what precedes them
         }
         stages.append({**answer, **_NO_FIGURE})
     boxed = [line for block in stages[-1]["blocks"] for line in block["lines"] if line["boxed"]]

@@ -48,8 +48,9 @@ def figure_entry(fig: figure.Figure) -> dict[str, str]:
 
 def figure_note(fig: figure.Figure, tex: bool) -> str:
     """The note under a figure (HTML for Markdown, or LaTeX) when an arrow is drawn longer
-    than to scale or the bodies' sizes are schematic (a variant's); else empty."""
-    if not (fig.lengthened or fig.schematic):
+    than to scale, the bodies' sizes are schematic (a variant's) or a letter is drawn at a number
+    (e = 0.5); else empty."""
+    if not (fig.lengthened or fig.schematic or fig.drawn_for):
         return ""
     if tex:
         return _sentence(fig.scale_note(lambda n: f"${latex_name(n)}$", escape.tex))
