@@ -142,11 +142,6 @@ def ranged(page: Page, f: Found) -> Block:
     return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
 
 
-def as_number(x: sympy.Expr) -> sympy.Expr:
-    """An energy as a decimal, so that it prints at the places the block's sum needs (812.5)."""
-    return x if x.is_Integer and x == 0 else sympy.Float(x.evalf(30), 30)
-
-
 def _boxed(block: Block | None) -> bool:
     return block is not None and any(ln.boxed for ln in block.lines)
 

@@ -13,7 +13,6 @@ from __future__ import annotations
 from derive.writers.printing.expressions import (
     latex_expr,
     latex_inline,
-    latex_side,
     latex_terms,
     side_terms,
     values_map,
@@ -44,7 +43,6 @@ __all__ = [
     "latex_expr",
     "latex_inline",
     "latex_rows",
-    "latex_side",
     "latex_terms",
     "negate",
     "number_latex",
