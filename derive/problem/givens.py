@@ -268,7 +268,7 @@ def _from_text(
     expected = RESERVED.get(key)
     unit_problem: str | None = None
     m = QUANTITY.match(text)
-    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system, err)
+    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system)
     if m and text not in done:
         number, unit_text = m.groups()
         try:
@@ -309,7 +309,7 @@ def _unit_after_expression(what: str, key: str, text: str) -> str:
     )
 
 
-def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str, err: Err) -> bool:
+def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str) -> bool:
     """Whether a text that could be a unit alone ("m", "m/s") is one. A unit is a unit: ``d = "m"``
     is a length even beside a given mass ``m``, and ``u = "m/s"`` a velocity beside a given ``s``.
     Only where the name's kind is fixed (``m_A`` is a mass) and the unit is of another kind while

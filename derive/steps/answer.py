@@ -35,7 +35,7 @@ def answer(page: Page) -> list[Block]:
         (_closed_forms(page), False),
         (_asked(page), True),
         *((shown(page, s), True) for s in page.outcome.shown),
-        *((ranged(page, f), False) for f in page.outcome.ranges),
+        *((ranged(f), False) for f in page.outcome.ranges),
         (others(page), False),
     ]
     # one mark, as in the notes: on the last boxed line of the last block that answers
@@ -117,7 +117,7 @@ def _valued(r: Result, digits: int | None) -> Text:
 MAX_SHOWN_CHARS = 600
 
 
-def ranged(page: Page, f: Found) -> Block:
+def ranged(f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
     op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
