@@ -19,24 +19,16 @@ from derive.numbers import format_number
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
 from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
-from derive.writers.view.givens import letter_units, source_parts, worked_out
+from derive.writers.view.givens import source_parts
 from derive.writers.view.json import to_json
-from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
 from derive.writers.view.page import problem_view, view
-from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet
+from derive.writers.view.problem import student_sheet
 
 __all__ = [
-    "ANSWER_MARK",
     "FORMATS",
     "WRITERS",
-    "blocks_view",
     "boxed_lines",
-    "convention",
     "environment",
-    "figure_entry",
-    "figure_note",
-    "letter_units",
-    "line_view",
     "markdown",
     "plain_answers",
     "problem_view",
@@ -44,9 +36,7 @@ __all__ = [
     "source_parts",
     "student_page",
     "student_sheet",
-    "to_json",
     "view",
-    "worked_out",
 ]
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
