@@ -73,7 +73,6 @@ class Table:
     fields: tuple[Field, ...] = ()
     keys: Field | None = None
     key_pattern: str | None = None
-    key_words: str = ""
     max_keys: int | None = None
     forms: tuple[tuple[str, ...], ...] = field(default=())  # exactly one of these sets of fields (vary)
     by: str = ""  # the field whose value picks the table in ``cases`` (a stage's type)
