@@ -19,9 +19,10 @@ import sympy
 
 from derive.errors import ExpressionError, InputError, UnitError
 from derive.problem import units
-from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, ParseError, function_nesting, parse
+from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, NAME_RE, ParseError, function_nesting, parse
 from derive.problem.records import Given, RecordError
 from derive.problem.schema import ASSUMPTIONS
+from derive.problem.schema.base import BAD_NAME
 from derive.problem.source import Source
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
@@ -155,10 +156,8 @@ def _outer(g: Given, outer: Mapping[str, Given], ctx: Source) -> Given:
 
 
 def _check_name(key: str, ctx: Source) -> None:
-    if not isinstance(key, str) or not re.match(r"^[A-Za-z][A-Za-z0-9_]{0,31}$", key):
-        raise ctx.error(
-            "is not a usable name: start with a letter; letters, digits and _ only", section="given", key=key
-        )
+    if not isinstance(key, str) or not NAME_RE.match(key):
+        raise ctx.error(BAD_NAME, section="given", key=key)
     if key in COMPUTED:
         raise ctx.error("is what derive computes, so it cannot be given", section="given", key=key)
     if key == "pi" or key in FUNCTIONS:

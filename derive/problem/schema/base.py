@@ -24,6 +24,7 @@ TYPES = {
     "tolerance": 'a relative tolerance: a number such as 0.01, or text such as "1%"',
 }
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]{0,31}$"
+BAD_NAME = "is not a usable name: start with a letter; letters, digits and _ only"  # what an error says of a name not like that
 MAX_TEXT = 5000
 MAX_LINE = 40
 MAGNITUDE = (1e-30, 1e30)  # a number's magnitude, when not 0
