@@ -28,6 +28,7 @@ __all__ = [
     "FORMATS",
     "WRITERS",
     "boxed_lines",
+    "check_digits",
     "environment",
     "markdown",
     "plain_answers",
@@ -79,6 +80,12 @@ WRITERS: dict[str, Writer] = {
 }
 
 
+def check_digits(digits: object) -> None:
+    """Refuses (as ``--digits``) significant figures that are not a whole number from 1 to 10."""
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+
+
 def render(
     solution: Solution,
     fmt: str = "md",
@@ -101,8 +108,7 @@ def render(
     ``heading_level``. For a PDF see :func:`derive.writers.pdf.build_pdf`, for Word
     :func:`derive.writers.docx.build_docx`; ``plot`` adds the plot of the outcome against e after the answer.
     """
-    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
-        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    check_digits(digits)
     _headings(heading_level, title)
     writer = WRITERS.get(fmt)
     if writer is None:
