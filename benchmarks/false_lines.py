@@ -32,7 +32,7 @@ def _variants(name: str, text: str, count: int) -> t.Tally:
     problem = loads(text, path=f"{name}.toml", name=name)
     tally = t.Tally()
     for fmt in ("md", "tex"):
-        compiled = variants.compile_problem(problem, None, fmt)
+        compiled = variants.compile_problem(problem)
         for v in variants.draw(compiled, count, seed=1):
             page = variants.fill(compiled, v, fmt)
             mine = t._with_values(problem, v.values)

@@ -57,35 +57,16 @@ def solve(problem: Problem | ChainProblem) -> Solution:
     return displayed(solve_steps(problem))
 
 
-def render(
-    solution: Solution,
-    fmt: str = "md",
-    *,
-    digits: int | None = None,
-    figures: bool = True,
-    target: str = "github",
-    heading_level: int = 1,
-    title: bool = True,
-    plot: bool = False,
-) -> str:
+def render(solution: Solution, fmt: str = "md", **options: Any) -> str:
     """``solution`` as text in ``fmt``: 'md', 'tex' (a document), 'tex-fragment', 'html' or 'json'.
 
-    ``target`` (Markdown): 'github', 'jupyter', 'mkdocs' or 'pandoc'; ``heading_level``
-    and ``title``: the title's heading level, or no title (see docs/interop.md); ``plot``
-    adds the plot of the outcome against e after the answer.
+    ``options``: ``digits``, ``figures``, ``target`` (Markdown: 'github', 'jupyter', 'mkdocs' or
+    'pandoc'), ``heading_level``, ``title`` and ``plot`` (the plot of the outcome against e after
+    the answer); see :func:`derive.writers.view.render` and docs/interop.md.
     """
     from derive.writers.view import render as render_text
 
-    return render_text(
-        solution,
-        fmt,
-        digits=digits,
-        figures=figures,
-        target=target,
-        heading_level=heading_level,
-        title=title,
-        plot=plot,
-    )
+    return render_text(solution, fmt, **options)
 
 
 def check(solution: Solution | Problem, answers: Any = None, **options: Any) -> CheckReport:

@@ -44,13 +44,13 @@ def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...
             with open(path, "wb") as fh:
                 fh.write(payload)
         except OSError as exc:
-            raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+            raise _cannot_write(path, exc) from exc
         return
     try:
         _sweep(folder, path.name)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=folder)
     except OSError as exc:
-        raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+        raise _cannot_write(path, exc) from exc
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(payload)
@@ -62,10 +62,14 @@ def write_atomic(path: str | Path, data: str | bytes, *, inputs: tuple[Path, ...
             os.chmod(tmp, 0o644)
         os.replace(tmp, path)
     except OSError as exc:
-        raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+        raise _cannot_write(path, exc) from exc
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)
+
+
+def _cannot_write(path: Path, exc: OSError) -> RenderError:
+    return RenderError(f"{path}: cannot write the output ({exc.strerror or exc})")
 
 
 MAX_INPUT = 1_000_000  # bytes: a problem or answers file is small
@@ -138,13 +142,13 @@ def folder_atomic(path: str | Path, *, owned: tuple[str, ...] = ()) -> Iterator[
         _sweep(parent, path.name)
         tmp = Path(tempfile.mkdtemp(prefix=f".{path.name}.{os.getpid()}.", suffix=".tmp", dir=parent))
     except OSError as exc:
-        raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+        raise _cannot_write(path, exc) from exc
     try:
         yield tmp
         os.chmod(tmp, 0o755)
         _swap_in(tmp, path)
     except OSError as exc:
-        raise RenderError(f"{path}: cannot write the output ({exc.strerror or exc})") from exc
+        raise _cannot_write(path, exc) from exc
     finally:
         if tmp.exists():
             shutil.rmtree(tmp, ignore_errors=True)

@@ -69,12 +69,6 @@ def figures_for(value: Decimal, digits: int | None) -> int:
     return 4 if leading == 1 else 3
 
 
-def round_value(value: sympy.Expr | Decimal | int | str, digits: int | None = None) -> Decimal:
-    """``value`` rounded to the figures :func:`figures_for` gives it."""
-    d = to_decimal(value)
-    return _round_sig(d, figures_for(d, digits))
-
-
 def float_decimal(x: object) -> Decimal:
     """A float computed from rounded data, to 12 significant figures: its binary noise gone,
     so that 53.15 rounds half up to 53.2, not as 53.149999999999995 to 53.1."""

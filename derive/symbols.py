@@ -13,9 +13,6 @@ from functools import cache
 import sympy
 from sympy.printing.latex import translate
 
-#: Results an impact solution can report, with the notes' names.
-COMPONENT_RESULTS = ("v_A2t", "v_A2n", "v_B2t", "v_B2n")
-
 _SPECIAL_SUBS = {"lost": r"\mathrm{lost}"}
 
 

@@ -199,7 +199,7 @@ def test_every_variant(name: str, text: str, count: int, record_property: Any) -
     problem = loads(text, path=f"{name}.toml", name=name)
     tally = Tally()
     for fmt in ("md", "tex"):
-        compiled = variants.compile_problem(problem, None, fmt)
+        compiled = variants.compile_problem(problem)
         for v in variants.draw(compiled, count, seed=1):
             page = variants.fill(compiled, v, fmt)
             if problem.kind == "chain":  # the file with the variant's numbers typed in, solved

@@ -253,7 +253,7 @@ def _variant(text: str, values: dict[str, sympy.Expr], fmt: str = "md") -> tuple
     from derive.verifier.facts import facts_of
 
     problem = loads(text, path="t.toml")
-    compiled = variants.compile_problem(problem, None, fmt)
+    compiled = variants.compile_problem(problem)
     filled = variants.fill(compiled, variants.Variant(1, values), fmt)
     known = {g.symbol: values[g.name] for g in problem.givens if g.name in values}
     mine = replace(

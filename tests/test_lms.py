@@ -466,7 +466,7 @@ def test_a_mistake_with_surds_in_the_variant_still_gives_its_value() -> None:
     speeds) have cos/sin of the angle among their numbers; solved exactly they were factored
     over the surds' number field for a minute and gave nothing, so the STACK question lost
     that mistake. Its value is a root of the mistaken equations, in [0, 1] and not the key's."""
-    compiled = variants.compile_problem(derive.load("ocr-m3-2013-b-turns-through-right-angle"), None, "md")
+    compiled = variants.compile_problem(derive.load("ocr-m3-2013-b-turns-through-right-angle"))
     v = variants.draw(compiled, 2, 3)[0]
     model = lms.MistakeModel(compiled)
     found = dict(model.outcomes(v))

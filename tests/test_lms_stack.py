@@ -26,7 +26,7 @@ SEED = 1
 
 @pytest.fixture(scope="module")
 def compiled() -> variants.Compiled:
-    return variants.compile_problem(derive.load(NAME), None, "md")
+    return variants.compile_problem(derive.load(NAME))
 
 
 @pytest.fixture(scope="module")
@@ -105,7 +105,7 @@ def test_hostile_text_stays_text() -> None:
         v_A1 = { min = "2 m/s", max = "4 m/s", step = "0.5 m/s" }
         """
     )
-    compiled = variants.compile_problem(loads(text, path="carts.toml"), None, "md")
+    compiled = variants.compile_problem(loads(text, path="carts.toml"))
     chosen = variants.draw(compiled, 3, seed=2)
     for q in sc.stack_questions(stack.stack_xml(compiled, chosen, result="v_A2")):
         for field in ("questiontext/text", "generalfeedback/text"):
@@ -265,7 +265,7 @@ def test_maxima_evaluates_each_teacher_answer_to_the_key(cli, tmp_path: Path) ->
         values = sc.maxima_values(_variables(question), 5, "m/s")
         for k, row in enumerate(key["variants"], 1):
             assert Decimal(values[k]["ta1"]) == Decimal(row["results"][result]["shown"])
-    compiled = variants.compile_problem(derive.load(NAME), None, "md")
+    compiled = variants.compile_problem(derive.load(NAME))
     assert maxima_checks(compiled, variants.draw(compiled, 5, 1), xml_text, lms.MistakeModel(compiled)) == []
 
 
@@ -279,7 +279,7 @@ def _tables() -> list[str]:
 @pytest.mark.parametrize("name", _tables())
 def test_every_bundled_table_exports_to_stack_and_maxima_agrees(name: str) -> None:
     assert sc.have_maxima(), "Debian's maxima is needed (.ci/install installs it)"
-    compiled = variants.compile_problem(derive.load(name), None, "md")
+    compiled = variants.compile_problem(derive.load(name))
     chosen = variants.draw(compiled, 2, 3)
     model = lms.MistakeModel(compiled)
     xml_text = stack.stack_xml(compiled, chosen, model=model)

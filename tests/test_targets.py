@@ -225,7 +225,7 @@ def test_a_long_line_is_on_rows_in_mkdocs_html_handouts_and_variants(tmp_path: P
     assert lost and "aligned" in lost[0]
     handout, _ = build_handout(["notes-4c11-two-spheres"], title="S", theory=False, mode="solutions", fmt="tex")
     assert "&=" in _lost_row(handout)
-    compiled = variants.compile_problem(load("notes-4c11-two-spheres"), fmt="tex")
+    compiled = variants.compile_problem(load("notes-4c11-two-spheres"))
     page = variants.fill(compiled, variants.draw(compiled, 1, seed=1)[0], "tex")
     start = page.index(LOST + " ")
     assert "&=" in page[start : page.index(r"\end", start)]

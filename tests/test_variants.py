@@ -337,7 +337,7 @@ def test_the_key_rounds_exact_halves_up_as_the_page_does() -> None:
 def test_a_students_sheet_says_which_way_n_points(fmt: str) -> None:
     """Issue #15: the sheet asks for signed components, so it says in words which way +n
     (and +t) points, as the worked page does, besides the figure."""
-    compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"), fmt=fmt)
+    compiled = variants.compile_problem(derive.load("notes-4c11-two-spheres"))
     (v,) = variants.draw(compiled, 1, seed=2)
     sheet = variants.sheet(compiled, v, fmt)
     assert "Sign convention." in sheet

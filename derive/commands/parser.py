@@ -47,19 +47,30 @@ def build_parser() -> argparse.ArgumentParser:
         "--timeout", type=_seconds, metavar="SECONDS", help="stop after this long (default: the command's budget)"
     )
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_Parser)
-    _add_solve(sub)
-    _add_list(sub)
-    _add_check(sub)
-    _add_variants(sub)
-    _add_handout(sub)
-    _add_plot(sub)
+    commands = (
+        _add_solve(sub),
+        sub.add_parser("list", help="list the bundled problems"),
+        _add_check(sub),
+        _add_variants(sub),
+        _add_handout(sub),
+        _add_plot(sub),
+    )
+    for command in commands:  # after each command's own options
+        command.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
+        _add_timeout(command)
     return parser
 
 
-def _add_solve(sub: argparse._SubParsersAction) -> None:
+def _with_problem(sub: argparse._SubParsersAction, name: str, help_: str) -> argparse.ArgumentParser:
+    """The parser of command ``name``, whose first argument is one problem."""
+    command = sub.add_parser(name, help=help_)
+    command.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    return command
+
+
+def _add_solve(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """The options of ``derive solve``."""
-    p_solve = sub.add_parser("solve", help="write the worked solution of a problem")
-    p_solve.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_solve = _with_problem(sub, "solve", "write the worked solution of a problem")
     p_solve.add_argument(
         "--format",
         "-f",
@@ -81,21 +92,12 @@ def _add_solve(sub: argparse._SubParsersAction) -> None:
     _add_interop_options(p_solve)
     p_solve.add_argument("--verify", action="store_true", help="check every line; print failing lines, exit 1 if any")
     p_solve.add_argument("--plot", action="store_true", help="add the plot of the outcome against e to the answer")
-    p_solve.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_solve)
+    return p_solve
 
 
-def _add_list(sub: argparse._SubParsersAction) -> None:
-    """The options of ``derive list``."""
-    p_list = sub.add_parser("list", help="list the bundled problems")
-    p_list.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_list)
-
-
-def _add_check(sub: argparse._SubParsersAction) -> None:
+def _add_check(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """The options of ``derive check``."""
-    p_check = sub.add_parser("check", help="check hand answers: which are right, and what went wrong")
-    p_check.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_check = _with_problem(sub, "check", "check hand answers: which are right, and what went wrong")
     p_check.add_argument("--answer", "-a", action="append", metavar="NAME=VALUE", help="an answer (repeatable)")
     p_check.add_argument("--answers", metavar="FILE", help="answers (and equations) in a TOML file")
     p_check.add_argument("--equation", action="append", metavar="'N: LHS = RHS'", help="an equation (repeatable)")
@@ -104,14 +106,12 @@ def _add_check(sub: argparse._SubParsersAction) -> None:
     )
     p_check.add_argument("--tolerance", help="relative tolerance, e.g. 0.01 or 1%% (default: the figures written)")
     p_check.add_argument("--format", "-f", choices=("text", "md", "json"), default="text", help="default: text")
-    p_check.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_check)
+    return p_check
 
 
-def _add_variants(sub: argparse._SubParsersAction) -> None:
+def _add_variants(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """The options of ``derive variants``."""
-    p_var = sub.add_parser("variants", help="homework variants of a problem with a [vary] table, and an answer key")
-    p_var.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_var = _with_problem(sub, "variants", "homework variants of a problem with a [vary] table, and an answer key")
     p_var.add_argument(
         "--count", "-n", type=int, default=None, help="how many variants (default: 40; 20 with --stack, at most 50)"
     )
@@ -135,11 +135,10 @@ def _add_variants(sub: argparse._SubParsersAction) -> None:
     p_var.add_argument(
         "--result", metavar="NAME", help="the result the LMS questions ask for (default: the first asked)"
     )
-    p_var.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_var)
+    return p_var
 
 
-def _add_handout(sub: argparse._SubParsersAction) -> None:
+def _add_handout(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """The options of ``derive handout``."""
     p_hand = sub.add_parser("handout", help="gather problems into one document: problems, answers or solutions")
     p_hand.add_argument("problems", nargs="+", metavar="PROBLEM", help="problem files (.toml) or bundled names")
@@ -159,20 +158,17 @@ def _add_handout(sub: argparse._SubParsersAction) -> None:
     p_hand.add_argument("--mode", choices=("problems", "answers", "solutions"), default="solutions")
     p_hand.add_argument("--digits", type=int, help="significant figures (default: each problem's)")
     p_hand.add_argument("--plot", action="store_true", help="with --mode solutions: each impact's plot against e")
-    p_hand.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_hand)
+    return p_hand
 
 
-def _add_plot(sub: argparse._SubParsersAction) -> None:
+def _add_plot(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
     """The options of ``derive plot``."""
-    p_plot = sub.add_parser("plot", help="plot the outcome against e (0 to 1): velocities along n, energy lost")
-    p_plot.add_argument("problem", help="a problem file (.toml) or the name of a bundled problem")
+    p_plot = _with_problem(sub, "plot", "plot the outcome against e (0 to 1): velocities along n, energy lost")
     p_plot.add_argument(
         "-o", "--output", help="FILE.svg, FILE.pdf, FILE.png or FILE.tex (default: SVG to standard output)"
     )
     p_plot.add_argument("--stage", type=int, help="in a chain, the impact stage to plot (default: the first)")
-    p_plot.add_argument("--debug", action="store_true", help=argparse.SUPPRESS)
-    _add_timeout(p_plot)
+    return p_plot
 
 
 def _add_timeout(p: argparse.ArgumentParser) -> None:

@@ -28,7 +28,7 @@ from derive.problem import load
 from derive.steps import solve
 from derive.writers.pdf import build_pdf
 from derive.writers.targets import GITHUB, HTML, TEX_DOCUMENT, Layout
-from derive.writers.view import environment, problem_view, student_sheet
+from derive.writers.view import check_digits, environment, problem_view, student_sheet
 from derive.writers.view.html import html_pages
 
 Mode = Literal["problems", "answers", "solutions"]
@@ -148,8 +148,7 @@ def _check(problems: list[str | Path], mode: str, fmt: str, digits: int | None) 
         raise InputError(f"unknown mode {mode!r} (expected one of: {', '.join(MODES)})", field="--mode")
     if fmt not in FORMATS:
         raise InputError(f"unknown handout format {fmt!r} (expected one of: {', '.join(FORMATS)})", field="format")
-    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
-        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    check_digits(digits)
     if not problems:
         raise InputError("a handout needs at least one problem")
 

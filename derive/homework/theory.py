@@ -32,6 +32,16 @@ def _s(name: str) -> sympy.Symbol:
     return symbol(name, kind_of(name, oblique=True))
 
 
+def _text(*parts: str | Math | sympy.Basic) -> Text:
+    """Words with formulas: a string stays words, an expression is set as inline maths."""
+    return tuple(p if isinstance(p, (str, Math)) else Math(p) for p in parts)
+
+
+def _listed(*exprs: sympy.Basic) -> list[sympy.Basic | str]:
+    """``a, b, c``: the expressions with commas between them."""
+    return [part for x in exprs for part in (", ", x)][1:]
+
+
 def _raw(tex: str) -> Math:
     """Inline LaTeX that is not an expression (a statement about forces)."""
     return Math(sympy.Symbol(tex))
@@ -101,15 +111,15 @@ def _impact() -> Section:
         "",
         (
             Block(
-                (
+                _text(
                     "An impact is a collision with large contact forces acting over a very short time. The plane "
                     "of contact is tangent to the contact surfaces of A and B; the line of impact is normal to it; "
                     "in a central impact it passes through the mass centres of both bodies. Axes: ",
-                    Math(symbol("n")),
+                    symbol("n"),
                     " along the line of impact, positive from the centre of A toward the centre of B; ",
-                    Math(symbol("t")),
+                    symbol("t"),
                     " in the plane of contact. Index 1 means immediately before the impact, 2 immediately after (",
-                    Math(v["A1n"]),
+                    v["A1n"],
                     ": the n component of the velocity of A before the impact).",
                 )
             ),
@@ -150,27 +160,27 @@ def _restitution() -> Section:
         "Coefficient of restitution",
         (
             Block(
-                (
+                _text(
                     "Equation (3) has two unknowns, ",
-                    Math(v["A2n"]),
+                    v["A2n"],
                     " and ",
-                    Math(v["B2n"]),
+                    v["B2n"],
                     ". The coefficient of restitution ",
-                    Math(e),
+                    e,
                     ", the ratio of the restoration impulse to the deformation impulse, gives the other: the "
                     "relative velocity of separation over that of approach,",
                 ),
                 (EQUATION_LINES[4],),
             ),
             Block(
-                (
+                _text(
                     _raw(r"0 \le e \le 1"),
                     ": ",
-                    Math(sympy.Eq(e, 1)),
+                    sympy.Eq(e, 1),
                     " perfectly elastic, ",
-                    Math(sympy.Eq(e, 0)),
+                    sympy.Eq(e, 0),
                     " perfectly plastic (the bodies move on together). An impact needs approach: ",
-                    Math(sympy.StrictGreaterThan(_APPROACH, 0)),
+                    sympy.StrictGreaterThan(_APPROACH, 0),
                     ".",
                 )
             ),
@@ -184,17 +194,7 @@ def _summary() -> Section:
         "Summary: central impact",
         (
             Block(
-                (
-                    "Four equations for the four unknowns ",
-                    Math(v["A2t"]),
-                    ", ",
-                    Math(v["B2t"]),
-                    ", ",
-                    Math(v["A2n"]),
-                    ", ",
-                    Math(v["B2n"]),
-                    ":",
-                ),
+                _text("Four equations for the four unknowns ", *_listed(v["A2t"], v["B2t"], v["A2n"], v["B2n"]), ":"),
                 tuple(EQUATION_LINES[k] for k in (1, 2, 3, 4)),
             ),
         ),
@@ -212,20 +212,20 @@ def _remarks() -> Section:
             ),
             ("Define the n–t axes clearly at the beginning of every solution.",),
             ("The restitution equation (4) is valid only for the velocity components along the line of impact.",),
-            (
+            _text(
                 "Mechanical energy is not conserved during an impact (unless ",
-                Math(sympy.Eq(e, 1)),
+                sympy.Eq(e, 1),
                 "): do not use the work–energy equation across an impact.",
             ),
-            (
+            _text(
                 "Direct impact: the velocities lie along n, and (1), (2) drop out. Oblique impact: resolve each "
                 "velocity into n and t first; after the impact, ",
-                Math(sympy.Eq(_s("theta_A2"), sympy.atan(v["A2n"] / v["A2t"]), evaluate=False)),
+                sympy.Eq(_s("theta_A2"), sympy.atan(v["A2n"] / v["A2t"]), evaluate=False),
                 " from the plane of contact.",
             ),
-            (
+            _text(
                 "A fixed surface (a wall, the floor) is a body B of infinite mass at rest: (4) gives ",
-                Math(sympy.Eq(v["A2n"], sympy.Mul(-1, e, v["A1n"], evaluate=False), evaluate=False)),
+                sympy.Eq(v["A2n"], sympy.Mul(-1, e, v["A1n"], evaluate=False), evaluate=False),
                 ", and (3) does not apply.",
             ),
         ),

@@ -401,11 +401,6 @@ def evaluate(expr: sympy.Expr, problem: Problem, *, decimals: bool = False) -> s
     return expr.xreplace(ind).xreplace(numeric)
 
 
-def is_numeric(expr: sympy.Expr) -> bool:
-    """True when ``expr`` has no free symbols left."""
-    return not expr.free_symbols
-
-
 def numbered(imp: Impact) -> dict[int, sympy.Expr]:
     """Each of the impact's equations as ``lhs - rhs``, in the givens, with every number in."""
     out = {}

@@ -165,6 +165,13 @@ class _Collector:
         """``expr`` in the givens: pre-impact components resolved, unknowns solved."""
         return self.imp.in_givens(expr).xreplace(self.solved)
 
+    def moving_after(self, comps: dict[str, sympy.Symbol]) -> list[tuple[str, sympy.Expr, sympy.Expr]]:
+        """Each body that can move (not a fixed B), with its n and t components after the
+        impact (``comps`` by name) in the givens."""
+        return [
+            (b, self.full(comps[f"v_{b}2n"]), self.full(comps[f"v_{b}2t"])) for b in ("A" if self.p.fixed_B else "AB")
+        ]
+
     def add(
         self,
         name: str,
@@ -209,10 +216,7 @@ def _velocities(r: _Collector) -> None:
     for name, s_ in comps.items():
         body, axis = name[2], name[-1]
         r.add(name, lambda s_=s_: r.full(s_), unit_v, f"velocity of {body} after the impact, {axis} component")
-    for b in "AB":
-        if b == "B" and p.fixed_B:
-            continue
-        n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+    for b, n, t in r.moving_after(comps):
         r.add(f"v_{b}2", lambda n=n, t=t: sympy.sqrt(n**2 + t**2), unit_v, f"speed of {b} after the impact")
         moving = _moving(n, t, p)
         for angle, y, x, sense in (("theta", n, t, "from +t toward +n"), ("beta", t, n, "from +n toward +t")):
@@ -226,10 +230,7 @@ def _velocities(r: _Collector) -> None:
             )
     _acute_angles(r, comps)
     if p.phi is not None:
-        for b in "AB":
-            if b == "B" and p.fixed_B:
-                continue
-            n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+        for b, n, t in r.moving_after(comps):
             c, s_ = r.full(sympy.cos(p.phi)), r.full(sympy.sin(p.phi))  # phi may be an unknown, found
 
             def x(n: sympy.Expr = n, t: sympy.Expr = t, c: sympy.Expr = c, s_: sympy.Expr = s_) -> sympy.Expr:
@@ -252,10 +253,7 @@ def _acute_angles(r: _Collector, comps: dict[str, sympy.Symbol]) -> None:
       delta = atan2(|v_A1 x v_A2|, v_A1 . v_A2), between 0° and 180°.
     """
     p, nm = r.p, r.imp.names
-    for b in "AB":
-        if b == "B" and p.fixed_B:
-            continue
-        n, t = r.full(comps[f"v_{b}2n"]), r.full(comps[f"v_{b}2t"])
+    for b, n, t in r.moving_after(comps):
         moving = _moving(n, t, p)
         for name, y, x, words in (
             (f"alpha_{b}2", t, n, "the line of centres (n)"),

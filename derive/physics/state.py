@@ -1,11 +1,7 @@
 """What the stages of a chain share while it is solved: the quantities known so far.
 
-Each stage takes its inputs from the chain's givens and from the results of the
-stages before it, and names its own results for those after it. The notes' rule is
-kept: energy methods before and after an impact, never across one; each impact stage
-is a problem of its own, solved by the same single-impact physics
-(:func:`derive.physics.outcome.solve_impact`). The stage types are in
-:mod:`derive.physics.stages`; this module keeps what the stages share.
+How a chain is solved, stage by stage, is said in :mod:`derive.physics.chain`; the stage
+types are in :mod:`derive.physics.stages`.
 """
 
 from __future__ import annotations

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import sympy
 
 from derive.problem import units
+from derive.problem.schema.base import NAME_PATTERN
 from derive.problem.unit_tokens import is_unit_name, unit_text
 from derive.problem.units import ANGLE, DIMENSIONLESS, Dim, describe
 
@@ -51,7 +52,7 @@ _TOKEN = re.compile(
     r"|(?P<name>[A-Za-z][A-Za-z0-9_]*|°)"
     r"|(?P<op>\*\*|[-+*/^(),]))"
 )
-NAME_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]{0,31}$")
+NAME_RE = re.compile(NAME_PATTERN)
 _NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 

@@ -19,9 +19,10 @@ import sympy
 
 from derive.errors import ExpressionError, InputError, UnitError
 from derive.problem import units
-from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, ParseError, function_nesting, parse
+from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, NAME_RE, ParseError, function_nesting, parse
 from derive.problem.records import Given, RecordError
 from derive.problem.schema import ASSUMPTIONS
+from derive.problem.schema.base import BAD_NAME
 from derive.problem.source import Source
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
@@ -155,10 +156,8 @@ def _outer(g: Given, outer: Mapping[str, Given], ctx: Source) -> Given:
 
 
 def _check_name(key: str, ctx: Source) -> None:
-    if not isinstance(key, str) or not re.match(r"^[A-Za-z][A-Za-z0-9_]{0,31}$", key):
-        raise ctx.error(
-            "is not a usable name: start with a letter; letters, digits and _ only", section="given", key=key
-        )
+    if not isinstance(key, str) or not NAME_RE.match(key):
+        raise ctx.error(BAD_NAME, section="given", key=key)
     if key in COMPUTED:
         raise ctx.error("is what derive computes, so it cannot be given", section="given", key=key)
     if key == "pi" or key in FUNCTIONS:
@@ -268,7 +267,7 @@ def _from_text(
     expected = RESERVED.get(key)
     unit_problem: str | None = None
     m = QUANTITY.match(text)
-    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system, err)
+    looks_like_unit = bool(_UNIT_ALONE.fullmatch(text)) and _reads_as_unit(text, expected, done, system)
     if m and text not in done:
         number, unit_text = m.groups()
         try:
@@ -309,7 +308,7 @@ def _unit_after_expression(what: str, key: str, text: str) -> str:
     )
 
 
-def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str, err: Err) -> bool:
+def _reads_as_unit(text: str, expected: Dim | None, done: Mapping[str, Given], system: str) -> bool:
     """Whether a text that could be a unit alone ("m", "m/s") is one. A unit is a unit: ``d = "m"``
     is a length even beside a given mass ``m``, and ``u = "m/s"`` a velocity beside a given ``s``.
     Only where the name's kind is fixed (``m_A`` is a mass) and the unit is of another kind while

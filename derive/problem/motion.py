@@ -179,13 +179,7 @@ def motion(
     if has_comp:
         if set(DIRECTION) & set(tbl):
             raise ctx.error(f"the velocity of {b} is given by components, so [{b}] needs no angle", section=b)
-        missing = [k for k in (n_name, t_name) if k not in by_name]
-        if missing:
-            raise ctx.error(
-                f"is missing: with components give both {n_name} and {t_name}{misspelt(missing[0], by_name)}",
-                section="given",
-                key=missing[0],
-            )
+        _both_components((n_name, t_name), by_name, ctx)
         return Motion(b, by_name[n_name].symbol, by_name[t_name].symbol), None
     return _speed_and_direction(b, tbl, by_name, ctx, phi)
 
@@ -194,17 +188,22 @@ def _xy_components(b: str, by_name: Mapping[str, Given], ctx: Source, phi: sympy
     x_name, y_name = f"v_{b}1x", f"v_{b}1y"
     if {f"v_{b}1n", f"v_{b}1t", f"v_{b}1"} & set(by_name):
         raise ctx.error(f"give the velocity of {b} one way only", section="given", key=x_name)
-    missing = [k for k in (x_name, y_name) if k not in by_name]
-    if missing:
-        raise ctx.error(
-            f"is missing: with components give both {x_name} and {y_name}{misspelt(missing[0], by_name)}",
-            section="given",
-            key=missing[0],
-        )
+    _both_components((x_name, y_name), by_name, ctx)
     vx, vy = by_name[x_name].symbol, by_name[y_name].symbol
     n = vx * sympy.cos(phi) + vy * sympy.sin(phi)
     t = -vx * sympy.sin(phi) + vy * sympy.cos(phi)
     return Motion(b, n, t, x=vx, y=vy)
+
+
+def _both_components(names: tuple[str, str], by_name: Mapping[str, Given], ctx: Source) -> None:
+    """Raises unless both components in ``names`` are given (naming the first missing one)."""
+    missing = [k for k in names if k not in by_name]
+    if missing:
+        raise ctx.error(
+            f"is missing: with components give both {names[0]} and {names[1]}{misspelt(missing[0], by_name)}",
+            section="given",
+            key=missing[0],
+        )
 
 
 def misspelt(name: str, by_name: Mapping[str, Any]) -> str:

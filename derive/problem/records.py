@@ -16,6 +16,7 @@ import sympy
 from derive.errors import InputError, PhysicsError
 from derive.problem import units
 from derive.problem.expr import NAME_RE
+from derive.problem.schema.base import BAD_NAME
 from derive.problem.symbolic import Asks
 from derive.problem.units import Dim
 
@@ -75,7 +76,7 @@ class Given:
 
     def __post_init__(self) -> None:
         if not NAME_RE.match(self.name):
-            raise RecordError("is not a usable name: start with a letter; letters, digits and _ only", key=self.name)
+            raise RecordError(BAD_NAME, key=self.name)
         if len(self.dim) != 4 or not isinstance(self.unit, str):
             raise RecordError("has no dimension or unit", key=self.name)
 

@@ -47,11 +47,6 @@ class Source:
         self.label = label
         self._index: dict[Path_, int] | None = None
 
-    @property
-    def lines(self) -> list[str]:
-        """The file's lines (for callers that look for themselves)."""
-        return self.text.splitlines()
-
     def within(self, *scope: str | int, label: str) -> Source:
         """A view of a part of the file (``("stage", 1)``), its fields labelled ``[label] key``."""
         view = Source(self.path, self.text, scope=self.scope + scope, label=label)

@@ -15,6 +15,7 @@ from typing import Any
 
 from derive.errors import InputError
 from derive.problem.schema import MAGNITUDE, TYPES, Field, Table
+from derive.problem.schema.base import BAD_NAME
 from derive.problem.source import Source, type_name
 
 Path_ = tuple[str, ...]
@@ -92,7 +93,7 @@ def _open_entries(data: Mapping[str, Any], table: Table, src: Source, path: Path
     pattern = re.compile(table.key_pattern) if table.key_pattern else None
     for key, value in data.items():
         if pattern is not None and not pattern.match(key):
-            raise err(src, (*path, key), "is not a usable name: start with a letter; letters, digits and _ only")
+            raise err(src, (*path, key), BAD_NAME)
         check_value(value, table.keys, src, (*path, key))
 
 

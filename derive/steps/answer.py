@@ -34,7 +34,7 @@ def answer(page: Page) -> list[Block]:
         (_closed_forms(page), False),
         (_asked(page), True),
         *((shown(page, s), True) for s in page.outcome.shown),
-        *((ranged(page, f), False) for f in page.outcome.ranges),
+        *((ranged(f), False) for f in page.outcome.ranges),
         (others(page), False),
     ]
     blocks = _mark_each(page, candidates)
@@ -150,7 +150,7 @@ def _valued(r: Result, digits: int | None) -> Text:
 MAX_SHOWN_CHARS = 600
 
 
-def ranged(page: Page, f: Found) -> Block:
+def ranged(f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
     op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
@@ -173,11 +173,6 @@ def ranged(page: Page, f: Found) -> Block:
     if f.interval is None:
         return Block((*text, "; this depends on the other letters and is not worked out here."))
     return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
-
-
-def as_number(x: sympy.Expr) -> sympy.Expr:
-    """An energy as a decimal, so that it prints at the places the block's sum needs (812.5)."""
-    return x if x.is_Integer and x == 0 else sympy.Float(x.evalf(30), 30)
 
 
 def _boxed(block: Block | None) -> bool:

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 import sympy
 
 from derive.numbers import short_decimal
-from derive.physics.impact import equation_numbers, evaluate
+from derive.physics.impact import evaluate
 from derive.physics.outcome import ImpactOutcome, xy_motions
 from derive.physics.results import working_unit
 from derive.steps.model import Math, Text
@@ -115,10 +115,6 @@ class Page:
     @property
     def unit_v(self) -> str:
         return working_unit(self.p, "velocity")
-
-    @property
-    def nums(self) -> tuple[int, ...]:
-        return equation_numbers(self.p)
 
     @property
     def unknowns(self) -> tuple[sympy.Symbol, ...]:

@@ -10,6 +10,7 @@ and the sentence it follows ("Add (3) and (4): ...").
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 
 _MATH = re.compile(r"\$([^$]+)\$")
@@ -62,6 +63,15 @@ class _Page:
         latex = _unaligned(latex) if kind == "display" else latex
         self.lines.append(PageLine(number, kind, latex.strip(), self.scope, self.section, self.sentence, self.block))
 
+    def display(self, rows: list[str], i: int, closes: Callable[[str], bool]) -> int:
+        """Adds the display that opens at row ``i``, up to the row that ``closes`` it
+        (stripped); returns the index of the row after that."""
+        j = i + 1
+        while j < len(rows) and not closes(rows[j].strip()):
+            j += 1
+        self.add(i + 2, "display", "\n".join(rows[i + 1 : j]))
+        return j + 1
+
     def inline(self, number: int, text: str) -> None:
         """A paragraph that holds claims: a Given list of a stage, or carried values."""
         if text.startswith("Carried to the next stages:"):
@@ -91,11 +101,7 @@ def read_markdown(text: str) -> list[PageLine]:
         row = rows[i].rstrip()
         if row.strip() == "$$":
             flush()
-            j = i + 1
-            while j < len(rows) and rows[j].strip() != "$$":
-                j += 1
-            page.add(i + 2, "display", "\n".join(rows[i + 1 : j]))
-            i = j + 1
+            i = page.display(rows, i, lambda r: r == "$$")
             continue
         m = re.match(r"(#+) (.*)", row)
         if m:
@@ -157,11 +163,7 @@ def read_latex(text: str) -> list[PageLine]:
             i += 1
             continue
         if row.startswith(r"\begin{equation"):
-            j = i + 1
-            while j < len(rows) and not rows[j].strip().startswith(r"\end{equation"):
-                j += 1
-            page.add(i + 2, "display", "\n".join(rows[i + 1 : j]))
-            i = j + 1
+            i = page.display(rows, i, lambda r: r.startswith(r"\end{equation"))
             continue
         m = re.match(r"\\(sub)*section\*?\{(.*)\}$", row)
         if m:

@@ -70,8 +70,17 @@ _SYMBOLS = {
 _RELATIONS = {"=": 13.33, "<": 13.33, ">": 13.33, r"\approx": 13.33, r"\leq": 13.33, r"\geq": 13.33, r"\ne": 13.33}
 _BINARY = {"+": 12.22, "-": 12.22, r"\cdot": 7.22, r"\times": 12.22, r"\pm": 12.22}
 _OPERATORS = {r"\sin": 12.28, r"\cos": 13.39, r"\tan": 14.44, r"\ln": 8.34, r"\log": 13.34, r"\exp": 15.0}
-_KEEP_WIDTH = (r"\cancel", r"\hat", r"\vec", r"\bar", r"\tilde", r"\boldsymbol", r"\mathbf", r"\mathit", r"\overline")
-_TEXT = (r"\text", r"\mathrm", r"\textbf", r"\operatorname", r"\textit")
+#: Commands of one argument: the width they add to it (pt at text size), and whether it is
+#: set as text (None: as the text around the command is).
+_ONE_ARGUMENT: dict[str, tuple[float, bool | None]] = {
+    r"\sqrt": (8.33, False),
+    r"\boxed": (6.8, False),
+    **dict.fromkeys((r"\text", r"\mathrm", r"\textbf", r"\operatorname", r"\textit"), (0.0, True)),
+    **dict.fromkeys(
+        (r"\cancel", r"\hat", r"\vec", r"\bar", r"\tilde", r"\boldsymbol", r"\mathbf", r"\mathit", r"\overline"),
+        (0.0, None),
+    ),
+}
 _SCRIPT = 0.8  # script size (7 pt) over text size, as measured
 _NAME = re.compile(r"\\([A-Za-z]+)|\\(.)")
 
@@ -140,18 +149,10 @@ def _command(latex: str, i: int, scale: float, text: bool, operand_before: bool)
         bottom, i = _argument(latex, i)
         inner = scale if name == r"\dfrac" or scale == 1.0 else scale * _SCRIPT
         w = max(width_pt(top, inner), width_pt(bottom, inner)) + 2.4 * scale
-    elif name == r"\sqrt":
+    elif name in _ONE_ARGUMENT:
+        added, as_text = _ONE_ARGUMENT[name]
         arg, i = _argument(latex, i)
-        w = width_pt(arg, scale) + 8.33 * scale
-    elif name in _TEXT:
-        arg, i = _argument(latex, i)
-        w = width_pt(arg, scale, text=True)
-    elif name == r"\boxed":
-        arg, i = _argument(latex, i)
-        w = width_pt(arg, scale) + 6.8 * scale
-    elif name in _KEEP_WIDTH:
-        arg, i = _argument(latex, i)
-        w = width_pt(arg, scale, text=text)
+        w = width_pt(arg, scale, text=text if as_text is None else as_text) + added * scale
     elif name in (r"\left", r"\right"):
         if i < len(latex) and latex[i] == "\\":
             m2 = _NAME.match(latex, i)

@@ -41,48 +41,28 @@ Nothing here needs more than the standard library and derive itself.
 from __future__ import annotations
 
 from derive.homework.lms.exports import build_exports
-from derive.homework.lms.files import Exports
 from derive.homework.lms.grading import (
-    EDGE,
-    TOLERANCE_UNITS,
     ZERO_TOLERANCE,
-    Answer,
     default_result,
-    resolve_result,
-    significant_figures,
     tolerance,
 )
-from derive.homework.lms.markup import esc, solution_html, statement_html, words
-from derive.homework.lms.mistake_model import MistakeModel, Range, Wrong, mistake_ranges
-from derive.homework.lms.moodle import DEFAULT_GRADE, OTHER_UNITS, PENALTY, moodle_xml
-from derive.homework.lms.pl import TOPIC, prairielearn, prairielearn_files
+from derive.homework.lms.markup import esc, solution_html, statement_html
+from derive.homework.lms.mistake_model import MistakeModel
+from derive.homework.lms.moodle import moodle_xml
+from derive.homework.lms.pl import prairielearn, prairielearn_files
 from derive.homework.lms.stack import stack_xml
 
 __all__ = [
-    "DEFAULT_GRADE",
-    "EDGE",
-    "OTHER_UNITS",
-    "PENALTY",
-    "TOLERANCE_UNITS",
-    "TOPIC",
     "ZERO_TOLERANCE",
-    "Answer",
-    "Exports",
     "MistakeModel",
-    "Range",
-    "Wrong",
     "build_exports",
     "default_result",
     "esc",
-    "mistake_ranges",
     "moodle_xml",
     "prairielearn",
     "prairielearn_files",
-    "resolve_result",
-    "significant_figures",
     "solution_html",
     "stack_xml",
     "statement_html",
     "tolerance",
-    "words",
 ]

@@ -35,7 +35,7 @@ def build_exports(
             _check_file(path, option)
     if prairielearn and Path(prairielearn).exists() and not Path(prairielearn).is_dir():
         raise InputError("exists and is not a folder", where=prairielearn, field="--prairielearn")
-    compiled = compile_problem(problem, digits, "md")
+    compiled = compile_problem(problem)
     chosen = draw(compiled, count, seed)
     asked = result
     result = resolve_result(compiled, chosen, result, digits)

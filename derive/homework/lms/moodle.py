@@ -31,7 +31,8 @@ def _plain(d: Decimal) -> str:
     return "0" if text.strip("-0.") == "" else text
 
 
-def _text(parent: ET.Element, tag: str, text: str, **attrs: str) -> ET.Element:
+def text_element(parent: ET.Element, tag: str, text: str, **attrs: str) -> ET.Element:
+    """A ``<tag>`` in ``parent`` whose ``<text>`` holds ``text`` (made safe for XML)."""
     el = ET.SubElement(parent, tag, attrs)
     ET.SubElement(el, "text").text = clean_xml(text)
     return el
@@ -47,7 +48,7 @@ def _question_text(q: ET.Element, compiled: Compiled, v: Variant, statement: str
     of the question, drawn to the variant's speeds) and what to enter."""
     figure = setup_figure(compiled, v, "md")
     shown = f'<p><img src="@@PLUGINFILE@@/{FIGURE_FILE}" alt="The set-up before the impact" /></p>\n' if figure else ""
-    el = _text(q, "questiontext", statement + "\n" + shown + ask, format="html")
+    el = text_element(q, "questiontext", statement + "\n" + shown + ask, format="html")
     if figure:
         f = ET.SubElement(el, "file", {"name": FIGURE_FILE, "path": "/", "encoding": "base64"})
         f.text = base64.b64encode(figure.encode("utf-8")).decode("ascii")
@@ -109,33 +110,27 @@ def moodle_xml(
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
     d = digits if digits is not None else p.digits
-    name = problem_name(compiled)
-    if category is None:
-        category = f"$course$/derive/{name}"
     if not with_mistakes:
         model = None
     elif model is None:
         model = MistakeModel(compiled)
-    quiz = ET.Element("quiz")
-    cat = ET.SubElement(quiz, "question", {"type": "category"})
-    _text(cat, "category", category)
-    _text(cat, "info", f"<p>{words(p.title)}: {len(variants)} variants drawn by derive.</p>", format="html")
+    quiz = quiz_element(compiled, category, f"{len(variants)} variants drawn by derive.")
     width = max(2, len(str(len(variants))))
     symbol = latex_name(result)
     for v in variants:
         page = fill_view(compiled, v, digits)
         right = asked_answer(result, answers(compiled, v, digits)[result], d)
         q = ET.SubElement(quiz, "question", {"type": "numerical"})
-        _text(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
+        text_element(q, "name", f"{p.title} — variant {v.number:0{width}d} ({result})")
         _question_text(q, compiled, v, statement_html(page), _ask(compiled, right))
-        _text(q, "generalfeedback", solution_html(page), format="html")
+        text_element(q, "generalfeedback", solution_html(page), format="html")
         ET.SubElement(q, "defaultgrade").text = DEFAULT_GRADE
         ET.SubElement(q, "penalty").text = PENALTY
         ET.SubElement(q, "hidden").text = "0"
         unit = f" {right.unit}" if right.unit and right.unit != "deg" else ("°" if right.unit else "")
         a = ET.SubElement(q, "answer", {"fraction": "100", "format": "moodle_auto_format"})
         ET.SubElement(a, "text").text = _plain(right.value)
-        _text(a, "feedback", f"<p>Right: \\({symbol} = {esc(right.shown)}\\){esc(unit)}.</p>", format="html")
+        text_element(a, "feedback", f"<p>Right: \\({symbol} = {esc(right.shown)}\\){esc(unit)}.</p>", format="html")
         ET.SubElement(a, "tolerance").text = _plain(right.tolerance)
         for r in mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []:
             a = ET.SubElement(q, "answer", {"fraction": "0", "format": "moodle_auto_format"})
@@ -144,8 +139,23 @@ def moodle_xml(
                 "A common mistake gives this value." if len(r.wrong.hints) == 1 else "Common mistakes give this value."
             )
             body = "".join(f"<p>{esc(h)}</p>" for h in r.wrong.hints)
-            _text(a, "feedback", f"<p>{lead}</p>{body}", format="html")
+            text_element(a, "feedback", f"<p>{lead}</p>{body}", format="html")
             ET.SubElement(a, "tolerance").text = _plain(r.half_width)
         _units(q, right.unit)
+    return xml_document(quiz)
+
+
+def quiz_element(compiled: Compiled, category: str | None, info: str) -> ET.Element:
+    """A Moodle quiz whose first question sets its category (``category``, by default
+    ``$course$/derive/<problem name>``) and says ``info`` about what follows."""
+    quiz = ET.Element("quiz")
+    cat = ET.SubElement(quiz, "question", {"type": "category"})
+    text_element(cat, "category", f"$course$/derive/{problem_name(compiled)}" if category is None else category)
+    text_element(cat, "info", f"<p>{words(compiled.problem.title)}: {info}</p>", format="html")
+    return quiz
+
+
+def xml_document(quiz: ET.Element) -> str:
+    """``quiz`` as the text of an XML file, indented."""
     ET.indent(quiz, space="  ")
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(quiz, encoding="unicode") + "\n"

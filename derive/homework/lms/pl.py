@@ -78,7 +78,6 @@ def prairielearn_files(
     result: str | None = None,
     digits: int | None = None,
     seed: int | None = None,
-    with_mistakes: bool = True,
     model: MistakeModel | None = None,
 ) -> dict[str, str]:
     """The files of a PrairieLearn question (name -> text): info.json, question.html, server.py.
@@ -88,10 +87,7 @@ def prairielearn_files(
     ``grade()`` gives the mistakes' hints in the ranges Moodle uses."""
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
-    if not with_mistakes:
-        model = None
-    elif model is None:
-        model = MistakeModel(compiled)
+    model = MistakeModel(compiled) if model is None else model
     rows = [_row(compiled, v, result, digits, model) for v in variants]
     # each variant's statement whole: a variant is its own problem, written as any page is
     question = _question_html(compiled, variants, result, digits, "{{{params.derive_statement}}}")
@@ -119,13 +115,13 @@ def _row(
     v: Variant,
     result: str,
     digits: int | None,
-    model: MistakeModel | None,
+    model: MistakeModel,
 ) -> dict:
     """One variant as server.py's VARIANTS hold it: parameters, answer, mistakes' ranges."""
     page = fill_view(compiled, v, digits)
     d = digits if digits is not None else compiled.problem.digits
     right = asked_answer(result, answers(compiled, v, digits)[result], d)
-    ranges = mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []
+    ranges = mistake_ranges(right, model.wrong(v, right, digits))
     # each varied given's number (the file's units, angles in degrees), for a course's own use
     params: dict = {name: given["value"] for name, given in given_values(compiled, v).items()}
     params["derive_statement"] = statement_html(page)

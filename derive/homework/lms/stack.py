@@ -22,9 +22,9 @@ from decimal import Decimal
 
 from derive.errors import InputError
 from derive.homework.lms.grading import resolve_result
-from derive.homework.lms.markup import clean_xml, esc, result_html, solution_html, statement_html, words
+from derive.homework.lms.markup import esc, result_html, solution_html, statement_html, words
 from derive.homework.lms.mistake_model import MistakeModel
-from derive.homework.lms.moodle import PENALTY, problem_name
+from derive.homework.lms.moodle import PENALTY, problem_name, quiz_element, text_element, xml_document
 from derive.homework.lms.stack_tree import MistakeNode, Tree, build_tree
 from derive.homework.variants import Compiled, Variant, fill_view, setup_figure
 from derive.symbols import latex_name
@@ -170,12 +170,6 @@ class _Question:
         return per_variant([solution_html(p) for p in self.pages])
 
 
-def _text(parent: ET.Element, tag: str, text: str, **attrs: str) -> ET.Element:
-    el = ET.SubElement(parent, tag, attrs)
-    ET.SubElement(el, "text").text = clean_xml(text)
-    return el
-
-
 def _fields(parent: ET.Element, **fields: str) -> None:
     for tag, text in fields.items():
         ET.SubElement(parent, tag).text = text
@@ -184,9 +178,9 @@ def _fields(parent: ET.Element, **fields: str) -> None:
 def _options(q: ET.Element) -> None:
     """The question's options, as STACK's default (``stack_options``) sets them."""
     _fields(q, questionsimplify="1", assumepositive="0", assumereal="0")
-    _text(q, "prtcorrect", "<p>Correct answer, well done.</p>", format="html")
-    _text(q, "prtpartiallycorrect", "<p>Your answer is partially correct.</p>", format="html")
-    _text(q, "prtincorrect", "<p>Incorrect answer.</p>", format="html")
+    text_element(q, "prtcorrect", "<p>Correct answer, well done.</p>", format="html")
+    text_element(q, "prtpartiallycorrect", "<p>Your answer is partially correct.</p>", format="html")
+    text_element(q, "prtincorrect", "<p>Incorrect answer.</p>", format="html")
     _fields(
         q,
         decimals=".",
@@ -233,7 +227,7 @@ def _node(prt: ET.Element, i: int, test: str, tans: str, opt: str, true: tuple[s
     score, note, feedback = true
     _fields(node, name=str(i), description="", answertest=test, sans=INPUT, tans=tans, testoptions=opt, quiet="0")
     _fields(node, truescoremode="=", truescore=score, truepenalty="", truenextnode="-1", trueanswernote=note)
-    _text(node, "truefeedback", feedback, format="html")
+    text_element(node, "truefeedback", feedback, format="html")
     _fields(
         node,
         falsescoremode="=",
@@ -242,7 +236,7 @@ def _node(prt: ET.Element, i: int, test: str, tans: str, opt: str, true: tuple[s
         falsenextnode="-1" if last else str(i + 1),
         falseanswernote=f"{PRT}-{i + 1}-F",
     )
-    _text(node, "falsefeedback", "", format="html")
+    text_element(node, "falsefeedback", "", format="html")
 
 
 def _mistake_feedback(node: MistakeNode, model: MistakeModel) -> str:
@@ -267,19 +261,19 @@ def _mistake_feedback(node: MistakeNode, model: MistakeModel) -> str:
     return out
 
 
-def _prt(q: ET.Element, question: _Question, model: MistakeModel | None) -> None:
+def _prt(q: ET.Element, question: _Question, model: MistakeModel) -> None:
     """The potential response tree: node 1 the right answer at derive's tolerance, then one node per mistake."""
     test = "UnitsAbsolute" if question.stack_unit else "NumAbsolute"
     prt = ET.SubElement(q, "prt")
     _fields(prt, name=PRT, value="1.0000000", autosimplify="1", feedbackstyle="1")
-    _text(prt, "feedbackvariables", "")
+    text_element(prt, "feedbackvariables", "")
     nodes = question.tree.nodes
     symbol = latex_name(question.tree.result)
     unit = "°" if question.unit == "deg" else (f" {question.unit}" if question.unit else "")
     right = escaped(f"<p>Right: \\({symbol}\\) is ") + "{@ds_ans[n1]@}" + escaped(f"{esc(unit)}.</p>")
     _node(prt, 0, test, question.with_unit("dans[n1]"), "dtol[n1]", ("1.0000000", RIGHT_NOTE, right), not nodes)
     for i, node in enumerate(nodes, 1):
-        feedback = _mistake_feedback(node, model) if model is not None else ""
+        feedback = _mistake_feedback(node, model)
         tans, opt = question.with_unit(f"dc{i}[n1]"), f"dh{i}[n1]"
         _node(prt, i, test, tans, opt, ("0.0000000", node.name, feedback), i == len(nodes))
 
@@ -300,21 +294,21 @@ def _qtests(q: ET.Element, question: _Question) -> None:
 
 
 def stack_question(
-    compiled: Compiled, variants: list[Variant], result: str, digits: int | None, model: MistakeModel | None
+    compiled: Compiled, variants: list[Variant], result: str, digits: int | None, model: MistakeModel
 ) -> ET.Element:
     """One ``<question type="stack">`` asking for ``result`` in every variant."""
     tree = build_tree(compiled, variants, result, digits, model)
     question = _Question(compiled, variants, tree, digits)
     q = ET.Element("question", {"type": "stack"})
-    _text(q, "name", f"{compiled.problem.title} ({result})")
-    _text(q, "questiontext", question.question_text(), format="html")
-    _text(q, "generalfeedback", question.general_feedback(), format="html")
+    text_element(q, "name", f"{compiled.problem.title} ({result})")
+    text_element(q, "questiontext", question.question_text(), format="html")
+    text_element(q, "generalfeedback", question.general_feedback(), format="html")
     _fields(q, defaultgrade="1", penalty=PENALTY, hidden="0", idnumber="")
-    _text(q, "stackversion", STACK_VERSION)
-    _text(q, "questionvariables", question.variables())
-    _text(q, "specificfeedback", f"[[feedback:{PRT}]]", format="html")
-    _text(q, "questionnote", "{@dnote[n1]@}", format="html")
-    _text(
+    text_element(q, "stackversion", STACK_VERSION)
+    text_element(q, "questionvariables", question.variables())
+    text_element(q, "specificfeedback", f"[[feedback:{PRT}]]", format="html")
+    text_element(q, "questionnote", "{@dnote[n1]@}", format="html")
+    text_element(
         q,
         "questiondescription",
         escaped(f"<p>Written by derive from {words(problem_name(compiled))}.</p>"),
@@ -350,25 +344,15 @@ def stack_xml(
     *,
     result: str | None = None,
     digits: int | None = None,
-    category: str | None = None,
     model: MistakeModel | None = None,
-    with_mistakes: bool = True,
 ) -> str:
     """The variants as Moodle XML for STACK: a category, then one STACK question per asked
     result (``result``, else each of the problem's ``find`` results with a number)."""
     if not 1 <= len(variants) <= MAX_COUNT:
         raise ValueError(f"a STACK question holds 1 to {MAX_COUNT} variants, not {len(variants)}")
     results = stack_results(compiled, variants, result, digits)
-    if not with_mistakes:
-        model = None
-    elif model is None:
-        model = MistakeModel(compiled)
-    name = problem_name(compiled)
-    quiz = ET.Element("quiz")
-    cat = ET.SubElement(quiz, "question", {"type": "category"})
-    _text(cat, "category", category or f"$course$/derive/{name}")
-    _text(cat, "info", f"<p>{words(compiled.problem.title)}: STACK questions by derive.</p>", format="html")
+    model = MistakeModel(compiled) if model is None else model
+    quiz = quiz_element(compiled, None, "STACK questions by derive.")
     for r in results:
         quiz.append(stack_question(compiled, variants, r, digits, model))
-    ET.indent(quiz, space="  ")
-    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(quiz, encoding="unicode") + "\n"
+    return xml_document(quiz)

@@ -82,18 +82,18 @@ def _spans(right: Answer, wrongs: list[Wrong]) -> list[tuple[Wrong, Decimal, Dec
 
 
 def build_tree(
-    compiled: Compiled, variants: list[Variant], result: str, digits: int | None, model: MistakeModel | None
+    compiled: Compiled, variants: list[Variant], result: str, digits: int | None, model: MistakeModel
 ) -> Tree:
-    """The right answers and mistake nodes of ``result`` over ``variants`` (``model`` None: no mistakes)."""
+    """The right answers and mistake nodes of ``result`` over ``variants``."""
     d = digits if digits is not None else compiled.problem.digits
-    order = list(model.registry) if model is not None else []
+    order = list(model.registry)
     rights: list[Answer] = []
     held: list[dict[str, Span]] = []
     for v in variants:
         right = asked_answer(result, answers(compiled, v, digits)[result], d)
         rights.append(right)
         spans: dict[str, Span] = {}
-        for w, low, high in _spans(right, model.wrong(v, right, digits)) if model is not None else []:
+        for w, low, high in _spans(right, model.wrong(v, right, digits)):
             holder = min(w.mistakes, key=order.index)
             spans[holder] = Span((low + high) / 2, (high - low) / 2, w.shown, w.mistakes)
         held.append(spans)
@@ -104,5 +104,5 @@ def build_tree(
         row = tuple(
             spans.get(name) or Span(right.value, Decimal(0), "", ()) for spans, right in zip(held, rights, strict=True)
         )
-        nodes.append(MistakeNode(name, model.registry[name].description, row))  # type: ignore[union-attr]
+        nodes.append(MistakeNode(name, model.registry[name].description, row))
     return Tree(result, tuple(rights), tuple(nodes))

@@ -13,27 +13,22 @@ draw), ``draw`` draws the variants, ``fill`` writes a variant's pages, key and d
 
 from __future__ import annotations
 
-from derive.homework.variants.compile import Compiled, compile_problem, written_value
-from derive.homework.variants.draw import GIVE_UP_AFTER, MAX_ATTEMPTS_PER_VARIANT, MAX_COUNT, draw
+from derive.homework.variants.compile import Compiled, compile_problem
+from derive.homework.variants.draw import MAX_COUNT, draw
 from derive.homework.variants.fill import (
     answers,
     fill,
     fill_view,
     given_values,
-    iterate,
     setup_figure,
     sheet,
     sign_convention,
-    variant_html,
 )
 from derive.homework.variants.record import Variant
-from derive.homework.variants.write import OWNED, write_variants
+from derive.homework.variants.write import write_variants
 
 __all__ = [
-    "GIVE_UP_AFTER",
-    "MAX_ATTEMPTS_PER_VARIANT",
     "MAX_COUNT",
-    "OWNED",
     "Compiled",
     "Variant",
     "answers",
@@ -42,11 +37,8 @@ __all__ = [
     "fill",
     "fill_view",
     "given_values",
-    "iterate",
     "setup_figure",
     "sheet",
     "sign_convention",
-    "variant_html",
     "write_variants",
-    "written_value",
 ]

@@ -94,11 +94,9 @@ class Compiled:
         return True
 
 
-def compile_problem(problem: Problem | ChainProblem, digits: int | None = None, fmt: str = "md") -> Compiled:
-    """``problem`` made ready for its variants (``digits`` and ``fmt`` are the writers' business:
-    kept for callers of the older engine). Every value of ``[vary]`` is checked to be writable
-    in the file."""
-    del digits, fmt
+def compile_problem(problem: Problem | ChainProblem) -> Compiled:
+    """``problem`` made ready for its variants (figures and format are the writers' business).
+    Every value of ``[vary]`` is checked to be writable in the file."""
     from derive.steps import solve
 
     if not problem.vary:

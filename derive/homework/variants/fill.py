@@ -3,7 +3,6 @@ in, :meth:`Compiled.solved`) through the writers every page goes through."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import Any
 
 import sympy
@@ -95,14 +94,6 @@ def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
     data = problem_view(solve(compiled.problem), figures=False)  # the file's own numbers
     text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
     return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in data["convention"])
-
-
-def iterate(
-    compiled: Compiled, variants: list[Variant], fmt: str = "md", digits: int | None = None
-) -> Iterator[tuple[Variant, str]]:
-    """Each variant with its page, one at a time (nothing kept in memory)."""
-    for v in variants:
-        yield v, fill(compiled, v, fmt, digits)
 
 
 def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:

@@ -27,14 +27,13 @@ class Definition:
 class Condition:
     """``lhs = rhs`` fixing the unknown ``given``: ``in_unknown`` is lhs in the unknown
     (with every number known so far), ``root`` its one admissible value out of
-    ``roots`` found; ``same_unit`` whether lhs has the unknown's unit; ``updated`` the
+    ``roots`` found; ``updated`` the
     earlier quantities that depended on the unknown, each with its number now."""
 
     lhs: sympy.Expr
     rhs: sympy.Expr
     given: Given
     root: sympy.Expr
-    same_unit: bool
     in_unknown: sympy.Expr | None = None
     roots: int = 1
     lhs_unit: str | None = None
@@ -93,9 +92,7 @@ def solve(state: ChainState, i: int, st: dict) -> StageOutcome:
     g = state.known[u.name]
     system = units.SYSTEMS[state.chain.system]
     lhs_unit = units.working_unit(lhs.dim, state.chain.system).text if lhs.dim in system else None
-    data = Condition(
-        lhs.expr, rhs_expr, g, roots[0], lhs.dim == g.dim, in_unknown, len(found), lhs_unit, tuple(updated)
-    )
+    data = Condition(lhs.expr, rhs_expr, g, roots[0], in_unknown, len(found), lhs_unit, tuple(updated))
     return StageOutcome(i, "solve", f"Solve for {u.name}", data, (u.name,))
 
 

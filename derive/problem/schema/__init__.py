@@ -9,42 +9,28 @@ editors use (``docs/derive-problem.schema.json``) from them. Pure Python: no Sym
 """
 
 from derive.problem.schema.answers import ANSWERS
-from derive.problem.schema.base import MAGNITUDE, MAX_LINE, MAX_TEXT, NAME_PATTERN, TYPES, Field, Table
-from derive.problem.schema.chain import CHAIN, RESULTS, STAGE, STAGES
+from derive.problem.schema.base import MAGNITUDE, NAME_PATTERN, TYPES, Field, Table
+from derive.problem.schema.chain import CHAIN, STAGES
 from derive.problem.schema.problem import (
-    ANSWER_UNITS,
-    ASSUME,
     ASSUMPTIONS,
     BODY,
     GEOMETRY,
-    GIVEN,
-    IMPACT_FIELDS,
     PROBLEM,
     RANGE,
-    VARY,
 )
 
 __all__ = [
     "ANSWERS",
-    "ANSWER_UNITS",
-    "ASSUME",
     "ASSUMPTIONS",
     "BODY",
     "CHAIN",
     "GEOMETRY",
-    "GIVEN",
-    "IMPACT_FIELDS",
     "MAGNITUDE",
-    "MAX_LINE",
-    "MAX_TEXT",
     "NAME_PATTERN",
     "PROBLEM",
     "RANGE",
-    "RESULTS",
-    "STAGE",
     "STAGES",
     "TYPES",
-    "VARY",
     "Field",
     "Table",
 ]

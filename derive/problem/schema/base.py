@@ -24,6 +24,7 @@ TYPES = {
     "tolerance": 'a relative tolerance: a number such as 0.01, or text such as "1%"',
 }
 NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]{0,31}$"
+BAD_NAME = "is not a usable name: start with a letter; letters, digits and _ only"  # what an error says of a name not like that
 MAX_TEXT = 5000
 MAX_LINE = 40
 MAGNITUDE = (1e-30, 1e30)  # a number's magnitude, when not 0
@@ -73,7 +74,6 @@ class Table:
     fields: tuple[Field, ...] = ()
     keys: Field | None = None
     key_pattern: str | None = None
-    key_words: str = ""
     max_keys: int | None = None
     forms: tuple[tuple[str, ...], ...] = field(default=())  # exactly one of these sets of fields (vary)
     by: str = ""  # the field whose value picks the table in ``cases`` (a stage's type)

@@ -33,7 +33,6 @@ RESULTS = Table(
     'the impact\'s results under new names: { v_A2 = "u" }',
     keys=Field("new", "name", "the new name"),
     key_pattern=NAME_PATTERN,
-    key_words="a result of the impact",
     max_keys=30,
 )
 

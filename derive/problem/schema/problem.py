@@ -20,7 +20,6 @@ ASSUME = Table(
     'what a letter of [given] is: { alpha = "acute" } (letters are positive unless it says otherwise)',
     keys=Field("assumption", "choice", "what the letter is", choices=tuple(ASSUMPTIONS)),
     key_pattern=NAME_PATTERN,
-    key_words="a given kept as a letter",
     max_keys=60,
 )
 AXES = ("+n", "-n", "+t", "-t", "+x", "-x", "+y", "-y")
@@ -29,7 +28,6 @@ GIVEN = Table(
     "the data: each entry a name and a value",
     keys=VALUE,
     key_pattern=NAME_PATTERN,
-    key_words="a name: a letter, then letters, digits and _",
     max_keys=60,
 )
 BODY = Table(
@@ -92,7 +90,6 @@ VARY = Table(
         expected="{ min = ..., max = ..., step = ... } or { choices = [...] }",
     ),
     key_pattern=NAME_PATTERN,
-    key_words="the name of a given",
     max_keys=60,
 )
 ANSWER_UNITS = Table(
@@ -100,7 +97,6 @@ ANSWER_UNITS = Table(
     'results to show also in another unit: { v_A2 = "km/h" }',
     keys=Field("unit", "unit", "the unit", expected="a unit as text", max_length=40),
     key_pattern=NAME_PATTERN,
-    key_words="a result's name",
     max_keys=60,
 )
 FIND = Field(
@@ -216,7 +212,6 @@ ASKS = (
             "quantities from the results",
             keys=Field("definition", "text", "an expression of the givens and results", max_length=500),
             key_pattern=NAME_PATTERN,
-            key_words="a new name",
             max_keys=20,
         ),
     ),
@@ -235,7 +230,6 @@ ASKS = (
                 expected="a number with its unit or an expression",
             ),
             key_pattern=NAME_PATTERN,
-            key_words="a result or given",
             max_keys=40,
         ),
     ),

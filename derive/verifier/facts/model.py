@@ -21,14 +21,15 @@ import sympy
 from derive.verifier import units
 from derive.verifier.evaluate import CTX
 
-#: What a name is on the page: a datum, a letter kept symbolic, a quantity the
-#: equations determine (free when an elimination is checked), or one computed from those.
-ROLES = ("given", "param", "unknown", "result")
-
 
 @dataclass(frozen=True)
 class Quantity:
-    """One name: its value (radians for angles; None when it has none), dimension and role."""
+    """One name: its value (radians for angles; None when it has none), dimension and role.
+
+    The role says what the name is on the page: "given" (a datum), "param" (a letter kept
+    symbolic), "unknown" (a quantity the equations determine, free when an elimination is
+    checked) or "result" (one computed from those).
+    """
 
     name: str
     value: object | None

@@ -157,7 +157,7 @@ def impact(
     post = after(data)
     if inverse:
         post = _inverse_post(table, solution, data, post, oblique)
-        notes += _check_residuals(table, data, post, label)
+        notes += _check_residuals(data, post, label)
     _put_components(table, data, post, oblique)
     phi = table.exprs.get("phi") if getattr(problem, "phi", None) is not None else None
     for name, expr in derived(data, post, phi).items():
@@ -224,7 +224,7 @@ def _inverse_post(table: Table, solution: object, data: Before, post: dict, obli
     return out
 
 
-def _check_residuals(table: Table, data: Before, post: dict, label: str) -> list[str]:
+def _check_residuals(data: Before, post: dict, label: str) -> list[str]:
     notes = []
     for k, res in residuals(data, post).items():
         x = number(res, {})

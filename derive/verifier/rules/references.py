@@ -222,13 +222,13 @@ class _Operation:
         self.free |= {n for alt in self.alternatives for n in self.judge.names(alt) if n in unknowns}
         return self.alternatives[0]
 
-    def point(self, k: int, bump: str | None = None) -> dict[str, object]:
+    def point(self, k: int) -> dict[str, object]:
         out = {}
         for i, name in enumerate(sorted(self.free)):
             q = self.judge.quantity(name, self.scopes)
             base = q.value if q is not None and q.value is not None else CTX.mpf(1)
             scale = max(CTX.mpf(1), abs(base))
-            out[name] = base + STEPS[(k + i) % len(STEPS)] * scale + (scale if name == bump else 0)
+            out[name] = base + STEPS[(k + i) % len(STEPS)] * scale
         return out
 
     def value(self, tree: object, point: dict[str, object]) -> Value:

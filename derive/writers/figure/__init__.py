@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from derive.steps.model import Solution
 from derive.writers.figure.frame import chain_falls
-from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Guide, Label, Surface
+from derive.writers.figure.model import Arc, Arrow, Axis, Body, Figure, Surface
 from derive.writers.figure.scene import describe
 from derive.writers.figure.svg import to_svg
 from derive.writers.figure.tikz import to_tikz
@@ -41,8 +41,6 @@ __all__ = [
     "Axis",
     "Body",
     "Figure",
-    "Guide",
-    "Label",
     "Surface",
     "chain_falls",
     "describe",

@@ -46,19 +46,11 @@ def plot_svg(problem: Problem) -> str:
     return to_svg(chart(problem))
 
 
-def plot_tikz(problem: Problem) -> str:
-    """The plot as a tikzpicture."""
-    return to_tikz(chart(problem))
-
-
 __all__ = [
-    "Chart",
     "Curves",
     "chart",
     "curves",
-    "layout",
     "plot_svg",
-    "plot_tikz",
     "to_pdf",
     "to_png",
     "to_svg",

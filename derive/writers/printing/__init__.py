@@ -13,22 +13,14 @@ from __future__ import annotations
 from derive.writers.printing.expressions import (
     latex_expr,
     latex_inline,
-    latex_side,
-    latex_terms,
-    side_terms,
-    values_map,
 )
 from derive.writers.printing.numerals import (
     adds_up,
     exact_latex,
-    number_latex,
-    power_latex,
-    printed_number,
 )
-from derive.writers.printing.printer import StepPrinter, is_negative_term, join_terms, negate, substitute
+from derive.writers.printing.printer import StepPrinter
 from derive.writers.printing.rows import IMPLIES, Row, block_style, latex_eqn, latex_rows
 from derive.writers.printing.style import Style
-from derive.writers.printing.units import unit_latex
 
 __all__ = [
     "IMPLIES",
@@ -38,20 +30,8 @@ __all__ = [
     "adds_up",
     "block_style",
     "exact_latex",
-    "is_negative_term",
-    "join_terms",
     "latex_eqn",
     "latex_expr",
     "latex_inline",
     "latex_rows",
-    "latex_side",
-    "latex_terms",
-    "negate",
-    "number_latex",
-    "power_latex",
-    "printed_number",
-    "side_terms",
-    "substitute",
-    "unit_latex",
-    "values_map",
 ]

@@ -14,7 +14,7 @@ from derive.numbers import (
 )
 from derive.steps.model import Side
 from derive.writers.printing.numerals import exact_latex
-from derive.writers.printing.printer import StepPrinter, is_negative_term, join_terms, negate, substitute
+from derive.writers.printing.printer import StepPrinter, is_negative_term, negate, substitute
 from derive.writers.printing.style import Style
 
 
@@ -311,11 +311,6 @@ def _one_kind_of_number(side: Side, style: Style) -> tuple[sympy.Expr, ...]:
             t = sympy.Float(coeff.evalf(PRECISION), PRECISION) * rest
         out.append(t)
     return tuple(out)
-
-
-def latex_side(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Symbol]) -> str:
-    """A side of an equation: its terms joined with their signs, in order."""
-    return join_terms(side_terms(side, style, extra, cancel))
 
 
 def latex_inline(expr: sympy.Basic, style: Style) -> str:

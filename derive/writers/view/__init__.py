@@ -19,24 +19,17 @@ from derive.numbers import format_number
 from derive.problem.units import plain_unit
 from derive.steps.model import Solution
 from derive.writers.targets import FRAGMENT_PACKAGES, GITHUB, HTML, TEX_DOCUMENT, TEX_FRAGMENT, Layout, markdown_target
-from derive.writers.view.givens import letter_units, source_parts, worked_out
+from derive.writers.view.givens import source_parts
 from derive.writers.view.json import to_json
-from derive.writers.view.lines import ANSWER_MARK, blocks_view, line_view
 from derive.writers.view.page import problem_view, view
-from derive.writers.view.problem import convention, figure_entry, figure_note, student_sheet
+from derive.writers.view.problem import student_sheet
 
 __all__ = [
-    "ANSWER_MARK",
     "FORMATS",
     "WRITERS",
-    "blocks_view",
     "boxed_lines",
-    "convention",
+    "check_digits",
     "environment",
-    "figure_entry",
-    "figure_note",
-    "letter_units",
-    "line_view",
     "markdown",
     "plain_answers",
     "problem_view",
@@ -44,9 +37,7 @@ __all__ = [
     "source_parts",
     "student_page",
     "student_sheet",
-    "to_json",
     "view",
-    "worked_out",
 ]
 
 FORMATS = ("md", "tex", "tex-fragment", "html", "json")
@@ -89,6 +80,12 @@ WRITERS: dict[str, Writer] = {
 }
 
 
+def check_digits(digits: object) -> None:
+    """Refuses (as ``--digits``) significant figures that are not a whole number from 1 to 10."""
+    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
+        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+
+
 def render(
     solution: Solution,
     fmt: str = "md",
@@ -111,8 +108,7 @@ def render(
     ``heading_level``. For a PDF see :func:`derive.writers.pdf.build_pdf`, for Word
     :func:`derive.writers.docx.build_docx`; ``plot`` adds the plot of the outcome against e after the answer.
     """
-    if digits is not None and not (isinstance(digits, int) and 1 <= digits <= 10):
-        raise InputError("expected a whole number of significant figures from 1 to 10", field="--digits")
+    check_digits(digits)
     _headings(heading_level, title)
     writer = WRITERS.get(fmt)
     if writer is None:
