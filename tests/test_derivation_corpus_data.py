@@ -1186,3 +1186,149 @@ def test_the_q_batch_closed_forms_given_the_slip(name: str) -> None:
 def test_every_q_slip_case_has_its_slip_worked() -> None:
     slipped = {c.name for c in CASES if c.name.startswith("q") and c.verdict.slip_values}
     assert slipped == set(Q_SLIPPED) | set(Q_SLIPPED_SYMBOLIC)
+
+
+# ---- the w batch ----
+# A fourth held-out batch: the true values from the givens and the course notes' (1)-(4),
+# with alpha taken at a point (_ALPHA) where a problem keeps it as a letter; u stands for the
+# problem's speed letter (U, v_A1) and e for its coefficient (e_1).
+
+_FUNCTIONS.setdefault("atan", math.atan)
+
+
+def _w_m4_2005(u: float, e: float) -> dict:
+    """Identical spheres, P at rest, Q at alpha to the line of centres."""
+    a_n, a_t = u * math.cos(_ALPHA), u * math.sin(_ALPHA)
+    v_an, v_bn = _direct(1.0, 1.0, e, a_n, 0.0)
+    return {"v_A2t": a_t, "v_A2n": v_an, "v_B2": abs(v_bn), "beta_A2": math.atan2(a_t, v_an)}
+
+
+def _w_offset(u: float, _e: float) -> dict:
+    """Equal spheres, A's path r from B's centre: the line of centres at asin(r/2r) to the path; e = 1/2."""
+    e = _number(_given_text("ocr-mei-fmm-2022-offset-spheres-symbolic")["e"])
+    phi = math.asin(1 / 2)
+    v_an, v_bn = _direct(1.0, 1.0, e, u * math.cos(phi), 0.0)
+    return {"v_A2n": v_an, "v_B2": abs(v_bn), "v_A2": math.hypot(v_an, u * math.sin(phi))}
+
+
+def _given_text(problem: str) -> dict:
+    with (PROBLEMS / f"{problem}.toml").open("rb") as handle:
+        return tomllib.load(handle)["given"]
+
+
+def _w_cushion(u: float, e: float) -> dict:
+    """A cushion at alpha to the path: the component along it kept, the normal one reversed and scaled by e."""
+    along, normal = u * math.cos(_ALPHA), -u * math.sin(_ALPHA)
+    after = -e * normal
+    return {"beta": math.atan2(after, along), "T_lost": 0.5 * (normal**2 - after**2)}
+
+
+def _w_deflection(u: float, e: float, nel_sign: float = 1.0) -> dict:
+    """Identical spheres, B at rest, the line of centres at 30 deg to A's path; the angle A turns through."""
+    a_n, a_t = u * math.cos(math.radians(30)), u * math.sin(math.radians(30))
+    v_an = _direct(1.0, 1.0, nel_sign * e, a_n, 0.0)[0]
+    return {"v_A2n": v_an, "deflection": math.atan2(a_t, v_an) - math.radians(30)}
+
+
+SYMBOLIC.update(
+    {
+        "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": _w_m4_2005,
+        "ocr-mei-fmm-2022-offset-spheres-symbolic": _w_offset,
+        "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta": _w_cushion,
+        "edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg": _w_deflection,
+    }
+)
+LETTERS.update(
+    {
+        "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta": lambda _u: {"alpha": _ALPHA},
+        "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta": lambda _u: {"alpha": _ALPHA},
+    }
+)
+NUMERIC["ocr-m2-2006-sphere-hits-sphere-at-rest-find-e"] = _find_e_energy  # w05 also records the energy lost
+
+
+def _w_slip_w07(g: dict) -> dict:  # A's tangential component multiplied by e
+    v_t = g["e"] * g["v_A1t"]
+    return {"v_A2t": v_t, "v_A2": math.hypot(_ocr_m3_2006(g)["v_A2n"], v_t)}
+
+
+def _w_slip_w08(g: dict) -> dict:  # cos 30 worked in radians for the n component (sin 30 = 1/2 kept)
+    u_n = g["v_A1"] * math.cos(30.0)
+    v_an, v_bn = _direct(1.0, 1.0, g["e"], u_n, 0.0)
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2": math.hypot(v_an, g["v_A1"] / 2), "J_n": g["W_B"] / 32.2 * v_bn}
+
+
+def _w_slip_w09(g: dict) -> dict:  # B's velocity before taken +1.5 in momentum
+    return {"m_A": g["m_B"] * (g["v_B2"] + g["v_B1"]) / (g["v_A1"] - g["v_A2"])}
+
+
+def _w_slip_w11(g: dict) -> dict:  # B's component along the line after taken as (across) tan(90 - alpha)
+    b_n, b_t = -g["u_B"] * math.cos(math.radians(g["alpha"])), g["u_B"] * math.sin(math.radians(g["alpha"]))
+    v_bn = b_t * math.tan(math.radians(90 - g["alpha"]))
+    v_an = g["v_A1n"] + b_n - v_bn
+    return {"v_B2": math.hypot(v_bn, b_t), "v_A2n": v_an, "e": (v_bn - v_an) / (g["v_A1n"] - b_n)}
+
+
+def _w_slip_w12(g: dict) -> dict:  # A's velocity after taken +0.2; then 1/2 m (u - v)^2 for each sphere
+    v_a = -g["v_A2"]
+    v_b = (g["m_A"] * g["v_A1"] + g["m_B"] * g["v_B1"] - g["m_A"] * v_a) / g["m_B"]
+    lost = 0.5 * g["m_A"] * (g["v_A1"] - v_a) ** 2 + 0.5 * g["m_B"] * (v_b - g["v_B1"]) ** 2
+    return {"v_B2": v_b, "e": (v_b - v_a) / (g["v_A1"] - g["v_B1"]), "T_lost": lost}
+
+
+def _w_slip_w15(g: dict) -> dict:  # the skid 2.7 m copied as 7.2 m
+    return _car_suv(g | {"d_skid": 7.2})
+
+
+W_SLIPPED = {
+    "w07-ocr-m3-2006-e-on-tangent.md": _w_slip_w07,
+    "w08-glancing-disks-radian-mode.tex": _w_slip_w08,
+    "w09-ocr-2011-find-mass-b-sign.txt": _w_slip_w09,
+    "w11-ocr-m3-2013-right-angle-other-axis.tex": _w_slip_w11,
+    "w12-mei-2023-backward-two-slips.md": _w_slip_w12,
+    "w15-chain-car-suv-skid-copied.txt": _w_slip_w15,
+}
+
+
+def _w_slip_w10(u: float, e: float) -> dict:  # v = 3eu - w for v = w - 3eu
+    w = _edexcel_2015(u, e)["v_B2"]
+    return {"v_A2": 3 * e * u - w}
+
+
+def _w_slip_w13(u: float, _e: float) -> dict:  # 2u = x + 2y (the masses exchanged), and e = 1/2 for 1/3
+    x = (2 * u - 2 * u / 2) / 3
+    return {"v_A2": x, "v_B2": x + u / 2}
+
+
+W_SLIPPED_SYMBOLIC = {
+    "w06-m4-deflection-30deg-nel-reversed.txt": lambda u, e: _w_deflection(u, e, nel_sign=-1.0),
+    "w10-edexcel-2015-p-reverses-algebra.md": _w_slip_w10,
+    "w13-edexcel-2003-two-slips.txt": _w_slip_w13,
+}
+
+
+@pytest.mark.parametrize("name", sorted(W_SLIPPED))
+def test_the_w_batch_values_given_the_slip(name: str) -> None:
+    case = next(c for c in CASES if c.name == name)
+    worked = W_SLIPPED[name](_given(case.verdict.problem))
+    assert case.verdict.slip_values
+    for key, value in case.verdict.slip_values.items():
+        assert key in worked, f"{name}: {key} is not worked here"
+        assert value == pytest.approx(worked[key], rel=6e-3, abs=6e-3), f"{name}: {key}"
+
+
+@pytest.mark.parametrize("name", sorted(W_SLIPPED_SYMBOLIC))
+def test_the_w_batch_closed_forms_given_the_slip(name: str) -> None:
+    case = next(c for c in CASES if c.name == name)
+    letters = LETTERS.get(case.verdict.problem, lambda _u: {})
+    assert case.verdict.slip_values
+    for u, e in ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9)):
+        worked = W_SLIPPED_SYMBOLIC[name](u, e)
+        for key, formula in case.verdict.slip_values.items():
+            assert _formula(str(formula), u, e, letters(u)) == pytest.approx(worked[key], rel=1e-5), f"{name}: {key}"
+
+
+def test_every_w_slip_case_has_its_slip_worked() -> None:
+    slipped = {c.name for c in CASES if c.name.startswith("w") and c.verdict.slip_values}
+    assert slipped == set(W_SLIPPED) | set(W_SLIPPED_SYMBOLIC)
+    assert len([c for c in CASES if c.name.startswith("w")]) == 15
