@@ -15,6 +15,10 @@ _DROP = re.compile(
 )
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
+#: A unit as a fraction of two texts (``\\frac{\\text{m}}{\\text{s}}``).
+_FRAC_UNIT = re.compile(
+    r"\\[dt]?frac\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}"
+)
 _TEXT_UNIT = re.compile(rf"({_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*)()(?!\s*_)")
 #: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
 REJECTED = re.compile(
@@ -102,6 +106,7 @@ def latex_to_plain(tex: str) -> str:
     """
     s = re.sub(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))", "", tex)  # 45\,000: a thousands space
     s = re.sub(r"\\tag\*?\{([^{}]*)\}", r" (\1)", s)
+    s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
     s = re.sub(r"\\(?:text|textrm|mbox|textit|mathrm)\s*\{([^{}]*)\}", _text, s)
     s = re.sub(r"\\(?:underbrace|overbrace)(\{(?:[^{}]|\{[^{}]*\})*\})(?:[_^]\{(?:[^{}]|\{[^{}]*\})*\})?", r"\1", s)
@@ -131,9 +136,22 @@ def _unit_text(m: re.Match) -> str:
     of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
     text = m.group(1) + (m.group(2) or "")
     if not is_unit(text):
-        return m.group(0)
+        head = _unit_head(text)  # "\text{m s}^{-1} \text{ just before it hits}": the unit, then words
+        return m.group(0) if head is None else _unit_text(_ONE_RUN.match(head)) + " " + text[len(head) :]
     plain = plain_unit(text)
     return f" {plain} " if plain in SCALED or plain.startswith("km") else " "
+
+
+_ONE_RUN = re.compile(r"(.*)()", re.S)
+
+
+def _unit_head(text: str) -> str | None:
+    """The longest run of ``\\text{…}`` pieces at the start of ``text`` that is a unit, or None."""
+    ends = [m.end() for m in re.finditer(_ONE_TEXT, text)]
+    for end in reversed(ends[:-1]):
+        if is_unit(text[:end]):
+            return text[:end]
+    return None
 
 
 def _unit_vectors(s: str) -> str:
