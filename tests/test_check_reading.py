@@ -672,6 +672,8 @@ def test_an_equations_tag_after_it_in_any_form(text: str, tag: str) -> None:
         # a root rejected in words, to the end of its sentence
         ("if v = 7u/4 then w = 2u - 7u/4 = u/4 < v, not possible", []),
         ("v = 2u would mean B is slower than A, which can't happen. So v = u", [("v", "u")]),
+        ("Since e cannot be negative, e = 0.5", [("e", "0.5")]),  # what follows the words stands
+        ("v = 7u/4 is impossible as w < v, so v = u/2", [("v", "u/2")]),
         # a goal is not a claim
         ("Q3 - show that v = u(1 + e)/2", []),
         ("Hence show e = 1/2. Then v = 3", [("v", "3")]),
@@ -743,7 +745,7 @@ def test_students_notation_as_a_teacher_reads_it(typed: str, read: str) -> None:
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        ("Energy lost, using ΔT = ½ m u² (1 − e²):", [("ΔT", "½ m u² (1 − e²)")]),
+        ("Energy lost, using ΔT = ½ m u² (1 − e²):", [("Delta T", "½ m u² (1 − e²)")]),
         ("Using NEL, v_B - v_A = 2", [("v_B - v_A", "2")]),
         ("(that's 0.25/0.50 = 50% lost, i.e. 50% kept)", [("0.25/0.50", "50%")]),
         ("I = 0.5 * 4.2 = 2.1 lb.s", [("I", "0.5 * 4.2", "2.1")]),
@@ -753,3 +755,47 @@ def test_students_notation_as_a_teacher_reads_it(typed: str, read: str) -> None:
 )
 def test_lead_in_clauses_percentages_and_impulse_units(text: str, expected: list) -> None:
     assert sides(text) == expected
+
+
+# OCR M2 June 2012 Q1 (0.8 kg at 4 m/s into a wall, e = 0.3): KE lost = ½(0.8)(16)(1 - 0.09) = 5.824 J
+# (mark scheme 5.82 J), by the general formula in the problem's letters.
+def test_a_general_formula_line_in_the_problems_letters_is_judged() -> None:
+    work = "m = 0.8, u = 4, e = 0.3\nEnergy lost, using ΔKE = ½ m u² (1 − e²):\nΔKE = 6.4 × (1 − 0.09) = 5.824 J\n"
+    r = report("ocr-m2-2012-particle-hits-wall", work)
+    assert {i.name: i.status for i in r.items}.get("2") == "correct", r.text()
+    assert {i.name: i.status for i in r.items}.get("3") == "correct", r.text()
+
+
+def test_markdown_code_marks_a_blockquote_and_latex_intertext_are_layout() -> None:
+    assert sides("`v_B = 2.4`\n> v_A = -1.04\n") == [("v_B", "2.4"), ("v_A", "-1.04")]
+    text = "\\begin{align*}\na &= 2 \\\\\n\\intertext{so}\nb &= 3\n\\end{align*}"
+    assert [(r.line, r.sides) for r in read_relations(text)] == [(2, ("a", "2")), (4, ("b", "3"))]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("v = 3.46 (3 s.f.)", [("v", "3.46")]),
+        ("e = 0.8 (to 1 d.p.)", [("e", "0.8")]),
+        ("v = 3.464 m/s (3sf)", [("v", "3.464")]),
+        ("v = 2 m/s (2 d.p.) <- answer", [("v", "2")]),
+        ("x = 3 (from (1))", [("x", "3")]),
+        ("(a) v = 3", [("v", "3")]),
+        ("(ii) v = 3", [("v", "3")]),
+        ("b) v = 3", [("v", "3")]),
+        ("Q1(b): e = 0.5", [("e", "0.5")]),
+        ("So, v = 3.", [("v", "3")]),
+        (r"$v_A = \SI{3}{\metre\per\second}$", [("v_A", "3")]),
+        (r"$v = \qty{3.5}{m/s}$", [("v", "3.5")]),
+        # what stays: a rejected root, a direction, a product
+        ("x = 5u/6 (rejected)", []),
+        ("x = 2(a + b)", [("x", "2(a + b)")]),
+    ],
+)
+def test_figures_part_labels_pointers_and_siunitx(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_a_direction_in_brackets_after_a_note_is_kept() -> None:
+    (r,) = read_relations("v = 4 ms^-1 (to the left)")
+    assert r.sides == ("v", "4") and r.direction == -1

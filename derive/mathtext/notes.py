@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.latex import REJECTED
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.parser import GREEK
 from derive.mathtext.units import is_unit
@@ -51,15 +52,20 @@ _GOAL = re.compile(r"\b(?:show|prove|verify|deduce)\s+(?:that\s+)?(?=[^=]*=)", r
 _SENTENCE_END = re.compile(r"(?<=[\w)°²³])\.(?=\s+[A-Z(])|;")
 
 
+#: Markdown's inline code marks and a blockquote's mark at the start of a line.
+_CODE_QUOTE = re.compile(r"`+|^\s*>+(?=\s)")
+
+
 def unbold(text: str) -> str:
-    """``text`` without Markdown's bold and italics around words (``**momentum:**``)."""
-    return _BOLD.sub(r"\2", text)
+    """``text`` without Markdown's layout: bold and italics around words (``**momentum:**``),
+    inline code marks (```v_B = 2.4```), a blockquote's ``>``."""
+    return _CODE_QUOTE.sub(" ", _BOLD.sub(r"\2", text))
 
 
 def unmarked(text: str) -> str:
     """``text`` without what a teacher does not mark: struck-out working, what a withdrawal note
     withdraws (all before it; the line after ``no wait,`` is kept), a case rejected in words
-    and a goal to be shown (each to the end of its sentence)."""
+    (what comes before it in its sentence) and a goal to be shown (to the end of its sentence)."""
     text = _STRUCK.sub(" ", text)
     m = next(reversed(list(_WITHDRAWN.finditer(text))), None)  # the last: what comes after it stands
     if m is not None:
@@ -69,8 +75,10 @@ def unmarked(text: str) -> str:
         for m in reversed(list(pattern.finditer(text))):
             if _in_brackets(text, m.start()):
                 continue  # "x = 3 (rejected)": the reader turns that relation down itself
-            start = _sentence_start(text, m.start()) if whole else m.start()
-            end = _sentence_end(text, m.end())
+            # a rejection turns down what comes before it in its sentence; a goal runs to the end
+            start, end = (
+                (_sentence_start(text, m.start()), m.end()) if whole else (m.start(), _sentence_end(text, m.end()))
+            )
             text = text[:start] + " " * (end - start) + text[end:]
     return text
 
@@ -116,9 +124,49 @@ _CLAUSE = re.compile(
 )
 
 
+#: A pointer after a relation (``<- answer``, ``← this one``); one that withdraws it is :func:`unmarked`'s.
+_POINTER = re.compile(r"\s*(?:<-+|←|⟵)[^=<>]*$")
+#: The figures it is given to (``(3 s.f.)``, ``(to 1 d.p.)``, ``(3sf)``, ``to 3 sig figs``).
+_FIGURES = re.compile(
+    r"\s*\(?\s*(?:to|correct\s+to|rounded\s+to)?\s*\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?"
+    r"|significant\s+figures?|decimal\s+places?)\s*\)?\s*\.?\s*$",
+    re.I,
+)
+#: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
+_DIRECTION_WORDS = re.compile(r"\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way|up|down)", re.I)
+
+
+def _remark_in_brackets(text: str) -> str:
+    """``text`` without a remark in brackets at its end that starts with a word (``(from (1))``,
+    ``(by CLM)``): brackets nested or not, no ``=`` in it, no direction in it."""
+    if not text.endswith(")"):
+        return text
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += {")": 1, "(": -1}.get(text[i], 0)
+        if depth == 0:
+            inner = text[i + 1 : -1]
+            head = re.match(r"\s*([A-Za-z]{2,})\b", inner)
+            if (
+                i > 0
+                and text[i - 1] == " "
+                and head
+                and head.group(1).lower() not in _MATH
+                and "=" not in inner
+                and not _DIRECTION_WORDS.search(inner)
+                and not REJECTED.search(inner)
+                and not _REJECTS.search(inner)
+            ):
+                return text[:i].rstrip()
+            return text
+    return text
+
+
 def without_note(text: str) -> tuple[str, str]:
     """A relation without the note after it, and its tag where the note is one ("" where none)."""
-    text = _CLAUSE.sub("", _AFTER_TICK.sub("", text.rstrip()))
+    text = _POINTER.sub("", text.rstrip()) if "=" in _POINTER.sub("", text.rstrip()) else text.rstrip()
+    text = _CLAUSE.sub("", _AFTER_TICK.sub("", text))
+    text = _remark_in_brackets(_FIGURES.sub("", text))
     m = _SQUARE.search(text)
     if m and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
         text = text[: m.start()]  # "[w left, 2.9 right]"; "[(delta_0 + x)^2 - delta_0^2]" is mathematics
@@ -156,7 +204,7 @@ _PROSE_HEAD = re.compile(
 
 
 #: A clause of words and a comma before a relation, and a verb that leads in (``Energy lost, using ΔKE``).
-_CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|taking)\s+(?=\S+\s*$))?")
+_CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?")
 
 
 #: Words that lead into a side that is a number's working (``that's 0.3888/1.08``, ``which is 2 + 3``);

@@ -19,7 +19,8 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.latex import REJECTED, latex_to_plain
+from derive.mathtext.latex import REJECTED
+from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
@@ -49,7 +50,7 @@ class Relation:
     direction: int = 0  # the last number's direction in words: -1 "to the left", "backwards"; +1 "to the right"
 
 
-_ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
+_ENV = ENV
 _OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
 _CLOSE = {
     "$$": re.compile(r"\$\$"),
@@ -65,6 +66,8 @@ _ARROW = re.compile(
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
+#: A question's part leading in: ``(a)``, ``(ii)``, ``b)``, ``Q1(b):``, ``(b)(i)``.
+_PART = re.compile(r"^\s*(?:Q\s?\d{1,2}\s*)?(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)\s*)+:?\s+|^\s*(?:[a-h]|[ivx]{1,4})\)\s+")
 #: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
 _REF = r"\d*\s*[×x*]?\s*(?:\(\s*\d{1,2}[a-z]?\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
 _COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
@@ -158,24 +161,12 @@ def _unwrapped(line: str) -> str:
     return (m.group(1) or m.group(2)).strip() if m else line.strip()
 
 
-#: An environment inside a display (``\\[ \\begin{aligned} … \\end{aligned} \\]``): layout only.
-_NESTED = re.compile(rf"\\(?:begin|end)\{{(?:{_ENV}|array|cases|matrix)\*?\}}(?:\{{[^{{}}]*\}})?")
-
-
-def row_plain(row: str) -> str:
-    """A row of a display as plain text, without a note in a column of its own after ``&&``
-    (``… && \\text{(CLM along } \\mathbf{i})``); a column with a relation in it is kept."""
-    first, *rest = re.split(r"&\s*&", row)
-    kept = [first, *(c for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
-    return latex_to_plain(" ; ".join(kept))
-
-
 def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
     """The rows of a display that spans lines: its text split at ``\\\\`` only."""
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
-        text = _NESTED.sub(" ", text)
+        text = NESTED.sub(" ", text)
         parts = re.split(r"\\\\", text)
         for k, part in enumerate(parts):
             if k and "".join(row).strip():
@@ -205,7 +196,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
         body = raw[m.end() : end.start()]
-        out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", _NESTED.sub(" ", body))))
+        out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
 
 
@@ -313,6 +304,7 @@ def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
+    text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     return in_si(text) or without_unit(text).strip()
 
 
@@ -370,7 +362,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     tag = without_note(written_text)[1]
-    text = _outer(_COMBINED.sub("", text))
+    text = _outer(_PART.sub("", _COMBINED.sub("", text.lstrip(" ,;:"))))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
