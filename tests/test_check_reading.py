@@ -734,6 +734,8 @@ def test_a_unit_after_latex_spacing_then_words_is_not_a_power() -> None:
         ("V = u cos α/3", "V=u*cos(alpha)/3"),  # (u cos α)/3
         ("s = √(u²cos²α + u²sin²α)", "s=sqrt(u^2*cos(alpha)^2+u^2*sin(alpha)^2)"),
         ("f = 36%", "f=(36/100)"),
+        ("m = 3.2 × 10⁻³", "m=3.2*10^(-3)"),  # any superscript, not only ² and ³
+        ("w = ⅔u + ⅛", "w=(2/3)*u+(1/8)"),  # any vulgar fraction
     ],
 )
 def test_students_notation_as_a_teacher_reads_it(typed: str, read: str) -> None:
@@ -799,3 +801,9 @@ def test_figures_part_labels_pointers_and_siunitx(text: str, expected: list) -> 
 def test_a_direction_in_brackets_after_a_note_is_kept() -> None:
     (r,) = read_relations("v = 4 ms^-1 (to the left)")
     assert r.sides == ("v", "4") and r.direction == -1
+
+
+def test_latex_formatting_of_the_words_around_the_mathematics() -> None:
+    assert sides(r"\textbf{Stage 2.} Now $w = 1.5$") == [("w", "1.5")]
+    assert sides(r"\section*{Q2} \textbf{CLM:} $3a + b = 4$") == [("3a + b", "4")]
+    assert sides(r"\item $v = 3$") == [("v", "3")]

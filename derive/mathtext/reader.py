@@ -188,9 +188,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
     while True:
         m = _OPEN.search(raw, i)
         if m is None:
-            out.append(_TEX_SPACE.sub(" ", raw[i:]))
+            out.append(_tex_text(raw[i:]))
             return " ".join(out), None, []
-        out.append(_TEX_SPACE.sub(" ", raw[i : m.start()]))
+        out.append(_tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
@@ -198,6 +198,17 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         body = raw[m.end() : end.start()]
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
+
+
+#: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
+_TEX_WORDS = re.compile(
+    r"\\(?:textbf|textit|emph|underline|textsc|(?:sub)*section\*?|paragraph\*?|item)\s*(?:\{([^{}]*)\})?"
+)
+
+
+def _tex_text(text: str) -> str:
+    """Words around mathematics without LaTeX's spacing and formatting commands."""
+    return _TEX_WORDS.sub(lambda m: f" {m.group(1) or ''} ", _TEX_SPACE.sub(" ", text))
 
 
 def _tex_comment(line: str) -> str:
