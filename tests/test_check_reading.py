@@ -807,3 +807,14 @@ def test_latex_formatting_of_the_words_around_the_mathematics() -> None:
     assert sides(r"\textbf{Stage 2.} Now $w = 1.5$") == [("w", "1.5")]
     assert sides(r"\section*{Q2} \textbf{CLM:} $3a + b = 4$") == [("3a + b", "4")]
     assert sides(r"\item $v = 3$") == [("v", "3")]
+
+
+def test_a_bodys_quantity_in_words_by_the_exams_letters_p_and_q() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): v_A = -1.04, v_B = 1.36 (worked above)
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\nSpeed of Q after = 1.36\n**Answer:** velocity of P after $= -1.04$, reversed.\n"
+    )
+    r = report("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    lines = {i.name: (i.status, i.written) for i in r.items}
+    assert lines["3"] == ("correct", "Speed of Q after = 1.36"), r.text()
+    assert lines["4"][0] == "correct" and "velocity of P after" in lines["4"][1], r.text()
