@@ -818,3 +818,14 @@ def test_a_bodys_quantity_in_words_by_the_exams_letters_p_and_q() -> None:
     lines = {i.name: (i.status, i.written) for i in r.items}
     assert lines["3"] == ("correct", "Speed of Q after = 1.36"), r.text()
     assert lines["4"][0] == "correct" and "velocity of P after" in lines["4"][1], r.text()
+
+
+def test_a_wide_gap_before_a_note_is_read_in_bounded_time() -> None:
+    """The notes' patterns look at a line's end: a gap of thousands of spaces (hostile input) is
+    read at once, not in time growing as a power of its length."""
+    import time
+
+    start = time.process_time()
+    assert [tuple(" ".join(x.split()) for x in r) for r in sides("x = 1" + " " * 5000 + "(1.5")] == [("x", "1 (1.5")]
+    assert len(sides("v = 2 m" + " " * 5000 + "x")) == 1
+    assert time.process_time() - start < 5

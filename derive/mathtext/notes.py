@@ -107,7 +107,7 @@ _TAG = re.compile(
 )
 #: A number in brackets after a value (its unrounded value, or the value to more figures).
 _UNROUNDED = re.compile(
-    r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>\s*[A-Za-z/^\-\s·*°%⁻¹²]*?)(?P<gap>\s+)"
+    r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²1]+){0,4})(?P<gap>\s+)"
     r"\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)\s*(?:[A-Za-z/^\-\s·*⁻¹]*)\)\s*$"
 )
 #: A remark in square brackets after a relation, with a word in it (``[w left, 2.9 right]``).
@@ -128,8 +128,8 @@ _CLAUSE = re.compile(
 _POINTER = re.compile(r"\s*(?:<-+|←|⟵)[^=<>]*$")
 #: The figures it is given to (``(3 s.f.)``, ``(to 1 d.p.)``, ``(3sf)``, ``to 3 sig figs``).
 _FIGURES = re.compile(
-    r"\s*\(?\s*(?:to|correct\s+to|rounded\s+to)?\s*\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?"
-    r"|significant\s+figures?|decimal\s+places?)\s*\)?\s*\.?\s*$",
+    r"(?:\s*\(\s*|\s+)(?:(?:to|correct\s+to|rounded\s+to)\s+)?\d\s?(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s?figs?\.?"
+    r"|significant\s+figures?|decimal\s+places?)\s?\)?\s*\.?\s*$",
     re.I,
 )
 #: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
@@ -162,9 +162,22 @@ def _remark_in_brackets(text: str) -> str:
     return text
 
 
+#: The longest note read after a relation (its patterns look at the end of a line only).
+NOTE_CHARS = 200
+
+
 def without_note(text: str) -> tuple[str, str]:
     """A relation without the note after it, and its tag where the note is one ("" where none)."""
-    text = _POINTER.sub("", text.rstrip()) if "=" in _POINTER.sub("", text.rstrip()) else text.rstrip()
+    text = re.sub(r"\s{9,}", " " * 8, text.rstrip())  # a wide gap is a gap: bounded, as the work is
+    head, tail = text[:-NOTE_CHARS], text[-NOTE_CHARS:]
+    tail, tag = _note(tail, "=" in head)
+    return (head + tail).rstrip(), tag
+
+
+def _note(text: str, equals_before: bool) -> tuple[str, str]:
+    """The end of a relation without its note, and the tag (see :func:`without_note`)."""
+    pointed = _POINTER.sub("", text)
+    text = pointed if "=" in pointed or equals_before else text
     text = _CLAUSE.sub("", _AFTER_TICK.sub("", text))
     text = _remark_in_brackets(_FIGURES.sub("", text))
     m = _SQUARE.search(text)
