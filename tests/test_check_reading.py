@@ -829,3 +829,12 @@ def test_a_wide_gap_before_a_note_is_read_in_bounded_time() -> None:
     assert [tuple(" ".join(x.split()) for x in r) for r in sides("x = 1" + " " * 5000 + "(1.5")] == [("x", "1 (1.5")]
     assert len(sides("v = 2 m" + " " * 5000 + "x")) == 1
     assert time.process_time() - start < 5
+
+
+def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
+    import time
+
+    start = time.process_time()
+    sides("show that " * 4000 + "x = 1")
+    sides("$x = " + "\\text{a}" * 4000 + "$")
+    assert time.process_time() - start < 5

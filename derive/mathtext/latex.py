@@ -147,8 +147,8 @@ _ONE_RUN = re.compile(r"(.*)()", re.S)
 
 def _unit_head(text: str) -> str | None:
     """The longest run of ``\\text{…}`` pieces at the start of ``text`` that is a unit, or None."""
-    ends = [m.end() for m in re.finditer(_ONE_TEXT, text)]
-    for end in reversed(ends[:-1]):
+    ends = [m.end() for m in re.finditer(_ONE_TEXT, text)][:-1]
+    for end in reversed(ends[:4]):  # a unit is a few pieces at most
         if is_unit(text[:end]):
             return text[:end]
     return None

@@ -46,8 +46,10 @@ _REJECTS = re.compile(
     r"|not\s+valid|invalid|no\s+good|not\s+allowed)\b",
     re.I,
 )
+#: The most rejections and goals looked at in one line.
+_MOST = 8
 #: A goal: what is to be shown, not a claim (``show e = …``, ``prove that …``, ``to show:``).
-_GOAL = re.compile(r"\b(?:show|prove|verify|deduce)\s+(?:that\s+)?(?=[^=]*=)", re.I)
+_GOAL = re.compile(r"\b(?:show|prove|verify|deduce)\s+(?:that\s+)?", re.I)  # with an "=" after it
 #: Where a sentence ends in a line: a full stop before a capital, a semicolon.
 _SENTENCE_END = re.compile(r"(?<=[\w)°²³])\.(?=\s+[A-Z(])|;")
 
@@ -72,8 +74,8 @@ def unmarked(text: str) -> str:
         after = text[m.end() :]
         text = after.lstrip(" ,;:.") if "=" in after else ""
     for pattern, whole in ((_REJECTS, True), (_GOAL, False)):
-        for m in reversed(list(pattern.finditer(text))):
-            if _in_brackets(text, m.start()):
+        for m in reversed(list(pattern.finditer(text))[:_MOST]):
+            if _in_brackets(text, m.start()) or (not whole and m.end() > text.rfind("=")):
                 continue  # "x = 3 (rejected)": the reader turns that relation down itself
             # a rejection turns down what comes before it in its sentence; a goal runs to the end
             start, end = (
