@@ -620,3 +620,221 @@ def test_v_and_big_v_with_bodies_moving_off_together_are_two_quantities() -> Non
     work = "v = 300\n0.020 v = 4.02 V\nV = 1.49\n"
     r = report("msu-lectureonline-bullet-lodges-in-block", work)
     assert [i.status for i in r.items] == ["correct"] * 3, r.text()
+
+
+# --- what is written around a relation (issue #31: the q/r batches) ---------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # a unit after LaTeX spacing, in any spelling, then words
+        (r"$v = 35\ \text{m s}^{-1}\text{ just before impact}$", [("v", "35")]),
+        (r"$w = 28~\mathrm{m\,s^{-1}}$", [("w", "28")]),
+        (r"$v = 4.2\;\text{m}\,\text{s}^{-1}$", [("v", "4.2")]),
+        (r"$u = 6\,\frac{\text{m}}{\text{s}}$", [("u", "6")]),
+        ("w = 2.5 m s^-1", [("w", "2.5")]),
+        # the unrounded value in brackets; a remark in square brackets; a tick then words
+        ("V = 2.47 m/s   (2.4688)", [("V", "2.47")]),
+        ("v_B = 0.333 (0.3333...)", [("v_B", "0.333")]),
+        ("0.5 = 0.1(v + 3)    [v up, 3 down]", [("0.5", "0.1(v + 3)")]),
+        ("v = 3u - 2u = u   ✓ that is B's speed", [("v", "3u - 2u", "u")]),
+        ("v_A = u(1 - 2e), in the direction it came from", [("v_A", "u(1 - 2e)")]),
+        # a product in brackets is not a note
+        ("w = m g (20)", [("w", "m g (20)")]),
+        ("J = 0.2 (28)", [("J", "0.2 (28)")]),
+        # relations inside prose: a sentence after a unit, words before a name, bold
+        ("Common velocity V = 9/3 = 3 m/s. In that frame A moves at 2", [("V", "9/3", "3")]),
+        (r"so $\phi = \alpha + 45^\circ$ and", [("phi", "alpha + 45°")]),
+        ("**CLM:** 3a + b = 4", [("3a + b", "4")]),
+        ("energy      a^2 + b^2 = 10", [("a^2 + b^2", "10")]),
+    ],
+)
+def test_notes_units_and_prose_around_a_relation_are_not_read_into_it(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "tag"),
+    [("3x + y = 14   ...(1)", "1"), ("y - x = 2e  --(2)", "2"), ("a + b = 7 [3]", "3"), ("a = 2b  …(4)", "4")],
+)
+def test_an_equations_tag_after_it_in_any_form(text: str, tag: str) -> None:
+    (r,) = read_relations(text)
+    assert r.tag == tag and "(" not in r.sides[-1] and "[" not in r.sides[-1], r
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # withdrawn working: never marked
+        ("v = 2.4 - 0.6 = 1.8   <-- wrong, sign", []),
+        ("v = 1.8 (crossed out)", []),
+        ("2v ... no wait, (1) + (2):  3v = 9", [("3v", "9")]),
+        ("~~v = 1.8~~ v = 3.0", [("v", "3.0")]),
+        # a root rejected in words, to the end of its sentence
+        ("if v = 7u/4 then w = 2u - 7u/4 = u/4 < v, not possible", []),
+        ("v = 2u would mean B is slower than A, which can't happen. So v = u", [("v", "u")]),
+        ("Since e cannot be negative, e = 0.5", [("e", "0.5")]),  # what follows the words stands
+        ("v = 7u/4 is impossible as w < v, so v = u/2", [("v", "u/2")]),
+        # a goal is not a claim
+        ("Q3 - show that v = u(1 + e)/2", []),
+        ("Hence show e = 1/2. Then v = 3", [("v", "3")]),
+        # equations combined lead in; a sum of products does not
+        ("(1) - 2(2): 5y = 6", [("5y", "6")]),
+        ("4500(3) + 3000(6) = 7500 V", [("4500(3) + 3000(6)", "7500 V")]),
+    ],
+)
+def test_what_a_teacher_does_not_mark_is_not_read(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_latex_environments_students_use() -> None:
+    aligned = "\\[\n\\begin{aligned}\na + b &= 3 \\\\\nb &= 1\n\\end{aligned}\n\\]\n"
+    assert [(r.line, r.sides) for r in read_relations(aligned)] == [(3, ("a + b", "3")), (4, ("b", "1"))]
+    note = "\\begin{align*}\nm u &= m a + m b && \\text{(CLM along } \\mathbf{i})\\\\\nb - a &= e u && b = 2\n\\end{align*}"
+    assert sides(note) == [("m u", "m a + m b"), ("b - a", "e u"), ("b", "2")]
+    continued = "\\begin{align*}\nK &= \\tfrac12 (2)(3)^2 \\\\\n  &\\approx 9.0\\ \\text{J}\n\\end{align*}"
+    assert sides(continued) == [("K", "(1/2) (2)(3)^2"), ("(1/2) (2)(3)^2", "9.0")]
+
+
+def test_a_greek_letter_before_a_latin_one_is_two_factors() -> None:
+    from derive.mathtext.notation import student
+
+    assert student("u + kλu") == "u+k*lambda*u" and student("μu^2") == "mu*u^2"
+
+
+# OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): 2vA + 3vB = 8 - 6 = 2, vB - vA = 0.4(6) = 2.4,
+# 5vB = 2 + 4.8 = 6.8, vB = 1.36, vA = -1.04 (worked by hand).
+def test_notes_withdrawn_lines_and_rejected_cases_in_a_derivation() -> None:
+    work = (
+        "2vA + 3vB = 2        ...(1)\n"
+        "vB - vA = 2.4        ...(2)\n"
+        "vA = 2.4 - 1.36 = 1.04   <- no, wrong sign\n"
+        "(1) + 2(2): 5vB = 6.8\n"
+        "vB = 1.36 m/s   (1.360)\n"
+        "if vA = 1.36 then vB = 2.4 + 1.36 = 3.76 and 2(1.36) + 3(3.76) = 13.96, impossible.\n"
+        "vA = 1.36 - 2.4 = -1.04 m/s     [A goes back]\n"
+    )
+    r = report("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    lines = {i.name: i.status for i in r.items}
+    assert lines == {"1": "correct", "2": "correct", "4": "correct", "5": "correct", "7": "correct"}, r.text()
+
+
+def test_a_unit_after_latex_spacing_then_words_is_not_a_power() -> None:
+    work = (
+        "\\begin{align*}\n2v_A + 3v_B &= 2 \\\\\nv_B - v_A &= 2.4 \\\\\n"
+        "v_B &= 1.36\\ \\text{m s}^{-1} \\text{ after the impact}\n\\end{align*}\n"
+    )
+    assert statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work) == ["correct"] * 3
+
+
+@pytest.mark.parametrize(
+    ("typed", "read"),
+    [
+        ("h = v^2/2g", "h=v^2/(2*g)"),  # over the product, as a teacher reads it
+        ("V = (2m u + m w)/3m", "V=(2*m*u+m*w)/(3*m)"),
+        ("V = u cos α/3", "V=u*cos(alpha)/3"),  # (u cos α)/3
+        ("s = √(u²cos²α + u²sin²α)", "s=sqrt(u^2*cos(alpha)^2+u^2*sin(alpha)^2)"),
+        ("f = 36%", "f=(36/100)"),
+        ("m = 3.2 × 10⁻³", "m=3.2*10^(-3)"),  # any superscript, not only ² and ³
+        ("w = ⅔u + ⅛", "w=(2/3)*u+(1/8)"),  # any vulgar fraction
+    ],
+)
+def test_students_notation_as_a_teacher_reads_it(typed: str, read: str) -> None:
+    from derive.mathtext.notation import student
+
+    assert student(typed) == read
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("Energy lost, using ΔT = ½ m u² (1 − e²):", [("Delta T", "½ m u² (1 − e²)")]),
+        ("Using NEL, v_B - v_A = 2", [("v_B - v_A", "2")]),
+        ("(that's 0.25/0.50 = 50% lost, i.e. 50% kept)", [("0.25/0.50", "50%")]),
+        ("I = 0.5 * 4.2 = 2.1 lb.s", [("I", "0.5 * 4.2", "2.1")]),
+        ("I = 2.1 lbf s", [("I", "2.1")]),
+        ("Loss in K.E. = 12 J", [("Loss in K.E", "12")]),
+    ],
+)
+def test_lead_in_clauses_percentages_and_impulse_units(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+# OCR M2 June 2012 Q1 (0.8 kg at 4 m/s into a wall, e = 0.3): KE lost = ½(0.8)(16)(1 - 0.09) = 5.824 J
+# (mark scheme 5.82 J), by the general formula in the problem's letters.
+def test_a_general_formula_line_in_the_problems_letters_is_judged() -> None:
+    work = "m = 0.8, u = 4, e = 0.3\nEnergy lost, using ΔKE = ½ m u² (1 − e²):\nΔKE = 6.4 × (1 − 0.09) = 5.824 J\n"
+    r = report("ocr-m2-2012-particle-hits-wall", work)
+    assert {i.name: i.status for i in r.items}.get("2") == "correct", r.text()
+    assert {i.name: i.status for i in r.items}.get("3") == "correct", r.text()
+
+
+def test_markdown_code_marks_a_blockquote_and_latex_intertext_are_layout() -> None:
+    assert sides("`v_B = 2.4`\n> v_A = -1.04\n") == [("v_B", "2.4"), ("v_A", "-1.04")]
+    text = "\\begin{align*}\na &= 2 \\\\\n\\intertext{so}\nb &= 3\n\\end{align*}"
+    assert [(r.line, r.sides) for r in read_relations(text)] == [(2, ("a", "2")), (4, ("b", "3"))]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("v = 3.46 (3 s.f.)", [("v", "3.46")]),
+        ("e = 0.8 (to 1 d.p.)", [("e", "0.8")]),
+        ("v = 3.464 m/s (3sf)", [("v", "3.464")]),
+        ("v = 2 m/s (2 d.p.) <- answer", [("v", "2")]),
+        ("x = 3 (from (1))", [("x", "3")]),
+        ("(a) v = 3", [("v", "3")]),
+        ("(ii) v = 3", [("v", "3")]),
+        ("b) v = 3", [("v", "3")]),
+        ("Q1(b): e = 0.5", [("e", "0.5")]),
+        ("So, v = 3.", [("v", "3")]),
+        (r"$v_A = \SI{3}{\metre\per\second}$", [("v_A", "3")]),
+        (r"$v = \qty{3.5}{m/s}$", [("v", "3.5")]),
+        # what stays: a rejected root, a direction, a product
+        ("x = 5u/6 (rejected)", []),
+        ("x = 2(a + b)", [("x", "2(a + b)")]),
+    ],
+)
+def test_figures_part_labels_pointers_and_siunitx(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_a_direction_in_brackets_after_a_note_is_kept() -> None:
+    (r,) = read_relations("v = 4 ms^-1 (to the left)")
+    assert r.sides == ("v", "4") and r.direction == -1
+
+
+def test_latex_formatting_of_the_words_around_the_mathematics() -> None:
+    assert sides(r"\textbf{Stage 2.} Now $w = 1.5$") == [("w", "1.5")]
+    assert sides(r"\section*{Q2} \textbf{CLM:} $3a + b = 4$") == [("3a + b", "4")]
+    assert sides(r"\item $v = 3$") == [("v", "3")]
+
+
+def test_a_bodys_quantity_in_words_by_the_exams_letters_p_and_q() -> None:
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it, e = 0.4): v_A = -1.04, v_B = 1.36 (worked above)
+    work = (
+        "2vA + 3vB = 2\nvB - vA = 2.4\nSpeed of Q after = 1.36\n**Answer:** velocity of P after $= -1.04$, reversed.\n"
+    )
+    r = report("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    lines = {i.name: (i.status, i.written) for i in r.items}
+    assert lines["3"] == ("correct", "Speed of Q after = 1.36"), r.text()
+    assert lines["4"][0] == "correct" and "velocity of P after" in lines["4"][1], r.text()
+
+
+def test_a_wide_gap_before_a_note_is_read_in_bounded_time() -> None:
+    """The notes' patterns look at a line's end: a gap of thousands of spaces (hostile input) is
+    read at once, not in time growing as a power of its length."""
+    import time
+
+    start = time.process_time()
+    assert [tuple(" ".join(x.split()) for x in r) for r in sides("x = 1" + " " * 5000 + "(1.5")] == [("x", "1 (1.5")]
+    assert len(sides("v = 2 m" + " " * 5000 + "x")) == 1
+    assert time.process_time() - start < 5
+
+
+def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
+    import time
+
+    start = time.process_time()
+    sides("show that " * 4000 + "x = 1")
+    sides("$x = " + "\\text{a}" * 4000 + "$")
+    assert time.process_time() - start < 5

@@ -174,3 +174,20 @@ def test_an_unknown_given_angle_is_judged_once(monkeypatch) -> None:
     report = derive.check(solution, {}, derivation="tan(alpha) = sqrt(32/3) = 3.266\nalpha = tan^-1(3.266) = 1.27°\n")
     assert report.items[1].slip == "degrees_as_radians"
     assert calls.count("alpha = tan^-1(3.266) = 1.27°") <= 1
+
+
+def test_a_slips_system_is_solved_once_for_all_the_rules(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The rules that explain a slip (solves correctly? as a common mistake? with a pair?) each
+    solve the equations with the slip in place of (k): each system is solved once."""
+    from derive.checking import relations
+
+    real, calls = relations._solve_with, []
+    monkeypatch.setattr(
+        relations, "_solve_with", lambda F, eqs, k, U, pts: calls.append((F, k)) or real(F, eqs, k, U, pts)
+    )
+    relations._SOLVED.clear()
+    # OCR M2 2014 (2m at 4, 3m at 2 toward it): 2vA + 3vB = 8 - 6 = 2; 5 is no common mistake's
+    work = "2vA + 3vB = 5\nvB - vA = 2.4\n"
+    report = derive.check(derive.solve(derive.load("ocr-m2-2014-particles-2m-3m-ke-lost")), derivation=work)
+    assert report.items[0].status == "wrong", report.text()
+    assert calls and len(calls) == len(set(calls)), calls

@@ -55,7 +55,9 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
-    lines, notes = read_lines(ctx, text, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
+    said = body_words(text, getattr(ctx.problem, "labels", ("A", "B")))
+    lines, notes = read_lines(ctx, said, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
+    lines = [as_typed(line, text, said) for line in lines]
     if not any(line.exprs is not None or line.error.startswith("unknown name") for line in lines):
         first = lines[0] if lines else None
         why = f" (line {first.number}: {words.not_read(first.error, first.sides, first.written)})" if first else ""
@@ -430,3 +432,37 @@ class Trace(Carrying):
         return Item(
             "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
         )
+
+
+#: A body's quantity in words (``speed of Q after``, ``P's velocity``, ``Q after``), the label between.
+_BODY_PHRASE = (
+    (r"(\b(?i:speed|velocity|direction|momentum|KE|energy)\s+of\s+)", r"\b"),
+    (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction))"),
+    (r"((?:^|[:*,;(]|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),
+)
+
+
+def body_words(text: str, labels: tuple[str, str]) -> str:
+    """``text`` with the problem's own labels of the bodies (or the exam's P and Q) written A and B
+    where words say a body's quantity (``speed of Q after``), as the names in words are read; one
+    letter for one, so that every line keeps its length."""
+    if tuple(labels) == ("A", "B"):
+        labels = ("P", "Q")  # the exam's letters, as the names in words read them (wordnames)
+    if any(len(x) != 1 for x in labels) or set(labels) & {"A", "B"}:
+        return text
+    for label, body in zip(labels, "AB", strict=True):
+        for before, after in _BODY_PHRASE:
+            text = re.sub(before + re.escape(label) + after, lambda m, b=body: m.group(1) + b, text, flags=re.M)
+    return text
+
+
+def as_typed(line: Line, text: str, said: str) -> Line:
+    """``line`` (read from ``said``, :func:`body_words`) written as the student typed it."""
+    if said == text:
+        return line
+    typed, read = text.splitlines(), said.splitlines()
+    n = line.number - 1
+    if n >= len(read) or read[n] == typed[n] or line.written not in read[n]:
+        return line
+    at = read[n].find(line.written)
+    return replace(line, written=typed[n][at : at + len(line.written)])

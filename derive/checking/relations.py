@@ -53,10 +53,26 @@ def proportional(a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...], pts:
     return True
 
 
+#: The systems solved so far (a slip is solved in its rules' turn, the same system more than once).
+_SOLVED: dict[tuple, list[list[Values]] | None] = {}
+
+
 def solve_with(
     F: sympy.Expr, equations: dict[int, sympy.Expr], k: int, U: tuple[sympy.Symbol, ...], pts: list[Point]
 ) -> list[list[Values]] | None:
-    """Solve ``equations`` with (k) replaced by ``F = 0``, at each point: the roots there."""
+    """Solve ``equations`` with (k) replaced by ``F = 0``, at each point: the roots there (each
+    system once: remembered for the rules that ask again; the roots are not to be changed)."""
+    key = (F, tuple(sorted(equations.items())), k, tuple(U), tuple(tuple(sorted(p.items(), key=str)) for p in pts))
+    if key not in _SOLVED:
+        if len(_SOLVED) > 512:
+            _SOLVED.clear()
+        _SOLVED[key] = _solve_with(F, equations, k, U, pts)
+    return _SOLVED[key]
+
+
+def _solve_with(
+    F: sympy.Expr, equations: dict[int, sympy.Expr], k: int, U: tuple[sympy.Symbol, ...], pts: list[Point]
+) -> list[list[Values]] | None:
     out = []
     for pt in pts:
         fast = linear_roots([x.xreplace(pt) for j, x in equations.items() if j != k] + [F.xreplace(pt)], U)

@@ -19,6 +19,10 @@ _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 _TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
+#: A unit as a fraction of two texts (``\\frac{\\text{m}}{\\text{s}}``).
+_FRAC_UNIT = re.compile(
+    r"\\[dt]?frac\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}"
+)
 _TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*(?!\s*_)")
 #: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
 REJECTED = re.compile(
@@ -65,6 +69,7 @@ def latex_to_plain(tex: str) -> str:
     m = _TAG_END.search(s)
     if m:
         s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]
+    s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
     parser, out, end, work = Parser(s, lenient=True), [], 0, 0  # leniently, any character is a token
     while not parser.at_end():
@@ -108,9 +113,25 @@ def _prefix(parser: Parser, start: int, far: int) -> object | None:
 def _unit_text(m: re.Match) -> str:
     """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
     of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
-    plain = plain_unit(m.group(0))
+    return _unit_piece(m.group(0))
+
+
+def _unit_piece(text: str) -> str:
+    plain = plain_unit(text)
+    if not is_unit(plain):
+        head = _unit_head(text)  # "\text{m s}^{-1} \text{ just before it hits}": the unit, then words
+        return text if head is None else _unit_piece(head) + " " + text[len(head) :]
     scaled = plain in SCALED or plain.startswith("km")  # the reader writes 20 Mg, 36 km/h in SI
-    return m.group(0) if not is_unit(plain) else rf"\text{{{plain}}}" if scaled else " "
+    return rf"\text{{{plain}}}" if scaled else " "
+
+
+def _unit_head(text: str) -> str | None:
+    """The longest run of ``\\text{…}`` pieces at the start of ``text`` that is a unit, or None."""
+    ends = [m.end() for m in re.finditer(_ONE_TEXT, text)][:-1]
+    for end in reversed(ends[:4]):  # a unit is a few pieces at most
+        if is_unit(text[:end]):
+            return text[:end]
+    return None
 
 
 def show(node: object, top: bool = False) -> str:

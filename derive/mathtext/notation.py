@@ -10,6 +10,8 @@ the same parser as everything else, so nothing is evaluated that it would refuse
 from __future__ import annotations
 
 import re
+import unicodedata
+from fractions import Fraction
 
 #: The functions of the parser (a name followed by "(" is a call only for these).
 FUNCTIONS = frozenset({"sqrt", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "exp", "log"})
@@ -46,6 +48,23 @@ _UNICODE = {
     "[": "(",
     "]": ")",
 }
+#: Vulgar fractions (``⅔``, ``⅝``) and runs of superscript digits and signs (``⁻³``, ``⁴``).
+_VULGAR = re.compile("[\u2150-\u215e\u00bc-\u00be]")
+_SUPER = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺", "0123456789-+", strict=True))
+_SUPERSCRIPT = re.compile("[⁰¹⁴⁵⁶⁷⁸⁹⁻⁺][⁰¹²³⁴⁵⁶⁷⁸⁹]*|[²³]?[⁰¹²³⁴⁵⁶⁷⁸⁹]{2,}")
+
+
+def _vulgar(m: re.Match) -> str:
+    value = Fraction(unicodedata.numeric(m.group(0))).limit_denominator(10)
+    return f"({value.numerator}/{value.denominator})"
+
+
+def _superscript(m: re.Match) -> str:
+    return "^(" + "".join(_SUPER[c] for c in m.group(0)) + ")"
+
+
+#: A Greek letter with a Latin letter right after it (``λu``, ``μu^2``): two factors.
+_GREEK_BEFORE_LETTER = re.compile(r"([θβαγδελμστφϕψωπ])(?=[A-Za-z])")
 #: ``tan^-1``, ``tan^(-1)``, ``tan^{-1}``, ``tan⁻¹``: the inverse functions.
 _INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\s*\}|-\s*1)|⁻¹)")
 #: ``|x|``: the size of what stands between two bars.
@@ -64,17 +83,26 @@ def student(text: str) -> str:
     >>> student("20 v_A2n + 5 v_B2n")
     '20*v_A2n+5*v_B2n'
     """
+    text = _GREEK_BEFORE_LETTER.sub(r"\1 ", text)  # kλu: k times lambda times u, not "lambdau"
+    text = _VULGAR.sub(_vulgar, text)  # ⅔ as (2/3)
+    text = _SUPERSCRIPT.sub(_superscript, text)  # 10⁻³ as 10^(-3); ² and ³ as before
     for sign, plain in _UNICODE.items():
         text = text.replace(sign, plain)
     text = _BARS.sub(r" sqrt((\1)^2) ", text.replace("‖", "|"))  # |v_P|: its size
     text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
     text = function_powers(text)
+    text = _PERCENT.sub(r"(\1/100)", text)  # 36% = 0.36
+    text = _OVER_PRODUCT.sub(r"/(\1*\2)", text)  # v^2/2g, (…)/3m: over the product, as a teacher reads it
     text = degree_marks(text)
     text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
     return implicit_products(text)
 
 
-_FUNCTION_POWER = re.compile(r"\b(sin|cos|tan)\s*\^\s*\(?(\d)\)?\s*")
+#: A percentage: ``36%``, ``36 %``.
+_PERCENT = re.compile(r"(?<![\w.])(\d+\.?\d*)\s*%")
+#: A division by a number and a name written together (``/3m``, ``/2g``): the product is the divisor.
+_OVER_PRODUCT = re.compile(r"/\s*(\d+\.?\d*)([A-Za-z](?:_[A-Za-z0-9]+)?)(?![\w(^])")
+_FUNCTION_POWER = re.compile(r"(?<![A-Za-z])(sin|cos|tan)\s*\^\s*\(?(\d)\)?\s*")  # u^2cos^2 a too
 
 
 def function_powers(text: str) -> str:

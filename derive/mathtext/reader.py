@@ -19,12 +19,16 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.latex import REJECTED, latex_to_plain
+from derive.mathtext.latex import REJECTED
+from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
+from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
+#: A row that continues the relation above it: ``&= 6.4``, ``&\\approx 91.7``, ``  ≈ 0.389``.
+_CONTINUED = re.compile(r"^[\s&$\\\[]*(?:=|≈|\\approx|\\simeq)")
 #: The most relations read from one text.
 MAX_RELATIONS = 400
 
@@ -46,7 +50,7 @@ class Relation:
     direction: int = 0  # the last number's direction in words: -1 "to the left", "backwards"; +1 "to the right"
 
 
-_ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
+_ENV = ENV
 _OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
 _CLOSE = {
     "$$": re.compile(r"\$\$"),
@@ -61,11 +65,16 @@ _ARROW = re.compile(
 )
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
-_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
+_TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
+#: A question's part leading in: ``(a)``, ``(ii)``, ``b)``, ``Q1(b):``, ``(b)(i)``.
+_PART = re.compile(r"^\s*(?:Q\s?\d{1,2}\s*)?(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)\s*)+:?\s+|^\s*(?:[a-h]|[ivx]{1,4})\)\s+")
+#: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
+_REF = r"\d*\s*[×x*]?\s*(?:\(\s*\d{1,2}[a-z]?\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
+_COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
-    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*\s]?lb|slug|ft|lb)"
+    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
     r"|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
@@ -98,8 +107,9 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
     out: list[Relation] = []
     for line, column, written, plain in pieces(text):
+        plain = unmarked(unbold(plain))
         lead = ""
-        if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
+        if plain.lstrip().startswith("=") and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
             plain = f"{above.sides[-1]} {plain}"
             lead = above.lead or above.sides[0]
@@ -156,17 +166,18 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
+        text = NESTED.sub(" ", text)
         parts = re.split(r"\\\\", text)
         for k, part in enumerate(parts):
             if k and "".join(row).strip():
-                yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+                yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
             if k:
                 row, first = [], number
             if not "".join(row).strip():
                 first = number
             row.append(part)
     if "".join(row).strip():
-        yield first, 0, lines[first - 1].strip(), latex_to_plain(" ".join(row))
+        yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
 
 
 def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int, str]]]:
@@ -177,16 +188,27 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
     while True:
         m = _OPEN.search(raw, i)
         if m is None:
-            out.append(_TEX_SPACE.sub(" ", raw[i:]))
+            out.append(_tex_text(raw[i:]))
             return " ".join(out), None, []
-        out.append(_TEX_SPACE.sub(" ", raw[i : m.start()]))
+        out.append(_tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
         body = raw[m.end() : end.start()]
-        out.append(" ; ".join(latex_to_plain(row) for row in re.split(r"\\\\", body)))
+        out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
+
+
+#: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
+_TEX_WORDS = re.compile(
+    r"\\(?:textbf|textit|emph|underline|textsc|(?:sub)*section\*?|paragraph\*?|item)\s*(?:\{([^{}]*)\})?"
+)
+
+
+def _tex_text(text: str) -> str:
+    """Words around mathematics without LaTeX's spacing and formatting commands."""
+    return _TEX_WORDS.sub(lambda m: f" {m.group(1) or ''} ", _TEX_SPACE.sub(" ", text))
 
 
 def _tex_comment(line: str) -> str:
@@ -201,7 +223,10 @@ def split_relations(plain: str) -> list[str]:
     plain = plain.replace("≈", "=")
     plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
-    for chunk in _arrow_split(re.sub(r"(?<=[A-Za-z)]{2})\.\s+", " ; ", plain)):
+    plain = re.sub(
+        r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
+    )  # a sentence ends
+    for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
                 parts += _comma_split(part)
@@ -280,7 +305,7 @@ def words_after(text: str) -> str:
             continue
         before = text[last + 1 : m.start()].rstrip(" ,;:")
         unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
-        if re.search(r"\d", before) and re.search(r"[\d°)]$", unitless.rstrip(" ie.")):
+        if re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie.")):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
         return text
     return text
@@ -290,6 +315,7 @@ def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
+    text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     return in_si(text) or without_unit(text).strip()
 
 
@@ -339,20 +365,24 @@ def _closes_nothing(t: str) -> bool:
 def relation(line: int, column: int, written: str, text: str) -> Relation | None:
     """The relation in ``text`` (plain syntax), or None where it has no ``=`` or is an
     inequality."""
-    tag = ""
+    written_text = text
     text = re.sub(  # a tick, and a check word after the value ("= 91.7 J  ok"): not part of it
-        r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected)[.!]?\s*$",
+        r"(?<=[\w.)°])\s+(?:ok|okay|checks?(?:\s+out)?|as\s+required|as\s+expected|shown|proved|QED)[.!]?\s*$",
         "",
-        _TICK.sub(" ", text),
+        _TICK.sub(" ", without_note(text)[0]),
         flags=re.I,
     )
-    text = _outer(text)
+    tag = without_note(written_text)[1]
+    text = _outer(_PART.sub("", _COMBINED.sub("", text.lstrip(" ,;:"))))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
     m = _LEAD.match(text.strip())
     label = (m.group(1) or "").strip() if m else ""
     text = text.strip()[m.end() :] if m else text.strip()
+    m = _WORD_LEAD.match(text) if not label else None
+    if m and m.group(1).lower() not in MATH_WORDS and "=" not in m.group(1):
+        label, text = m.group(1), text[m.end() :]
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
@@ -366,11 +396,18 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         text = _DIRECTION_END.sub("", text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
+    sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words
         sides = tuple(s for s in sides if re.search(_SIDE, s) and not _POINTS.match(s))
         if len(sides) < 2:
             return None
     return Relation(line, column, written, sides, tag, label=label, direction=direction)
+
+
+#: Words that name a quantity before a letter (``KE T``?): not taken for prose before a name.
+_LEAD_WORDS = frozenset({"delta", "sqrt", "atan", "asin", "acos"})
+#: A lead-in in words without a colon, apart from the relation by a wide gap (``momentum     m(5u) = …``).
+_WORD_LEAD = re.compile(r"^\s*((?:[A-Za-z][a-z']{2,}|CLM|NEL|NLR|KE|COM|CoM)(?:\s[A-Za-z][a-z']{2,})*)\s{2,}(?=[^\s=])")
 
 
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).

@@ -1,0 +1,37 @@
+"""The layout of LaTeX a student types around the mathematics of a display row: environments
+nested in a display (``\\[ \\begin{aligned} … \\end{aligned} \\]``), ``\\intertext``, a note in a
+column of its own after ``&&``, siunitx's quantities (``\\SI{3}{\\metre\\per\\second}``)."""
+
+from __future__ import annotations
+
+import re
+
+from derive.mathtext.latex import latex_to_plain
+
+#: The display environments students use.
+ENV = r"align|equation|gather|eqnarray|multline|alignat|flalign|split|aligned|gathered"
+#: An environment inside a display (``\\[ \\begin{aligned} … \\end{aligned} \\]``): layout only.
+NESTED = re.compile(
+    rf"\\(?:begin|end)\{{(?:{ENV}|array|cases|matrix)\*?\}}(?:\{{[^{{}}]*\}})?"
+    r"|\\(?:short)?intertext\s*\{[^{}]*\}"  # words between the rows
+)
+
+
+#: siunitx: a number and its unit (``\\SI{3}{\\metre\\per\\second}``, ``\\qty{3}{m/s}``), a unit alone, a number.
+_SIUNITX = (
+    (re.compile(r"\\(?:SI|qty)\s*(?:\[[^\]]*\])?\s*\{([^{}]*)\}\s*\{[^{}]*\}"), r" \1 "),
+    (re.compile(r"\\(?:si|unit)\s*(?:\[[^\]]*\])?\s*\{[^{}]*\}"), " "),
+    (re.compile(r"\\num\s*(?:\[[^\]]*\])?\s*\{([^{}]*)\}"), r"\1"),
+    (re.compile(r"\\ang\s*(?:\[[^\]]*\])?\s*\{([^{}]*)\}"), r"\1°"),
+)
+
+
+def row_plain(row: str) -> str:
+    """A row of a display as plain text, without a note in a column of its own after ``&&``
+    (``… && \\text{(CLM along } \\mathbf{i})``); a column with a relation in it is kept;
+    siunitx's quantities as their numbers."""
+    for pattern, plain in _SIUNITX:
+        row = pattern.sub(plain, row)
+    first, *rest = re.split(r"&\s*&", row)
+    kept = [first, *(c for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
+    return latex_to_plain(" ; ".join(kept))

@@ -1,0 +1,246 @@
+"""What a student writes around a relation that is not part of it, as a teacher reads it.
+
+A note after a relation: an equation's tag (``...(1)``, ``--(2)``, ``[3]``, ``eqn 4``), the
+unrounded value in brackets (``V = 1.49 m/s (1.4925)``), a remark in square brackets
+(``[w left, 2.9 right]``). A line the student withdraws (``<- no, wrong side``, ``(crossed
+out)``, ``no wait, …``, ``~~x = 3~~``): what it withdraws is never marked. A sentence that turns
+a root down in words (``if x = 5u/6 then y = u/3 < x, impossible``, ``… can't happen``): its
+relations are a rejected case. A goal (``show e = …``, ``prove that …``): what is to be shown,
+not a claim. Markdown's bold (``**CLM:**``) is layout.
+
+>>> without_note("V = 1.49 m/s   (1.4925)")
+('V = 1.49 m/s', '')
+>>> without_note("12u = 7x + y      ...(1)")
+('12u = 7x + y', '1')
+>>> unmarked("M = 0.58 - 0.3 = 0.28   <- no, wrong side")
+''
+"""
+
+from __future__ import annotations
+
+import re
+
+from derive.mathtext.latex import REJECTED
+from derive.mathtext.notation import FUNCTIONS
+from derive.mathtext.parser import GREEK
+from derive.mathtext.units import is_unit
+
+_MATH = GREEK | FUNCTIONS | {"pi", "deg", "rad"}
+
+#: Markdown bold or italics around words (``**CLM:**``, ``__Answer__``); not ``u**2``.
+_BOLD = re.compile(r"(?<![\w*])(\*\*|__)(?=\S)([^*\n]*?\S)\1(?![\w*])")
+#: Struck-out text (Markdown ``~~…~~``, LaTeX ``\sout{…}``, ``\st{…}``, ``\xout{…}``).
+_STRUCK = re.compile(r"~~[^~\n]*~~|\\(?:sout|st|xout)\{[^{}]*\}")
+_NO = r"(?:no\b|nope|wrong|mistake|oops|error|ignore|scrap|scratch|cross(?:ed)?|not\s+this|redo|x\b|✗)"
+#: A withdrawal of what comes before it on the line.
+_WITHDRAWN = re.compile(
+    rf"(?:<-+|←|⟵|<=+(?=\s*[A-Za-z]))\s*{_NO}"
+    rf"|[(\[]\s*(?:wrong|crossed\s+out|ignore(?:\s+this)?|scrap(?:\s+that)?|mistake|oops|withdrawn|redone\s+below)\s*[)\]]"
+    r"|\b(?:no\s+wait|wait\s+no|oops|scratch\s+that|scrap\s+that|ignore\s+(?:this|that)(?:\s+line)?|crossed\s+out)\b",
+    re.I,
+)
+#: A root or case turned down in words.
+_REJECTS = re.compile(
+    r"\b(?:impossible|not\s+possible|(?:can't|cannot|can\s+not|couldn't|won't|doesn't|does\s+not)\s+"
+    r"(?:happen|be|work|occur)|rejected|reject(?:\s+(?:it|this|that))?|discard(?:ed)?|not\s+physical|unphysical"
+    r"|not\s+valid|invalid|no\s+good|not\s+allowed)\b",
+    re.I,
+)
+#: The most rejections and goals looked at in one line.
+_MOST = 8
+#: A goal: what is to be shown, not a claim (``show e = …``, ``prove that …``, ``to show:``).
+_GOAL = re.compile(r"\b(?:show|prove|verify|deduce)\s+(?:that\s+)?", re.I)  # with an "=" after it
+#: Where a sentence ends in a line: a full stop before a capital, a semicolon.
+_SENTENCE_END = re.compile(r"(?<=[\w)°²³])\.(?=\s+[A-Z(])|;")
+
+
+#: Markdown's inline code marks and a blockquote's mark at the start of a line.
+_CODE_QUOTE = re.compile(r"`+|^\s*>+(?=\s)")
+
+
+def unbold(text: str) -> str:
+    """``text`` without Markdown's layout: bold and italics around words (``**momentum:**``),
+    inline code marks (```v_B = 2.4```), a blockquote's ``>``."""
+    return _CODE_QUOTE.sub(" ", _BOLD.sub(r"\2", text))
+
+
+def unmarked(text: str) -> str:
+    """``text`` without what a teacher does not mark: struck-out working, what a withdrawal note
+    withdraws (all before it; the line after ``no wait,`` is kept), a case rejected in words
+    (what comes before it in its sentence) and a goal to be shown (to the end of its sentence)."""
+    text = _STRUCK.sub(" ", text)
+    m = next(reversed(list(_WITHDRAWN.finditer(text))), None)  # the last: what comes after it stands
+    if m is not None:
+        after = text[m.end() :]
+        text = after.lstrip(" ,;:.") if "=" in after else ""
+    for pattern, whole in ((_REJECTS, True), (_GOAL, False)):
+        for m in reversed(list(pattern.finditer(text))[:_MOST]):
+            if _in_brackets(text, m.start()) or (not whole and m.end() > text.rfind("=")):
+                continue  # "x = 3 (rejected)": the reader turns that relation down itself
+            # a rejection turns down what comes before it in its sentence; a goal runs to the end
+            start, end = (
+                (_sentence_start(text, m.start()), m.end()) if whole else (m.start(), _sentence_end(text, m.end()))
+            )
+            text = text[:start] + " " * (end - start) + text[end:]
+    return text
+
+
+def _in_brackets(text: str, i: int) -> bool:
+    head = text[:i]
+    return head.count("(") > head.count(")") or head.count("[") > head.count("]")
+
+
+def _sentence_start(text: str, i: int) -> int:
+    ends = [m.end() for m in _SENTENCE_END.finditer(text, 0, i)]
+    return ends[-1] if ends else 0
+
+
+def _sentence_end(text: str, i: int) -> int:
+    m = _SENTENCE_END.search(text, i)
+    return m.start() if m else len(text)
+
+
+#: An equation's tag after a relation: ``(1)``, ``...(2)``, ``…(3)``, ``--(4)``, ``[1]``, ``{2}``,
+#: ``eqn 1``, ``(eq. 2)``, ``(i)``; a number of 10 or more only after dots or a wide gap.
+_TAG = re.compile(
+    r"(?:(?P<gap>\s{2,}|\s*(?:\.{2,}|…|-{2,}|—)\s*)|\s)"
+    r"(?:\(\s*(?:eqn?\.?\s*)?(?P<a>\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|\[\s*(?P<b>\d{1,2}[a-z]?)\s*\]"
+    r"|\{\s*(?P<c>\d{1,2})\s*\}|eqn?\.?\s*(?P<d>\d{1,2}))\s*$"
+)
+#: A number in brackets after a value (its unrounded value, or the value to more figures).
+_UNROUNDED = re.compile(
+    r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²1]+){0,4})(?P<gap>\s+)"
+    r"\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)\s*(?:[A-Za-z/^\-\s·*⁻¹]*)\)\s*$"
+)
+#: A remark in square brackets after a relation, with a word in it (``[w left, 2.9 right]``).
+_SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
+
+
+#: Words after a tick (``= u  ✓ speed of Q is u``): the student's comment on the line.
+_AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\checkmark)\s*[^=✓✔]*$")
+#: A clause after a comma that says no more of the value (``= u(2 + 3e), in its original direction``).
+_CLAUSE = re.compile(
+    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the)\b"
+    r"(?![^=\d]*\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way)\b)[^=\d()\[\]]*$",
+    re.I,
+)
+
+
+#: A pointer after a relation (``<- answer``, ``← this one``); one that withdraws it is :func:`unmarked`'s.
+_POINTER = re.compile(r"\s*(?:<-+|←|⟵)[^=<>]*$")
+#: The figures it is given to (``(3 s.f.)``, ``(to 1 d.p.)``, ``(3sf)``, ``to 3 sig figs``).
+_FIGURES = re.compile(
+    r"(?:\s*\(\s*|\s+)(?:(?:to|correct\s+to|rounded\s+to)\s+)?\d\s?(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s?figs?\.?"
+    r"|significant\s+figures?|decimal\s+places?)\s?\)?\s*\.?\s*$",
+    re.I,
+)
+#: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
+_DIRECTION_WORDS = re.compile(r"\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way|up|down)", re.I)
+
+
+def _remark_in_brackets(text: str) -> str:
+    """``text`` without a remark in brackets at its end that starts with a word (``(from (1))``,
+    ``(by CLM)``): brackets nested or not, no ``=`` in it, no direction in it."""
+    if not text.endswith(")"):
+        return text
+    depth = 0
+    for i in range(len(text) - 1, -1, -1):
+        depth += {")": 1, "(": -1}.get(text[i], 0)
+        if depth == 0:
+            inner = text[i + 1 : -1]
+            head = re.match(r"\s*([A-Za-z]{2,})\b", inner)
+            if (
+                i > 0
+                and text[i - 1] == " "
+                and head
+                and head.group(1).lower() not in _MATH
+                and "=" not in inner
+                and not _DIRECTION_WORDS.search(inner)
+                and not REJECTED.search(inner)
+                and not _REJECTS.search(inner)
+            ):
+                return text[:i].rstrip()
+            return text
+    return text
+
+
+#: The longest note read after a relation (its patterns look at the end of a line only).
+NOTE_CHARS = 200
+
+
+def without_note(text: str) -> tuple[str, str]:
+    """A relation without the note after it, and its tag where the note is one ("" where none)."""
+    text = re.sub(r"\s{9,}", " " * 8, text.rstrip())  # a wide gap is a gap: bounded, as the work is
+    head, tail = text[:-NOTE_CHARS], text[-NOTE_CHARS:]
+    tail, tag = _note(tail, "=" in head)
+    return (head + tail).rstrip(), tag
+
+
+def _note(text: str, equals_before: bool) -> tuple[str, str]:
+    """The end of a relation without its note, and the tag (see :func:`without_note`)."""
+    pointed = _POINTER.sub("", text)
+    text = pointed if "=" in pointed or equals_before else text
+    text = _CLAUSE.sub("", _AFTER_TICK.sub("", text))
+    text = _remark_in_brackets(_FIGURES.sub("", text))
+    m = _SQUARE.search(text)
+    if m and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
+        text = text[: m.start()]  # "[w left, 2.9 right]"; "[(delta_0 + x)^2 - delta_0^2]" is mathematics
+    m = _UNROUNDED.search(text)
+    if m and _is_more_figures(m):
+        text = text[: m.start("gap")]
+    m = _TAG.search(text)
+    if m is None:
+        return text, ""
+    tag = m.group("a") or m.group("b") or m.group("c") or m.group("d")
+    if tag.isdigit() and int(tag) >= 10 and not m.group("gap"):
+        return text, ""  # "m g (40)": a factor, not a tag
+    return text[: m.start()].rstrip(), tag
+
+
+def _is_more_figures(m: re.Match) -> bool:
+    """Whether the bracketed number is the value before it to more figures, or a decimal after a
+    unit or a wide gap (an aside): ``1.49 m/s (1.4925)``; ``0.2 (28)`` and ``2u (1.5)`` are products."""
+    value, more, unit = m.group("value").lstrip("+-"), m.group("more").lstrip("+-"), m.group("unit").strip()
+    if "." not in more or (unit and not (is_unit(unit) or unit in ("%", "°"))):
+        return False
+    digits = value.replace(".", "").lstrip("0").rstrip("0") or "0"
+    same = more.replace(".", "").lstrip("0").startswith(digits[:-1] or digits)
+    return bool(same or unit or len(m.group("gap")) >= 2)
+
+
+#: Words that lead into a relation's first side (``CoM velocity V``, ``so θ``, ``speed V``): prose
+#: before a name; not "speed of A", "let x" (a declaration), "KE after" (a name in words).
+_PROSE_HEAD = re.compile(
+    r"^\s*(?:(?!(?:let|where|with|if|when|suppose|of|for|on|by|at|in|to|is|and|or|sub\w*|us\w+|put\w*|from|since"
+    r"|given|because|as|assum\w+|tak\w+|call\w*)\s)[A-Za-z][A-Za-z']{2,}\s+)+"
+    r"(?=(?:[A-Za-z]|[α-ωΑ-Ω])(?:_\{?\w{1,4}\}?|'{1,2}|\d)?\s*$)",
+    re.I,
+)
+
+
+#: A clause of words and a comma before a relation, and a verb that leads in (``Energy lost, using ΔKE``).
+_CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?")
+
+
+#: Words that lead into a side that is a number's working (``that's 0.3888/1.08``, ``which is 2 + 3``);
+#: not a quantity's name in words (``KE before 2 + 3`` is not read so).
+_WORDS_BEFORE_NUMBER = re.compile(
+    r"^\s*(?:(?!(?:KE|GPE|PE|speed|velocity|energy|momentum|impulse|lost|loss|before|after|gain|total|mass)\b)"
+    r"[A-Za-z]+(?:'[a-z]+)?\s+)+(?=[\d.(])",
+    re.I,
+)
+
+
+def name_after_words(side: str, math_words: frozenset[str]) -> str:
+    """A first side that is words and then a name (``CoM velocity V``) as the name alone; a clause
+    of words before a comma (``Energy lost, using ΔKE``) dropped."""
+    m = _CLAUSE_HEAD.match(side)
+    if m and side[m.end() :].strip() and all(w.lower() not in math_words for w in re.findall(r"\w+", m.group(0))):
+        side = side[m.end() :]
+    m = _WORDS_BEFORE_NUMBER.match(side)
+    if m and all(w.lower() not in math_words for w in re.findall(r"[A-Za-z]+", m.group(0))):
+        return side[m.end() :]  # "that's 0.3888/1.08": the words lead in
+    m = _PROSE_HEAD.match(side)
+    if m is None or any(w.lower() in math_words for w in m.group(0).split()):
+        return side
+    return side[m.end() :]
