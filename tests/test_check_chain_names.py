@@ -1,0 +1,74 @@
+"""A chain's derivation with names declared in words ("let x and y be the velocities of A and
+B after the impact") and a given copied wrongly: the names known as the stage's velocities,
+the copied given named as such, and the student's own values carried through the later lines
+and stages, so that one slip is one mistake. Every number is worked by hand from the problem
+files' givens (in the comments), never from derive's output."""
+
+from __future__ import annotations
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
+    """line number -> (status, slip name) of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    out: dict[int, tuple[str, str]] = {}
+    rank = ("not read", "correct", "carried", "wrong")
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            n = int(i.name)
+            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
+                out[n] = (i.status, i.slip)
+    return out
+
+
+def test_names_in_words_and_a_given_copied_wrongly_carried_through_the_stages() -> None:
+    # AQA M3 2007: A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward A, e = 0.8; then B hits a wall
+    # (e = 0.7). A's 3 copied as 5: 1.5 - 0.4 = 1.1 = 0.3x + 0.2y, y - x = 0.8(7) = 5.6,
+    # 0.5x + 1.12 = 1.1 -> x = -0.04, y = 5.56; the wall turns B back: -0.7(5.56) = -3.892.
+    # (Truly 0.5 = 0.3x + 0.2y, y - x = 4: x = -0.6, y = 3.4, w_B = -2.38.)
+    work = (
+        "A and B collide. Let x and y be the velocities of A and B after the impact.\n"
+        "0.3(5) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(5 + 2) = 5.6\n"
+        "0.3x + 0.2(x + 5.6) = 1.1\n"
+        "x = -0.04\n"
+        "y = 5.56\n"
+        "w_B = -0.7(5.56) = -3.892\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found.get(1, ("not read", ""))[0] in ("not read", "correct")  # the declaration is not marked
+    assert found[2] == ("wrong", "copied_wrong")
+    assert [found[n][0] for n in (3, 4, 5, 6, 7)] == ["carried"] * 5
+
+
+def test_names_in_words_right_are_correct_at_the_true_values() -> None:
+    # The same impact worked rightly: 0.9 - 0.4 = 0.5 = 0.3x + 0.2y, y - x = 0.8(5) = 4,
+    # 0.5x + 0.8 = 0.5 -> x = -0.6, y = 3.4.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(3 + 2)\n"
+        "x = -0.6\n"
+        "y = 3.4\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["correct"] * 4
+
+
+def test_a_speed_declared_in_words_after_the_wall_and_a_given_copied_wrongly() -> None:
+    # OCR M2 June 2011: B (0.2 kg) leaves the first impact at 2.9 m/s and the wall gives it an
+    # impulse of 0.68 N s: 0.68 = 0.2(w + 2.9) -> w = 0.5, e_wall = 0.5/2.9 = 0.172. The
+    # impulse copied as 0.86: w = 4.3 - 2.9 = 1.4, e_wall = 1.4/2.9 = 0.483 (carried).
+    work = "Let w be the speed of B after it hits the wall.\n0.86 = 0.2(w + 2.9)\nw = 1.4\ne_wall = 1.4/2.9 = 0.483\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert found.get(1, ("not read", ""))[0] in ("not read", "correct")
+    assert found[2] == ("wrong", "copied_wrong")
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_speed_declared_in_words_after_the_wall_right() -> None:
+    # 0.68 = 0.2(w + 2.9) -> w = 0.5; e_wall = 0.5/2.9 = 0.172.
+    work = "Let w be the speed of B after it hits the wall.\n0.68 = 0.2(w + 2.9)\nw = 0.5\ne_wall = w/2.9 = 0.172\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert [found[n][0] for n in (2, 3, 4)] == ["correct"] * 3
