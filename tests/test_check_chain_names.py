@@ -72,3 +72,18 @@ def test_a_speed_declared_in_words_after_the_wall_right() -> None:
     work = "Let w be the speed of B after it hits the wall.\n0.68 = 0.2(w + 2.9)\nw = 0.5\ne_wall = w/2.9 = 0.172\n"
     found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
     assert [found[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+
+
+def test_a_sum_of_numbers_worked_wrongly_in_a_chain_is_named_arithmetic() -> None:
+    # OCR M2 June 2015 as a chain: 0.2 kg thrown down at 5 m/s from 1.6 m (g = 9.8):
+    # v_1^2 = 25 + 31.36 = 56.36, added as 46.36; v_1 = sqrt(46.36) = 6.81 is carried.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 25 + 31.36 = 46.36\nv_1 = 6.81\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1] == ("wrong", "arithmetic")
+    assert found[2][0] == "carried"
+
+
+def test_a_chain_value_alone_written_wrongly_is_not_named_arithmetic_of_a_sum() -> None:
+    # v_1 = 7.2 where v_1 = sqrt(56.36) = 7.507: a value, no sum of numbers worked wrongly in it.
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", "v_1 = 7.2\n")
+    assert found[1][0] == "wrong" and found[1][1] != "copied_wrong"
