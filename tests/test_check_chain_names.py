@@ -6,6 +6,8 @@ files' givens (in the comments), never from derive's output."""
 
 from __future__ import annotations
 
+import pytest
+
 import derive
 
 
@@ -22,13 +24,24 @@ def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
     return out
 
 
-def test_names_in_words_and_a_given_copied_wrongly_carried_through_the_stages() -> None:
+SAID = (
+    "A and B collide. Let x and y be the velocities of A and B after the impact.",
+    "x, y = velocities of A, B after",
+    "Let the velocities of A and B after the impact be x and y.",
+    "x = A after, y = B after",
+    "x = velocity of A after the first impact; y = B's velocity after it",
+    "A's velocity after = x, B's velocity after = y",
+)
+
+
+@pytest.mark.parametrize("said", SAID)
+def test_names_in_words_and_a_given_copied_wrongly_carried_through_the_stages(said: str) -> None:
     # AQA M3 2007: A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward A, e = 0.8; then B hits a wall
     # (e = 0.7). A's 3 copied as 5: 1.5 - 0.4 = 1.1 = 0.3x + 0.2y, y - x = 0.8(7) = 5.6,
     # 0.5x + 1.12 = 1.1 -> x = -0.04, y = 5.56; the wall turns B back: -0.7(5.56) = -3.892.
     # (Truly 0.5 = 0.3x + 0.2y, y - x = 4: x = -0.6, y = 3.4, w_B = -2.38.)
     work = (
-        "A and B collide. Let x and y be the velocities of A and B after the impact.\n"
+        f"{said}\n"
         "0.3(5) - 0.2(2) = 0.3x + 0.2y\n"
         "y - x = 0.8(5 + 2) = 5.6\n"
         "0.3x + 0.2(x + 5.6) = 1.1\n"
@@ -87,3 +100,19 @@ def test_a_chain_value_alone_written_wrongly_is_not_named_arithmetic_of_a_sum() 
     # v_1 = 7.2 where v_1 = sqrt(56.36) = 7.507: a value, no sum of numbers worked wrongly in it.
     found = lines("chain-ocr-m2-2015-thrown-down-bounce", "v_1 = 7.2\n")
     assert found[1][0] == "wrong" and found[1][1] != "copied_wrong"
+
+
+@pytest.mark.parametrize(
+    "said", ["Let w be the velocity of B after the second impact.", "w = B's velocity after it hits the wall"]
+)
+def test_a_name_declared_for_the_second_impact_is_its_velocity(said: str) -> None:
+    # AQA M3 2007: B leaves the first impact at 3.4 m/s and the wall (e = 0.7) turns it back:
+    # its velocity after the second impact is -0.7(3.4) = -2.38 (its speed 2.38).
+    from derive.checking.chainnames import at, declared
+    from derive.checking.context import Context
+
+    solution = derive.solve(derive.load("chain-aqa-m3-2007-collide-again"))
+    names, lines = declared(Context(solution, None), [(1, said)])
+    (x,) = names.values()
+    assert lines == {1}
+    assert float(at(x, solution.values)) == pytest.approx(-2.38)

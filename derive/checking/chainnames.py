@@ -31,7 +31,18 @@ _ONE = re.compile(
 )
 _PAIR = re.compile(
     rf"(?<![\w\\]){_NAME}\s*(?:,|and)\s*{_NAME}\s+(?:be|are|=|for|denote|represent)\s+(?:the\s+)?(?:final\s+)?"
-    rf"(?:speeds?|velocit(?:y|ies))\s+of\s+(?:particles\s+|spheres\s+|balls\s+)?([A-Z])\s+and\s+([A-Z])\s+{_WHEN}"
+    rf"(?:speeds?|velocit(?:y|ies))\s+of\s+(?:particles\s+|spheres\s+|balls\s+)?([A-Z])\s*(?:,|and|&)\s*([A-Z])\s+{_WHEN}"
+)
+#: The same the other way round: "the velocities of A and B after the impact be x and y",
+#: "the speed of B after it hits the wall is w", "A's velocity after = p".
+_BEFORE_NAME = r"[^=;.]{0,40}?\s(?:be|are|is|=|:)\s*"
+_PAIR_BACK = re.compile(
+    rf"(?:speeds?|velocit(?:y|ies))\s+of\s+(?:particles\s+|spheres\s+|balls\s+)?([A-Z])\s*(?:,|and|&)\s*([A-Z])\s+"
+    rf"{_WHEN}{_BEFORE_NAME}{_NAME}\s*(?:,|and)\s*{_NAME}(?![\w(])"
+)
+_ONE_BACK = re.compile(
+    rf"(?:(?:speed|velocity)\s+of\s+(?:particle\s+|sphere\s+|ball\s+)?([A-Z])|\b([A-Z])(?:'s|’s)\s+(speed|velocity))\s+"
+    rf"{_WHEN}{_BEFORE_NAME}{_NAME}(?![\w(.])"
 )
 _ORDINAL = re.compile(r"\b(first|second|third|1st|2nd|3rd)\s+(?:impact|collision)", re.I)
 _SURFACE = re.compile(r"\b(wall|ground|floor|cushion|barrier|plane)\b")
@@ -45,7 +56,7 @@ def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
     """The names ``text`` declares in words (:func:`declared`), and the relations read without
     those that declare them (``p = A after`` is a name, not a relation to judge)."""
     said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
-    return said, [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and x[2][0] in said)]
+    return said, [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
 
 
 def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:
@@ -61,6 +72,8 @@ def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[
         plain = re.sub(r"\$|\\[()]|[{}]", "", text)
         found = [((m[1], m[3]), (m[2], m[4]), m[5], "speed" in m[0]) for m in _PAIR.finditer(plain)]
         found += [((m[1], m[2]), None, m[3], "speed" in m[0]) for m in _ONE.finditer(plain)]
+        found += [((m[4], m[1]), (m[5], m[2]), m[3], "speed" in m[0]) for m in _PAIR_BACK.finditer(plain)]
+        found += [((m[5], m[1] or m[2]), None, m[4], "speed" in m[0]) for m in _ONE_BACK.finditer(plain)]
         if not found:
             continue
         bodies = {f[0][1] for f in found} | {f[1][1] for f in found if f[1]}
