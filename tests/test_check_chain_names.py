@@ -116,3 +116,22 @@ def test_a_name_declared_for_the_second_impact_is_its_velocity(said: str) -> Non
     (x,) = names.values()
     assert lines == {1}
     assert float(at(x, solution.values)) == pytest.approx(-2.38)
+
+
+def test_a_slip_in_the_names_declared_in_words_carries_their_values_into_the_next_stage() -> None:
+    # AQA M3 2007: momentum right, 0.9 - 0.4 = 0.5 = 0.3x + 0.2y; B's velocity -2 taken as +2 in
+    # the restitution: y - x = 0.8(3 - 2) = 0.8 (truly 0.8(3 + 2) = 4). Then 0.5x + 0.16 = 0.5:
+    # x = 0.68, y = 1.48, and the wall (e = 0.7) turns B back at -0.7(1.48) = -1.036.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(3 - 2)\n"
+        "0.3x + 0.2(x + 0.8) = 0.5\n"
+        "x = 0.68\n"
+        "y = 1.48\n"
+        "w_B = -0.7(1.48) = -1.036\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2][0] == "correct"
+    assert found[3] == ("wrong", "b_sign")
+    assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4

@@ -46,7 +46,9 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
     items: list[Item] = []
     slips: list[str] = []
-    stages = stage_mistakes(ctx)
+    alias = chainnames.aliases(said, values)  # x, A's velocity after, is the chain's u_A
+    stages = chainnames.with_declared(stage_mistakes(ctx), alias)
+    written: list[list[sympy.Expr]] = []  # the relations read so far, for the student's own values
     previous: list[sympy.Expr] = []  # the relation just before, where it held
     wrong: set[str] = set()  # the numbers the student got wrong: a line worked from them is carried
     for r, sides, exprs in read:
@@ -80,6 +82,9 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
                 item = replace(item, slip="arithmetic")  # ``441 + 784 = 1125``: a sum worked wrongly
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= {x for x in decimals(sides[-1:]) if sympy.Rational(x) not in ctx.data}  # not a given
+        written.append(exprs)
+        if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
+            chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
         previous = exprs if item.status == "correct" else []
         items.append(item)
         if item.status == "correct" and slips and len(exprs) == 2:

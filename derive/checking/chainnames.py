@@ -220,3 +220,51 @@ def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
         return read_side(text, Open({}), False, False)
     except (ParseError, ValueError, TypeError):
         return None
+
+
+def aliases(said: Declared, values: dict) -> dict[sympy.Symbol, sympy.Symbol]:
+    """The declared names that are a value the chain names too (x, A's velocity after the
+    first impact, is u_A): found by number."""
+    out = {}
+    for p, x in said.items():
+        v = sympy.N(at(x, values))
+        for k, w in values.items():
+            if v.is_number and w.is_number and abs(v - sympy.N(w)) <= 1e-9 * max(1, abs(v)):
+                out[p] = k
+                break
+    return out
+
+
+def with_declared(stages: list, alias: dict) -> list:
+    """Each stage mistake's values (by the chain's names) with the declared names that are
+    those values too: a slip written in the student's names is named as in the chain's."""
+    return [(name, {**given, **{p: given[k] for p, k in alias.items() if k in given}}) for name, given in stages]
+
+
+def own_solved(
+    ctx: Context, written: list[list[sympy.Expr]], said: Declared, own: dict, defs: tuple[dict, dict]
+) -> None:
+    """After a slip in a line with names declared in words: the names solved from the
+    student's own relations in them so far (``0.3x + 0.2y = 0.5`` right, ``y - x = 0.8``
+    the slip: x = 0.68, y = 1.48), kept as the student's values, and as the values of the
+    chain's names they are, for the lines and stages after."""
+    alias, values = defs
+    unknown = set(said) & set().union(*(x.free_symbols for x in written[-1]))
+    if not unknown:
+        return
+    rest = {k: v for k, v in own.items() if k not in unknown}
+    eqs = []
+    for exprs in written:  # first side = last, in the names declared alone (the rest as the student has them)
+        eq = at((exprs[0] - exprs[-1]).xreplace(rest), values).xreplace(ctx.unit_subs())
+        if eq.free_symbols & unknown and eq.free_symbols <= unknown:
+            eqs.append(eq)
+    try:
+        found = sympy.solve(eqs, sorted(unknown, key=str), dict=True)
+    except (NotImplementedError, ValueError, TypeError):
+        return
+    if len(found) != 1 or set(found[0]) != unknown or any(x.free_symbols for x in found[0].values()):
+        return
+    for p, x in found[0].items():
+        own[p] = x
+        if p in alias:
+            own[alias[p]] = x
