@@ -46,7 +46,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
     items: list[Item] = []
     slips: list[str] = []
-    alias = chainnames.aliases(said, values)  # x, A's velocity after, is the chain's u_A
+    alias = chainnames.aliases(said, values, _givens(ctx))  # x, A's velocity after, is the chain's u_A
     stages = chainnames.with_declared(stage_mistakes(ctx), alias)
     written: list[list[sympy.Expr]] = []  # the relations read so far, for the student's own values
     previous: list[sympy.Expr] = []  # the relation just before, where it held

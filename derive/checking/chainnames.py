@@ -222,14 +222,14 @@ def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
         return None
 
 
-def aliases(said: Declared, values: dict) -> dict[sympy.Symbol, sympy.Symbol]:
+def aliases(said: Declared, values: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:
     """The declared names that are a value the chain names too (x, A's velocity after the
-    first impact, is u_A): found by number."""
+    first impact, is u_A): found by number, among the chain's results (not its ``givens``)."""
     out = {}
     for p, x in said.items():
         v = sympy.N(at(x, values))
         for k, w in values.items():
-            if v.is_number and w.is_number and abs(v - sympy.N(w)) <= 1e-9 * max(1, abs(v)):
+            if k not in givens and v.is_number and w.is_number and abs(v - sympy.N(w)) <= 1e-9 * max(1, abs(v)):
                 out[p] = k
                 break
     return out
