@@ -135,3 +135,22 @@ def test_a_slip_in_the_names_declared_in_words_carries_their_values_into_the_nex
     assert found[2][0] == "correct"
     assert found[3] == ("wrong", "b_sign")
     assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_a_given_restated_wrongly_in_a_chain_is_copied_wrong_and_carried() -> None:
+    # AQA M3 2007 with e written 0.6 (the problem gives 0.8): 0.5 = 0.3x + 0.2y (right),
+    # y - x = 0.6(5) = 3, 0.5x + 0.6 = 0.5 -> x = -0.2, y = 2.8; the wall: -0.7(2.8) = -1.96.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "e = 0.6\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.6(3 + 2) = 3\n"
+        "0.3x + 0.2(x + 3) = 0.5\n"
+        "x = -0.2\n"
+        "y = 2.8\n"
+        "w_B = -0.7(2.8) = -1.96\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2] == ("wrong", "copied_wrong")
+    assert found[3][0] == "correct"
+    assert [found[n][0] for n in (4, 5, 6, 7, 8)] == ["carried"] * 5

@@ -144,6 +144,15 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
     chain = ctx.solution.problem
     givens = [g for g in chain.givens if not g.unknown and g.value is not None and g.value.is_Rational and g.value]
     written = {abs(g.value) for g in givens}
+    if len(sides) == 2 and _NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
+        left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
+        g = next((g for g in givens if getattr(left, "name", None) == g.name and abs(g.value) != n), None)
+        world = _solved_with(chain, g.name, n) if g is not None else None
+        if world is not None:
+            return (
+                f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {sides[1].strip()}.",
+                world,
+            )
     for i, side in enumerate(sides):
         others = [t for k, t in enumerate(sides) if k != i]
         if _NUMBER.fullmatch(side.strip()) and (len(sides) > 2 or re.fullmatch(r"\s*[A-Za-z]\w*\s*", others[0])):
