@@ -146,7 +146,9 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
     written = {abs(g.value) for g in givens}
     if len(sides) == 2 and _NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
         left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
-        g = next((g for g in givens if getattr(left, "name", None) == g.name and abs(g.value) != n), None)
+        g = next(
+            (g for g in givens if getattr(left, "name", None) == g.name and n != g.value and n * g.value > 0), None
+        )
         world = _solved_with(chain, g.name, n) if g is not None else None
         if world is not None:
             return (
