@@ -13,10 +13,11 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from dataclasses import replace
+from functools import partial
 
 import sympy
 
-from derive.checking import mistakes, words
+from derive.checking import chainnames, mistakes, words
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
@@ -44,16 +45,19 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
     names = Open({s.name: s for s in values})
     read = _read(text, names)
-    mapping = _infer(ctx, read, values)
+    said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
+    mapping = _infer(ctx, read, values, said)
 
     def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
         return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
 
-    true_defs: dict[sympy.Symbol, sympy.Expr] = {}
-    own_defs: dict[sympy.Symbol, sympy.Expr] = {}
+    true_defs: dict[sympy.Symbol, sympy.Expr] = {p: chainnames.at(x, values) for p, x in said.items()}
+    own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
     items: list[Item] = []
     slips: list[str] = []
-    stages = stage_mistakes(ctx)
+    alias = chainnames.aliases(said, values, _givens(ctx))  # x, A's velocity after, is the chain's u_A
+    stages = chainnames.with_declared(stage_mistakes(ctx), alias)
+    written: list[list[sympy.Expr]] = []  # the relations read so far, for the student's own values
     previous: list[sympy.Expr] = []  # the relation just before, where it held
     wrong: set[str] = set()  # the numbers the student got wrong: a line worked from them is carried
     for r, sides, exprs in read:
@@ -73,15 +77,23 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
         if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
-        if item.status == "wrong" and not item.again:
+        if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
+            holds = partial(_holds, ctx, subs=[true_defs, values])
+            item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
+        if item.status == "wrong" and not item.again and not item.slip:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
             if not item.slip and _weight_as_mass(ctx, sides, reread, values, true_defs):
                 phrase = mistakes.phrase("weight_as_mass")
                 item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
+            if not item.slip and _numbers_unequal(ctx, sides, exprs, [true_defs, values]):
+                item = replace(item, slip="arithmetic")  # ``441 + 784 = 1125``: a sum worked wrongly
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
+        written.append(exprs)
+        if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
+            chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
         previous = exprs if item.status == "correct" else []
         items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
         if item.status == "correct" and slips and len(exprs) == 2:
@@ -156,6 +168,12 @@ def _solved_wrongly(exprs: list[sympy.Expr], previous: list[sympy.Expr], sides: 
     return names == {exprs[0]}
 
 
+def _numbers_unequal(ctx: Context, sides, exprs: list[sympy.Expr], subs: list[dict]) -> bool:
+    """Whether two sides next to each other, both of numbers only, are not equal (an arithmetic slip)."""
+    pairs = [(i, i + 1) for i in range(len(sides) - 1) if all(words.numbers_only(sides[k]) for k in (i, i + 1))]
+    return any(_holds(ctx, sides[i : k + 1], exprs[i : k + 1], subs) is False for i, k in pairs)
+
+
 def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
     """Each relation read: its sides and their expressions (a first side in words, ``velocity
     after = -5.24``, is a name of the student's own)."""
@@ -187,11 +205,12 @@ def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[
     return out
 
 
-def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.Expr]:
+def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Symbol, sympy.Expr]:
     """A name of the student's own (``h``, ``velocity after``) stands for the chain's value, of
     either sign, that makes the most relations hold where it is the only unknown; a name no
-    value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q)."""
-    found: dict[sympy.Symbol, sympy.Expr] = {}
+    value fits is what the first such relation solves it to be (``p + q = 7``: p = 7 - q).
+    A name declared in words (``said``) is known, not inferred."""
+    found: dict[sympy.Symbol, sympy.Expr] = dict(said)
     given = _givens(ctx)  # where a given and a result have one value (h_0 = h_2), the result first
     cands = [
         c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
@@ -212,7 +231,7 @@ def _infer(ctx: Context, read: list, values: dict) -> dict[sympy.Symbol, sympy.E
                 roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
                 if roots is not None:
                     found[p] = roots
-    return found
+    return {p: x for p, x in found.items() if p not in said}
 
 
 def _givens(ctx: Context) -> set[sympy.Symbol]:
@@ -334,7 +353,7 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         if _holds(ctx, sides[1:], own, [own_defs, values]):
             return item("carried", carried)
     if slips and exprs[0].is_Symbol and len(exprs) > 2 and _holds(ctx, sides[1:], exprs[1:], [true_defs, values]):
-        fixed = _put_right(sides[1], own_defs, values)  # ``v_2 = 0.7(7.53) = 5.27``, 7.53 the student's v_1
+        fixed = chainnames.put_right(sides[1], own_defs, values)  # ``v_2 = 0.7(7.53) = 5.27``, 7.53 the student's v_1
         if fixed is not None and _holds(ctx, sides[:2], [exprs[0], fixed], [true_defs, values]):
             return item("carried", carried)
     first = not slips
@@ -356,29 +375,6 @@ def _why(ctx: Context, sides, exprs: list[sympy.Expr], subs: list[dict]) -> str:
             break  # a formula in names: its value is none the student wrote
         return words.unequal(words.student_text(sides[i].strip()), left.real, sides[i + 1], right.real)
     return "its two sides are not equal (an arithmetic or algebra slip)."
-
-
-def _put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
-    """A side of numbers with each the student worked wrongly (a chain value's, as written on
-    its line) put back as its true value; None where it has none, or does not read."""
-    wrong = {v: values[k] for k, v in own_defs.items() if k in values and v.is_Rational and v != values[k]}
-    found = False
-
-    def true(m: re.Match) -> str:
-        nonlocal found
-        x = sympy.Rational(m.group(0))
-        if x not in wrong:
-            return m.group(0)
-        found = True
-        return f"({sympy.N(wrong[x], 15)})"
-
-    text = re.sub(r"(?<![\w.])\d+\.\d+", true, side)
-    if not found:
-        return None
-    try:
-        return read_side(text, Open({}), False, False)
-    except (ParseError, ValueError, TypeError):
-        return None
 
 
 def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: StageMistakes) -> Item:

@@ -1,0 +1,281 @@
+"""A chain's names declared in words, and a given copied wrongly into a chain's line.
+
+"p = A after, q = B after", "let x and y be the velocities of A and B after the first
+impact", "w = velocity of B after" name an impact stage's velocities, which the chain may
+not name itself (A's velocity after the first impact): each is known as the chain's
+expression of it (:func:`declared`). A line that holds once a number in it is put back as
+a given (``m(9) = mp + mq`` where A's speed is 7) copies that given wrongly; the chain
+solved again with the given as copied is then the student's own values, carried through
+the later lines and stages (:func:`copied`), so one slip in a chain is one mistake.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import replace
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.naming import PREFIX, Open, read_side
+from derive.checking.report import Item
+from derive.errors import InputError
+from derive.problem.expr import ParseError
+
+_NAME = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
+_WHEN = r"(?:just\s+|immediately\s+)?(after|before)\b"
+_ONE = re.compile(
+    rf"(?<![\w\\]){_NAME}\s*(?:=|:|is|be|for|denotes?|represents?)\s*(?:the\s+)?(?:(?:final\s+)?(?:speed|velocity)\s+of\s+)?"
+    rf"(?:particle\s+|sphere\s+|ball\s+)?([A-Z])(?:'s|’s)?\s+(?:(?:speed|velocity)\s+)?{_WHEN}"
+)
+_PAIR = re.compile(
+    rf"(?<![\w\\]){_NAME}\s*(?:,|and)\s*{_NAME}\s+(?:be|are|=|for|denote|represent)\s+(?:the\s+)?(?:final\s+)?"
+    rf"(?:speeds?|velocit(?:y|ies))\s+of\s+(?:particles\s+|spheres\s+|balls\s+)?([A-Z])\s*(?:,|and|&)\s*([A-Z])\s+{_WHEN}"
+)
+#: The same the other way round: "the velocities of A and B after the impact be x and y",
+#: "the speed of B after it hits the wall is w", "A's velocity after = p".
+_BEFORE_NAME = r"[^=;.]{0,40}?\s(?:be|are|is|=|:)\s*"
+_PAIR_BACK = re.compile(
+    rf"(?:speeds?|velocit(?:y|ies))\s+of\s+(?:particles\s+|spheres\s+|balls\s+)?([A-Z])\s*(?:,|and|&)\s*([A-Z])\s+"
+    rf"{_WHEN}{_BEFORE_NAME}{_NAME}\s*(?:,|and)\s*{_NAME}(?![\w(])"
+)
+_ONE_BACK = re.compile(
+    rf"(?:(?:speed|velocity)\s+of\s+(?:particle\s+|sphere\s+|ball\s+)?([A-Z])|\b([A-Z])(?:'s|’s)\s+(speed|velocity))\s+"
+    rf"{_WHEN}{_BEFORE_NAME}{_NAME}(?![\w(.])"
+)
+_ORDINAL = re.compile(r"\b(first|second|third|1st|2nd|3rd)\s+(?:impact|collision)", re.I)
+_SURFACE = re.compile(r"\b(wall|ground|floor|cushion|barrier|plane)\b")
+_ORDINALS = {"first": 0, "1st": 0, "second": 1, "2nd": 1, "third": 2, "3rd": 2}
+
+#: A declared name: its symbol (the student's own) -> the chain's expression of what it stands for.
+Declared = dict[sympy.Symbol, sympy.Expr]
+
+
+def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
+    """The names ``text`` declares in words (:func:`declared`), and the relations read without
+    those that declare them (``p = A after`` is a name, not a relation to judge)."""
+    said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
+    return said, [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+
+
+def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:
+    """The names the lines declare in words, each as the chain's expression of the impact
+    stage's velocity it names, and the numbers of the lines that declare them. The stage is
+    the one the line names by its order ("after the second impact"), else the first impact
+    whose bodies are those named, from the stage of the declaration before it on."""
+    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    out: Declared = {}
+    where: set[int] = set()
+    last = 0
+    for number, text in lines:
+        plain = re.sub(r"\$|\\[()]|[{}]", "", text)
+        found = [((m[1], m[3]), (m[2], m[4]), m[5], "speed" in m[0]) for m in _PAIR.finditer(plain)]
+        found += [((m[1], m[2]), None, m[3], "speed" in m[0]) for m in _ONE.finditer(plain)]
+        found += [((m[4], m[1]), (m[5], m[2]), m[3], "speed" in m[0]) for m in _PAIR_BACK.finditer(plain)]
+        found += [((m[5], m[1] or m[2]), None, m[4], "speed" in m[0]) for m in _ONE_BACK.finditer(plain)]
+        if not found:
+            continue
+        bodies = {f[0][1] for f in found} | {f[1][1] for f in found if f[1]}
+        k = _stage(impacts, bodies, plain, last)
+        if k is None:
+            continue
+        last = k
+        for first, second, when, speed in found:
+            for name, body in (first, second) if second else (first,):
+                x = _velocity(ctx, impacts[k], body, when.lower() == "after")
+                if x is not None:
+                    x = sympy.Abs(x) if speed else x  # a speed is the velocity's size
+                    out.setdefault(sympy.Symbol(PREFIX + name.replace("{", "").replace("}", "")), x)
+                    where.add(number)
+    return out, where
+
+
+def _stage(impacts: list, bodies: set[str], text: str, last: int) -> int | None:
+    """The index of the impact stage a declaration names (see :func:`declared`)."""
+    m = _ORDINAL.search(text)
+    if m and _ORDINALS[m.group(1).lower()] < len(impacts):
+        return _ORDINALS[m.group(1).lower()]
+    fits = [k for k, st in enumerate(impacts) if bodies <= set(st.part.problem.labels)]
+    said = set(_SURFACE.findall(text.lower()))  # "after it hits the wall": the stage with the wall
+    fits = [k for k in fits if said & set(_SURFACE.findall(str(impacts[k].title).lower()))] or fits
+    later = [k for k in fits if k >= last]
+    return (later or fits or [None])[0]
+
+
+def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
+    """The chain's expression of ``body``'s velocity in an impact stage, after or before."""
+    part = stage.part
+    labels = part.problem.labels
+    if body not in labels:
+        return None
+    key = f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}"
+    chain = {str(s): s for s in ctx.solution.values}
+    inner = {}
+    for g in part.problem.givens:
+        outer = g.definition if g.definition is not None else chain.get(g.name, g.value)
+        if outer is not None:
+            inner[g.name] = outer
+    r = part.results.get(key)
+    x = r.closed if r is not None else inner.get(key)
+    if x is None:
+        return None
+    x = x.xreplace({s: inner[s.name] for s in x.free_symbols if s.name in inner})
+    return x.xreplace({s: chain[s.name] for s in x.free_symbols if s.name in chain})
+
+
+def at(x: sympy.Expr, values: dict) -> sympy.Expr:
+    """``x`` with the chain's values put in (by name: a stage's symbols may differ in assumptions)."""
+    by_name = {str(k): v for k, v in values.items()}
+    return x.xreplace({s: by_name[s.name] for s in x.free_symbols if s.name in by_name})
+
+
+#: How a side is read again in the chain's names, and whether sides read so hold for the problem.
+Reread = Callable[[str], sympy.Expr]
+Holds = Callable[[tuple[str, ...], list[sympy.Expr]], bool]
+
+_NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.]|\.\d)")
+
+
+def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -> tuple[str, dict] | None:
+    """A given copied wrongly into a line of working (a number that, put back as the given,
+    makes the line hold; not the value a line works out, ``v = 9``): the words of the slip,
+    and the chain's values solved again with the given as copied (None where it is not so)."""
+    chain = ctx.solution.problem
+    givens = [g for g in chain.givens if not g.unknown and g.value is not None and g.value.is_Rational and g.value]
+    written = {abs(g.value) for g in givens}
+    if len(sides) == 2 and _NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
+        left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
+        g = next(
+            (g for g in givens if getattr(left, "name", None) == g.name and n != g.value and n * g.value > 0), None
+        )
+        world = _solved_with(chain, g.name, n) if g is not None else None
+        if world is not None:
+            return (
+                f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {sides[1].strip()}.",
+                world,
+            )
+    for i, side in enumerate(sides):
+        others = [t for k, t in enumerate(sides) if k != i]
+        if _NUMBER.fullmatch(side.strip()) and (len(sides) > 2 or re.fullmatch(r"\s*[A-Za-z]\w*\s*", others[0])):
+            continue  # ``v = 9``, ``3 + 4 = 9``: a value worked out, not a given copied into working
+        for token in dict.fromkeys(_NUMBER.findall(side)):
+            n = sympy.Rational(token)
+            if n in written or n == 0:
+                continue
+            for g in givens:
+                fixed = list(sides)
+                value = str(abs(g.value))
+                fixed[i] = _NUMBER.sub(lambda m, t=token, v=value: v if m.group(0) == t else m.group(0), side)
+                try:
+                    exprs = [reread(s) for s in fixed]
+                except (ParseError, ValueError, TypeError, ArithmeticError, InputError):
+                    continue
+                if not holds(tuple(fixed), exprs):
+                    continue
+                world = _solved_with(chain, g.name, n if g.value > 0 else -n)
+                if world is not None:
+                    return (
+                        f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {token}.",
+                        world,
+                    )
+    return None
+
+
+def _solved_with(chain, name: str, value: sympy.Expr) -> dict | None:
+    """The chain's values with the given ``name`` as ``value`` (None where it does not solve)."""
+    from derive.physics.chain import run_chain
+
+    givens = tuple(replace(g, value=value) if g.name == name else g for g in chain.givens)
+    try:
+        return dict(run_chain(replace(chain, givens=givens)).values)
+    except (InputError, ValueError, TypeError, ArithmeticError, KeyError, IndexError):
+        return None
+
+
+def _shown(x: sympy.Expr) -> str:
+    return str(x) if x.is_Integer else f"{float(x):g}"
+
+
+def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, own: dict, said: Declared) -> Item:
+    """The first slip, where it is a given copied wrongly into the working: named so, and the
+    chain solved again with the given as copied kept in ``own`` as the student's own values
+    (the names declared in words too), for the lines and stages after it."""
+    found = copied(ctx, tuple(sides), reread, holds)
+    if found is None:
+        return item
+    words, world = found
+    own.update({sympy.Symbol(str(k)): v for k, v in world.items()})
+    own.update({p: at(x, world) for p, x in said.items()})
+    return replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}{words}")
+
+
+def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
+    """A side of numbers with each the student worked wrongly (a chain value's, as written on
+    its line) put back as its true value; None where it has none, or does not read."""
+    wrong = {v: values[k] for k, v in own_defs.items() if k in values and v.is_Rational and v != values[k]}
+    found = False
+
+    def true(m: re.Match) -> str:
+        nonlocal found
+        x = sympy.Rational(m.group(0))
+        if x not in wrong:
+            return m.group(0)
+        found = True
+        return f"({sympy.N(wrong[x], 15)})"
+
+    text = re.sub(r"(?<![\w.])\d+\.\d+", true, side)
+    if not found:
+        return None
+    try:
+        return read_side(text, Open({}), False, False)
+    except (ParseError, ValueError, TypeError):
+        return None
+
+
+def aliases(said: Declared, values: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:
+    """The declared names that are a value the chain names too (x, A's velocity after the
+    first impact, is u_A): found by number, among the chain's results (not its ``givens``)."""
+    out = {}
+    for p, x in said.items():
+        v = sympy.N(at(x, values))
+        for k, w in values.items():
+            if k not in givens and v.is_number and w.is_number and abs(v - sympy.N(w)) <= 1e-9 * max(1, abs(v)):
+                out[p] = k
+                break
+    return out
+
+
+def with_declared(stages: list, alias: dict) -> list:
+    """Each stage mistake's values (by the chain's names) with the declared names that are
+    those values too: a slip written in the student's names is named as in the chain's."""
+    return [(name, {**given, **{p: given[k] for p, k in alias.items() if k in given}}) for name, given in stages]
+
+
+def own_solved(
+    ctx: Context, written: list[list[sympy.Expr]], said: Declared, own: dict, defs: tuple[dict, dict]
+) -> None:
+    """After a slip in a line with names declared in words: the names solved from the
+    student's own relations in them so far (``0.3x + 0.2y = 0.5`` right, ``y - x = 0.8``
+    the slip: x = 0.68, y = 1.48), kept as the student's values, and as the values of the
+    chain's names they are, for the lines and stages after."""
+    alias, values = defs
+    unknown = set(said) & set().union(*(x.free_symbols for x in written[-1]))
+    if not unknown:
+        return
+    rest = {k: v for k, v in own.items() if k not in unknown}
+    eqs = []
+    for exprs in written:  # first side = last, in the names declared alone (the rest as the student has them)
+        eq = at((exprs[0] - exprs[-1]).xreplace(rest), values).xreplace(ctx.unit_subs())
+        if eq.free_symbols & unknown and eq.free_symbols <= unknown:
+            eqs.append(eq)
+    try:
+        found = sympy.solve(eqs, sorted(unknown, key=str), dict=True)
+    except (NotImplementedError, ValueError, TypeError):
+        return
+    if len(found) != 1 or set(found[0]) != unknown or any(x.free_symbols for x in found[0].values()):
+        return
+    for p, x in found[0].items():
+        own[p] = x
+        if p in alias:
+            own[alias[p]] = x

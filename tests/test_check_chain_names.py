@@ -1,0 +1,156 @@
+"""A chain's derivation with names declared in words ("let x and y be the velocities of A and
+B after the impact") and a given copied wrongly: the names known as the stage's velocities,
+the copied given named as such, and the student's own values carried through the later lines
+and stages, so that one slip is one mistake. Every number is worked by hand from the problem
+files' givens (in the comments), never from derive's output."""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
+    """line number -> (status, slip name) of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    out: dict[int, tuple[str, str]] = {}
+    rank = ("not read", "correct", "carried", "wrong")
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            n = int(i.name)
+            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
+                out[n] = (i.status, i.slip)
+    return out
+
+
+SAID = (
+    "A and B collide. Let x and y be the velocities of A and B after the impact.",
+    "x, y = velocities of A, B after",
+    "Let the velocities of A and B after the impact be x and y.",
+    "x = A after, y = B after",
+    "x = velocity of A after the first impact; y = B's velocity after it",
+    "A's velocity after = x, B's velocity after = y",
+)
+
+
+@pytest.mark.parametrize("said", SAID)
+def test_names_in_words_and_a_given_copied_wrongly_carried_through_the_stages(said: str) -> None:
+    # AQA M3 2007: A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward A, e = 0.8; then B hits a wall
+    # (e = 0.7). A's 3 copied as 5: 1.5 - 0.4 = 1.1 = 0.3x + 0.2y, y - x = 0.8(7) = 5.6,
+    # 0.5x + 1.12 = 1.1 -> x = -0.04, y = 5.56; the wall turns B back: -0.7(5.56) = -3.892.
+    # (Truly 0.5 = 0.3x + 0.2y, y - x = 4: x = -0.6, y = 3.4, w_B = -2.38.)
+    work = (
+        f"{said}\n"
+        "0.3(5) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(5 + 2) = 5.6\n"
+        "0.3x + 0.2(x + 5.6) = 1.1\n"
+        "x = -0.04\n"
+        "y = 5.56\n"
+        "w_B = -0.7(5.56) = -3.892\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found.get(1, ("not read", ""))[0] in ("not read", "correct")  # the declaration is not marked
+    assert found[2] == ("wrong", "copied_wrong")
+    assert [found[n][0] for n in (3, 4, 5, 6, 7)] == ["carried"] * 5
+
+
+def test_names_in_words_right_are_correct_at_the_true_values() -> None:
+    # The same impact worked rightly: 0.9 - 0.4 = 0.5 = 0.3x + 0.2y, y - x = 0.8(5) = 4,
+    # 0.5x + 0.8 = 0.5 -> x = -0.6, y = 3.4.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(3 + 2)\n"
+        "x = -0.6\n"
+        "y = 3.4\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["correct"] * 4
+
+
+def test_a_speed_declared_in_words_after_the_wall_and_a_given_copied_wrongly() -> None:
+    # OCR M2 June 2011: B (0.2 kg) leaves the first impact at 2.9 m/s and the wall gives it an
+    # impulse of 0.68 N s: 0.68 = 0.2(w + 2.9) -> w = 0.5, e_wall = 0.5/2.9 = 0.172. The
+    # impulse copied as 0.86: w = 4.3 - 2.9 = 1.4, e_wall = 1.4/2.9 = 0.483 (carried).
+    work = "Let w be the speed of B after it hits the wall.\n0.86 = 0.2(w + 2.9)\nw = 1.4\ne_wall = 1.4/2.9 = 0.483\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert found.get(1, ("not read", ""))[0] in ("not read", "correct")
+    assert found[2] == ("wrong", "copied_wrong")
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_speed_declared_in_words_after_the_wall_right() -> None:
+    # 0.68 = 0.2(w + 2.9) -> w = 0.5; e_wall = 0.5/2.9 = 0.172.
+    work = "Let w be the speed of B after it hits the wall.\n0.68 = 0.2(w + 2.9)\nw = 0.5\ne_wall = w/2.9 = 0.172\n"
+    found = lines("chain-ocr-m2-2011-find-e-mass-then-wall", work)
+    assert [found[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+
+
+def test_a_sum_of_numbers_worked_wrongly_in_a_chain_is_named_arithmetic() -> None:
+    # OCR M2 June 2015 as a chain: 0.2 kg thrown down at 5 m/s from 1.6 m (g = 9.8):
+    # v_1^2 = 25 + 31.36 = 56.36, added as 46.36; v_1 = sqrt(46.36) = 6.81 is carried.
+    work = "v_1^2 = 5^2 + 2(9.8)(1.6) = 25 + 31.36 = 46.36\nv_1 = 6.81\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1] == ("wrong", "arithmetic")
+    assert found[2][0] == "carried"
+
+
+def test_a_chain_value_alone_written_wrongly_is_not_named_arithmetic_of_a_sum() -> None:
+    # v_1 = 7.2 where v_1 = sqrt(56.36) = 7.507: a value, no sum of numbers worked wrongly in it.
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", "v_1 = 7.2\n")
+    assert found[1][0] == "wrong" and found[1][1] != "copied_wrong"
+
+
+@pytest.mark.parametrize(
+    "said", ["Let w be the velocity of B after the second impact.", "w = B's velocity after it hits the wall"]
+)
+def test_a_name_declared_for_the_second_impact_is_its_velocity(said: str) -> None:
+    # AQA M3 2007: B leaves the first impact at 3.4 m/s and the wall (e = 0.7) turns it back:
+    # its velocity after the second impact is -0.7(3.4) = -2.38 (its speed 2.38).
+    from derive.checking.chainnames import at, declared
+    from derive.checking.context import Context
+
+    solution = derive.solve(derive.load("chain-aqa-m3-2007-collide-again"))
+    names, lines = declared(Context(solution, None), [(1, said)])
+    (x,) = names.values()
+    assert lines == {1}
+    assert float(at(x, solution.values)) == pytest.approx(-2.38)
+
+
+def test_a_slip_in_the_names_declared_in_words_carries_their_values_into_the_next_stage() -> None:
+    # AQA M3 2007: momentum right, 0.9 - 0.4 = 0.5 = 0.3x + 0.2y; B's velocity -2 taken as +2 in
+    # the restitution: y - x = 0.8(3 - 2) = 0.8 (truly 0.8(3 + 2) = 4). Then 0.5x + 0.16 = 0.5:
+    # x = 0.68, y = 1.48, and the wall (e = 0.7) turns B back at -0.7(1.48) = -1.036.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.8(3 - 2)\n"
+        "0.3x + 0.2(x + 0.8) = 0.5\n"
+        "x = 0.68\n"
+        "y = 1.48\n"
+        "w_B = -0.7(1.48) = -1.036\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2][0] == "correct"
+    assert found[3] == ("wrong", "b_sign")
+    assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_a_given_restated_wrongly_in_a_chain_is_copied_wrong_and_carried() -> None:
+    # AQA M3 2007 with e written 0.6 (the problem gives 0.8): 0.5 = 0.3x + 0.2y (right),
+    # y - x = 0.6(5) = 3, 0.5x + 0.6 = 0.5 -> x = -0.2, y = 2.8; the wall: -0.7(2.8) = -1.96.
+    work = (
+        "Let x and y be the velocities of A and B after the impact.\n"
+        "e = 0.6\n"
+        "0.3(3) - 0.2(2) = 0.3x + 0.2y\n"
+        "y - x = 0.6(3 + 2) = 3\n"
+        "0.3x + 0.2(x + 3) = 0.5\n"
+        "x = -0.2\n"
+        "y = 2.8\n"
+        "w_B = -0.7(2.8) = -1.96\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2] == ("wrong", "copied_wrong")
+    assert found[3][0] == "correct"
+    assert [found[n][0] for n in (4, 5, 6, 7, 8)] == ["carried"] * 5
