@@ -21,3 +21,23 @@ def test_a_given_kept_as_a_letter_says_its_unit_without_nested_parentheses() -> 
     assert notes[r"\alpha"] == "kept as a symbol, in degrees"
     tex = derive.render(solution("notes-4c12-cue-ball"), "tex")
     assert r"\item $v_{A1}$ (kept as a symbol, in m/s)" in tex and "(kept as a symbol (" not in tex
+
+
+#: How maths typed in ASCII looks in a title, a statement or a question: a teacher hands out
+#: "tan β = e₁ tan α" and "30°", never "tan(beta) = e_1 tan(alpha)" and "30 deg".
+_ASCII_MATHS = re.compile(r"\b(?:alpha|beta|theta|lambda|phi|sqrt)\b|\b\d+ deg\b|\b[a-zA-Z]_\d\b|\b(?:sin|cos|tan)\(")
+
+
+def test_bundled_problems_say_their_maths_as_printed_not_as_typed_in_ascii() -> None:
+    """A bundled problem's title, statement and question are text on every page and LMS
+    export: Greek letters, degrees, roots and subscripts in the characters they print as."""
+    import tomllib
+    from pathlib import Path
+
+    found = []
+    for path in sorted((Path(__file__).parents[1] / "problems").glob("*.toml")):
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        for field in ("title", "statement", "question"):
+            text = re.sub(r"\{[^{}]*\}", "", str(data.get(field, "")))  # placeholders are typeset
+            found += [f"{path.stem} {field}: {m.group(0)!r}" for m in _ASCII_MATHS.finditer(text)]
+    assert not found, "\n".join(found)
