@@ -1,0 +1,43 @@
+"""A body's quantity in words under the problem's own labels of the bodies (``speed of Q after``,
+``P's velocity``): read as A and B, as the names in words are, and each line shown as typed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from derive.checking.inference import Read
+
+#: A body's quantity in words (``speed of Q after``, ``P's velocity``, ``Q after``), the label between.
+_BODY_PHRASE = (
+    (r"(\b(?i:speed|velocity|direction|momentum|KE|energy)\s+of\s+)", r"\b"),
+    (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction))"),
+    (r"((?:^|[:*,;(]|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),
+)
+
+
+def body_words(text: str, labels: tuple[str, str]) -> str:
+    """``text`` with the problem's own labels of the bodies (or the exam's P and Q) written A and B
+    where words say a body's quantity (``speed of Q after``), as the names in words are read; one
+    letter for one, so that every line keeps its length."""
+    if tuple(labels) == ("A", "B"):
+        labels = ("P", "Q")  # the exam's letters, as the names in words read them (wordnames)
+    if any(len(x) != 1 for x in labels) or set(labels) & {"A", "B"}:
+        return text
+    for label, body in zip(labels, "AB", strict=True):
+        for before, after in _BODY_PHRASE:
+            text = re.sub(before + re.escape(label) + after, lambda m, b=body: m.group(1) + b, text, flags=re.M)
+    return text
+
+
+def as_typed(line: Read, text: str, said: str) -> Read:
+    """``line`` (read from ``said``, :func:`body_words`) written as the student typed it."""
+    if said == text:
+        return line
+    typed, read = text.splitlines(), said.splitlines()
+    n = line.number - 1
+    if n >= len(read) or read[n] == typed[n] or line.written not in read[n]:
+        return line
+    at = read[n].find(line.written)
+    return replace(line, written=typed[n][at : at + len(line.written)])
