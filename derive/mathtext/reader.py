@@ -63,6 +63,13 @@ _ARROW = re.compile(
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
+#: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
+_PART = re.compile(
+    r"^\s*(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
+    r"(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)|(?:[a-h]|[ivx]{1,4})\))(?:\s*\(\s*(?:[a-h]|[ivx]{1,4})\s*\))*"
+    r"\s*[:.]?\s+(?=[^\s=+*/^)-])",
+    re.I,
+)
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
     rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*\s]?lb|slug|ft|lb)"
@@ -347,6 +354,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     text = _outer(text)
+    text = _PART.sub("", text, count=1)
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
