@@ -191,4 +191,3 @@ def _zero(ctx: Context, name: str) -> bool:
         return True
     x = r.closed if r.closed is not None else r.value
     return x is not None and sympy.sympify(x).is_zero is True
-
