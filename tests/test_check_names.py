@@ -263,3 +263,13 @@ def test_a_greek_name_worked_out_to_a_given_angle_is_that_angle() -> None:
     # at 40° φ is the student's own angle, not the given: u cos 40° is not the component along
     other = work.replace("sin φ = 1/2, so φ = 30°", "φ = 40°")
     assert by_line(AQA_30, other)["3"] == "wrong"
+
+
+def test_a_name_said_in_words_is_a_declaration_not_a_relation() -> None:
+    # the 2m at 5u on 3m problem: "p = A's velocity after, q = B's" says what p and q are; it is
+    # neither judged nor read as a relation in the names "A's" and "B's"
+    work = "p = A's velocity after, q = B's\n10mu = 2mp + 3mq\n"
+    r = report("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    judged = {i.name for i in r.items if i.kind == "line"}
+    assert "1" not in judged and "2" in judged
+    assert not any("_ps" in n for n in r.notes), r.notes

@@ -29,7 +29,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, notes_names, subscript
-from derive.checking.wordnames import in_words
+from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
@@ -394,7 +394,7 @@ def _post(ctx: Context, body: str) -> sympy.Expr | None:
 def declaration(line: str) -> bool:
     """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
     line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
-    return bool(_DECLARE.match(line) or _POSITIVE.match(line))
+    return bool(_DECLARE.match(line) or _POSITIVE.match(line) or says_what(line))
 
 
 def declares(r: Relation, first: bool) -> bool:

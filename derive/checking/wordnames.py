@@ -191,3 +191,17 @@ def _zero(ctx: Context, name: str) -> bool:
         return True
     x = r.closed if r.closed is not None else r.value
     return x is not None and sympy.sympify(x).is_zero is True
+
+
+#: A relation that only says what a name is: ``x = P's velocity after``, ``y = Q's``,
+#: ``v = velocity of A after``: a declaration, not a relation to judge.
+_SAID = re.compile(
+    r"^\s*[A-Za-z](?:_?\w{1,3})?\s*=\s*(?:the\s+)?(?:\w+['’]s(?:\s+(?:final\s+|new\s+)?(?:speed|velocity|vel\b)|\s*$)"
+    r"|(?:final\s+)?(?:speed|velocity|vel\.?)\s+of\s+)[^=]*$",
+    re.I,
+)
+
+
+def says_what(relation: str) -> bool:
+    """Whether ``relation`` (``x = P's velocity after``) only says in words what a name is."""
+    return bool(_SAID.match(relation))
