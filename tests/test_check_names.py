@@ -273,3 +273,16 @@ def test_a_name_said_in_words_is_a_declaration_not_a_relation() -> None:
     judged = {i.name for i in r.items if i.kind == "line"}
     assert "1" not in judged and "2" in judged
     assert not any("_ps" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("text", "sides"),
+    [
+        ("a = mu g = 0.3(9.8) = 2.94", ("a", "mu g", "0.3(9.8)", "2.94")),
+        ("friction F = mu m g", ("friction F", "mu m g")),
+        ("s = 4.5 m", ("s", "4.5")),
+    ],
+)
+def test_a_letter_after_a_name_is_a_factor_not_a_unit(text: str, sides: tuple) -> None:
+    # g, m, s, N end a side as a unit only after a number: mu g is μ times g
+    assert [r.sides for r in read_relations(text)] == [sides]

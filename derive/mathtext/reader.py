@@ -73,7 +73,7 @@ _PART = re.compile(
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
     rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s]?s|Ns|lb[·*]s|kg|kJ|J|ft[·*\s]?lb|slug|ft|lb)"
-    r"|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 
