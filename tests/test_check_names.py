@@ -286,3 +286,9 @@ def test_a_name_said_in_words_is_a_declaration_not_a_relation() -> None:
 def test_a_letter_after_a_name_is_a_factor_not_a_unit(text: str, sides: tuple) -> None:
     # g, m, s, N end a side as a unit only after a number: mu g is μ times g
     assert [r.sides for r in read_relations(text)] == [sides]
+
+
+@pytest.mark.parametrize("tag", ["...(1)", "…(1)", " .....(1)"])
+def test_a_tag_after_dots_is_a_tag(tag: str) -> None:
+    # a tag led by dots, as in a textbook: 2u = x + 2y ...(1) is the relation 2u = x + 2y
+    assert [(r.sides, r.tag) for r in read_relations(f"2u = x + 2y   {tag}")] == [(("2u", "x + 2y"), "1")]

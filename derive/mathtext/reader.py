@@ -61,7 +61,7 @@ _ARROW = re.compile(
 )
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
-_TAG_END = re.compile(r"\s\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")
+_TAG_END = re.compile(r"(?:\s|\s?(?:\.{2,}|…))\(\s*(\d{1,2}[a-z]?|[ivx]{1,4}|[ijk])\s*\)\s*$")  # (1), ...(1)
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 #: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
 _PART = re.compile(
