@@ -292,3 +292,11 @@ def test_a_letter_after_a_name_is_a_factor_not_a_unit(text: str, sides: tuple) -
 def test_a_tag_after_dots_is_a_tag(tag: str) -> None:
     # a tag led by dots, as in a textbook: 2u = x + 2y ...(1) is the relation 2u = x + 2y
     assert [(r.sides, r.tag) for r in read_relations(f"2u = x + 2y   {tag}")] == [(("2u", "x + 2y"), "1")]
+
+
+def test_delta_ke_typed_with_the_greek_capital_is_the_energy_lost() -> None:
+    # MEI 2023, A (0.5 kg at 6) catches B (2 kg at 2), A moves on at 0.2: 3 + 4 = 0.1 + 2v, v = 3.45;
+    # lost 13 - (0.01 + 11.9025) = 1.0875 J. ½m(u - v)² for each body is the wrong formula:
+    # 8.41 + 2.1025 = 10.51, carried
+    work = "3 + 4 = 0.1 + 2v, v = 3.45\nΔKE = ½(0.5)(6 − 0.2)² + ½(2)(3.45 − 2)²\n= 8.41 + 2.1025 = 10.51 J\n"
+    assert by_line("ocr-mei-fmm-2023-a-speed-0p2-forward", work) == {"1": "correct", "2": "wrong", "3": "carried"}

@@ -38,7 +38,7 @@ from derive.problem.units import DIMENSIONLESS, MASS
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
