@@ -300,3 +300,9 @@ def test_delta_ke_typed_with_the_greek_capital_is_the_energy_lost() -> None:
     # 8.41 + 2.1025 = 10.51, carried
     work = "3 + 4 = 0.1 + 2v, v = 3.45\nΔKE = ½(0.5)(6 − 0.2)² + ½(2)(3.45 − 2)²\n= 8.41 + 2.1025 = 10.51 J\n"
     assert by_line("ocr-mei-fmm-2023-a-speed-0p2-forward", work) == {"1": "correct", "2": "wrong", "3": "carried"}
+
+
+def test_a_line_continued_with_approximately_equal_is_continued() -> None:
+    # "  ≈ 7.5 J" under "= 7.51" continues the relation above it, as "  = 7.5" would
+    got = [(r.line, r.sides, r.lead) for r in read_relations("T = 3 + 4.51\n  = 7.51\n  ≈ 7.5 J\n")]
+    assert got[-1] == (3, ("7.51", "7.5"), "T")

@@ -106,7 +106,8 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     out: list[Relation] = []
     for line, column, written, plain in pieces(text):
         lead = ""
-        if plain.lstrip().startswith("=") and written.lstrip(" &$\\[").startswith("=") and out:  # "  = 6.4": continued
+        if plain.lstrip().startswith(("=", "≈")) and written.lstrip(" &$\\[").startswith(("=", "≈")) and out:
+            # "  = 6.4", "  ≈ 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
             plain = f"{above.sides[-1]} {plain}"
             lead = above.lead or above.sides[0]
