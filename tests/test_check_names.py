@@ -306,3 +306,17 @@ def test_a_line_continued_with_approximately_equal_is_continued() -> None:
     # "  ≈ 7.5 J" under "= 7.51" continues the relation above it, as "  = 7.5" would
     got = [(r.line, r.sides, r.lead) for r in read_relations("T = 3 + 4.51\n  = 7.51\n  ≈ 7.5 J\n")]
     assert got[-1] == (3, ("7.51", "7.5"), "T")
+
+
+@pytest.mark.parametrize(
+    "declared", ["A is deflected through δ", "δ is the deflection of A", "δ = angle of deflection"]
+)
+def test_the_deflection_declared_in_words(declared: str) -> None:
+    # the same impact: A's path after is at φ to the line of centres, tan φ = 2/(sqrt(3)(1 - e)),
+    # and A came in at 30° on the same side, so it turns through δ = φ - 30°
+    work = (
+        f"{declared}\n"
+        "A's path after makes an angle φ with the line of centres\n"
+        "tan φ = 2/(sqrt(3)(1 - e))\ntan δ = (tan φ - tan 30)/(1 + tan φ tan 30)\n"
+    )
+    assert by_line(AQA_30, work).get("4") == "correct"

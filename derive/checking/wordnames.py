@@ -147,6 +147,14 @@ _ANGLE_IS = re.compile(
     rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name='')}",
     re.I,
 )
+#: "θ is the deflection (of A)", "A is deflected through θ": the angle its velocity turns through.
+_DEFLECTION = re.compile(
+    rf"(?<![\w\\]){_ANGLE_NAME}\s+(?:is|=|denotes?|be)\s+(?:the\s+)?(?:angle\s+of\s+)?deflection(?:\s+of\s+(\w+))?",
+    re.I,
+)
+_DEFLECTED = re.compile(
+    rf"\b(\w+)\s+(?:is\s+)?deflected\s+(?:through|by)\s+(?:an\s+angle\s+(?:of\s+)?)?{_ANGLE_NAME}\b", re.I
+)
 _ANGLE_MAKES = re.compile(rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name=_ANGLE_NAME)}", re.I)
 
 
@@ -162,10 +170,12 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     out: dict[str, sympy.Expr] = {}
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
+    found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
+    found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
     given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
     for name, body, line_of in found:
-        b = _leaving(_body(body, ctx), ctx)
-        key = f"{'beta' if re.match(r'l', line_of, re.I) else 'theta'}_{b}2"
+        b = _leaving(_body(body, ctx), ctx) if line_of != "deflection" else _body(body, ctx) or "A"
+        key = f"delta_{b}" if line_of == "deflection" else f"{'beta' if line_of[0] in 'lL' else 'theta'}_{b}2"
         if b and key in names:
             name = name.lstrip("\\")
             name = _GREEK_LETTERS.get(name, name)
