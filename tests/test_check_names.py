@@ -180,3 +180,143 @@ def test_a_sentence_after_the_last_number_is_not_part_of_it() -> None:
     # the wall (e = 0.4): "e = 0.4. The ball …" is e = 0.4, not 0.4 times a name
     work = "e = 0.4. The ball rebounds.\ne = 0.4. θ is the angle with the wall\n"
     assert by_line("edexcel-m2-ball-rebounds-from-wall", work) == {"1": "correct", "2": "correct"}
+
+
+CAR = "web2calc-car-rear-ends-car-find-mass"
+PUCKS = "young-freedman-8-96-pucks-find-mass"
+
+
+@pytest.mark.parametrize("label", ["(a)", "(ii)", "b)", "Q3(b)", "part (c):", "(a)(i)"])
+def test_a_part_label_before_a_relation_is_not_a_name(label: str) -> None:
+    # the car (1200 kg at 10 m/s) locks onto a parked car, both move on at 6 m/s:
+    # 12000 = 6(1200 + M), 6M = 4800, M = 800 kg; e = 0 (they move together)
+    work = f"{label} 1200(10) = (1200 + M)(6)\n6M = 4800\n{label} M = 800\n{label} e = 0\n"
+    assert by_line(CAR, work) == {"1": "correct", "2": "correct", "3": "correct", "4": "correct"}
+
+
+def test_the_one_mass_to_find_written_m_is_that_mass_even_in_a_slip() -> None:
+    # the pucks (e = 1): B leaves at 0.2 + 0.05 = 0.25 m/s; 0.04(0.2) = 0.04(0.05) + m(0.25),
+    # 0.008 = 0.002 + 0.25 m, m = 0.024 kg. Writing 0.02 for 0.04 x 0.05 is a slip:
+    # 0.25 m = -0.012, m = -0.048, carried
+    work = "v = 0.05 + 0.2 = 0.25\n0.04(0.2) = 0.04(0.05) + m(0.25)\n0.008 = 0.02 + 0.25m\nm = -0.048\n"
+    assert by_line(PUCKS, work) == {"1": "correct", "2": "correct", "3": "wrong", "4": "carried"}
+
+
+def test_names_declared_by_whose_velocity_they_are_and_by_ellipsis() -> None:
+    # Edexcel M2 June 2004 Q5 (2m at 5u hits 3m at rest): 10u = 2p + 3q and q - p = 5eu give
+    # p = (2 - 3e)u, q = 2(1 + e)u. The declaration names q by ellipsis ("q = B's")
+    work = (
+        "p = A's velocity after, q = B's, both the way A moved\n"
+        "10mu = 2mp + 3mq\nq - p = 5eu\np = (2 - 3e)u\nq = 2(1 + e)u\n"
+    )
+    r = report("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert any(n.startswith("Declared:") and "q is v_B2" in n and "p is v_A2" in n for n in r.notes), r.notes
+    lines = by_line("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert [lines[k] for k in "2345"] == ["correct"] * 4
+
+
+AQA_30 = "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(
+    ("declared", "tangent"),
+    [
+        ("φ is the angle A's new path makes with the line of centres", False),
+        ("A's path after the impact makes an angle φ with the line of centres", False),
+        ("$\\phi$ = the angle that A's velocity after makes with the l.o.c.", False),
+        ("φ is the angle A's path makes with the common tangent", True),
+    ],
+)
+def test_an_angle_after_the_impact_declared_in_words(declared: str, tangent: bool) -> None:
+    # identical balls, A at u at 30° to the line of centres, B at rest: along it p + q = u cos 30,
+    # q - p = e u cos 30, p = sqrt(3) u (1 - e)/4; across A keeps u/2. So from the line of
+    # centres tan φ = (u/2)/p = 2/(sqrt(3)(1 - e)); from the tangent tan φ = p/(u/2) = sqrt(3)(1 - e)/2
+    last = "tan φ = sqrt(3)(1 - e)/2" if tangent else "tan φ = 2/(sqrt(3)(1 - e))"
+    work = (
+        "let p and q be the velocities of A and B along the line of centres after\n"
+        "p = (sqrt(3)/4) u (1 - e)\n"
+        f"{declared}\n{last}\n"
+    )
+    assert by_line(AQA_30, work).get("4") == "correct"
+
+
+def test_an_angle_plus_a_bare_number_is_in_degrees() -> None:
+    # the same impact: A's path after is at φ to the line of centres, tan φ = 2/(sqrt(3)(1 - e));
+    # the deflection is φ - 30°, and tan(φ - 30°) = (tan φ - tan 30)/(1 + tan φ tan 30)
+    work = (
+        "let p and q be the velocities of A and B along the line of centres after\n"
+        "A's path after makes an angle φ with the line of centres\n"
+        "tan φ = 2/(sqrt(3)(1 - e))\nδ = φ - 30\n"
+        "tan δ = (tan φ - tan 30)/(1 + tan φ tan 30)\n"
+    )
+    assert by_line(AQA_30, work).get("5") == "correct"
+
+
+def test_a_greek_name_worked_out_to_a_given_angle_is_that_angle() -> None:
+    # the same impact (line of centres at 30° to A's path): sin φ = 1/2 gives φ = 30°, the given
+    # angle; then p + q = u cos 30, q - p = e u cos 30 and q = (1 + e) u cos 30/2
+    work = (
+        "let p and q be the velocities of A and B along the line of centres after\n"
+        "sin φ = 1/2, so φ = 30°\np + q = u cos φ\nq - p = e u cos φ\nq = (1 + e) u cos(φ)/2\n"
+    )
+    assert by_line(AQA_30, work) == {"2": "correct", "3": "correct", "4": "correct", "5": "correct"}
+    # at 40° φ is the student's own angle, not the given: u cos 40° is not the component along
+    other = work.replace("sin φ = 1/2, so φ = 30°", "φ = 40°")
+    assert by_line(AQA_30, other)["3"] == "wrong"
+
+
+def test_a_name_said_in_words_is_a_declaration_not_a_relation() -> None:
+    # the 2m at 5u on 3m problem: "p = A's velocity after, q = B's" says what p and q are; it is
+    # neither judged nor read as a relation in the names "A's" and "B's"
+    work = "p = A's velocity after, q = B's\n10mu = 2mp + 3mq\n"
+    r = report("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    judged = {i.name for i in r.items if i.kind == "line"}
+    assert "1" not in judged and "2" in judged
+    assert not any("_ps" in n for n in r.notes), r.notes
+
+
+@pytest.mark.parametrize(
+    ("text", "sides"),
+    [
+        ("a = mu g = 0.3(9.8) = 2.94", ("a", "mu g", "0.3(9.8)", "2.94")),
+        ("friction F = mu m g", ("F", "mu m g")),  # "friction": words before the name
+        ("s = 4.5 m", ("s", "4.5")),
+    ],
+)
+def test_a_letter_after_a_name_is_a_factor_not_a_unit(text: str, sides: tuple) -> None:
+    # g, m, s, N end a side as a unit only after a number: mu g is μ times g
+    assert [r.sides for r in read_relations(text)] == [sides]
+
+
+@pytest.mark.parametrize("tag", ["...(1)", "…(1)", " .....(1)"])
+def test_a_tag_after_dots_is_a_tag(tag: str) -> None:
+    # a tag led by dots, as in a textbook: 2u = x + 2y ...(1) is the relation 2u = x + 2y
+    assert [(r.sides, r.tag) for r in read_relations(f"2u = x + 2y   {tag}")] == [(("2u", "x + 2y"), "1")]
+
+
+def test_delta_ke_typed_with_the_greek_capital_is_the_energy_lost() -> None:
+    # MEI 2023, A (0.5 kg at 6) catches B (2 kg at 2), A moves on at 0.2: 3 + 4 = 0.1 + 2v, v = 3.45;
+    # lost 13 - (0.01 + 11.9025) = 1.0875 J. ½m(u - v)² for each body is the wrong formula:
+    # 8.41 + 2.1025 = 10.51, carried
+    work = "3 + 4 = 0.1 + 2v, v = 3.45\nΔKE = ½(0.5)(6 − 0.2)² + ½(2)(3.45 − 2)²\n= 8.41 + 2.1025 = 10.51 J\n"
+    assert by_line("ocr-mei-fmm-2023-a-speed-0p2-forward", work) == {"1": "correct", "2": "wrong", "3": "carried"}
+
+
+def test_a_line_continued_with_approximately_equal_is_continued() -> None:
+    # "  ≈ 7.5 J" under "= 7.51" continues the relation above it, as "  = 7.5" would
+    got = [(r.line, r.sides, r.lead) for r in read_relations("T = 3 + 4.51\n  = 7.51\n  ≈ 7.5 J\n")]
+    assert got[-1] == (3, ("7.51", "7.5"), "T")
+
+
+@pytest.mark.parametrize(
+    "declared", ["A is deflected through δ", "δ is the deflection of A", "δ = angle of deflection"]
+)
+def test_the_deflection_declared_in_words(declared: str) -> None:
+    # the same impact: A's path after is at φ to the line of centres, tan φ = 2/(sqrt(3)(1 - e)),
+    # and A came in at 30° on the same side, so it turns through δ = φ - 30°
+    work = (
+        f"{declared}\n"
+        "A's path after makes an angle φ with the line of centres\n"
+        "tan φ = 2/(sqrt(3)(1 - e))\ntan δ = (tan φ - tan 30)/(1 + tan φ tan 30)\n"
+    )
+    assert by_line(AQA_30, work).get("4") == "correct"

@@ -202,6 +202,9 @@ class Context:
                 out[f"v_{b}2"] = (symbol(f"v_{b}2", "positive"), sympy.sqrt(n**2 + t**2))
                 out[f"theta_{b}2"] = (symbol(f"theta_{b}2"), sympy.atan2(n, t))
                 out[f"beta_{b}2"] = (symbol(f"beta_{b}2"), sympy.atan2(t, n))
+                n1, t1 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}1t")
+                if n1 is not None and t1 is not None:  # the angle its velocity turns through
+                    out[f"delta_{b}"] = (symbol(f"delta_{b}"), sympy.atan2(abs(n1 * t - t1 * n), n1 * n + t1 * t))
         tA1, tB1, tA2, tB2 = (nm.A1t, nm.B1t, nm.A2t, nm.B2t) if p.oblique else (0, 0, 0, 0)
         T1 = kinetic_energy(model.m_A, nm.A1n, tA1) + kinetic_energy(model.m_B, nm.B1n, tB1)
         T2 = kinetic_energy(model.m_A, nm.A2n, tA2) + kinetic_energy(model.m_B, nm.B2n, tB2)

@@ -28,8 +28,8 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.context import Context
-from derive.checking.spellings import greek_letters, notes_names, subscript
-from derive.checking.wordnames import in_words
+from derive.checking.spellings import angle_sum_in_degrees, greek_letters, notes_names, subscript
+from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
@@ -38,7 +38,7 @@ from derive.problem.units import DIMENSIONLESS, MASS
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:\\?Delta\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
@@ -120,6 +120,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
+    text = angle_sum_in_degrees(text)  # θ = α − 30, 90 − θ
     text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
 
     def split(m: re.Match) -> str:
@@ -350,8 +351,10 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
         if not (together and both):
             out["v"] = lone
     masses = [g.symbol for g in p.givens if g.unknown and g.dim == MASS]
-    if len(masses) == 1:
+    if len(masses) == 1:  # the one mass to find: M, or m where no given mass is written with m
         out["M"] = masses[0]
+        if not any(str(s) == "m" for g in p.givens for x in (g.value, g.definition) if x for s in x.free_symbols):
+            out["m"] = masses[0]
     return out
 
 
@@ -391,7 +394,7 @@ def _post(ctx: Context, body: str) -> sympy.Expr | None:
 def declaration(line: str) -> bool:
     """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
     line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
-    return bool(_DECLARE.match(line) or _POSITIVE.match(line))
+    return bool(_DECLARE.match(line) or _POSITIVE.match(line) or says_what(line))
 
 
 def declares(r: Relation, first: bool) -> bool:

@@ -20,7 +20,7 @@ import sympy
 from derive.checking.context import DEG, Context
 from derive.checking.naming import GREEK, PREFIX
 from derive.checking.numeric import number_of
-from derive.problem.units import VELOCITY
+from derive.problem.units import ANGLE, VELOCITY
 
 
 def own_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr]) -> None:
@@ -34,6 +34,25 @@ def own_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr]) -> None
         verdicts = [_holds_at(r.exprs, {p: value, DEG: sympy.pi / 180}) for r in raw if r.exprs and _alone(r.exprs, p)]
         if False in verdicts and True not in verdicts:
             del meanings[name]
+    _given_angles(ctx, raw, meanings, numeric)
+
+
+def _given_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], numeric: dict) -> None:
+    """``sin θ = r/2r = 1/2 ⇒ θ = 30°``: a Greek name of no meaning whose every relation alone in
+    it holds at one given angle's value (and at no other's) is that given angle."""
+    angles = [g.symbol for g in ctx.problem.givens if g.dim == ANGLE and sympy.Symbol(g.symbol.name) in numeric]
+    names = {s.name[len(PREFIX) :] for r in raw if r.exprs for e in r.exprs for s in e.free_symbols}
+    for name in sorted(n for n in names if n in GREEK and n not in meanings):
+        p = sympy.Symbol(PREFIX + name)
+        alone = [r.exprs for r in raw if r.exprs and _alone(r.exprs, p)]
+        fits = [
+            a
+            for a in angles
+            if alone
+            and all(_holds_at(x, {p: numeric[sympy.Symbol(a.name)], DEG: sympy.pi / 180}) is True for x in alone)
+        ]
+        if len(fits) == 1:
+            meanings[name] = fits[0]
 
 
 def _alone(exprs: tuple[sympy.Expr, ...], p: sympy.Symbol) -> bool:

@@ -46,3 +46,16 @@ def notes_names(text: str) -> str:
     text = re.sub(r"\b[vV]_([AB])([nt])([12])\b", r"v_\1\3\2", text)
     text = re.sub(r"\bM_([AB])\b", r"m_\1", text)
     return re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", text)
+
+
+#: A side that is an angle letter plus or minus a bare number (``alpha - 30``, ``90 - theta``).
+_ANGLE_LETTER = r"(?:alpha|beta|gamma|delta|theta|phi|psi|varphi|vartheta|[αβγδθφψϕϑ])(?:_?\w{1,3})?"
+_ANGLE_SUM = re.compile(
+    rf"(?:^\s*{_ANGLE_LETTER}\s*[-+]\s*\d+\.?\d*(?=\s*$)|^\s*\d+\.?\d*(?=\s*[-+]\s*{_ANGLE_LETTER}\s*$))"
+)
+
+
+def angle_sum_in_degrees(side: str) -> str:
+    """``alpha - 30`` -> ``alpha - 30°``, ``90 - θ`` -> ``90° - θ``: a bare number added to an
+    angle letter is degrees, as the angle's are (a student writes them so)."""
+    return _ANGLE_SUM.sub(lambda m: m.group(0).rstrip() + "°", side)

@@ -19,6 +19,8 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     a direct impact's velocities by body and time, an oblique impact's components along the line
     of centres (where the line says so)."""
     out = _direct(line, ctx)
+    for name, x in [*_possessive(line, ctx).items(), *_angles(line, ctx).items()]:
+        out.setdefault(name, x)
     for name, x in _along(line, ctx).items():
         out.setdefault(name, x)
     return out
@@ -97,3 +99,119 @@ def _body(words: str, ctx: Context) -> str:
             masses[g.name[-1]] = re.sub(r"[\s*]", "", str(x))
     hits = [k for k, v in masses.items() if v == w.replace("*", "")]
     return hits[0] if len(hits) == 1 else ""
+
+
+#: "x = P's velocity after, y = Q's": a name set to a body's velocity, and the next ones by ellipsis.
+_POSSESSIVE = re.compile(
+    rf"\b{_NAME_WORD}\s*(?:=|is|denotes?|for)\s*(?:the\s+)?(\w+)['’]s\s+(?:final\s+)?(?:speed|velocity|vel\.?)"
+    r"\s+(?:just\s+|immediately\s+)?(after|before)\b",
+    re.I,
+)
+_ELLIPSIS = re.compile(rf"^\s*(?:,|;|and)\s*{_NAME_WORD}\s*(?:=|is|for)\s*(?:the\s+)?(\w+)['’]s\b(?!\s+\w)", re.I)
+
+
+def _possessive(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``x = P's velocity after, y = Q's`` -> {x: v_A2, y: v_B2}: a direct impact's velocities
+    named by whose they are, a second name by ellipsis (the same quantity, the other body)."""
+    if ctx.problem.oblique:
+        return {}
+    plain = re.sub(r"\\[A-Za-z]+\{[^{}]*\}|\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    for m in _POSSESSIVE.finditer(plain):
+        when = "2" if m[3].lower() == "after" else "1"
+        found = [(m[1], m[2])]
+        more = _ELLIPSIS.match(plain[m.end() :])
+        if more:
+            found.append((more[1], more[2]))
+        for name, body in found:
+            b = _body(body, ctx)
+            if b and f"v_{b}{when}" in names:
+                out.setdefault(name.replace("{", "").replace("}", ""), names[f"v_{b}{when}"][0])
+    return out
+
+
+#: Greek letters as typed (β) and as the parser names them (beta).
+_GREEK_LETTERS = {"α": "alpha", "β": "beta", "γ": "gamma", "δ": "delta", "θ": "theta", "φ": "phi", "ψ": "psi"}
+_ANGLE_NAME = r"(\\?[A-Za-z]{1,7}|[αβγδθφψ])"
+_PATH = r"(?:new\s+|final\s+)?(?:path|velocity|direction(?:\s+of\s+motion)?|motion)"
+_AFTER = r"(?:\s+(?:after|afterwards|now)(?:\s+the\s+(?:impact|collision))?)?"
+_WITH = (
+    r"makes?\s+(?:an?\s+)?(?:acute\s+)?(?:angle\s+)?(?:of\s+)?{name}?\s*with\s+(?:the\s+)?"
+    r"(line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\.?|wall|cushion|(?:common\s+)?tangent|plane\s+of\s+contact)"
+)
+#: "β is the angle Q's new path makes with the line of centres"; "A's path after makes angle α
+#: with the l.o.c."; "θ = angle between B's velocity and the wall".
+_ANGLE_IS = re.compile(
+    rf"(?<![\w\\]){_ANGLE_NAME}\s+(?:is|=|denotes?|be)\s+(?:the\s+)?(?:acute\s+)?angle\s+(?:that\s+)?"
+    rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name='')}",
+    re.I,
+)
+#: "θ is the deflection (of A)", "A is deflected through θ": the angle its velocity turns through.
+_DEFLECTION = re.compile(
+    rf"(?<![\w\\]){_ANGLE_NAME}\s+(?:is|=|denotes?|be)\s+(?:the\s+)?(?:angle\s+of\s+)?deflection(?:\s+of\s+(\w+))?",
+    re.I,
+)
+_DEFLECTED = re.compile(
+    rf"\b(\w+)\s+(?:is\s+)?deflected\s+(?:through|by)\s+(?:an\s+angle\s+(?:of\s+)?)?{_ANGLE_NAME}\b", re.I
+)
+_ANGLE_MAKES = re.compile(rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name=_ANGLE_NAME)}", re.I)
+
+
+def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``β is the angle Q's new path makes with the line of centres`` -> {beta: beta_A2}: an
+    angle after the impact declared in words, from the line of centres (derive's beta, tan = t/n)
+    or from the wall or tangent (derive's theta, tan = n/t). Where the words name no body derive
+    knows (the statement's P and Q), the one body that leaves off the line of centres."""
+    if not ctx.problem.oblique:
+        return {}
+    plain = re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
+    found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
+    found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
+    found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
+    given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
+    for name, body, line_of in found:
+        b = _leaving(_body(body, ctx), ctx) if line_of != "deflection" else _body(body, ctx) or "A"
+        key = f"delta_{b}" if line_of == "deflection" else f"{'beta' if line_of[0] in 'lL' else 'theta'}_{b}2"
+        if b and key in names:
+            name = name.lstrip("\\")
+            name = _GREEK_LETTERS.get(name, name)
+            if name not in given:
+                out.setdefault(name, names[key][0])
+    return out
+
+
+def _leaving(body: str, ctx: Context) -> str:
+    """``body``, or where it is "" or moves on along the line of centres, the one body whose
+    velocity after has a component across it ("" where none or both)."""
+    across = [b for b in "AB" if not _zero(ctx, f"v_{b}2t")]
+    if body in across:
+        return body
+    return across[0] if len(across) == 1 else ""
+
+
+def _zero(ctx: Context, name: str) -> bool:
+    """Whether derive's result ``name`` is zero (or absent)."""
+    try:
+        r = ctx.results[name]
+    except (KeyError, LookupError):
+        return True
+    x = r.closed if r.closed is not None else r.value
+    return x is not None and sympy.sympify(x).is_zero is True
+
+
+#: A relation that only says what a name is: ``x = P's velocity after``, ``y = Q's``,
+#: ``v = velocity of A after``: a declaration, not a relation to judge.
+_SAID = re.compile(
+    r"^\s*[A-Za-z](?:_?\w{1,3})?\s*=\s*(?:the\s+)?(?:\w+['’]s(?:\s+(?:final\s+|new\s+)?(?:speed|velocity|vel\b)|\s*$)"
+    r"|(?:final\s+)?(?:speed|velocity|vel\.?)\s+of\s+)[^=]*$",
+    re.I,
+)
+
+
+def says_what(relation: str) -> bool:
+    """Whether ``relation`` (``x = P's velocity after``) only says in words what a name is."""
+    return bool(_SAID.match(relation))

@@ -92,6 +92,9 @@ def meaning(name: str, problem: Any) -> str:
     m = re.fullmatch(r"m_([AB])", name)
     if m:
         return f"{_body(problem, m.group(1))} mass"
+    m = re.fullmatch(r"delta_([AB])", name)
+    if m:
+        return f"the angle {_body(problem, m.group(1))} velocity turns through in the impact (its deflection)"
     fixed = {
         "e": "the coefficient of restitution",
         "T_1": "the kinetic energy before the impact",

@@ -66,16 +66,21 @@ _ARROW = re.compile(
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
-#: A question's part leading in: ``(a)``, ``(ii)``, ``b)``, ``Q1(b):``, ``(b)(i)``.
-_PART = re.compile(r"^\s*(?:Q\s?\d{1,2}\s*)?(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)\s*)+:?\s+|^\s*(?:[a-h]|[ivx]{1,4})\)\s+")
 #: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
 _REF = r"\d*\s*[×x*]?\s*(?:\(\s*\d{1,2}[a-z]?\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
 _COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
+#: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
+_PART = re.compile(
+    r"^\s*(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
+    r"(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)|(?:[a-h]|[ivx]{1,4})\))(?:\s*\(\s*(?:[a-h]|[ivx]{1,4})\s*\))*"
+    r"\s*[:.]?\s+(?=[^\s=+*/^)-])",
+    re.I,
+)
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
 _UNIT_END = re.compile(
     rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
-    r"|(?<=\s)(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m)
+    r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
 
@@ -109,7 +114,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     for line, column, written, plain in pieces(text):
         plain = unmarked(unbold(plain))
         lead = ""
-        if plain.lstrip().startswith("=") and _CONTINUED.match(written) and out:  # "  = 6.4": continued
+        if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
             plain = f"{above.sides[-1]} {plain}"
             lead = above.lead or above.sides[0]
@@ -373,7 +378,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     tag = without_note(written_text)[1]
-    text = _outer(_PART.sub("", _COMBINED.sub("", text.lstrip(" ,;:"))))
+    text = _outer(_PART.sub("", _COMBINED.sub("", text.lstrip(" ,;:")), count=1))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
