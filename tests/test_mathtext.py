@@ -123,3 +123,63 @@ def test_a_hostile_row_is_refused_with_a_latex_error(row: str) -> None:
     with pytest.raises(LatexError):  # not RecursionError
         parser.Parser(row, lenient=True).relations()
     assert time.perf_counter() - start < 1.0
+
+
+@pytest.mark.parametrize(
+    ("text", "plain"),
+    [
+        ("sqrt3 u", "sqrt(3)*u"),  # the root of 3 times u, as √3 u is
+        ("(sqrt2/2) v", "(sqrt(2)/2)*v"),
+        ("1/sqrt5", "1/sqrt(5)"),
+        ("w/(sqrt3(1+k))", "w/(sqrt(3)*(1+k))"),
+        ("sqrt 7", "sqrt(7)"),
+        ("x_sqrt3", "x_sqrt3"),  # part of a name: kept
+    ],
+)
+def test_a_root_glued_to_its_number_is_the_root(text: str, plain: str) -> None:
+    from derive.mathtext.notation import student
+
+    assert student(text) == plain
+
+
+@pytest.mark.parametrize("mark", ["∎", "□", "■", "QED", "Q.E.D.", "qed", r"\qed", r"\blacksquare", r"\square"])
+def test_the_mark_that_ends_a_proof_is_not_part_of_the_relation(mark: str) -> None:
+    assert [r.sides for r in read_relations(f"(2 + k) w = 3 p   {mark}")] == [("(2 + k) w", "3 p")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("V = 4.1 x 2 = 8.2 m/s   (~29.5 km/h!!)", ("V", "4.1 x 2", "8.2")),
+        ("W = 19.6 N (about 2 kg)", ("W", "19.6")),
+        ("E = 2400 J (= 2.4 kJ)", ("E", "2400")),
+        ("v = 2u (1.5 m/s)", ("v", "2u (1.5 m/s)")),  # no unit before it: not an aside
+        ("x = 4 (3 + y)", ("x", "4 (3 + y)")),
+    ],
+)
+def test_the_value_again_in_another_unit_in_brackets_is_a_remark(text: str, expected: tuple[str, ...]) -> None:
+    assert [r.sides for r in read_relations(text)] == [expected]
+
+
+@pytest.mark.parametrize(
+    ("tex", "plain"),
+    [
+        (r"w = 3.5\ \text{m/s along } t", "w = 3.5 along t"),  # the unit dropped, the words kept
+        (r"w = 3.5\ \text{ft/s along the line}", "w = 3.5"),
+        (r"w = 3.5\ \text{m/s}", "w = 3.5"),
+    ],
+)
+def test_a_unit_and_then_words_in_one_text_is_a_unit_and_words(tex: str, plain: str) -> None:
+    assert latex_to_plain(tex) == plain
+
+
+def test_a_unit_and_words_before_a_unit_vector_stay_a_component() -> None:
+    assert ("w_t", "3.5") in [r.sides for r in read_relations(r"\[ w = 3.5\ \text{m/s along }\hat t \]")]
+
+
+@pytest.mark.parametrize("unit", ["lb s", "lb·s", "lb-s", "lbf s", "N-s", "slug ft/s", "lb ft/s"])
+def test_an_impulse_or_momentum_in_imperial_units_is_a_unit(unit: str) -> None:
+    from derive.mathtext.units import is_unit
+
+    assert is_unit(unit)
+    assert [r.sides for r in read_relations(rf"\[ I = 0.84\ \text{{{unit}}} \]")] == [("I", "0.84")]

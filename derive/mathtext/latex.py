@@ -113,16 +113,31 @@ def _prefix(parser: Parser, start: int, far: int) -> object | None:
 def _unit_text(m: re.Match) -> str:
     """A unit in text dropped (``\\text{m\\,s}^{-1}``), or kept in plain where it is a multiple
     of the SI unit (``\\mathrm{Mg}``: the reader writes the number in kg); other text as it was."""
-    return _unit_piece(m.group(0))
+    vector_next = re.match(r"\s*\\(?:hat|vec|mathbf|boldsymbol|bm)(?![A-Za-z])", m.string[m.end() :])
+    return _unit_piece(m.group(0), words=not vector_next)
 
 
-def _unit_piece(text: str) -> str:
+def _unit_piece(text: str, words: bool = False) -> str:
     plain = plain_unit(text)
     if not is_unit(plain):
         head = _unit_head(text)  # "\text{m s}^{-1} \text{ just before it hits}": the unit, then words
-        return text if head is None else _unit_piece(head) + " " + text[len(head) :]
+        if head is None:
+            return _unit_in_words(text) if words else text
+        return _unit_piece(head) + " " + text[len(head) :]
     scaled = plain in SCALED or plain.startswith("km")  # the reader writes 20 Mg, 36 km/h in SI
     return rf"\text{{{plain}}}" if scaled else " "
+
+
+def _unit_in_words(text: str) -> str:
+    """One ``\\text{…}`` that is a unit and then words (``\\text{ft/s along } n``): the unit
+    read as a unit, the words kept as words; other text as it was."""
+    m = re.fullmatch(r"\\(?:text|textrm|mbox)\s*\{\s*([^{}]*?)\s*\}", text)
+    words = m.group(1).split() if m else []
+    for k in range(min(3, len(words) - 1), 0, -1):
+        unit, rest = " ".join(words[:k]), " ".join(words[k:])
+        if is_unit(unit) and re.match(r"[A-Za-z]{2,}", rest):
+            return _unit_piece(rf"\text{{{unit}}}") + rf" \text{{ {rest} }}"
+    return text
 
 
 def _unit_head(text: str) -> str | None:

@@ -134,6 +134,18 @@ _FIGURES = re.compile(
     r"|significant\s+figures?|decimal\s+places?)\s?\)?\s*\.?\s*$",
     re.I,
 )
+#: The mark that ends a proof (``∎``, ``□``, ``\\qed``, ``QED``, ``Q.E.D.``): no part of the relation.
+_END_MARK = re.compile(
+    r"\s*(?:∎|□|■|◻|◼|▪|\\(?:qed|qedsymbol|blacksquare|square|Box)(?![A-Za-z])(?:\{\})?|\b(?:Q\.\s?E\.\s?D\.?|QED)(?!\w))"
+    r"[\s.!$]*$"
+)
+#: The value again in brackets in another unit, as an aside (``35.2 m/s (~127 km/h!!)``,
+#: ``(about 9.8 N)``, ``(= 0.5 kJ)``); the unit inside must be a unit.
+_CONVERTED = re.compile(
+    r"(?<=[A-Za-z°%²³¹])(?P<gap>\s+)\(\s*(?:[≈~=]|about|approx\.?|around|roughly|i\.e\.?|so)?\s*"
+    r"[-+]?\d[\d.,]*\s*(?:[x×*]\s*10\^?[-+]?\d+\s*)?(?P<unit>[^()=\d!?][^()=!?]*?)\s*[!?.]*\s*\)[!?.]*\s*$",
+    re.I,
+)
 #: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
 _DIRECTION_WORDS = re.compile(r"\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way|up|down)", re.I)
 
@@ -180,7 +192,10 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     """The end of a relation without its note, and the tag (see :func:`without_note`)."""
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
-    text = _CLAUSE.sub("", _AFTER_TICK.sub("", text))
+    text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", text)))
+    m = _CONVERTED.search(text)
+    if m and is_unit(m.group("unit").strip()) and _after_unit(text[: m.start("gap")]):
+        text = text[: m.start("gap")]
     text = _remark_in_brackets(_FIGURES.sub("", text))
     m = _SQUARE.search(text)
     if m and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
@@ -195,6 +210,12 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     if tag.isdigit() and int(tag) >= 10 and not m.group("gap"):
         return text, ""  # "m g (40)": a factor, not a tag
     return text[: m.start()].rstrip(), tag
+
+
+def _after_unit(text: str) -> bool:
+    """Whether ``text`` ends in a number and its unit (``35.2 m/s``; not ``2u``)."""
+    m = re.search(r"\d\s*([A-Za-z°%][A-Za-z°%/^\-·*⁻¹²³ ]*)$", text)
+    return m is not None and is_unit(m.group(1).strip())
 
 
 def _is_more_figures(m: re.Match) -> bool:
