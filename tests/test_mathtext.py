@@ -183,3 +183,23 @@ def test_an_impulse_or_momentum_in_imperial_units_is_a_unit(unit: str) -> None:
 
     assert is_unit(unit)
     assert [r.sides for r in read_relations(rf"\[ I = 0.84\ \text{{{unit}}} \]")] == [("I", "0.84")]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        r"$3(4) = 2(3) + 6$ \checkmark",
+        r"$3(4) = 2(3) + 6 \ding{51}$",
+        r"$3(4) = 2(3) + 6$ \ding{52} checks",
+        r"$3(4) = 2(3) + 6$ \cmark",
+        r"$3(4) = 2(3) + 6$ \tick",
+        "*3(4) = 2(3) + 6*",
+        "- **3(4) = 2(3) + 6**",
+    ],
+)
+def test_a_tick_or_emphasis_around_a_relation_is_layout(text: str) -> None:
+    assert [r.sides for r in read_relations(text)] == [("3(4)", "2(3) + 6")]
+
+
+def test_stars_between_factors_are_products_not_italics() -> None:
+    assert [r.sides for r in read_relations("y = 2*k*3 = 6k")] == [("y", "2*k*3", "6k")]

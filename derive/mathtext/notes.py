@@ -58,10 +58,14 @@ _SENTENCE_END = re.compile(r"(?<=[\w)°²³])\.(?=\s+[A-Z(])|;")
 _CODE_QUOTE = re.compile(r"`+|^\s*>+(?=\s)")
 
 
+#: Markdown italics with one star around words and a space (``*v = 3 m/s*``); not ``2*u*3``.
+_ITALIC = re.compile(r"(?:^|(?<=[\s(]))\*(?=[^\s*])([^*\n]*?\s[^*\n]*?[^\s*])\*(?=$|[\s.,;:)])")
+
+
 def unbold(text: str) -> str:
-    """``text`` without Markdown's layout: bold and italics around words (``**momentum:**``),
-    inline code marks (```v_B = 2.4```), a blockquote's ``>``."""
-    return _CODE_QUOTE.sub(" ", _BOLD.sub(r"\2", text))
+    """``text`` without Markdown's layout: bold and italics around words (``**momentum:**``,
+    ``*v = 3 m/s*``), inline code marks (```v_B = 2.4```), a blockquote's ``>``."""
+    return _CODE_QUOTE.sub(" ", _ITALIC.sub(r"\1", _BOLD.sub(r"\2", text)))
 
 
 def unmarked(text: str) -> str:
@@ -117,7 +121,7 @@ _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
 
 
 #: Words after a tick (``= u  ✓ speed of Q is u``): the student's comment on the line.
-_AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\checkmark)\s*[^=✓✔]*$")
+_AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\(?:checkmark|cmark|tick|ding\s*[{(]\s*5[12]\s*[})])(?![A-Za-z]))\s*[^=✓✔]*$")
 #: A clause after a comma that says no more of the value (``= u(2 + 3e), in its original direction``).
 _CLAUSE = re.compile(
     r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the)\b"
