@@ -203,3 +203,15 @@ def test_a_tick_or_emphasis_around_a_relation_is_layout(text: str) -> None:
 
 def test_stars_between_factors_are_products_not_italics() -> None:
     assert [r.sides for r in read_relations("y = 2*k*3 = 6k")] == [("y", "2*k*3", "6k")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("(v_A)_1 + 2 (v_B)_1 = 7", ("v_A1 + 2 v_B1", "7")),
+        (r"\[ (v_{P})_{2} = 0.4(6.5) = 2.6\ \text{ft/s} \]", ("v_P2", "0.4(6.5)", "2.6")),
+        (r"\[ (v_Q)_2 &= (v_Q)_{1} + 3 \]", ("v_Q2", "v_Q1 + 3")),
+    ],
+)
+def test_a_name_in_brackets_with_its_instant_after_them_is_one_name(text: str, expected: tuple[str, ...]) -> None:
+    assert [r.sides for r in read_relations(text)] == [expected]

@@ -316,11 +316,18 @@ def words_after(text: str) -> str:
     return text
 
 
+#: A name in brackets with the instant after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_(1)``).
+_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*(?:\(([0-9])\)|([0-9])(?!\w))")
+
+
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
+    text = _BRACKETED_NAME.sub(
+        lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
+    )  # (v_B)_2: v_B2, as the textbooks write it
     return in_si(text) or without_unit(text).strip()
 
 
