@@ -133,6 +133,8 @@ def test_a_hostile_row_is_refused_with_a_latex_error(row: str) -> None:
         ("1/sqrt5", "1/sqrt(5)"),
         ("w/(sqrt3(1+k))", "w/(sqrt(3)*(1+k))"),
         ("sqrt 7", "sqrt(7)"),
+        ("2sqrt3", "2*sqrt(3)"),
+        ("u root2/2", "u*sqrt(2)/2"),
         ("x_sqrt3", "x_sqrt3"),  # part of a name: kept
     ],
 )

@@ -71,8 +71,8 @@ _INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\
 _BARS = re.compile(r"\|([^|]+)\|")
 _NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
-#: ``sqrt3``, ``sqrt2u``: a root glued to the number after it (not a name ``sqrtx``).
-_GLUED_ROOT = re.compile(r"(?<![A-Za-z0-9_])sqrt(?=\d)")
+#: ``sqrt3``, ``2sqrt3``, ``root3``: a root glued to the number after it (not a name ``sqrtx``).
+_GLUED_ROOT = re.compile(r"(?<![A-Za-z_])(?:sqrt|root)(?=\d)")
 _BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
 _TOKEN = re.compile(rf"\s*({_NUM}|[A-Za-z][A-Za-z0-9_]*|\*\*|[-+*/^(),=]|\S)")
 
@@ -96,7 +96,7 @@ def student(text: str) -> str:
     text = _PERCENT.sub(r"(\1/100)", text)  # 36% = 0.36
     text = _OVER_PRODUCT.sub(r"/(\1*\2)", text)  # v^2/2g, (…)/3m: over the product, as a teacher reads it
     text = degree_marks(text)
-    text = _GLUED_ROOT.sub("sqrt ", text)  # sqrt3: the root of 3, as √3 is
+    text = _GLUED_ROOT.sub(" sqrt ", text)  # sqrt3: the root of 3, as √3 is
     text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
     return implicit_products(text)
 
