@@ -144,7 +144,9 @@ def test_a_root_glued_to_its_number_is_the_root(text: str, plain: str) -> None:
     assert student(text) == plain
 
 
-@pytest.mark.parametrize("mark", ["∎", "□", "■", "QED", "Q.E.D.", "qed", r"\qed", r"\blacksquare", r"\square"])
+@pytest.mark.parametrize(
+    "mark", ["∎", "□", "■", "QED", "Q.E.D.", "qed", r"\qed", r"\blacksquare", r"\square", "//", "(!!)", "(?)"]
+)
 def test_the_mark_that_ends_a_proof_is_not_part_of_the_relation(mark: str) -> None:
     assert [r.sides for r in read_relations(f"(2 + k) w = 3 p   {mark}")] == [("(2 + k) w", "3 p")]
 
@@ -155,6 +157,9 @@ def test_the_mark_that_ends_a_proof_is_not_part_of_the_relation(mark: str) -> No
         ("V = 4.1 x 2 = 8.2 m/s   (~29.5 km/h!!)", ("V", "4.1 x 2", "8.2")),
         ("W = 19.6 N (about 2 kg)", ("W", "19.6")),
         ("E = 2400 J (= 2.4 kJ)", ("E", "2400")),
+        ("V = 8.2 m/s - about 29.5 km/h", ("V", "8.2")),
+        ("V = 8.2 m/s — roughly 18 mph!", ("V", "8.2")),
+        ("x = 2 - about 3 m", ("x", "2 - about 3")),  # no unit before the dash: not an aside
         ("v = 2u (1.5 m/s)", ("v", "2u (1.5 m/s)")),  # no unit before it: not an aside
         ("x = 4 (3 + y)", ("x", "4 (3 + y)")),
     ],

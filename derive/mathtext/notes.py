@@ -138,16 +138,23 @@ _FIGURES = re.compile(
     r"|significant\s+figures?|decimal\s+places?)\s?\)?\s*\.?\s*$",
     re.I,
 )
-#: The mark that ends a proof (``∎``, ``□``, ``\\qed``, ``QED``, ``Q.E.D.``): no part of the relation.
+#: The mark that ends a proof (``∎``, ``□``, ``\\qed``, ``QED``, ``Q.E.D.``, ``//``) and a bracket of
+#: only ``!`` or ``?`` (``(!!)``): no part of the relation.
 _END_MARK = re.compile(
     r"\s*(?:∎|□|■|◻|◼|▪|\\(?:qed|qedsymbol|blacksquare|square|Box)(?![A-Za-z])(?:\{\})?|\b(?:Q\.\s?E\.\s?D\.?|QED)(?!\w))"
-    r"[\s.!$]*$"
+    r"[\s.!$]*$|(?<=\s)//\s*$|\s*\(\s*[!?]+\s*\)\s*$"
 )
 #: The value again in brackets in another unit, as an aside (``35.2 m/s (~127 km/h!!)``,
 #: ``(about 9.8 N)``, ``(= 0.5 kJ)``); the unit inside must be a unit.
 _CONVERTED = re.compile(
     r"(?<=[A-Za-z°%²³¹])(?P<gap>\s+)\(\s*(?:[≈~=]|about|approx\.?|around|roughly|i\.e\.?|so)?\s*"
     r"[-+]?\d[\d.,]*\s*(?:[x×*]\s*10\^?[-+]?\d+\s*)?(?P<unit>[^()=\d!?][^()=!?]*?)\s*[!?.]*\s*\)[!?.]*\s*$",
+    re.I,
+)
+#: The same after a dash and a word that says it is the same value (``35.2 m/s - about 127 km/h``).
+_DASH_CONVERTED = re.compile(
+    r"(?<=[A-Za-z°%²³¹])(?P<gap>\s+)[-–—]+\s*(?:≈|~|about|approx\.?|around|roughly|i\.e\.?|so|that's|that\s+is)\s*"
+    r"[-+]?\d[\d.,]*\s*(?P<unit>[^()=\d!?][^()=!?]*?)\s*[!?.]*\s*$",
     re.I,
 )
 #: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
@@ -197,7 +204,7 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
     text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", text)))
-    m = _CONVERTED.search(text)
+    m = _CONVERTED.search(text) or _DASH_CONVERTED.search(text)
     if m and is_unit(m.group("unit").strip()) and _after_unit(text[: m.start("gap")]):
         text = text[: m.start("gap")]
     text = _remark_in_brackets(_FIGURES.sub("", text))
