@@ -154,3 +154,21 @@ def test_a_given_restated_wrongly_in_a_chain_is_copied_wrong_and_carried() -> No
     assert found[2] == ("wrong", "copied_wrong")
     assert found[3][0] == "correct"
     assert [found[n][0] for n in (4, 5, 6, 7, 8)] == ["carried"] * 5
+
+
+def test_a_carried_product_with_x_for_times_is_carried() -> None:
+    # The car (910 kg) into the SUV (2100 kg) at rest, locked; the skid 2.7 m, mu_k = 0.80,
+    # g = 9.8. mu copied as 0.5: a = 0.5 x 9.8 = 4.9 (truly 7.84); V^2 = 2(4.9)(2.7) = 26.46,
+    # V = 5.144; the crash v = 3010V/910 = 3.308V, so v = 3.308 x 5.144 = 17.02 (truly 21.52):
+    # right given the slip, with x written for times.
+    work = (
+        "910v = (910 + 2100)V\n"
+        "v = 3010V/910 = 3.308V\n"
+        "a = mu g = 0.5 x 9.8 = 4.9\n"
+        "V^2 = 2(4.9)(2.7) = 26.46\n"
+        "V = 5.144\n"
+        "v = 3.308 x 5.144 = 17.02\n"
+    )
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert found[3][0] == "wrong"
+    assert [found[n][0] for n in (5, 6)] == ["carried"] * 2  # line 4 is another class (numbers for a)

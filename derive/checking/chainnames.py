@@ -224,7 +224,8 @@ def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
         found = True
         return f"({sympy.N(wrong[x], 15)})"
 
-    text = re.sub(r"(?<![\w.])\d+\.\d+", true, side)
+    text = re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", side)  # 3.3 x 10.6: x for times
+    text = re.sub(r"(?<![\w.])\d+\.\d+", true, text)
     if not found:
         return None
     try:
