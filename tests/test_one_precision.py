@@ -156,3 +156,13 @@ def test_no_bundled_page_breaks_the_notes_style() -> None:
             ):
                 bad.append(f"{page.name}: {ln[:120]}")
     assert not bad, bad
+
+
+def test_a_vector_with_a_nested_radical_component_is_all_decimals() -> None:
+    """Edexcel M4 2018 Q2 (mark scheme: tan α = √(32/3)): cos α = √(3/35) = 0.2928 along the
+    wall, and (3/4) sin α = (3/4) √(32/35) = 0.7171 into it, both times U. The n component is a
+    nested radical that the page shows as its decimal; the t component beside it was the exact
+    √105/35 (one line, two precisions)."""
+    boxed = next(ln for ln in _lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke") if "\\vec{v}_{A2} =" in ln)
+    assert r"\sqrt" not in boxed, boxed
+    assert "0.293 U" in boxed and "- 0.717 U" in boxed, boxed

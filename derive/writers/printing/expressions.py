@@ -297,12 +297,15 @@ def side_terms(side: Side, style: Style, extra: int, cancel: frozenset[sympy.Sym
 
 def _one_kind_of_number(side: Side, style: Style) -> tuple[sympy.Expr, ...]:
     """A numeric side's terms, each coefficient a decimal where one of them is: 0.7071 v_A1 +
-    0.6364 v_A1, not (√2/2) v_A1 + 0.6364 v_A1 (one precision per line)."""
+    0.6364 v_A1, not (√2/2) v_A1 + 0.6364 v_A1 (one precision per line); 0.293 U ê_t − 0.717 U ê_n,
+    not √105/35 U ê_t − 0.717 U ê_n, where a nested radical's parts are joined as a decimal."""
     terms = side.terms
     if side.mode not in ("numeric", "result") or len(terms) < 2:
         return terms
     subbed = [substitute(t, style.values) for t in terms]
-    if not any(t.free_symbols and (t.atoms(sympy.Float) or t.free_symbols & style.decimal) for t in subbed):
+    # a decimal already, or the parts of a nested radical joined as one (-0.717 U ê_n beside √105/35 U ê_t)
+    decimals = [t.atoms(sympy.Float) or _one_term_per_letters(t).atoms(sympy.Float) for t in subbed]
+    if not any(t.free_symbols and (d or t.free_symbols & style.decimal) for t, d in zip(subbed, decimals, strict=True)):
         return terms
     out = []
     for t in terms:
