@@ -87,8 +87,6 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
                 item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            if not item.slip and _numbers_unequal(ctx, sides, exprs, [true_defs, values]):
-                item = replace(item, slip="arithmetic")  # ``441 + 784 = 1125``: a sum worked wrongly
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
         written.append(exprs)
@@ -166,12 +164,6 @@ def _solved_wrongly(exprs: list[sympy.Expr], previous: list[sympy.Expr], sides: 
         return False
     names = set().union(*(x.free_symbols for x in previous))
     return names == {exprs[0]}
-
-
-def _numbers_unequal(ctx: Context, sides, exprs: list[sympy.Expr], subs: list[dict]) -> bool:
-    """Whether two sides next to each other, both of numbers only, are not equal (an arithmetic slip)."""
-    pairs = [(i, i + 1) for i in range(len(sides) - 1) if all(words.numbers_only(sides[k]) for k in (i, i + 1))]
-    return any(_holds(ctx, sides[i : k + 1], exprs[i : k + 1], subs) is False for i, k in pairs)
 
 
 def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
