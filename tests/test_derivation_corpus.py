@@ -27,6 +27,8 @@ CASES = load_cases()
 RANK = ("not read", "not checked", "error", "correct", "carried", "again", "wrong", "unit mismatch")
 #: The checker's name of a slip its report gives in words (the rest are mistakes' names).
 RESULTS: dict[str, list[str]] = {}
+#: Per case: (lines the teacher marks that the checker judges as the teacher does, lines marked).
+LINES: dict[str, tuple[int, int]] = {}
 
 
 def checker_lines(cli, case: Case) -> dict[int, tuple[str, str]]:
@@ -75,6 +77,12 @@ def disagreements(case: Case, found: dict[int, tuple[str, str]]) -> list[str]:
 def test_judged_as_a_teacher_judges(cli, case: Case) -> None:
     problems = disagreements(case, checker_lines(cli, case))
     RESULTS[case.name] = problems
+    lines_wrong = {int(p.split(":")[0].split()[1]) for p in problems if p.startswith("line ")}
+    marked = len(case.verdict.lines)
+    LINES[case.name] = (
+        0 if problems and not lines_wrong else marked - len(lines_wrong & set(case.verdict.lines)),
+        marked,
+    )
     if problems:
         pytest.xfail("; ".join(problems[:4]))
 
@@ -85,6 +93,14 @@ def test_pass_rate_is_reported() -> None:
         pytest.skip("no corpus case ran")
     passed = sum(1 for p in RESULTS.values() if not p)
     print(f"\ncorpus: {passed} of {len(RESULTS)} derivations judged as the teacher judges them")
+    agreed, marked = (sum(n[i] for n in LINES.values()) for i in (0, 1))
+    print(f"lines: {agreed} of {marked} marked lines judged as the teacher judges them")
+    batches: dict[str, list[int]] = {}
+    for name, problems in RESULTS.items():
+        tally = batches.setdefault(name[0], [0, 0])
+        tally[0] += not problems
+        tally[1] += 1
+    print("by batch: " + ", ".join(f"{b} {p}/{n}" for b, (p, n) in sorted(batches.items())))
     for name, problems in sorted(RESULTS.items()):
         if problems:
             print(f"  {name}: {'; '.join(problems[:3])}")
