@@ -23,6 +23,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
+from derive.checking.slipnames import COPIED, copied_into_working
 from derive.checking.stageslips import (
     StageMistakes,
     named_arithmetic,
@@ -85,6 +86,10 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             if not item.slip and _weight_as_mass(ctx, sides, reread, values, true_defs):
                 phrase = mistakes.phrase("weight_as_mass")
                 item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
+            if not item.slip and copied_into_working(
+                ctx, sides, exprs, partial(_holds, ctx, sides, subs=[true_defs, values])
+            ):
+                item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
