@@ -584,3 +584,47 @@ def test_the_angle_asked_for_resolved_from_the_other_axis() -> None:
     found = lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke", work)
     assert found[1][:2] == ("wrong", "angle_other_axis")
     assert found[2][0] == found[3][0] == found[4][0] == "carried"
+
+
+def test_a_line_going_on_with_equals_from_a_carried_one_is_carried() -> None:
+    # Edexcel M2 2024 Q5: P (m) at u hits Q (2m) at rest. True: u = x + 2y, y - x = eu. With
+    # the masses exchanged (u = 2x + y): 3x = u - eu, x = (u - eu)/3 and
+    # y = (u - eu)/3 + eu; "= (u + 2eu)/3" under it goes on with the student's y: carried,
+    # although "(u - eu)/3 + eu = (u + 2eu)/3" alone is true algebra.
+    work = (
+        "Let x and y be the velocities of P and Q after the impact.\n"
+        "m u = 2m x + m y\ny - x = eu\nu = 2x + x + eu\nx = (u - eu)/3\n"
+        "y = (u - eu)/3 + eu\n  = (u + 2eu)/3\n"
+    )
+    found = lines("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work)
+    assert found[2][:2] == ("wrong", "masses_swapped")
+    assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_a_second_slip_keeps_the_values_the_student_carried_before_it() -> None:
+    # The same problem, masses exchanged: x = (u - eu)/3 (carried). Then y = x + eu worked as
+    # (u + 3eu)/3 for (u + 2eu)/3: an arithmetic slip in y alone. The answer line
+    # "x = (u - eu)/3, y = (u + 3eu)/3" holds with the student's x and y: carried.
+    work = (
+        "Let x and y be the velocities of P and Q after the impact.\n"
+        "m u = 2m x + m y\ny - x = eu\nu = 2x + x + eu\nx = (u - eu)/3\n"
+        "y = x + eu = (u - eu)/3 + eu = (u + 3eu)/3\nx = (u - eu)/3, y = (u + 3eu)/3\n"
+    )
+    found = lines("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work)
+    assert found[6][:2] == ("wrong", "arithmetic")
+    assert found[7][0] == "carried"
+
+
+def test_the_other_component_resolved_the_same_wrong_way_is_the_same_mistake_again() -> None:
+    # Edexcel M4 Q3: A at speed u, the line of centres at 30° to its path: along it
+    # u cos 30° = (√3/2)u, across u sin 30° = u/2. sin and cos swapped in the n component
+    # (u/2), then in the t component ((√3/2)u) on a line of its own: the same mistake again,
+    # not carried (it is resolved afresh, not worked from the wrong n value); the momentum
+    # m(u/2) = m v_1 + m v_2 after them is carried.
+    work = (
+        "along the line of centres: u_1 = u sin 30 = u/2\nperpendicular: u_2 = u cos 30 = (sqrt(3)/2)u\n"
+        "Let v_1, v_2 be the velocities of A and B along the line of centres after.\nm(u/2) = m v_1 + m v_2\n"
+    )
+    found = lines("edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg", work)
+    assert found[1][:2] == ("wrong", "sin_cos_swapped")
+    assert found[2] == ("wrong", "sin_cos_swapped", True)

@@ -13,9 +13,10 @@ from typing import TYPE_CHECKING, Protocol
 import sympy
 
 from derive.checking import slipnames
-from derive.checking.mistakes import REGISTRY, Mistake, Variant
+from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.numeric import number_of
+from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
 
@@ -38,6 +39,8 @@ class Trace(Protocol):
     variant: Variant
     replaced: list[tuple[int, int]]
     held: list[Pair]
+    named: dict[int, set[str]]
+    worked: tuple[Pair, ...]
 
     def _closest(self, F: sympy.Expr) -> int | None: ...
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
@@ -148,6 +151,39 @@ def unnamed(trace: Trace, sides: tuple[str, ...], bad: Pair, world: list[Values]
     return j, slipnames.FLIPPED[flip], flip
 
 
+def again_item(trace: Trace, line: Read, pairs: list[Pair]) -> Item | None:
+    """The verdict on a line that makes a slip of the values before the impact again
+    (:func:`made_again`); None where it does not."""
+    again = made_again(trace, pairs)
+    if again is None:
+        return None
+    said = f"False: the same mistake as in line {again[0]}, made again: it {phrase(again[1])}."
+    item = Item("line", str(line.number), line.written, "wrong", "", said, "substituting the correct values")
+    return replace(item, slip=again[1], again=True)
+
+
+def made_again(trace: Trace, pairs: list[Pair]) -> tuple[int, str] | None:
+    """The slip (its line, its name) a line makes again: a velocity before the impact resolved
+    afresh the same wrong way (``u_2 = u cos 30°`` under ``u_1 = u sin 30°``: the t component
+    with sin and cos swapped too) is that mistake again, not a carried error; None otherwise."""
+    named = {name: n for n, names in trace.named.items() for name in names}
+    pre = set(trace.ctx.model.pre)
+    false = [p for p in pairs if not trace.holds([p], trace.truth)]
+    if not named or not false:
+        return None
+    for p in false:
+        if p.raw is None or not set().union(*(x.free_symbols for x in p.raw)) & pre:
+            return None  # not a velocity before the impact resolved
+        if p.difference.free_symbols & set(trace.U):
+            return None
+    found = [slipnames.before_impact(trace.ctx, p, lambda q: trace.holds([q], trace.truth)) for p in false]
+    for m in found[0]:
+        name = slipnames.as_named(trace.ctx, m).name
+        if name in named and all(name in {slipnames.as_named(trace.ctx, x).name for x in f} for f in found):
+            return named[name], name
+    return None
+
+
 def given_negated(trace: Trace, bad: Pair) -> bool:
     """Whether the first slip ``bad`` holds with one of the problem's given velocities taken the
     other way (``0.5(0.2)`` for an A that moves back at 0.2 m/s; ``2mv`` for a P that reverses
@@ -181,7 +217,7 @@ def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) 
     the equations with the slip give them; ``world`` where that is not so."""
     current = trace.world or trace.truth
     others = F.free_symbols & set(trace.U)
-    if len(others) < 2 or world is None:
+    if not others or world is None:
         return world
 
     def same(a: list[Values], kept: set) -> bool:
@@ -191,9 +227,11 @@ def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) 
             for u in kept
         )
 
-    for h in reversed(trace.held[-12:]):
+    for h in [*reversed(trace.worked[-12:]), *reversed(trace.held[-12:])]:  # the student's own, latest first
         kept = h.difference.free_symbols & set(trace.U)
-        if not kept or not kept < others or same(world, kept):
+        if len(kept) != 1 or not others - kept or h.difference.has(sympy.Float) or same(world, kept):
+            continue  # a value found (w = u(1 + e)), not rounded decimals, that the slip's world changes
+        if sympy.degree(sympy.expand(h.difference), next(iter(kept))) != 1:
             continue
         for k in trace.equations:
             if k == j:

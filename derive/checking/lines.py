@@ -108,8 +108,7 @@ class Trace(Carrying):
         """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
         out = self._judge(line)
         if out is not None and line.exprs is not None and not line.defines:
-            held = out.status in ("correct", "carried")
-            self.previous = (" = ".join(line.sides), self.pairs(line)) if held else None
+            self._note(line, out.status)
         return out
 
     def _judge(self, line: Line) -> Item | None:
@@ -128,7 +127,11 @@ class Trace(Carrying):
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
-            if self.slips and (self._uses_wrong_numbers(line, pairs) or carried.slips_result(self, line, pairs)):
+            if self.slips and (
+                self._continues(line)
+                or self._uses_wrong_numbers(line, pairs)
+                or carried.slips_result(self, line, pairs)
+            ):
                 self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
@@ -143,7 +146,7 @@ class Trace(Carrying):
             return self._carried(line)
         self._wrote_wrong(line)
         if self._with_own_values(line) or self._with_terms_put_right(line) or self._with_slips_results(line, pairs):
-            return self._carried(line)
+            return carried.again_item(self, line, pairs) or self._carried(line)  # resolved afresh: again
         self._own_value(line)
         return self._slip(line, pairs, answer)
 
@@ -375,7 +378,7 @@ class Trace(Carrying):
                 self.equations[j] = F
                 self.replaced.append((line.number, j))
                 world = solve_world(self.equations, self.U, self.pts, self.world or self.truth)
-                world = carried.kept_world(self, F, j, world) if slip else world
+                world = carried.kept_world(self, F, j, world)
                 if world is not None:
                     self.world = world
         if slip:
