@@ -628,3 +628,13 @@ def test_the_other_component_resolved_the_same_wrong_way_is_the_same_mistake_aga
     found = lines("edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg", work)
     assert found[1][:2] == ("wrong", "sin_cos_swapped")
     assert found[2] == ("wrong", "sin_cos_swapped", True)
+
+
+def test_a_sign_lost_in_a_chains_stage() -> None:
+    # OCR M2 2006: dropped 2 m (g = 9.8), rebounds to 1.4 m. Falling, v_1² = 2(9.8)(2) = 39.2,
+    # v_1 = 6.261; rising to rest, 0 = v_2² - 2(9.8)(1.4). Written with + for -, the line
+    # holds with that one term's sign changed: a sign lost (the same slip as in one impact).
+    work = "v_1^2 = 2(9.8)(2) = 39.2\nv_1 = 6.261\n0 = v_2^2 + 2(9.8)(1.4)\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")

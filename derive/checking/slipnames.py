@@ -392,6 +392,37 @@ def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip
     return "b_sign" if _momentum_of_velocity(ctx, term, bad.text) else "algebra", right_way
 
 
+def sign_of_a_term(exprs: list, holds: Callable[[list], bool]) -> str:
+    """A chain's line ``a = b`` (in letters and numbers) that holds with the sign of exactly one
+    of its terms changed (``0 = v_2² + 2(9.8)(1.4)`` for ``0 = v_2² - 2(9.8)(1.4)``): ``algebra``
+    where that term has a letter, ``b_sign`` where it is a number (a momentum, a mass times a
+    velocity); "" otherwise (none, more than one, or a line of numbers only: arithmetic)."""
+    if len(exprs) != 2 or not any(x.free_symbols for x in exprs):
+        return ""
+    terms = [sympy.Add.make_args(x) for x in exprs]
+    if sum(len(t) for t in terms) < 3:
+        return ""
+    found = [
+        (t, [*exprs[:i], side - 2 * t, *exprs[i + 1 :]])
+        for i, side in enumerate(exprs)
+        for t in terms[i]
+        if t != 0 and holds([*exprs[:i], side - 2 * t, *exprs[i + 1 :]])
+    ]
+    if len(_one_up_to_sign([x[0] - x[1] for _t, x in found])) != 1:
+        return ""
+    return "algebra" if any(t.free_symbols for t, _x in found) else "b_sign"
+
+
+def _one_up_to_sign(differences: list[sympy.Expr]) -> list[sympy.Expr]:
+    """The relations ``differences`` (each lhs - rhs), one of each up to its sign (``0 = -v² + 27.4``
+    is ``0 = v² - 27.4``: the same sign lost, found from either term)."""
+    out: list[sympy.Expr] = []
+    for d in differences:
+        if not any(sympy.expand(d - o) == 0 or sympy.expand(d + o) == 0 for o in out):
+            out.append(d)
+    return out
+
+
 def _momentum_of_velocity(ctx: Context, term: sympy.Expr, text: str) -> bool:
     """Whether ``term`` is a mass of the problem times one of its velocities (given, or a number
     written on the line): ``0.5(0.2)`` with m_A = 0.5 kg and A's 0.2 m/s."""
