@@ -506,3 +506,135 @@ def test_a_given_copied_with_its_zero_moved_inside_a_bracket_is_copied_wrong() -
     found = lines("web2calc-car-rear-ends-car-find-mass", work)
     assert found[1][:2] == ("wrong", "copied_wrong")
     assert found[2][0] == found[3][0] == "carried"
+
+
+# A slip no rule of (1)-(4) names, named by what makes the line hold (issue #31: a general
+# fallback rather than one rule per file).
+
+
+def test_a_sign_lost_rearranging_a_relation_in_both_velocities() -> None:
+    # Edexcel M2 2003 Q6: 2m at u hits m at rest, e = 1/3. True: 2u = 2x + y, y - x = u/3,
+    # so x = 5u/9, y = 8u/9. "x = u/3 - y" from y - x = u/3 holds with x's sign changed
+    # (-x = u/3 - y): a sign lost. With it, 2u = 2(u/3 - y) + y gives y = -4u/3 (carried).
+    work = "2mu = 2mx + my\ny - x = u/3\nx = u/3 - y\n2u = 2(u/3 - y) + y\ny = -4u/3\n"
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == found[5][0] == "carried"
+
+
+def test_a_sign_lost_keeps_the_velocity_found_before_it() -> None:
+    # The same problem: x = 5u/9 found rightly, then y from (1) 2u = 2x + y with the sign of
+    # 2x lost: y = 2u + 2x (holds with +2x turned to -2x). The student's y is then
+    # 2u + 10u/9 = 28u/9, from their right x: carried, not a further slip.
+    work = "2mu = 2mx + my\ny - x = u/3\nx = 5u/9\ny = 2u + 2x\ny = 2u + 10u/9 = 28u/9\n"
+    found = lines("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"
+
+
+def test_a_given_velocity_after_taken_the_other_way() -> None:
+    # Edexcel M2 2017 Q5: P (2m) and Q (3m), e = 1/5; after, P moves back at v (v_A2 = -v) and
+    # Q at 3v/2. True momentum: 2m v_A1 + 3m v_B1 = -2mv + 9mv/2 = 5mv/2. Writing P's as +2mv
+    # is P's velocity taken the wrong way (b_sign); the restitution with the same +v,
+    # 3v/2 - v = (1/5)(v_A1 - v_B1), is right given it (carried).
+    work = "2m v_A1 + 3m v_B1 = 2mv + 3m(3v/2)\n3v/2 - v = (1/5)(v_A1 - v_B1)\n"
+    found = lines("edexcel-m2-2017-january-q5-both-reverse-find-speeds-before", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert found[2][0] == "carried"
+
+
+def test_a_fraction_given_copied_as_another_inside_a_product() -> None:
+    # AQA M3 2014: 2m at 2u hits m at rest, e = 2/3. True: 4u = 2x + y, y - x = (2/3)(2u).
+    # e copied as 3/4: y - x = (3/4)(2u) = 3u/2 (read as one number, 3/2); then
+    # 4u = 3x + 3u/2, x = 5u/6 are right given it.
+    work = "2m(2u) = 2mx + my\ny - x = (3/4)(2u)\n4u = 2x + x + 3u/2\nx = 5u/6\n"
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[2][:2] == ("wrong", "copied_wrong")
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_given_copied_into_a_chains_working_as_a_divisor() -> None:
+    # MSU bullet and block: 0.020 kg at 300 m/s into 4.0 kg: V = 6/4.02 = 1.4925 m/s, and
+    # h = V²/(2g) = 2.2277/19.62 = 0.1135 m. g copied as 9.18: 2.2277/18.36 = 0.1213 (the
+    # line holds with 9.81 put back), and h = 0.121 m after it is carried.
+    work = (
+        "0.020(300) = (0.020 + 4.0)V\nV = 6/4.02 = 1.4925\n"
+        "h_2 = V^2/(2g) = 1.4925^2/(2 x 9.18) = 0.1213\nh_2 = 0.121 m\n"
+    )
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "copied_wrong")
+    assert found[4][0] == "carried"
+
+
+def test_the_angle_asked_for_resolved_from_the_other_axis() -> None:
+    # Edexcel M4 2018 Q2: alpha (asked for) is between the path and the wall (+t), e = 3/4,
+    # and 60 % of the kinetic energy is kept. Along the wall U cos(alpha), into it
+    # U sin(alpha): cos² + (9/16) sin² = 0.6, sin² = 0.4(16/7) = 0.914, alpha = 73.0°.
+    # Resolved as if alpha were from the normal (U sin along the wall), the lines after are
+    # right given it: sin² + (9/16)cos² = 0.6, cos² = 0.914, alpha = 17.0°.
+    work = (
+        "u_t = U sin(alpha)\n"
+        "sin^2(alpha) + (9/16)cos^2(alpha) = 0.6\n"
+        "cos^2(alpha) = 0.4*16/7 = 0.9143\n"
+        "alpha = 17.0 deg\n"
+    )
+    found = lines("edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke", work)
+    assert found[1][:2] == ("wrong", "angle_other_axis")
+    assert found[2][0] == found[3][0] == found[4][0] == "carried"
+
+
+def test_a_line_going_on_with_equals_from_a_carried_one_is_carried() -> None:
+    # Edexcel M2 2024 Q5: P (m) at u hits Q (2m) at rest. True: u = x + 2y, y - x = eu. With
+    # the masses exchanged (u = 2x + y): 3x = u - eu, x = (u - eu)/3 and
+    # y = (u - eu)/3 + eu; "= (u + 2eu)/3" under it goes on with the student's y: carried,
+    # although "(u - eu)/3 + eu = (u + 2eu)/3" alone is true algebra.
+    work = (
+        "Let x and y be the velocities of P and Q after the impact.\n"
+        "m u = 2m x + m y\ny - x = eu\nu = 2x + x + eu\nx = (u - eu)/3\n"
+        "y = (u - eu)/3 + eu\n  = (u + 2eu)/3\n"
+    )
+    found = lines("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work)
+    assert found[2][:2] == ("wrong", "masses_swapped")
+    assert [found[n][0] for n in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_a_second_slip_keeps_the_values_the_student_carried_before_it() -> None:
+    # The same problem, masses exchanged: x = (u - eu)/3 (carried). Then y = x + eu worked as
+    # (u + 3eu)/3 for (u + 2eu)/3: an arithmetic slip in y alone. The answer line
+    # "x = (u - eu)/3, y = (u + 3eu)/3" holds with the student's x and y: carried.
+    work = (
+        "Let x and y be the velocities of P and Q after the impact.\n"
+        "m u = 2m x + m y\ny - x = eu\nu = 2x + x + eu\nx = (u - eu)/3\n"
+        "y = x + eu = (u - eu)/3 + eu = (u + 3eu)/3\nx = (u - eu)/3, y = (u + 3eu)/3\n"
+    )
+    found = lines("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work)
+    assert found[6][:2] == ("wrong", "arithmetic")
+    assert found[7][0] == "carried"
+
+
+def test_the_other_component_resolved_the_same_wrong_way_is_the_same_mistake_again() -> None:
+    # Edexcel M4 Q3: A at speed u, the line of centres at 30° to its path: along it
+    # u cos 30° = (√3/2)u, across u sin 30° = u/2. sin and cos swapped in the n component
+    # (u/2), then in the t component ((√3/2)u) on a line of its own: the same mistake again,
+    # not carried (it is resolved afresh, not worked from the wrong n value); the momentum
+    # m(u/2) = m v_1 + m v_2 after them is carried.
+    work = (
+        "along the line of centres: u_1 = u sin 30 = u/2\nperpendicular: u_2 = u cos 30 = (sqrt(3)/2)u\n"
+        "Let v_1, v_2 be the velocities of A and B along the line of centres after.\nm(u/2) = m v_1 + m v_2\n"
+    )
+    found = lines("edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg", work)
+    assert found[1][:2] == ("wrong", "sin_cos_swapped")
+    assert found[2] == ("wrong", "sin_cos_swapped", True)
+
+
+def test_a_sign_lost_in_a_chains_stage() -> None:
+    # OCR M2 2006: dropped 2 m (g = 9.8), rebounds to 1.4 m. Falling, v_1² = 2(9.8)(2) = 39.2,
+    # v_1 = 6.261; rising to rest, 0 = v_2² - 2(9.8)(1.4). Written with + for -, the line
+    # holds with that one term's sign changed: a sign lost (the same slip as in one impact).
+    work = "v_1^2 = 2(9.8)(2) = 39.2\nv_1 = 6.261\n0 = v_2^2 + 2(9.8)(1.4)\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")

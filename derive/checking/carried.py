@@ -5,15 +5,18 @@ working does not (an arithmetic slip inside the line, and what the student carri
 
 from __future__ import annotations
 
+import copy
 from dataclasses import replace
 from decimal import Decimal
 from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
-from derive.checking.mistakes import REGISTRY, Mistake, Variant
+from derive.checking import slipnames
+from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.numeric import number_of
+from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
 
@@ -35,11 +38,17 @@ class Trace(Protocol):
     copied: dict[sympy.Symbol, sympy.Expr]
     variant: Variant
     replaced: list[tuple[int, int]]
+    held: list[Pair]
+    named: dict[int, set[str]]
+    worked: tuple[Pair, ...]
 
+    def _closest(self, F: sympy.Expr) -> int | None: ...
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list[Pair]: ...
 
 
+#: A slip named: the equation it takes the place of, the words of the verdict, its name.
+Found = tuple[int | None, str, str] | None
 #: The results whose value a line of numbers may come to.
 RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")
 
@@ -118,6 +127,121 @@ def given_copied(trace: Trace, bad: Pair) -> str:
     trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
     written = bad.text.split(" = ")[-1].strip()
     return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
+
+
+def unnamed(trace: Trace, sides: tuple[str, ...], bad: Pair, world: list[Values], j: int | None) -> Found:
+    """The slip ``bad`` (of a line of ``sides``) no common mistake names, named by what makes it
+    hold: a given copied wrongly (``copied_wrong``), a given velocity taken the other way
+    (``b_sign``: the problem solved with it so, no equation replaced), one term's sign
+    (``algebra``, or ``b_sign`` for a mass times a velocity: in place of the equation the
+    line is with that sign right); the equation replaced, the words, the name; None otherwise."""
+
+    def holds(p: Pair) -> bool:
+        return trace.holds([p], world)
+
+    if slipnames.copied_wrong(trace.ctx, bad, holds, " = ".join(sides)):
+        return j, f": {slipnames.COPIED}", "copied_wrong"
+    if given_negated(trace, bad):
+        return 0, slipnames.FLIPPED["b_sign"], "b_sign"  # 0: no equation replaced
+    flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
+    if not flip:
+        return None
+    if right is not None and right.free_symbols & set(trace.U):
+        j = trace._closest(right)
+    return j, slipnames.FLIPPED[flip], flip
+
+
+def again_item(trace: Trace, line: Read, pairs: list[Pair]) -> Item | None:
+    """The verdict on a line that makes a slip of the values before the impact again
+    (:func:`made_again`); None where it does not."""
+    again = made_again(trace, pairs)
+    if again is None:
+        return None
+    said = f"False: the same mistake as in line {again[0]}, made again: it {phrase(again[1])}."
+    item = Item("line", str(line.number), line.written, "wrong", "", said, "substituting the correct values")
+    return replace(item, slip=again[1], again=True)
+
+
+def made_again(trace: Trace, pairs: list[Pair]) -> tuple[int, str] | None:
+    """The slip (its line, its name) a line makes again: a velocity before the impact resolved
+    afresh the same wrong way (``u_2 = u cos 30°`` under ``u_1 = u sin 30°``: the t component
+    with sin and cos swapped too) is that mistake again, not a carried error; None otherwise."""
+    named = {name: n for n, names in trace.named.items() for name in names}
+    pre = set(trace.ctx.model.pre)
+    false = [p for p in pairs if not trace.holds([p], trace.truth)]
+    if not named or not false:
+        return None
+    for p in false:
+        if p.raw is None or not set().union(*(x.free_symbols for x in p.raw)) & pre:
+            return None  # not a velocity before the impact resolved
+        if p.difference.free_symbols & set(trace.U):
+            return None
+    found = [slipnames.before_impact(trace.ctx, p, lambda q: trace.holds([q], trace.truth)) for p in false]
+    for m in found[0]:
+        name = slipnames.as_named(trace.ctx, m).name
+        if name in named and all(name in {slipnames.as_named(trace.ctx, x).name for x in f} for f in found):
+            return named[name], name
+    return None
+
+
+def given_negated(trace: Trace, bad: Pair) -> bool:
+    """Whether the first slip ``bad`` holds with one of the problem's given velocities taken the
+    other way (``0.5(0.2)`` for an A that moves back at 0.2 m/s; ``2mv`` for a P that reverses
+    at speed v): a velocity's sign lost. The slip's world is then the problem solved with that
+    velocity so (no equation replaced), and the lines right with it are carried."""
+    if trace.world is not None:
+        return False
+    model = trace.ctx.model
+    for g in trace.ctx.problem.givens:
+        value = g.value if g.value is not None else g.definition
+        if g.unknown or value is None or value == 0 or g.name[:1] not in "uvw" or g.symbol is None:
+            continue
+        variant = Variant(values={g.symbol: -value})
+        turned = copy.copy(model)  # a velocity after given (A moves back): among the known components
+        turned.zeros = {k: (-x if x == value else x) for k, x in model.zeros.items()}
+        turned.ind = {k: (-x if x == value else x) for k, x in model.ind.items()}
+        equations = {j: F for j, F in turned.numbered(variant).items() if j in trace.equations}
+        if equations == trace.equations:
+            continue
+        world = solve_world(equations, trace.U, trace.pts, trace.truth)
+        if world is not None and trace.holds([bad], world):
+            trace.variant, trace.world, trace.equations = variant, world, equations
+            return True
+    return False
+
+
+def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) -> list[Values] | None:
+    """The slip's world where the slip ``F`` (in place of (j)) gives one unknown from others the
+    student has right so far (``v = 3eu - w``, sign lost, after ``w = u(1 + e)``): those others
+    as the student found them (a right relation of theirs in place of another equation), not as
+    the equations with the slip give them; ``world`` where that is not so."""
+    current = trace.world or trace.truth
+    others = F.free_symbols & set(trace.U)
+    if not others or world is None:
+        return world
+
+    def same(a: list[Values], kept: set) -> bool:
+        return all(
+            abs(complex((x[u] - y[u]).evalf())) <= 1e-9 * max(1.0, abs(complex(y[u].evalf())))
+            for x, y in zip(a, current, strict=True)
+            for u in kept
+        )
+
+    for h in [*reversed(trace.worked[-12:]), *reversed(trace.held[-12:])]:  # the student's own, latest first
+        kept = h.difference.free_symbols & set(trace.U)
+        if len(kept) != 1 or not others - kept or h.difference.has(sympy.Float) or same(world, kept):
+            continue  # a value found (w = u(1 + e)), not rounded decimals, that the slip's world changes
+        if sympy.degree(sympy.expand(h.difference), next(iter(kept))) != 1:
+            continue
+        for k in trace.equations:
+            if k == j:
+                continue
+            equations = {**trace.equations, k: h.difference}
+            trial = solve_world(equations, trace.U, trace.pts, current)
+            if trial is not None and same(trial, kept):
+                trace.equations = equations
+                return trial
+    return world
 
 
 def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:

@@ -89,6 +89,26 @@ class Carrying:
         rest = literal_tolerance(" ".join([*(sides[j] for j in ik if j not in plain), worked]), self.ctx.data)
         return min(whole, sum(x for x in slack if x is not None) / max(values) + rest)
 
+    #: Whether the relation judged last was wrong or carried (a line that goes on from it with
+    #: "= ..." works on its wrong value).
+    went_wrong = False
+    previous: tuple[str, list[Pair]] | None = None  # the relation just before, if it held
+    worked: tuple[Pair, ...] = ()  # the carried relations in the unknowns, so far
+
+    def _note(self, line: Line, status: str) -> None:
+        """What a relation judged ``status`` leaves for the lines after it."""
+        held = status in ("correct", "carried")
+        pairs = self.pairs(line) if held else []
+        self.previous = (" = ".join(line.sides), pairs) if held else None
+        self.went_wrong = status in ("wrong", "carried")
+        if status == "carried":  # a student's own value (a = (5 - 3e)u/3 after a slip), kept by a later slip
+            self.worked += tuple(p for p in pairs if p.difference.free_symbols & set(self.U))
+
+    def _continues(self, line: Line) -> bool:
+        """Whether ``line`` goes on from a wrong or carried line (``= u(1 + kλ)/(ku(1 + λ))`` under
+        ``e = w/(u(1 + λ))`` with the approach wrong): right as algebra, it carries the slip."""
+        return self.went_wrong and re.match(r"\s*&?\s*(?:=|≈|\\approx\b|~=)", line.written) is not None
+
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a
         number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``)."""

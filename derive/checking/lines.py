@@ -41,7 +41,7 @@ SOLVING = {
 WORKING = (
     ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
 )
-COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
+COPIED = slipnames.COPIED
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
 
@@ -108,8 +108,7 @@ class Trace(Carrying):
         """The verdict on ``line`` (None for prose that merely has an "=" in it)."""
         out = self._judge(line)
         if out is not None and line.exprs is not None and not line.defines:
-            held = out.status in ("correct", "carried")
-            self.previous = (" = ".join(line.sides), self.pairs(line)) if held else None
+            self._note(line, out.status)
         return out
 
     def _judge(self, line: Line) -> Item | None:
@@ -128,7 +127,11 @@ class Trace(Carrying):
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
-            if self.slips and (self._uses_wrong_numbers(line, pairs) or carried.slips_result(self, line, pairs)):
+            if self.slips and (
+                self._continues(line)
+                or self._uses_wrong_numbers(line, pairs)
+                or carried.slips_result(self, line, pairs)
+            ):
                 self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
@@ -143,7 +146,7 @@ class Trace(Carrying):
             return self._carried(line)
         self._wrote_wrong(line)
         if self._with_own_values(line) or self._with_terms_put_right(line) or self._with_slips_results(line, pairs):
-            return self._carried(line)
+            return carried.again_item(self, line, pairs) or self._carried(line)  # resolved afresh: again
         self._own_value(line)
         return self._slip(line, pairs, answer)
 
@@ -241,7 +244,8 @@ class Trace(Carrying):
             given = carried.given_copied(self, bad)
             if given:
                 return (), None, given, "copied_wrong"
-            if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth)):
+            text = " = ".join(line.sides)
+            if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
@@ -253,7 +257,7 @@ class Trace(Carrying):
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if not diags:
-            diags = self._in_results(bad) or self._in_mistake_world(bad)
+            diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
@@ -272,8 +276,9 @@ class Trace(Carrying):
             )
             if not name and carried.worked_wrongly(self, line, world):
                 return diags, None, WORKING, "arithmetic"
-            if not name and slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], world)):
-                return diags, j, f": {COPIED}", "copied_wrong"
+            found = None if name else carried.unnamed(self, line.sides, bad, world, j)
+            if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
+                return (diags, *found)
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
@@ -338,7 +343,7 @@ class Trace(Carrying):
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
             self.variant = variant or self.variant
-        return tuple(d for m in found for d in self.ctx.diagnosis(m))
+        return tuple(d for m in found for d in self.ctx.diagnosis(slipnames.as_named(self.ctx, m)))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:
         """ ": rounded too early …" (once) where the line is worked from numbers rounded early."""
@@ -373,6 +378,7 @@ class Trace(Carrying):
                 self.equations[j] = F
                 self.replaced.append((line.number, j))
                 world = solve_world(self.equations, self.U, self.pts, self.world or self.truth)
+                world = carried.kept_world(self, F, j, world)
                 if world is not None:
                     self.world = world
         if slip:
@@ -385,6 +391,8 @@ class Trace(Carrying):
         F = pair.difference
         if any(not p.exp.is_Integer and p.base.free_symbols & set(self.U) for p in F.atoms(sympy.Pow)):
             return  # a speed (the size of a velocity) stands for none of the world's equations
+        if any(f.free_symbols & set(self.U) for f in F.atoms(sympy.Function)):
+            return  # an unknown angle's sine: its equation solved again costs seconds, for a rounding
         for j in list(self.equations):
             trial = solve_world({**self.equations, j: F}, self.U, self.pts, self.world)
             if trial is None:

@@ -37,6 +37,7 @@ from derive.mathtext.notation import student
 Holds = Callable[[Pair], bool]
 #: The relation just before a line, if it held: its text and its pairs.
 Previous = tuple[str, list[Pair]] | None
+COPIED = "a given is copied wrongly into it (the line holds with the given as the problem states it)."
 KE_FORMULA = (
     "the kinetic energy is worked with the wrong formula (T = ½ m v² for each body; "
     "the energy lost is ½ m (u² − v²), not ½ m (u − v)²)."
@@ -63,6 +64,17 @@ def before_impact(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
         if trig and _holds_with(ctx, bad, {DEG: sympy.Integer(1)}, holds):
             found.append(mistakes.REGISTRY["degrees_as_radians"])
     return found
+
+
+def as_named(ctx: Context, m: Mistake) -> Mistake:
+    """``sin_cos_swapped`` on an angle the problem asks for (α from the wall, resolved as if from
+    the normal) is that angle taken from the other axis, as a teacher names it."""
+    p = ctx.problem
+    asked = {g.symbol for g in p.givens if g.unknown}
+    angles = {x.angle for x in (p.motion_A, p.motion_B) if x is not None and x.angle is not None}
+    if m.name == "sin_cos_swapped" and angles & asked and "angle_other_axis" in mistakes.REGISTRY:
+        return mistakes.REGISTRY["angle_other_axis"]
+    return m
 
 
 def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
@@ -224,6 +236,11 @@ def _same_but_number(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict) -> bool:
     return all(abs(cf.get(m, 0) - c * cg.get(m, 0)) <= 1e-9 * scale for m in terms)
 
 
+def _simple_fraction(x: sympy.Expr) -> bool:
+    """A proper fraction of a small denominator, as a fraction given is written (⅓, ¾, 2/5)."""
+    return bool(x.is_Rational and not x.is_Integer and abs(x) < 1 and x.q <= 10)
+
+
 def _has_letters(text: str) -> bool:
     return (
         re.search(r"(?<!\\)\b[A-Za-z]\w*", re.sub(r"\\(?:frac|dfrac|tfrac|times|cdot|left|right)", " ", text))
@@ -257,10 +274,11 @@ def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, tru
     return f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
 
 
-def copied_wrong(ctx: Context, bad: Pair, holds: Holds) -> bool:
+def copied_wrong(ctx: Context, bad: Pair, holds: Holds, text: str = "") -> bool:
     """Whether ``bad`` holds once a number or letter in it that looks like one of the givens
     (its digits in another order or place, or its coefficient dropped: ``u`` for ``2u``) is
-    put back as that given."""
+    put back as that given, or a number it comes to scaled as that given's copy written on the
+    line (``text``: all its sides) scales it."""
     if bad.raw is None:
         return False
     values = [g.value if g.value is not None else g.definition for g in ctx.problem.givens if not g.unknown]
@@ -272,12 +290,49 @@ def copied_wrong(ctx: Context, bad: Pair, holds: Holds) -> bool:
             for g in givens:
                 if _looks_like(a, g) and _holds_with(ctx, replace(bad, raw=raw), {a: g}, holds):
                     return True
+    return _scaled_copy(ctx, bad, givens, holds, text or bad.text)
+
+
+def _scaled_copy(ctx: Context, bad: Pair, givens: list[sympy.Expr], holds: Holds, text: str) -> bool:
+    """Whether ``bad`` holds once a number it comes to is scaled as a given copied wrongly on the
+    line scales it: ``(3/4)(2u)`` read as 3u/2, with e = 2/3 copied as 3/4; ``2(7.84)(7.2) = 112.9``
+    with the 2.7 m copied as 7.2 (112.9 is then 42.3)."""
+    assert bad.raw is not None
+    written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?:/\d+)?(?![\w.])", text)}
+    numbers = set().union(*(x.atoms(sympy.Number) for x in bad.raw)) - {sympy.Integer(0)}
+    for c in written:
+        for g in givens:
+            if not (c and g.is_Rational and _looks_like(c, g)):
+                continue
+            for a in numbers:
+                if any(_holds_with(ctx, bad, {a: a * k}, holds) for k in (g / c, c / g)):
+                    return True
+    return False
+
+
+def copied_into_working(ctx: Context, sides: tuple[str, ...], exprs: list, holds: Callable[[list], bool]) -> bool:
+    """Whether a line of working holds once each of its sides of numbers is scaled as a given's
+    copy written on it scales it (``V² = 2ad = 2(7.84)(7.2) = 112.9`` with the skid's 2.7 m
+    copied as 7.2: 2(7.84)(2.7) = 42.3); ``holds`` judges the sides (in the student's names)."""
+    written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?:/\d+)?(?![\w.])", " ".join(sides))}
+    data = [g for g in ctx.data if g.is_Rational and g != 0]
+    numeric = [not x.free_symbols for x in exprs]
+    if not any(numeric) or all(numeric):
+        return False
+    for c in written - set(ctx.data):
+        for g in data:
+            if not (c and _looks_like(c, g)):
+                continue
+            for k in (g / c, c / g):  # the copy a factor of the working, or a divisor (g in V²/2g)
+                if holds([x * k if n else x for x, n in zip(exprs, numeric, strict=True)]):
+                    return True
     return False
 
 
 def _looks_like(a: sympy.Expr, g: sympy.Expr) -> bool:
     """``a`` written for the given ``g``: the same digits in another order or place (3.64 for
-    3.46, 60 for 6), or a letter with its coefficient lost (``u`` for ``2u``)."""
+    3.46, 60 for 6), a letter with its coefficient lost (``u`` for ``2u``), or another simple
+    fraction of the same sign (½ for ⅓)."""
     if a == g or a == -g:
         return False
     if isinstance(a, sympy.Symbol):
@@ -291,5 +346,95 @@ def _looks_like(a: sympy.Expr, g: sympy.Expr) -> bool:
 
     if len(digits(g)) >= 2 and sorted(digits(a)) == sorted(digits(g)):
         return True
+    if _simple_fraction(a) and _simple_fraction(g) and (a > 0) == (g > 0):  # e = 1/2 written for 1/3
+        return True
     whole = [format(Decimal(str(sympy.Float(x, 15))).normalize(), "f") for x in (a, g)]  # 1020 for 1200: zeros too
     return "." not in "".join(whole) and len(whole[1]) >= 3 and sorted(whole[0]) == sorted(whole[1])
+
+
+#: What a report says of a line that holds with one term's sign flipped, by the slip's name.
+FLIPPED = {
+    "algebra": ": it holds with the sign of one term changed (a slip in rearranging: a sign lost).",
+    "b_sign": ": it holds with one velocity's sign reversed (a velocity taken in the wrong direction).",
+}
+
+
+#: A slip found by a term's sign: its name, and the line with that sign put right (in the
+#: unknowns: the equation the line stands for).
+Flip = tuple[str, sympy.Expr | None]
+
+
+def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip:
+    """``algebra`` or ``b_sign`` where ``bad`` holds with the sign of exactly one of its terms
+    changed (``v = 3eu - w`` from ``w - v = 3eu``: v's sign lost; ``0.5(6) + 2(2) = 0.5(0.2) + 2v``
+    for an A that moves back: a velocity's); "" otherwise. A flipped term that is a mass times
+    a velocity of the problem (or times a number on the line) is ``b_sign``; any other,
+    ``algebra``. Only lines of three terms or
+    more: ``v = 1.6`` for -1.6 is an answer's sign."""
+    if bad.raw is None:
+        return "", None
+    terms = [sympy.Add.make_args(x) for x in bad.raw]
+    if sum(len(t) for t in terms) < 3:
+        return "", None
+    found = []
+    for i, side in enumerate(bad.raw):
+        for term in terms[i]:
+            raw = list(bad.raw)
+            raw[i] = side - 2 * term
+            left, right = (ctx.in_unknowns(x) for x in raw)
+            if holds(replace(bad, left=left, right=right, raw=(raw[0], raw[1]))):
+                found.append((term, left - right))
+    if len(found) != 1:
+        return "", None  # none, or more than one way: not this slip
+    term, right_way = found[0]
+    if ctx.in_unknowns(term).free_symbols & set(unknowns):
+        return "algebra", right_way
+    return "b_sign" if _momentum_of_velocity(ctx, term, bad.text) else "algebra", right_way
+
+
+def sign_of_a_term(exprs: list, holds: Callable[[list], bool]) -> str:
+    """A chain's line ``a = b`` (in letters and numbers) that holds with the sign of exactly one
+    of its terms changed (``0 = v_2² + 2(9.8)(1.4)`` for ``0 = v_2² - 2(9.8)(1.4)``): ``algebra``
+    where that term has a letter, ``b_sign`` where it is a number (a momentum, a mass times a
+    velocity); "" otherwise (none, more than one, or a line of numbers only: arithmetic)."""
+    if len(exprs) != 2 or not any(x.free_symbols for x in exprs):
+        return ""
+    terms = [sympy.Add.make_args(x) for x in exprs]
+    if sum(len(t) for t in terms) < 3:
+        return ""
+    found = [
+        (t, [*exprs[:i], side - 2 * t, *exprs[i + 1 :]])
+        for i, side in enumerate(exprs)
+        for t in terms[i]
+        if t != 0 and holds([*exprs[:i], side - 2 * t, *exprs[i + 1 :]])
+    ]
+    if len(_one_up_to_sign([x[0] - x[1] for _t, x in found])) != 1:
+        return ""
+    return "algebra" if any(t.free_symbols for t, _x in found) else "b_sign"
+
+
+def _one_up_to_sign(differences: list[sympy.Expr]) -> list[sympy.Expr]:
+    """The relations ``differences`` (each lhs - rhs), one of each up to its sign (``0 = -v² + 27.4``
+    is ``0 = v² - 27.4``: the same sign lost, found from either term)."""
+    out: list[sympy.Expr] = []
+    for d in differences:
+        if not any(sympy.expand(d - o) == 0 or sympy.expand(d + o) == 0 for o in out):
+            out.append(d)
+    return out
+
+
+def _momentum_of_velocity(ctx: Context, term: sympy.Expr, text: str) -> bool:
+    """Whether ``term`` is a mass of the problem times one of its velocities (given, or a number
+    written on the line): ``0.5(0.2)`` with m_A = 0.5 kg and A's 0.2 m/s."""
+    givens = [g for g in ctx.problem.givens if g.value is not None and not g.unknown and g.value != 0]
+    masses = [g.value for g in givens if g.name.startswith("m")]
+    velocities = [g for g in givens if g.name[:1] in "uvw"]
+    written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", text)}
+    for m in masses:
+        v = sympy.simplify(term / m)
+        v = sympy.nsimplify(v, rational=True) if v.is_number else v
+        if any(sympy.simplify(abs(v) - abs(g.value)) == 0 for g in velocities):
+            return True
+        if v.is_number and v != 0 and abs(v) in written:
+            return True
+    return False
