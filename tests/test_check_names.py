@@ -320,3 +320,68 @@ def test_the_deflection_declared_in_words(declared: str) -> None:
         "tan φ = 2/(sqrt(3)(1 - e))\ntan δ = (tan φ - tan 30)/(1 + tan φ tan 30)\n"
     )
     assert by_line(AQA_30, work).get("4") == "correct"
+
+
+OCR_M3_ALPHA = "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "(writing a for α, and x, y for the components of A and B along the line of centres after)",
+        "Use a for alpha throughout.",
+        "a stands for \\alpha; x and y are A's and B's components along the line of centres after",
+        "a, k for α, u",
+    ],
+)
+def test_a_short_letter_said_in_words_to_stand_for_the_problems_letter(said: str) -> None:
+    # OCR M3 2012 Q2 (A 2m, B m, each at u at α to the line of centres, opposite ways, e = 1/2):
+    # along: 2m u cos α - m u cos α = 2m x + m y, y - x = (1/2)(2 u cos α) -> x = 0, y = u cos α
+    k = "k" if said.startswith("a, k") else "u"
+    work = (
+        f"{said}\n2m {k} cos a - m {k} cos a = 2m x + m y\ny - x = 0.5({k} cos a + {k} cos a)\nx = 0\ny = {k} cos a\n"
+    )
+    assert by_line(OCR_M3_ALPHA, work) == {str(n): "correct" for n in range(2, 6)}
+
+
+def test_a_letter_said_to_stand_for_a_word_is_not_a_name() -> None:
+    # "as for" and "so for" are English: nothing is declared, the line stays not read
+    from derive.checking.context import Context
+    from derive.checking.wordnames import in_words
+
+    ctx = Context(derive.solve(derive.load(OCR_M3_ALPHA)), None)
+    assert in_words("as for alpha, it is acute; so for u", ctx) == {}
+    assert set(in_words("(a for alpha)", ctx)) == {"a"}
+
+
+def test_a_quantity_the_file_defines_is_a_name_a_derivation_may_use() -> None:
+    # Edexcel FM1 June 2023 Q7(a), the mark scheme's own lines: "V cos(beta) = U cos(alpha)",
+    # "V sin(beta) = e_1 U sin(alpha)", "tan(beta) = e_1 tan(alpha)" (β the statement's angle after,
+    # a [define] of the file; V the speed after, never declared)
+    work = "V cos β = U cos α\nV sin β = e₁ U sin α\ntan β = e₁ tan α\n"
+    assert by_line("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == {
+        "1": "correct",
+        "2": "correct",
+        "3": "correct",
+    }
+
+
+def test_a_letter_with_a_digit_is_one_name_not_a_product() -> None:
+    # OCR M3 2012 Q2: along the line, the approach speed is 2u cos α, the reduced mass 2m/3, so the
+    # loss is (1/2)(2m/3)(1 - e^2)(2u cos α)^2 = (4/3) m u^2 cos^2 α (1 - e^2) = m u^2 cos^2 α
+    # (e = 1/2); the student writes e1 for the one e: e1^2 is e squared, not e times 1^2
+    work = "KE lost = 4/3 m u^2 cos^2 α (1 - e1^2)\n = m u^2 cos^2 α\n"
+    assert by_line(OCR_M3_ALPHA, work) == {"1": "correct", "2": "correct"}
+
+
+@pytest.mark.parametrize("across", ["u sin α", "-u sin α"])
+def test_a_component_across_named_in_words_unsigned_is_its_size(across: str) -> None:
+    # OCR M3 2012 Q2: B comes in at u at α to the line of centres from the other side (from -n
+    # toward -t): along it B has -u cos α, across it u sin α in size, -u sin α in derive's t.
+    # Unsigned, the student's direction across is their own; signed, derive's.
+    sq = "-" if across.startswith("-") else ""
+    work = (
+        "Along the line of centres B has -u cos α = -u sqrt(1 - sin^2 α)\n"
+        f"Across the line of centres B has {across} = {sq}u sqrt(1 - cos^2 α)\n"
+    )
+    assert by_line(OCR_M3_ALPHA, work) == {"1": "correct", "2": "correct"}

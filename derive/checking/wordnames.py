@@ -21,8 +21,45 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     out = _direct(line, ctx)
     for name, x in [*_possessive(line, ctx).items(), *_angles(line, ctx).items()]:
         out.setdefault(name, x)
-    for name, x in _along(line, ctx).items():
+    for name, x in [*_along(line, ctx).items(), *_letters_for(line, ctx).items()]:
         out.setdefault(name, x)
+    return out
+
+
+#: A student's short name (``a``, ``e1``, ``u_A``, ``α``) and one of the problem's as typed in
+#: prose (``alpha``, ``\\beta``, ``β``, ``e_1``, ``U``).
+_MINE = r"(?:[A-Za-z](?:_?\w{1,2})?|[α-ω])"
+_THEIRS = r"(?:\\?[A-Za-z]{2,7}(?:_\w{1,3})?|[A-Za-z](?:_?\w{1,3})?|[α-ω])"
+_SEP = r"\s*(?:,|\band\b|&)\s*"
+_FOR_WORDS = r"\s+(?:for|stands?\s+for|in\s+place\s+of|instead\s+of)\s+(?:the\s+(?:angle|given|letter)\s+)?"
+#: "a for alpha", "e1 stands for e_1" (one pair), "a, b for α, β" (two lists, paired in order).
+_FOR_ONE = re.compile(rf"(?<![\w\\])({_MINE}){_FOR_WORDS}({_THEIRS})(?![\w(])", re.I)
+_FOR_LIST = re.compile(
+    rf"(?<![\w\\])({_MINE}(?:{_SEP}{_MINE})+){_FOR_WORDS}({_THEIRS}(?:{_SEP}{_THEIRS})+)(?![\w(])", re.I
+)
+#: Words of one or two letters that are never a name in "… for …" ("as for", "so for").
+_NOT_NAMES = frozenset({"as", "so", "is", "or", "if", "to", "in", "on", "of", "at", "by", "be", "it", "an", "do", "go"})
+
+
+def _letters_for(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``(a for alpha, b for beta)`` -> {a: alpha, b: beta}, and the list form ``a, b for α, β``:
+    the student's short names for the problem's own (a given, a quantity the statement names),
+    each paired with the one in the same place."""
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    pairs = []
+    for m in _FOR_LIST.finditer(plain):
+        mine, theirs = re.split(_SEP, m[1].strip()), re.split(_SEP, m[2].strip())
+        if len(mine) == len(theirs):
+            pairs += zip(mine, theirs, strict=True)
+    pairs += [(m[1], m[2]) for m in _FOR_ONE.finditer(plain)]
+    out: dict[str, sympy.Expr] = {}
+    for name, target in pairs:
+        target = _GREEK_LETTERS.get(target, target.lstrip("\\"))
+        name = _GREEK_LETTERS.get(name, name)
+        if name.lower() in _NOT_NAMES or name == target or name in names or target not in names:
+            continue
+        out.setdefault(name, names[target][0])
     return out
 
 
