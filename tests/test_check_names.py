@@ -385,3 +385,27 @@ def test_a_component_across_named_in_words_unsigned_is_its_size(across: str) -> 
         f"Across the line of centres B has {across} = {sq}u sqrt(1 - cos^2 α)\n"
     )
     assert by_line(OCR_M3_ALPHA, work) == {"1": "correct", "2": "correct"}
+
+
+AQA_30_SPEED = "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "where V is A's speed after the collision",
+        "Let V be the speed of A after the impact.",
+        "Let the speed of A after the impact be V.",
+        "A's speed is now V.",
+        "The speed of sphere A afterwards = V",
+        "A moves off with speed V.",
+    ],
+)
+@pytest.mark.parametrize("slip", [False, True])
+def test_a_speed_after_an_oblique_impact_named_in_words(said: str, slip: bool) -> None:
+    # AQA M3 2007 Q6 (equal spheres, A at u at 30° to the line of centres, B at rest, e): A keeps
+    # u sin 30° = u/2 across; along, A has sqrt(3) u (1 - e)/4, so V^2 = u^2/4 + 3u^2(1 - e)^2/16.
+    # With 1 + e for 1 - e the line is wrong, never not read.
+    sign = "+" if slip else "-"
+    work = f"{said}\nV^2 = (u/2)^2 + 3u^2(1 {sign} e)^2/16\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "wrong" if slip else "correct"}

@@ -21,8 +21,48 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     out = _direct(line, ctx)
     for name, x in [*_possessive(line, ctx).items(), *_angles(line, ctx).items()]:
         out.setdefault(name, x)
-    for name, x in [*_along(line, ctx).items(), *_letters_for(line, ctx).items()]:
+    for name, x in [*_along(line, ctx).items(), *_letters_for(line, ctx).items(), *_speeds_after(line, ctx).items()]:
         out.setdefault(name, x)
+    return out
+
+
+#: A body in words: ``A``, ``P``, ``sphere B``, ``the ball Q``.
+_WHOSE = r"(?:(?:the\s+)?(?:sphere|ball|particle|disc|puck)\s+)?(\w+)"
+_SPEED_OF = rf"(?:(?:the\s+)?(?:new\s+|final\s+|resultant\s+)?speed\s+of\s+{_WHOSE}|{_WHOSE}['’]s\s+(?:new\s+|final\s+|resultant\s+)?speed)"
+_LATER = r"(?:\s+(?:just\s+|immediately\s+)?(?:after(?:wards)?|now)(?:\s+the\s+(?:impact|collision))?)"
+#: "where V is A's speed after the collision", "let w be the speed of A after", "A's speed is now V",
+#: "the speed of B afterwards = w", "A moves off with speed V": an oblique impact's speed after.
+_SPEED_NAMED = (
+    re.compile(
+        rf"(?<![\w\\])([A-Za-z](?:_?\w{{1,2}})?)\s+(?:is|be|=|denotes?|represents?|for)\s+{_SPEED_OF}{_LATER}", re.I
+    ),
+    re.compile(
+        rf"{_SPEED_OF}(?:{_LATER}|(?=\s+is\s+now))\s*(?:is\s+now|now\s+is|is|=|be)\s*([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])",
+        re.I,
+    ),
+    re.compile(rf"\blet\s+{_SPEED_OF}{_LATER}?\s+be\s+([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])", re.I),
+    re.compile(
+        rf"\b{_WHOSE}\s+(?:now\s+)?moves\s+(?:off\s+|away\s+)?(?:with|at)\s+(?:a\s+)?speed\s+([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])",
+        re.I,
+    ),
+)
+
+
+def _speeds_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``where V is A's speed after the collision`` -> {V: v_A2}: a name for a body's speed after
+    an oblique impact (its size, the speed derive works out), in either order of name and words."""
+    if not ctx.problem.oblique:
+        return {}
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    for k, pattern in enumerate(_SPEED_NAMED):
+        for m in pattern.finditer(plain):
+            groups = [g for g in m.groups() if g]
+            name, body = (groups[0], groups[1]) if k == 0 else (groups[-1], groups[0])
+            b = _body(body, ctx)
+            if b and f"v_{b}2" in names and name not in names and name.lower() not in _NOT_NAMES:
+                out.setdefault(name, names[f"v_{b}2"][0])
     return out
 
 
