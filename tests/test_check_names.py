@@ -409,3 +409,41 @@ def test_a_speed_after_an_oblique_impact_named_in_words(said: str, slip: bool) -
     sign = "+" if slip else "-"
     work = f"{said}\nV^2 = (u/2)^2 + 3u^2(1 {sign} e)^2/16\n"
     assert by_line(AQA_30_SPEED, work) == {"2": "wrong" if slip else "correct"}
+
+
+@pytest.mark.parametrize(
+    ("said", "name", "whose"),
+    [
+        ("A's component along the line of centres after the impact is p.", "p", "A"),
+        ("Let p be A's component along the line of centres after the impact.", "p", "A"),
+        ("The component of B's velocity along the line of centres after the collision is q.", "q", "B"),
+        ("p, q = components of A, B along the line of centres after impact", "q", "B"),
+        ("Along the line of centres, after: A has p, B has q.", "q", "B"),
+        ("After the impact A has p along the line of centres and u/2 across it.", "p", "A"),
+        ("B moves off along the line of centres with speed q", "q", "B"),
+    ],
+)
+@pytest.mark.parametrize("slip", [False, True])
+def test_a_component_after_named_in_words_is_judged_not_taken_as_defined(
+    said: str, name: str, whose: str, slip: bool
+) -> None:
+    # AQA M3 2007 Q6 (equal spheres, A at u at 30° to the line of centres, B at rest, e): along,
+    # A has sqrt(3) u (1 - e)/4 after and B sqrt(3) u (1 + e)/4 (B moves off along the line).
+    # The other body's value is a slip: wrong, never "correct" as a definition of the name.
+    right, other = ("1 - e", "1 + e") if whose == "A" else ("1 + e", "1 - e")
+    work = f"{said}\n{name} = √3 u ({other if slip else right})/4\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "wrong" if slip else "correct"}
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Let θ be the angle between A's new path and the line of centres",
+        "θ is the angle between the line of centres and A's path after the impact",
+    ],
+)
+def test_an_angle_after_declared_as_the_angle_between_a_path_and_the_line(said: str) -> None:
+    # AQA M3 2007 Q6: after, A has u/2 across and sqrt(3) u (1 - e)/4 along the line of centres,
+    # so tan θ = (u/2)/(sqrt(3) u (1 - e)/4) = 2/(sqrt(3)(1 - e)); with (1 + e) it is wrong
+    work = f"{said}\ntan θ = 2/(√3 (1 - e))\ntan θ = 2/(√3 (1 + e))\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "correct", "3": "wrong"}
