@@ -447,3 +447,24 @@ def test_an_angle_after_declared_as_the_angle_between_a_path_and_the_line(said: 
     # so tan θ = (u/2)/(sqrt(3) u (1 - e)/4) = 2/(sqrt(3)(1 - e)); with (1 + e) it is wrong
     work = f"{said}\ntan θ = 2/(√3 (1 - e))\ntan θ = 2/(√3 (1 + e))\n"
     assert by_line(AQA_30_SPEED, work) == {"2": "correct", "3": "wrong"}
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "B: along = -15 cos 37.6° = -11.88\nB: across = {sign}15 sin 37.6° = {sign}{value}\n",
+        "along l.o.c.: u_B = -15 cos 37.6° = -11.88\nperp. to l.o.c.: w_B = {sign}15 sin 37.6° = {sign}{value}\n",
+        "Along the line of impact B has -15 cos 37.6° = -11.88\nAcross it B has {sign}15 sin 37.6° = {sign}{value}\n",
+    ],
+)
+@pytest.mark.parametrize(
+    ("sign", "value", "second"), [("", "9.15", "correct"), ("-", "9.15", "correct"), ("", "9.51", "wrong")]
+)
+def test_a_component_across_written_as_a_size_beside_a_signed_one_along(
+    work: str, sign: str, value: str, second: str
+) -> None:
+    # Notes Example 4.C.11: B at 15 m/s, at 37.6° to the line of impact, moving toward A: along
+    # -15 cos 37.6° = -11.88 (n from A toward B), across 15 sin 37.6° = 9.15 in size (derive's t
+    # has it negative). Unsigned it is a size, signed derive's; 9.51 is a slip either way.
+    lines = by_line("notes-4c11-two-spheres", work.format(sign=sign, value=value))
+    assert lines == {"1": "correct", "2": second}

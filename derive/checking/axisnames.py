@@ -83,6 +83,7 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
     nm = ctx.model.nm
     out: dict[str, sympy.Expr] = {}
     letters: dict[str, str] = {}  # a subscript -> the axis its names were declared on
+    flips: dict[str, int] = {}  # a subscript across -> -1 where its size is derive's negative
     for r in relations:
         name = r.sides[0].strip()
         if len(r.sides) < 2 or name in reserved or not re.fullmatch(r"[A-Za-z]_?\w{1,3}", name):
@@ -97,7 +98,9 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
             continue
         x = getattr(nm, f"{body}{'2' if after else '1'}{axis}", None)
         if x is not None:
-            out.setdefault(name, x)
+            if axis == "t" and not after and not r.sides[1].lstrip().startswith("-") and _negative(ctx, x):
+                flips[sub] = -1  # "perp.: w = 15 sin 37.6°": a size, the student's own way across
+            out.setdefault(name, flips.get(sub, 1) * x if axis == "t" else x)
             letters.setdefault(sub, axis)
     return out
 

@@ -194,6 +194,8 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
             labels.append(body)
         else:
             body = "" if r.label else body
+            if r.label and len(r.sides) > 1 and _AXIS_ONLY.match(r.sides[0]):  # "B: across = 15 sin 37.6°"
+                r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
             labels.append(r.label)
         out.append(r)
     return out, labels
