@@ -468,3 +468,28 @@ def test_a_component_across_written_as_a_size_beside_a_signed_one_along(
     # has it negative). Unsigned it is a size, signed derive's; 9.51 is a slip either way.
     lines = by_line("notes-4c11-two-spheres", work.format(sign=sign, value=value))
     assert lines == {"1": "correct", "2": second}
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "A's component along the line of centres is a = {v}",
+        "Let a be A's component along the line of centres before the impact: a = {v}",
+        "The component of A's velocity along the line of centres before is a = {v}",
+    ],
+)
+@pytest.mark.parametrize(("v", "verdict"), [("4 cos 60° = 2", "correct"), ("4 sin 60° = 3.46", "wrong")])
+def test_a_component_named_in_words_and_valued_on_the_same_line(said: str, v: str, verdict: str) -> None:
+    # OCR FM 2023 (A 4 m/s at 60° to the line of centres): along 4 cos 60° = 2; resolving with sin
+    # is the wrong axis, wrong, never "correct" as the definition of a
+    assert by_line(OCR_FM, said.format(v=v) + "\n") == {"1": verdict}
+
+
+def test_a_letter_inside_the_value_after_has_is_not_a_name_declared() -> None:
+    # "A has U cos 30°": U is a factor of the value, not the name of A's component
+    from derive.checking.context import Context
+    from derive.checking.wordnames import in_words
+
+    ctx = Context(derive.solve(derive.load(AQA_30_SPEED)), None)
+    assert "U" not in in_words("Along the line of centres A has U cos 30° = √3/2 U, across it U/2", ctx)
+    assert set(in_words("Along the line of centres, after: A has p, B has q.", ctx)) == {"p", "q"}

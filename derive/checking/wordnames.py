@@ -38,7 +38,9 @@ _ONE_NAME = r"[A-Za-z](?:_?\w{1,2})?"
 #: Where a clause names its names: "is p", "are p and q", "has p", "let p, q be", "p, q = …".
 _SAID_NAMES = (
     re.compile(
-        rf"\b(?:is|are|be|=|has|have)\s+({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)(?![\w'(/^*.]|\s*[-+*/^=(])", re.I
+        rf"\b(?:is|are|be|=|has|have)\s+({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)(?![\w'(/^*.]|\s*[-+*/^=(])"
+        r"(?=\s*(?:$|[,;:)]|\.\s|(?:and|along|across|perpendicular|parallel|after|before|now|in|for|then|so|with)\b))",
+        re.I,
     ),
     re.compile(rf"\b(?:let|where)\s+({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)\s+(?:be|are|is|=|denotes?)\b", re.I),
     re.compile(rf"^\s*({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)\s*(?:=|:|are\b|is\b)", re.I),
@@ -54,8 +56,12 @@ def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     l.o.c.``: an oblique impact's components named in words, in any order of names and words.
     Each clause says one axis (along the line of centres, or across it) and one time (before or
     after); its names pair with the bodies it names, in order."""
-    if not ctx.problem.oblique or "=" in re.sub(r"\s=\s*(?:the\s+)?components?\b", "", line):
+    if not ctx.problem.oblique:
         return {}
+    cut = re.split(r"(?<=[\w'’}])\s*=(?!\s*(?:the\s+)?components?\b)", line, maxsplit=1)
+    if len(cut) > 1 and "=" in cut[0]:
+        return {}
+    valued, line = len(cut) > 1, cut[0]  # "A's component along the l.o.c. is a = 4 cos 60°": the words before
     labels = set(ctx.problem.labels) | {"A", "B"}
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
@@ -65,6 +71,7 @@ def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             clause = clause[: c.start()]
         along, across = bool(_ALONG_WORDS.search(clause)), bool(_ACROSS_WORDS.search(clause))
         after, before = bool(_TIME_AFTER.search(clause)), bool(_TIME_BEFORE.search(clause))
+        before = before or (valued and not after)  # a value at once, no time said: the given resolved
         if along == across or after == before or not _WHAT_WORDS.search(clause):
             continue
         bodies = [
