@@ -320,3 +320,176 @@ def test_the_deflection_declared_in_words(declared: str) -> None:
         "tan φ = 2/(sqrt(3)(1 - e))\ntan δ = (tan φ - tan 30)/(1 + tan φ tan 30)\n"
     )
     assert by_line(AQA_30, work).get("4") == "correct"
+
+
+OCR_M3_ALPHA = "ocr-m3-2012-january-q2-opposite-directions-each-at-alpha"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "(writing a for α, and x, y for the components of A and B along the line of centres after)",
+        "Use a for alpha throughout.",
+        "a stands for \\alpha; x and y are A's and B's components along the line of centres after",
+        "a, k for α, u",
+    ],
+)
+def test_a_short_letter_said_in_words_to_stand_for_the_problems_letter(said: str) -> None:
+    # OCR M3 2012 Q2 (A 2m, B m, each at u at α to the line of centres, opposite ways, e = 1/2):
+    # along: 2m u cos α - m u cos α = 2m x + m y, y - x = (1/2)(2 u cos α) -> x = 0, y = u cos α
+    k = "k" if said.startswith("a, k") else "u"
+    work = (
+        f"{said}\n2m {k} cos a - m {k} cos a = 2m x + m y\ny - x = 0.5({k} cos a + {k} cos a)\nx = 0\ny = {k} cos a\n"
+    )
+    assert by_line(OCR_M3_ALPHA, work) == {str(n): "correct" for n in range(2, 6)}
+
+
+def test_a_letter_said_to_stand_for_a_word_is_not_a_name() -> None:
+    # "as for" and "so for" are English: nothing is declared, the line stays not read
+    from derive.checking.context import Context
+    from derive.checking.wordnames import in_words
+
+    ctx = Context(derive.solve(derive.load(OCR_M3_ALPHA)), None)
+    assert in_words("as for alpha, it is acute; so for u", ctx) == {}
+    assert set(in_words("(a for alpha)", ctx)) == {"a"}
+
+
+def test_a_quantity_the_file_defines_is_a_name_a_derivation_may_use() -> None:
+    # Edexcel FM1 June 2023 Q7(a), the mark scheme's own lines: "V cos(beta) = U cos(alpha)",
+    # "V sin(beta) = e_1 U sin(alpha)", "tan(beta) = e_1 tan(alpha)" (β the statement's angle after,
+    # a [define] of the file; V the speed after, never declared)
+    work = "V cos β = U cos α\nV sin β = e₁ U sin α\ntan β = e₁ tan α\n"
+    assert by_line("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == {
+        "1": "correct",
+        "2": "correct",
+        "3": "correct",
+    }
+
+
+def test_a_letter_with_a_digit_is_one_name_not_a_product() -> None:
+    # OCR M3 2012 Q2: along the line, the approach speed is 2u cos α, the reduced mass 2m/3, so the
+    # loss is (1/2)(2m/3)(1 - e^2)(2u cos α)^2 = (4/3) m u^2 cos^2 α (1 - e^2) = m u^2 cos^2 α
+    # (e = 1/2); the student writes e1 for the one e: e1^2 is e squared, not e times 1^2
+    work = "KE lost = 4/3 m u^2 cos^2 α (1 - e1^2)\n = m u^2 cos^2 α\n"
+    assert by_line(OCR_M3_ALPHA, work) == {"1": "correct", "2": "correct"}
+
+
+@pytest.mark.parametrize("across", ["u sin α", "-u sin α"])
+def test_a_component_across_named_in_words_unsigned_is_its_size(across: str) -> None:
+    # OCR M3 2012 Q2: B comes in at u at α to the line of centres from the other side (from -n
+    # toward -t): along it B has -u cos α, across it u sin α in size, -u sin α in derive's t.
+    # Unsigned, the student's direction across is their own; signed, derive's.
+    sq = "-" if across.startswith("-") else ""
+    work = (
+        "Along the line of centres B has -u cos α = -u sqrt(1 - sin^2 α)\n"
+        f"Across the line of centres B has {across} = {sq}u sqrt(1 - cos^2 α)\n"
+    )
+    assert by_line(OCR_M3_ALPHA, work) == {"1": "correct", "2": "correct"}
+
+
+AQA_30_SPEED = "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "where V is A's speed after the collision",
+        "Let V be the speed of A after the impact.",
+        "Let the speed of A after the impact be V.",
+        "A's speed is now V.",
+        "The speed of sphere A afterwards = V",
+        "A moves off with speed V.",
+    ],
+)
+@pytest.mark.parametrize("slip", [False, True])
+def test_a_speed_after_an_oblique_impact_named_in_words(said: str, slip: bool) -> None:
+    # AQA M3 2007 Q6 (equal spheres, A at u at 30° to the line of centres, B at rest, e): A keeps
+    # u sin 30° = u/2 across; along, A has sqrt(3) u (1 - e)/4, so V^2 = u^2/4 + 3u^2(1 - e)^2/16.
+    # With 1 + e for 1 - e the line is wrong, never not read.
+    sign = "+" if slip else "-"
+    work = f"{said}\nV^2 = (u/2)^2 + 3u^2(1 {sign} e)^2/16\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "wrong" if slip else "correct"}
+
+
+@pytest.mark.parametrize(
+    ("said", "name", "whose"),
+    [
+        ("A's component along the line of centres after the impact is p.", "p", "A"),
+        ("Let p be A's component along the line of centres after the impact.", "p", "A"),
+        ("The component of B's velocity along the line of centres after the collision is q.", "q", "B"),
+        ("p, q = components of A, B along the line of centres after impact", "q", "B"),
+        ("Along the line of centres, after: A has p, B has q.", "q", "B"),
+        ("After the impact A has p along the line of centres and u/2 across it.", "p", "A"),
+        ("B moves off along the line of centres with speed q", "q", "B"),
+    ],
+)
+@pytest.mark.parametrize("slip", [False, True])
+def test_a_component_after_named_in_words_is_judged_not_taken_as_defined(
+    said: str, name: str, whose: str, slip: bool
+) -> None:
+    # AQA M3 2007 Q6 (equal spheres, A at u at 30° to the line of centres, B at rest, e): along,
+    # A has sqrt(3) u (1 - e)/4 after and B sqrt(3) u (1 + e)/4 (B moves off along the line).
+    # The other body's value is a slip: wrong, never "correct" as a definition of the name.
+    right, other = ("1 - e", "1 + e") if whose == "A" else ("1 + e", "1 - e")
+    work = f"{said}\n{name} = √3 u ({other if slip else right})/4\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "wrong" if slip else "correct"}
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Let θ be the angle between A's new path and the line of centres",
+        "θ is the angle between the line of centres and A's path after the impact",
+    ],
+)
+def test_an_angle_after_declared_as_the_angle_between_a_path_and_the_line(said: str) -> None:
+    # AQA M3 2007 Q6: after, A has u/2 across and sqrt(3) u (1 - e)/4 along the line of centres,
+    # so tan θ = (u/2)/(sqrt(3) u (1 - e)/4) = 2/(sqrt(3)(1 - e)); with (1 + e) it is wrong
+    work = f"{said}\ntan θ = 2/(√3 (1 - e))\ntan θ = 2/(√3 (1 + e))\n"
+    assert by_line(AQA_30_SPEED, work) == {"2": "correct", "3": "wrong"}
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "B: along = -15 cos 37.6° = -11.88\nB: across = {sign}15 sin 37.6° = {sign}{value}\n",
+        "along l.o.c.: u_B = -15 cos 37.6° = -11.88\nperp. to l.o.c.: w_B = {sign}15 sin 37.6° = {sign}{value}\n",
+        "Along the line of impact B has -15 cos 37.6° = -11.88\nAcross it B has {sign}15 sin 37.6° = {sign}{value}\n",
+    ],
+)
+@pytest.mark.parametrize(
+    ("sign", "value", "second"), [("", "9.15", "correct"), ("-", "9.15", "correct"), ("", "9.51", "wrong")]
+)
+def test_a_component_across_written_as_a_size_beside_a_signed_one_along(
+    work: str, sign: str, value: str, second: str
+) -> None:
+    # Notes Example 4.C.11: B at 15 m/s, at 37.6° to the line of impact, moving toward A: along
+    # -15 cos 37.6° = -11.88 (n from A toward B), across 15 sin 37.6° = 9.15 in size (derive's t
+    # has it negative). Unsigned it is a size, signed derive's; 9.51 is a slip either way.
+    lines = by_line("notes-4c11-two-spheres", work.format(sign=sign, value=value))
+    assert lines == {"1": "correct", "2": second}
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "A's component along the line of centres is a = {v}",
+        "Let a be A's component along the line of centres before the impact: a = {v}",
+        "The component of A's velocity along the line of centres before is a = {v}",
+    ],
+)
+@pytest.mark.parametrize(("v", "verdict"), [("4 cos 60° = 2", "correct"), ("4 sin 60° = 3.46", "wrong")])
+def test_a_component_named_in_words_and_valued_on_the_same_line(said: str, v: str, verdict: str) -> None:
+    # OCR FM 2023 (A 4 m/s at 60° to the line of centres): along 4 cos 60° = 2; resolving with sin
+    # is the wrong axis, wrong, never "correct" as the definition of a
+    assert by_line(OCR_FM, said.format(v=v) + "\n") == {"1": verdict}
+
+
+def test_a_letter_inside_the_value_after_has_is_not_a_name_declared() -> None:
+    # "A has U cos 30°": U is a factor of the value, not the name of A's component
+    from derive.checking.context import Context
+    from derive.checking.wordnames import in_words
+
+    ctx = Context(derive.solve(derive.load(AQA_30_SPEED)), None)
+    assert "U" not in in_words("Along the line of centres A has U cos 30° = √3/2 U, across it U/2", ctx)
+    assert set(in_words("Along the line of centres, after: A has p, B has q.", ctx)) == {"p", "q"}

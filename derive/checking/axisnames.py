@@ -83,6 +83,7 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
     nm = ctx.model.nm
     out: dict[str, sympy.Expr] = {}
     letters: dict[str, str] = {}  # a subscript -> the axis its names were declared on
+    flips: dict[str, int] = {}  # a subscript across -> -1 where its size is derive's negative
     for r in relations:
         name = r.sides[0].strip()
         if len(r.sides) < 2 or name in reserved or not re.fullmatch(r"[A-Za-z]_?\w{1,3}", name):
@@ -97,6 +98,44 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
             continue
         x = getattr(nm, f"{body}{'2' if after else '1'}{axis}", None)
         if x is not None:
-            out.setdefault(name, x)
+            if axis == "t" and not after and not r.sides[1].lstrip().startswith("-") and _negative(ctx, x):
+                flips[sub] = -1  # "perp.: w = 15 sin 37.6°": a size, the student's own way across
+            out.setdefault(name, flips.get(sub, 1) * x if axis == "t" else x)
             letters.setdefault(sub, axis)
+    return out
+
+
+def _negative(ctx: Context, c: sympy.Expr) -> bool:
+    """Whether the component ``c`` before the impact is negative: decided, or at every one of a
+    few admissible values of the givens (``-u sin α``, α acute)."""
+    x = ctx.model.num(ctx.model.imp.in_givens(c))
+    if x.is_negative is not None or not x.free_symbols:
+        return bool(x.is_negative)
+    pts = ctx.sampler().points(x.free_symbols, 3)
+    values = [sympy.N(x.xreplace(pt)) for pt in pts]
+    return bool(values) and all(v.is_real and v < 0 for v in values)
+
+
+#: The axes' letters students use: the first (n, x, i) is the line of centres, derive's n.
+AXIS_LETTERS = {"n": "n", "x": "n", "i": "n", "t": "t", "y": "t", "j": "t"}
+
+
+def letter_components(ctx: Context, used: set[str] | None = None) -> dict[str, sympy.Expr]:
+    """A body's components by its letter and an axis (``A_n``, ``A_x``, ``B_j``: before; primed
+    ``A_n'`` after), and ``u_Ax``, ``v_Ay`` (u before, v after) on x and y axes; ``A_T`` the
+    component across named in words and written unsigned: its size before, the same way after
+    (worked out only where ``used``, the names the text uses, has it)."""
+    nm = ctx.model.nm
+    out: dict[str, sympy.Expr] = {}
+    for body in "AB":
+        t1, t2 = getattr(nm, f"{body}1t"), getattr(nm, f"{body}2t")
+        if t1 is not None and t2 is not None and (used is None or {f"{body}_T", f"{body}_Tp"} & used):
+            flip = -1 if _negative(ctx, t1) else 1
+            out[f"{body}_T"], out[f"{body}_Tp"] = flip * t1, flip * t2
+        for letter, c in AXIS_LETTERS.items():
+            out[f"{body}_{letter}"] = getattr(nm, f"{body}1{c}")
+            out[f"{body}_{letter}p"] = getattr(nm, f"{body}2{c}")
+            if letter in "xy":
+                out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
+                out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
     return out

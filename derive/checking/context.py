@@ -212,6 +212,9 @@ class Context:
         out["T_2"] = (symbol("T_2"), T2)
         out["T_lost"] = (symbol("T_lost"), T1 - T2)
         out["J_n"] = (symbol("J_n"), impulse_n(model.m_A, nm.A1n, nm.A2n))
+        for d in p.asks.defined:  # the file's own quantities (beta = -theta_A2: the statement's β)
+            by_name = {s: out[s.name][1] for s in d.expr.free_symbols if s.name in out}
+            out.setdefault(d.name, (d.symbol, d.expr.xreplace(by_name)))
         return out
 
     def in_unknowns(self, expr: sympy.Expr) -> sympy.Expr:

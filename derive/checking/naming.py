@@ -27,6 +27,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, notes_names, subscript
 from derive.checking.wordnames import in_words, says_what
@@ -135,6 +136,8 @@ def rewrite(text: str, known: set[str]) -> str:
             return " ".join(letters)
         if sub and head not in GREEK and len(letters) > 1 and all(x in known for x in letters[:-1]):
             return " ".join(letters)  # mv_Q: m times the student's own v_Q
+        if len(word) == 2 and word[0] in known and word[1].isdigit():  # e1: e_1, or the one e (not e times 1)
+            return f"{word[0]}_{word[1]}" if f"{word[0]}_{word[1]}" in known else word[0]
         if len(word) == 2 and word[0] in known and not _SHORT_WORDS.fullmatch(word.lower()) and word not in GREEK:
             return " ".join(letters)  # gh: g times the student's own h
         return word
@@ -184,15 +187,30 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
             labels.append(r.label or body)
         elif h and (h.group(2) or body):
             body = (h.group(2) or body).upper()
-            r = replace(r, sides=(h.group(1), h.group(3), *r.sides[1:]))
+            r = replace(r, sides=(_unsigned(h.group(1), h.group(3)), h.group(3), *r.sides[1:]))
             labels.append(body)
         elif not r.label and body and _AXIS_ONLY.match(r.sides[0]):
+            r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
             labels.append(body)
         else:
             body = "" if r.label else body
+            if r.label and len(r.sides) > 1 and _AXIS_ONLY.match(r.sides[0]):  # "B: across = 15 sin 37.6°"
+                r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
             labels.append(r.label)
         out.append(r)
     return out, labels
+
+
+def _unsigned(words: str, value: str) -> str:
+    """The words naming the axis across the line of centres, marked where the value after them is
+    written unsigned (``across it A has u sin 30°``): a size, in the student's own direction across."""
+    if re.match(r"\s*(?:across|perpendicular)", words, re.I) and not value.lstrip().startswith("-"):
+        return words + " " + _SIZE
+    return words
+
+
+#: The mark :func:`_unsigned` puts on the words naming an axis across, read as ``A_T`` (:func:`.axisnames.letter_components`).
+_SIZE = "unsigned"
 
 
 def of_the_body(
@@ -217,10 +235,13 @@ def of_the_body(
     text = _COMPONENT_OF.sub("", text)
     if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
         return f"{body}_n{prime}"
-    if re.fullmatch(
-        r"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*", text, re.I
-    ):
-        return f"{body}_t{prime}"
+    across = re.fullmatch(
+        rf"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*({_SIZE})?\s*",
+        text,
+        re.I,
+    )
+    if across:
+        return f"{body}_{'T' if across.group(1) else 't'}{prime}"
     return text
 
 
@@ -316,7 +337,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         if name in names:
             out.setdefault(alias, names[name][0])
     if oblique:
-        out.update(_components(nm))
+        out.update(letter_components(ctx, used))
     out["u"] = before["A"]
     if oblique:  # a single body's components
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
@@ -355,24 +376,6 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
         out["M"] = masses[0]
         if not any(str(s) == "m" for g in p.givens for x in (g.value, g.definition) if x for s in x.free_symbols):
             out["m"] = masses[0]
-    return out
-
-
-#: The axes' letters students use: the first (n, x, i) is the line of centres, derive's n.
-AXIS_LETTERS = {"n": "n", "x": "n", "i": "n", "t": "t", "y": "t", "j": "t"}
-
-
-def _components(nm) -> dict[str, sympy.Expr]:
-    """A body's components by its letter and an axis (``A_n``, ``A_x``, ``B_j``: before; primed
-    ``A_n'`` after), and ``u_Ax``, ``v_Ay`` (u before, v after) on x and y axes."""
-    out: dict[str, sympy.Expr] = {}
-    for body in "AB":
-        for letter, c in AXIS_LETTERS.items():
-            out[f"{body}_{letter}"] = getattr(nm, f"{body}1{c}")
-            out[f"{body}_{letter}p"] = getattr(nm, f"{body}2{c}")
-            if letter in "xy":
-                out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
-                out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
     return out
 
 

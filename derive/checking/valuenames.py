@@ -201,6 +201,9 @@ def candidates(ctx: Context, truth: dict, dims: set[Dim] = frozenset()) -> list[
     derived = ctx.derived()
     out += [(n, derived[n][0]) for n in ("T_lost", "J_n") if n in derived]
     out += [("-J_n", -derived["J_n"][0])] if "J_n" in derived else []
+    if ctx.problem.oblique:  # "V cos β = U cos α": a speed after, its components written from it
+        bodies = "A" if ctx.problem.fixed_B else "AB"
+        out += [(f"v_{b}2", derived[f"v_{b}2"][0]) for b in bodies if f"v_{b}2" in derived]
     out += [(f"-{u.name}", -u) for u in U if u.name.startswith("v_")]
     out += [(g.name, g.symbol) for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
     zeros = ctx.model.zeros

@@ -21,8 +21,152 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     out = _direct(line, ctx)
     for name, x in [*_possessive(line, ctx).items(), *_angles(line, ctx).items()]:
         out.setdefault(name, x)
-    for name, x in _along(line, ctx).items():
+    for name, x in [*_along(line, ctx).items(), *_letters_for(line, ctx).items(), *_speeds_after(line, ctx).items()]:
         out.setdefault(name, x)
+    for name, x in _components_said(line, ctx).items():
+        out.setdefault(name, x)
+    return out
+
+
+_LOC = r"(?:line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\b\.?|common\s+normal)"
+_ALONG_WORDS = re.compile(rf"\b(?:along|parallel\s+to|in\s+the\s+direction\s+of)\s+(?:the\s+)?{_LOC}", re.I)
+_ACROSS_WORDS = re.compile(
+    rf"\b(?:across|perpendicular\s+to|at\s+right\s+angles\s+to)\s+(?:the\s+)?(?:{_LOC}|it)\b|\btangential|\bcommon\s+tangent",
+    re.I,
+)
+_ONE_NAME = r"[A-Za-z](?:_?\w{1,2})?"
+#: Where a clause names its names: "is p", "are p and q", "has p", "let p, q be", "p, q = …".
+_SAID_NAMES = (
+    re.compile(
+        rf"\b(?:is|are|be|=|has|have)\s+({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)(?![\w'(/^*.]|\s*[-+*/^=(])"
+        r"(?=\s*(?:$|[,;:)]|\.\s|(?:and|along|across|perpendicular|parallel|after|before|now|in|for|then|so|with)\b))",
+        re.I,
+    ),
+    re.compile(rf"\b(?:let|where)\s+({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)\s+(?:be|are|is|=|denotes?)\b", re.I),
+    re.compile(rf"^\s*({_ONE_NAME}(?:\s*(?:,|and)\s*{_ONE_NAME})*)\s*(?:=|:|are\b|is\b)", re.I),
+)
+_TIME_AFTER = re.compile(r"\b(?:after(?:wards)?|now|final|new|leaves?|moves?\s+off)\b", re.I)
+_TIME_BEFORE = re.compile(r"\b(?:before|initially|initial)\b", re.I)
+_WHAT_WORDS = re.compile(r"\bcomponents?\b|\bvelocit(?:y|ies)\b|\bhas\b|\bhave\b", re.I)
+
+
+def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``A's component along the line of centres after the impact is p``, ``let p, q be the
+    components of A, B along the line of centres after``, ``after: A has p, B has q along the
+    l.o.c.``: an oblique impact's components named in words, in any order of names and words.
+    Each clause says one axis (along the line of centres, or across it) and one time (before or
+    after); its names pair with the bodies it names, in order."""
+    if not ctx.problem.oblique:
+        return {}
+    cut = re.split(r"(?<=[\w'’}])\s*=(?!\s*(?:the\s+)?components?\b)", line, maxsplit=1)
+    if len(cut) > 1 and "=" in cut[0]:
+        return {}
+    valued, line = len(cut) > 1, cut[0]  # "A's component along the l.o.c. is a = 4 cos 60°": the words before
+    labels = set(ctx.problem.labels) | {"A", "B"}
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    for clause in re.split(r"[;.](?:\s|$)", re.sub(r"\$|\\[()]|[{}]", " ", line)):
+        a, c = _ALONG_WORDS.search(clause), _ACROSS_WORDS.search(clause)
+        if a and c and a.start() < c.start():  # "A has p along the line of centres and u/2 across it"
+            clause = clause[: c.start()]
+        along, across = bool(_ALONG_WORDS.search(clause)), bool(_ACROSS_WORDS.search(clause))
+        after, before = bool(_TIME_AFTER.search(clause)), bool(_TIME_BEFORE.search(clause))
+        before = before or (valued and not after)  # a value at once, no time said: the given resolved
+        if along == across or after == before or not _WHAT_WORDS.search(clause):
+            continue
+        bodies = [
+            _body(m[1], ctx) for m in re.finditer(r"(?<![\w\\])([A-Z])(?:['’]s)?(?![\w])", clause) if m[1] in labels
+        ]
+        said = [
+            n for p in _SAID_NAMES for m in p.finditer(clause) for n in re.split(r"\s*(?:,|\band\b)\s*", m[1].strip())
+        ]
+        said = list(
+            dict.fromkeys(n for n in said if n not in labels and n not in names and n.lower() not in _NOT_NAMES)
+        )
+        bodies = [b for k, b in enumerate(bodies) if b and b not in bodies[:k]]
+        if not said or len(said) != len(bodies):
+            continue
+        for name, b in zip(said, bodies, strict=True):
+            x = getattr(ctx.model.nm, f"{b}{'2' if after else '1'}{'n' if along else 't'}", None)
+            if x is not None:
+                out.setdefault(name, x)
+    return out
+
+
+#: A body in words: ``A``, ``P``, ``sphere B``, ``the ball Q``.
+_WHOSE = r"(?:(?:the\s+)?(?:sphere|ball|particle|disc|puck)\s+)?(\w+)"
+_SPEED_OF = rf"(?:(?:the\s+)?(?:new\s+|final\s+|resultant\s+)?speed\s+of\s+{_WHOSE}|{_WHOSE}['’]s\s+(?:new\s+|final\s+|resultant\s+)?speed)"
+_LATER = r"(?:\s+(?:just\s+|immediately\s+)?(?:after(?:wards)?|now)(?:\s+the\s+(?:impact|collision))?)"
+#: "where V is A's speed after the collision", "let w be the speed of A after", "A's speed is now V",
+#: "the speed of B afterwards = w", "A moves off with speed V": an oblique impact's speed after.
+_SPEED_NAMED = (
+    re.compile(
+        rf"(?<![\w\\])([A-Za-z](?:_?\w{{1,2}})?)\s+(?:is|be|=|denotes?|represents?|for)\s+{_SPEED_OF}{_LATER}", re.I
+    ),
+    re.compile(
+        rf"{_SPEED_OF}(?:{_LATER}|(?=\s+is\s+now))\s*(?:is\s+now|now\s+is|is|=|be)\s*([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])",
+        re.I,
+    ),
+    re.compile(rf"\blet\s+{_SPEED_OF}{_LATER}?\s+be\s+([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])", re.I),
+    re.compile(
+        rf"\b{_WHOSE}\s+(?:now\s+)?moves\s+(?:off\s+|away\s+)?(?:along\s+(?:the\s+)?[\w\s.]{{1,30}}?\s+)?(?:with|at)\s+(?:a\s+)?speed\s+([A-Za-z](?:_?\w{{1,2}})?)(?![\w'(])",
+        re.I,
+    ),
+)
+
+
+def _speeds_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``where V is A's speed after the collision`` -> {V: v_A2}: a name for a body's speed after
+    an oblique impact (its size, the speed derive works out), in either order of name and words."""
+    if not ctx.problem.oblique:
+        return {}
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    for k, pattern in enumerate(_SPEED_NAMED):
+        for m in pattern.finditer(plain):
+            groups = [g for g in m.groups() if g]
+            name, body = (groups[0], groups[1]) if k == 0 else (groups[-1], groups[0])
+            b = _body(body, ctx)
+            if b and f"v_{b}2" in names and name not in names and name.lower() not in _NOT_NAMES:
+                out.setdefault(name, names[f"v_{b}2"][0])
+    return out
+
+
+#: A student's short name (``a``, ``e1``, ``u_A``, ``α``) and one of the problem's as typed in
+#: prose (``alpha``, ``\\beta``, ``β``, ``e_1``, ``U``).
+_MINE = r"(?:[A-Za-z](?:_?\w{1,2})?|[α-ω])"
+_THEIRS = r"(?:\\?[A-Za-z]{2,7}(?:_\w{1,3})?|[A-Za-z](?:_?\w{1,3})?|[α-ω])"
+_SEP = r"\s*(?:,|\band\b|&)\s*"
+_FOR_WORDS = r"\s+(?:for|stands?\s+for|in\s+place\s+of|instead\s+of)\s+(?:the\s+(?:angle|given|letter)\s+)?"
+#: "a for alpha", "e1 stands for e_1" (one pair), "a, b for α, β" (two lists, paired in order).
+_FOR_ONE = re.compile(rf"(?<![\w\\])({_MINE}){_FOR_WORDS}({_THEIRS})(?![\w(])", re.I)
+_FOR_LIST = re.compile(
+    rf"(?<![\w\\])({_MINE}(?:{_SEP}{_MINE})+){_FOR_WORDS}({_THEIRS}(?:{_SEP}{_THEIRS})+)(?![\w(])", re.I
+)
+#: Words of one or two letters that are never a name in "… for …" ("as for", "so for").
+_NOT_NAMES = frozenset({"as", "so", "is", "or", "if", "to", "in", "on", "of", "at", "by", "be", "it", "an", "do", "go"})
+
+
+def _letters_for(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """``(a for alpha, b for beta)`` -> {a: alpha, b: beta}, and the list form ``a, b for α, β``:
+    the student's short names for the problem's own (a given, a quantity the statement names),
+    each paired with the one in the same place."""
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    pairs = []
+    for m in _FOR_LIST.finditer(plain):
+        mine, theirs = re.split(_SEP, m[1].strip()), re.split(_SEP, m[2].strip())
+        if len(mine) == len(theirs):
+            pairs += zip(mine, theirs, strict=True)
+    pairs += [(m[1], m[2]) for m in _FOR_ONE.finditer(plain)]
+    out: dict[str, sympy.Expr] = {}
+    for name, target in pairs:
+        target = _GREEK_LETTERS.get(target, target.lstrip("\\"))
+        name = _GREEK_LETTERS.get(name, name)
+        if name.lower() in _NOT_NAMES or name == target or name in names or target not in names:
+            continue
+        out.setdefault(name, names[target][0])
     return out
 
 
@@ -155,6 +299,13 @@ _DEFLECTION = re.compile(
 _DEFLECTED = re.compile(
     rf"\b(\w+)\s+(?:is\s+)?deflected\s+(?:through|by)\s+(?:an\s+angle\s+(?:of\s+)?)?{_ANGLE_NAME}\b", re.I
 )
+#: "θ is the angle between A's new path and the line of centres" (either way round).
+_LINE_WORDS = r"(line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\.?|wall|cushion|(?:common\s+)?tangent|plane\s+of\s+contact)"
+_ANGLE_BETWEEN = re.compile(
+    rf"(?<![\w\\]){_ANGLE_NAME}\s+(?:is|=|denotes?|be)\s+(?:the\s+)?(?:acute\s+)?angle\s+between\s+(?:the\s+)?"
+    rf"(?:(\w+)['’]s\s+{_PATH}{_AFTER}\s+and\s+(?:the\s+)?{_LINE_WORDS}|{_LINE_WORDS}\s+and\s+(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER})",
+    re.I,
+)
 _ANGLE_MAKES = re.compile(rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name=_ANGLE_NAME)}", re.I)
 
 
@@ -170,6 +321,7 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     out: dict[str, sympy.Expr] = {}
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
+    found += [(m[1], m[2] or m[5], m[3] or m[4]) for m in _ANGLE_BETWEEN.finditer(plain)]
     found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
     found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
     given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
