@@ -734,7 +734,9 @@ def test_a_unit_after_latex_spacing_then_words_is_not_a_power() -> None:
         ("V = u cos α/3", "V=u*cos(alpha)/3"),  # (u cos α)/3
         ("s = √(u²cos²α + u²sin²α)", "s=sqrt(u^2*cos(alpha)^2+u^2*sin(alpha)^2)"),
         ("f = 36%", "f=(36/100)"),
-        ("m = 3.2 × 10⁻³", "m=3.2*10^(-3)"),  # any superscript, not only ² and ³
+        ("m = 3.2 × 10⁻³", "m=3.2e-3"),  # any superscript, not only ² and ³; standard form is one number
+        ("T = 1.23 x 10^(3) + 4·10^2", "T=1.23e3+4e2"),  # at the mantissa's figures
+        ("y = 2^3 × 10^2", "y=2^3*10^2"),  # a power times 10^2: not a number in standard form
         ("w = ⅔u + ⅛", "w=(2/3)*u+(1/8)"),  # any vulgar fraction
     ],
 )
@@ -838,3 +840,70 @@ def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
     sides("show that " * 4000 + "x = 1")
     sides("$x = " + "\\text{a}" * 4000 + "$")
     assert time.process_time() - start < 5
+
+
+# --- notation breadth (tests/test_check_notation_breadth.py measures it on four problems) ----------
+# OCR M2 2012, a particle of 0.8 kg at 4 m/s into a wall, e = 0.3: v_A2 = -0.3(4) = -1.2 (rebound
+# speed 1.2), KE before ½(0.8)(16) = 6.4 J, after ½(0.8)(1.44) = 0.576 J, lost 5.824 J.
+WALL_2012 = "ocr-m2-2012-particle-hits-wall"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("rebound speed = 0.3 × 4 = 1.2 m/s", ["correct"]),  # a wall's rebound speed in words
+        ("speed after = 1.2 m s^-1", ["correct"]),
+        ("rebound speed = 1.6 m/s", ["wrong"]),
+        (r"$KE_{before} = \tfrac12(0.8)(4)^2 = 6.4\,\mathrm{J}$", ["correct"]),  # KE with its subscript
+        (r"$KE_{lost} = 5.82\ \text{J}$", ["correct"]),
+        (r"$KE_{lost} = 6.4\ \text{J}$", ["wrong"]),
+        ("KE after = 5.76 × 10^-1 J", ["correct"]),  # standard form at the mantissa's figures
+        (r"$KE_{after} = 5.8 \times 10^{-1}\,\mathrm{J}$", ["correct"]),
+        ("KE after = 6.5 x 10^-1 J", ["wrong"]),
+        ("$v_{A2} = -1.2 m/s$", ["correct"]),  # a unit typed bare inside $…$
+        ("$v_{A2} = -1.6 m/s$", ["wrong"]),  # once "not read" (m and s taken for names)
+        (r"$v_{A2} = -1.6\,ms^{-1}$", ["wrong"]),
+        ("v_{A2} = -1.2", ["correct"]),  # LaTeX's braces typed in plain text
+        ("v_{A2} = -1.6", ["wrong"]),
+        ("v_A2 = -1.2 m/s   // it bounces back", ["correct"]),  # a code comment after the value
+        ("v_A2 = -1.6 m/s   # it bounces back", ["wrong"]),
+        ("v_A1 = 4 m/s & v_A2 = -1.2 m/s", ["correct"]),  # & for "and" in plain text
+        ("v_A1 = 4 m/s & v_A2 = -1.6 m/s", ["wrong"]),
+        ("KE before = 6.4E0 J", ["correct"]),  # standard form with a capital E
+        ("KE before = 7.4E0 J", ["wrong"]),
+        ("KE lost ~ 5.8 J", ["correct"]),  # ~ and ≃ for "about"
+        ("KE lost ≃ 6.4 J", ["wrong"]),
+        ("KE before = 0.5 x 0.8 x 4^2 = 6.4 J", ["correct"]),  # x for times between numbers
+        ("KE before = 0.5 x 0.8 x 4^2 = 7.2 J", ["wrong"]),
+        ("KE lost = 6.4 J − 0.576 J = 5.824 J", ["correct"]),  # a unit after each number
+        ("KE lost = 6.4 J − 0.576 J = 6.976 J", ["wrong"]),
+    ],
+)
+def test_a_wall_problem_typed_in_many_notations(work: str, expected: list[str]) -> None:
+    assert statuses(WALL_2012, work) == expected
+
+
+# An angle the student names by its tangent (``tan α = …``) is defined by it for the lines after,
+# as ``v_G = …`` is. Example 4.C.11: v_A2n = -1.109, v_A2t = 3.051, so tan α = 1.109/3.051 =
+# 0.3635 (α = 19.98°), β = 90° - α = 70.02°, tan β = 1/tan α = 3.051/1.109 = 2.751.
+ANGLE_BY_TANGENT = "$\\tan\\alpha = \\frac{1.109}{3.051}$\n$\\beta = 90^\\circ - \\alpha$\n$\\tan\\beta = \\frac{1}{\\tan\\alpha} = {}$"
+
+
+@pytest.mark.parametrize(("last", "expected"), [("2.75", "correct"), ("0.3635", "wrong")])
+def test_an_angle_named_by_its_tangent_is_defined_for_the_lines_after(last: str, expected: str) -> None:
+    work = ANGLE_BY_TANGENT.replace("{}", last)
+    assert statuses("notes-4c11-two-spheres", work) == ["correct", "correct", expected]
+
+
+# A letter written without its body where the problem gives both bodies the same value: the disks
+# weigh 47 lb each (M. Casco), so W is W_A = W_B and m = 47/32.2 = 1.4596 slug.
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("Each disk weighs W = 47 lb, so m = W/32.2 = 1.460 slug", ["correct"]),
+        ("W = 74 lb", ["wrong"]),
+        ("W = 47 lb\nm = W/32.2 = 1.62 slug", ["correct", "wrong"]),
+    ],
+)
+def test_one_letter_for_a_given_both_bodies_share(work: str, expected: list[str]) -> None:
+    assert statuses("mcasco-glancing-disks-us", work) == expected

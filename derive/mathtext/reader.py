@@ -101,7 +101,7 @@ _UNIT_BRACKET = re.compile(
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
-_RELATION = re.compile(r"=|≈")
+_RELATION = re.compile(r"=|≈|≃|≅|∼|(?<=\s)~(?=\s)")
 #: An angle named by three points (``APB = 90°``, ``∠ABC``, ``angle PQR``): geometry in words.
 _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 #: What a side has: a letter (Latin or Greek: ``θ + φ = 90°``) or a digit.
@@ -225,7 +225,8 @@ def _tex_comment(line: str) -> str:
 def split_relations(plain: str) -> list[str]:
     """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
     brackets) that comes before another relation."""
-    plain = plain.replace("≈", "=")
+    plain = re.sub(r"(?<=\s)~(?=\s)|≃|≅|∼", "=", plain.replace("≈", "="))  # "v ~ 4": about, as ≈
+    plain = re.sub(r"(?<=\s)&(?=\s+[^=&]*=)", " ; ", plain)  # "a = 1 & b = 2" in plain text: and
     plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
     plain = re.sub(
@@ -320,15 +321,28 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*(?:\(([0-9])\)|([0-9])(?!\w))")
 
 
+#: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
+_BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
+
+
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
+    text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2} in plain text
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
+    text = _UNIT_MID.sub("", text)  # "352 J − 288 J": the unit of each number, not a name
     return in_si(text) or without_unit(text).strip()
+
+
+#: A unit after a number inside a side, before an operator or a closing bracket (``352 J − 288 J``,
+#: ``(12 m/s − 4 m/s)``).
+_UNIT_MID = re.compile(
+    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?s|kg\s*m\s*/\s*s)(?=\s*(?:[-+−×*)]|$)(?!\s*$))"
+)
 
 
 def _outer(text: str) -> str:
