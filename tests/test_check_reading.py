@@ -41,6 +41,7 @@ def statuses(problem: str, work: str) -> list[str]:
         (r"$\vec v_{A2} = 3.05\,\hat e_t - 1.12\,\hat e_n$ (m/s).", [("v_A2n", "-1.12"), ("v_A2t", "3.05")]),
         (r"$v = 2\hat{\imath} - \hat{\jmath}$", [("v_n", "2"), ("v_t", "-1")]),
         ("After: v_A = ai + 12j", [("v_An", "a"), ("v_At", "12")]),
+        ("w = 2.5 e_t − 0.75 e_n", [("w_n", "-0.75"), ("w_t", "2.5")]),  # Unicode's minus
         ("A after = -4.5 i + 12 j", [("A_n'", "-4.5"), ("A_t'", "12")]),
         (r"Before: $A = (0,\; 4)$", [("A_n", "0"), ("A_t", "4")]),
         ("A has components (4 cos 60°, 4 sin 60°) = (2, 2sqrt(3))", [("4 cos 60°", "2"), ("4 sin 60°", "2sqrt(3)")]),
@@ -869,6 +870,15 @@ WALL_2012 = "ocr-m2-2012-particle-hits-wall"
         ("v_A2 = -1.6 m/s   # it bounces back", ["wrong"]),
         ("v_A1 = 4 m/s & v_A2 = -1.2 m/s", ["correct"]),  # & for "and" in plain text
         ("v_A1 = 4 m/s & v_A2 = -1.6 m/s", ["wrong"]),
+        (r"v_A2 = -\frac{6}{5} = -1.2", ["correct"]),  # LaTeX typed with no $
+        (r"v_{A2} = -\dfrac{8}{5}", ["wrong"]),
+        ("e = rebound speed / approach speed = 1.2/4 = 0.3", ["correct"]),
+        ("v'_A = -1.2 m/s", ["correct"]),  # a prime before the subscript
+        (r"$v_{A}^{\prime} = -1.6$", ["wrong"]),  # a prime as a power
+        ("v_(A2) = -1.2", ["correct"]),  # a subscript in brackets, or with a comma
+        ("v_{A,2} = -1.6", ["wrong"]),
+        ("rebound speed = 1 1/5 m/s", ["correct"]),  # a mixed number
+        ("rebound speed = 1 3/5 m/s", ["wrong"]),
         ("KE before = 6.4E0 J", ["correct"]),  # standard form with a capital E
         ("KE before = 7.4E0 J", ["wrong"]),
         ("KE lost ~ 5.8 J", ["correct"]),  # ~ and ≃ for "about"

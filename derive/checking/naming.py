@@ -55,7 +55,7 @@ PHRASES = (
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
     # A speed after an impact with a wall (a name only where B is fixed: inference._speeds)
     (
-        r"^\s*(?:rebound\s+speed|speed\s+of\s+rebound|speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?)\s*$",
+        r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
         "speed_after",
     ),
     (r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed", "speed_app"),  # not "relative speed":

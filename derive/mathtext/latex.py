@@ -78,6 +78,9 @@ def latex_to_plain(tex: str) -> str:
     s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
     s = _BARE_UNIT.sub("", s)
+    s = re.sub(
+        r"\^\s*\{\s*((?:\\prime\s*)+)\}|\^\s*\\prime", lambda m: "'" * max(1, (m[1] or "").count("prime")), s
+    )  # v^{\prime}
     parser, out, end, work = Parser(s, lenient=True), [], 0, 0  # leniently, any character is a token
     while not parser.at_end():
         start = parser.i

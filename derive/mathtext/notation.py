@@ -92,6 +92,7 @@ def student(text: str) -> str:
         text = text.replace(sign, plain)
     text = _STANDARD_FORM.sub(_standard_form, text)  # 3.52 x 10^2 as 3.52e2: one number, at its figures
     text = _X_TIMES.sub(" * ", text)  # 4 x 12, 4 x v_A2: x standing for times between factors
+    text = _MIXED.sub(_mixed, text)  # 2 2/9 u: two and two ninths
     text = _BARS.sub(r" sqrt((\1)^2) ", text.replace("‖", "|"))  # |v_P|: its size
     text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
     text = function_powers(text)
@@ -113,6 +114,15 @@ _STANDARD_FORM = re.compile(
 #: ``x`` for times, spaced, between a number (or bracket) and a number, a bracket or a name with a
 #: subscript (``4 x 12``, ``2 x (3 + 1)``, ``4 x v_A2``): a student's own x is not written so.
 _X_TIMES = re.compile(r"(?<=[\d)])\s+[xX]\s+(?=[\d(.]|[A-Za-z]\w*_)")
+
+
+#: A mixed number (``2 2/9``, ``1 1/2``): a whole number, a space and a proper fraction.
+_MIXED = re.compile(r"(?<![\w.^/*)])(\d{1,3})\s+(\d{1,2})\s*/\s*(\d{1,2})(?![\d.^(])")
+
+
+def _mixed(m: re.Match) -> str:
+    whole, num, den = (int(g) for g in m.groups())
+    return f"({whole}+{num}/{den})" if 0 < num < den else m.group(0)
 
 
 def _standard_form(m: re.Match) -> str:

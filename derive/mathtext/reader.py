@@ -185,6 +185,10 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
         yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
 
 
+#: LaTeX's mathematics on a line with no ``$`` (``v_{A2} = \\frac{8}{9}u``, ``4 \\times 12``).
+_BARE_LATEX = re.compile(r"\\(?:[dt]?frac|sqrt|cdot|times|left|right|approx)(?![A-Za-z])")
+
+
 def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int, str]]]:
     """One line outside a display: its text with each piece of mathematics in it made plain
     (rows of a display on one line joined by ";"); the closing mark of a display it opens
@@ -192,8 +196,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
     out, i = [], 0
     while True:
         m = _OPEN.search(raw, i)
-        if m is None:
-            out.append(_tex_text(raw[i:]))
+        if m is None:  # LaTeX typed with no delimiters (``v_A2 = \\frac{8}{9}u``): read as mathematics
+            rest = raw[i:]
+            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else _tex_text(rest))
             return " ".join(out), None, []
         out.append(_tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
@@ -325,12 +330,20 @@ _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*
 _BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
 
 
+#: A subscript with a comma or in brackets (``v_{A,2}``, ``v_(A2)``, ``v_(A,2)``).
+_SUBSCRIPT_MARKED = re.compile(r"_[{(]\s*([A-Za-z])\s*,?\s*([A-Za-z0-9]{0,2})\s*[})]")
+#: A prime before the subscript (``v'_A``, ``v'_(A)``).
+_PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z0-9]{0,2})[)}]?")
+
+
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2} in plain text
+    text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
+    text = _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
