@@ -32,6 +32,7 @@ from derive.checking.naming import (
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.checking.shapes import Shapes
+from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -88,7 +89,7 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides))
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
-    meanings: dict[str, sympy.Expr] = {**_shared(ctx, used, problem), **habits(ctx, used), **valued, **declared}
+    meanings: dict[str, sympy.Expr] = {**shared_letters(ctx, used, problem), **habits(ctx, used), **valued, **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)
@@ -157,18 +158,6 @@ def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[s
         for p in theirs:
             if ours and p not in out:
                 out[p] = ours[0]
-    return out
-
-
-def _shared(ctx: Context, used: set[str], problem: dict[str, sympy.Expr]) -> dict[str, sympy.Expr]:
-    """A letter without its body (``W = 47 lb each``) where the problem gives the same value for
-    both bodies (W_A = W_B = 47 lb): either (A's), as a student writes one weight for both."""
-    values = {g.name: g.value for g in ctx.problem.givens}
-    out: dict[str, sympy.Expr] = {}
-    for name in used - set(problem):
-        a, b = f"{name}_A", f"{name}_B"
-        if a in problem and b in problem and values.get(a) is not None and values.get(a) == values.get(b):
-            out[name] = problem[a]
     return out
 
 

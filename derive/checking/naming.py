@@ -53,10 +53,9 @@ PHRASES = (
     (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
     (r"(?<![\w'])([AB])\s+before\b", r"u_\1"),
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
-    # A speed after an impact with a wall (a name only where B is fixed: inference._speeds)
     (
         r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
-        "speed_after",
+        "speed_after",  # A's speed after hitting a wall (a name only where B is fixed: inference._speeds)
     ),
     (r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed", "speed_app"),  # not "relative speed":
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
@@ -121,9 +120,7 @@ def rewrite(text: str, known: set[str]) -> str:
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
     text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
-    text = re.sub(  # 3eu -> 3 eu (not v_A1n, nor 6.4E1: a number in standard form)
-        r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text
-    )
+    text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees

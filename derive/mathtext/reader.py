@@ -24,6 +24,7 @@ from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
+from derive.mathtext.sides import direction_of, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -326,36 +327,17 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*(?:\(([0-9])\)|([0-9])(?!\w))")
 
 
-#: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
-_BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
-
-
-#: A subscript with a comma or in brackets (``v_{A,2}``, ``v_(A2)``, ``v_(A,2)``).
-_SUBSCRIPT_MARKED = re.compile(r"_[{(]\s*([A-Za-z])\s*,?\s*([A-Za-z0-9]{0,2})\s*[})]")
-#: A prime before the subscript (``v'_A``, ``v'_(A)``).
-_PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z0-9]{0,2})[)}]?")
-
-
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
-    text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2} in plain text
-    text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
-    text = _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript
+    text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
-    text = _UNIT_MID.sub("", text)  # "352 J − 288 J": the unit of each number, not a name
+    text = units_inside(text)  # "352 J − 288 J": the unit of each number, not a name
     return in_si(text) or without_unit(text).strip()
-
-
-#: A unit after a number inside a side, before an operator or a closing bracket (``352 J − 288 J``,
-#: ``(12 m/s − 4 m/s)``).
-_UNIT_MID = re.compile(
-    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?s|kg\s*m\s*/\s*s)(?=\s*(?:[-+−×*)]|$)(?!\s*$))"
-)
 
 
 def _outer(text: str) -> str:
@@ -432,7 +414,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         return None
     direction = direction_of(text[text.rfind("=") + 1 :])
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
-        text = _DIRECTION_END.sub("", text)
+        text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
     sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
@@ -447,29 +429,3 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
 _LEAD_WORDS = frozenset({"delta", "sqrt", "atan", "asin", "acos"})
 #: A lead-in in words without a colon, apart from the relation by a wide gap (``momentum     m(5u) = …``).
 _WORD_LEAD = re.compile(r"^\s*((?:[A-Za-z][a-z']{2,}|CLM|NEL|NLR|KE|COM|CoM)(?:\s[A-Za-z][a-z']{2,})*)\s{2,}(?=[^\s=])")
-
-
-#: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
-_DIRECTION = re.compile(
-    r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
-    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
-    r"|in\s+the\s+same\s+direction))\b",
-    re.I,
-)
-
-
-_DIRECTION_END = re.compile(
-    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
-    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
-    re.I,
-)
-
-
-def direction_of(tail: str) -> int:
-    """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
-    direction against the usual positive one ("to the left", "backwards", "in the opposite
-    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
-    m = _DIRECTION.match(tail.strip())
-    if not m:
-        return 0
-    return -1 if m.group(1) else 1
