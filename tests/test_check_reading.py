@@ -41,6 +41,7 @@ def statuses(problem: str, work: str) -> list[str]:
         (r"$\vec v_{A2} = 3.05\,\hat e_t - 1.12\,\hat e_n$ (m/s).", [("v_A2n", "-1.12"), ("v_A2t", "3.05")]),
         (r"$v = 2\hat{\imath} - \hat{\jmath}$", [("v_n", "2"), ("v_t", "-1")]),
         ("After: v_A = ai + 12j", [("v_An", "a"), ("v_At", "12")]),
+        ("w = 2.5 e_t − 0.75 e_n", [("w_n", "-0.75"), ("w_t", "2.5")]),  # Unicode's minus
         ("A after = -4.5 i + 12 j", [("A_n'", "-4.5"), ("A_t'", "12")]),
         (r"Before: $A = (0,\; 4)$", [("A_n", "0"), ("A_t", "4")]),
         ("A has components (4 cos 60°, 4 sin 60°) = (2, 2sqrt(3))", [("4 cos 60°", "2"), ("4 sin 60°", "2sqrt(3)")]),
@@ -734,7 +735,9 @@ def test_a_unit_after_latex_spacing_then_words_is_not_a_power() -> None:
         ("V = u cos α/3", "V=u*cos(alpha)/3"),  # (u cos α)/3
         ("s = √(u²cos²α + u²sin²α)", "s=sqrt(u^2*cos(alpha)^2+u^2*sin(alpha)^2)"),
         ("f = 36%", "f=(36/100)"),
-        ("m = 3.2 × 10⁻³", "m=3.2*10^(-3)"),  # any superscript, not only ² and ³
+        ("m = 3.2 × 10⁻³", "m=3.2e-3"),  # any superscript, not only ² and ³; standard form is one number
+        ("T = 1.23 x 10^(3) + 4·10^2", "T=1.23e3+4e2"),  # at the mantissa's figures
+        ("y = 2^3 × 10^2", "y=2^3*10^2"),  # a power times 10^2: not a number in standard form
         ("w = ⅔u + ⅛", "w=(2/3)*u+(1/8)"),  # any vulgar fraction
     ],
 )
@@ -838,3 +841,79 @@ def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
     sides("show that " * 4000 + "x = 1")
     sides("$x = " + "\\text{a}" * 4000 + "$")
     assert time.process_time() - start < 5
+
+
+# --- notation breadth (tests/test_check_notation_breadth.py measures it on four problems) ----------
+# OCR M2 2012, a particle of 0.8 kg at 4 m/s into a wall, e = 0.3: v_A2 = -0.3(4) = -1.2 (rebound
+# speed 1.2), KE before ½(0.8)(16) = 6.4 J, after ½(0.8)(1.44) = 0.576 J, lost 5.824 J.
+WALL_2012 = "ocr-m2-2012-particle-hits-wall"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("rebound speed = 0.3 × 4 = 1.2 m/s", ["correct"]),  # a wall's rebound speed in words
+        ("speed after = 1.2 m s^-1", ["correct"]),
+        ("rebound speed = 1.6 m/s", ["wrong"]),
+        (r"$KE_{before} = \tfrac12(0.8)(4)^2 = 6.4\,\mathrm{J}$", ["correct"]),  # KE with its subscript
+        (r"$KE_{lost} = 5.82\ \text{J}$", ["correct"]),
+        (r"$KE_{lost} = 6.4\ \text{J}$", ["wrong"]),
+        ("KE after = 5.76 × 10^-1 J", ["correct"]),  # standard form at the mantissa's figures
+        (r"$KE_{after} = 5.8 \times 10^{-1}\,\mathrm{J}$", ["correct"]),
+        ("KE after = 6.5 x 10^-1 J", ["wrong"]),
+        ("$v_{A2} = -1.2 m/s$", ["correct"]),  # a unit typed bare inside $…$
+        ("$v_{A2} = -1.6 m/s$", ["wrong"]),  # once "not read" (m and s taken for names)
+        (r"$v_{A2} = -1.6\,ms^{-1}$", ["wrong"]),
+        ("v_{A2} = -1.2", ["correct"]),  # LaTeX's braces typed in plain text
+        ("v_{A2} = -1.6", ["wrong"]),
+        ("v_A2 = -1.2 m/s   // it bounces back", ["correct"]),  # a code comment after the value
+        ("v_A2 = -1.6 m/s   # it bounces back", ["wrong"]),
+        ("v_A1 = 4 m/s & v_A2 = -1.2 m/s", ["correct"]),  # & for "and" in plain text
+        ("v_A1 = 4 m/s & v_A2 = -1.6 m/s", ["wrong"]),
+        (r"v_A2 = -\frac{6}{5} = -1.2", ["correct"]),  # LaTeX typed with no $
+        (r"v_{A2} = -\dfrac{8}{5}", ["wrong"]),
+        ("e = rebound speed / approach speed = 1.2/4 = 0.3", ["correct"]),
+        ("v'_A = -1.2 m/s", ["correct"]),  # a prime before the subscript
+        (r"$v_{A}^{\prime} = -1.6$", ["wrong"]),  # a prime as a power
+        ("v_(A2) = -1.2", ["correct"]),  # a subscript in brackets, or with a comma
+        ("v_{A,2} = -1.6", ["wrong"]),
+        ("rebound speed = 1 1/5 m/s", ["correct"]),  # a mixed number
+        ("rebound speed = 1 3/5 m/s", ["wrong"]),
+        ("KE before = 6.4E0 J", ["correct"]),  # standard form with a capital E
+        ("KE before = 7.4E0 J", ["wrong"]),
+        ("KE lost ~ 5.8 J", ["correct"]),  # ~ and ≃ for "about"
+        ("KE lost ≃ 6.4 J", ["wrong"]),
+        ("KE before = 0.5 x 0.8 x 4^2 = 6.4 J", ["correct"]),  # x for times between numbers
+        ("KE before = 0.5 x 0.8 x 4^2 = 7.2 J", ["wrong"]),
+        ("KE lost = 6.4 J − 0.576 J = 5.824 J", ["correct"]),  # a unit after each number
+        ("KE lost = 6.4 J − 0.576 J = 6.976 J", ["wrong"]),
+    ],
+)
+def test_a_wall_problem_typed_in_many_notations(work: str, expected: list[str]) -> None:
+    assert statuses(WALL_2012, work) == expected
+
+
+# An angle the student names by its tangent (``tan α = …``) is defined by it for the lines after,
+# as ``v_G = …`` is. Example 4.C.11: v_A2n = -1.109, v_A2t = 3.051, so tan α = 1.109/3.051 =
+# 0.3635 (α = 19.98°), β = 90° - α = 70.02°, tan β = 1/tan α = 3.051/1.109 = 2.751.
+ANGLE_BY_TANGENT = "$\\tan\\alpha = \\frac{1.109}{3.051}$\n$\\beta = 90^\\circ - \\alpha$\n$\\tan\\beta = \\frac{1}{\\tan\\alpha} = {}$"
+
+
+@pytest.mark.parametrize(("last", "expected"), [("2.75", "correct"), ("0.3635", "wrong")])
+def test_an_angle_named_by_its_tangent_is_defined_for_the_lines_after(last: str, expected: str) -> None:
+    work = ANGLE_BY_TANGENT.replace("{}", last)
+    assert statuses("notes-4c11-two-spheres", work) == ["correct", "correct", expected]
+
+
+# A letter written without its body where the problem gives both bodies the same value: the disks
+# weigh 47 lb each (M. Casco), so W is W_A = W_B and m = 47/32.2 = 1.4596 slug.
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("Each disk weighs W = 47 lb, so m = W/32.2 = 1.460 slug", ["correct"]),
+        ("W = 74 lb", ["wrong"]),
+        ("W = 47 lb\nm = W/32.2 = 1.62 slug", ["correct", "wrong"]),
+    ],
+)
+def test_one_letter_for_a_given_both_bodies_share(work: str, expected: list[str]) -> None:
+    assert statuses("mcasco-glancing-disks-us", work) == expected

@@ -32,6 +32,7 @@ from derive.checking.naming import (
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
 from derive.checking.shapes import Shapes
+from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -88,7 +89,7 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides))
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
-    meanings: dict[str, sympy.Expr] = {**habits(ctx, used), **valued, **declared}
+    meanings: dict[str, sympy.Expr] = {**shared_letters(ctx, used, problem), **habits(ctx, used), **valued, **declared}
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)
@@ -168,6 +169,8 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
             out[f"speed_{b}"] = derived[f"v_{b}2"][0]
         elif not ctx.problem.oblique and getattr(ctx.model.nm, f"{b}2n", None) is not None:
             out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
+    if getattr(ctx.problem, "fixed_B", False) and "speed_A" in out:
+        out["speed_after"] = out["speed_A"]  # "rebound speed": only A moves after hitting a wall
     nm = ctx.model.nm
     b1, b2 = nm.B1n if nm.B1n is not None else 0, nm.B2n if nm.B2n is not None else 0
     out["speed_app"] = nm.A1n - b1  # the speed of approach along n (positive: they approach)
@@ -225,6 +228,10 @@ def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
     return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
 
 
+#: A trigonometric function of an angle the student names, and its inverse.
+_INVERSE = {sympy.tan: sympy.atan, sympy.sin: sympy.asin, sympy.cos: sympy.acos}
+
+
 def _definitions(
     raw: list[Read], meanings: dict[str, sympy.Expr], asides: list[bool]
 ) -> dict[sympy.Symbol, sympy.Expr]:
@@ -236,9 +243,12 @@ def _definitions(
     for i, r in enumerate(raw):
         if r.exprs is None:
             continue
-        left = r.exprs[0]
+        left, right = r.exprs[0], r.exprs[1]
+        inverse = _INVERSE.get(type(left))
+        if inverse is not None and left.args[0].is_Symbol and left.args[0].name[1:] in GREEK:
+            left, right = left.args[0], inverse(right)  # "tan β = 2/(√3(1 - e))": β defined
         if left.is_Symbol and left.name.startswith(PREFIX) and left not in seen and left.name[1:] not in meanings:
-            right = r.exprs[1].xreplace(defs)
+            right = right.xreplace(defs)
             open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
             if (right.free_symbols or asides[i] or left.name[1:] in GREEK) and not open_:
                 defs[left] = right

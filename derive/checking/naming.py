@@ -39,12 +39,12 @@ from derive.problem.units import DIMENSIONLESS, MASS
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E)\b|KE\s*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E)\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
-    (r"(?:KE\s*(?:before|initial|_1|1)|initial\s+KE|T_1)", "T_1"),
-    (r"(?:KE\s*(?:after|final|_2|2)|final\s+KE|T_2)", "T_2"),
+    (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
+    (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
     (r"(?:final\s+)?speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),
@@ -54,6 +54,10 @@ PHRASES = (
     (r"(?<![\w'])([AB])\s+after\b", r"v_\1'"),  # "A after = -0.2": A's velocity after
     (r"(?<![\w'])([AB])\s+before\b", r"u_\1"),
     (r"magnitude\s+of\s+(?:the\s+)?impulse", "sqrt(J_n^2)"),
+    (
+        r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
+        "speed_after",  # A's speed after hitting a wall (a name only where B is fixed: inference._speeds)
+    ),
     (r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed", "speed_app"),  # not "relative speed":
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
@@ -117,7 +121,7 @@ def rewrite(text: str, known: set[str]) -> str:
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
     text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
-    text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])", r"\1 ", text)  # 3eu -> 3 eu (not v_A1n)
+    text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees

@@ -6,6 +6,12 @@ the notes' spellings (``V_At2``), Greek letters typed as themselves (``λ`` for 
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
+
+import sympy
+
+if TYPE_CHECKING:
+    from derive.checking.context import Context
 
 #: Greek letters typed as themselves, by their names.
 _UNICODE_GREEK = {
@@ -59,3 +65,15 @@ def angle_sum_in_degrees(side: str) -> str:
     """``alpha - 30`` -> ``alpha - 30°``, ``90 - θ`` -> ``90° - θ``: a bare number added to an
     angle letter is degrees, as the angle's are (a student writes them so)."""
     return _ANGLE_SUM.sub(lambda m: m.group(0).rstrip() + "°", side)
+
+
+def shared_letters(ctx: Context, used: set[str], problem: dict[str, sympy.Expr]) -> dict[str, sympy.Expr]:
+    """A letter without its body (``W = 47 lb each``) where the problem gives the same value for
+    both bodies (W_A = W_B = 47 lb): either (A's), as a student writes one weight for both."""
+    values = {g.name: g.value for g in ctx.problem.givens}
+    out: dict[str, sympy.Expr] = {}
+    for name in used - set(problem):
+        a, b = f"{name}_A", f"{name}_B"
+        if a in problem and b in problem and values.get(a) is not None and values.get(a) == values.get(b):
+            out[name] = problem[a]
+    return out

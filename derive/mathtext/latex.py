@@ -24,6 +24,12 @@ _FRAC_UNIT = re.compile(
     r"\\[dt]?frac\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}"
 )
 _TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*(?!\s*_)")
+#: A unit typed in mathematics without ``\\text`` after a number (``4 m/s``, ``1.6 m s^{-1}``,
+#: ``\\frac{48}{12} ms^{-1}``, ``64 J``, ``32 N s``) where a side ends: not a product of names.
+_BARE_UNIT = re.compile(
+    r"(?<=[\d}])\s*(?:\\[,;: ]\s*)*(?:kg\s*(?:\\[,;]\s*|\\cdot\s*)?m\s*/\s*s|m\s*/\s*s|(?:m\s*(?:\\[,;]\s*)?s|ms)\s*\^\s*\{?\s*-\s*1\s*\}?"
+    r"|N\s*(?:\\[,;]\s*|\\cdot\s*)?s|Ns|kJ|J)(?=\s*(?:$|=|\\approx|\\simeq|,|;|&|\\\\|\\q?quad|\\tag|\())"
+)
 #: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
 REJECTED = re.compile(
     r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
@@ -71,6 +77,10 @@ def latex_to_plain(tex: str) -> str:
         s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]
     s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
+    s = _BARE_UNIT.sub("", s)
+    s = re.sub(
+        r"\^\s*\{\s*((?:\\prime\s*)+)\}|\^\s*\\prime", lambda m: "'" * max(1, (m[1] or "").count("prime")), s
+    )  # v^{\prime}
     parser, out, end, work = Parser(s, lenient=True), [], 0, 0  # leniently, any character is a token
     while not parser.at_end():
         start = parser.i

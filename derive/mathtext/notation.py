@@ -90,6 +90,9 @@ def student(text: str) -> str:
     text = _SUPERSCRIPT.sub(_superscript, text)  # 10⁻³ as 10^(-3); ² and ³ as before
     for sign, plain in _UNICODE.items():
         text = text.replace(sign, plain)
+    text = _STANDARD_FORM.sub(_standard_form, text)  # 3.52 x 10^2 as 3.52e2: one number, at its figures
+    text = _X_TIMES.sub(" * ", text)  # 4 x 12, 4 x v_A2: x standing for times between factors
+    text = _MIXED.sub(_mixed, text)  # 2 2/9 u: two and two ninths
     text = _BARS.sub(r" sqrt((\1)^2) ", text.replace("‖", "|"))  # |v_P|: its size
     text = _INVERSE.sub(lambda m: "a" + m.group(1), text)
     text = function_powers(text)
@@ -99,6 +102,33 @@ def student(text: str) -> str:
     text = _GLUED_ROOT.sub(" sqrt ", text)  # sqrt3: the root of 3, as √3 is
     text = _BARE_CALL.sub(lambda m: f"{m.group(1)}({m.group(2)})", text)
     return implicit_products(text)
+
+
+#: A number in standard form: ``3.52 × 10^2``, ``3.52 x 10^(2)``, ``1.5*10^-3``, ``2·10⁴`` (after the
+#: Unicode signs are written out): the mantissa's figures are the figures written.
+_STANDARD_FORM = re.compile(
+    r"(?<![\w.^])(\d+\.?\d*|\.\d+)\s*[*xX]\s*10\s*\^\s*(?:\(\s*([-+]?)\s*(\d{1,3})\s*\)|\{\s*([-+]?)\s*(\d{1,3})\s*\}|([-+]?)(\d{1,3}))(?![\d.^])"
+)
+
+
+#: ``x`` for times, spaced, between a number (or bracket) and a number, a bracket or a name with a
+#: subscript (``4 x 12``, ``2 x (3 + 1)``, ``4 x v_A2``): a student's own x is not written so.
+_X_TIMES = re.compile(r"(?<=[\d)])\s+[xX]\s+(?=[\d(.]|[A-Za-z]\w*_)")
+
+
+#: A mixed number (``2 2/9``, ``1 1/2``): a whole number, a space and a proper fraction.
+_MIXED = re.compile(r"(?<![\w.^/*)])(\d{1,3})\s+(\d{1,2})\s*/\s*(\d{1,2})(?![\d.^(])")
+
+
+def _mixed(m: re.Match) -> str:
+    whole, num, den = (int(g) for g in m.groups())
+    return f"({whole}+{num}/{den})" if 0 < num < den else m.group(0)
+
+
+def _standard_form(m: re.Match) -> str:
+    sign = m.group(2) or m.group(4) or m.group(6) or ""
+    power = m.group(3) or m.group(5) or m.group(7)
+    return f"{m.group(1)}e{sign}{power}"
 
 
 #: A percentage: ``36%``, ``36 %``.

@@ -144,6 +144,8 @@ _END_MARK = re.compile(
     r"\s*(?:∎|□|■|◻|◼|▪|\\(?:qed|qedsymbol|blacksquare|square|Box)(?![A-Za-z])(?:\{\})?|\b(?:Q\.\s?E\.\s?D\.?|QED)(?!\w))"
     r"[\s.!$]*$|(?<=\s)//\s*$|\s*\(\s*[!?]+\s*\)\s*$"
 )
+#: A comment as code has it after the value (``= 4 m/s  // A carries on``, ``# check``): words.
+_CODE_COMMENT = re.compile(r"(?<=[\w.)°])\s+(?://|#)\s*(?=[A-Za-z]).*$")
 #: The value again in brackets in another unit, as an aside (``35.2 m/s (~127 km/h!!)``,
 #: ``(about 9.8 N)``, ``(= 0.5 kJ)``); the unit inside must be a unit.
 _CONVERTED = re.compile(
@@ -203,7 +205,7 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     """The end of a relation without its note, and the tag (see :func:`without_note`)."""
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
-    text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", text)))
+    text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", _CODE_COMMENT.sub("", text))))
     m = _CONVERTED.search(text) or _DASH_CONVERTED.search(text)
     if m and is_unit(m.group("unit").strip()) and _after_unit(text[: m.start("gap")]):
         text = text[: m.start("gap")]

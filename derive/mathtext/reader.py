@@ -24,6 +24,7 @@ from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
+from derive.mathtext.sides import direction_of, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -101,7 +102,7 @@ _UNIT_BRACKET = re.compile(
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
-_RELATION = re.compile(r"=|≈")
+_RELATION = re.compile(r"=|≈|≃|≅|∼|(?<=\s)~(?=\s)")
 #: An angle named by three points (``APB = 90°``, ``∠ABC``, ``angle PQR``): geometry in words.
 _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 #: What a side has: a letter (Latin or Greek: ``θ + φ = 90°``) or a digit.
@@ -185,6 +186,10 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
         yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
 
 
+#: LaTeX's mathematics on a line with no ``$`` (``v_{A2} = \\frac{8}{9}u``, ``4 \\times 12``).
+_BARE_LATEX = re.compile(r"\\(?:[dt]?frac|sqrt|cdot|times|left|right|approx)(?![A-Za-z])")
+
+
 def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int, str]]]:
     """One line outside a display: its text with each piece of mathematics in it made plain
     (rows of a display on one line joined by ";"); the closing mark of a display it opens
@@ -192,8 +197,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
     out, i = [], 0
     while True:
         m = _OPEN.search(raw, i)
-        if m is None:
-            out.append(_tex_text(raw[i:]))
+        if m is None:  # LaTeX typed with no delimiters (``v_A2 = \\frac{8}{9}u``): read as mathematics
+            rest = raw[i:]
+            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else _tex_text(rest))
             return " ".join(out), None, []
         out.append(_tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
@@ -225,7 +231,8 @@ def _tex_comment(line: str) -> str:
 def split_relations(plain: str) -> list[str]:
     """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
     brackets) that comes before another relation."""
-    plain = plain.replace("≈", "=")
+    plain = re.sub(r"(?<=\s)~(?=\s)|≃|≅|∼", "=", plain.replace("≈", "="))  # "v ~ 4": about, as ≈
+    plain = re.sub(r"(?<=\s)&(?=\s+[^=&]*=)", " ; ", plain)  # "a = 1 & b = 2" in plain text: and
     plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
     plain = re.sub(
@@ -325,9 +332,11 @@ def _side(text: str) -> str:
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
+    text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
+    text = units_inside(text)  # "352 J − 288 J": the unit of each number, not a name
     return in_si(text) or without_unit(text).strip()
 
 
@@ -405,7 +414,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         return None
     direction = direction_of(text[text.rfind("=") + 1 :])
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
-        text = _DIRECTION_END.sub("", text)
+        text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
     sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
@@ -420,29 +429,3 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
 _LEAD_WORDS = frozenset({"delta", "sqrt", "atan", "asin", "acos"})
 #: A lead-in in words without a colon, apart from the relation by a wide gap (``momentum     m(5u) = …``).
 _WORD_LEAD = re.compile(r"^\s*((?:[A-Za-z][a-z']{2,}|CLM|NEL|NLR|KE|COM|CoM)(?:\s[A-Za-z][a-z']{2,})*)\s{2,}(?=[^\s=])")
-
-
-#: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
-_DIRECTION = re.compile(
-    r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
-    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
-    r"|in\s+the\s+same\s+direction))\b",
-    re.I,
-)
-
-
-_DIRECTION_END = re.compile(
-    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
-    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
-    re.I,
-)
-
-
-def direction_of(tail: str) -> int:
-    """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
-    direction against the usual positive one ("to the left", "backwards", "in the opposite
-    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
-    m = _DIRECTION.match(tail.strip())
-    if not m:
-        return 0
-    return -1 if m.group(1) else 1

@@ -67,6 +67,7 @@ def component_name(m: re.Match, axis: str) -> str:
 def _vector(side: str) -> dict[str, str] | None:
     """A side's components by axis, where it is a vector (a pair or a sum of unit vectors)."""
     side = re.sub(r"^(?:[A-Za-z]+\s+)+(?=\()", "", side.strip())  # "A has components (2, 3)": the pair
+    side = side.replace("−", "-").replace("–", "-")  # a minus typed as Unicode's
     pair = _pair(side)
     if pair is not None:
         return dict(zip(AXES, pair, strict=True))

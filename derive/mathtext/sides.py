@@ -1,0 +1,70 @@
+"""What a side of a relation holds besides its mathematics, as students type it: a name's marks
+typed another way (``v_{A2}``, ``v_{A,2}``, ``v_(A2)``, ``v'_A``), a unit after each number inside
+it (``352 J − 288 J``), and a direction in words after its number (``= 1.04 m/s to the left``).
+
+>>> typed_names("v'_A + v_{B,2}"), units_inside("352 J − 288 J"), direction_of("2 m/s to the left")
+("v_A' + v_B2", '352 − 288 J', -1)
+"""
+
+from __future__ import annotations
+
+import re
+
+#: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
+_BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
+
+
+#: A subscript with a comma or in brackets (``v_{A,2}``, ``v_(A2)``, ``v_(A,2)``).
+_SUBSCRIPT_MARKED = re.compile(r"_[{(]\s*([A-Za-z])\s*,?\s*([A-Za-z0-9]{0,2})\s*[})]")
+#: A prime before the subscript (``v'_A``, ``v'_(A)``).
+_PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z0-9]{0,2})[)}]?")
+
+
+def typed_names(text: str) -> str:
+    """``text`` with names whose subscript or prime is typed another way written as one name."""
+    text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2}
+    text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
+    return _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript
+
+
+#: A unit after a number inside a side, before an operator or a closing bracket (``352 J − 288 J``,
+#: ``(12 m/s − 4 m/s)``).
+_UNIT_MID = re.compile(
+    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?s|kg\s*m\s*/\s*s)(?=\s*(?:[-+−×*)]|$)(?!\s*$))"
+)
+
+
+def units_inside(text: str) -> str:
+    """``text`` without the unit after a number that an operator or a bracket follows."""
+    return _UNIT_MID.sub("", text)
+
+
+#: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
+_DIRECTION = re.compile(
+    r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
+    r"|in\s+the\s+same\s+direction))\b",
+    re.I,
+)
+
+
+_DIRECTION_END = re.compile(
+    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
+    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
+    re.I,
+)
+
+
+def direction_of(tail: str) -> int:
+    """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
+    direction against the usual positive one ("to the left", "backwards", "in the opposite
+    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
+    m = _DIRECTION.match(tail.strip())
+    if not m:
+        return 0
+    return -1 if m.group(1) else 1
+
+
+def without_direction(text: str) -> str:
+    """``text`` without the direction in words at its end (:func:`direction_of` reads it)."""
+    return _DIRECTION_END.sub("", text)
