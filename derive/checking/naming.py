@@ -29,6 +29,7 @@ import sympy
 
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
+from derive.checking.conventions import sign_of
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, notes_names, subscript
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import student
@@ -408,30 +409,6 @@ def declares(r: Relation, first: bool) -> bool:
     """Whether the relation ``r`` is a declaration: its own text is one, or its line is one and it
     is the line's first relation (``Positive = away from the cushion.  u = -3.00``: only the first)."""
     return declaration(" = ".join(r.sides)) or (first and declaration(r.written) and not _POSITIVE.match(r.written))
-
-
-#: Fixed bodies students name in their sign conventions.
-_FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
-_REVERSED = re.compile(
-    rf"revers|opposite|negative|away\s+from\s+{_FIXED}|from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
-    r"|\bb'?s\s+(?:initial\s+)?(?:direction|motion)|direction\s+of\s+b\b",
-    re.I,
-)
-_FORWARD = re.compile(
-    rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
-    r"|direction\s+(?:that\s+|in\s+which\s+)?a\s+(?:moves|travels|is\s+(?:moving|travelling)|goes|starts)"
-    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive",
-    re.I,
-)
-
-
-def sign_of(words: str) -> int:
-    """The sign convention a phrase states: -1 reversed (away from the wall, B's direction), +1
-    derive's n (from A toward B, toward the wall, A's direction), 0 where it does not say
-    (up, down, left, right: inferred from the values)."""
-    if _REVERSED.search(words):
-        return -1
-    return 1 if _FORWARD.search(words) else 0
 
 
 def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
