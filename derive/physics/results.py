@@ -370,9 +370,7 @@ def convert(r: Result, unit_text: str) -> sympy.Expr:
 
     src, dst = units.parse_unit(r.unit if r.unit != "deg" else "deg"), units.parse_unit(unit_text)
     if src.dim != dst.dim:
-        raise SolveError(
-            f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}",
-        )
+        raise SolveError(f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}")
     value = r.value if r.value is not None else r.partial
     return value * src.factor / dst.factor
 

@@ -256,11 +256,7 @@ def _closed_forms(page: Page) -> Block | None:
         return None
     lines = [
         Eqn(
-            (
-                Side((r.symbol,)),
-                Side((page.notes(r.closed),)),
-                Side((page.notes(page.value_of(r.symbol)),), "result"),
-            ),
+            (Side((r.symbol,)), Side((page.notes(r.closed),)), Side((page.notes(page.value_of(r.symbol)),), "result")),
             unit=r.unit,
         )
         for r in symbolic
@@ -315,10 +311,7 @@ def energy(page: Page) -> Block:
     if p.fixed_B:
         forms = {"T_1": (HALF * m_A * v1A,), "T_2": (HALF * m_A * v2A,)}
     else:
-        forms = {
-            "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
-            "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
-        }
+        forms = {"T_1": (HALF * m_A * v1A, HALF * m_B * v1B), "T_2": (HALF * m_A * v2A, HALF * m_B * v2B)}
     lines = []
     for name, terms in forms.items():
         r = page.results[name]

@@ -268,12 +268,7 @@ def problem_view(
         }
         stages.append({**answer, **_NO_FIGURE})
     boxed = [line for block in stages[-1]["blocks"] for line in block["lines"] if line["boxed"]]
-    return {
-        **data,
-        "stages": [_stage(1, "", stages=stages)],
-        "answers": boxed,
-        "convention": conventions(data),
-    }
+    return {**data, "stages": [_stage(1, "", stages=stages)], "answers": boxed, "convention": conventions(data)}
 
 
 def conventions(data: dict[str, Any]) -> list[tuple[str, str]]:
