@@ -10,7 +10,7 @@ import sympy
 
 from derive.errors import SolveError
 from derive.numbers import exactify, format_number
-from derive.physics.asks import Found, Shown
+from derive.physics.asks import RELATIONS, Found, Shown
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.derived import derived_line
@@ -153,8 +153,7 @@ MAX_SHOWN_CHARS = 600
 def ranged(f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
-    op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
-    rel = op[rng.op]
+    rel = RELATIONS[rng.op]
     text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ")
     if len(str(f.expr)) > MAX_SHOWN_CHARS:  # v_A2^63 < v_B2^63: a page of polynomial, not shown
         text += (

@@ -18,7 +18,6 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
     acute angle, the turn, the impulse) or a defined quantity, as one line: its symbol, its
     form, the numbers put in and its value."""
     nm = page.nm
-    val = r.value if r.value is not None else r.partial
     if r.name in ("v_A2", "v_B2"):
         n, t = getattr(nm, f"{r.name[-2]}2n"), getattr(nm, f"{r.name[-2]}2t")
         nv, tv = page.value_of(n), page.value_of(t)
@@ -28,7 +27,7 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
                 sympy.Pow(as_float(tv), 2, evaluate=False), sympy.Pow(as_float(nv), 2, evaluate=False), evaluate=False
             )
             sides.append(Side((show(sympy.Pow(squares, sympy.Rational(1, 2), evaluate=False)),), "numeric"))
-        sides.append(Side((val,), "result"))
+        sides.append(Side((r.found,), "result"))
         return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
     if r.name in ("theta_A2", "theta_B2", "beta_A2", "beta_B2"):  # theta from +t, beta from +n
         n, t = getattr(nm, f"{r.name[-2]}2n"), getattr(nm, f"{r.name[-2]}2t")
@@ -42,10 +41,12 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _impulse_line(page, r, boxed)
     defined = {d.name: d for d in page.p.asks.defined}
     if r.name in defined:  # F_avg = J_n/dt = ...
-        if r.unit == "deg" and getattr(val, "free_symbols", None):  # an angle in letters: no degrees to show
+        if r.unit == "deg" and getattr(r.found, "free_symbols", None):  # an angle in letters: no degrees to show
             return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,))), boxed=boxed)
-        return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
-    return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+        return Eqn(
+            (Side((r.symbol,)), Side((defined[r.name].expr,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed
+        )
+    return Eqn((Side((r.symbol,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed)
 
 
 def angle_line(
@@ -53,7 +54,6 @@ def angle_line(
 ) -> Eqn:
     """A direction: tan^-1(y/x), with 180° added where x < 0 (written atan2 where
     the sign of x is not known when the page is written)."""
-    val = r.value if r.value is not None else r.partial
     numeric = not ((xv.free_symbols | yv.free_symbols) - page.varied)
     known = numeric and not (xv.free_symbols | yv.free_symbols)
     sides = [Side((r.symbol,))]
@@ -71,7 +71,7 @@ def angle_line(
         sides.append(Side((show(sympy.atan(shown, evaluate=False)), turn), "numeric"))
     else:
         sides.append(Side((sympy.atan2(y, x, evaluate=False),)))
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
 
 
@@ -82,14 +82,13 @@ def _acute_line(page: Page, r: Result, boxed: bool) -> Eqn:
     n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
     y, x = (t, n) if r.name.startswith("alpha") else (n, t)
     yv, xv = page.value_of(y), page.value_of(x)
-    val = r.value if r.value is not None else r.partial
     sides = [Side((r.symbol,))]
     if xv != 0:
         sides.append(Side((sympy.atan(over(sympy.Abs(y), sympy.Abs(x)), evaluate=False),)))
         if not ((xv.free_symbols | yv.free_symbols) - page.varied):
             shown = over(as_float(abs(yv)), as_float(abs(xv)))
             sides.append(Side((show(sympy.atan(shown, evaluate=False)),), "numeric"))
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
 
 
@@ -101,8 +100,7 @@ def _deflection_line(page: Page, r: Result, boxed: bool) -> Eqn:
     dot = sympy.Add(sympy.Mul(t1, t2, evaluate=False), sympy.Mul(n1, n2, evaluate=False), evaluate=False)
     speeds = sympy.Mul(symbol(f"v_{b}1"), symbol(f"v_{b}2"), evaluate=False)
     form = sympy.acos(over(dot, speeds), evaluate=False)
-    val = r.value if r.value is not None else r.partial
-    return Eqn((Side((r.symbol,)), Side((form,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+    return Eqn((Side((r.symbol,)), Side((form,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed)
 
 
 def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
@@ -117,6 +115,5 @@ def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
             as_float(m), sympy.Add(as_float(vals[nm.A1n]), -as_float(vals[nm.A2n]), evaluate=False), evaluate=False
         )
         sides.append(Side((show(shown),), "numeric"))
-    val = r.value if r.value is not None else r.partial
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)

@@ -115,10 +115,7 @@ def _from_results(table: Table, solution: object, name: str) -> sympy.Expr | Non
     r = getattr(solution, "results", {}).get(name)
     if r is None:
         return None
-    value = r.value if r.value is not None else r.partial
-    if r.unit == "deg":
-        value = value * sympy.pi / 180
-    return table.resolve(value)
+    return table.resolve(r.found * sympy.pi / 180 if r.unit == "deg" else r.found)
 
 
 def impact(
