@@ -28,10 +28,7 @@ def dim_of(g: object) -> units.Dim:
 
 
 def givens(
-    table: Table,
-    problem: object,
-    given_values: Mapping[str, sympy.Expr] | None = None,
-    read: source.Read | None = None,
+    table: Table, problem: object, given_values: Mapping[str, sympy.Expr] | None = None, read: source.Read | None = None
 ) -> None:
     """Put each given in the table: a value, a definition, a "?" (later) or a letter. A
     value the verifier read from the file itself (``read``) stands before derive's."""
