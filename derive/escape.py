@@ -33,68 +33,21 @@ _TEX_SPECIAL = {
 #: Greek letters by their Unicode names, as pdflatex sets them: lower case and the capitals
 #: with shapes of their own in math mode; the capitals shaped as Latin ones (Alpha, Beta, ...)
 #: as those Latin letters, which is how they print in any Greek font.
-_GREEK_SMALL = [
-    "alpha",
-    "beta",
-    "gamma",
-    "delta",
-    "varepsilon",
-    "zeta",
-    "eta",
-    "theta",
-    "iota",
-    "kappa",
-    "lambda",
-    "mu",
-    "nu",
-    "xi",
-    "omicron",
-    "pi",
-    "rho",
-    "varsigma",
-    "sigma",
-    "tau",
-    "upsilon",
-    "varphi",
-    "chi",
-    "psi",
-    "omega",
-]  # U+03B5 and U+03C6 are the open epsilon and the looped phi: \varepsilon, \varphi
+_GREEK_SMALL = (
+    "alpha beta gamma delta varepsilon zeta eta theta iota kappa lambda mu nu xi omicron pi rho"
+    " varsigma sigma tau upsilon varphi chi psi omega"
+)  # U+03B5 and U+03C6 are the open epsilon and the looped phi: \varepsilon, \varphi
 #: The Greek symbol variants, each its own character: lunate epsilon, straight phi, ...
 _GREEK_SYMBOLS = {"ϵ": r"$\epsilon$", "ϕ": r"$\phi$", "ϑ": r"$\vartheta$", "ϖ": r"$\varpi$", "ϱ": r"$\varrho$"}
-_GREEK_CAPITAL = [
-    "A",
-    "B",
-    "Gamma",
-    "Delta",
-    "E",
-    "Z",
-    "H",
-    "Theta",
-    "I",
-    "K",
-    "Lambda",
-    "M",
-    "N",
-    "Xi",
-    "O",
-    "Pi",
-    "P",
-    "Sigma",
-    "T",
-    "Upsilon",
-    "Phi",
-    "X",
-    "Psi",
-    "Omega",
-]
+_GREEK_CAPITAL = "A B Gamma Delta E Z H Theta I K Lambda M N Xi O Pi P Sigma T Upsilon Phi X Psi Omega"
 
 
 def _greek() -> dict[str, str]:
     table = {}
-    for i, name in enumerate(_GREEK_SMALL):  # U+03B1 alpha ... U+03C2 final sigma, U+03C3 sigma ... U+03C9 omega
+    # U+03B1 alpha ... U+03C2 final sigma, U+03C3 sigma ... U+03C9 omega
+    for i, name in enumerate(_GREEK_SMALL.split()):
         table[chr(0x03B1 + i)] = "o" if name == "omicron" else rf"$\{name}$"
-    for i, name in enumerate(_GREEK_CAPITAL):  # U+0391 ... U+03A9, no letter at U+03A2
+    for i, name in enumerate(_GREEK_CAPITAL.split()):  # U+0391 ... U+03A9, no letter at U+03A2
         table[chr(0x0391 + i + (i >= 17))] = name if len(name) == 1 else rf"$\{name}$"
     return table | _GREEK_SYMBOLS
 
@@ -257,6 +210,7 @@ def _accented(ch: str) -> str | None:
 
 
 _MD_SPECIAL = set("\\`*_[]|$~#")
+_MD_ENTITIES = {"<": "&lt;", ">": "&gt;", "&": "&amp;"}
 
 
 def markdown(text: str, *, caret: bool = False) -> str:
@@ -264,13 +218,9 @@ def markdown(text: str, *, caret: bool = False) -> str:
     ``caret`` escapes ``^`` too, which pandoc's Markdown reads as a superscript."""
     special = _MD_SPECIAL | {"^"} if caret else _MD_SPECIAL
     out = []
-    for ch in text.replace("\r", " ").replace("\n", " "):
-        if ch == "<":
-            out.append("&lt;")
-        elif ch == ">":
-            out.append("&gt;")
-        elif ch == "&":
-            out.append("&amp;")
+    for ch in text:
+        if ch in _MD_ENTITIES:
+            out.append(_MD_ENTITIES[ch])
         elif ch in special:
             out.append("\\" + ch)
         elif ord(ch) < 32:

@@ -157,12 +157,7 @@ def decimals_of(text: str) -> int:
 
 
 def places_that_add_up(
-    sums: list[tuple[list[Decimal], Decimal]],
-    digits: int | None,
-    extra: int,
-    *,
-    each: bool = False,
-    more: int = 1,
+    sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int, *, each: bool = False, more: int = 1
 ) -> int | None:
     """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
     19.81): the largest number's figures to start with (with ``each``, the figures of

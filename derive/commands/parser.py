@@ -146,10 +146,7 @@ def _add_handout(sub: argparse._SubParsersAction) -> argparse.ArgumentParser:
         "-o", "--output", required=True, help="the file to write: FILE.pdf, FILE.tex, FILE.md or FILE.html"
     )
     p_hand.add_argument(
-        "--format",
-        "-f",
-        choices=("md", "tex", "pdf", "html"),
-        help="the format (default: the extension of -o)",
+        "--format", "-f", choices=("md", "tex", "pdf", "html"), help="the format (default: the extension of -o)"
     )
     p_hand.add_argument("--title", help="the handout's title (default: after the mode)")
     p_hand.add_argument(

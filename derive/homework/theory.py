@@ -22,6 +22,7 @@ from typing import Any
 import sympy
 
 from derive.steps.model import Block, Eqn, Math, Side, Text
+from derive.steps.page import over
 from derive.symbols import kind_of, symbol
 from derive.writers.printing import Style, latex_eqn, latex_inline
 
@@ -58,10 +59,7 @@ EQUATION_LINES: dict[int, Eqn] = {
     1: Eqn((Side((v["A2t"],)), Side((v["A1t"],))), tag="1"),
     2: Eqn((Side((v["B2t"],)), Side((v["B1t"],))), tag="2"),
     3: Eqn((Side((m_A * v["A1n"], m_B * v["B1n"])), Side((m_A * v["A2n"], m_B * v["B2n"]))), tag="3"),
-    4: Eqn(
-        (Side((e,)), Side((sympy.Mul(_SEPARATION, sympy.Pow(_APPROACH, -1, evaluate=False), evaluate=False),))),
-        tag="4",
-    ),
+    4: Eqn((Side((e,)), Side((over(_SEPARATION, _APPROACH),))), tag="4"),
 }
 
 
@@ -86,13 +84,7 @@ class Section:
 def _one_body(body: str, force: str, m: sympy.Symbol, before: sympy.Symbol, after: sympy.Symbol, tag: str) -> Block:
     """A body alone: the impulsive contact force acts along n only, so momentum is conserved along t."""
     return Block(
-        (
-            f"System {body} alone: ",
-            _raw(rf"\Sigma F_n = {force} \neq 0"),
-            ", ",
-            _raw(r"\Sigma F_t = 0"),
-            ":",
-        ),
+        (f"System {body} alone: ", _raw(rf"\Sigma F_n = {force} \neq 0"), ", ", _raw(r"\Sigma F_t = 0"), ":"),
         (
             Eqn((Side((m * before,)), Side((m * after,))), cancel=frozenset({m})),
             Eqn((Side((after,)), Side((before,))), tag=tag, implies=True),
@@ -143,11 +135,7 @@ def _three_systems() -> Section:
         ),
         blocks=(
             Block(
-                (
-                    "System A + B: ",
-                    _raw(r"\Sigma F_n = 0"),
-                    " (the contact forces are internal to it):",
-                ),
+                ("System A + B: ", _raw(r"\Sigma F_n = 0"), " (the contact forces are internal to it):"),
                 (EQUATION_LINES[3],),
             ),
         ),

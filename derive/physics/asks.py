@@ -147,6 +147,8 @@ def sample(problem: Problem, letters: set[sympy.Symbol], n: int = POINTS) -> lis
     return out
 
 
+#: The SymPy relation of each operator a range may use.
+RELATIONS = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
 #: The most intervals a range lists (a periodic inequality over [0, 1] may have more).
 MAX_INTERVALS = 50
 #: Points of the domain at which a range found is checked against the inequality itself.
@@ -165,12 +167,11 @@ def solve_range(rng: Range, problem: Problem, results: Mapping[str, Result]) -> 
     domain = sympy.Interval(0, 1) if x.name == "e" else sympy.Interval.open(0, sympy.oo)
     if reduced.free_symbols - {x}:
         return Found(rng, expr, reduced, None, dropped)
-    relation = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
     reduced, signless, why = _without_signless(reduced, x, domain)
     dropped += signless
     if why:
         return Found(rng, expr, reduced, None, dropped, why)
-    holds = relation[rng.op](reduced, 0)
+    holds = RELATIONS[rng.op](reduced, 0)
     try:
         period = sympy.periodicity(reduced, x) if reduced.has(sympy.sin, sympy.cos, sympy.tan) else None
         if period is not None and period != 0:

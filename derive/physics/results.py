@@ -39,6 +39,11 @@ class Result:
     unit: str
     description: str
 
+    @property
+    def found(self) -> sympy.Expr:
+        """Its value, else (a symbolic given in it) its partial form: the numbers in, the symbols kept."""
+        return self.value if self.value is not None else self.partial
+
 
 class Results(Mapping[str, Result]):
     """The results of one impact by name, in order. Each is worked out (evaluated, and
@@ -370,11 +375,8 @@ def convert(r: Result, unit_text: str) -> sympy.Expr:
 
     src, dst = units.parse_unit(r.unit if r.unit != "deg" else "deg"), units.parse_unit(unit_text)
     if src.dim != dst.dim:
-        raise SolveError(
-            f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}",
-        )
-    value = r.value if r.value is not None else r.partial
-    return value * src.factor / dst.factor
+        raise SolveError(f"answer_units: {r.name} is {units.describe(src.dim)}, which cannot be shown in {unit_text}")
+    return r.found * src.factor / dst.factor
 
 
 def working_unit(p: Problem, what: str) -> str:

@@ -23,7 +23,7 @@ from derive.problem.expr import FUNCTIONS, MAX_FUNCTION_NESTING, NAME_RE, ParseE
 from derive.problem.records import Given, RecordError
 from derive.problem.schema import ASSUMPTIONS
 from derive.problem.schema.base import BAD_NAME
-from derive.problem.source import Source
+from derive.problem.source import Source, type_name
 from derive.problem.units import ANGLE, DIMENSIONLESS, MASS, VELOCITY, Dim, describe
 from derive.symbols import kind_of, symbol
 
@@ -195,7 +195,7 @@ def given_value(
     letter = symbol(key, said or (kind_of(key, oblique) if key in RESERVED and key not in SPEEDS else "positive"))
     try:
         if isinstance(raw, bool) or not isinstance(raw, (int, float, str)):
-            raise err(f'expected a number or text such as "5 m/s", found {_type(raw)}')
+            raise err(f'expected a number or text such as "5 m/s", found {type_name(raw)}')
         if isinstance(raw, (int, float)):
             return _from_number(key, sym, raw, system, err)
         text = raw.strip()
@@ -221,12 +221,6 @@ def _letter(key: str, letter: sympy.Symbol, system: str) -> Given:
     dim = expected if expected is not None else DIMENSIONLESS
     work = units.parse_unit("deg") if dim == ANGLE else units.working_unit(dim, system)
     return Given(key, letter, dim, None, work.text if dim in units.SYSTEMS[system] or dim == ANGLE else "")
-
-
-def _type(raw: Any) -> str:
-    from derive.problem.source import type_name
-
-    return type_name(raw)
 
 
 def _from_number(key: str, sym: sympy.Symbol, raw: int | float, system: str, err: Err) -> Given:

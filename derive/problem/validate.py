@@ -202,10 +202,6 @@ def _names(value: Any, f: Field, src: Source, path: Path_) -> None:
         raise err(src, path, f"has too many names ({len(value)}, at most {f.max_items})")
 
 
-def _unit(value: Any, f: Field, src: Source, path: Path_) -> None:
-    _text(value, f, src, path)
-
-
 def _table(value: Any, f: Field, src: Source, path: Path_) -> None:
     if not isinstance(value, dict):
         raise _wrong_type(value, f, src, path, f.expected or "a table")
@@ -262,7 +258,7 @@ CHECKS = {
     "expression": _expression,
     "name": _name,
     "names": _names,
-    "unit": _unit,
+    "unit": _text,
     "table": _table,
     "list": _list,
     "tolerance": _tolerance,

@@ -10,7 +10,7 @@ import sympy
 
 from derive.errors import SolveError
 from derive.numbers import exactify, format_number
-from derive.physics.asks import Found, Shown
+from derive.physics.asks import RELATIONS, Found, Shown
 from derive.physics.energy import HALF
 from derive.physics.results import Result, convert
 from derive.steps.derived import derived_line
@@ -64,7 +64,7 @@ def _mark_each(page: Page, candidates: list[tuple[Block | None, bool]]) -> list[
     marks |= set(where.values())
     if not marks:
         last = max((i for i, (b, asked) in enumerate(candidates) if asked and _boxed(b)), default=None)
-        return [_marked(page, b, True) if i == last else b for i, b in enumerate(blocks)]
+        return [_marked(page, b) if i == last else b for i, b in enumerate(blocks)]
     return [
         None
         if b is None
@@ -153,25 +153,20 @@ MAX_SHOWN_CHARS = 600
 def ranged(f: Found) -> Block:
     """The values of a letter for which an inequality between results holds."""
     rng, x = f.range, f.range.of
-    op = {"<": sympy.StrictLessThan, "<=": sympy.LessThan, ">": sympy.StrictGreaterThan, ">=": sympy.GreaterThan}
-    rel = op[rng.op]
+    rel = RELATIONS[rng.op]
     text: Text = ("For ", Math(rel(rng.lhs, rng.rhs)), ": ")
     if len(str(f.expr)) > MAX_SHOWN_CHARS:  # v_A2^63 < v_B2^63: a page of polynomial, not shown
         text += (
             "once the factors that keep one sign for these letters are dropped, ",
             Math(rel(exactify(f.reduced), 0)),
         )
-        if f.interval is None:
-            return Block((*text, f"; {f.reason or 'this depends on the other letters and is not worked out here'}."))
-        return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
-    text += (Math(rel(exactify(f.expr), 0)),)
-    if f.dropped:
-        text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
-        text += (Math(rel(exactify(f.reduced), 0)),)
-    if f.interval is None and f.reason:
-        return Block((*text, f"; {f.reason}."))
+    else:
+        text += (Math(rel(exactify(f.expr), 0)),)
+        if f.dropped:
+            text += (" and, as ", Math(sympy.StrictGreaterThan(sympy.Mul(*f.dropped), 0, evaluate=False)), ", ")
+            text += (Math(rel(exactify(f.reduced), 0)),)
     if f.interval is None:
-        return Block((*text, "; this depends on the other letters and is not worked out here."))
+        return Block((*text, f"; {f.reason or 'this depends on the other letters and is not worked out here'}."))
     return Block((*text, ", that is for ", *interval_text(f.interval, x), "."))
 
 
@@ -186,9 +181,9 @@ def _about(line: Eqn, find: tuple[str, ...]) -> bool:
     return bool(name) and any(f == name or f.startswith(name) for f in find)
 
 
-def _marked(page: Page, block: Block | None, asked: bool) -> Block | None:
-    """``block`` with the ANSWER mark on its last boxed line, where the question asks for it."""
-    if block is None or not asked or not page.marks:
+def _marked(page: Page, block: Block | None) -> Block | None:
+    """``block`` with the ANSWER mark on its last boxed line that states a result asked for, else its last boxed."""
+    if block is None or not page.marks:
         return block
     boxed = [i for i, ln in enumerate(block.lines) if ln.boxed]
     asked_lines = [i for i in boxed if _about(block.lines[i], page.p.find)]
@@ -260,11 +255,7 @@ def _closed_forms(page: Page) -> Block | None:
         return None
     lines = [
         Eqn(
-            (
-                Side((r.symbol,)),
-                Side((page.notes(r.closed),)),
-                Side((page.notes(page.value_of(r.symbol)),), "result"),
-            ),
+            (Side((r.symbol,)), Side((page.notes(r.closed),)), Side((page.notes(page.value_of(r.symbol)),), "result")),
             unit=r.unit,
         )
         for r in symbolic
@@ -319,10 +310,7 @@ def energy(page: Page) -> Block:
     if p.fixed_B:
         forms = {"T_1": (HALF * m_A * v1A,), "T_2": (HALF * m_A * v2A,)}
     else:
-        forms = {
-            "T_1": (HALF * m_A * v1A, HALF * m_B * v1B),
-            "T_2": (HALF * m_A * v2A, HALF * m_B * v2B),
-        }
+        forms = {"T_1": (HALF * m_A * v1A, HALF * m_B * v1B), "T_2": (HALF * m_A * v2A, HALF * m_B * v2B)}
     lines = []
     for name, terms in forms.items():
         r = page.results[name]
@@ -337,19 +325,13 @@ def energy(page: Page) -> Block:
     lines.append(_loss_line(page))
     r1, rl = page.results["T_1"], page.results["T_lost"]
     if r1.value is not None and rl.value is not None and r1.value != 0:
-        frac = rl.value / r1.value * 100
-        lines.append(
-            Eqn((Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac,), "result")), unit="%")
-        )
+        percent = rl.value / r1.value * 100
     else:
-        frac = sympy.simplify(rl.partial / r1.partial)
-        if frac.is_number:
-            lines.append(
-                Eqn(
-                    (Side((sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}"),)), Side((frac * 100,), "result")),
-                    unit="%",
-                )
-            )
+        ratio = sympy.simplify(rl.partial / r1.partial)
+        percent = ratio * 100 if ratio.is_number else None
+    if percent is not None:
+        ratio_name = sympy.Symbol(r"\frac{T_{\mathrm{lost}}}{T_{1}}")
+        lines.append(Eqn((Side((ratio_name,)), Side((percent,), "result")), unit="%"))
     text: Text = (
         "Kinetic energy, for the record: it is not conserved across the impact unless ",
         Math(sympy.Eq(page.e, 1)),

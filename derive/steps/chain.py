@@ -50,8 +50,7 @@ def _answers(outcome: ChainOutcome) -> tuple[Answer, ...]:
         if name in verdicts:
             answers.append(Answer(name, verdict="yes" if r.value == 1 else "no"))
             continue
-        value = r.value if r.value is not None else r.partial
-        line = Eqn((Side((r.symbol,)), Side((value,), "result")), unit=r.unit or None, boxed=True)
+        line = Eqn((Side((r.symbol,)), Side((r.found,), "result")), unit=r.unit or None, boxed=True)
         answers.append(Answer(name, line))
     return tuple(answers)
 

@@ -9,7 +9,7 @@ import sympy
 from derive.numbers import tidy
 from derive.physics.results import Result
 from derive.steps.model import Eqn, Side
-from derive.steps.page import Page, as_float, show
+from derive.steps.page import Page, as_float, over, show
 from derive.symbols import symbol
 
 
@@ -18,37 +18,21 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
     acute angle, the turn, the impulse) or a defined quantity, as one line: its symbol, its
     form, the numbers put in and its value."""
     nm = page.nm
-    val = r.value if r.value is not None else r.partial
-    if r.name in ("v_A2", "v_B2", "theta_A2", "theta_B2"):
-        b = r.name[-2]
-        n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
+    if r.name in ("v_A2", "v_B2"):
+        n, t = getattr(nm, f"{r.name[-2]}2n"), getattr(nm, f"{r.name[-2]}2t")
         nv, tv = page.value_of(n), page.value_of(t)
-        if r.name.startswith("v"):
-            form = sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False)
-            shown = None
-            if not ((nv.free_symbols | tv.free_symbols) - page.varied):
-                shown = show(
-                    sympy.Pow(
-                        sympy.Add(
-                            sympy.Pow(as_float(tv), 2, evaluate=False),
-                            sympy.Pow(as_float(nv), 2, evaluate=False),
-                            evaluate=False,
-                        ),
-                        sympy.Rational(1, 2),
-                        evaluate=False,
-                    )
-                )
-        else:
-            return angle_line(page, r, n, t, nv, tv, boxed)
-        sides = [Side((r.symbol,)), Side((form,))]
-        if shown is not None:
-            sides.append(Side((shown,), "numeric"))
-        sides.append(Side((val,), "result"))
+        sides = [Side((r.symbol,)), Side((sympy.sqrt(sympy.Add(t**2, n**2, evaluate=False), evaluate=False),))]
+        if not ((nv.free_symbols | tv.free_symbols) - page.varied):
+            squares = sympy.Add(
+                sympy.Pow(as_float(tv), 2, evaluate=False), sympy.Pow(as_float(nv), 2, evaluate=False), evaluate=False
+            )
+            sides.append(Side((show(sympy.Pow(squares, sympy.Rational(1, 2), evaluate=False)),), "numeric"))
+        sides.append(Side((r.found,), "result"))
         return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
-    if r.name in ("beta_A2", "beta_B2"):
-        b = r.name[-2]
-        n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
-        return angle_line(page, r, t, n, page.value_of(t), page.value_of(n), boxed)
+    if r.name in ("theta_A2", "theta_B2", "beta_A2", "beta_B2"):  # theta from +t, beta from +n
+        n, t = getattr(nm, f"{r.name[-2]}2n"), getattr(nm, f"{r.name[-2]}2t")
+        y, x = (n, t) if r.name.startswith("theta") else (t, n)
+        return angle_line(page, r, y, x, page.value_of(y), page.value_of(x), boxed)
     if r.name[:-1] in ("alpha_A", "alpha_B", "gamma_A", "gamma_B"):
         return _acute_line(page, r, boxed)
     if r.name in ("delta_A", "delta_B"):
@@ -57,10 +41,12 @@ def derived_line(page: Page, r: Result, boxed: bool) -> Eqn:
         return _impulse_line(page, r, boxed)
     defined = {d.name: d for d in page.p.asks.defined}
     if r.name in defined:  # F_avg = J_n/dt = ...
-        if r.unit == "deg" and getattr(val, "free_symbols", None):  # an angle in letters: no degrees to show
+        if r.unit == "deg" and getattr(r.found, "free_symbols", None):  # an angle in letters: no degrees to show
             return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,))), boxed=boxed)
-        return Eqn((Side((r.symbol,)), Side((defined[r.name].expr,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
-    return Eqn((Side((r.symbol,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+        return Eqn(
+            (Side((r.symbol,)), Side((defined[r.name].expr,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed
+        )
+    return Eqn((Side((r.symbol,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed)
 
 
 def angle_line(
@@ -68,7 +54,6 @@ def angle_line(
 ) -> Eqn:
     """A direction: tan^-1(y/x), with 180° added where x < 0 (written atan2 where
     the sign of x is not known when the page is written)."""
-    val = r.value if r.value is not None else r.partial
     numeric = not ((xv.free_symbols | yv.free_symbols) - page.varied)
     known = numeric and not (xv.free_symbols | yv.free_symbols)
     sides = [Side((r.symbol,))]
@@ -76,24 +61,17 @@ def angle_line(
     if xv == 0:
         pass
     elif (known and xv > 0) or (not numeric and ratio is not None and ratio.is_number and xv.is_positive):
-        sides.append(
-            Side((sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False),))
-        )
-        shown = (
-            as_float(ratio)
-            if not known
-            else sympy.Mul(as_float(yv), sympy.Pow(as_float(xv), -1, evaluate=False), evaluate=False)
-        )
+        sides.append(Side((sympy.atan(over(y, x), evaluate=False),)))
+        shown = over(as_float(yv), as_float(xv)) if known else as_float(ratio)
         sides.append(Side((show(sympy.atan(shown, evaluate=False)),), "numeric"))
     elif known:  # x < 0: the angle lies beyond ±90°
         turn = sympy.Symbol(r"\,180^\circ" if yv >= 0 else r"\,(-180^\circ)")
-        form = sympy.atan(sympy.Mul(y, sympy.Pow(x, -1, evaluate=False), evaluate=False), evaluate=False)
-        sides.append(Side((form, turn)))
-        shown = sympy.Mul(as_float(yv), sympy.Pow(as_float(xv), -1, evaluate=False), evaluate=False)
+        sides.append(Side((sympy.atan(over(y, x), evaluate=False), turn)))
+        shown = over(as_float(yv), as_float(xv))
         sides.append(Side((show(sympy.atan(shown, evaluate=False)), turn), "numeric"))
     else:
         sides.append(Side((sympy.atan2(y, x, evaluate=False),)))
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
 
 
@@ -104,15 +82,13 @@ def _acute_line(page: Page, r: Result, boxed: bool) -> Eqn:
     n, t = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
     y, x = (t, n) if r.name.startswith("alpha") else (n, t)
     yv, xv = page.value_of(y), page.value_of(x)
-    val = r.value if r.value is not None else r.partial
     sides = [Side((r.symbol,))]
     if xv != 0:
-        ratio = sympy.Mul(sympy.Abs(y), sympy.Pow(sympy.Abs(x), -1, evaluate=False), evaluate=False)
-        sides.append(Side((sympy.atan(ratio, evaluate=False),)))
+        sides.append(Side((sympy.atan(over(sympy.Abs(y), sympy.Abs(x)), evaluate=False),)))
         if not ((xv.free_symbols | yv.free_symbols) - page.varied):
-            shown = sympy.Mul(as_float(abs(yv)), sympy.Pow(as_float(abs(xv)), -1, evaluate=False), evaluate=False)
+            shown = over(as_float(abs(yv)), as_float(abs(xv)))
             sides.append(Side((show(sympy.atan(shown, evaluate=False)),), "numeric"))
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)
 
 
@@ -123,9 +99,8 @@ def _deflection_line(page: Page, r: Result, boxed: bool) -> Eqn:
     n2, t2 = getattr(nm, f"{b}2n"), getattr(nm, f"{b}2t")
     dot = sympy.Add(sympy.Mul(t1, t2, evaluate=False), sympy.Mul(n1, n2, evaluate=False), evaluate=False)
     speeds = sympy.Mul(symbol(f"v_{b}1"), symbol(f"v_{b}2"), evaluate=False)
-    form = sympy.acos(sympy.Mul(dot, sympy.Pow(speeds, -1, evaluate=False), evaluate=False), evaluate=False)
-    val = r.value if r.value is not None else r.partial
-    return Eqn((Side((r.symbol,)), Side((form,)), Side((val,), "result")), unit=r.unit, boxed=boxed)
+    form = sympy.acos(over(dot, speeds), evaluate=False)
+    return Eqn((Side((r.symbol,)), Side((form,)), Side((r.found,), "result")), unit=r.unit, boxed=boxed)
 
 
 def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
@@ -140,6 +115,5 @@ def _impulse_line(page: Page, r: Result, boxed: bool) -> Eqn:
             as_float(m), sympy.Add(as_float(vals[nm.A1n]), -as_float(vals[nm.A2n]), evaluate=False), evaluate=False
         )
         sides.append(Side((show(shown),), "numeric"))
-    val = r.value if r.value is not None else r.partial
-    sides.append(Side((val,), "result"))
+    sides.append(Side((r.found,), "result"))
     return Eqn(tuple(sides), unit=r.unit, boxed=boxed)

@@ -13,7 +13,7 @@ from derive.numbers import tidy
 from derive.physics.impact import root_rule
 from derive.steps.kinetics import Kinetics
 from derive.steps.model import Block, Degrees, Eqn, Math, Side, Text
-from derive.steps.page import Page, as_float, nonzero, show
+from derive.steps.page import Page, as_float, nonzero, over, show
 
 #: Why the root shown is the one kept, by the physics' rule.
 ROOT_REASONS = {
@@ -115,7 +115,7 @@ def _substitute(page: Page, kin: Kinetics, a: sympy.Expr, b: sympy.Expr) -> list
 
 
 def _fraction(num: sympy.Expr, den: sympy.Expr) -> sympy.Expr:
-    return sympy.Mul(num, sympy.Pow(as_float(den), -1, evaluate=False), evaluate=False)
+    return over(num, as_float(den))
 
 
 def _over_one_denominator(terms: tuple[sympy.Expr, ...], den: sympy.Expr) -> sympy.Expr | None:
@@ -159,7 +159,7 @@ def _generic_solve(page: Page, kin: Kinetics) -> list[Block]:
             nm = page.nm
             sep = sympy.Add(*nonzero(tuple(page.givens(t) for t in (nm.B2n, -nm.A2n))), evaluate=False)
             app = sympy.Add(*nonzero(tuple(page.givens(t) for t in (nm.A1n, -nm.B1n))), evaluate=False)
-            frac = sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False)
+            frac = over(sep, app)
             sides.append(Side((frac,)))
             put_in = _substituted(page, sep, known), _substituted(page, app, known)
             sides.append(Side((show(_cleared(*put_in) or _substituted(page, frac, known)),), "numeric"))
@@ -197,7 +197,7 @@ def _cleared(num: sympy.Expr, den: sympy.Expr) -> sympy.Expr | None:
             *(t if t.is_zero else sympy.expand(lcm * t) for t in sympy.Add.make_args(side)), evaluate=False
         )
 
-    return sympy.Mul(times(num), sympy.Pow(times(den), -1, evaluate=False), evaluate=False)
+    return over(times(num), times(den))
 
 
 def _substituted(page: Page, expr: sympy.Expr, known: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:

@@ -16,7 +16,7 @@ import sympy
 from derive.numbers import as_written, tidy
 from derive.physics.algebra import collect, common_factor
 from derive.steps.model import Block, Eqn, Math, Side, Text
-from derive.steps.page import Page, nonzero
+from derive.steps.page import Page, nonzero, over
 
 
 def smooth(a: str, b: str) -> str:
@@ -228,7 +228,7 @@ def restitution(page: Page) -> tuple[Block, sympy.Expr, sympy.Expr]:
     sep = sympy.Add(nm.B2n, -nm.A2n, evaluate=False)
     app = sympy.Add(nm.A1n, -nm.B1n, evaluate=False)
     lines = [
-        Eqn((Side((e,)), Side((sympy.Mul(sep, sympy.Pow(app, -1, evaluate=False), evaluate=False),)))),
+        Eqn((Side((e,)), Side((over(sep, app),)))),
         Eqn((Side((sympy.Mul(e, app, evaluate=False),)), Side((nm.B2n, -nm.A2n))), implies=True),
     ]
     g_app = nonzero(tuple(page.givens(t) for t in (nm.A1n, -nm.B1n)))

@@ -202,6 +202,11 @@ def show(expr: sympy.Expr) -> sympy.Expr:
     return sympy.UnevaluatedExpr(expr)
 
 
+def over(num: sympy.Expr, den: sympy.Expr) -> sympy.Expr:
+    """``num/den`` as written: a fraction SymPy does not evaluate or reorder."""
+    return sympy.Mul(num, sympy.Pow(den, -1, evaluate=False), evaluate=False)
+
+
 def as_float(x: sympy.Expr) -> sympy.Expr:
     """A pure number as a Float (kept apart in printed sums); other expressions as they are."""
 

@@ -41,11 +41,7 @@ Nothing here needs more than the standard library and derive itself.
 from __future__ import annotations
 
 from derive.homework.lms.exports import build_exports
-from derive.homework.lms.grading import (
-    ZERO_TOLERANCE,
-    default_result,
-    tolerance,
-)
+from derive.homework.lms.grading import ZERO_TOLERANCE, default_result, tolerance
 from derive.homework.lms.markup import esc, solution_html, statement_html
 from derive.homework.lms.mistake_model import MistakeModel
 from derive.homework.lms.moodle import moodle_xml

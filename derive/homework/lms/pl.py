@@ -99,24 +99,12 @@ def prairielearn_files(
         "type": "v3",
     }
     server = _SERVER.format(
-        title=repr(p.title),
-        result=repr(result),
-        variants=pprint.pformat(rows, width=100, sort_dicts=False),
+        title=repr(p.title), result=repr(result), variants=pprint.pformat(rows, width=100, sort_dicts=False)
     )
-    return {
-        "info.json": dumps_json(info),
-        "question.html": clean_xml(question),
-        "server.py": server,
-    }
+    return {"info.json": dumps_json(info), "question.html": clean_xml(question), "server.py": server}
 
 
-def _row(
-    compiled: Compiled,
-    v: Variant,
-    result: str,
-    digits: int | None,
-    model: MistakeModel,
-) -> dict:
+def _row(compiled: Compiled, v: Variant, result: str, digits: int | None, model: MistakeModel) -> dict:
     """One variant as server.py's VARIANTS hold it: parameters, answer, mistakes' ranges."""
     page = fill_view(compiled, v, digits)
     d = digits if digits is not None else compiled.problem.digits

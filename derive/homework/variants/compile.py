@@ -117,7 +117,7 @@ def compile_problem(problem: Problem | ChainProblem) -> Compiled:
 
     # a result that needs no varied given is a number already: ``value`` (an angle in degrees;
     # its ``partial`` would be radians, atan2(x, 0) = pi/2)
-    results = {name: r.value if r.value is not None else r.partial for name, r in solution.results.items()}
+    results = {name: r.found for name, r in solution.results.items()}
     check = _checks(symbolic, symbols, results, prep)
     return Compiled(problem, solution, names, givens, written, check, ranges=ranges)
 

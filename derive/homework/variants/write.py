@@ -18,15 +18,7 @@ from derive.homework.variants.record import Variant
 from derive.problem import ChainProblem, Problem
 
 #: What ``derive variants`` writes into its folder (a folder with other files is not replaced).
-OWNED = (
-    "variant-*.md",
-    "variant-*.tex",
-    "variant-*.pdf",
-    "variant-*.json",
-    "variant-*.html",
-    "key.csv",
-    "key.json",
-)
+OWNED = ("variant-*.md", "variant-*.tex", "variant-*.pdf", "variant-*.json", "variant-*.html", "key.csv", "key.json")
 
 
 def _progress(done: int, total: int) -> None:

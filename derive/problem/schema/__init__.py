@@ -11,13 +11,7 @@ editors use (``docs/derive-problem.schema.json``) from them. Pure Python: no Sym
 from derive.problem.schema.answers import ANSWERS
 from derive.problem.schema.base import MAGNITUDE, NAME_PATTERN, TYPES, Field, Table
 from derive.problem.schema.chain import CHAIN, STAGES
-from derive.problem.schema.problem import (
-    ASSUMPTIONS,
-    BODY,
-    GEOMETRY,
-    PROBLEM,
-    RANGE,
-)
+from derive.problem.schema.problem import ASSUMPTIONS, BODY, GEOMETRY, PROBLEM, RANGE
 
 __all__ = [
     "ANSWERS",

@@ -23,13 +23,7 @@ ASSUME = Table(
     max_keys=60,
 )
 AXES = ("+n", "-n", "+t", "-t", "+x", "-x", "+y", "-y")
-GIVEN = Table(
-    "given",
-    "the data: each entry a name and a value",
-    keys=VALUE,
-    key_pattern=NAME_PATTERN,
-    max_keys=60,
-)
+GIVEN = Table("given", "the data: each entry a name and a value", keys=VALUE, key_pattern=NAME_PATTERN, max_keys=60)
 BODY = Table(
     "body",
     "the direction of a body's velocity, or a fixed B",
@@ -131,21 +125,10 @@ UNITS = Field(
 TEXTS = (
     Field("source", "text", "where the problem comes from (printed under the title)", max_length=MAX_TEXT),
     Field("statement", "text", "the problem in words (the **Given** paragraph)", max_length=MAX_TEXT),
-    Field(
-        "question",
-        "text",
-        "the **Find** sentence",
-        max_length=MAX_TEXT,
-        default="the velocities after the impact",
-    ),
+    Field("question", "text", "the **Find** sentence", max_length=MAX_TEXT, default="the velocities after the impact"),
 )
 TITLE = Field(
-    "title",
-    "text",
-    "a line of text, the heading of the solution",
-    required=True,
-    max_length=MAX_TEXT,
-    expected="text",
+    "title", "text", "a line of text, the heading of the solution", required=True, max_length=MAX_TEXT, expected="text"
 )
 
 

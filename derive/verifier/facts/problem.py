@@ -28,10 +28,7 @@ def dim_of(g: object) -> units.Dim:
 
 
 def givens(
-    table: Table,
-    problem: object,
-    given_values: Mapping[str, sympy.Expr] | None = None,
-    read: source.Read | None = None,
+    table: Table, problem: object, given_values: Mapping[str, sympy.Expr] | None = None, read: source.Read | None = None
 ) -> None:
     """Put each given in the table: a value, a definition, a "?" (later) or a letter. A
     value the verifier read from the file itself (``read``) stands before derive's."""
@@ -115,10 +112,7 @@ def _from_results(table: Table, solution: object, name: str) -> sympy.Expr | Non
     r = getattr(solution, "results", {}).get(name)
     if r is None:
         return None
-    value = r.value if r.value is not None else r.partial
-    if r.unit == "deg":
-        value = value * sympy.pi / 180
-    return table.resolve(value)
+    return table.resolve(r.found * sympy.pi / 180 if r.unit == "deg" else r.found)
 
 
 def impact(

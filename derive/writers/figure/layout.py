@@ -47,24 +47,20 @@ def split(name: str) -> tuple[str, str]:
     return GREEK.get(base, base), sub
 
 
+#: Widths in em of the characters narrower or wider than their kind (capitals 0.76, digits 0.56, the rest 0.58).
+_WIDTHS = {" ": 0.3, **dict.fromkeys("=+−-", 0.8), **dict.fromkeys("ilj.,", 0.34), "m": 0.85, "w": 0.85}
+
+
 def _glyphs(text: str) -> float:
     """Width of ``text`` in em."""
     w = 0.0
     for ch in text:
-        if ch == " ":
-            w += 0.3
-        elif ch in "=+−-":
-            w += 0.8
+        if ch in _WIDTHS:
+            w += _WIDTHS[ch]
         elif ch.isupper():
             w += 0.76
-        elif ch.isdigit():
-            w += 0.56
-        elif ch in "ilj.,":
-            w += 0.34
-        elif ch in "mw":
-            w += 0.85
         else:
-            w += 0.58
+            w += 0.56 if ch.isdigit() else 0.58
     return w
 
 

@@ -67,7 +67,7 @@ def _result(solution: Solution, name: str) -> object | None:
     """A velocity component after the impact: found, or given (an inverse problem)."""
     r = solution.results.get(name)
     if r is not None:
-        return r.value if r.value is not None else r.partial
+        return r.found
     for g in solution.problem.givens:
         if g.name == name:
             return g.value if g.value is not None else g.symbol
@@ -100,8 +100,7 @@ def _known(solution: Solution, values: Mapping) -> dict:
     for g in solution.problem.givens:
         r = solution.results.get(g.name) if g.unknown else None
         if r is not None:
-            value = r.value if r.value is not None else r.partial
-            found[g.symbol] = value * sympy.pi / 180 if g.unit == "deg" else value
+            found[g.symbol] = r.found * sympy.pi / 180 if g.unit == "deg" else r.found
     return {**found, **solution.values, **values}
 
 

@@ -110,16 +110,20 @@ def _label_text(text: str, role: str, math: bool, tail: str) -> tuple[str, str, 
     return style, colour, body, shift
 
 
+def svg_head(w: float, h: float, title: str, size: float) -> list[str]:
+    """The opening ``<svg>`` tag of a ``w`` x ``h`` px drawing (a figure's or a plot's), and its title."""
+    title = html.escape(title)
+    return [
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0f}" height="{h:.0f}" viewBox="0 0 {w:.1f} {h:.1f}" '
+        f'role="img" aria-label="{title}" font-family="{html.escape(FONT)}" font-size="{size:.0f}">',
+        f"<title>{title}</title>",
+    ]
+
+
 def to_svg(fig: Figure) -> str:
     """The figure as a standalone ``<svg>`` element (no scripts, no external references)."""
     c = _Canvas(fig)
-    w, h = (c.x1 - c.x0) * PX, (c.y1 - c.y0) * PX
-    title = html.escape(fig.title)
-    out = [
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0f}" height="{h:.0f}" viewBox="0 0 {w:.1f} {h:.1f}" '
-        f'role="img" aria-label="{title}" font-family="{html.escape(FONT)}" font-size="{EM * PX:.0f}">',
-        f"<title>{title}</title>",
-    ]
+    out = svg_head((c.x1 - c.x0) * PX, (c.y1 - c.y0) * PX, fig.title, EM * PX)
     out += [_shape(c, s) for s in fig.shapes]
     out += [_label(c, lab) for lab in fig.labels]
     out.append("</svg>")

@@ -46,13 +46,4 @@ def plot_svg(problem: Problem) -> str:
     return to_svg(chart(problem))
 
 
-__all__ = [
-    "Curves",
-    "chart",
-    "curves",
-    "plot_svg",
-    "to_pdf",
-    "to_png",
-    "to_svg",
-    "to_tikz",
-]
+__all__ = ["Curves", "chart", "curves", "plot_svg", "to_pdf", "to_png", "to_svg", "to_tikz"]

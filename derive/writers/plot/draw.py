@@ -12,10 +12,9 @@ from pathlib import Path
 from derive import escape
 from derive.errors import RenderError
 from derive.symbols import latex_name
+from derive.writers.figure.svg import PX, svg_head
 from derive.writers.plot.chart import Chart, Text
 
-PX = 40.0  # pixels per centimetre, as the figures
-FONT = "'Latin Modern Roman', 'CMU Serif', 'Times New Roman', Times, 'Liberation Serif', serif"
 SIZE = 15.0  # px
 
 
@@ -40,13 +39,7 @@ def _svg_text(t: Text, height: float) -> str:
 
 def to_svg(chart: Chart) -> str:
     """The plot as a standalone ``<svg>`` element."""
-    w, h = chart.width * PX, chart.height * PX
-    title = html.escape(chart.title)
-    out = [
-        f'<svg xmlns="http://www.w3.org/2000/svg" width="{w:.0f}" height="{h:.0f}" viewBox="0 0 {w:.1f} {h:.1f}" '
-        f'role="img" aria-label="{title}" font-family="{html.escape(FONT)}" font-size="{SIZE:.0f}">',
-        f"<title>{title}</title>",
-    ]
+    out = svg_head(chart.width * PX, chart.height * PX, chart.title, SIZE)
     for s in chart.strokes:
         pts = [(x * PX, (chart.height - y) * PX) for x, y in s.points]
         if s.dot:

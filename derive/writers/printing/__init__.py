@@ -10,14 +10,8 @@ equations were written. Renderers call :func:`latex_eqn` and
 
 from __future__ import annotations
 
-from derive.writers.printing.expressions import (
-    latex_expr,
-    latex_inline,
-)
-from derive.writers.printing.numerals import (
-    adds_up,
-    exact_latex,
-)
+from derive.writers.printing.expressions import latex_expr, latex_inline
+from derive.writers.printing.numerals import adds_up, exact_latex
 from derive.writers.printing.printer import StepPrinter
 from derive.writers.printing.rows import IMPLIES, Row, block_style, latex_eqn, latex_rows
 from derive.writers.printing.style import Style

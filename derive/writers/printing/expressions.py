@@ -5,13 +5,7 @@ from __future__ import annotations
 
 import sympy
 
-from derive.numbers import (
-    PRECISION,
-    exactify,
-    floatify,
-    short_decimal,
-    structural,
-)
+from derive.numbers import PRECISION, exactify, floatify, short_decimal, structural
 from derive.steps.model import Side
 from derive.writers.printing.numerals import exact_latex
 from derive.writers.printing.printer import StepPrinter, is_negative_term, negate, substitute
@@ -77,14 +71,7 @@ def _values_printer(expr: sympy.Expr, style: Style, extra: int, cancel: frozense
             v = style.values[s]
             if s not in style.angles and v.is_Rational and v.q <= 12 and not short_decimal(v):
                 vals[s] = ("-" if v < 0 else "") + rf"\frac{{{abs(v.p)}}}{{{v.q}}}"
-    return StepPrinter(
-        vals,
-        cancel,
-        style.digits,
-        extra,
-        decimal_rationals=True,
-        labels=style.labels,
-    )
+    return StepPrinter(vals, cancel, style.digits, extra, decimal_rationals=True, labels=style.labels)
 
 
 def _in_letters(
@@ -194,13 +181,7 @@ def _result(expr: sympy.Expr, style: Style, cancel: frozenset[sympy.Symbol]) -> 
     expr = substitute(expr, style.values)
     if expr.is_number and not isinstance(expr, sympy.UnevaluatedExpr):
         expr = sympy.Float(expr.evalf(PRECISION), PRECISION)
-    printer = StepPrinter(
-        cancel=cancel,
-        digits=style.digits,
-        extra=0,
-        round_integers=True,
-        labels=style.labels,
-    )
+    printer = StepPrinter(cancel=cancel, digits=style.digits, extra=0, round_integers=True, labels=style.labels)
     return printer, floatify(expr, keep_integers=False)
 
 

@@ -8,12 +8,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.numbers import (
-    as_written,
-    format_number,
-    short_decimal,
-    to_decimal,
-)
+from derive.numbers import as_written, format_number, short_decimal, to_decimal
 
 
 def number_latex(value: sympy.Expr | Decimal, digits: int | None, extra: int = 0) -> str:

@@ -9,14 +9,7 @@ from decimal import Decimal
 import sympy
 from sympy.printing.latex import LatexPrinter
 
-from derive.numbers import (
-    as_written,
-    figures_for,
-    format_number,
-    format_places,
-    short_decimal,
-    to_decimal,
-)
+from derive.numbers import as_written, figures_for, format_number, format_places, short_decimal, to_decimal
 from derive.steps.model import Degrees
 from derive.symbols import latex_name, relabel, vector_latex
 from derive.writers.printing.numerals import number_latex, power_latex, written_figures

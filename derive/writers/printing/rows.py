@@ -5,11 +5,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from derive.numbers import (
-    floatify,
-    places_that_add_up,
-    to_decimal,
-)
+from derive.numbers import floatify, places_that_add_up, to_decimal
 from derive.steps.model import Block, Eqn
 from derive.writers.printing.expressions import side_terms
 from derive.writers.printing.numerals import adds_up

@@ -41,9 +41,7 @@ def environment(kind: str) -> jinja2.Environment:
 
     options = _options(kind)
     env = jinja2.Environment(
-        loader=jinja2.FileSystemLoader(str(templates_dir())),
-        undefined=jinja2.StrictUndefined,
-        **options,
+        loader=jinja2.FileSystemLoader(str(templates_dir())), undefined=jinja2.StrictUndefined, **options
     )
     env.filters["md"] = jinja2.pass_context(_markdown_text)
     env.filters["tex"] = escape.tex

@@ -54,6 +54,7 @@ def view(
         derived=worked_out(p, solution.values),
     )
     names = [a.name for a in solution.answers]
+    quantities = _sentence("The quantities ", [latex_name(n) for n in names], ", ")["text"]  # Find, with no question
     return {
         "answer_names": _answer_names(solution, names),
         "title": p.title,
@@ -62,7 +63,7 @@ def view(
         "source_parts": source_parts(p.source),
         "statement": statement(p, style),
         "givens": _givens(solution, style),
-        "find": [("text", p.question)] if p.question or not names else _quantities(names),
+        "find": [("text", p.question)] if p.question or not names else quantities,
         "stages": _stages(solution, style, layout, figures),
         "answers": _answers(solution, style, layout),
         "plot_svg": "",
@@ -87,15 +88,6 @@ def _stage(number: int, title: str, names: frozenset[str] = frozenset(), **parts
         "blocks": [],
         **parts,
     }
-
-
-def _quantities(names: list[str]) -> list[tuple[str, str]]:
-    """Find, where the file asks no question: "The quantities $v_{1}$, $e_{\\mathrm{floor}}$."."""
-    out: list[tuple[str, str]] = [("text", "The quantities ")]
-    for i, name in enumerate(names):
-        out += [("text", ", ")] if i else []
-        out.append(("math", latex_name(name)))
-    return [*out, ("text", ".")]
 
 
 def _names(sol: Solution) -> frozenset[str]:
@@ -268,12 +260,7 @@ def problem_view(
         }
         stages.append({**answer, **_NO_FIGURE})
     boxed = [line for block in stages[-1]["blocks"] for line in block["lines"] if line["boxed"]]
-    return {
-        **data,
-        "stages": [_stage(1, "", stages=stages)],
-        "answers": boxed,
-        "convention": conventions(data),
-    }
+    return {**data, "stages": [_stage(1, "", stages=stages)], "answers": boxed, "convention": conventions(data)}
 
 
 def conventions(data: dict[str, Any]) -> list[tuple[str, str]]:

@@ -108,7 +108,7 @@ def impact_view(
     style = _style(solution, digits, layout, outer_letters, outer_decimal)
     stages = _stages(solution, style, layout, figures=figures, falls=falls, known=known)
     givens = [dict(zip(("latex", "note"), given_latex(g, style), strict=False)) for g in p.givens]
-    found = {n: r.value if r.value is not None else r.partial for n, r in solution.results.items()}
+    found = {n: r.found for n, r in solution.results.items()}
     find = _find(p, style, found)
     plot_svg, plot_tikz = _plot(p) if plot else ("", "")
     return {
