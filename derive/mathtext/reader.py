@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
-from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
+from derive.mathtext.notes import UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
@@ -231,6 +231,7 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
+    plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
@@ -316,8 +317,8 @@ def words_after(text: str) -> str:
     return text
 
 
-#: A name in brackets with the instant after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_(1)``).
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*(?:\(([0-9])\)|([0-9])(?!\w))")
+#: A name in brackets with the instant or component after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_n'``).
+_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
 
 
 def _side(text: str) -> str:
