@@ -154,3 +154,55 @@ def test_the_total_momentum_before_is_worked_with_both_signs() -> None:
     )
     found = statuses("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
     assert found.get(2) == "wrong", found
+
+
+def test_primes_before_the_subscript_and_energies_by_time() -> None:
+    # byjus: KE 0.5(4)(144) + 0.5(8)(16) = 288 + 64 = 352 J before; 0.5(4)(16) + 0.5(8)(64) = 32 + 256
+    # = 288 J after; the change 288 - 352 = -64 J; A's alone after 32 J.
+    work = "\n".join(
+        [
+            "$m_1 v_1 + m_2 v_2 = m_1 v'_1 + m_2 v'_2$",
+            "$4(12) + 8(4) = 4 v'_1 + 8 v'_2$",
+            "$v'_2 - v'_1 = 0.5(12 - 4) = 4$",
+            "$v'_1 = 4$, $v'_2 = 8$",
+            r"$K_i = \frac12 (4)(12)^2 + \frac12 (8)(4)^2 = 352$ J",
+            r"$K_f = \frac12 (4)(4)^2 + \frac12 (8)(8)^2 = 288$ J",
+            r"$\Delta K = 288 - 352 = -64$ J",
+            r"$K_{1f} = \frac12 (4)(4^2) = 32$ J",
+        ]
+    )
+    found = statuses(CATCHES, work)
+    assert all(found.get(n) == "correct" for n in range(1, 9)), found
+    assert statuses(CATCHES, r"$K_{1f} = \frac12 (4)(8^2) = 128$ J") == {1: "wrong"}  # B's speed in A's energy
+
+
+def test_time_words_in_subscripts_and_in_brackets() -> None:
+    work = "\n".join(
+        [
+            r"$m_A v_{A,\text{before}} + m_B v_{B,\text{before}} = m_A v_{A,\text{after}} + m_B v_{B,\text{after}}$",
+            "$v_{B,after} - v_{A,after} = 0.5 (v_{A,before} - v_{B,before})$",
+            "$p_{A,i} = 4(12) = 48$",
+            "$p_{B,f} = 8(8) = 64$",
+        ]
+    )
+    found = statuses(CATCHES, work)
+    assert all(found.get(n) == "correct" for n in range(1, 5)), found
+    assert statuses(CATCHES, "$p_{B,f} = 8(4) = 32$") == {1: "wrong"}  # B's momentum before, not after
+
+
+PUCK = "openstax-cp-8-30-puck-bounces-off-goalie"
+
+
+@pytest.mark.parametrize(("a", "b"), [("puck", "goalie"), ("p", "g")])
+def test_the_statement_s_words_for_the_bodies_are_body_marks(a: str, b: str) -> None:
+    # OpenStax 8.30 (0.150 kg puck at 35.0 m/s, 70.0 kg goalie at rest, elastic): the relative
+    # velocity reverses, v_g' - v_p' = 35.0; momentum m_p v_p = m_p v_p' + m_g v_g'.
+    work = "\n".join(
+        [
+            f"$m_{{{a}}} v_{{{a},i}} = m_{{{a}}} v_{{{a},f}} + m_{{{b}}} v_{{{b},f}}$",
+            f"$v_{{{b},f}} - v_{{{a},f}} = v_{{{a},i}}$",
+        ]
+    )
+    assert statuses(PUCK, work) == {1: "correct", 2: "correct"}
+    swapped = f"$v_{{{a},f}} - v_{{{b},f}} = v_{{{a},i}}$"
+    assert statuses(PUCK, swapped) == {1: "wrong"}

@@ -17,7 +17,7 @@ import sympy
 from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
 from derive.checking.figures import literal_tolerance
-from derive.checking.namegrammar import energy_change, grammar_names
+from derive.checking.namegrammar import energy_change, grammar_names, words_for
 from derive.checking.naming import (
     GREEK,
     PREFIX,
@@ -443,4 +443,4 @@ def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, 
 def _shown(e: sympy.Expr) -> str:
     if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
         return f"the size of {e.args[0].name}"
-    return e.name if isinstance(e, sympy.Symbol) else "the common velocity"
+    return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"

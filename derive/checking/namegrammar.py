@@ -31,9 +31,8 @@ from derive.checking.naming import moving_together
 from derive.mathtext.reader import Relation
 
 #: Base letters by kind, longest first.
-_BASES = (("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"))
+_BASES = (("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
 _VELOCITY = frozenset("vuwVUW")
-_MOMENTUM = frozenset("pP")
 _TIMES = (
     ("initial", "1"), ("final", "2"), ("before", "1"), ("after", "2"), ("init", "1"), ("fin", "2"),
     ("i", "1"), ("f", "2"), ("0", "1"),
@@ -46,7 +45,8 @@ _NUMBERED = re.compile(
 #: Words after a body's mass in a statement that are not the body (``{m_A} and B``, ``{m_A} moving``).
 _NOT_A_BODY = re.compile(
     r"and|the|of|is|are|at|on|in|to|from|with|which|that|moving|travelling|traveling|moves|hits|strikes|slides"
-    r"|collides|flies|rolls|lies|rests|has|was|were|each|both|mass|masses|resting|initially|also|but|while",
+    r"|collides|flies|rolls|lies|rests|has|was|were|each|both|mass|masses|resting|initially|also|but|while"
+    r"|slides|moves|travels|bounces|catches|runs|sits|stands|goes|straight|directly|head|into|toward|towards",
     re.I,
 )
 
@@ -56,14 +56,20 @@ def body_marks(ctx: Context) -> dict[str, str]:
     the statement (``a {m_A} puck``) with its initial where that is no time or axis mark."""
     p = ctx.problem
     out = {"A": "A", "B": "B"}
-    for label, body in zip(p.labels, "AB", strict=True):
+    for label, body in zip(getattr(p, "labels", ("A", "B")), "AB", strict=True):
         out.setdefault(label, body)
     statement = getattr(p, "statement", "") or ""
     words = {}
     for body in "AB":
-        m = re.search(rf"\{{m_{body}\}}\s+(?:[a-z-]+\s+)?([a-z]{{3,}})\b", statement)
-        if m is not None and not _NOT_A_BODY.fullmatch(m.group(1)):
-            words[body] = m.group(1)
+        before = re.search(
+            rf"\b([a-z]{{3,}})\s+(?:\([A-Z]\)\s+)?(?:of\s+mass|with\s+mass|of|weighing)\s+\{{m_{body}\}}", statement
+        )
+        after = re.search(rf"\{{m_{body}\}}\s+([a-z]{{3,}})\b", statement)
+        adjective = re.search(rf"\{{m_{body}\}}\s+[a-z-]+\s+([a-z]{{3,}})\b", statement)  # "{m_B} wooden block"
+        for m in (before, adjective, after):
+            if m is not None and not _NOT_A_BODY.fullmatch(m.group(1)) and not m.group(1).endswith(("ing", "ly", "ed")):
+                words[body] = m.group(1)
+                break
     if len(set(words.values())) == len(words):  # "ball" and "ball": no mark
         for body, word in words.items():
             out.setdefault(word, body)
@@ -85,6 +91,8 @@ def _split(marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: st
         [("body", k, v) for k, v in bodies.items()] + [("time", *t) for t in _TIMES] + [("axis", *a) for a in _AXES],
         key=lambda x: -len(x[1]),
     )
+    if kind != "v":  # p_{tot,i}, KE_{sys,f}: both bodies, as a name with no body says
+        rest = re.sub(r"^(?:total|tot|sys|system)|(?:total|tot|sys|system)$", "", rest)
     while rest:
         if rest[0] in "12":
             if digits_are_bodies and not body:
@@ -111,7 +119,8 @@ def _split(marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: st
 def parse(
     name: str, bodies: dict[str, str], digits_are_bodies: bool, primed: bool = False
 ) -> tuple[str, str, str, str] | None:
-    """(kind, body, time, axis) of a student's name (kind "v" velocity, "p" momentum, "K" energy);
+    """(kind, body, time, axis) of a student's name (kind "v" velocity, "p" momentum, "K" energy,
+    "m" mass);
     ``primed``: the name was written with a prime (after)."""
     for base, k in _BASES:
         if name.startswith(base) and name != base:
@@ -120,8 +129,10 @@ def parse(
     else:
         if name[0] in _VELOCITY:
             kind, marks = "v", name[1:]
-        elif name[0] in _MOMENTUM and not (name[0] in bodies and name[0] not in "AB"):
+        elif name[0] == "p" or (name[0] == "P" and "P" not in bodies):  # P: the exam's body P
             kind, marks = "p", name[1:]
+        elif name[0] in "mM":
+            kind, marks = "m", name[1:]
         else:
             return None
     if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed):
@@ -161,6 +172,8 @@ def _velocity(ctx: Context, body: str, time: str, axis: str) -> sympy.Expr | Non
 def meaning(ctx: Context, kind: str, body: str, time: str, axis: str) -> sympy.Expr | None:
     """derive's expression for a parsed name (None: not one this grammar places)."""
     p, m = ctx.problem, ctx.model
+    if kind == "m":  # m_1, m_puck, M_g: a body's mass
+        return None if time or axis or not body or (p.fixed_B and body == "B") else {"A": m.m_A, "B": m.m_B}[body]
     if not time:
         return None
     if kind == "v":
@@ -237,3 +250,17 @@ def energy_change(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:
             r = replace(r, sides=(f"-({r.sides[0].strip()})", *r.sides[1:]))
         out.append(r)
     return tuple(out)
+
+
+def words_for(e: sympy.Expr) -> str | None:
+    """A momentum or a kinetic energy this grammar reads (``p_i``: m_A v_A1 + m_B v_B1) in words,
+    for the report ("the momentum of A and B before the impact"); None for anything else."""
+    speeds = [s.name for s in e.free_symbols if re.fullmatch(r"v_[AB][12][nt]?", s.name)]
+    masses = [s.name for s in e.free_symbols if re.fullmatch(r"m_[AB]", s.name)]
+    if not speeds or not masses or len({n[3] for n in speeds}) != 1:
+        return None
+    bodies = sorted({n[2] for n in speeds})
+    when = "before" if speeds[0][3] == "1" else "after"
+    kind = "kinetic energy" if any(isinstance(a, sympy.Pow) for a in sympy.preorder_traversal(e)) else "momentum"
+    whose = "of A and B" if len(bodies) == 2 else f"of {bodies[0]}"
+    return f"the {kind} {whose} {when} the impact"

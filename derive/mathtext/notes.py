@@ -283,3 +283,6 @@ def name_after_words(side: str, math_words: frozenset[str]) -> str:
 UNIT_THEN_NAME = re.compile(
     r"(=\s*[-+]?\d[\d.]*\s?(?:kg|g|m/s|ft/s|km/h|mph|N|J|lb|slugs?|N\s?s))\s+(?=[A-Za-z]\w{0,5}\s*=(?!=))"
 )  # the number all of a side, its unit not one a product may end with (m, s)
+#: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
+#: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
+REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")

@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
-from derive.mathtext.notes import UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
+from derive.mathtext.notes import REMARK_END, UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
@@ -304,8 +304,7 @@ def words_after(text: str) -> str:
     """A relation without the words after its last number (``= 111° anticlockwise from i``,
     ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
     last = text.rfind("=")
-    tail = re.sub(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*[A-Za-z]{3})[^()]*\)\s*\.?\s*)$", "", text[last + 1 :])
-    text = text[: last + 1] + tail  # ", i.e. 64 %", "(reversed)": a remark
+    text = text[: last + 1] + REMARK_END.sub("", text[last + 1 :])  # ", i.e. 64 %", "(reversed)": a remark
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
