@@ -206,3 +206,29 @@ def test_the_statement_s_words_for_the_bodies_are_body_marks(a: str, b: str) -> 
     assert statuses(PUCK, work) == {1: "correct", 2: "correct"}
     swapped = f"$v_{{{a},f}} - v_{{{b},f}} = v_{{{a},i}}$"
     assert statuses(PUCK, swapped) == {1: "wrong"}
+
+
+DISCS = "ocr-fm-2023-oblique-discs-60deg"
+
+
+def test_digits_with_a_component_and_a_time_are_bodies_in_an_oblique_impact() -> None:
+    # OCR FM 2023 (5 kg A at 4 m/s, 60° to the line of centres; 3 kg B at 6 m/s toward A; e = 3/4;
+    # mark scheme v_Ax = -13/4, v_Bx = 11/4): along x 5(2) + 3(-6) = -8 = 5a + 3b, b - a = 0.75(8) = 6,
+    # so a = -3.25, b = 2.75; across 4 sin 60° = 3.46 unchanged.
+    work = "\n".join(
+        [
+            r"$v_{1x,i} = 4\cos 60° = 2$, $v_{1y,i} = 4\sin 60° = 3.46$, $v_{2x,i} = -6$",
+            "$5 v_{1x,i} + 3 v_{2x,i} = 5 v_{1x,f} + 3 v_{2x,f}$",
+            "$v_{2x,f} - v_{1x,f} = 0.75(2 + 6) = 6$",
+            "$v_{1x,f} = -3.25$, $v_{2x,f} = 2.75$",
+            "$v_{1y,f} = v_{1y,i} = 3.46$",
+        ]
+    )
+    found = statuses(DISCS, work)
+    assert all(found.get(n) == "correct" for n in range(1, 6)), found
+    slip = "$5(2) + 3(6) = 28 = 5 v_{1x,f} + 3 v_{2x,f}$\n$v_{2x,f} - v_{1x,f} = 0.75(2 + 6) = 6$"  # B's sign
+    assert statuses(DISCS, slip) == {1: "wrong", 2: "correct"}
+    reversed_ = (
+        "$v_{1x,f} - v_{2x,f} = 0.75(v_{1x,i} - v_{2x,i})$"  # the names alone say whose: not A's and B's swapped
+    )
+    assert statuses(DISCS, reversed_) == {1: "wrong"}

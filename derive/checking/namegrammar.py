@@ -154,10 +154,10 @@ def _digits_are_bodies(text: str, names: set[str], bodies: dict[str, str]) -> bo
     if _NUMBERED.search(text):
         return True
     for n in names:
-        m = re.fullmatch(r"(?:[vuwVpP]|KE|K)_?([12](?:i|f|initial|final|_p|p)|(?:i|f)[12])", n)
-        if m:
-            return True
-    return bool(re.search(r"(?<![\w.])[vuwVpP]_?\{?[12]\}?\s*(?:'|′|\\prime|\^\{?\\prime)", text))
+        got = parse(n, bodies, True) if re.search(r"[12]", n) else None
+        if got is not None and got[1] and got[2] and not re.fullmatch(r"[A-Za-z]+_?[AB][12]\w?", n):
+            return True  # v_{1x,i}, v1f, K_{2,final} (not v_A1: a body's letter, then its time)
+    return bool(re.search(r"(?<![\w.])[vuwVpP]_?\{?[12]\w?\}?\s*(?:'|′|\\prime|\^\{?\\prime)", text))
 
 
 def _velocity(ctx: Context, body: str, time: str, axis: str) -> sympy.Expr | None:
@@ -220,6 +220,9 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
         if got is not None:
             parsed[name] = got
     out: dict[str, sympy.Expr] = {}
+    m = ctx.model
+    if "m" in used and "m" not in skip and not ctx.problem.fixed_B and _equal(ctx, m.m_A, m.m_B):
+        out["m"] = m.m_A  # two equal masses: m is each one's
     for name, (kind, body, time, axis) in parsed.items():
         if not time and any(q[:2] == (kind, body) and q[2] == "2" and q[3] == axis for q in parsed.values()):
             time = "1"  # vAn beside vAn': before
@@ -227,6 +230,13 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
         if e is not None:
             out[name] = e
     return out
+
+
+def _equal(ctx: Context, a: sympy.Expr, b: sympy.Expr) -> bool:
+    """Whether two of the problem's quantities are equal (by their definitions or their values)."""
+    defs, values = ctx.definitions(), ctx.problem.numeric()
+    x, y = (e.xreplace(defs).xreplace(values) for e in (a, b))
+    return sympy.simplify(x - y) == 0
 
 
 def _primed_in(text: str, stem: str) -> bool:
@@ -261,6 +271,9 @@ def words_for(e: sympy.Expr) -> str | None:
         return None
     bodies = sorted({n[2] for n in speeds})
     when = "before" if speeds[0][3] == "1" else "after"
-    kind = "kinetic energy" if any(isinstance(a, sympy.Pow) for a in sympy.preorder_traversal(e)) else "momentum"
+    powers = [a for a in sympy.preorder_traversal(e) if isinstance(a, sympy.Pow)]
+    if any(a.exp == -1 for a in powers):
+        return None  # (m_A v_A2 + m_B v_B2)/(m_A + m_B): the common velocity, said as such
+    kind = "kinetic energy" if any(a.exp == 2 and a.base.is_Symbol for a in powers) else "momentum"
     whose = "of A and B" if len(bodies) == 2 else f"of {bodies[0]}"
     return f"the {kind} {whose} {when} the impact"
