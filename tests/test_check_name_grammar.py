@@ -232,3 +232,16 @@ def test_digits_with_a_component_and_a_time_are_bodies_in_an_oblique_impact() ->
         "$v_{1x,f} - v_{2x,f} = 0.75(v_{1x,i} - v_{2x,i})$"  # the names alone say whose: not A's and B's swapped
     )
     assert statuses(DISCS, reversed_) == {1: "wrong"}
+
+
+def test_givens_glued_to_their_units_on_one_line_declare_the_names_used_after() -> None:
+    # MSU bullet: 0.020 x 300 = 6.0 = 4.020 V, V = 1.49 m/s.
+    work = "\n".join(
+        [
+            "bullet m_b = 0.020kg u=300 m/s, block M = 4.0kg at rest",
+            "m_b u = (m_b + M)V",
+            "V = 6.0/4.02 = 1.49 m/s",
+        ]
+    )
+    assert statuses(BULLET, work) == {1: "correct", 2: "correct", 3: "correct"}
+    assert statuses(BULLET, work.replace("(m_b + M)V", "M V"))[2] == "wrong"  # the bullet's mass left out
