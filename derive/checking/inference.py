@@ -442,5 +442,5 @@ def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, 
 
 def _shown(e: sympy.Expr) -> str:
     if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
-        return f"the size of {e.args[0].name}"
+        return e.args[0].name  # a given restated without its sign: said as that given
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"
