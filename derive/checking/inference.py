@@ -17,6 +17,7 @@ import sympy
 from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
 from derive.checking.figures import literal_tolerance
+from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
     PREFIX,
@@ -31,6 +32,7 @@ from derive.checking.naming import (
 )
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
+from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
@@ -68,7 +70,7 @@ def read_lines(
 ) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
-    every = directed(read_relations(text), text)
+    every = energy_change(directed(read_relations(text), text))
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
@@ -80,6 +82,7 @@ def read_lines(
     valued = {
         **by_value(ctx, relations, kinded, (pt, truth)),
         **components(relations, ctx, reserved),
+        **restated(ctx, relations, reserved),
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
     split, labels = body_labels(list(relations))
@@ -89,7 +92,14 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides))
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
-    meanings: dict[str, sympy.Expr] = {**shared_letters(ctx, used, problem), **habits(ctx, used), **valued, **declared}
+    grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
+    meanings: dict[str, sympy.Expr] = {
+        **shared_letters(ctx, used, problem),
+        **habits(ctx, used),
+        **valued,
+        **grammar,
+        **declared,
+    }  # p_i: no impulse
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)
@@ -110,7 +120,7 @@ def read_lines(
     }
     split = sorted(greek & GREEK - known)
     split = [w for w in split if all(c in problem for c in w)]  # \mu as m u, where m and u are given
-    return lines, _notes(meanings, declared, inferred, s, sign) + (
+    return lines, said_read(meanings, declared, inferred, s, sign) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
@@ -274,7 +284,7 @@ def _infer(
     truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
-        base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) else e
+        base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) and not is_size(ctx, e) else e
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return 0, {}, {}
     pairs = _pairs(ctx, raw, pt, truth)
@@ -430,21 +440,3 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
     own = any(_placeholders(e) for e in r.exprs)
     return replace(r, exprs=exprs, own_names=own)
-
-
-def _notes(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:
-    out = []
-    habit = [f"{n} as {_shown(e)}" for n, e in meanings.items() if n not in declared]
-    if declared:
-        out.append("Declared: " + ", ".join(f"{n} is {_shown(e)}" for n, e in declared.items()) + ".")
-    if habit:
-        out.append("Read " + ", ".join(habit) + ".")
-    if inferred:
-        out.append("Inferred from the relations: " + ", ".join(f"{n} is {what}" for n, what in inferred.items()) + ".")
-    if sign == -1 and not declared_sign:
-        out.append("Inferred from the values written: the positive direction is opposite to derive's n (B toward A).")
-    return out
-
-
-def _shown(e: sympy.Expr) -> str:
-    return e.name if isinstance(e, sympy.Symbol) else "the common velocity"

@@ -30,7 +30,7 @@ import sympy
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
-from derive.checking.spellings import angle_sum_in_degrees, greek_letters, notes_names, subscript
+from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
@@ -40,7 +40,7 @@ from derive.problem.units import DIMENSIONLESS, MASS
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E)\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E|K)\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
@@ -59,7 +59,10 @@ PHRASES = (
         r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
         "speed_after",  # A's speed after hitting a wall (a name only where B is fixed: inference._speeds)
     ),
-    (r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed", "speed_app"),  # not "relative speed":
+    (
+        r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed|(?<=\()\s*approach\s*(?=\))",
+        "speed_app",
+    ),  # not "relative speed":
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
@@ -113,7 +116,7 @@ GREEK = frozenset(
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
-    text = re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text)  # v₁ -> v_1, v_A₂ -> v_A2
+    text = marked_names(re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text))  # v₁ -> v_1
     text = greek_letters(text, known)
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:

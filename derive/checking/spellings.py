@@ -77,3 +77,20 @@ def shared_letters(ctx: Context, used: set[str], problem: dict[str, sympy.Expr])
         if a in problem and b in problem and values.get(a) is not None and values.get(a) == values.get(b):
             out[name] = problem[a]
     return out
+
+
+def marked_names(text: str) -> str:
+    """A name's marks in one spelling before it is read (:mod:`.namegrammar`): a prime as ``'``
+    (``v_A^{\\prime}``, ``v_A′``, ``v'_1`` -> ``v_A'``, ``v_1'``), a time as a superscript joined to
+    the subscript (``v_1^i`` -> ``v_1i``), braces and commas of a subscript typed as text dropped
+    (``v_{A,f}`` -> ``v_Af``), and a body glued to its letter before a prime (``vAn'`` -> ``v_An'``)."""
+    text = re.sub(r"\^\s*\(?\s*\{?\s*\\prime\s*\}?\s*\)?|′|’(?=\s*[=+\-*/)^,\s]|$)", "'", text)
+    text = re.sub(r"(?<![A-Za-z\\])([A-Za-z])'\s*_\s*(\{[^{}]{1,8}\}|[A-Za-z0-9]{1,3})", r"\1_\2'", text)
+    text = re.sub(r"(?<![A-Za-z\\])([A-Za-z]_\{?[A-Za-z0-9]{1,3}\}?)\^\{?(i|f|initial|final)\}?(?![\w])", r"\1\2", text)
+    text = re.sub(
+        r"(?<![A-Za-z\\])([A-Za-z]{1,2})_\{([A-Za-z0-9]{1,3})\s*,\s*([A-Za-z0-9]{1,3})\}",
+        lambda m: f"{m[1]}_{m[2]}{m[3]}",
+        text,
+    )
+    text = re.sub(r"(?<![A-Za-z\\])([A-Za-z]{1,2})_\{([A-Za-z0-9]{1,4})\}", r"\1_\2", text)
+    return re.sub(r"(?<![\w\\])([uvVw])([AB12])(\d?[nt]?)(?=')", r"\1_\2\3", text)

@@ -58,7 +58,7 @@ def _kind_of_unit(text: str) -> tuple[Dim, str] | None:
     return None
 
 
-def _unit_of(r: Relation) -> tuple[Dim, str] | None:
+def unit_of(r: Relation) -> tuple[Dim, str] | None:
     """The kind and unit of the number a relation ends with: in its last side (``9.10 lb.s``) or
     after it on the line (``$m = 0.150$ kg puck``)."""
     value = r.sides[-1].strip()
@@ -109,7 +109,7 @@ def kinds(relations: tuple[Relation, ...], text: str, reserved: set[str]) -> dic
         name = r.sides[0].strip()
         if len(r.sides) < 2 or not re.fullmatch(r"[A-Za-z]\w{0,4}", name):
             continue
-        unit = _unit_of(r)
+        unit = unit_of(r)
         if unit is not None:
             out[name] = unit[0]
     return {k: v for k, v in out.items() if k not in reserved}

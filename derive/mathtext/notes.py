@@ -260,7 +260,7 @@ _CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|t
 #: not a quantity's name in words (``KE before 2 + 3`` is not read so).
 _WORDS_BEFORE_NUMBER = re.compile(
     r"^\s*(?:(?!(?:KE|GPE|PE|speed|velocity|energy|momentum|impulse|lost|loss|before|after|gain|total|mass)\b)"
-    r"[A-Za-z]+(?:'[a-z]+)?\s+)+(?=[\d.(])",
+    r"[A-Za-z]{2,}(?:'[a-z]+)?\s+)+(?=[\d.(])",  # not one letter: "m (v_2 - v_1)" is m times the bracket
     re.I,
 )
 
@@ -278,3 +278,13 @@ def name_after_words(side: str, math_words: frozenset[str]) -> str:
     if m is None or any(w.lower() in math_words for w in m.group(0).split()):
         return side
     return side[m.end() :]
+
+
+#: A number and its unit, then a name set equal to something (``m_p = 0.150kg v=35.0 m/s``): a
+#: new relation without a comma.
+UNIT_THEN_NAME = re.compile(
+    r"(=\s*[-+]?\d[\d.]*\s?(?:kg|g|m/s|ft/s|km/h|mph|N|J|lb|slugs?|N\s?s))\s+(?=[A-Za-z]\w{0,5}\s*=(?!=))"
+)  # the number all of a side, its unit not one a product may end with (m, s)
+#: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
+#: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
+REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")

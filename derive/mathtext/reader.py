@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
-from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
+from derive.mathtext.notes import REMARK_END, UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
 from derive.mathtext.sides import direction_of, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
@@ -238,6 +238,7 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
+    plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
@@ -310,8 +311,7 @@ def words_after(text: str) -> str:
     """A relation without the words after its last number (``= 111° anticlockwise from i``,
     ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
     last = text.rfind("=")
-    tail = re.sub(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*[A-Za-z]{3})[^()]*\)\s*\.?\s*)$", "", text[last + 1 :])
-    text = text[: last + 1] + tail  # ", i.e. 64 %", "(reversed)": a remark
+    text = text[: last + 1] + REMARK_END.sub("", text[last + 1 :])  # ", i.e. 64 %", "(reversed)": a remark
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
@@ -323,8 +323,8 @@ def words_after(text: str) -> str:
     return text
 
 
-#: A name in brackets with the instant after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_(1)``).
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?([A-Za-z]{1,2})\)?\s*\)\s*_\s*(?:\(([0-9])\)|([0-9])(?!\w))")
+#: A name in brackets with the instant or component after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_n'``).
+_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
 
 
 def _side(text: str) -> str:

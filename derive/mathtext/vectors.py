@@ -89,7 +89,10 @@ def _vector(side: str) -> dict[str, str] | None:
 
 def _coefficient(text: str) -> bool:
     """Whether ``text`` (what stands before a unit vector) is its coefficient: nothing, or it
-    ends in a digit, a bracket, a space or ``*``, or it is one letter (``ai``: a times i)."""
+    ends in a digit (not a name's: ``v_1i`` is a name), a bracket, a space or ``*``, or it is
+    one letter (``ai``: a times i)."""
+    if re.search(r"(?<![\d.])[A-Za-z]\w*\d$", text):
+        return False  # "v_1i", "v1i": the name's own mark (A's initial), not v_1 times i
     if not text.strip() or re.search(r"[\d)*\s]$", text):
         return True
     return re.fullmatch(r"\s*[A-Za-z]", text) is not None

@@ -1,0 +1,300 @@
+"""Student names read as a grammar, not a list: a base letter (``v``, ``u``, ``w``, ``V`` a
+velocity; ``p``, ``P`` a momentum; ``K``, ``KE``, ``E``, ``Ek`` a kinetic energy) and marks in any
+order and any grouping:
+
+- a **body**: ``A``/``B``, the problem's labels (``P``/``Q``), ``1``/``2``, a body's word or its
+  initial (``puck``, ``p``, ``goalie``, ``g``);
+- a **time**: ``i``/``f``, ``initial``/``final``, ``0`` (before), a prime (after), ``before``/
+  ``after``; and ``1``/``2`` where the body is already given by a letter (``v_A1``);
+- a **component**: ``n``/``t``, ``x``/``y`` (the first axis is the line of centres), ``∥``/``⊥``.
+
+So ``v_{1i}``, ``v_{i,1}``, ``v1i``, ``v_1^i`` are A's velocity before; ``vAn'``, ``(v_A)_n'`` A's
+n component after; ``v_{x,f}`` the one body's component along n after; ``p_i`` the momentum of
+both before; ``KE_f`` the kinetic energy after.
+
+Digits are decided from the whole derivation: where any name has a time mark (``i``, ``f``,
+a prime, ``0``) or the prose names the bodies by numbers (``ball 1``, ``car 2``), digits are
+bodies; otherwise a digit alone is left to the habits (``u_1``, ``v_1``: A before, after). A name
+with no time mark is before where the same name is also written with one for after (``vAn`` beside
+``vAn'``), and otherwise not read here (habits and the inference from relations decide it).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.naming import moving_together
+from derive.mathtext.reader import Relation
+
+#: Base letters by kind, longest first.
+_BASES = (("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
+_VELOCITY = frozenset("vuwVUW")
+_TIMES = (
+    ("initial", "1"), ("final", "2"), ("before", "1"), ("after", "2"), ("init", "1"), ("fin", "2"),
+    ("i", "1"), ("f", "2"), ("0", "1"),
+)  # fmt: skip
+_AXES = (("par", "n"), ("perp", "t"), ("∥", "n"), ("⊥", "t"), ("n", "n"), ("t", "t"), ("x", "n"), ("y", "t"))
+#: Prose that names the bodies by numbers: "ball 1", "car 2", "object 1", "puck (1)".
+_NUMBERED = re.compile(
+    r"\b(?:ball|car|cart|object|body|mass|particle|sphere|puck|disc|disk|block|glider|trolley)\s*\(?[12]\b", re.I
+)
+#: Words after a body's mass in a statement that are not the body (``{m_A} and B``, ``{m_A} moving``).
+_NOT_A_BODY = re.compile(
+    r"and|the|of|is|are|at|on|in|to|from|with|which|that|moving|travelling|traveling|moves|hits|strikes|slides"
+    r"|collides|flies|rolls|lies|rests|has|was|were|each|both|mass|masses|resting|initially|also|but|while"
+    r"|slides|moves|travels|bounces|catches|runs|sits|stands|goes|straight|directly|head|into|toward|towards",
+    re.I,
+)
+
+
+def body_marks(ctx: Context) -> dict[str, str]:
+    """The marks that name A and B: their letters, the problem's labels, and each body's word in
+    the statement (``a {m_A} puck``) with its initial where that is no time or axis mark."""
+    p = ctx.problem
+    out = {"A": "A", "B": "B"}
+    for label, body in zip(getattr(p, "labels", ("A", "B")), "AB", strict=True):
+        out.setdefault(label, body)
+    statement = getattr(p, "statement", "") or ""
+    words = {}
+    for body in "AB":
+        before = re.search(
+            rf"\b([a-z]{{3,}})\s+(?:\([A-Z]\)\s+)?(?:of\s+mass|with\s+mass|of|weighing)\s+\{{m_{body}\}}", statement
+        )
+        after = re.search(rf"\{{m_{body}\}}\s+([a-z]{{3,}})\b", statement)
+        adjective = re.search(rf"\{{m_{body}\}}\s+[a-z-]+\s+([a-z]{{3,}})\b", statement)  # "{m_B} wooden block"
+        for m in (before, adjective, after):
+            if m is not None and not _NOT_A_BODY.fullmatch(m.group(1)) and not m.group(1).endswith(("ing", "ly", "ed")):
+                words[body] = m.group(1)
+                break
+    if len(set(words.values())) == len(words):  # "ball" and "ball": no mark
+        for body, word in words.items():
+            out.setdefault(word, body)
+        initials = [w[0] for w in words.values()]
+        for body, word in words.items():
+            if word[0] not in "intfxy" and initials.count(word[0]) == 1:
+                out.setdefault(word[0], body)
+    return out
+
+
+def _split(marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: str) -> tuple[str, str, str] | None:
+    """(body, time, axis) of a name's marks (each "" where not said); None where the marks are not
+    all body, time and component marks (a word, a name of something else). A digit is a body
+    where digits are (``v_{1i}``), else a time after a body's letter (``v_A1``) or in a
+    momentum or an energy (``K_1``); else None (``v_1``: the habits')."""
+    body = time = axis = ""
+    rest = marks.replace("_", "").replace(",", "")
+    long = sorted(
+        [("body", k, v) for k, v in bodies.items()] + [("time", *t) for t in _TIMES] + [("axis", *a) for a in _AXES],
+        key=lambda x: -len(x[1]),
+    )
+    if kind != "v":  # p_{tot,i}, KE_{sys,f}: both bodies, as a name with no body says
+        rest = re.sub(r"^(?:total|tot|sys|system)|(?:total|tot|sys|system)$", "", rest)
+    while rest:
+        if rest[0] in "12":
+            if digits_are_bodies and not body:
+                body = "A" if rest[0] == "1" else "B"
+            elif time or not (body or kind != "v"):
+                return None
+            else:
+                time = rest[0]
+            rest = rest[1:]
+            continue
+        hit = next((x for x in long if rest.startswith(x[1])), None)
+        if hit is None:
+            return None
+        what, mark, value = hit
+        slot = {"body": body, "time": time, "axis": axis}
+        if slot[what] and slot[what] != value:
+            return None
+        slot[what] = value
+        body, time, axis = slot["body"], slot["time"], slot["axis"]
+        rest = rest[len(mark) :]
+    return body, time, axis
+
+
+def parse(
+    name: str, bodies: dict[str, str], digits_are_bodies: bool, primed: bool = False
+) -> tuple[str, str, str, str] | None:
+    """(kind, body, time, axis) of a student's name (kind "v" velocity, "p" momentum, "K" energy,
+    "m" mass);
+    ``primed``: the name was written with a prime (after)."""
+    for base, k in _BASES:
+        if name.startswith(base) and name != base:
+            kind, marks = k, name[len(base) :]
+            break
+    else:
+        if name[0] in _VELOCITY:
+            kind, marks = "v", name[1:]
+        elif name[0] == "p" or (name[0] == "P" and "P" not in bodies):  # P: the exam's body P
+            kind, marks = "p", name[1:]
+        elif name[0] in "mM":
+            kind, marks = "m", name[1:]
+        else:
+            return None
+    if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed):
+        return None
+    parts = _split(marks, bodies, digits_are_bodies, kind)
+    if parts is None:
+        return None
+    body, time, axis = parts
+    if primed:
+        if time == "1":
+            return None
+        time = "2"
+    return kind, body, time, axis
+
+
+def _digits_are_bodies(text: str, names: set[str], bodies: dict[str, str]) -> bool:
+    """Whether the derivation's digits name bodies: a name with a time mark of its own (``v_1i``,
+    ``v1f``, ``v_2'``), or prose naming the bodies by numbers (``ball 1``)."""
+    if _NUMBERED.search(text):
+        return True
+    for n in names:
+        got = parse(n, bodies, True) if re.search(r"[12]", n) else None
+        if got is not None and got[1] and got[2] and not re.fullmatch(r"[A-Za-z]+_?[AB][12]\w?", n):
+            return True  # v_{1x,i}, v1f, K_{2,final} (not v_A1: a body's letter, then its time)
+    return bool(re.search(r"(?<![\w.])[vuwVpP]_?\{?[12]\w?\}?\s*(?:'|′|\\prime|\^\{?\\prime)", text))
+
+
+def _velocity(ctx: Context, body: str, time: str, axis: str) -> sympy.Expr | None:
+    p, nm = ctx.problem, ctx.model.nm
+    if p.fixed_B and body == "B":
+        return None
+    if p.oblique:  # without a component: a speed, or the n component where the t one is dropped
+        return getattr(nm, f"{body}{time}{axis}", None) if axis else None  # (habits, inference)
+    return None if axis == "t" else getattr(nm, f"{body}{time}n", None)
+
+
+def meaning(ctx: Context, kind: str, body: str, time: str, axis: str) -> sympy.Expr | None:
+    """derive's expression for a parsed name (None: not one this grammar places)."""
+    p, m = ctx.problem, ctx.model
+    if kind == "m":  # m_1, m_puck, M_g: a body's mass
+        return None if time or axis or not body or (p.fixed_B and body == "B") else {"A": m.m_A, "B": m.m_B}[body]
+    if not time:
+        return None
+    if kind == "v":
+        if not body:
+            if p.fixed_B:
+                body = "A"
+            elif time == "2" and any(g.name == "e" and g.value == 0 for g in p.givens) and not axis:
+                return moving_together(ctx, m.nm.A2n, m.nm.B2n)  # they move off together: one velocity
+            else:
+                return None
+        return _velocity(ctx, body, time, axis)
+    mass = {"A": m.m_A, "B": m.m_B}
+    bodies = [body] if body else ["A"] if p.fixed_B else ["A", "B"]
+    if kind == "p":
+        terms = [(b, _velocity(ctx, b, time, axis or ("n" if p.oblique else ""))) for b in bodies]
+        if any(v is None for _b, v in terms):
+            return None
+        return sympy.Add(*(mass[b] * v for b, v in terms))
+    if kind == "K" and not axis:
+        if not body:
+            derived = ctx.derived().get(f"T_{time}")
+            return derived[0] if derived else None
+        if p.oblique:
+            n, t = (_velocity(ctx, body, time, c) for c in "nt")
+            return None if n is None or t is None else mass[body] * (n**2 + t**2) / 2
+        v = _velocity(ctx, body, time, "")
+        return None if v is None else mass[body] * v**2 / 2
+    return None
+
+
+def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> dict[str, sympy.Expr]:
+    """The names of ``used`` (as rewritten) that the grammar places -> derive's expression;
+    ``skip`` are names with a meaning already (the problem's, declared ones)."""
+    bodies = body_marks(ctx)
+    primed = {n[:-2] if n.endswith("_p") else n[:-1] for n in used if re.search(r"(?<=[A-Za-z0-9])_?p$", n)}
+    primed = {n for n in primed if _primed_in(text, n)}
+    digits = _digits_are_bodies(text, used, bodies)
+    parsed: dict[str, tuple[str, str, str, str]] = {}
+    for name in used:
+        if name in skip:
+            continue
+        stem = name[:-2] if name.endswith("_p") else name[:-1] if name.endswith("p") else ""
+        got = parse(stem, bodies, digits, primed=True) if stem in primed else parse(name, bodies, digits)
+        if got is not None:
+            parsed[name] = got
+    out: dict[str, sympy.Expr] = {}
+    m = ctx.model
+    if "m" in used and "m" not in skip and not ctx.problem.fixed_B and _equal(ctx, m.m_A, m.m_B):
+        out["m"] = m.m_A  # two equal masses: m is each one's
+    for name, (kind, body, time, axis) in parsed.items():
+        if not time and any(q[:2] == (kind, body) and q[2] == "2" and q[3] == axis for q in parsed.values()):
+            time = "1"  # vAn beside vAn': before
+        e = meaning(ctx, kind, body, time, axis)
+        if e is not None:
+            out[name] = e
+    return out
+
+
+def _equal(ctx: Context, a: sympy.Expr, b: sympy.Expr) -> bool:
+    """Whether two of the problem's quantities are equal (by their definitions or their values)."""
+    defs, values = ctx.definitions(), ctx.problem.numeric()
+    x, y = (e.xreplace(defs).xreplace(values) for e in (a, b))
+    return sympy.simplify(x - y) == 0
+
+
+def _primed_in(text: str, stem: str) -> bool:
+    """Whether ``stem`` (a rewritten name) is written primed in ``text`` in another spelling
+    (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``)."""
+    loose = r"[_{}()]*".join(re.escape(c) for c in stem.replace("_", ""))
+    return re.search(rf"(?<![\w])\(?{loose}[_{{}})]*\s*(?:'|′|’|\\prime|\^\{{?\\prime)", text) is not None
+
+
+#: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).
+_CHANGE = re.compile(r"^\s*(?:\\?Delta|Δ)\s*(?:KE|K|E_?k|T)\s*$")
+
+
+def energy_change(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:
+    """``ΔKE = 6523 - 7542 = -1019 J``: a change of kinetic energy worked out negative is the
+    energy after less the energy before, minus the energy lost (read elsewhere as the loss, which
+    a student states positive: ``ΔT = 2898 - 1513 = 1385 lost``)."""
+    out = []
+    for r in relations:
+        if len(r.sides) >= 2 and _CHANGE.match(r.sides[0]) and re.match(r"\s*[-−]\s*\d", r.sides[-1]):
+            r = replace(r, sides=(f"-({r.sides[0].strip()})", *r.sides[1:]))
+        out.append(r)
+    return tuple(out)
+
+
+def words_for(e: sympy.Expr) -> str | None:
+    """A momentum or a kinetic energy this grammar reads (``p_i``: m_A v_A1 + m_B v_B1) in words,
+    for the report ("the momentum of A and B before the impact"); None for anything else."""
+    speeds = [s.name for s in e.free_symbols if re.fullmatch(r"v_[AB][12][nt]?", s.name)]
+    masses = [s.name for s in e.free_symbols if re.fullmatch(r"m_[AB]", s.name)]
+    if not speeds or not masses or len({n[3] for n in speeds}) != 1:
+        return None
+    bodies = sorted({n[2] for n in speeds})
+    when = "before" if speeds[0][3] == "1" else "after"
+    powers = [a for a in sympy.preorder_traversal(e) if isinstance(a, sympy.Pow)]
+    if any(a.exp == -1 for a in powers):
+        return None  # (m_A v_A2 + m_B v_B2)/(m_A + m_B): the common velocity, said as such
+    kind = "kinetic energy" if any(a.exp == 2 and a.base.is_Symbol for a in powers) else "momentum"
+    whose = "of A and B" if len(bodies) == 2 else f"of {bodies[0]}"
+    return f"the {kind} {whose} {when} the impact"
+
+
+def said_read(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:
+    """What the report says of the names it read: declared, read by habit, inferred, and the sign."""
+    out = []
+    habit = [f"{n} as {_shown(e)}" for n, e in meanings.items() if n not in declared]
+    if declared:
+        out.append("Declared: " + ", ".join(f"{n} is {_shown(e)}" for n, e in declared.items()) + ".")
+    if habit:
+        out.append("Read " + ", ".join(habit) + ".")
+    if inferred:
+        out.append("Inferred from the relations: " + ", ".join(f"{n} is {what}" for n, what in inferred.items()) + ".")
+    if sign == -1 and not declared_sign:
+        out.append("Inferred from the values written: the positive direction is opposite to derive's n (B toward A).")
+    return out
+
+
+def _shown(e: sympy.Expr) -> str:
+    if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
+        return e.args[0].name  # a given restated without its sign: said as that given
+    return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"

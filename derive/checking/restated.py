@@ -1,0 +1,86 @@
+"""Givens restated in the student's names: ``Given: m = 0.060 kg, v = 28 m/s``, ``Puck: v_{1i} =
+35.0 m/s``, ``v=35.0 m/s`` on the first lines. A line before the working whose relations are all
+a name set to a number, where a number is the problem's value of exactly one given velocity (to the figures
+written, either sign: the student's positive may be derive's negative), declares that name as
+that given: it is never a slip, and ``v`` there is the speed before, not the habit's velocity
+after. Written without a sign, it is the given's size (``v = 4`` where the student's positive
+points out of the wall: ``v_{x,i} = -v``); with one, the velocity. A zero says too little (B at rest, a velocity after that vanishes) and declares nothing.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.numeric import number_of
+from derive.checking.valuenames import unit_of
+from derive.mathtext.notation import student
+from derive.mathtext.reader import Relation
+from derive.problem.expr import ParseError, parse
+from derive.problem.units import VELOCITY
+
+_NAME = re.compile(r"[A-Za-z]\w{0,6}")
+_NUMBER = re.compile(r"\s*[-+]?\s*(\d+)\.?(\d*)\s*")
+
+
+def _number(side: str) -> tuple[float, float] | None:
+    """The number a side is (its value and half its last written figure), None where it is none."""
+    m = _NUMBER.fullmatch(side)
+    if m is None:
+        return None
+    try:
+        value = number_of(parse(student(side), {}).expr)
+    except ParseError:
+        return None
+    if value is None or abs(value.imag) > 1e-12:
+        return None
+    return float(value.real), 0.5 * 10 ** -len(m.group(2)) + 1e-12
+
+
+def _stated(r: Relation) -> bool:
+    """Whether ``r`` states a value: a name set to a number (``v = 28``)."""
+    return len(r.sides) == 2 and _NAME.fullmatch(r.sides[0].strip()) is not None and _number(r.sides[1]) is not None
+
+
+def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, sympy.Expr]:
+    """The names set to a given velocity's value on a line of givens -> that given."""
+    givens = [
+        (g.symbol, abs(float(g.value)))
+        for g in ctx.problem.givens
+        if g.dim == VELOCITY and not g.unknown and g.value is not None and g.value.is_number and g.value != 0
+    ]
+    lines: dict[int, list[Relation]] = {}
+    for r in relations:
+        lines.setdefault(r.line, []).append(r)
+    out: dict[str, sympy.Expr] = {}
+    seen: set[str] = set()
+    worked = [n for n, rs in lines.items() if not all(_stated(x) for x in rs)]
+    for r in relations:
+        if worked and r.line >= min(worked):
+            break  # the givens come before the working ("v = 5 m/s" after it is a result)
+        name = r.sides[0].strip()
+        if len(r.sides) != 2 or not _NAME.fullmatch(name) or name in reserved or name in seen or r.lead:
+            seen.add(name)
+            continue
+        seen.add(name)
+        unit = unit_of(r)
+        if re.match(r"[mMWEKTJIpPe]", name) or (unit is not None and unit[0] != VELOCITY):
+            continue  # a mass, a weight, an energy, an impulse, a momentum, e: not a velocity
+        value, half = _number(r.sides[1])
+        hits = [s for s, v in givens if abs(abs(value) - v) <= half]
+        if len(hits) == 1:
+            out[name] = hits[0] if value < 0 or ctx.problem.oblique else sympy.Abs(hits[0])  # "v = 4": a size
+    return out
+
+
+def is_size(ctx: Context, e: sympy.Expr) -> bool:
+    """Whether ``e`` is a size, the same in any sign convention: a speed of an oblique impact (a
+    given ``v_A1``, a result ``v_A2``), a given restated without its sign."""
+    if isinstance(e, sympy.Abs):
+        return True  # a given restated as a number without its sign (restated)
+    if not ctx.problem.oblique or not isinstance(e, sympy.Symbol):
+        return False
+    speeds = [g.symbol for g in ctx.problem.givens if g.dim == VELOCITY and not g.name.endswith(("n", "t"))]
+    return e in speeds or any(s == e for n, (s, _x) in ctx.derived().items() if re.fullmatch(r"v_[AB]2", n))
