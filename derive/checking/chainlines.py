@@ -22,6 +22,7 @@ from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
+from derive.checking.ownquantities import Defs, define, defined, judged_later, provisional, slack_of, solved_somewhere
 from derive.checking.report import Item, merged
 from derive.checking.slipnames import COPIED, FLIPPED, copied_into_working, sign_of_a_term
 from derive.checking.stageslips import (
@@ -52,8 +53,10 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
         return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
 
-    true_defs: dict[sympy.Symbol, sympy.Expr] = {p: chainnames.at(x, values) for p, x in said.items()}
+    true_defs = Defs({p: chainnames.at(x, values) for p, x in said.items()})
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
+    later = solved_somewhere(read)
+    pending: list[tuple[int, tuple, list]] = []  # lines not read for a name a later line defines
     items: list[Item] = []
     slips: list[str] = []
     alias = chainnames.aliases(said, values, _givens(ctx))  # x, A's velocity after, is the chain's u_A
@@ -64,9 +67,9 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     for r, sides, exprs in read:
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
-        if left.is_Symbol and left.name.startswith(PREFIX) and left not in true_defs and len(exprs) > 1:
-            true_defs[left] = exprs[1].xreplace(true_defs).xreplace(values)
-            own_defs[left] = sympy.Rational(sides[-1]) if _number(sides[-1]) else exprs[-1].xreplace(own_defs)
+        name = defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
+        if name and not provisional(name, exprs, true_defs, later):
+            define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
             exprs, sides = exprs[1:], sides[1:]
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
         if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
@@ -76,6 +79,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
+        pending += [(len(items), sides, exprs)] if item.status == "not read" else []
         if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
@@ -107,6 +111,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
+    judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]))
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
     notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
@@ -312,6 +317,7 @@ def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
     for i in range(len(exprs) - 1):
         k = len(exprs) - 1 if ends else i + 1
         tol = max(literal_tolerance(f"{sides[i]} = {sides[k]}", ctx.data), 1e-9)
+        tol += slack_of(subs[0], exprs[i].free_symbols | exprs[k].free_symbols)  # s found from rounded numbers
         terms = [[_value(ctx, t, subs) for t in sympy.Add.make_args(x)] for x in (exprs[i], exprs[k])]
         a, b = (_value(ctx, x, subs) for x in (exprs[i], exprs[k]))
         if a is None or b is None:

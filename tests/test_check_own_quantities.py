@@ -1,0 +1,75 @@
+"""A chain's derivation where the student introduces a quantity derive has no name for (a
+friction force, a deceleration, a time, an angular frequency, an amplitude), relates it to the
+givens, solves for it and uses it: the lines are judged by whether they hold given what the
+quantity is, the lines before the one that solves for it too, and a value worked from rounded
+numbers carries its rounding into the lines that use it. Every number is worked by hand from
+the problem files' givens (in the comments), never from derive's output."""
+
+from __future__ import annotations
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, str]:
+    """line number -> status of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    rank = ("not read", "correct", "carried", "wrong")
+    out: dict[int, str] = {}
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            n = int(i.name)
+            if n not in out or rank.index(i.status) > rank.index(out[n]):
+                out[n] = i.status
+    return out
+
+
+def test_quantities_related_before_a_later_line_finds_them_are_judged_with_them() -> None:
+    # The car (910 kg) and the SUV (2100 kg) skid 2.7 m together, mu = 0.80, g = 9.8:
+    # F = 0.80(3010)(9.8) = 23598.4 N, a = F/3010 = 7.84 m/s^2 (F = 3010 a holds),
+    # V = sqrt(2(7.84)(2.7)) = sqrt(42.336) = 6.5066; t = 6.507/7.84 = 0.82997 s and
+    # V t/2 = 6.5066(0.82997)/2 = 2.7001, the skid (the 0.830 rounded, not a slip).
+    work = (
+        "Let F be the friction force on the wreck and a its deceleration.\n"
+        "F = 3010 a\n"
+        "F = 0.80(3010)(9.8) = 23598.4\n"
+        "a = F/3010 = 7.84\n"
+        "V = sqrt(2(7.84)(2.7)) = 6.507\n"
+        "t = 6.507/7.84 = 0.830\n"
+        "2.7 = V t/2\n"
+    )
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert [found[n] for n in (2, 3, 4, 5, 6, 7)] == ["correct"] * 6
+
+
+def test_a_quantity_defined_by_its_square_is_known_for_the_lines_after() -> None:
+    # The block (30 kg) strikes the pan (10 kg) at sqrt(2(9.81)(2)) = 6.2642 m/s; V = 4.6981;
+    # k = 20000 N/m: w^2 = 20000/40 = 500. y_0 = 30(9.81)/20000 = 0.014715;
+    # A^2 = 0.014715^2 + 4.698^2/500 = 0.00021653 + 0.044142 = 0.044359, A = 0.21062;
+    # the lowest point 0.0147 + 0.2106 = 0.2253 m below the pan's first position.
+    work = (
+        "Let w be the angular frequency of the block and pan on the spring.\n"
+        "w^2 = 20000/40 = 500\n"
+        "Let A be the amplitude about the new equilibrium.\n"
+        "A^2 = (30(9.81)/20000)^2 + 4.698^2/w^2\n"
+        "A = 0.2106\n"
+        "x = 0.0147 + A = 0.2253\n"
+    )
+    found = lines("chain-block-onto-spring-pan", work)
+    assert [found[n] for n in (2, 4, 5, 6)] == ["correct"] * 4
+
+
+def test_a_later_definition_does_not_make_an_earlier_false_line_wrong_or_right() -> None:
+    # F = 0.80(3010)(9.8) = 23598.4 and a = 7.84, so F = 2100 a (the SUV's mass only) is false;
+    # it stays not read (the later lines may have come from a slip), never a false 'correct'.
+    work = "F = 2100 a\nF = 0.80(3010)(9.8) = 23598.4\na = F/3010 = 7.84\n"
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert found[1] == "not read"
+    assert found[2] == found[3] == "correct"
+
+
+def test_a_name_with_max_or_min_as_its_subscript_in_latex_is_read() -> None:
+    # The bullet (0.020 kg at 300 m/s) lodges in the 4.0 kg block: V = 6/4.02 = 1.49254 m/s;
+    # the rise V^2/(2g) = 2.22767/19.62 = 0.11354 m (g = 9.81).
+    for name in (r"h_{\max}", r"h_\max", r"h_{\text{max}}"):
+        work = f"\\[ {name} = \\frac{{V^2}}{{2g}} = \\frac{{1.4925^2}}{{2(9.81)}} = 0.1135\\ \\text{{m}} \\]\n"
+        assert lines("chain-msu-bullet-block-swings", work).get(1) == "correct", name
