@@ -73,3 +73,37 @@ def test_a_name_with_max_or_min_as_its_subscript_in_latex_is_read() -> None:
     for name in (r"h_{\max}", r"h_\max", r"h_{\text{max}}"):
         work = f"\\[ {name} = \\frac{{V^2}}{{2g}} = \\frac{{1.4925^2}}{{2(9.81)}} = 0.1135\\ \\text{{m}} \\]\n"
         assert lines("chain-msu-bullet-block-swings", work).get(1) == "correct", name
+
+
+def test_a_chains_kinetic_energies_named_by_the_student_are_the_impacts() -> None:
+    # Suitcase A (15 lb) slides down 6 ft: v = sqrt(2(32.2)(6)) = 19.657 ft/s, so its KE before
+    # is 15(6) = 90 ft lb; after the impact (e = 0.3): 15 v = 15 a + 10 b, b - a = 0.3 v gives
+    # a = 9.4354, b = 15.3325, and KE after = ½(15/32.2)(9.435²) + ½(10/32.2)(15.33²) = 57.23.
+    # With the weights for the masses the 'KE after' is 1842.7: a slip, not a name's definition.
+    right = (
+        "KE before = (1/2)(15/32.2)(19.66)^2 = 90.0\nKE_f = (1/2)(15/32.2)(9.435)^2 + (1/2)(10/32.2)(15.33)^2 = 57.23\n"
+    )
+    found = lines("chain-hibbeler-15-58-suitcases", right)
+    assert found[1] == found[2] == "correct"
+    slip = "K_f = (1/2)(15)(9.435)^2 + (1/2)(10)(15.33)^2 = 1842.7\n"
+    assert lines("chain-hibbeler-15-58-suitcases", slip)[1] == "wrong"
+
+
+def test_two_names_met_only_together_are_the_givens_of_their_letters_that_make_it_hold() -> None:
+    # The car (910 kg) locks onto the SUV (2100 kg) and they skid 2.7 m (mu = 0.80, g = 9.8):
+    # V = sqrt(42.336) = 6.5066 and the car's speed 3010 V/910 = 21.52 m/s; so m v = (m + 2100) V
+    # holds with m the car's mass and v its speed (no other pair of the chain's values does).
+    # (Neither m nor v is met alone on another line, so neither is inferred one at a time.)
+    work = "m v = (m + 2100) V\nV = sqrt(2(0.80)(9.8)(2.7)) = 6.507\n"
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert [found[n] for n in (1, 2)] == ["correct"] * 2
+
+
+def test_an_equation_for_the_next_result_from_a_wrong_number_is_carried() -> None:
+    # The bullet (0.020 kg at 300 m/s) in the 4.0 kg block: V = 6/4.02 = 1.4925, written 1.39.
+    # Then ½(4.02)(1.39²) = 3.8835 = 4.02(9.81) h = 39.44 h holds for the student's h = 0.09847:
+    # worked from the wrong 1.39, carried, as is h = 0.0985 (the true rise is 0.11354 m).
+    work = "V = 6/4.02 = 1.39\n(1/2)(4.02)(1.39)^2 = 4.02(9.81)h = 39.44h\nh = 3.884/39.44 = 0.0985\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1] == "wrong"
+    assert found[2] == found[3] == "carried"

@@ -53,10 +53,12 @@ Declared = dict[sympy.Symbol, sympy.Expr]
 
 
 def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
-    """The names ``text`` declares in words (:func:`declared`), and the relations read without
-    those that declare them (``p = A after`` is a name, not a relation to judge)."""
+    """The names ``text`` declares in words (:func:`declared`) or by an impact's energy
+    (:func:`energies`), and the relations read without those that declare them (``p = A after``
+    is a name, not a relation to judge)."""
     said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
-    return said, [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    read = [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    return {**energies(ctx, read), **said}, read
 
 
 def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:
@@ -109,7 +111,12 @@ def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
     labels = part.problem.labels
     if body not in labels:
         return None
-    key = f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}"
+    return _result(ctx, stage, f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}")
+
+
+def _result(ctx: Context, stage, key: str) -> sympy.Expr | None:
+    """The chain's expression of an impact stage's result or given ``key`` (``v_A2``, ``T_1``)."""
+    part = stage.part
     chain = {str(s): s for s in ctx.solution.values}
     inner = {}
     for g in part.problem.givens:
@@ -122,6 +129,25 @@ def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
         return None
     x = x.xreplace({s: inner[s.name] for s in x.free_symbols if s.name in inner})
     return x.xreplace({s: chain[s.name] for s in x.free_symbols if s.name in chain})
+
+
+#: The student's names of an impact's kinetic energies (``KE before`` is read as T_1 already).
+_ENERGIES = {"T_1": "T_1", "KE_i": "T_1", "K_i": "T_1", "T_2": "T_2", "KE_f": "T_2", "K_f": "T_2", "T_lost": "T_lost"}
+
+
+def energies(ctx: Context, read: list) -> Declared:
+    """The kinetic energies before and after the impact, and the energy lost, where the chain
+    has one impact and the student names them (``KE after``, ``KE_f``, ``K_i``, ``KE lost``): the
+    impact's own values, as a single impact's are, so a slip in them is found there."""
+    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
+    out: Declared = {}
+    for p in used if len(impacts) == 1 else ():
+        key = _ENERGIES.get(p.name[len(PREFIX) :])
+        x = _result(ctx, impacts[0], key) if key else None
+        if x is not None:
+            out[p] = x
+    return out
 
 
 def at(x: sympy.Expr, values: dict) -> sympy.Expr:

@@ -15,6 +15,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking import chainnames
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.report import Item
@@ -90,3 +91,41 @@ def judged_later(items: list[Item], pending: list[tuple[int, tuple, list]], defs
             names = ", ".join(sorted(s.name[len(PREFIX) :] for s in own))
             message = f"True for this problem, with {names} as the later lines find it."
             items[k] = replace(items[k], status="correct", message=message)
+
+
+def paired(read: list, found: dict, values: dict, holds: Callable, own: set) -> dict[sympy.Symbol, sympy.Symbol]:
+    """Two names of the student's own met only together (``m*v0 = (m+M)*V``, the givens never
+    restated as names): the one pair of the chain's values, each of the name's letter, that
+    makes the relation hold. ``holds(sides, exprs, subs)``; ``own``: the names the student
+    defines (never the chain's)."""
+    out: dict[sympy.Symbol, sympy.Symbol] = {}
+    for _r, sides, exprs in read:
+        subs = {**found, **out}
+        names = {s for x in exprs for s in x.xreplace(subs).free_symbols if s.name.startswith(PREFIX)}
+        if len(names) != 2 or names & own:
+            continue
+        p, q = sorted(names, key=str)
+        cands = [[v for v, x in values.items() if x.is_number and x != 0 and _letter(v, n)] for n in (p, q)]
+        fits = [(a, b) for a in cands[0] for b in cands[1] if a != b and holds(sides, exprs, {**subs, p: a, q: b})]
+        if len(fits) == 1:
+            out[p], out[q] = fits[0]
+    return out
+
+
+def _letter(value: sympy.Symbol, name: sympy.Symbol) -> bool:
+    return value.name[0].lower() == name.name[len(PREFIX)].lower()
+
+
+def carried_on(item: Item, sides: tuple, exprs: list[sympy.Expr], defs: tuple, holds: Callable, slips: tuple) -> Item:
+    """A further slip that holds once each number the student got wrong in it is put back as
+    its true value (``8.92 = 4.02(9.81)h`` with 8.92 the student's KE after, 4.478) is carried:
+    the rule is right, worked from the wrong number. ``defs``: the true and the student's values
+    of the student's names, and the chain's values; ``holds(exprs)``: whether the sides are equal
+    for the problem; ``slips``: the slips so far and the carried message of them."""
+    (true_defs, own_defs, values), (lines, carried) = defs, slips
+    truth = {**values, **{k: v.xreplace(values) for k, v in true_defs.items()}}
+    fixed = [chainnames.put_right(side, own_defs, truth) for side in sides]
+    if all(x is None for x in fixed) or not holds([x if y is None else y for x, y in zip(exprs, fixed, strict=True)]):
+        return item
+    lines.pop()
+    return replace(item, status="carried", message=carried(lines))
