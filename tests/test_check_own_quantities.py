@@ -7,7 +7,13 @@ the problem files' givens (in the comments), never from derive's output."""
 
 from __future__ import annotations
 
+import pytest
+
 import derive
+
+
+def statuses(report: derive.checking.report.CheckReport) -> dict[str, str]:
+    return {i.name: i.status for i in report.items}
 
 
 def lines(problem: str, work: str) -> dict[int, str]:
@@ -107,3 +113,26 @@ def test_an_equation_for_the_next_result_from_a_wrong_number_is_carried() -> Non
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1] == "wrong"
     assert found[2] == found[3] == "carried"
+
+
+# A 0.3 kg at 3 m/s meets B 0.2 kg at 2 m/s head on, e = 0.8 (AQA M3 2007): the total momentum
+# 0.3(3) - 0.2(2) = 0.5; after, 0.3a + 0.2b = 0.5 and b - a = 0.8(5) = 4 give a = -0.6, b = 3.4;
+# KE before ½(0.3)(9) + ½(0.2)(4) = 1.75, after ½(0.3)(0.36) + ½(0.2)(11.56) = 1.21: 0.54 lost.
+HEAD_ON = "aqa-m3-2007-spheres-approach-head-on"
+
+
+@pytest.mark.parametrize(("before", "after"), [("p_i", "p_f"), ("P_before", "P_after"), ("p_initial", "p_final")])
+def test_the_total_momentum_named_before_and_after_is_the_momentum_of_both(before: str, after: str) -> None:
+    work = f"{before} = {after}\n{before} = 0.3(3) + 0.2(-2) = 0.5\n{after} = 0.3(-0.6) + 0.2(3.4) = 0.5\n"
+    found = statuses(derive.check(derive.solve(derive.load(HEAD_ON)), derivation=work))
+    assert [found[n] for n in ("1", "2", "3")] == ["correct"] * 3
+    slip = f"{before} = 0.3(3) + 0.2(2) = 1.3\n"  # B's velocity with the wrong sign: not p_i's definition
+    assert statuses(derive.check(derive.solve(derive.load(HEAD_ON)), derivation=slip))["1"] == "wrong"
+
+
+@pytest.mark.parametrize("line", ["ΔKE = 1.21 - 1.75 = -0.54", "ΔKE = 1.75 - 1.21 = 0.54", r"\Delta KE = -0.54 J"])
+def test_a_change_in_kinetic_energy_is_read_with_the_sign_it_is_worked_with(line: str) -> None:
+    found = statuses(derive.check(derive.solve(derive.load(HEAD_ON)), derivation=line + "\n"))
+    assert found["1"] == "correct", line
+    wrong = line.replace("0.54", "0.45")
+    assert statuses(derive.check(derive.solve(derive.load(HEAD_ON)), derivation=wrong + "\n"))["1"] == "wrong"
