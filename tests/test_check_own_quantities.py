@@ -136,3 +136,27 @@ def test_a_change_in_kinetic_energy_is_read_with_the_sign_it_is_worked_with(line
     assert found["1"] == "correct", line
     wrong = line.replace("0.54", "0.45")
     assert statuses(derive.check(derive.solve(derive.load(HEAD_ON)), derivation=wrong + "\n"))["1"] == "wrong"
+
+
+def test_a_chains_velocities_named_by_the_habit_are_its_impacts() -> None:
+    # The car (910 kg) at 21.52 m/s locks onto the stopped SUV (2100 kg): 910(21.52) = 19583 =
+    # 3010 V with V = 6.5066 (the skid), so A and B both move at V after. vB - vA = 0.8(21.52)
+    # takes mu for e (e = 0 here): wrong; the rest is worked from it: 19583 = 3010 vA + 36162,
+    # vA = -16579/3010 = -5.508, carried. vA and vB are A's and B's velocities after the impact.
+    work = (
+        "910(21.52) + 0 = 910 vA + 2100 vB\n"
+        "vB - vA = 0.8(21.52 - 0) = 17.22\n"
+        "19583 = 910 vA + 2100(vA + 17.22) = 3010 vA + 36162\n"
+        "vA = -16579/3010 = -5.508\n"
+    )
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert [found[n] for n in (1, 2, 3, 4)] == ["correct", "wrong", "carried", "carried"]
+
+
+def test_a_side_of_names_and_a_wrong_number_is_carried_where_the_number_put_right_holds() -> None:
+    # V = 6/4.02 = 1.4925 written 1.39; ½(4.02)(1.39²) - 4.02(9.81)h = 0 is the energy rule
+    # right, worked from 1.39 (with 1.4925 it holds at the true rise 0.11354 m): carried.
+    work = "V = 6/4.02 = 1.39\n(1/2)(4.02)(1.39)^2 - 4.02(9.81)h = 0\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1] == "wrong"
+    assert found[2] == "carried"

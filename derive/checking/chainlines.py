@@ -48,6 +48,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     names = Open({s.name: s for s in values})
     read = _read(text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
+    said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
@@ -82,7 +83,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         pending += [(len(items), sides, exprs)] if item.status == "not read" else []
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
-            item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried))
+            item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
         if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?

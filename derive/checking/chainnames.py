@@ -150,6 +150,39 @@ def energies(ctx: Context, read: list) -> Declared:
     return out
 
 
+#: The A-level habit (u before, v after; a prime after) in a chain's one impact.
+_VELOCITIES = {
+    **{f"v_{b}{w}": f"v_{b}2" for b in "AB" for w in ("", "2", "p", "f")},
+    **{f"{u}_{b}{w}": f"v_{b}1" for b in "AB" for u, w in (("u", ""), ("v", "1"), ("v", "i"))},
+}
+
+
+def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
+    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
+    ``u_A`` before, ``v_A'``) where the chain has one impact and does not use those names: the
+    impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
+    they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
+    ``holds(sides, exprs, subs)``."""
+    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
+    meant = {
+        p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES
+    }
+    meant = {p: _plain(x) for p, x in meant.items() if x is not None} if len(impacts) == 1 else {}
+    if any(holds(sides, exprs, {**said, **meant}) for _r, sides, exprs in read if _has(exprs, meant)):
+        return meant
+    return {}
+
+
+def _plain(x: sympy.Expr) -> sympy.Expr:
+    """``x`` in symbols of the chain's names with no assumptions, as the chain's lines are read."""
+    return x.xreplace({s: sympy.Symbol(s.name) for s in x.free_symbols})
+
+
+def _has(exprs: list[sympy.Expr], names: dict) -> bool:
+    return any(s in names for x in exprs for s in x.free_symbols)
+
+
 def at(x: sympy.Expr, values: dict) -> sympy.Expr:
     """``x`` with the chain's values put in (by name: a stage's symbols may differ in assumptions)."""
     by_name = {str(k): v for k, v in values.items()}
@@ -239,6 +272,18 @@ def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, 
 def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
     """A side of numbers with each the student worked wrongly (a chain value's, as written on
     its line) put back as its true value; None where it has none, or does not read."""
+    text = put_back(side, own_defs, values)
+    if text is None:
+        return None
+    try:
+        return read_side(text, Open({}), False, False)
+    except (ParseError, ValueError, TypeError):
+        return None
+
+
+def put_back(side: str, own_defs: dict, values: dict) -> str | None:
+    """``side`` with each number the student worked wrongly put back as its true value, as
+    text (None where it has none): see :func:`put_right`."""
     wrong = {v: values[k] for k, v in own_defs.items() if k in values and v.is_Rational and v != values[k]}
     found = False
 
@@ -252,12 +297,7 @@ def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
 
     text = re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", side)  # 3.3 x 10.6: x for times
     text = re.sub(r"(?<![\w.])\d+\.\d+", true, text)
-    if not found:
-        return None
-    try:
-        return read_side(text, Open({}), False, False)
-    except (ParseError, ValueError, TypeError):
-        return None
+    return text if found else None
 
 
 def aliases(said: Declared, values: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:

@@ -19,6 +19,7 @@ from derive.checking import chainnames
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.report import Item
+from derive.problem.expr import ParseError
 
 
 class Defs(dict):
@@ -121,11 +122,19 @@ def carried_on(item: Item, sides: tuple, exprs: list[sympy.Expr], defs: tuple, h
     its true value (``8.92 = 4.02(9.81)h`` with 8.92 the student's KE after, 4.478) is carried:
     the rule is right, worked from the wrong number. ``defs``: the true and the student's values
     of the student's names, and the chain's values; ``holds(exprs)``: whether the sides are equal
-    for the problem; ``slips``: the slips so far and the carried message of them."""
-    (true_defs, own_defs, values), (lines, carried) = defs, slips
+    for the problem; ``slips``: the slips so far, the carried message of them, and how a side
+    is read in the chain's names."""
+    (true_defs, own_defs, values), (lines, carried, reread) = defs, slips
     truth = {**values, **{k: v.xreplace(values) for k, v in true_defs.items()}}
-    fixed = [chainnames.put_right(side, own_defs, truth) for side in sides]
+    fixed = [_fixed(chainnames.put_back(side, own_defs, truth), reread) for side in sides]
     if all(x is None for x in fixed) or not holds([x if y is None else y for x, y in zip(exprs, fixed, strict=True)]):
         return item
     lines.pop()
     return replace(item, status="carried", message=carried(lines))
+
+
+def _fixed(text: str | None, reread: Callable) -> sympy.Expr | None:
+    try:
+        return None if text is None else reread(text)
+    except (ParseError, ValueError, TypeError):
+        return None
