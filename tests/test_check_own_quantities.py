@@ -86,12 +86,10 @@ def test_a_chains_kinetic_energies_named_by_the_student_are_the_impacts() -> Non
     # is 15(6) = 90 ft lb; after the impact (e = 0.3): 15 v = 15 a + 10 b, b - a = 0.3 v gives
     # a = 9.4354, b = 15.3325, and KE after = ½(15/32.2)(9.435²) + ½(10/32.2)(15.33²) = 57.23.
     # With the weights for the masses the 'KE after' is 1842.7: a slip, not a name's definition.
-    right = (
-        "KE before = (1/2)(15/32.2)(19.66)^2 = 90.0\nKE_f = (1/2)(15/32.2)(9.435)^2 + (1/2)(10/32.2)(15.33)^2 = 57.23\n"
-    )
+    right = "KE before = (1/2)(15/32.2)(19.66)^2 = 90.0\nKE after = (1/2)(15/32.2)(9.435)^2 + (1/2)(10/32.2)(15.33)^2 = 57.23\n"
     found = lines("chain-hibbeler-15-58-suitcases", right)
     assert found[1] == found[2] == "correct"
-    slip = "K_f = (1/2)(15)(9.435)^2 + (1/2)(10)(15.33)^2 = 1842.7\n"
+    slip = "KE_after = (1/2)(15)(9.435)^2 + (1/2)(10)(15.33)^2 = 1842.7\n"
     assert lines("chain-hibbeler-15-58-suitcases", slip)[1] == "wrong"
 
 
@@ -160,3 +158,10 @@ def test_a_side_of_names_and_a_wrong_number_is_carried_where_the_number_put_righ
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1] == "wrong"
     assert found[2] == "carried"
+
+
+def test_an_energy_named_initial_for_a_later_stage_is_not_taken_for_the_impacts() -> None:
+    # The spring stage's energy balance starts just after the impact: KE_i = ½(40)(4.698²) =
+    # 441.4 J there (the impact's KE before is ½(30)(6.264²) = 588.6): the student's own name.
+    found = lines("chain-block-onto-spring-pan", "KE_i = (1/2)(40)(4.698)^2 = 441.4\n")
+    assert found[1] == "correct"

@@ -131,13 +131,15 @@ def _result(ctx: Context, stage, key: str) -> sympy.Expr | None:
     return x.xreplace({s: chain[s.name] for s in x.free_symbols if s.name in chain})
 
 
-#: The student's names of an impact's kinetic energies (``KE before`` is read as T_1 already).
-_ENERGIES = {"T_1": "T_1", "KE_i": "T_1", "K_i": "T_1", "T_2": "T_2", "KE_f": "T_2", "K_f": "T_2", "T_lost": "T_lost"}
+#: The student's names of an impact's kinetic energies (``KE before``, ``KE after``, ``KE lost``
+#: are read as T_1, T_2, T_lost already). ``KE_i`` and ``KE_f`` are not among them: in a chain
+#: they are as often the start and end of a later stage's energy balance (the spring's).
+_ENERGIES = {"T_1": "T_1", "T_2": "T_2", "T_lost": "T_lost"}
 
 
 def energies(ctx: Context, read: list) -> Declared:
     """The kinetic energies before and after the impact, and the energy lost, where the chain
-    has one impact and the student names them (``KE after``, ``KE_f``, ``K_i``, ``KE lost``): the
+    has one impact and the student names them (``KE before``, ``KE after``, ``KE lost``): the
     impact's own values, as a single impact's are, so a slip in them is found there."""
     impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
