@@ -18,6 +18,7 @@ from functools import partial
 import sympy
 
 from derive.checking import chainnames, mistakes, words
+from derive.checking import ownquantities as own
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
@@ -47,13 +48,16 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     names = Open({s.name: s for s in values})
     read = _read(text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
-    mapping = _infer(ctx, read, values, said)
+    said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
+    mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
+    mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
     def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
         return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
 
-    true_defs: dict[sympy.Symbol, sympy.Expr] = {p: chainnames.at(x, values) for p, x in said.items()}
+    true_defs = own.Defs({p: chainnames.at(x, values) for p, x in said.items()})
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
+    pending: list[tuple[int, tuple, list]] = []  # lines not read for a name a later line defines
     items: list[Item] = []
     slips: list[str] = []
     alias = chainnames.aliases(said, values, _givens(ctx))  # x, A's velocity after, is the chain's u_A
@@ -64,9 +68,9 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     for r, sides, exprs in read:
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
-        if left.is_Symbol and left.name.startswith(PREFIX) and left not in true_defs and len(exprs) > 1:
-            true_defs[left] = exprs[1].xreplace(true_defs).xreplace(values)
-            own_defs[left] = sympy.Rational(sides[-1]) if _number(sides[-1]) else exprs[-1].xreplace(own_defs)
+        name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
+        if name and not own.provisional(name, exprs, true_defs, later):
+            own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
             exprs, sides = exprs[1:], sides[1:]
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
         if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
@@ -76,6 +80,10 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
+        pending += [(len(items), sides, exprs)] if item.status == "not read" else []
+        if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
+            holds = partial(_holds, ctx, sides, subs=[true_defs, values])
+            item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
         if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
@@ -107,6 +115,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
+    own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]))
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
     notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
@@ -312,6 +321,7 @@ def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
     for i in range(len(exprs) - 1):
         k = len(exprs) - 1 if ends else i + 1
         tol = max(literal_tolerance(f"{sides[i]} = {sides[k]}", ctx.data), 1e-9)
+        tol += own.slack_of(subs[0], exprs[i].free_symbols | exprs[k].free_symbols)  # s found from rounded numbers
         terms = [[_value(ctx, t, subs) for t in sympy.Add.make_args(x)] for x in (exprs[i], exprs[k])]
         a, b = (_value(ctx, x, subs) for x in (exprs[i], exprs[k]))
         if a is None or b is None:

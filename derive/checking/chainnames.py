@@ -53,10 +53,12 @@ Declared = dict[sympy.Symbol, sympy.Expr]
 
 
 def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
-    """The names ``text`` declares in words (:func:`declared`), and the relations read without
-    those that declare them (``p = A after`` is a name, not a relation to judge)."""
+    """The names ``text`` declares in words (:func:`declared`) or by an impact's energy
+    (:func:`energies`), and the relations read without those that declare them (``p = A after``
+    is a name, not a relation to judge)."""
     said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
-    return said, [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    read = [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    return {**energies(ctx, read), **said}, read
 
 
 def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:
@@ -109,7 +111,12 @@ def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
     labels = part.problem.labels
     if body not in labels:
         return None
-    key = f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}"
+    return _result(ctx, stage, f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}")
+
+
+def _result(ctx: Context, stage, key: str) -> sympy.Expr | None:
+    """The chain's expression of an impact stage's result or given ``key`` (``v_A2``, ``T_1``)."""
+    part = stage.part
     chain = {str(s): s for s in ctx.solution.values}
     inner = {}
     for g in part.problem.givens:
@@ -122,6 +129,60 @@ def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
         return None
     x = x.xreplace({s: inner[s.name] for s in x.free_symbols if s.name in inner})
     return x.xreplace({s: chain[s.name] for s in x.free_symbols if s.name in chain})
+
+
+#: The student's names of an impact's kinetic energies (``KE before``, ``KE after``, ``KE lost``
+#: are read as T_1, T_2, T_lost already). ``KE_i`` and ``KE_f`` are not among them: in a chain
+#: they are as often the start and end of a later stage's energy balance (the spring's).
+_ENERGIES = {"T_1": "T_1", "T_2": "T_2", "T_lost": "T_lost"}
+
+
+def energies(ctx: Context, read: list) -> Declared:
+    """The kinetic energies before and after the impact, and the energy lost, where the chain
+    has one impact and the student names them (``KE before``, ``KE after``, ``KE lost``): the
+    impact's own values, as a single impact's are, so a slip in them is found there."""
+    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
+    out: Declared = {}
+    for p in used if len(impacts) == 1 else ():
+        key = _ENERGIES.get(p.name[len(PREFIX) :])
+        x = _result(ctx, impacts[0], key) if key else None
+        if x is not None:
+            out[p] = x
+    return out
+
+
+#: The A-level habit (u before, v after; a prime after) in a chain's one impact.
+_VELOCITIES = {
+    **{f"v_{b}{w}": f"v_{b}2" for b in "AB" for w in ("", "2", "p", "f")},
+    **{f"{u}_{b}{w}": f"v_{b}1" for b in "AB" for u, w in (("u", ""), ("v", "1"), ("v", "i"))},
+}
+
+
+def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
+    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
+    ``u_A`` before, ``v_A'``) where the chain has one impact and does not use those names: the
+    impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
+    they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
+    ``holds(sides, exprs, subs)``."""
+    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
+    meant = {
+        p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES
+    }
+    meant = {p: _plain(x) for p, x in meant.items() if x is not None} if len(impacts) == 1 else {}
+    if any(holds(sides, exprs, {**said, **meant}) for _r, sides, exprs in read if _has(exprs, meant)):
+        return meant
+    return {}
+
+
+def _plain(x: sympy.Expr) -> sympy.Expr:
+    """``x`` in symbols of the chain's names with no assumptions, as the chain's lines are read."""
+    return x.xreplace({s: sympy.Symbol(s.name) for s in x.free_symbols})
+
+
+def _has(exprs: list[sympy.Expr], names: dict) -> bool:
+    return any(s in names for x in exprs for s in x.free_symbols)
 
 
 def at(x: sympy.Expr, values: dict) -> sympy.Expr:
@@ -213,6 +274,18 @@ def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, 
 def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
     """A side of numbers with each the student worked wrongly (a chain value's, as written on
     its line) put back as its true value; None where it has none, or does not read."""
+    text = put_back(side, own_defs, values)
+    if text is None:
+        return None
+    try:
+        return read_side(text, Open({}), False, False)
+    except (ParseError, ValueError, TypeError):
+        return None
+
+
+def put_back(side: str, own_defs: dict, values: dict) -> str | None:
+    """``side`` with each number the student worked wrongly put back as its true value, as
+    text (None where it has none): see :func:`put_right`."""
     wrong = {v: values[k] for k, v in own_defs.items() if k in values and v.is_Rational and v != values[k]}
     found = False
 
@@ -226,12 +299,7 @@ def put_right(side: str, own_defs: dict, values: dict) -> sympy.Expr | None:
 
     text = re.sub(r"(?<=[\d)])\s+[x×]\s+(?=[\d(.])", " * ", side)  # 3.3 x 10.6: x for times
     text = re.sub(r"(?<![\w.])\d+\.\d+", true, text)
-    if not found:
-        return None
-    try:
-        return read_side(text, Open({}), False, False)
-    except (ParseError, ValueError, TypeError):
-        return None
+    return text if found else None
 
 
 def aliases(said: Declared, values: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:

@@ -35,6 +35,7 @@ from derive.checking.ownnames import combos, directed, named_later, own_angles, 
 from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
+from derive.checking.totals import signed_change
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -43,10 +44,8 @@ from derive.problem.units import VELOCITY, Dim
 
 #: Greek letters typed as themselves (a student who types μ means a name of its own).
 _GREEK_LETTERS = {"mu": "μ", "lambda": "λ", "omega": "ω", "gamma": "γ", "alpha": "α", "phi": "φ", "sigma": "σ"}
-#: The most names inferred together (more are inferred one at a time).
-JOINT = 2
-#: The most names inferred in one derivation (the search is bounded; the rest stay unknown).
-MAX_INFERRED = 6
+JOINT = 2  # the most names inferred together (more are inferred one at a time)
+MAX_INFERRED = 6  # the most names inferred in one derivation (the search is bounded; the rest stay unknown)
 
 
 @dataclass(frozen=True)
@@ -90,7 +89,8 @@ def read_lines(
     rewritten: list[tuple[str, ...]] = []
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
-        rewritten.append(tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides))
+        sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
+        rewritten.append(signed_change(r.sides, sides))  # ΔKE = 6523 - 7542 = -1019: -T_lost
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {

@@ -31,6 +31,7 @@ from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
+from derive.checking.totals import totals
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
@@ -361,6 +362,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
+    out.update(totals(ctx, used))  # p_i, p_f: the total momentum before and after
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
 
 
