@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.parser import FUNCTIONS, GREEK, RELATIONS, Parser
 from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
@@ -71,7 +72,7 @@ def latex_to_plain(tex: str) -> str:
     'theta = atan(3.05/1.11) (3)'
     """
     tags = [f" ({t.strip()})" for t in _TAG.findall(tex)]
-    s = _TAG.sub(" ", _THOUSANDS.sub("", _BRACKETED_NAME.sub(lambda m: f"{m[1]}_{{{m[2]}{m[3] or m[4]}}}", tex)))
+    s = _TAG.sub(" ", _THOUSANDS.sub("", bracketed_names(tex, tex=True)))
     m = _TAG_END.search(s)
     if m:
         s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]
@@ -99,10 +100,6 @@ def latex_to_plain(tex: str) -> str:
         out.append(piece if parser.spans[start][0] == end else " " + piece)
         end = parser.spans[parser.i - 1][1]
     return " ".join("".join([*out, *tags]).split())
-
-
-#: A name in brackets with its instant after them (``(v_B)_2``, ``(v_{A})_{1}``): one name, ``v_{B2}``.
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\{?([A-Za-z]{1,2})\}?\s*\)\s*_\s*(?:\{\s*(\d)\s*\}|(\d)(?!\w))")
 
 
 def _prefix(parser: Parser, start: int, far: int) -> object | None:

@@ -19,12 +19,13 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
+from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
-from derive.mathtext.sides import direction_of, typed_names, units_inside, without_direction
+from derive.mathtext.sides import direction_of, thousands, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -315,7 +316,7 @@ def words_after(text: str) -> str:
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
-        before = text[last + 1 : m.start()].rstrip(" ,;:")
+        before = text[last + 1 : m.start()].rstrip(" ,;:?!")  # "= -0.91 J ?? gained": the doubt is not the value
         unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
         if re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie.")):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
@@ -333,6 +334,7 @@ def _side(text: str) -> str:
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
+    text = thousands(bracketed_names(text))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
