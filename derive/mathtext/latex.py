@@ -13,6 +13,7 @@ from derive.mathtext.parser import FUNCTIONS, GREEK, RELATIONS, Parser
 from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 from derive.mathtext.units import SCALED, is_unit, plain_unit
+from derive.mathtext.vectors import AXES, component
 
 _THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
@@ -46,6 +47,8 @@ _NAMING = re.compile(
     r"|(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+",
     re.I,
 )
+#: A hat in bold (``\\mathbf{\\hat n}``, ``\\boldsymbol{\\hat{\\imath}}``): a unit vector.
+_BOLD_HAT = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{\s*\\hat\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}")
 #: Tokens the parser leaves to the caller, as plain text.
 _PLAIN = {
     **dict.fromkeys(("{", r"\{", r"\left(", r"\left[", r"\left\{"), "("),
@@ -79,6 +82,7 @@ def latex_to_plain(tex: str) -> str:
     s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
     s = _BARE_UNIT.sub("", s)
+    s = _BOLD_HAT.sub(r"\\hat{\1}", s)  # \mathbf{\hat n}: the unit vector, as \hat{\mathbf{n}} is
     s = re.sub(
         r"\^\s*\{\s*((?:\\prime\s*)+)\}|\^\s*\\prime", lambda m: "'" * max(1, (m[1] or "").count("prime")), s
     )  # v^{\prime}
@@ -218,10 +222,13 @@ def _product(node: Mul, top: bool) -> str:
     stood, side by side where they were (``5eu``, ``5(9.51)``), a space between two names."""
     out = ""
     gaps = node.gaps or (" ",) * (len(node.factors) - 1)
+    dot = _dot_product(node)
+    if dot:
+        return dot
     for k, factor in enumerate(node.factors):
         text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
         if k and text and out:
-            gap = {"*": " * "}.get(gaps[k - 1], gaps[k - 1])
+            gap = {"*": " * ", "·": " * "}.get(gaps[k - 1], gaps[k - 1])
             if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
                 gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
             elif not gap and out[-1].isalnum() and text[0].isalnum():
@@ -229,6 +236,33 @@ def _product(node: Mul, top: bool) -> str:
             out += gap
         out += text
     return out
+
+
+def _dot_product(node: Mul) -> str:
+    """Two vectors with a dot between them (``(-\\mathbf{v}_{in})\\cdot\\mathbf{v}_{out}``,
+    ``\\vec a \\cdot \\vec b``) as the sum of the products of their components, each named as a
+    vector's component is (:func:`.vectors.component_name`): ``-(v_inn v_outn + v_int v_outt)``;
+    "" where it is not that (a unit vector, a number, a product written with ``\\times``)."""
+    if node.gaps != ("·",):
+        return ""
+    operands = [_vector_operand(f) for f in node.factors]
+    if None in operands:
+        return ""
+    (sa, a), (sb, b) = operands
+    terms = " + ".join(f"{component(a, axis)} {component(b, axis)}" for axis in AXES)
+    return f"({terms})" if sa * sb > 0 else f"-({terms})"
+
+
+def _vector_operand(node: object) -> tuple[int, str] | None:
+    """(sign, name) of a vector named in bold or with an arrow, alone, negated or in brackets."""
+    if isinstance(node, Func) and node.name == "()" and len(node.args) == 1:
+        node = node.args[0]
+    sign = 1
+    if isinstance(node, Add) and len(node.terms) == 1:
+        sign, node = node.terms[0]
+    if isinstance(node, Vec) and node.name not in ("i", "j", "k"):
+        return sign, node.name
+    return None
 
 
 def _text(inner: str) -> str:

@@ -19,9 +19,10 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
+from derive.mathtext.arrows import arrows_said
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.latex import REJECTED
-from derive.mathtext.layout import ENV, NESTED, row_plain
+from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
@@ -122,6 +123,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
             lead = above.lead or above.sides[0]
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
+        main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
         for part, is_aside in parts:
             r = relation(line, column, written, part)
@@ -173,7 +175,7 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
-        text = NESTED.sub(" ", text)
+        text = NESTED.sub(" ", column_vectors(text))
         parts = re.split(r"\\\\", text)
         for k, part in enumerate(parts):
             if k and "".join(row).strip():
@@ -207,7 +209,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         end = close.search(raw, m.end())
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
-        body = raw[m.end() : end.start()]
+        body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
 
@@ -239,6 +241,7 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
+    plain = arrows_said(plain)  # "(+→)": a sign convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
@@ -302,7 +305,7 @@ def _top_level_split(s: str, sep: str) -> list[str]:
     return out
 
 
-_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is|ok|OK|it)(?![\w(])")
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
 MATH_WORDS = GREEK | FUNCTIONS | {"deg", "degree", "degrees", "rad", "radian", "radians"}
 

@@ -27,9 +27,14 @@ _GLUED_BODY = re.compile(r"(?<![\w'\\])([muvwp])([ABPQ])(?![\w'])")
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
 
+#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``.
+_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])\d{1,3}(?:,\d{3})+(?![\d,])")
+
+
 def thousands(text: str) -> str:
-    """``text`` with each number written in groups of three (``20 000``) as one number: a teacher
-    reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
+    """``text`` with each number written in groups of three (``20 000``, ``20,000``) as one
+    number: a teacher reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
+    text = _THOUSANDS_COMMA.sub(lambda m: m.group(0).replace(",", ""), text)
     return _THOUSANDS.sub(lambda m: re.sub(r"\s", "", m.group(0)), text)
 
 
