@@ -175,6 +175,10 @@ CORRECT: dict[str, list[str]] = {
         "(vB)2 = 8 m/s ->",  # an arrow after the value: its direction
         "(vA)2 = 4 m/s (→)",
         "v_A2 = 4 m/s in the same direction as before",  # words after the value: what it is
+        r"$4(12) + 8(4) = 4v_{A2} + 8v_{B2} \quad \cdots (1)$",
+        r"$v_{A2}=4\,\mathrm{m}/\mathrm{s}$",
+        "v<sub>B2</sub> − v<sub>A2</sub> = 0.5(12 − 4)",  # HTML's subscripts in Markdown
+        "KE before = ½(4)(12<sup>2</sup>) + ½(8)(4<sup>2</sup>) = 352 J",
         r"$m_A(v_A)_1 + m_B(v_B)_1 = m_A(v_A)_{2} + m_B(v_B)_{2}$",
         r"$(v_B)^{\prime} - (v_A)^{\prime} = 0.5(12 - 4) = 4$",
         r"\[ 12(v_A)_2 = 48 \quad\Rightarrow\quad (v_A)_2 = 4\ \text{m/s} \]",
@@ -333,6 +337,8 @@ WRONG: dict[str, list[str]] = {
         "4(12) + 8(4) = 8 (v_A)' + 4 (v_B)'",
         "(vA)2 = 5 m/s",
         "(vA)2 = 4 m/s <-",
+        r"$v_{A2}=5\,\mathrm{m}/\mathrm{s}$",
+        "v<sub>A2</sub> = 5 m/s",
         "v'_A = 5 m/s",
         r"$v_{A}^{\prime} = 5$",
         "v_A2 ~ 5 m/s",

@@ -18,14 +18,14 @@ from derive.mathtext.vectors import AXES, component
 _THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 #: A tag written after the relation: ``\\quad (3)``, ``&& (ii)``.
-_TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
+_TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*(?:\\[lc]?dots[bc]?\s*)?\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
 #: A unit as a fraction of two texts (``\\frac{\\text{m}}{\\text{s}}``).
 _FRAC_UNIT = re.compile(
     r"\\[dt]?frac\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}"
 )
-_TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*(?!\s*_)")
+_TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot|/)*{_ONE_TEXT})*(?!\s*_)")  # \mathrm{m}/\mathrm{s}
 #: A unit typed in mathematics without ``\\text`` after a number (``4 m/s``, ``1.6 m s^{-1}``,
 #: ``\\frac{48}{12} ms^{-1}``, ``64 J``, ``32 N s``) where a side ends: not a product of names.
 _BARE_UNIT = re.compile(

@@ -26,7 +26,7 @@ from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
-from derive.mathtext.sides import direction_of, thousands, typed_names, units_inside, without_direction
+from derive.mathtext.sides import direction_of, html_marks, thousands, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -241,7 +241,7 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
-    plain = arrows_said(plain)  # "(+→)": a sign convention; "= 1.6 m/s ←": to the left
+    plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):

@@ -31,6 +31,16 @@ _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?!
 _THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])\d{1,3}(?:,\d{3})+(?![\d,])")
 
 
+#: HTML's subscripts and powers, as a Markdown page types them (``v<sub>A2</sub>``, ``s<sup>-1</sup>``).
+_HTML_MARK = re.compile(r"<(sub|sup)>\s*([^<>]{1,12}?)\s*</\1>", re.I)
+
+
+def html_marks(text: str) -> str:
+    """``text`` with HTML's ``<sub>`` and ``<sup>`` written as ``_`` and ``^`` (``v_A2``, ``s^(-1)``):
+    their angle brackets are no inequality."""
+    return _HTML_MARK.sub(lambda m: f"_{m[2]}" if m[1].lower() == "sub" else f"^({m[2]})", text)
+
+
 def thousands(text: str) -> str:
     """``text`` with each number written in groups of three (``20 000``, ``20,000``) as one
     number: a teacher reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
