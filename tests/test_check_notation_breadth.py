@@ -21,6 +21,15 @@ Values worked by hand from each problem's givens (never from derive's output):
 - aqa-m3-2014-symbolic-2m-hits-m (symbolic): m_A = 2m, m_B = m, e = 2/3, v_A1 = 2u, v_B1 = 0.
   4u = 2 v_A2 + v_B2, v_B2 - v_A2 = 4u/3; 3 v_A2 = 8u/3, v_A2 = 8u/9, v_B2 = 20u/9.
   KE before ½(2m)(4u²) = 4mu², after m(64/81)u² + ½m(400/81)u² = 264mu²/81, lost 20mu²/27.
+- mcasco-two-cars-no-bounce (plastic, weights in lb): 4500 lb at 3 ft/s, 3000 lb at 6 ft/s the
+  other way; g cancels: 4500(3) - 3000(6) = 13500 - 18000 = -4500 lb ft/s; the common velocity
+  -4500/7500 = -0.6 ft/s. A number typed with its thousands spaced (``4 500``) or
+  set off by commas (``4,500``) is one number.
+
+Names in brackets with their marks after them, as Hibbeler and Beer & Johnston write them
+(``(v_A)_1``, ``(v_A)_2``, ``(v_A)'``, ``(v_B)_n'``, ASCII ``(vA)1`` with ``mA``): the same
+relations as above, the brackets only holding the name together. Column vectors (``pmatrix``,
+``bmatrix``, ``array``, ``\\binom``) are the line of centres' component over the other's.
 """
 
 from __future__ import annotations
@@ -35,6 +44,7 @@ DIRECT = "byjus-4kg-ball-catches-8kg-ball"
 WALL = "edexcel-m2-ball-rebounds-from-wall"
 OBLIQUE = "notes-4c11-two-spheres"
 SYMBOLIC = "aqa-m3-2014-symbolic-2m-hits-m"
+CARS = "mcasco-two-cars-no-bounce"
 
 CORRECT: dict[str, list[str]] = {
     DIRECT: [
@@ -151,6 +161,27 @@ CORRECT: dict[str, list[str]] = {
         "let x = v_A2, y = v_B2\n4x + 8y = 80\ny - x = 4\nx = 4, y = 8",
         "x = velocity of A after, y = velocity of B after\n48 + 32 = 4x + 8y\ny - x = 0.5(8) = 4\nso x = 4 and y = 8",
         "Let $x = v_{A2}$.\n$$4x + 8(x + 4) = 80 \\implies x = 4$$",
+        # names in brackets with their marks after them (Hibbeler, Beer & Johnston)
+        "4(12) + 8(4) = 4(v_A)_2 + 8(v_B)_2",
+        "4(12) + 8(4) = 4 (v_A)' + 8 (v_B)'",
+        "(v_B)_2 - (v_A)_2 = 0.5[(v_A)_1 - (v_B)_1]",
+        "e = [(v_B)' - (v_A)'] / [(v_A) - (v_B)]",
+        "mA(vA)1 + mB(vB)1 = mA(vA)2 + mB(vB)2",
+        "4(12) + 8(4) = 4(vA)2 + 8(vB)2",
+        "(vB)2 = (vA)2 + 4",
+        "(+->)  mA(vA)1 + mB(vB)1 = mA(vA)2 + mB(vB)2",  # a sign convention's mark before it
+        "(→+) 4(12) + 8(4) = 4(vA)2 + 8(vB)2",
+        "+→: 4(12) + 8(4) = 80",
+        "(vB)2 = 8 m/s ->",  # an arrow after the value: its direction
+        "(vA)2 = 4 m/s (→)",
+        "v_A2 = 4 m/s in the same direction as before",  # words after the value: what it is
+        r"$4(12) + 8(4) = 4v_{A2} + 8v_{B2} \quad \cdots (1)$",
+        r"$v_{A2}=4\,\mathrm{m}/\mathrm{s}$",
+        "v<sub>B2</sub> − v<sub>A2</sub> = 0.5(12 − 4)",  # HTML's subscripts in Markdown
+        "KE before = ½(4)(12<sup>2</sup>) + ½(8)(4<sup>2</sup>) = 352 J",
+        r"$m_A(v_A)_1 + m_B(v_B)_1 = m_A(v_A)_{2} + m_B(v_B)_{2}$",
+        r"$(v_B)^{\prime} - (v_A)^{\prime} = 0.5(12 - 4) = 4$",
+        r"\[ 12(v_A)_2 = 48 \quad\Rightarrow\quad (v_A)_2 = 4\ \text{m/s} \]",
     ],
     WALL: [
         "v_A2 = -0.4(4) = -1.6 m/s",
@@ -180,6 +211,13 @@ CORRECT: dict[str, list[str]] = {
         r"$KE_{before} = \frac{1}{2}(2)(4)^2 = 16\ \mathrm{J}$",
         "impulse on the ball = 11.2 N s",
         "taking away from the wall as positive\nv_A1 = -4, v_A2 = 1.6",
+    ],
+    CARS: [
+        "4 500(3) - 3 000(6) = 13 500 - 18 000 = -4 500",
+        "V = -4 500/(7 500) = -0.6 ft/s",
+        "4,500(3) - 3,000(6) = 13,500 - 18,000 = -4,500",
+        "V = -4,500/7,500 = -0.600 ft/s",
+        r"$V = \frac{-4\,500}{7\,500} = -0.6$ ft/s",
     ],
     SYMBOLIC: [
         "2m(2u) + m(0) = 2m v_A2 + m v_B2",
@@ -268,6 +306,17 @@ CORRECT: dict[str, list[str]] = {
         "A's speed after = 3.25 m/s",
         r"$|\vec{v}_{A2}| = \sqrt{3.051^2 + 1.109^2} = 3.25\ \mathrm{m/s}$",
         "let a = v_A2n, b = v_B2n\n20a + 5b = 19.8\nb - a = 9.51\na = -1.11, b = 8.40",
+        "(v_B)_n' - (v_A)_n' = 0.6(3.961 + 11.884) = 9.51",
+        r"$(v_A)_t' = 3.051$ m/s",
+        "(v_A)_{2t} = 3.051",
+        # column vectors (n first, then t), and a unit vector's hat in bold
+        r"$$\mathbf{v}_{A2} = \begin{pmatrix} -1.109 \\ 3.051 \end{pmatrix}$$",
+        r"\[ \mathbf{v}_{A2} = \begin{bmatrix} -1.109 \\ 3.051 \end{bmatrix} \]",
+        "\\begin{align*}\n\\mathbf{v}_{A2} &= \\begin{pmatrix} -1.109 \\\\ 3.051 \\end{pmatrix} \\\\\n"
+        "\\mathbf{v}_{B2} &= \\begin{pmatrix} 8.398 \\\\ -9.152 \\end{pmatrix}\n\\end{align*}",
+        r"$\mathbf{v}_{A2} = \left(\begin{array}{c} -1.109 \\ 3.051 \end{array}\right)$",
+        r"$\mathbf{u}_{A} = \binom{3.961}{3.051}$",
+        r"$\vec v_{A2} = -1.109\,\mathbf{\hat n} + 3.051\,\mathbf{\hat t}$",
     ],
 }
 
@@ -284,6 +333,12 @@ WRONG: dict[str, list[str]] = {
         r"$v_{A2} = 5\,\mathrm{m\,s^{-1}}$",
         "v_A2 = 48/12 = 5",
         "v_A2 = 4 m/s & v_B2 = 9 m/s",
+        "(v_B)_2 - (v_A)_2 = 0.5[(v_A)_1 + (v_B)_1]",
+        "4(12) + 8(4) = 8 (v_A)' + 4 (v_B)'",
+        "(vA)2 = 5 m/s",
+        "(vA)2 = 4 m/s <-",
+        r"$v_{A2}=5\,\mathrm{m}/\mathrm{s}$",
+        "v<sub>A2</sub> = 5 m/s",
         "v'_A = 5 m/s",
         r"$v_{A}^{\prime} = 5$",
         "v_A2 ~ 5 m/s",
@@ -318,6 +373,8 @@ WRONG: dict[str, list[str]] = {
         "v_A2 = sqrt(1.109^2 + 3.051^2) = 4.16",
         "v_A2 = 3.05 e_t − 2.11 e_n",
         "A's speed after = 3.52 m/s",
+        r"$\mathbf{v}_{A2} = \begin{pmatrix} 3.051 \\ -1.109 \end{pmatrix}$",  # n and t swapped
+        r"$\mathbf{u}_{A} = \binom{3.051}{3.961}$",
     ],
 }
 

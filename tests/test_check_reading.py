@@ -917,3 +917,93 @@ def test_an_angle_named_by_its_tangent_is_defined_for_the_lines_after(last: str,
 )
 def test_one_letter_for_a_given_both_bodies_share(work: str, expected: list[str]) -> None:
     assert statuses("mcasco-glancing-disks-us", work) == expected
+
+
+# A name in brackets with its marks after them, as the engineering textbooks write it (Hibbeler,
+# Beer & Johnston): ``(v_A)_2``, ``(v_A)'``, ``(v_B)_{2x}``, ``(v_A)_n'``, and in ASCII ``(vA)1``
+# beside ``mA``. The brackets hold the name together; a factor before them stays a factor. A
+# number typed with its thousands spaced (``20 000``) is one number, as a teacher reads it.
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("20 (v_A)' + 35(0.3) = 10", [("20 v_A' + 35(0.3)", "10")]),
+        ("e = [(v_B)' - (v_A)'] / [(v_A) - (v_B)]", [("e", "[v_B' - v_A'] / [(v_A) - (v_B)]")]),
+        ("mA(vA)1 + mB(vB)1 = 9.16", [("m_A v_A1 + m_B v_B1", "9.16")]),
+        (r"$m(v_A)_{2x} + m(v_B)_{2x} = 6.928$", [("m v_A2x + m v_B2x", "6.928")]),
+        (r"$2(v_B)_n' = 12.47$", [("2 v_Bn'", "12.47")]),
+        ("(v_A - v_B)_2 = 3", [("(v_A - v_B)_2", "3")]),  # not a name in the brackets: as written
+        ("T_1 = 1/2 (20 000)(0.5)^2 = 2500 J", [("T_1", "1/2 (20000)(0.5)^2", "2500")]),
+        ("v = 2 125.5", [("v", "2 125.5")]),  # not three figures after the space: not one number
+        ("p = 4,500(3) - 3,000(6) = -4,500", [("p", "4500(3) - 3000(6)", "-4500")]),
+        ("W = 3,000 lb, v = 6 ft/s", [("W", "3000"), ("v", "6")]),
+        ("A = (3,4)", [("A_n", "3"), ("A_t", "4")]),  # a pair, not a number
+    ],
+)
+def test_names_in_brackets_and_spaced_thousands_are_read_as_written(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_a_derivation_in_bracketed_names_is_judged_line_by_line() -> None:
+    """byjus 4 kg at 12 onto 8 kg at 4, e = 0.5: 80 = 4 v_A2 + 8 v_B2, v_B2 - v_A2 = 4 -> v_A2 = 4,
+    v_B2 = 8 (by hand); the third line drops the 0.5 (a slip: 8, not 4)."""
+    work = "4(12) + 8(4) = 4(vA)2 + 8(vB)2\n(v_B)_2 - (v_A)_2 = 0.5[(v_A)_1 - (v_B)_1]\n(vB)2 = (vA)2 + 8\n"
+    assert statuses("byjus-4kg-ball-catches-8kg-ball", work) == ["correct", "correct", "wrong"]
+
+
+# A doubt after a value ("?? can't be right", "?!") is no withdrawal: the line stands and is marked,
+# right or wrong. byjus: KE before 288 + 64 = 352 J, after 32 + 256 = 288 J, lost 64 J (by hand).
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("KE lost = 352 - 288 = 64 J ?? seems a lot, can't be right but I can't see why", ["correct"]),
+        ("Loss $= 352 - 280 = 72$ J ?! that can't be right", ["wrong"]),
+        ("v_A2 = -4, which cannot be, so v_A2 = 4", ["correct"]),  # a case turned down: not marked
+    ],
+)
+def test_a_doubt_after_a_value_is_not_a_withdrawal(line: str, expected: list[str]) -> None:
+    assert statuses("byjus-4kg-ball-catches-8kg-ball", line) == expected
+
+
+# Two vectors with a dot between them are their dot product, the sum of the products of their
+# components (a perpendicular path by a zero dot product). Example 4.C.11 by hand: v_A1 = (3.9614,
+# 3.0507) and v_A2 = (-1.1092, 3.0507) on (n, t): v_A1 . v_A2 = -4.3940 + 9.3068 = 4.913, not the
+# product of the speeds 5(3.246) = 16.23.
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        (r"$\vec{v}_{A1} \cdot \vec{v}_{A2} = 4.913$", ["correct"]),
+        (r"$(-\mathbf{v}_{A1})\cdot\mathbf{v}_{A2} = -4.91$", ["correct"]),
+        (r"$\mathbf{v}_{A1}\cdot\mathbf{v}_{A2} = 16.23$", ["wrong"]),  # the speeds multiplied
+    ],
+)
+def test_a_dot_product_of_two_vectors_is_read(line: str, expected: list[str]) -> None:
+    assert statuses("notes-4c11-two-spheres", line) == expected
+
+
+def test_a_dot_between_numbers_is_a_product() -> None:
+    assert sides(r"$4\cdot 12 + 8 \cdot 4 = 80$") == [("4 * 12 + 8 * 4", "80")]
+    assert sides(r"$(-\mathbf{p})\cdot\mathbf{q} = 0$") == [("-(p_n q_n + p_t q_t)", "0")]
+
+
+# An arrow after a value, where its relation ends, is the direction it points, as "to the left"
+# says it (derive's +n points right, from A toward B); an arrow between two relations is still
+# "so". Edexcel M2 wall (2 kg at 4 m/s toward the wall, e = 0.4), by hand: v_A2 = -1.6 m/s.
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("v_A2 = 1.6 m/s ←", ["correct"]),
+        ("v_A2 = 1.6 m/s (←)", ["correct"]),
+        ("v_A2 = 1.6 m/s <-", ["correct"]),
+        ("v_A2 = -1.6 m/s (←)", ["correct"]),  # signed already: the arrow says the same
+        (r"$v_{A2} = 1.6\ \text{m/s} \leftarrow$", ["correct"]),
+        ("v_A2 = 1.6 m/s (→)", ["wrong"]),
+        ("v_A2 = 1.6 m/s ->", ["wrong"]),
+    ],
+)
+def test_an_arrow_after_a_value_is_its_direction(line: str, expected: list[str]) -> None:
+    assert statuses("edexcel-m2-ball-rebounds-from-wall", line) == expected
+
+
+def test_an_arrow_between_relations_still_splits_them() -> None:
+    assert sides("x = 2 → y = 3") == [("x", "2"), ("y", "3")]
+    assert [r.direction for r in read_relations("v_A2 = 1.6 m/s ←, v_B2 = 2 m/s →")] == [-1, 1]

@@ -8,22 +8,24 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.parser import FUNCTIONS, GREEK, RELATIONS, Parser
 from derive.mathtext.tokens import LatexError
 from derive.mathtext.tree import Add, Deg, Frac, Func, Hat, Mul, Num, Pow, Sym, Text, Unknown, Vec
 from derive.mathtext.units import SCALED, is_unit, plain_unit
+from derive.mathtext.vectors import AXES, component
 
 _THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 #: A tag written after the relation: ``\\quad (3)``, ``&& (ii)``.
-_TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
+_TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*(?:\\[lc]?dots[bc]?\s*)?\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
 #: A unit in text (``\\text{m\\,s}^{-1}``, ``\\mathrm{m\\,s^{-1}}``, ``\\text{kg}``), its power after it or none.
 _ONE_TEXT = r"\\(?:text|textrm|mathrm|mbox|rm)\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*\^\s*(?:\{[^{}]*\}|-?\d))?"
 #: A unit as a fraction of two texts (``\\frac{\\text{m}}{\\text{s}}``).
 _FRAC_UNIT = re.compile(
     r"\\[dt]?frac\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}\s*\{\s*(\\(?:text|mathrm)\s*\{[^{}]*\})\s*\}"
 )
-_TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot)*{_ONE_TEXT})*(?!\s*_)")
+_TEXT_UNIT = re.compile(rf"{_ONE_TEXT}(?:(?:\s|\\[,;: ]|\\cdot|/)*{_ONE_TEXT})*(?!\s*_)")  # \mathrm{m}/\mathrm{s}
 #: A unit typed in mathematics without ``\\text`` after a number (``4 m/s``, ``1.6 m s^{-1}``,
 #: ``\\frac{48}{12} ms^{-1}``, ``64 J``, ``32 N s``) where a side ends: not a product of names.
 _BARE_UNIT = re.compile(
@@ -45,6 +47,8 @@ _NAMING = re.compile(
     r"|(?:KE|kinetic energy|loss|lost|gained|before|after|initial|final|\s)+",
     re.I,
 )
+#: A hat in bold (``\\mathbf{\\hat n}``, ``\\boldsymbol{\\hat{\\imath}}``): a unit vector.
+_BOLD_HAT = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{\s*\\hat\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}")
 #: Tokens the parser leaves to the caller, as plain text.
 _PLAIN = {
     **dict.fromkeys(("{", r"\{", r"\left(", r"\left[", r"\left\{"), "("),
@@ -71,13 +75,14 @@ def latex_to_plain(tex: str) -> str:
     'theta = atan(3.05/1.11) (3)'
     """
     tags = [f" ({t.strip()})" for t in _TAG.findall(tex)]
-    s = _TAG.sub(" ", _THOUSANDS.sub("", _BRACKETED_NAME.sub(lambda m: f"{m[1]}_{{{m[2]}{m[3] or m[4]}}}", tex)))
+    s = _TAG.sub(" ", _THOUSANDS.sub("", bracketed_names(tex, tex=True)))
     m = _TAG_END.search(s)
     if m:
         s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]
     s = _FRAC_UNIT.sub(lambda m: " " if is_unit(f"{m.group(1)}/{m.group(2)}") else m.group(0), s)
     s = _TEXT_UNIT.sub(_unit_text, s)
     s = _BARE_UNIT.sub("", s)
+    s = _BOLD_HAT.sub(r"\\hat{\1}", s)  # \mathbf{\hat n}: the unit vector, as \hat{\mathbf{n}} is
     s = re.sub(
         r"\^\s*\{\s*((?:\\prime\s*)+)\}|\^\s*\\prime", lambda m: "'" * max(1, (m[1] or "").count("prime")), s
     )  # v^{\prime}
@@ -100,10 +105,6 @@ def latex_to_plain(tex: str) -> str:
         out.append(piece if parser.spans[start][0] == end else " " + piece)
         end = parser.spans[parser.i - 1][1]
     return " ".join("".join([*out, *tags]).split())
-
-
-#: A name in brackets with its instant after them (``(v_B)_2``, ``(v_{A})_{1}``): one name, ``v_{B2}``.
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\{?([A-Za-z]{1,2})\}?\s*\)\s*_\s*(?:\{\s*(\d)\s*\}|(\d)(?!\w))")
 
 
 def _prefix(parser: Parser, start: int, far: int) -> object | None:
@@ -222,10 +223,13 @@ def _product(node: Mul, top: bool) -> str:
     stood, side by side where they were (``5eu``, ``5(9.51)``), a space between two names."""
     out = ""
     gaps = node.gaps or (" ",) * (len(node.factors) - 1)
+    dot = _dot_product(node)
+    if dot:
+        return dot
     for k, factor in enumerate(node.factors):
         text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
         if k and text and out:
-            gap = {"*": " * "}.get(gaps[k - 1], gaps[k - 1])
+            gap = {"*": " * ", "·": " * "}.get(gaps[k - 1], gaps[k - 1])
             if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
                 gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
             elif not gap and out[-1].isalnum() and text[0].isalnum():
@@ -233,6 +237,33 @@ def _product(node: Mul, top: bool) -> str:
             out += gap
         out += text
     return out
+
+
+def _dot_product(node: Mul) -> str:
+    """Two vectors with a dot between them (``(-\\mathbf{v}_{in})\\cdot\\mathbf{v}_{out}``,
+    ``\\vec a \\cdot \\vec b``) as the sum of the products of their components, each named as a
+    vector's component is (:func:`.vectors.component_name`): ``-(v_inn v_outn + v_int v_outt)``;
+    "" where it is not that (a unit vector, a number, a product written with ``\\times``)."""
+    if node.gaps != ("·",):
+        return ""
+    operands = [_vector_operand(f) for f in node.factors]
+    if None in operands:
+        return ""
+    (sa, a), (sb, b) = operands
+    terms = " + ".join(f"{component(a, axis)} {component(b, axis)}" for axis in AXES)
+    return f"({terms})" if sa * sb > 0 else f"-({terms})"
+
+
+def _vector_operand(node: object) -> tuple[int, str] | None:
+    """(sign, name) of a vector named in bold or with an arrow, alone, negated or in brackets."""
+    if isinstance(node, Func) and node.name == "()" and len(node.args) == 1:
+        node = node.args[0]
+    sign = 1
+    if isinstance(node, Add) and len(node.terms) == 1:
+        sign, node = node.terms[0]
+    if isinstance(node, Vec) and node.name not in ("i", "j", "k"):
+        return sign, node.name
+    return None
 
 
 def _text(inner: str) -> str:

@@ -26,6 +26,30 @@ _SIUNITX = (
 )
 
 
+#: A column vector (``\\begin{pmatrix} 3 \\\\ -1 \\end{pmatrix}``, ``bmatrix``, ``\\left(\\begin{array}{c}
+#: … \\end{array}\\right)``), as A-level students write velocities: its entries, first the line of centres.
+_COLUMN = re.compile(
+    r"(?:\\left\s*[(\[]\s*)?\\begin\{([pbB]?matrix|smallmatrix|array)\}(?:\{[^{}]*\})?(.{0,400}?)\\end\{\1\}"
+    r"(?:\s*\\right\s*[)\]])?",
+    re.S,
+)
+#: ``\\binom{3}{-1}``: a column vector of two entries, typed so for its brackets.
+_BINOM = re.compile(r"\\[dt]?binom\s*\{([^{}]*)\}\s*\{([^{}]*)\}")
+
+
+def column_vectors(text: str) -> str:
+    """``text`` with each column vector of two entries written as a pair ``(a, b)`` (the reader
+    reads a pair as a vector); a matrix of more rows or columns is left as it is."""
+
+    def pair(m: re.Match) -> str:
+        rows = [r.strip() for r in re.split(r"\\\\", m.group(2)) if r.strip()]
+        if len(rows) != 2 or any("&" in r for r in rows):
+            return m.group(0)
+        return "(" + ", ".join(rows) + ")"
+
+    return _BINOM.sub(r"(\1, \2)", _COLUMN.sub(pair, text))
+
+
 def row_plain(row: str) -> str:
     """A row of a display as plain text, without a note in a column of its own after ``&&``
     (``… && \\text{(CLM along } \\mathbf{i})``); a column with a relation in it is kept;

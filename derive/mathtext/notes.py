@@ -39,10 +39,12 @@ _WITHDRAWN = re.compile(
     r"|\b(?:no\s+wait|wait\s+no|oops|scratch\s+that|scrap\s+that|ignore\s+(?:this|that)(?:\s+line)?|crossed\s+out)\b",
     re.I,
 )
-#: A root or case turned down in words.
+#: A root or case turned down in words ("can't be right" is a doubt about the value, not a case
+#: turned down: the line still stands and is marked).
 _REJECTS = re.compile(
     r"\b(?:impossible|not\s+possible|(?:can't|cannot|can\s+not|couldn't|won't|doesn't|does\s+not)\s+"
-    r"(?:happen|be|work|occur)|rejected|reject(?:\s+(?:it|this|that))?|discard(?:ed)?|not\s+physical|unphysical"
+    r"(?:happen|be(?!\s+(?:right|correct|true)\b)|work|occur)"
+    r"|rejected|reject(?:\s+(?:it|this|that))?|discard(?:ed)?|not\s+physical|unphysical"
     r"|not\s+valid|invalid|no\s+good|not\s+allowed)\b",
     re.I,
 )

@@ -140,7 +140,7 @@ class Parser:
             if tok in (r"\cdot", r"\times", "*", "·"):
                 self.take()
                 factors.append(self.factor())
-                gaps.append("*")
+                gaps.append("·" if tok in (r"\cdot", "·") else "*")  # a dot: between vectors, their dot product
             elif tok == "/":
                 self.take()
                 den = self.factor()

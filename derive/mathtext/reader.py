@@ -19,12 +19,14 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
+from derive.mathtext.arrows import arrows_said
+from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.latex import REJECTED
-from derive.mathtext.layout import ENV, NESTED, row_plain
+from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import REMARK_END, UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
 from derive.mathtext.parser import GREEK
-from derive.mathtext.sides import direction_of, typed_names, units_inside, without_direction
+from derive.mathtext.sides import direction_of, html_marks, thousands, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -121,6 +123,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
             lead = above.lead or above.sides[0]
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
+        main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
         for part, is_aside in parts:
             r = relation(line, column, written, part)
@@ -172,7 +175,7 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
-        text = NESTED.sub(" ", text)
+        text = NESTED.sub(" ", column_vectors(text))
         parts = re.split(r"\\\\", text)
         for k, part in enumerate(parts):
             if k and "".join(row).strip():
@@ -206,7 +209,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         end = close.search(raw, m.end())
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
-        body = raw[m.end() : end.start()]
+        body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
 
@@ -239,6 +242,7 @@ def split_relations(plain: str) -> list[str]:
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
     plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
+    plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
@@ -302,7 +306,7 @@ def _top_level_split(s: str, sep: str) -> list[str]:
     return out
 
 
-_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|up|by|as|is|ok|OK|it)(?![\w(])")
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
 MATH_WORDS = GREEK | FUNCTIONS | {"deg", "degree", "degrees", "rad", "radian", "radians"}
 
@@ -315,7 +319,7 @@ def words_after(text: str) -> str:
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
-        before = text[last + 1 : m.start()].rstrip(" ,;:")
+        before = text[last + 1 : m.start()].rstrip(" ,;:?!")  # "= -0.91 J ?? gained": the doubt is not the value
         unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
         if re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie.")):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
@@ -333,6 +337,7 @@ def _side(text: str) -> str:
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
+    text = thousands(bracketed_names(text))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it

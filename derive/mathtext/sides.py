@@ -20,8 +20,38 @@ _SUBSCRIPT_MARKED = re.compile(r"_[{(]\s*([A-Za-z])\s*,?\s*([A-Za-z0-9]{0,2})\s*
 _PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z0-9]{0,2})[)}]?")
 
 
+#: A mass, velocity or momentum letter with a body's capital glued on (``mA``, ``vB``, ``mP``), alone;
+#: not a product of two names (``mM``, ``mV``: m times M, m times the common velocity).
+_GLUED_BODY = re.compile(r"(?<![\w'\\])([muvwp])([ABPQ])(?![\w'])")
+#: A number with its thousands set apart by a space (``20 000``, ``1 500 000``; a thin space too).
+_THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
+
+
+#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``.
+_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])\d{1,3}(?:,\d{3})+(?![\d,])")
+
+
+#: HTML's subscripts and powers, as a Markdown page types them (``v<sub>A2</sub>``, ``s<sup>-1</sup>``).
+_HTML_MARK = re.compile(r"<(sub|sup)>\s*([^<>]{1,12}?)\s*</\1>", re.I)
+
+
+def html_marks(text: str) -> str:
+    """``text`` with HTML's ``<sub>`` and ``<sup>`` written as ``_`` and ``^`` (``v_A2``, ``s^(-1)``):
+    their angle brackets are no inequality."""
+    return _HTML_MARK.sub(lambda m: f"_{m[2]}" if m[1].lower() == "sub" else f"^({m[2]})", text)
+
+
+def thousands(text: str) -> str:
+    """``text`` with each number written in groups of three (``20 000``, ``20,000``) as one
+    number: a teacher reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
+    text = _THOUSANDS_COMMA.sub(lambda m: m.group(0).replace(",", ""), text)
+    return _THOUSANDS.sub(lambda m: re.sub(r"\s", "", m.group(0)), text)
+
+
 def typed_names(text: str) -> str:
-    """``text`` with names whose subscript or prime is typed another way written as one name."""
+    """``text`` with names whose subscript or prime is typed another way written as one name
+    (``mA`` as ``m_A``: the body glued to the letter)."""
+    text = _GLUED_BODY.sub(r"\1_\2", text)  # mA(vA)1: m_A
     text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2}
     text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
     return _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript

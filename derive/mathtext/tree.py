@@ -85,7 +85,7 @@ class Add:
 @dataclass(frozen=True, eq=False)
 class Mul:
     """A product of factors in the order shown; ``gaps`` what stood between them where the
-    reader kept it: "*" (``\\cdot``, ``\\times``), " " (a space) or ""."""
+    reader kept it: "·" (``\\cdot``), "*" (``\\times``, ``*``), " " (a space) or ""."""
 
     factors: tuple[object, ...]
     gaps: tuple[str, ...] = ()

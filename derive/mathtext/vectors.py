@@ -55,6 +55,12 @@ def split_vectors(sides: tuple[str, ...]) -> list[tuple[str, ...]]:
     return out or [sides]
 
 
+def component(name: str, axis: str) -> str:
+    """The component on ``axis`` of the vector named ``name`` (``v_in`` -> ``v_inn``, ``A`` -> ``A_n``)."""
+    m = _NAME.match(name)
+    return component_name(m, axis) if m else f"{name}_{axis}"
+
+
 def component_name(m: re.Match, axis: str) -> str:
     """The name of a vector's component: ``u_A`` -> ``u_An``, ``A`` -> ``A_n``, ``A'`` -> ``A_n'``."""
     name, primes, when = m.group(1), m.group(2), m.group(3)

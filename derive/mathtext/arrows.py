@@ -1,0 +1,30 @@
+"""Arrows a student types that are not "so": a sign convention's mark before a relation, as the
+engineering texts write it (``(+→)``, ``(→+)``, ``(+->)``, ``(+↑)``), and an arrow after a value
+where its relation ends (``= 1.6 m/s ←``, ``4 m/s (→)``, ``0.5 m/s ->,``): the direction it points,
+said in words ("to the left"), as the reader reads a direction in words.
+
+>>> arrows_said("(+->) 2x = 3, v = 1.6 m/s (<-)")
+'  2x = 3, v = 1.6 m/s to the left'
+"""
+
+from __future__ import annotations
+
+import re
+
+#: An arrow after a value, where the relation ends (``= 1.6 m/s ←``, ``4 m/s (→)``, ``0.5 m/s ->,``): the
+#: direction it points, as words say it ("to the left"), not "so".
+_ARROW_DIRECTION = re.compile(
+    r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
+    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]))"  # bounded gaps: a long run of spaces stays cheap
+)
+_ARROWS = r"→|⟶|-{1,2}>|←|⟵|<-{1,2}|↑|↓|\\(?:long)?(?:right|left)arrow|\\(?:up|down)arrow"
+#: A sign convention's mark before a relation, as engineering texts write it: ``(+→)``, ``(→+)``,
+#: ``(+->)``, ``(+↑)``, ``+→:`` (the direction itself is read from the values, as words are).
+_CONVENTION_MARK = re.compile(rf"\(\s*(?:\+\s*(?:{_ARROWS})|(?:{_ARROWS})\s*\+)\s*\)|^\s*\+\s*(?:{_ARROWS})\s*:?")
+
+
+def arrows_said(plain: str) -> str:
+    """``plain`` without the marks of a sign convention and with each arrow after a value in
+    words; an arrow between two relations (``x = 2 -> y = 3``) is left to mean "so"."""
+    plain = _CONVENTION_MARK.sub(" ", plain)
+    return _ARROW_DIRECTION.sub(lambda m: " to the left" if m.group(1) else " to the right", plain)

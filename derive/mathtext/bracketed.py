@@ -1,0 +1,51 @@
+"""A name in brackets with its marks after them, as the engineering textbooks write it
+(Hibbeler, Beer & Johnston): ``(v_A)_1``, ``(v_A)_2``, ``(v_A)'``, ``(v_B)_{2x}``, ``(v_A)_n'``,
+and typed in plain text ``(vA)1``, ``(vB)2``. The brackets only hold the name together: what
+follows them (a time, a component, a prime) is the name's own mark, so the whole is one name
+(``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``), and a factor written before it stays a factor
+(``20 (v_A)'`` is 20 times ``v_A'``, ``mA(vA)1`` is ``mA`` times ``v_A1``).
+
+A bracket around a name with no mark after it (``(v_A) - (v_B)``) is left as it is; so is one
+around more than a name (``(v_A - v_B)_2`` is not a name).
+
+>>> bracketed_names("20 (v_A)' + 35(0.3) = mA(vA)1 + (v_B)_{2x}")
+"20 v_A' + 35(0.3) = mA v_A1 + v_B2x"
+>>> bracketed_names(r"m(v_A)_{2x} + (v_{B})_n'", tex=True)
+"m v_{A2x} + v_{Bn}'"
+"""
+
+from __future__ import annotations
+
+import re
+
+#: The name inside: a letter and its subscript (``v_A``, ``v_{A}``, ``vA``, ``v_1``); without an
+#: underscore the subscript is a capital or a digit (``vA``, ``v1``), never a second small letter.
+_INSIDE = r"\(\s*([A-Za-z])(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))\s*\)"
+#: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
+#: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
+_MARKS = (
+    r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3})\s*\}|\(\s*([A-Za-z0-9]{1,3})\s*\)|([A-Za-z0-9]{1,3})(?![\w(]))"
+    r"|([012][xyntXYNT]?)(?![\w.(]))?"
+    r"((?:'|’|\s*\^\s*\\prime|\s*\^\s*\{\s*\\prime\s*\})*)"
+)
+_BRACKETED = re.compile(_INSIDE + _MARKS)
+
+
+def bracketed_names(text: str, tex: bool = False) -> str:
+    """``text`` with each name in brackets that has marks after them written as one name
+    (``v_{A2x}`` in LaTeX), a space before it where a factor is written against it."""
+
+    def one(m: re.Match) -> str:
+        letter, sub = m[1], m[2] or m[3]
+        after = m[4] or m[5] or m[6] or m[7] or ""
+        primes = "'" * (m[8].count("'") + m[8].count("’") + m[8].count("prime"))
+        if not after and not primes:
+            return m[0]  # "(v_A) - (v_B)": brackets around a name, nothing after them
+        if m[7] and not sub.isalpha():
+            return m[0]  # "(v_1)2": a time glued on only after a body's letter ("(vA)1")
+        marks = f"{sub}{after}"
+        name = f"{letter}_{{{marks}}}" if tex else f"{letter}_{marks}"
+        before = m.string[m.start() - 1] if m.start() else ""
+        return (" " if re.fullmatch(r"[\w)]", before) else "") + name + primes
+
+    return _BRACKETED.sub(one, text)
