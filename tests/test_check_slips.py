@@ -727,3 +727,16 @@ def test_a_component_before_labelled_by_its_axis_in_words_with_sin_and_cos_swapp
     one_line = "A before: along the line of impact $4\\cos 30^\\circ = 3.464$, across it $4\\sin 30^\\circ = 2$\n"
     found = lines("gramoll-ecourses-two-balls-elastic", one_line)  # each relation has its own label
     assert found[1][0] == "correct"
+
+
+def test_an_angle_worked_out_taken_from_the_other_axis_is_named_and_carried() -> None:
+    # OCR M3 2013 (equal spheres; B at 0.6 m/s, 30° to the line of centres, toward A; B turns
+    # through 90°): B keeps 0.6 sin 30° = 0.3 across the line and its path after makes 60° with
+    # it, so along it v_B2n = 0.3/tan 60° = 0.173. Written 0.3 tan 60° = 0.520 (the 60° taken
+    # from the other axis); B's speed worked from it, sqrt(0.520² + 0.3²) = 0.600, carries it.
+    work = "v_B2n = 0.3 tan 60° = 0.520 m/s\nv_B2 = sqrt(0.520^2 + 0.3^2) = 0.600 m/s\n"
+    found = lines("ocr-m3-2013-b-turns-through-right-angle", work)
+    assert found[1][:2] == ("wrong", "angle_other_axis")
+    assert found[2][0] == "carried"
+    right = lines("ocr-m3-2013-b-turns-through-right-angle", "v_B2n = 0.3/tan 60° = 0.173 m/s\n")
+    assert right[1][0] == "correct"

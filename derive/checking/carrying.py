@@ -255,6 +255,19 @@ class Carrying:
                     return True
         return False
 
+    def _number_wrong(self, bad: Pair) -> None:
+        """The number written wrong in ``bad``, a pair with no unknowns (``294.855/25 = 11.97``):
+        kept with its right value where that is the same at every sample point, so that the
+        lines worked from it are carried (:meth:`_carries_number`)."""
+        left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
+        if left is None or right is None or bad.left.free_symbols or bad.right.free_symbols:
+            return
+        sides = bad.text.split(" = ")
+        if NUMBER_SIDE.match(sides[1]):
+            self.wrong_number = (sides[1], bad.left)
+        elif NUMBER_SIDE.match(sides[0]):
+            self.wrong_number = (sides[0], bad.right)
+
     def _carries_number(self, line: Line) -> bool:
         """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
         assert self.wrong_number is not None
@@ -287,10 +300,10 @@ class Carrying:
         text, found = line.sides[at], list(re.finditer(token, line.sides[at]))
         put = [re.sub(token, f"({right!r})", text)]  # every one, or one only (0.5196 also B's value before)
         put += [text[: m.start()] + f"({right!r})" + text[m.end() :] for m in found] if len(found) > 1 else []
-        world, k = self.world or self.truth, unknown[0]
+        worlds, k = [w for w in (self.truth, self.world) if w is not None], unknown[0]
         for fixed in (side_value(t) for t in put):
             pair = replace(line, sides=(line.sides[k], text), exprs=(exprs[k], sympy.Float(fixed or 0, 20)))
-            if fixed is not None and self.holds(self.pairs(pair), world):
+            if fixed is not None and any(self.holds(self.pairs(pair), w) for w in worlds):
                 break
         else:
             return False

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, mistakes, slipnames, totals, words
+from derive.checking import carried, cofunctions, mistakes, slipnames, totals, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -244,8 +244,13 @@ class Trace(Carrying):
             if diags:
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, None, f": it {said}.", ""
-            if self._ke_formula(bad):
-                return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            named = cofunctions.plain(
+                self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), line.exprs or ()
+            )
+            if named is not None:  # the kinetic energy's formula, an angle from the other axis
+                if named[1] == cofunctions.NAME:  # its number, written wrong, is carried on
+                    self._number_wrong(bad)
+                return (), None, *named
             given = carried.given_copied(self, bad)
             if given:
                 return (), None, given, "copied_wrong"
@@ -363,11 +368,7 @@ class Trace(Carrying):
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
         sides = bad.text.split(" = ")
-        if left is not None and right is not None and not (bad.left.free_symbols or bad.right.free_symbols):
-            if NUMBER_SIDE.match(sides[1]):  # the same at every sample point: the number written wrong
-                self.wrong_number = (sides[1], bad.left)
-            elif NUMBER_SIDE.match(sides[0]):
-                self.wrong_number = (sides[0], bad.right)
+        self._number_wrong(bad)
         if left is None or right is None or self.pts[0]:  # no sample values of symbolic givens are shown
             return "its two sides are not equal (an arithmetic or algebra slip)."
         left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
