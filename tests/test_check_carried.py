@@ -53,8 +53,9 @@ def test_a_line_right_given_both_earlier_slips_is_carried() -> None:
     # Hibbeler 15-58 (weights 15 and 10 lb, e = 0.3, 19.657 ft/s): the masses exchanged in
     # the momentum, 10 v_A2 + 15 v_B2 = 294.855, with v_B2 - v_A2 = 5.8971: 25 v_A2 = 206.40,
     # v_A2 = 8.256, v_B2 = 14.153. Then the weights as masses: T_1 = 7.5(19.657^2) = 2898 (a
-    # further slip) and T_2 = 7.5(8.256^2) + 5(14.153^2) = 511.2 + 1001.5 = 1513: right given
-    # both slips; and 2898 - 1513 = 1385 carried.
+    # further slip) and T_2 = 7.5(8.256^2) + 5(14.153^2) = 511.2 + 1001.5 = 1513: the weights
+    # as masses made again (worked afresh from the weights, as a teacher marks it: corpus
+    # y12), with the velocities right given the first slip; 2898 - 1513 = 1385 carried.
     work = (
         "15(19.657) = 10 v_A2 + 15 v_B2\n"
         "v_B2 - v_A2 = 0.3(19.657)\n"
@@ -70,7 +71,8 @@ def test_a_line_right_given_both_earlier_slips_is_carried() -> None:
     assert found[2][0] == "correct"
     assert all(found[n][0] == "carried" for n in (3, 4, 5)), found
     assert found[6][:2] == ("wrong", "weight_as_mass")
-    assert found[7][0] == found[8][0] == "carried", found
+    assert found[7] == ("wrong", "weight_as_mass", True), found
+    assert found[8][0] == "carried", found
 
 
 def test_a_sum_worked_wrongly_in_a_chain_stage_is_named_arithmetic() -> None:
@@ -169,3 +171,36 @@ def test_a_chain_line_of_arithmetic_from_a_wrong_whole_number_is_carried() -> No
     found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
     assert found[1][0] == "wrong"
     assert found[2][0] == "carried"
+
+
+def test_a_wrong_number_put_into_a_right_formula_and_worked_on_is_carried() -> None:
+    # Hibbeler 15-58 (W_A = 15 lb at 19.657 ft/s, W_B = 10 lb at rest, e = 0.3): the centre of
+    # mass moves at V = 15(19.657)/25 = 294.855/25 = 11.794 (written 11.97: a slip). In the
+    # centre of mass frame v_A2 = (1 + e)V - e u: truly 1.3(11.794) - 0.3(19.657) = 15.332 -
+    # 5.897 = 9.435 (the momentum and restitution give the same); with 11.97 it is 15.561 -
+    # 5.897 = 9.664, right as arithmetic and worked from the wrong V: carried, not a new slip.
+    # The same working with its own arithmetic wrong (10.66) is a further slip.
+    head = "V = 15(19.657)/25 = 294.855/25 = 11.97 ft/s\nv_A2 = (1 + e)V - e u\n"
+    found = lines("hibbeler-15-58-suitcases", head + "v_A2 = 1.3(11.97) - 0.3(19.657) = 9.664 ft/s\n")
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == "correct"
+    assert found[3][0] == "carried"
+    found = lines("hibbeler-15-58-suitcases", head + "v_A2 = 1.3(11.97) - 0.3(19.657) = 10.66 ft/s\n")
+    assert found[3][0] == "wrong"
+
+
+def test_a_known_component_written_wrong_under_a_symbolic_mass_is_carried_into_the_momentum() -> None:
+    # Gramoll's equal balls (masses m, kept symbolic): A at 4 m/s at 30° to the line of impact,
+    # B at 3 m/s along it toward A, e = 1. A's component along it is 4 cos 30° = 3.4641
+    # (written 3.564: a slip). Truly 3.4641 - 3 = 0.4641 = v_A2n + v_B2n and v_B2n - v_A2n =
+    # 6.4641 (so v_B2n = 3.4641); worked from 3.564: 0.564 and 6.564, v_B2n = 7.128/2 = 3.564.
+    # A value known before the impact (not an unknown) written wrong still carries on.
+    work = (
+        "v_A1n = 4 cos 30 = 3.564 m/s\n"
+        "3.564 - 3 = v_A2n + v_B2n\n"
+        "v_B2n - v_A2n = 3.564 + 3 = 6.564\n"
+        "v_B2n = (0.564 + 6.564)/2 = 3.564 m/s\n"
+    )
+    found = lines("gramoll-ecourses-two-balls-elastic", work)
+    assert found[1][:2] == ("wrong", "arithmetic")
+    assert found[2][0] == found[3][0] == found[4][0] == "carried"

@@ -638,3 +638,105 @@ def test_a_sign_lost_in_a_chains_stage() -> None:
     found = lines("chain-ocr-m2-2006-drop-rebound", work)
     assert found[1][0] == found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "algebra")
+
+
+def test_a_total_momentum_before_in_numbers_with_b_sign_lost_is_the_slip() -> None:
+    # AQA M3 2007: A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward A (v_B1 = -2), e = 0.8. The
+    # total momentum before is 0.3(3) + 0.2(-2) = 0.9 - 0.4 = 0.5; written with B's velocity
+    # +2 it is 0.9 + 0.4 = 1.3: right as arithmetic, wrong as the momentum (B's sign). The
+    # line worked from it, 0.3 v_A2 + 0.2 v_B2 = 1.3, carries that slip.
+    for label in ("momentum before", "p_i", "total momentum", "initial momentum:", "p_{1}"):
+        work = f"{label} = 0.3 x 3 + 0.2 x 2 = 0.9 + 0.4 = 1.3 kg m/s\n0.3 v_A2 + 0.2 v_B2 = 1.3\n"
+        found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+        assert found[1][:2] == ("wrong", "b_sign"), label
+        assert found[2][0] == "carried", label
+    right = lines("aqa-m3-2007-spheres-approach-head-on", "p before = 0.3(3) - 0.2(2) = 0.5\n")
+    assert right[1][0] == "correct"
+    backward = lines("aqa-m3-2007-spheres-approach-head-on", "p before = 0.2(2) - 0.3(3) = -0.5\n")
+    assert backward[1][0] == "correct"  # B's direction taken positive: the same total
+    after = lines("aqa-m3-2007-spheres-approach-head-on", "p after = 0.3 x 3 + 0.2 x 2 = 1.3\n")
+    assert after[1][0] != "wrong" or after[1][1] != "b_sign"  # after the impact: another quantity
+
+
+def test_a_mass_mistake_made_again_in_a_result_with_carried_velocities_is_again() -> None:
+    # AQA M3 2007: A 0.3 kg at 3, B 0.2 kg at 2 toward A, e = 0.8. NEL 0.8(3 + 2) = 4 (written
+    # 4.5, a slip): with 0.3 v_A2 + 0.2 v_B2 = 0.5, 0.5 v_A2 = 0.5 - 0.9, v_A2 = -0.8 and
+    # v_B2 = 3.7 (carried). T_1 with the masses exchanged: ½(0.2)(9) + ½(0.3)(4) = 1.5 (truly
+    # 1.35 + 0.4 = 1.75). T_2 with them exchanged again and the carried velocities:
+    # ½(0.2)(0.64) + ½(0.3)(13.69) = 0.064 + 2.0535 = 2.1175 (with the right masses 0.096 +
+    # 1.369 = 1.465): the same mistake made again, not a carried error; the loss worked from
+    # those two numbers, 1.5 - 2.1175 = -0.6175, carries them.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\n"
+        "v_B2 - v_A2 = 0.8(3 + 2) = 4.5\n"
+        "v_A2 = -0.8, v_B2 = 3.7\n"
+        "T_1 = 1/2(0.2)(3^2) + 1/2(0.3)(2^2) = 0.9 + 0.6 = 1.5\n"
+        "T_2 = 1/2(0.2)(0.8^2) + 1/2(0.3)(3.7^2) = 0.064 + 2.0535 = 2.1175\n"
+        "T_lost = 1.5 - 2.1175 = -0.6175\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"
+    assert found[4] == ("wrong", "masses_swapped", False)
+    assert found[5] == ("wrong", "masses_swapped", True)
+    assert found[6][0] == "carried"
+
+
+def test_one_weight_turned_to_a_mass_and_the_other_not_is_weight_as_mass() -> None:
+    # McAsco's two cars: A 4500 lb at 3 ft/s, B 3000 lb at 6 ft/s toward A, e = 0. A's mass is
+    # 4500/32.2 = 139.8 slug; B's 3000 lb put in as its mass: 139.8(3) + 3000(-6) = 419.4 -
+    # 18000 = -17580.6 = 3139.8 v, v = -5.599 ft/s (truly (419.25 - 559.0)/232.92 = -0.600).
+    work = "m_A = 4500/32.2 = 139.8 slug\n139.8(3) + 3000(-6) = (139.8 + 3000) v\nv = -17580.6/3139.8 = -5.599 ft/s\n"
+    found = lines("mcasco-two-cars-no-bounce", work)
+    assert found[2][:2] == ("wrong", "weight_as_mass")
+    assert found[3][0] == "carried"
+
+
+def test_a_sign_lost_moving_a_term_across_is_algebra_not_rounding() -> None:
+    # OCR MEI 2023 (A 0.5 kg at 6 catches B 2 kg at 2; A at 0.2 forward after): 3 + 4 = 0.1 +
+    # 2 v_B2, so 2 v_B2 = 7 - 0.1 = 6.9. Written 7 + 0.1 = 7.1: the sign of 0.1 kept in moving
+    # it across (algebra); 0.1 is 0.5 x 0.2, exact, not a number rounded too early.
+    work = "0.5(6) + 2(2) = 0.5(0.2) + 2 v_B2\n7 = 0.1 + 2 v_B2\n2 v_B2 = 7 + 0.1 = 7.1\nv_B2 = 3.55 m/s\n"
+    found = lines("ocr-mei-fmm-2023-a-speed-0p2-forward", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+
+
+def test_two_units_off_in_the_last_place_is_wrong_below_the_value_as_above_it() -> None:
+    # The same problem: v_B2 = 6.9/2 = 3.45. At the figures written (±1 in the last place)
+    # 3.44 and 3.46 are right; 3.43 and 3.47, two units off on either side, are not.
+    head = "0.5(6) + 2(2) = 0.5(0.2) + 2 v_B2\n"
+    for written, status in (("3.44", "correct"), ("3.46", "correct"), ("3.43", "wrong"), ("3.47", "wrong")):
+        found = lines("ocr-mei-fmm-2023-a-speed-0p2-forward", head + f"v_B2 = 6.9/2 = {written}\n")
+        assert found[2][0] == status, written
+
+
+def test_a_component_before_labelled_by_its_axis_in_words_with_sin_and_cos_swapped() -> None:
+    # Gramoll's equal balls: A at 4 m/s at 30° to the line of impact. Along it 4 cos 30° =
+    # 3.464, across it 4 sin 30° = 2. Labelled in words and worked in numbers only, the
+    # components with sin and cos swapped are that slip (and again on the second), the right
+    # ones are right.
+    swapped = "A along the line of impact: 4 sin 30 = 2 m/s\nA across it: 4 cos 30 = 3.464 m/s\n"
+    found = lines("gramoll-ecourses-two-balls-elastic", swapped)
+    assert found[1] == ("wrong", "sin_cos_swapped", False)
+    assert found[2] == ("wrong", "sin_cos_swapped", True)
+    right = "A along the line of impact: 4 cos 30 = 3.464 m/s\nA perpendicular: 4 sin 30 = 2 m/s\n"
+    found = lines("gramoll-ecourses-two-balls-elastic", right)
+    assert found[1][0] == found[2][0] == "correct"
+    one_line = "A before: along the line of impact $4\\cos 30^\\circ = 3.464$, across it $4\\sin 30^\\circ = 2$\n"
+    found = lines("gramoll-ecourses-two-balls-elastic", one_line)  # each relation has its own label
+    assert found[1][0] == "correct"
+
+
+def test_an_angle_worked_out_taken_from_the_other_axis_is_named_and_carried() -> None:
+    # OCR M3 2013 (equal spheres; B at 0.6 m/s, 30° to the line of centres, toward A; B turns
+    # through 90°): B keeps 0.6 sin 30° = 0.3 across the line and its path after makes 60° with
+    # it, so along it v_B2n = 0.3/tan 60° = 0.173. Written 0.3 tan 60° = 0.520 (the 60° taken
+    # from the other axis); B's speed worked from it, sqrt(0.520² + 0.3²) = 0.600, carries it.
+    work = "v_B2n = 0.3 tan 60° = 0.520 m/s\nv_B2 = sqrt(0.520^2 + 0.3^2) = 0.600 m/s\n"
+    found = lines("ocr-m3-2013-b-turns-through-right-angle", work)
+    assert found[1][:2] == ("wrong", "angle_other_axis")
+    assert found[2][0] == "carried"
+    right = lines("ocr-m3-2013-b-turns-through-right-angle", "v_B2n = 0.3/tan 60° = 0.173 m/s\n")
+    assert right[1][0] == "correct"

@@ -6,6 +6,7 @@ working does not (an arithmetic slip inside the line, and what the student carri
 from __future__ import annotations
 
 import copy
+import re
 from dataclasses import replace
 from decimal import Decimal
 from typing import TYPE_CHECKING, Protocol
@@ -40,6 +41,7 @@ class Trace(Protocol):
     replaced: list[tuple[int, int]]
     held: list[Pair]
     named: dict[int, set[str]]
+    stated: dict[int, set[str]]
     worked: tuple[Pair, ...]
 
     def _closest(self, F: sympy.Expr) -> int | None: ...
@@ -154,12 +156,47 @@ def unnamed(trace: Trace, sides: tuple[str, ...], bad: Pair, world: list[Values]
 def again_item(trace: Trace, line: Read, pairs: list[Pair]) -> Item | None:
     """The verdict on a line that makes a slip of the values before the impact again
     (:func:`made_again`); None where it does not."""
-    again = made_again(trace, pairs)
+    again = made_again(trace, pairs) or made_again_in_results(trace, line, pairs)
     if again is None:
         return None
     said = f"False: the same mistake as in line {again[0]}, made again: it {phrase(again[1])}."
     item = Item("line", str(line.number), line.written, "wrong", "", said, "substituting the correct values")
     return replace(item, slip=again[1], again=True)
+
+
+def made_again_in_results(trace: Trace, line: Read, pairs: list[Pair]) -> tuple[int, str] | None:
+    """The mistake in the masses named at an earlier line that a line of a result works afresh
+    (``T_2 = ½(15)(8.256)² + ½(10)(14.153)²`` after ``T_1 = ½(15)(19.657)² = 2898``: the
+    weights as masses again, with velocities an earlier slip gave): the line writes the
+    mistake's own values (the weights 15 and 10; not 7500, a total worked on an earlier line),
+    its false pairs hold with them, and it uses none of the numbers that line came to (a line
+    worked from 2898 carries it); None otherwise."""
+    world = trace.world or trace.truth
+    false = [p for p in pairs if not trace.holds([p], world)]
+    working = set(re.findall(r"\d+\.?\d*", " ".join(line.sides[:-1])))
+    if not false:
+        return None
+    for n, names in sorted(trace.named.items()):
+        for name in sorted(names):
+            m = REGISTRY.get(name)
+            v = m.build(trace.ctx.model) if m is not None else None
+            if v is None or working & trace.stated.get(n, set()) or not _writes(trace, working, v):
+                continue
+            if all(
+                slipnames.with_mistakes_values(trace.ctx, p, {name}, lambda q: trace.holds([q], world)) for p in false
+            ):
+                return n, name
+    return None
+
+
+def _writes(trace: Trace, working: set[str], v: Variant) -> bool:
+    """Whether the numbers ``working`` has one of the masses the mistake ``v`` puts in (its
+    values, or the problem's masses where it exchanges them)."""
+    model = trace.ctx.model
+    put = list(v.values.values()) if v.values else []
+    put += [trace.ctx.in_unknowns(x).xreplace(trace.pts[0]) for x in (model.m_A, model.m_B)] if v.masses else []
+    numbers = {number_of(x) for x in put if x.is_number}
+    return any(number_of(sympy.Rational(t)) in numbers for t in working)
 
 
 def made_again(trace: Trace, pairs: list[Pair]) -> tuple[int, str] | None:

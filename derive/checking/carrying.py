@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 import re
 from dataclasses import replace
+from decimal import Decimal
 
 import sympy
 
@@ -51,6 +52,16 @@ def side_value(text: str) -> float | None:
     return v.real if v is not None and abs(v.imag) < 1e-12 else None
 
 
+def _slack(side: str) -> float:
+    """The relative slack of a step of numbers: ±1 in the last place of a number as written
+    (0.6 for 0.5999), the decimals' own slack for a side that is worked."""
+    m = NUMBER_SIDE.match(student(side.strip()))
+    if m is None or m.group(3):
+        return literal_tolerance(side, set()) + 1e-9
+    d = Decimal(m.group(2))
+    return float(figures.last_place(d) / abs(d)) + 1e-9 if d else 1e-9
+
+
 class Carrying:
     """The numbers and values the student got wrong so far, and the tests that use them."""
 
@@ -61,6 +72,7 @@ class Carrying:
     world: list[Values] | None
     wrong_values: set[str]
     wrong_numbers: set[str]
+    stated: dict[int, set[str]]
     wrong_terms: set[str]
     own: dict[sympy.Symbol, sympy.Expr]
     wrong_number: tuple[str, sympy.Expr] | None
@@ -115,6 +127,7 @@ class Carrying:
         stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
         self.wrong_values |= decimals([*stated, *line.sides[-1:]])
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
+        self.stated.setdefault(line.number, set()).update(re.findall(r"\d+\.?\d*", line.sides[-1]))
         last = line.exprs[-1] if line.exprs else None
         value = number_of(last) if last is not None and not last.free_symbols else None
         if value is not None and abs(value.imag) < 1e-12 and value.real != 0:
@@ -242,6 +255,19 @@ class Carrying:
                     return True
         return False
 
+    def _number_wrong(self, bad: Pair) -> None:
+        """The number written wrong in ``bad``, a pair with no unknowns (``294.855/25 = 11.97``):
+        kept with its right value where that is the same at every sample point, so that the
+        lines worked from it are carried (:meth:`_carries_number`)."""
+        left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
+        if left is None or right is None or bad.left.free_symbols or bad.right.free_symbols:
+            return
+        sides = bad.text.split(" = ")
+        if NUMBER_SIDE.match(sides[1]):
+            self.wrong_number = (sides[1], bad.left)
+        elif NUMBER_SIDE.match(sides[0]):
+            self.wrong_number = (sides[0], bad.right)
+
     def _carries_number(self, line: Line) -> bool:
         """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
         assert self.wrong_number is not None
@@ -254,6 +280,38 @@ class Carrying:
         except (TypeError, ValueError):
             return False
         exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
-        if exprs == line.exprs:
+        if exprs != line.exprs and self.holds(self.pairs(replace(line, exprs=exprs)), self.truth):
+            return True
+        return self._worked_on(line, wrong.lstrip("+-"), value.real)
+
+    def _worked_on(self, line: Line, wrong: str, right: float) -> bool:
+        """``v_A2 = 1.3(11.97) - 0.3(19.657) = 9.664`` after ``V = … = 11.97`` (11.79), or
+        ``3.564 - 3 = v_A2n + v_B2n`` after ``4 cos 30 = 3.564``: the wrong number put into a
+        right formula and worked on: the side in the unknowns equals the first side of numbers
+        that has it once that number is put right, and each step of numbers after that side
+        is right as written."""
+        exprs, token = line.exprs or (), rf"(?<![\w.]){re.escape(wrong)}(?![\w.]|\d)"
+        unknown = [i for i, x in enumerate(exprs) if self.ctx.in_unknowns(x).free_symbols & set(self.U)]
+        at = next((i for i in range(len(exprs)) if re.search(token, line.sides[i])), None)
+        if not unknown or at is None or at in unknown or exprs[at].free_symbols:
             return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.truth)
+        if at == len(exprs) - 1 and len(exprs) > 2:  # the wrong number is the result: not worked on
+            return False
+        text, found = line.sides[at], list(re.finditer(token, line.sides[at]))
+        put = [re.sub(token, f"({right!r})", text)]  # every one, or one only (0.5196 also B's value before)
+        put += [text[: m.start()] + f"({right!r})" + text[m.end() :] for m in found] if len(found) > 1 else []
+        worlds, k = [w for w in (self.truth, self.world) if w is not None], unknown[0]
+        for fixed in (side_value(t) for t in put):
+            pair = replace(line, sides=(line.sides[k], text), exprs=(exprs[k], sympy.Float(fixed or 0, 20)))
+            if fixed is not None and any(self.holds(self.pairs(pair), w) for w in worlds):
+                break
+        else:
+            return False
+        worked = number_of(exprs[at])
+        for side, x in zip(line.sides[at + 1 :], exprs[at + 1 :], strict=True):  # each step at its figures
+            if x.free_symbols:
+                break
+            v = number_of(x)
+            if worked is None or v is None or abs(v - worked) > _slack(side) * max(abs(v), abs(worked)):
+                return False
+        return True

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, mistakes, slipnames, words
+from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -94,6 +94,7 @@ class Trace(Carrying):
         self.early: int | None = None  # the line where rounding too early was named
         self.wrong_values: set[str] = set()  # numbers the student wrote on wrong or carried lines
         self.wrong_numbers: set[str] = set()  # and their integers too
+        self.stated: dict[int, set[str]] = {}  # the numbers each wrong or carried line came to
         self.right_terms: dict[str, sympy.Expr] = {}  # values in letters worked wrongly: "3m" -> 2m
         self.wrong_amounts: list[float] = []  # the values wrong or carried lines of numbers came to
         self.wrong_terms: set[str] = set()  # values in the symbolic givens written wrong (5u for 3u)
@@ -127,6 +128,10 @@ class Trace(Carrying):
         pairs = self.pairs(line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
+            total = labelled.labelled(self.ctx, line, lambda p: self.holds([p], self.truth))
+            if total is not None:  # "p before = 150000 x 0.300 + 110000 x 0.120 = 58200": B's sign
+                self._wrote_wrong(line)
+                return self._slip(line, [total, *pairs], answer)
             if self.slips and (
                 self._continues(line)
                 or self._uses_wrong_numbers(line, pairs)
@@ -239,8 +244,13 @@ class Trace(Carrying):
             if diags:
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, None, f": it {said}.", ""
-            if self._ke_formula(bad):
-                return (), None, f": {slipnames.KE_FORMULA}", "ke_formula"
+            named = cofunctions.plain(
+                self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), line.exprs or ()
+            )
+            if named is not None:  # the kinetic energy's formula, an angle from the other axis
+                if named[1] == cofunctions.NAME:  # its number, written wrong, is carried on
+                    self._number_wrong(bad)
+                return (), None, *named
             given = carried.given_copied(self, bad)
             if given:
                 return (), None, given, "copied_wrong"
@@ -357,14 +367,11 @@ class Trace(Carrying):
 
     def _arithmetic(self, bad: Pair) -> str:
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
+        sides = bad.text.split(" = ")
+        self._number_wrong(bad)
         if left is None or right is None or self.pts[0]:  # no sample values of symbolic givens are shown
             return "its two sides are not equal (an arithmetic or algebra slip)."
-        sides = bad.text.split(" = ")
         left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
-        if NUMBER_SIDE.match(sides[1]):
-            self.wrong_number = (sides[1], bad.left)
-        elif NUMBER_SIDE.match(sides[0]):
-            self.wrong_number = (sides[0], bad.right)
         return words.unequal(words.student_text(left_text), left.real, sides[1], right.real)
 
     # the world of the slips ------------------------------------------------

@@ -99,12 +99,12 @@ def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: 
     ``named`` gives them."""
     false = [p for p in pairs if not holds(p)]
     return bool(false) and all(
-        {m.name for m in under_results(ctx, p, holds)} & named or _with_mistakes_values(ctx, p, named, holds)
+        {m.name for m in under_results(ctx, p, holds)} & named or with_mistakes_values(ctx, p, named, holds)
         for p in false
     )
 
 
-def _with_mistakes_values(ctx: Context, bad: Pair, named: set[str], holds: Holds) -> bool:
+def with_mistakes_values(ctx: Context, bad: Pair, named: set[str], holds: Holds) -> bool:
     """Whether ``bad`` holds with the masses or the values before the impact as one of the
     mistakes ``named`` has them, in every result on the line, and the velocities after as
     ``holds`` has them (``KE after = ½(7500)(4.2²)``: the weights as masses, and the common
@@ -251,10 +251,12 @@ def _has_letters(text: str) -> bool:
 def early_numbers(ctx: Context, sides: tuple[str, ...]) -> list[str]:
     """The numbers on a line's sides before the last that are rounded to two figures and are
     not the problem's data (``3.5`` for 4 sin 60 = 3.464)."""
+    data = {abs(x) for x in ctx.data if x.is_Rational}
+    exact = data | {a * b for a in data for b in data}  # 0.1 = 0.5 x 0.2 (m_A times A's speed): not rounded
     return [
         t
         for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
-        if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in ctx.data
+        if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in exact
     ]
 
 

@@ -50,10 +50,22 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
-        far = abs(left - right) > 2 * p.tol * scale * BOUNDARY  # two units in the last place is not the value
-        if far and not satisfied(p.difference, vals, U, [pt], p.tol) and not at_figures(p, left, right):
+        tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
+        far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
+        if far and not satisfied(p.difference, vals, U, [pt], tol) and not at_figures(p, left, right):
             return identity(p)
     return True
+
+
+def _written_scale(p: Pair, left: complex, right: complex, scale: float) -> float:
+    """The size the slack of ``p`` is counted in: a side that is a number as written (its
+    last place is the unit: 6.9 in ``2v = 6.9``, where 7.1 is two units off), else the larger."""
+    written = [abs(x) for t, x in zip(p.text.split(" = ", 1), (left, right), strict=False) if _plain(t)]
+    return min(written) if written and min(written) > 0 else scale
+
+
+def _plain(text: str) -> bool:
+    return NUMBER_SIDE.match(student(text.strip())) is not None
 
 
 def identity(p: Pair) -> bool:

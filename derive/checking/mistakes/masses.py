@@ -63,3 +63,14 @@ def weight_as_mass(model: Model) -> Variant | None:
     if not values:
         return None
     return Variant(values=values)
+
+
+def one_body(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """The n-momentum (3) with one body's weight put in as its mass, the other's mass right
+    (``0.466(19.657) = 0.466 v_A + 10 v_B``: A's 15 lb turned to slugs, B's 10 lb not)."""
+    eqs = model.equations(model.base())
+    masses = [m for m in (model.m_A, model.m_B) if m in v.values]
+    if 3 not in eqs or len(masses) != 2:
+        return []
+    base = model.base()
+    return [model.numbered(base, {**eqs, 3: eqs[3].xreplace({m: v.values[m]})}) for m in masses]

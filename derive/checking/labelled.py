@@ -1,0 +1,125 @@
+"""A line labelled in words and worked in numbers: a total of the momenta before the impact
+(``p before = 150000 x 0.300 + 110000 x 0.120 = 58200``), a component before. The checker reads such a line as arithmetic only (its first side is
+words or a name of the student's own), but a teacher marks it against the total momentum the
+problem gives, and names the slip (B's velocity with the wrong sign, the masses exchanged).
+
+:func:`momentum_before` gives the relation "the total momentum before = that working" when the
+line is labelled a momentum before and the working is the total with a common mistake in its
+values before, so the trace judges it as the slip it is (and carries the lines worked from it).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from derive.checking import slipnames
+from derive.checking.context import DEG, Context
+from derive.checking.inference import Read
+from derive.checking.worlds import Pair
+
+#: A label that says the momentum, or p, before the impact (``p before``, ``p_i``, ``P_1``,
+#: ``initial momentum``, ``total momentum``, ``Σp``, ``momentum before``).
+_BEFORE = re.compile(
+    r"(?i)\bmomentum\b|Σ\s*p\b|(?<![A-Za-z])p\s*(?:_?\{?\s*(?:i|1|0|init|initial|before|tot|total|sys|system)\s*\}?)?"
+    r"(?:\s+(?:before|initially|total))?\s*[:=]?\s*$"
+)
+#: A label that says after the impact: the total after is another quantity.
+_AFTER = re.compile(r"(?i)\b(?:after|final|afterwards)\b|(?<![A-Za-z])p\s*_?\{?\s*(?:f|2|final|after)\b|'")
+
+
+def labelled(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
+    """A line of numbers labelled as a total momentum before or a component before, worked
+    with a common mistake: the pair it stands for (:func:`momentum_before`,
+    :func:`component_before`); None otherwise."""
+    return momentum_before(ctx, line, holds) or component_before(ctx, line, holds)
+
+
+def _bare(label: str) -> str:
+    """A label without the ``=``, ``:`` or ``&`` it ends with (the quantity's words)."""
+    return re.sub(r"[\s=:&]+$", "", label) or "it"
+
+
+def _label(line: Read) -> str:
+    r"""What the line writes just before its first side as read (the words or name the reader
+    left out), from the last ``,`` ``;`` ``=`` ``&`` or ``$`` before it: of two relations on a
+    line (``along XY $2\cos 60^\circ = 1$, perpendicular $2\sin 60^\circ = \sqrt3$``) each
+    has its own."""
+    first = line.sides[0].strip() if line.sides else ""
+    at = line.written.find(first) if first else -1
+    lead = re.match(r"[-+(]*(\d+(?:\.\d+)?)\s*\*?\s*(sin|cos|tan)?", first)
+    if at < 0 and lead:  # written in LaTeX (``\text{along: } & 2\sin 60^\circ``): its number and function
+        shape = re.escape(lead.group(1)) + (rf"\s*\\?{lead.group(2)}" if lead.group(2) else r"(?![\d.])")
+        found = re.search(rf"(?<![\d.]){shape}", line.written)
+        at = found.start() if found else -1
+    if at <= 0:
+        return ""
+    return re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
+
+
+def momentum_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
+    """The pair "total momentum before = the line's first working" where the line, a line of
+    numbers labelled a momentum before, works that total with a mistake in the values before
+    (``holds`` says whether a pair holds for the problem); None otherwise."""
+    p = ctx.problem
+    exprs = line.exprs or ()
+    if getattr(p, "oblique", False) or len(exprs) < 2 or any(x.free_symbols for x in exprs):
+        return None
+    label = _label(line)
+    if not label or not _BEFORE.search(label) or _AFTER.search(label):
+        return None
+    if not re.search(r"[\d)]\s*[-+−]\s*[\d(]", line.sides[0]):  # a sum of the two bodies' momenta
+        return None
+    names = ctx.equation_names()
+    if not all(k in names for k in ("m_A", "m_B", "v_A1", "v_B1")):
+        return None
+    total = names["m_A"][0] * names["v_A1"][0] + names["m_B"][0] * names["v_B1"][0]
+    first = exprs[0]
+    pair = Pair(f"{_bare(label)} = {line.sides[0]}", ctx.in_unknowns(total), first, 1e-3, (total, first))
+    other = Pair(pair.text, -pair.left, first, 1e-3, (-total, first))  # B's direction taken positive
+    if holds(pair) or holds(other):
+        return None
+    found = slipnames.before_impact(ctx, pair, holds) or slipnames.before_impact(ctx, other, holds)
+    if not found:
+        return None
+    return pair if slipnames.before_impact(ctx, pair, holds) else other
+
+
+#: The axis a label names: along the line of centres (n), or across it (t).
+_ALONG = re.compile(
+    r"(?i)\balong\b|\bparallel\b|line of (?:centres|centers|impact)|\bnormal\b|(?<![A-Za-z])[xn](?![A-Za-z])"
+)
+_ACROSS = re.compile(r"(?i)\bperp|\bacross\b|\btangent|plane of contact|(?<![A-Za-z])[yt](?![A-Za-z])")
+
+
+def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
+    """The pair "a body's component before = the line's first working" where the line, a line
+    of numbers labelled by its axis in words (``along: 2 sin 60° = 1.732``, ``perp: 2 cos 60° =
+    1``), resolves a body's given speed with a common mistake (sin and cos swapped, the angle
+    from the other axis); None otherwise."""
+    exprs = line.exprs or ()
+    if not getattr(ctx.problem, "oblique", False) or len(exprs) < 2 or any(x.free_symbols - {DEG} for x in exprs):
+        return None
+    label = _label(line)
+    if not re.search(r"(?i)\b(?:sin|cos)\b", line.sides[0]) or not label:
+        return None
+    along, across = _ALONG.search(label) is not None, _ACROSS.search(label) is not None
+    if along == across:
+        return None
+    names, axis = ctx.equation_names(), "n" if along else "t"
+    written = {t for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", line.sides[0])}
+    bodies = []
+    for b in "AB":
+        speed = names.get(f"v_{b}1")
+        value = ctx.in_unknowns(speed[0]) if speed is not None else None
+        known = value is not None and value.is_number and value != 0 and f"v_{b}1{axis}" in names
+        if known and any(abs(float(t) - float(value)) < 1e-12 for t in written):
+            bodies.append(b)
+    if len(bodies) != 1:
+        return None
+    sym = names[f"v_{bodies[0]}1{axis}"][0]
+    first = ctx.in_unknowns(exprs[0])  # its degrees in
+    pair = Pair(f"{_bare(label)} = {line.sides[0]}", ctx.in_unknowns(sym), first, 1e-3, (sym, exprs[0]))
+    if holds(pair) or holds(Pair(pair.text, -pair.left, first, 1e-3, (-sym, exprs[0]))):
+        return None
+    return pair if slipnames.before_impact(ctx, pair, holds) else None
