@@ -97,10 +97,12 @@ def test_pass_rate_is_reported() -> None:
     print(f"lines: {agreed} of {marked} marked lines judged as the teacher judges them")
     batches: dict[str, list[int]] = {}
     for name, problems in RESULTS.items():
-        tally = batches.setdefault(name[0], [0, 0])
+        tally = batches.setdefault(name[0], [0, 0, 0, 0])
         tally[0] += not problems
         tally[1] += 1
-    print("by batch: " + ", ".join(f"{b} {p}/{n}" for b, (p, n) in sorted(batches.items())))
+        tally[2] += LINES[name][0]
+        tally[3] += LINES[name][1]
+    print("by batch: " + ", ".join(f"{b} {p}/{n} ({a}/{m} lines)" for b, (p, n, a, m) in sorted(batches.items())))
     for name, problems in sorted(RESULTS.items()):
         if problems:
             print(f"  {name}: {'; '.join(problems[:3])}")
