@@ -1007,3 +1007,19 @@ def test_an_arrow_after_a_value_is_its_direction(line: str, expected: list[str])
 def test_an_arrow_between_relations_still_splits_them() -> None:
     assert sides("x = 2 → y = 3") == [("x", "2"), ("y", "3")]
     assert [r.direction for r in read_relations("v_A2 = 1.6 m/s ←, v_B2 = 2 m/s →")] == [-1, 1]
+
+
+# An up or down arrow after a value (``\downarrow``, ``↑``) is its direction in words, as
+# "downwards" says it, not an unread mark. OCR M2 June 2006 Q2 (dropped from 2 m, rebounds to
+# 1.4 m, g = 9.8), by hand: v_1 = sqrt(2(9.8)(2)) = sqrt(39.2) = 6.26; v_2 = sqrt(27.44) = 5.24.
+@pytest.mark.parametrize(
+    "line",
+    [
+        r"$v_1 = \sqrt{2(9.8)(2)} = 6.26\ \text{m/s} \downarrow$",
+        "v_1 = 6.26 m/s ↓",
+        "v_1 = 6.26 m/s (↓)",
+        r"$v_2 = \sqrt{2(9.8)(1.4)} = 5.24 \text{ m/s} \uparrow$",
+    ],
+)
+def test_a_vertical_arrow_after_a_value_is_its_direction(line: str) -> None:
+    assert statuses("chain-ocr-m2-2006-drop-rebound", line) == ["correct"]
