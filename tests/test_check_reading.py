@@ -393,7 +393,7 @@ def test_a_unit_typed_any_way_after_a_number_is_taken_off(text: str) -> None:
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "22/1000"), ("u1", "3.5")]),
+        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "0.022"), ("u1", "3.5")]),
         (r"$m_A = 20\ \mathrm{Mg} = 20\,000$ kg", [("m_A", "20*1000", "20000")]),
         ("u = 54 km/h", [("u", "54*5/18")]),
         ("u = 54 km h⁻¹", [("u", "54*5/18")]),
@@ -1023,3 +1023,45 @@ def test_an_arrow_between_relations_still_splits_them() -> None:
 )
 def test_a_vertical_arrow_after_a_value_is_its_direction(line: str) -> None:
     assert statuses("chain-ocr-m2-2006-drop-rebound", line) == ["correct"]
+
+
+# A length rounded and said again in a smaller unit (``≈ 114 mm``) keeps the figures written:
+# 114 mm is 0.114 m at three figures, not the exact 114/1000. MSU bullet and block (20 g at
+# 300 m/s into 4.0 kg, g = 9.81), by hand: V = 6/4.02 = 1.49254, h = V²/19.62 = 0.11354 m.
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        (r"$h_2 = 0.1135\ \text{m} \approx 114\ \text{mm}$", ["correct"]),
+        ("h_2 = 0.1135 m = 11.4 cm", ["correct"]),
+        ("h_2 = 114 mm", ["correct"]),
+        ("h_2 = 120 mm", ["wrong"]),
+    ],
+)
+def test_a_length_in_millimetres_keeps_its_figures(line: str, expected: list[str]) -> None:
+    assert statuses("chain-msu-bullet-block-swings", line) == expected
+
+
+# An energy balance stated in symbols before a chain's stage is worked (T_1 + V_1 = T_2 + V_2,
+# KE_i + PE_i = KE_f + PE_f, T_1 + ΣU_{1-2} = T_2) is the principle a teacher marks right, not a
+# line of unknown names. MSU bullet and block (20 g at 300 m/s into 4.0 kg, g = 9.81), by hand:
+# V = 6/4.02 = 1.4925; ½(4.02)(1.4925)² = 4.4776 = 4.02(9.81)h = 39.436 h, h = 0.11354 m.
+@pytest.mark.parametrize(
+    "balance",
+    [
+        "T_1 + V_1 = T_2 + V_2",
+        r"$KE_i + PE_i = KE_f + PE_f$",
+        r"$T_1 + \Sigma U_{1-2} = T_2$",
+        "K_A + U_A = K_B + U_B",
+    ],
+)
+def test_an_energy_balance_in_symbols_is_the_stage_principle(balance: str) -> None:
+    work = "V = 0.020(300)/4.020 = 1.4925\n" + balance + "\n½(4.02)(1.4925)^2 + 0 = 0 + 4.02(9.81)h\nh = 0.1135"
+    assert statuses("chain-msu-bullet-block-swings", work) == ["correct"] * 4
+
+
+def test_a_velocity_equation_is_no_energy_balance() -> None:
+    from derive.checking.principles import energy_balance
+
+    assert not energy_balance(("V_1", "V_2"))
+    assert not energy_balance(("T_1", "T_2"))  # kinetic energy kept: a claim to judge, not a principle
+    assert not energy_balance(("m_A u_A + m_B u_B", "m_A v_A + m_B v_B"))
