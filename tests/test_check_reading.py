@@ -1065,3 +1065,40 @@ def test_a_velocity_equation_is_no_energy_balance() -> None:
     assert not energy_balance(("V_1", "V_2"))
     assert not energy_balance(("T_1", "T_2"))  # kinetic energy kept: a claim to judge, not a principle
     assert not energy_balance(("m_A u_A + m_B u_B", "m_A v_A + m_B v_B"))
+
+
+# A rebound's angle named in words by the body's verb ("let the ball leave the cushion at an angle
+# φ to the cushion") is the acute angle of its path after, its size (derive's angle from the
+# cushion is negative after the bounce), and "its speed be U before and w after" names the speed
+# after. Edexcel FM1 June 2023 Q7a (mark scheme): U cos α = w cos φ, e₁U sin α = w sin φ, so
+# tan φ = e₁ tan α.
+@pytest.mark.parametrize(
+    "prose",
+    [
+        r"Let its speed be $U$ before and $w$ after, and let the ball leave the cushion at an angle $\phi$ to the cushion.",
+        r"Speeds $U$ and $w$ before and after; the ball rebounds at an angle $\phi$ with the cushion.",
+    ],
+)
+def test_a_rebound_angle_and_speed_named_in_words(prose: str) -> None:
+    work = prose + "\n" + r"$U\cos\alpha = w\cos\phi$" + "\n" + r"$e_1 U\sin\alpha = w\sin\phi$"
+    work += "\n" + r"$\tan\phi = e_1\tan\alpha$"
+    assert statuses("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == ["correct"] * 3
+
+
+# The engineering texts' names typed plain, the component before the instant (``(vA)n1``,
+# ``(vB)t2``), and two relations set side by side on a line with a wide gap between them.
+# OCR M3 2007 (masses 4 and 3, A at 15 m/s with sin α = 0.8, B at 12 m/s toward it, e = 0.5),
+# by hand: 36 - 36 = 4a + 3b, b - a = 0.5(9 + 12) = 10.5, so a = -4.5, b = 6; A keeps 12 across.
+def test_component_then_instant_names_and_relations_side_by_side() -> None:
+    work = (
+        "(vA)n1 = 15(0.6) = 9 m/s      (vA)t1 = 15(0.8) = 12 m/s\n"
+        "(vB)n1 = -12\n"
+        "4(9) + 3(-12) = 4(vA)n2 + 3(vB)n2\n"
+        "(vB)n2 - (vA)n2 = 0.5(9 + 12) = 10.5\n"
+        "(vA)n2 = -4.5      (vB)n2 = 6\n"
+        "(vA)t2 = (vA)t1 = 12\n"
+    )
+    r = report("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [i.status for i in r.items] == ["correct"] * 6, r.text()
+    assert sides("x = 2      y = 3") == [("x", "2"), ("y", "3")]
+    assert sides("x = 2 + y = 3") == [("x", "2 + y", "3")]  # no gap: one chain, as written
