@@ -1102,3 +1102,25 @@ def test_component_then_instant_names_and_relations_side_by_side() -> None:
     assert [i.status for i in r.items] == ["correct"] * 6, r.text()
     assert sides("x = 2      y = 3") == [("x", "2"), ("y", "3")]
     assert sides("x = 2 + y = 3") == [("x", "2 + y", "3")]  # no gap: one chain, as written
+
+
+# A line of givens in plain names (v1, v2) is the same names typed later in LaTeX ($v_1$), and a
+# speed given "the other way" is the velocity with its sign. AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg
+# at 2 m/s toward it, e = 0.8), by hand: 0.9 - 0.4 = 0.5 = 0.3a + 0.2b.
+@pytest.mark.parametrize("other_way", ["the other way", "in the opposite direction"])
+def test_givens_restated_in_plain_names_are_the_latex_names(other_way: str) -> None:
+    work = (
+        f"m1 = 0.3 kg, v1 = 3 m/s; m2 = 0.2 kg, v2 = 2 m/s {other_way}.\n"
+        "$$m_1 v_1 + m_2 v_2 = m_1 a + m_2 b$$\n"
+        "$$0.3(3) + 0.2(-2) = 0.3a + 0.2b$$\n"
+    )
+    assert statuses("aqa-m3-2007-spheres-approach-head-on", work) == ["correct"] * 3
+
+
+# A label in \text{} and then a term with a minus (``\text{CLM:}\quad -0.2(2) + …``): the minus is
+# the term's sign, not a list's dash dropped. AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward
+# it), by hand: -0.4 + 0.9 = 0.5 (as 0.4 + 0.9 = 1.3 it would be wrong).
+@pytest.mark.parametrize("label", [r"\text{CLM:}\quad", r"\text{Momentum:}\ "])
+def test_a_minus_after_a_label_in_text_is_kept(label: str) -> None:
+    line = rf"$${label} -0.2(2) + 0.3(3) = 0.3 v_A + 0.2 v_B$$"
+    assert statuses("aqa-m3-2007-spheres-approach-head-on", line) == ["correct"]
