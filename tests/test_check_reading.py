@@ -1124,3 +1124,11 @@ def test_givens_restated_in_plain_names_are_the_latex_names(other_way: str) -> N
 def test_a_minus_after_a_label_in_text_is_kept(label: str) -> None:
     line = rf"$${label} -0.2(2) + 0.3(3) = 0.3 v_A + 0.2 v_B$$"
     assert statuses("aqa-m3-2007-spheres-approach-head-on", line) == ["correct"]
+
+
+# A given velocity written without its sign (B's 1.5 m/s toward A) is still the problem's data,
+# exact: no rounding slack hides an arithmetic slip worked from it. OCR M2 2011 (B: 0.2 kg at
+# 1.5 m/s toward A), by hand: ½(0.2)(1.5)² = 0.225 J, so 0.235 is a slip.
+def test_a_given_written_without_its_sign_is_exact_data() -> None:
+    assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.225") == ["correct"]
+    assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.235") == ["wrong"]
