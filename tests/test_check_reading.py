@@ -393,7 +393,7 @@ def test_a_unit_typed_any_way_after_a_number_is_taken_off(text: str) -> None:
 @pytest.mark.parametrize(
     ("text", "expected"),
     [
-        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "22/1000"), ("u1", "3.5")]),
+        ("m1 = 22 g, u1 = 3.5 m/s", [("m1", "0.022"), ("u1", "3.5")]),
         (r"$m_A = 20\ \mathrm{Mg} = 20\,000$ kg", [("m_A", "20*1000", "20000")]),
         ("u = 54 km/h", [("u", "54*5/18")]),
         ("u = 54 km h⁻¹", [("u", "54*5/18")]),
@@ -1007,3 +1007,128 @@ def test_an_arrow_after_a_value_is_its_direction(line: str, expected: list[str])
 def test_an_arrow_between_relations_still_splits_them() -> None:
     assert sides("x = 2 → y = 3") == [("x", "2"), ("y", "3")]
     assert [r.direction for r in read_relations("v_A2 = 1.6 m/s ←, v_B2 = 2 m/s →")] == [-1, 1]
+
+
+# An up or down arrow after a value (``\downarrow``, ``↑``) is its direction in words, as
+# "downwards" says it, not an unread mark. OCR M2 June 2006 Q2 (dropped from 2 m, rebounds to
+# 1.4 m, g = 9.8), by hand: v_1 = sqrt(2(9.8)(2)) = sqrt(39.2) = 6.26; v_2 = sqrt(27.44) = 5.24.
+@pytest.mark.parametrize(
+    "line",
+    [
+        r"$v_1 = \sqrt{2(9.8)(2)} = 6.26\ \text{m/s} \downarrow$",
+        "v_1 = 6.26 m/s ↓",
+        "v_1 = 6.26 m/s (↓)",
+        r"$v_2 = \sqrt{2(9.8)(1.4)} = 5.24 \text{ m/s} \uparrow$",
+    ],
+)
+def test_a_vertical_arrow_after_a_value_is_its_direction(line: str) -> None:
+    assert statuses("chain-ocr-m2-2006-drop-rebound", line) == ["correct"]
+
+
+# A length rounded and said again in a smaller unit (``≈ 114 mm``) keeps the figures written:
+# 114 mm is 0.114 m at three figures, not the exact 114/1000. MSU bullet and block (20 g at
+# 300 m/s into 4.0 kg, g = 9.81), by hand: V = 6/4.02 = 1.49254, h = V²/19.62 = 0.11354 m.
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        (r"$h_2 = 0.1135\ \text{m} \approx 114\ \text{mm}$", ["correct"]),
+        ("h_2 = 0.1135 m = 11.4 cm", ["correct"]),
+        ("h_2 = 114 mm", ["correct"]),
+        ("h_2 = 120 mm", ["wrong"]),
+    ],
+)
+def test_a_length_in_millimetres_keeps_its_figures(line: str, expected: list[str]) -> None:
+    assert statuses("chain-msu-bullet-block-swings", line) == expected
+
+
+# An energy balance stated in symbols before a chain's stage is worked (T_1 + V_1 = T_2 + V_2,
+# KE_i + PE_i = KE_f + PE_f, T_1 + ΣU_{1-2} = T_2) is the principle a teacher marks right, not a
+# line of unknown names. MSU bullet and block (20 g at 300 m/s into 4.0 kg, g = 9.81), by hand:
+# V = 6/4.02 = 1.4925; ½(4.02)(1.4925)² = 4.4776 = 4.02(9.81)h = 39.436 h, h = 0.11354 m.
+@pytest.mark.parametrize(
+    "balance",
+    [
+        "T_1 + V_1 = T_2 + V_2",
+        r"$KE_i + PE_i = KE_f + PE_f$",
+        r"$T_1 + \Sigma U_{1-2} = T_2$",
+        "K_A + U_A = K_B + U_B",
+    ],
+)
+def test_an_energy_balance_in_symbols_is_the_stage_principle(balance: str) -> None:
+    work = "V = 0.020(300)/4.020 = 1.4925\n" + balance + "\n½(4.02)(1.4925)^2 + 0 = 0 + 4.02(9.81)h\nh = 0.1135"
+    assert statuses("chain-msu-bullet-block-swings", work) == ["correct"] * 4
+
+
+def test_a_velocity_equation_is_no_energy_balance() -> None:
+    from derive.checking.principles import energy_balance
+
+    assert not energy_balance(("V_1", "V_2"))
+    assert not energy_balance(("T_1", "T_2"))  # kinetic energy kept: a claim to judge, not a principle
+    assert not energy_balance(("m_A u_A + m_B u_B", "m_A v_A + m_B v_B"))
+
+
+# A rebound's angle named in words by the body's verb ("let the ball leave the cushion at an angle
+# φ to the cushion") is the acute angle of its path after, its size (derive's angle from the
+# cushion is negative after the bounce), and "its speed be U before and w after" names the speed
+# after. Edexcel FM1 June 2023 Q7a (mark scheme): U cos α = w cos φ, e₁U sin α = w sin φ, so
+# tan φ = e₁ tan α.
+@pytest.mark.parametrize(
+    "prose",
+    [
+        r"Let its speed be $U$ before and $w$ after, and let the ball leave the cushion at an angle $\phi$ to the cushion.",
+        r"Speeds $U$ and $w$ before and after; the ball rebounds at an angle $\phi$ with the cushion.",
+    ],
+)
+def test_a_rebound_angle_and_speed_named_in_words(prose: str) -> None:
+    work = prose + "\n" + r"$U\cos\alpha = w\cos\phi$" + "\n" + r"$e_1 U\sin\alpha = w\sin\phi$"
+    work += "\n" + r"$\tan\phi = e_1\tan\alpha$"
+    assert statuses("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == ["correct"] * 3
+
+
+# The engineering texts' names typed plain, the component before the instant (``(vA)n1``,
+# ``(vB)t2``), and two relations set side by side on a line with a wide gap between them.
+# OCR M3 2007 (masses 4 and 3, A at 15 m/s with sin α = 0.8, B at 12 m/s toward it, e = 0.5),
+# by hand: 36 - 36 = 4a + 3b, b - a = 0.5(9 + 12) = 10.5, so a = -4.5, b = 6; A keeps 12 across.
+def test_component_then_instant_names_and_relations_side_by_side() -> None:
+    work = (
+        "(vA)n1 = 15(0.6) = 9 m/s      (vA)t1 = 15(0.8) = 12 m/s\n"
+        "(vB)n1 = -12\n"
+        "4(9) + 3(-12) = 4(vA)n2 + 3(vB)n2\n"
+        "(vB)n2 - (vA)n2 = 0.5(9 + 12) = 10.5\n"
+        "(vA)n2 = -4.5      (vB)n2 = 6\n"
+        "(vA)t2 = (vA)t1 = 12\n"
+    )
+    r = report("ocr-m3-2007-oblique-sin-alpha-0p8", work)
+    assert [i.status for i in r.items] == ["correct"] * 6, r.text()
+    assert sides("x = 2      y = 3") == [("x", "2"), ("y", "3")]
+    assert sides("x = 2 + y = 3") == [("x", "2 + y", "3")]  # no gap: one chain, as written
+
+
+# A line of givens in plain names (v1, v2) is the same names typed later in LaTeX ($v_1$), and a
+# speed given "the other way" is the velocity with its sign. AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg
+# at 2 m/s toward it, e = 0.8), by hand: 0.9 - 0.4 = 0.5 = 0.3a + 0.2b.
+@pytest.mark.parametrize("other_way", ["the other way", "in the opposite direction"])
+def test_givens_restated_in_plain_names_are_the_latex_names(other_way: str) -> None:
+    work = (
+        f"m1 = 0.3 kg, v1 = 3 m/s; m2 = 0.2 kg, v2 = 2 m/s {other_way}.\n"
+        "$$m_1 v_1 + m_2 v_2 = m_1 a + m_2 b$$\n"
+        "$$0.3(3) + 0.2(-2) = 0.3a + 0.2b$$\n"
+    )
+    assert statuses("aqa-m3-2007-spheres-approach-head-on", work) == ["correct"] * 3
+
+
+# A label in \text{} and then a term with a minus (``\text{CLM:}\quad -0.2(2) + …``): the minus is
+# the term's sign, not a list's dash dropped. AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward
+# it), by hand: -0.4 + 0.9 = 0.5 (as 0.4 + 0.9 = 1.3 it would be wrong).
+@pytest.mark.parametrize("label", [r"\text{CLM:}\quad", r"\text{Momentum:}\ "])
+def test_a_minus_after_a_label_in_text_is_kept(label: str) -> None:
+    line = rf"$${label} -0.2(2) + 0.3(3) = 0.3 v_A + 0.2 v_B$$"
+    assert statuses("aqa-m3-2007-spheres-approach-head-on", line) == ["correct"]
+
+
+# A given velocity written without its sign (B's 1.5 m/s toward A) is still the problem's data,
+# exact: no rounding slack hides an arithmetic slip worked from it. OCR M2 2011 (B: 0.2 kg at
+# 1.5 m/s toward A), by hand: ½(0.2)(1.5)² = 0.225 J, so 0.235 is a slip.
+def test_a_given_written_without_its_sign_is_exact_data() -> None:
+    assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.225") == ["correct"]
+    assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.235") == ["wrong"]

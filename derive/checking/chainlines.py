@@ -17,7 +17,7 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainnames, mistakes, words
+from derive.checking import chainnames, mistakes, principles, words
 from derive.checking import ownquantities as own
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
@@ -341,8 +341,8 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     def item(status: str, message: str) -> Item:
         return Item("line", str(r.line), r.written, status, "", message, "the chain's values")
 
-    if len(exprs) < 2:
-        return item("correct", "Defines a name for the lines after it.")
+    if len(exprs) < 2 or principles.energy_balance(sides):  # T_1 + V_1 = T_2 + V_2: the stage's principle
+        return item("correct", principles.energy_balance(sides) or "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])
     if truly is None:
         unknown = sorted({x.name[len(PREFIX) :] for e in exprs for x in _own(e) if x not in true_defs})

@@ -231,7 +231,7 @@ def _data(p: Problem) -> set[sympy.Rational]:
     data: set[sympy.Rational] = set()
     for g in p.givens:
         if g.value is not None and g.value.is_Rational:
-            data.add(g.value)
+            data.update((g.value, abs(g.value)))  # -0.120 m/s is written 0.120 "the other way"
         if g.value is not None and g.dim == ANGLE:
             deg = g.value * 180 / sympy.pi
             if deg.is_Rational:

@@ -71,8 +71,23 @@ def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) 
         value, half = _number(r.sides[1])
         hits = [s for s, v in givens if abs(abs(value) - v) <= half]
         if len(hits) == 1:
-            out[name] = hits[0] if value < 0 or ctx.problem.oblique else sympy.Abs(hits[0])  # "v = 4": a size
+            typed = " ".join(x.written for x in relations)
+            for spelled in _spellings(name, reserved | seen, typed):  # v1 on the line of givens is v_1 in $m_1 v_1$
+                signed = value < 0 or r.direction < 0 or ctx.problem.oblique  # "0.120 m/s the other way": signed
+                out[spelled] = hits[0] if signed else sympy.Abs(hits[0])  # "v = 4": a size
     return out
+
+
+def _spellings(name: str, taken: set[str], typed: str) -> list[str]:
+    """``name`` and its other spelling, with or without the underscore (``v1``, ``v_1``), where
+    the student types both (``v1`` in a line of givens, ``$m_1 v_1$`` later) and that one is not
+    a name of its own already."""
+    m = re.fullmatch(r"([A-Za-z])_?(\w+)", name)
+    if m is None:
+        return [name]
+    other = f"{m[1]}{m[2]}" if "_" in name else f"{m[1]}_{m[2]}"
+    spelled = rf"(?<![\w\\]){m[1]}_\{{?{m[2]}\}}?(?!\w)" if "_" not in name else rf"(?<![\w\\]){m[1]}{m[2]}(?!\w)"
+    return [name, other] if other not in taken and re.search(spelled, typed) else [name]
 
 
 def is_size(ctx: Context, e: sympy.Expr) -> bool:

@@ -20,6 +20,7 @@ from derive.checking.naming import common_velocity, moving_together
 from derive.checking.numeric import number_of
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
+from derive.mathtext.units import in_si
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import ENERGY, IMPULSE, MASS, VELOCITY, Dim
 
@@ -69,6 +70,9 @@ def unit_of(r: Relation) -> tuple[Dim, str] | None:
     if found is None:  # the unit outside the relation as read (or read into it: 20 g as 20/1000)
         at = re.search(rf"(?<![\d.]){re.escape(m.group(0))}(?![\d])", r.written)
         found = _kind_of_unit(r.written[at.end() :]) if at else None
+    for w in re.finditer(r"(?<![\d.])(\d[\d.]*)\s+(g|cm|mm)\b", r.written) if found is None else ():
+        if in_si(f"{w[1]} {w[2]}") == m.group(0):
+            return _kind_of_unit(" " + r.written[w.start(2) :])  # 20 g read as 0.020: its unit as written
     return found
 
 

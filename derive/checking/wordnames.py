@@ -115,6 +115,19 @@ _SPEED_NAMED = (
 )
 
 
+_LETTER = r"([A-Za-z](?:_?\w{1,2})?)"
+#: One body's speeds before and after, in one breath: "let the speed be u before and v after",
+#: "its speed is u before the impact and v after it", "speeds u and v before and after".
+_SPEEDS_BEFORE_AFTER = (
+    re.compile(
+        rf"\bspeed\s+(?:be\s+|is\s+|of\s+)?{_LETTER}\s+(?:just\s+)?before(?:\s+the\s+(?:impact|collision|bounce))?,?"
+        rf"\s+and\s+{_LETTER}\s+(?:just\s+)?after",
+        re.I,
+    ),
+    re.compile(rf"\bspeeds\s+(?:be\s+|are\s+)?{_LETTER}\s+and\s+{_LETTER}\s+before\s+and\s+after", re.I),
+)
+
+
 def _speeds_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     """``where V is A's speed after the collision`` -> {V: v_A2}: a name for a body's speed after
     an oblique impact (its size, the speed derive works out), in either order of name and words."""
@@ -130,6 +143,10 @@ def _speeds_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             b = _body(body, ctx)
             if b and f"v_{b}2" in names and name not in names and name.lower() not in _NOT_NAMES:
                 out.setdefault(name, names[f"v_{b}2"][0])
+    for pattern in _SPEEDS_BEFORE_AFTER if ctx.problem.fixed_B and "v_A2" in names else ():
+        for m in pattern.finditer(plain):
+            if m[2] not in names and m[2].lower() not in _NOT_NAMES:
+                out.setdefault(m[2], names["v_A2"][0])  # the one body's speed after (before: the given)
     return out
 
 
@@ -307,6 +324,14 @@ _ANGLE_BETWEEN = re.compile(
     re.I,
 )
 _ANGLE_MAKES = re.compile(rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.format(name=_ANGLE_NAME)}", re.I)
+#: "the sphere leaves the wall at an angle φ to the wall", "B moves off at angle β to the line of
+#: centres", "let it rebound making an angle φ with the cushion": a body's path after, by its verb.
+_ANGLE_LEAVES = re.compile(
+    r"(?:the\s+)?(\w+)\s+(?:leaves?|leaving|rebounds?|rebounding|bounces?\s+off|moves?\s+(?:off|away)|goes\s+off|travels?\s+off)"
+    r"(?:\s+(?:from\s+)?(?:the\s+)?(?:wall|cushion|surface|it))?\s+(?:at|making)\s+(?:an?\s+)?(?:acute\s+)?angle\s+(?:of\s+)?"
+    rf"{_ANGLE_NAME}\s+(?:to|with)\s+(?:the\s+)?{_LINE_WORDS}",
+    re.I,
+)
 
 
 def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
@@ -322,6 +347,7 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
     found += [(m[1], m[2] or m[5], m[3] or m[4]) for m in _ANGLE_BETWEEN.finditer(plain)]
+    found += [(m[2], m[1], m[3]) for m in _ANGLE_LEAVES.finditer(plain)]
     found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
     found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
     given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
@@ -332,8 +358,26 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             name = name.lstrip("\\")
             name = _GREEK_LETTERS.get(name, name)
             if name not in given:
-                out.setdefault(name, names[key][0])
+                out.setdefault(name, -names[key][0] if _negative(ctx, key) else names[key][0])
     return out
+
+
+def _negative(ctx: Context, name: str) -> bool:
+    """Whether derive's angle ``name`` is negative (the acute angle a student names in words is
+    its size: "leaves at an angle φ to the wall" where derive's θ_A2 is -18.4°)."""
+    try:
+        r = ctx.results[name]
+    except (KeyError, LookupError):
+        return False
+    x = sympy.sympify(r.value if r.value is not None else r.closed)
+    if x is None or x.is_number:
+        return x is not None and bool(x.is_negative)
+    try:  # in letters (tan β = e₁ tan α): its sign at the givens' admissible values
+        x = ctx.num(x)
+        point = ctx.sampler().points(x.free_symbols, n=1)[0]
+        return bool(sympy.N(x.xreplace(point)).is_negative)
+    except (TypeError, ValueError, IndexError, ArithmeticError):
+        return False
 
 
 def _leaving(body: str, ctx: Context) -> str:

@@ -14,7 +14,7 @@ import re
 #: An arrow after a value, where the relation ends (``= 1.6 m/s ←``, ``4 m/s (→)``, ``0.5 m/s ->,``): the
 #: direction it points, as words say it ("to the left"), not "so".
 _ARROW_DIRECTION = re.compile(
-    r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
+    r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|(↓|\\downarrow)|(↑|\\uparrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
     r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]))"  # bounded gaps: a long run of spaces stays cheap
 )
 _ARROWS = r"→|⟶|-{1,2}>|←|⟵|<-{1,2}|↑|↓|\\(?:long)?(?:right|left)arrow|\\(?:up|down)arrow"
@@ -27,4 +27,9 @@ def arrows_said(plain: str) -> str:
     """``plain`` without the marks of a sign convention and with each arrow after a value in
     words; an arrow between two relations (``x = 2 -> y = 3``) is left to mean "so"."""
     plain = _CONVENTION_MARK.sub(" ", plain)
-    return _ARROW_DIRECTION.sub(lambda m: " to the left" if m.group(1) else " to the right", plain)
+    return _ARROW_DIRECTION.sub(_said, plain)
+
+
+def _said(m: re.Match[str]) -> str:
+    """The direction an arrow after a value points, in words (``↓``: downwards)."""
+    return " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"

@@ -1,6 +1,6 @@
 """A name in brackets with its marks after them, as the engineering textbooks write it
 (Hibbeler, Beer & Johnston): ``(v_A)_1``, ``(v_A)_2``, ``(v_A)'``, ``(v_B)_{2x}``, ``(v_A)_n'``,
-and typed in plain text ``(vA)1``, ``(vB)2``. The brackets only hold the name together: what
+and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``). The brackets only hold the name together: what
 follows them (a time, a component, a prime) is the name's own mark, so the whole is one name
 (``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``), and a factor written before it stays a factor
 (``20 (v_A)'`` is 20 times ``v_A'``, ``mA(vA)1`` is ``mA`` times ``v_A1``).
@@ -25,7 +25,7 @@ _INSIDE = r"\(\s*([A-Za-z])(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))\s*\
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
     r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3})\s*\}|\(\s*([A-Za-z0-9]{1,3})\s*\)|([A-Za-z0-9]{1,3})(?![\w(]))"
-    r"|([012][xyntXYNT]?)(?![\w.(]))?"
+    r"|([012][xyntXYNT]?|[xyntXYNT][012])(?![\w.(]))?"
     r"((?:'|’|\s*\^\s*\\prime|\s*\^\s*\{\s*\\prime\s*\})*)"
 )
 _BRACKETED = re.compile(_INSIDE + _MARKS)
@@ -38,6 +38,8 @@ def bracketed_names(text: str, tex: bool = False) -> str:
     def one(m: re.Match) -> str:
         letter, sub = m[1], m[2] or m[3]
         after = m[4] or m[5] or m[6] or m[7] or ""
+        if m[7] and m[7][0].isalpha():
+            after = after[::-1]  # "(vA)n1", Hibbeler's component then time: v_A1n
         primes = "'" * (m[8].count("'") + m[8].count("’") + m[8].count("prime"))
         if not after and not primes:
             return m[0]  # "(v_A) - (v_B)": brackets around a name, nothing after them

@@ -104,7 +104,8 @@ def latex_to_plain(tex: str) -> str:
             piece = f"({piece})" if piece and tok == "{" else piece  # a group
         out.append(piece if parser.spans[start][0] == end else " " + piece)
         end = parser.spans[parser.i - 1][1]
-    return " ".join("".join([*out, *tags]).split())
+    plain = " ".join("".join([*out, *tags]).split())
+    return re.sub(r"^-\s+(?=[\w(.])", "-", plain)  # "\text{CLM:} -2x": a minus, not a list's dash
 
 
 def _prefix(parser: Parser, start: int, far: int) -> object | None:

@@ -287,6 +287,9 @@ def name_after_words(side: str, math_words: frozenset[str]) -> str:
 UNIT_THEN_NAME = re.compile(
     r"(=\s*[-+]?\d[\d.]*\s?(?:kg|g|m/s|ft/s|km/h|mph|N|J|lb|slugs?|N\s?s))\s+(?=[A-Za-z]\w{0,5}\s*=(?!=))"
 )  # the number all of a side, its unit not one a product may end with (m, s)
+#: A wide gap (three spaces or a tab) after a relation, then a name and "=": two relations set
+#: side by side on one line, as a plain-text sheet lines them up (``(vA)n1 = 6.928 ft/s      (vA)t1 = 4``).
+GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)\w{0,3}|[A-Za-z]\w{0,5})'*\s*=(?!=))")
 #: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
 #: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
 REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")

@@ -24,7 +24,15 @@ from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
-from derive.mathtext.notes import REMARK_END, UNIT_THEN_NAME, name_after_words, unbold, unmarked, without_note
+from derive.mathtext.notes import (
+    GAP_THEN_NAME,
+    REMARK_END,
+    UNIT_THEN_NAME,
+    name_after_words,
+    unbold,
+    unmarked,
+    without_note,
+)
 from derive.mathtext.parser import GREEK
 from derive.mathtext.sides import direction_of, html_marks, thousands, typed_names, units_inside, without_direction
 from derive.mathtext.units import UNIT, in_si
@@ -242,6 +250,7 @@ def split_relations(plain: str) -> list[str]:
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
     plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
+    plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
     plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):

@@ -13,6 +13,7 @@ letter (``2 m``: metres, or two times m?) is a unit.
 from __future__ import annotations
 
 import re
+from decimal import Decimal
 
 _LENGTH = r"(?:km|cm|mm|ft|mi|m)"
 _TIME = r"(?:secs?|s|hr|h|min)"
@@ -49,8 +50,13 @@ _SCALED = re.compile(
 
 def in_si(side: str) -> str | None:
     """A side that is a number and a multiple of an SI unit (``22 g``, ``20 Mg``, ``45 km/h``) as
-    that number in the SI unit (``22/1000``, ``20*1000``, ``45*5/18``); None for any other side."""
+    that number in the SI unit (``0.022``, ``20*1000``, ``45*5/18``), a fraction of it as a decimal
+    with the figures written (``225 mm``: ``0.225``); None for any other side."""
     m = _SCALED.match(side)
     if m is None:
         return None
-    return m.group(1) + (SCALED[m.group(2)] if m.group(2) else "*5/18")
+    factor = SCALED[m.group(2)] if m.group(2) else "*5/18"
+    if factor.startswith("/"):  # 225 mm: 0.225, its figures kept (a rounded 225 is a rounded 0.225)
+        shifted = Decimal(m.group(1).replace("−", "-")).scaleb(-len(factor) + 2)
+        return format(shifted, "f")
+    return m.group(1) + factor
