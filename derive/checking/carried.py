@@ -306,3 +306,21 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
 
 def _shown(x: sympy.Expr) -> str:
     return str(x) if x.is_Integer else f"{float(x):g}"
+
+
+def pairs_of(trace: Trace, line: Read) -> list[Pair]:
+    """The line's pairs (:meth:`~.lines.Trace.pairs`); a law in names alone, no decimal in it
+    (``m_A (v_A)_1 + m_B (v_B)_1 = m_A (v_A)_2 + m_B (v_B)_2``) after a given copied wrongly,
+    that holds with the given as the problem has it, is the law, true: it writes no number
+    copied, so it is correct, not carried (the lines that put the number in are carried)."""
+    pairs = trace.pairs(line)
+    names = set().union(*(x.free_symbols for x in line.exprs or ()))
+    if not trace.copied or not names & set(trace.copied) or any(re.search(r"\d\s*\.\s*\d", x) for x in line.sides):
+        return pairs
+    kept = trace.copied
+    trace.copied = {}
+    try:
+        law = trace.pairs(line)
+    finally:
+        trace.copied = kept
+    return law if trace.holds(law, trace.truth) else pairs

@@ -212,6 +212,8 @@ class Carrying:
         earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct;
         so is one in the unknowns that holds given the slip too (``v_B = sqrt(71.0^2 + 108.3^2)
         = 129.5``, near the true 128.9 only because the t component is the larger)."""
+        if self.world is not None and self._writes_copied(line) and self.holds(pairs, self.world):
+            return True  # 0.3 = (v_B2 - v_A2)/(19.567 - 0): the given as copied, put in
         working = " ".join(line.sides[:-1]).replace(" ", "").replace("*", "")
         terms = any(re.search(rf"(?<![\w.]){re.escape(t)}(?!\w)", working) for t in self.wrong_terms)
         if not decimals(line.sides[:-1]) & self.wrong_values and not terms and not self._wrong_integers(line):
@@ -219,6 +221,11 @@ class Carrying:
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             return self.world is not None and self.holds(pairs, self.world) and self._moved(pairs)
         return True
+
+    def _writes_copied(self, line: Line) -> bool:
+        """Whether ``line`` writes, on any side, a decimal given as the student copied it wrongly."""
+        written = {number_of(sympy.Float(d)) for d in decimals(line.sides)}
+        return any(number_of(v) in written for v in self.copied.values() if not v.free_symbols)
 
     def _wrong_integers(self, line: Line) -> bool:
         """Whether the working of ``line`` has a whole number the student wrote as the value of a

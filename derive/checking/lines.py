@@ -125,7 +125,7 @@ class Trace(Carrying):
             return self.item(replace(line, sides=line.sides[-len(line.exprs) + 1 :], exprs=line.exprs[1:], defines=""))
         if line.defines:
             return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
-        pairs = self.pairs(line)
+        pairs = carried.pairs_of(self, line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             total = labelled.labelled(self.ctx, line, lambda p: self.holds([p], self.truth))
