@@ -740,3 +740,33 @@ def test_an_angle_worked_out_taken_from_the_other_axis_is_named_and_carried() ->
     assert found[2][0] == "carried"
     right = lines("ocr-m3-2013-b-turns-through-right-angle", "v_B2n = 0.3/tan 60° = 0.173 m/s\n")
     assert right[1][0] == "correct"
+
+
+def test_a_sign_lost_combining_two_right_equations_is_algebra_not_a_mistake_they_deny(tmp_path) -> None:
+    # m at u hits 2m at rest (by hand): (1) u = v_A + 2v_B, (2) v_B - v_A = eu; (1) + (2) gives
+    # 3v_B = u + eu. Written 3v_B = u - eu, which restitution reversed (v_A - v_B = eu) would give,
+    # but the student wrote (2) right: a sign lost in adding (algebra). Given it,
+    # v_B = (1 - e)u/3 and, from (1), v_A = u - 2v_B = (1 + 2e)u/3: carried.
+    problem = tmp_path / "m2m.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm = "kg"\nu = "m/s"\ne = "e"\n'
+        'm_A = "m"\nm_B = "2*m"\nv_A1 = "u"\nv_B1 = "0 m/s"\n'
+    )
+    work = (
+        "mu = m v_A + 2m v_B\n"
+        "u = v_A + 2v_B   (1)\n"
+        "v_B - v_A = eu   (2)\n"
+        "(1) + (2): 3v_B = u - eu\n"
+        "v_B = (1 - e)u/3\n"
+        "v_A = u - 2v_B = (1 + 2e)u/3\n"
+    )
+    got = lines(str(problem), work)
+    assert {n: s for n, (s, _, _) in got.items()} == {
+        1: "correct",
+        2: "correct",
+        3: "correct",
+        4: "wrong",
+        5: "carried",
+        6: "carried",
+    }
+    assert got[4][1] == "algebra"

@@ -324,3 +324,30 @@ def pairs_of(trace: Trace, line: Read) -> list[Pair]:
     finally:
         trace.copied = kept
     return law if trace.holds(law, trace.truth) else pairs
+
+
+def combined(trace: Trace, bad: Pair, diags: tuple) -> Found:
+    """``2v_A = u + eu`` from ``(1) − (2)`` after ``u = v_A + v_B`` and ``v_B − v_A = eu``, both
+    right: a line solved for one unknown, which a common mistake reproduces (restitution reversed)
+    only in a world the student's own right relations deny, and which holds with one term's sign
+    changed, is a slip in combining them (``algebra``), not that mistake; None otherwise."""
+    unknowns = set(trace.U)
+    if not diags or not trace.held or len(bad.difference.free_symbols & unknowns) != 1:
+        return None
+    names = {d.mistake for d in diags}
+    outcomes = [o for o in trace.ctx.singles() if o.mistake is not None and o.mistake.name in names]
+    if not outcomes:
+        return None
+    changed: list[int] = []
+    for o in outcomes:
+        changed = [j for j in o.mistake.enters if j in o.equations and j in trace.equations]
+        world = solve_world(
+            {**trace.equations, **{j: o.equations[j] for j in changed}}, trace.U, trace.pts, trace.truth
+        )
+        if not changed or world is None or all(trace.holds([p], world) for p in trace.held):
+            return None
+    current = trace.world if trace.world is not None else trace.truth
+    flip, _right = slipnames.sign_flipped(trace.ctx, bad, trace.U, lambda p: trace.holds([p], current))
+    if flip != "algebra":
+        return None
+    return changed[0], slipnames.FLIPPED[flip], flip  # in place of the equation the mistake seemed to change

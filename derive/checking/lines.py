@@ -235,8 +235,7 @@ class Trace(Carrying):
     def _explain(
         self, line: Line, bad: Pair, answer: Item | None
     ) -> tuple[tuple[Diagnosis, ...], int | None, str, str]:
-        """The mistakes that explain the slip ``bad``, the equation it stands for, the rest of
-        the sentence that reports it, and the slip's name where it is not a mistake's."""
+        """The mistakes explaining the slip ``bad``, its equation, the verdict's words, the slip's name."""
         if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
             return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips).", ""
         if not bad.difference.free_symbols & set(self.U):
@@ -266,6 +265,8 @@ class Trace(Carrying):
         diags = fresh if fresh and len(fresh) < len(diags) else diags
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
+        if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
+            return ((), *combined)
         if not diags:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
@@ -296,10 +297,9 @@ class Trace(Carrying):
         return diags, j, f": it is {words.EQUATION_WORDS[j]}, but it {said}.", ""
 
     def _in_mistake_world(self, bad: Pair) -> tuple[Diagnosis, ...]:
-        """The mistake whose equations, in place of those it changes (the student's own slips
-        kept), give velocities ``bad`` holds for: ``20(3.05) + 5(-9.15) = 25 v_t`` is right for
-        one t velocity (the system's t momentum); ``e = (3.55 - 0.2)/(6 + 2)`` for B's sign lost
-        in the approach, with the student's 3.55. Those velocities become the student's."""
+        """The mistake whose equations, in place of those it changes (the student's slips kept),
+        give velocities ``bad`` holds for (``20(3.05) + 5(-9.15) = 25 v_t``: the system's t
+        momentum; ``e = (3.55 - 0.2)/(6 + 2)``: B's sign lost). They become the student's."""
         own = {j for _n, j in self.replaced}
         current = self.world if self.world is not None else self.truth
         for o in self.ctx.singles():
