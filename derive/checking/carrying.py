@@ -90,6 +90,9 @@ class Carrying:
         carried through the arithmetic of a side of numbers only (so a number near the value
         from another formula, ``½(0.020)(300 - 1.49)²`` for 900 - 4.48, is not within it)."""
         texts = [sides[j] for j in ik]
+        exact = _whole_numbers(texts, raw, ik)
+        if exact is not None:  # 6750 + 792 = 7452: whole numbers added are exact, not 7542 at 3 figures
+            return exact
         whole = literal_tolerance(f"{' = '.join(texts)} {worked}", self.ctx.data)
         plain = [j for j in ik if not raw[j].free_symbols and number_of(raw[j]) is not None]
         values = [abs(complex(number_of(raw[j]))) for j in plain]  # type: ignore[arg-type]
@@ -322,3 +325,22 @@ class Carrying:
             if worked is None or v is None or abs(v - worked) > _slack(side) * max(abs(v), abs(worked)):
                 return False
         return True
+
+
+#: A side of whole numbers added or subtracted only (``6750 + 792``, ``45\,000 + 13\,200``).
+_WHOLE = re.compile(r"^\s*\d+(?:\s*[+\-−]\s*\d+)*\s*$")
+
+
+def _whole_numbers(texts: list[str], raw: list[sympy.Expr], ik: tuple[int, int]) -> float | None:
+    """The slack of ``a + b = c`` in whole numbers alone (one on each side at least two digits):
+    a unit in the last place the result is written to (7540 rounds to tens), as a fraction of
+    it; None for any other pair."""
+    plain = [re.sub(r"\\[,;:!]|\{,\}|(?<=\d)[ ,](?=\d{3}\b)", "", t) for t in texts]
+    if not all(_WHOLE.match(t) for t in plain) or not any(re.search(r"\d\s*[+\-−]\s*\d", t) for t in plain):
+        return None
+    values = [number_of(raw[j]) for j in ik]
+    if any(v is None or v == 0 for v in values):
+        return None
+    last = plain[-1].strip()
+    unit = 10 ** (len(last) - len(last.rstrip("0"))) if last.isdigit() else 1
+    return unit / max(abs(complex(v)) for v in values)  # type: ignore[arg-type]
