@@ -791,3 +791,24 @@ def test_whole_numbers_added_wrongly_in_a_chain_of_rounded_decimals_are_arithmet
     assert got[1][0] == status
     if status == "wrong":
         assert got[1][1] == "arithmetic"
+
+
+@pytest.mark.parametrize(
+    ("work", "slip"),
+    [
+        ("e = (2.75 + 3.25)/(2 + 6) = 0.75\n", ""),
+        ("e = (2.75 + 4.75)/(2 + 6) = 0.9375\n", "e_speeds"),  # A's speed after, 4.75, for its 3.25
+        ("e = (2.75 + 4.15)/(2 + 6) = 0.8625\n", "not e_speeds"),
+    ],
+)
+def test_a_speed_for_its_component_along_the_line_of_centres_in_e_is_e_speeds(work: str, slip: str) -> None:
+    # OCR FM 2023 (5 kg at 4 m/s at 60° to the line of centres, 3 kg at 6 m/s toward it, e = 3/4):
+    # along the line A has 2 before, -13/4 after, B -6 and 11/4 (the mark scheme); across, A keeps
+    # 4 sin 60° = 2√3, so its speed after is √(3.25² + 12) = √22.5625 = 4.75.
+    got = lines("ocr-fm-2023-oblique-discs-60deg", work)[1]
+    if not slip:
+        assert got[0] == "correct"
+    elif slip == "e_speeds":
+        assert got[:2] == ("wrong", "e_speeds")
+    else:
+        assert got[0] == "wrong" and got[1] != "e_speeds"

@@ -250,9 +250,9 @@ class Trace(Carrying):
                 if named[1] == cofunctions.NAME:  # its number, written wrong, is carried on
                     self._number_wrong(bad)
                 return (), None, *named
-            given = carried.given_copied(self, bad)
-            if given:
-                return (), None, given, "copied_wrong"
+            given = carried.plain_named(self, line, bad, self.world or self.truth)
+            if given is not None:  # a body's speed for its component, a given copied wrongly
+                return (), None, *given
             text = " = ".join(line.sides)
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
@@ -287,7 +287,7 @@ class Trace(Carrying):
             )
             if not name and carried.worked_wrongly(self, line, world):
                 return diags, None, WORKING, "arithmetic"
-            found = None if name else carried.unnamed(self, line.sides, bad, world, j)
+            found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
