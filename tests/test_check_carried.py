@@ -204,3 +204,25 @@ def test_a_known_component_written_wrong_under_a_symbolic_mass_is_carried_into_t
     found = lines("gramoll-ecourses-two-balls-elastic", work)
     assert found[1][:2] == ("wrong", "arithmetic")
     assert found[2][0] == found[3][0] == found[4][0] == "carried"
+
+
+def test_a_law_in_names_after_a_given_copied_wrongly_is_correct_and_the_numbers_put_in_carried(tmp_path) -> None:
+    # 2 kg at 5.25 m/s hits 3 kg at rest, e = 0.5 (by hand): 10.5 = 2v_A + 3v_B, v_B - v_A = 2.625,
+    # v_B = 3.15, v_A = 0.525. Copied as 5.52: 11.04 = 2v_A + 3v_B, v_B - v_A = 2.76, v_B = 3.312.
+    # The laws in names hold as the problem has them: correct; the lines with 5.52 put in carry
+    # the slip, even "0.5 = (v_B2 - v_A2)/(5.52 - 0)" that 0.4755 happens to meet at one figure.
+    problem = tmp_path / "copied.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "2 kg"\nm_B = "3 kg"\nv_A1 = "5.25 m/s"\n'
+        'v_B1 = "0 m/s"\ne = "0.5"\n'
+    )
+    work = (
+        "v_A1 = 5.52 m/s\n"
+        "m_A v_A1 + m_B v_B1 = m_A v_A2 + m_B v_B2\n"
+        "2(5.52) + 0 = 2 v_A2 + 3 v_B2\n"
+        "e = (v_B2 - v_A2)/(v_A1 - v_B1)\n"
+        "0.5 = (v_B2 - v_A2)/(5.52 - 0)\n"
+        "v_B2 = 3.312 m/s\n"
+    )
+    got = {n: s for n, (s, _, _) in lines(str(problem), work).items()}
+    assert got == {1: "wrong", 2: "correct", 3: "carried", 4: "correct", 5: "carried", 6: "carried"}

@@ -493,3 +493,25 @@ def test_a_letter_inside_the_value_after_has_is_not_a_name_declared() -> None:
     ctx = Context(derive.solve(derive.load(AQA_30_SPEED)), None)
     assert "U" not in in_words("Along the line of centres A has U cos 30° = √3/2 U, across it U/2", ctx)
     assert set(in_words("Along the line of centres, after: A has p, B has q.", ctx)) == {"p", "q"}
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("mu = m v_A + 3m v_B\n", "correct"),
+        ("mu = 3m v_A + m v_B\n", "wrong"),  # the masses swapped: m × u, never a name "mu" defined
+        ("mu + 0 = 3m v_A + m v_B\n", "wrong"),
+    ],
+)
+def test_mu_alone_on_the_left_is_m_times_u_even_when_the_momentum_is_wrong(tmp_path, work: str, expected: str) -> None:
+    # m at u hits 3m at rest: the momentum m u = m v_A + 3m v_B (worked by hand); with the
+    # masses swapped m u = 3m v_A + m v_B is false, a slip, not a definition of a name "mu".
+    problem = tmp_path / "m3m.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm = "kg"\nu = "m/s"\ne = "e"\n'
+        'm_A = "m"\nm_B = "3*m"\nv_A1 = "u"\nv_B1 = "0 m/s"\n'
+    )
+    assert by_line(str(problem), work) == {"1": expected}
+    if expected == "wrong":
+        slip = next(i for i in report(str(problem), work).items if i.status == "wrong")
+        assert "masses_swapped" in {d.mistake for d in slip.diagnosis}

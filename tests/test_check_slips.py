@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import time
 
+import pytest
+
 import derive
 
 
@@ -740,3 +742,73 @@ def test_an_angle_worked_out_taken_from_the_other_axis_is_named_and_carried() ->
     assert found[2][0] == "carried"
     right = lines("ocr-m3-2013-b-turns-through-right-angle", "v_B2n = 0.3/tan 60° = 0.173 m/s\n")
     assert right[1][0] == "correct"
+
+
+def test_a_sign_lost_combining_two_right_equations_is_algebra_not_a_mistake_they_deny(tmp_path) -> None:
+    # m at u hits 2m at rest (by hand): (1) u = v_A + 2v_B, (2) v_B - v_A = eu; (1) + (2) gives
+    # 3v_B = u + eu. Written 3v_B = u - eu, which restitution reversed (v_A - v_B = eu) would give,
+    # but the student wrote (2) right: a sign lost in adding (algebra). Given it,
+    # v_B = (1 - e)u/3 and, from (1), v_A = u - 2v_B = (1 + 2e)u/3: carried.
+    problem = tmp_path / "m2m.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm = "kg"\nu = "m/s"\ne = "e"\n'
+        'm_A = "m"\nm_B = "2*m"\nv_A1 = "u"\nv_B1 = "0 m/s"\n'
+    )
+    work = (
+        "mu = m v_A + 2m v_B\n"
+        "u = v_A + 2v_B   (1)\n"
+        "v_B - v_A = eu   (2)\n"
+        "(1) + (2): 3v_B = u - eu\n"
+        "v_B = (1 - e)u/3\n"
+        "v_A = u - 2v_B = (1 + 2e)u/3\n"
+    )
+    got = lines(str(problem), work)
+    assert {n: s for n, (s, _, _) in got.items()} == {
+        1: "correct",
+        2: "correct",
+        3: "correct",
+        4: "wrong",
+        5: "carried",
+        6: "carried",
+    }
+    assert got[4][1] == "algebra"
+
+
+@pytest.mark.parametrize(("total", "status"), [("7020", "correct"), ("7000", "correct"), ("6930", "wrong")])
+def test_whole_numbers_added_wrongly_in_a_chain_of_rounded_decimals_are_arithmetic(
+    tmp_path, total: str, status: str
+) -> None:
+    # 140 000 kg at 0.300 m/s and 100 000 kg at 0.120 m/s the other way (by hand): ½(140 000)(0.09)
+    # = 6300 and ½(100 000)(0.0144) = 720, T_1 = 7020 J (7000 at two figures); 6300 + 720 written
+    # 6930 is a slip of adding, though within the slack of the first side's three-figure decimals.
+    problem = tmp_path / "ke.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "140000 kg"\nm_B = "100000 kg"\nv_A1 = "0.300 m/s"\n'
+        'v_B1 = "-0.120 m/s"\ne = "0"\n'
+    )
+    work = f"T_1 = ½(140 000)(0.300)^2 + ½(100 000)(0.120)^2 = 6300 + 720 = {total}\n"
+    got = lines(str(problem), work)
+    assert got[1][0] == status
+    if status == "wrong":
+        assert got[1][1] == "arithmetic"
+
+
+@pytest.mark.parametrize(
+    ("work", "slip"),
+    [
+        ("e = (2.75 + 3.25)/(2 + 6) = 0.75\n", ""),
+        ("e = (2.75 + 4.75)/(2 + 6) = 0.9375\n", "e_speeds"),  # A's speed after, 4.75, for its 3.25
+        ("e = (2.75 + 4.15)/(2 + 6) = 0.8625\n", "not e_speeds"),
+    ],
+)
+def test_a_speed_for_its_component_along_the_line_of_centres_in_e_is_e_speeds(work: str, slip: str) -> None:
+    # OCR FM 2023 (5 kg at 4 m/s at 60° to the line of centres, 3 kg at 6 m/s toward it, e = 3/4):
+    # along the line A has 2 before, -13/4 after, B -6 and 11/4 (the mark scheme); across, A keeps
+    # 4 sin 60° = 2√3, so its speed after is √(3.25² + 12) = √22.5625 = 4.75.
+    got = lines("ocr-fm-2023-oblique-discs-60deg", work)[1]
+    if not slip:
+        assert got[0] == "correct"
+    elif slip == "e_speeds":
+        assert got[:2] == ("wrong", "e_speeds")
+    else:
+        assert got[0] == "wrong" and got[1] != "e_speeds"

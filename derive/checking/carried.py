@@ -6,6 +6,7 @@ working does not (an arithmetic slip inside the line, and what the student carri
 from __future__ import annotations
 
 import copy
+import itertools
 import re
 from dataclasses import replace
 from decimal import Decimal
@@ -16,10 +17,12 @@ import sympy
 from derive.checking import slipnames
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
-from derive.checking.numeric import number_of
+from derive.checking.naming import Open, read_side, rewrite
+from derive.checking.numeric import decimals, number_of
 from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
+from derive.problem.expr import ParseError
 
 if TYPE_CHECKING:
     from derive.checking.context import Context
@@ -131,8 +134,8 @@ def given_copied(trace: Trace, bad: Pair) -> str:
     return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
 
 
-def unnamed(trace: Trace, sides: tuple[str, ...], bad: Pair, world: list[Values], j: int | None) -> Found:
-    """The slip ``bad`` (of a line of ``sides``) no common mistake names, named by what makes it
+def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | None) -> Found:
+    """The slip ``bad`` (of ``line``) no common mistake names, named by what makes it
     hold: a given copied wrongly (``copied_wrong``), a given velocity taken the other way
     (``b_sign``: the problem solved with it so, no equation replaced), one term's sign
     (``algebra``, or ``b_sign`` for a mass times a velocity: in place of the equation the
@@ -141,7 +144,9 @@ def unnamed(trace: Trace, sides: tuple[str, ...], bad: Pair, world: list[Values]
     def holds(p: Pair) -> bool:
         return trace.holds([p], world)
 
-    if slipnames.copied_wrong(trace.ctx, bad, holds, " = ".join(sides)):
+    if speed_for_component(trace, line, world):
+        return 4, SPEEDS, "e_speeds"
+    if slipnames.copied_wrong(trace.ctx, bad, holds, " = ".join(line.sides)):
         return j, f": {slipnames.COPIED}", "copied_wrong"
     if given_negated(trace, bad):
         return 0, slipnames.FLIPPED["b_sign"], "b_sign"  # 0: no equation replaced
@@ -306,3 +311,101 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
 
 def _shown(x: sympy.Expr) -> str:
     return str(x) if x.is_Integer else f"{float(x):g}"
+
+
+def pairs_of(trace: Trace, line: Read) -> list[Pair]:
+    """The line's pairs (:meth:`~.lines.Trace.pairs`); a law in names alone, no decimal in it
+    (``m_A (v_A)_1 + m_B (v_B)_1 = m_A (v_A)_2 + m_B (v_B)_2``) after a given copied wrongly,
+    that holds with the given as the problem has it, is the law, true: it writes no number
+    copied, so it is correct, not carried (the lines that put the number in are carried)."""
+    pairs = trace.pairs(line)
+    names = set().union(*(x.free_symbols for x in line.exprs or ()))
+    if not trace.copied or not names & set(trace.copied) or any(re.search(r"\d\s*\.\s*\d", x) for x in line.sides):
+        return pairs
+    kept = trace.copied
+    trace.copied = {}
+    try:
+        law = trace.pairs(line)
+    finally:
+        trace.copied = kept
+    return law if trace.holds(law, trace.truth) else pairs
+
+
+def combined(trace: Trace, bad: Pair, diags: tuple) -> Found:
+    """``2v_A = u + eu`` from ``(1) − (2)`` after ``u = v_A + v_B`` and ``v_B − v_A = eu``, both
+    right: a line solved for one unknown, which a common mistake reproduces (restitution reversed)
+    only in a world the student's own right relations deny, and which holds with one term's sign
+    changed, is a slip in combining them (``algebra``), not that mistake; None otherwise."""
+    unknowns = set(trace.U)
+    if not diags or not trace.held or len(bad.difference.free_symbols & unknowns) != 1:
+        return None
+    names = {d.mistake for d in diags}
+    outcomes = [o for o in trace.ctx.singles() if o.mistake is not None and o.mistake.name in names]
+    if not outcomes:
+        return None
+    changed: list[int] = []
+    for o in outcomes:
+        changed = [j for j in o.mistake.enters if j in o.equations and j in trace.equations]
+        world = solve_world(
+            {**trace.equations, **{j: o.equations[j] for j in changed}}, trace.U, trace.pts, trace.truth
+        )
+        if not changed or world is None or all(trace.holds([p], world) for p in trace.held):
+            return None
+    current = trace.world if trace.world is not None else trace.truth
+    flip, _right = slipnames.sign_flipped(trace.ctx, bad, trace.U, lambda p: trace.holds([p], current))
+    if flip != "algebra":
+        return None
+    return changed[0], slipnames.FLIPPED[flip], flip  # in place of the equation the mistake seemed to change
+
+
+#: The words of a body's speed put in the impact rule for its component along the line of centres.
+SPEEDS = (
+    ": it has a body's speed in the impact rule, where its component along the line of centres"
+    " belongs (restitution relates the normal components only)."
+)
+
+
+def speed_for_component(trace: Trace, line: Read, world: list[Values]) -> bool:
+    """Whether ``line`` (``e = (3.536 - 1)/(6 - 0)``) holds once a decimal that is a body's
+    speed, before or after the impact, in an oblique impact (√(2.5² + 2.5²) = 3.536) is put
+    back as that body's n component (2.5): the speed used for the component, ``e_speeds``."""
+    nm, exprs = trace.ctx.model.nm, line.exprs or ()
+    if len(exprs) < 2:
+        return False
+
+    def value(x: sympy.Expr | None) -> float | None:
+        v = number_of(trace.ctx.in_unknowns(x).xreplace(trace.pts[0]).xreplace(world[0])) if x is not None else None
+        return None if v is None or abs(v.imag) > 1e-9 else v.real
+
+    for n, t in ((nm.A1n, nm.A1t), (nm.B1n, nm.B1t), (nm.A2n, nm.A2t), (nm.B2n, nm.B2t)):
+        vn, vt = value(n), value(t)
+        if vn is None or vt is None or abs(vt) < 1e-9:
+            continue
+        speed = (vn**2 + vt**2) ** 0.5
+        for d in decimals(line.sides):
+            if abs(float(d) - speed) > 0.6 * 10.0 ** -len(d.split(".")[1]):
+                continue
+            for k, x in itertools.product(range(1, len(exprs)), {vn, abs(vn)}):  # "+ 4.75" for "- (-3.25)"
+                text = re.sub(rf"(?<![\d.]){re.escape(d)}(?![\d])", f"{x:.6g}", line.sides[k])
+                if text == line.sides[k] or exprs[k].free_symbols:
+                    continue
+                try:
+                    put = read_side(rewrite(text, set()), Open({}), False, False)
+                except ParseError:
+                    continue
+                raw = (exprs[0], put)
+                left, right = (trace.ctx.in_unknowns(x) for x in raw)
+                if not put.free_symbols and trace.holds(
+                    [Pair(f"{line.sides[0]} = {text}", left, right, 1e-3, raw)], world
+                ):
+                    return True
+    return False
+
+
+def plain_named(trace: Trace, line: Read, bad: Pair, world: list[Values]) -> tuple[str, str] | None:
+    """The words and name of a slip in a line of numbers: a body's speed for its component
+    (``e_speeds``), a given copied wrongly (``copied_wrong``); None for neither."""
+    if speed_for_component(trace, line, world):
+        return SPEEDS, "e_speeds"
+    given = given_copied(trace, bad)
+    return (given, "copied_wrong") if given else None

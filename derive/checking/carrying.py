@@ -90,6 +90,9 @@ class Carrying:
         carried through the arithmetic of a side of numbers only (so a number near the value
         from another formula, ``½(0.020)(300 - 1.49)²`` for 900 - 4.48, is not within it)."""
         texts = [sides[j] for j in ik]
+        exact = _whole_numbers(texts, raw, ik)
+        if exact is not None:  # 6750 + 792 = 7452: whole numbers added are exact, not 7542 at 3 figures
+            return exact
         whole = literal_tolerance(f"{' = '.join(texts)} {worked}", self.ctx.data)
         plain = [j for j in ik if not raw[j].free_symbols and number_of(raw[j]) is not None]
         values = [abs(complex(number_of(raw[j]))) for j in plain]  # type: ignore[arg-type]
@@ -212,6 +215,8 @@ class Carrying:
         earlier (``sqrt(12.2^2 + 9.15^2) = 15.25`` after ``v_B2n = 12.2``): carried, not correct;
         so is one in the unknowns that holds given the slip too (``v_B = sqrt(71.0^2 + 108.3^2)
         = 129.5``, near the true 128.9 only because the t component is the larger)."""
+        if self.world is not None and self._writes_copied(line) and self.holds(pairs, self.world):
+            return True  # 0.3 = (v_B2 - v_A2)/(19.567 - 0): the given as copied, put in
         working = " ".join(line.sides[:-1]).replace(" ", "").replace("*", "")
         terms = any(re.search(rf"(?<![\w.]){re.escape(t)}(?!\w)", working) for t in self.wrong_terms)
         if not decimals(line.sides[:-1]) & self.wrong_values and not terms and not self._wrong_integers(line):
@@ -219,6 +224,11 @@ class Carrying:
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             return self.world is not None and self.holds(pairs, self.world) and self._moved(pairs)
         return True
+
+    def _writes_copied(self, line: Line) -> bool:
+        """Whether ``line`` writes, on any side, a decimal given as the student copied it wrongly."""
+        written = {number_of(sympy.Float(d)) for d in decimals(line.sides)}
+        return any(number_of(v) in written for v in self.copied.values() if not v.free_symbols)
 
     def _wrong_integers(self, line: Line) -> bool:
         """Whether the working of ``line`` has a whole number the student wrote as the value of a
@@ -315,3 +325,22 @@ class Carrying:
             if worked is None or v is None or abs(v - worked) > _slack(side) * max(abs(v), abs(worked)):
                 return False
         return True
+
+
+#: A side of whole numbers added or subtracted only (``6750 + 792``, ``45\,000 + 13\,200``).
+_WHOLE = re.compile(r"^\s*\d+(?:\s*[+\-−]\s*\d+)*\s*$")
+
+
+def _whole_numbers(texts: list[str], raw: list[sympy.Expr], ik: tuple[int, int]) -> float | None:
+    """The slack of ``a + b = c`` in whole numbers alone (one on each side at least two digits):
+    a unit in the last place the result is written to (7540 rounds to tens), as a fraction of
+    it; None for any other pair."""
+    plain = [re.sub(r"\\[,;:!]|\{,\}|(?<=\d)[ ,](?=\d{3}\b)", "", t) for t in texts]
+    if not all(_WHOLE.match(t) for t in plain) or not any(re.search(r"\d\s*[+\-−]\s*\d", t) for t in plain):
+        return None
+    values = [number_of(raw[j]) for j in ik]
+    if any(v is None or v == 0 for v in values):
+        return None
+    last = plain[-1].strip()
+    unit = 10 ** (len(last) - len(last.rstrip("0"))) if last.isdigit() else 1
+    return unit / max(abs(complex(v)) for v in values)  # type: ignore[arg-type]

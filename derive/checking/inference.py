@@ -31,7 +31,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.numeric import number_of
-from derive.checking.ownnames import combos, directed, named_later, own_angles, velocities_before
+from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
 from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
@@ -103,7 +103,7 @@ def read_lines(
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)
-    defs = _definitions(raw, meanings, [r.aside for r in relations])
+    defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
@@ -112,7 +112,7 @@ def read_lines(
         ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
         key=lambda c: c[0],
     )
-    named_later(raw, mapping)
+    named_later(raw, mapping, problem)
     lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
@@ -243,7 +243,7 @@ _INVERSE = {sympy.tan: sympy.atan, sympy.sin: sympy.asin, sympy.cos: sympy.acos}
 
 
 def _definitions(
-    raw: list[Read], meanings: dict[str, sympy.Expr], asides: list[bool]
+    raw: list[Read], meanings: dict[str, sympy.Expr], asides: list[bool], given: frozenset[str] = frozenset()
 ) -> dict[sympy.Symbol, sympy.Expr]:
     """``v_G = (m_A u_A + m_B u_B)/(m_A + m_B)``: a name first met alone on the left of a
     relation whose right side uses only names with a meaning (and some name): defined; so is
@@ -258,6 +258,8 @@ def _definitions(
         if inverse is not None and left.args[0].is_Symbol and left.args[0].name[1:] in GREEK:
             left, right = left.args[0], inverse(right)  # "tan β = 2/(√3(1 - e))": β defined
         if left.is_Symbol and left.name.startswith(PREFIX) and left not in seen and left.name[1:] not in meanings:
+            if spells_givens(left.name[1:], right, given, r.written):
+                continue  # mu = 9m v_A + m v_B, m and u given: m × u, not a name
             right = right.xreplace(defs)
             open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
             if (right.free_symbols or asides[i] or left.name[1:] in GREEK) and not open_:

@@ -125,7 +125,7 @@ class Trace(Carrying):
             return self.item(replace(line, sides=line.sides[-len(line.exprs) + 1 :], exprs=line.exprs[1:], defines=""))
         if line.defines:
             return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
-        pairs = self.pairs(line)
+        pairs = carried.pairs_of(self, line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             total = labelled.labelled(self.ctx, line, lambda p: self.holds([p], self.truth))
@@ -235,8 +235,7 @@ class Trace(Carrying):
     def _explain(
         self, line: Line, bad: Pair, answer: Item | None
     ) -> tuple[tuple[Diagnosis, ...], int | None, str, str]:
-        """The mistakes that explain the slip ``bad``, the equation it stands for, the rest of
-        the sentence that reports it, and the slip's name where it is not a mistake's."""
+        """The mistakes explaining the slip ``bad``, its equation, the verdict's words, the slip's name."""
         if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
             return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips).", ""
         if not bad.difference.free_symbols & set(self.U):
@@ -251,9 +250,9 @@ class Trace(Carrying):
                 if named[1] == cofunctions.NAME:  # its number, written wrong, is carried on
                     self._number_wrong(bad)
                 return (), None, *named
-            given = carried.given_copied(self, bad)
-            if given:
-                return (), None, given, "copied_wrong"
+            given = carried.plain_named(self, line, bad, self.world or self.truth)
+            if given is not None:  # a body's speed for its component, a given copied wrongly
+                return (), None, *given
             text = " = ".join(line.sides)
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
@@ -266,6 +265,8 @@ class Trace(Carrying):
         diags = fresh if fresh and len(fresh) < len(diags) else diags
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
+        if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
+            return ((), *combined)
         if not diags:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
@@ -286,7 +287,7 @@ class Trace(Carrying):
             )
             if not name and carried.worked_wrongly(self, line, world):
                 return diags, None, WORKING, "arithmetic"
-            found = None if name else carried.unnamed(self, line.sides, bad, world, j)
+            found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
             return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
@@ -296,10 +297,9 @@ class Trace(Carrying):
         return diags, j, f": it is {words.EQUATION_WORDS[j]}, but it {said}.", ""
 
     def _in_mistake_world(self, bad: Pair) -> tuple[Diagnosis, ...]:
-        """The mistake whose equations, in place of those it changes (the student's own slips
-        kept), give velocities ``bad`` holds for: ``20(3.05) + 5(-9.15) = 25 v_t`` is right for
-        one t velocity (the system's t momentum); ``e = (3.55 - 0.2)/(6 + 2)`` for B's sign lost
-        in the approach, with the student's 3.55. Those velocities become the student's."""
+        """The mistake whose equations, in place of those it changes (the student's slips kept),
+        give velocities ``bad`` holds for (``20(3.05) + 5(-9.15) = 25 v_t``: the system's t
+        momentum; ``e = (3.55 - 0.2)/(6 + 2)``: B's sign lost). They become the student's."""
         own = {j for _n, j in self.replaced}
         current = self.world if self.world is not None else self.truth
         for o in self.ctx.singles():

@@ -68,13 +68,31 @@ def _holds_at(exprs: tuple[sympy.Expr, ...], values: dict) -> bool | None:
     return all(abs(a - nums[0]) <= 0.01 * max(abs(a), abs(nums[0]), 1e-9) for a in nums[1:])
 
 
-def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr]) -> None:
+def spells_givens(name: str, right: sympy.Expr, given: frozenset[str], written: str) -> bool:
+    """Whether a Greek letter's name typed in letters (``mu``, not ``\\mu`` or ``μ``, the
+    reduced mass) set equal to an expression in names (not a number: ``mu = 0.4`` is a
+    coefficient) is the product of the givens it spells, m × u where m and u are given
+    (``mu = 9m v_A + m v_B``, a momentum right or wrong)."""
+    return (
+        len(name) >= 2
+        and name.isalpha()
+        and all(c in given for c in name)
+        and bool(right.free_symbols - {DEG})
+        and re.search(rf"(?<![\\A-Za-z]){name}(?![A-Za-z])", written) is not None
+    )
+
+
+def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr], given: dict | None = None) -> None:
     """``φ = 90° − θ`` after ``tan φ = e tan θ``: a name nothing else gave a meaning, set equal
-    alone to an expression in known names, is the student's name for it on every line."""
+    alone to an expression in known names, is the student's name for it on every line; one
+    that spells given letters (``mu``) is their product (:func:`spells_givens`)."""
     for i, r in enumerate(raw):
         if r.exprs is None or len(r.exprs) != 2 or r.defines:
             continue
         left, right = r.exprs[0], r.exprs[1].xreplace(mapping)
+        if given and left.is_Symbol and spells_givens(left.name[len(PREFIX) :], right, frozenset(given), r.written):
+            mapping.setdefault(left, sympy.Mul(*(given[c] for c in left.name[len(PREFIX) :])))
+            continue
         if (
             left.is_Symbol
             and left.name.startswith(PREFIX)
