@@ -43,10 +43,10 @@ def _wall(j_sign: float = 1.0, ke_of_difference: bool = False) -> dict:
     return {"v_A2": -speed, "J_n": m * (u + j_sign * speed), "T_1": t_1, "T_2": t_2, "T_lost": lost}
 
 
-def _two_cars(b_sign: float = 1.0) -> dict:
+def _two_cars() -> dict:
     g = _given("mcasco-two-cars-no-bounce")
     m_a, m_b = g["W_A"] / G_FT, g["W_B"] / G_FT
-    v = (m_a * g["v_A1"] + m_b * b_sign * g["v_B1"]) / (m_a + m_b)
+    v = (m_a * g["v_A1"] + m_b * g["v_B1"]) / (m_a + m_b)  # perfectly plastic
     return {"v_A2": v, "v_B2": v}
 
 
@@ -58,6 +58,21 @@ def _suitcases(reversed_nlr: bool = False) -> dict:
         return {"v_A2": v_a, "v_B2": v_b}
     v_b = (m_a * u - m_a * e * u) / (m_a + m_b)  # v_A - v_B = e u
     return {"v_A2": v_b + e * u, "v_B2": v_b}
+
+
+def _glancing() -> dict:
+    g = _given("mcasco-glancing-disks-us")
+    m_a, m_b = g["W_A"] / G_FT, g["W_B"] / G_FT
+    u_n, u_t = g["v_A1"] * math.cos(math.radians(30)), g["v_A1"] * math.sin(math.radians(30))
+    v_an, v_bn = _after(m_a, m_b, g["e"], u_n, 0.0)
+    return {"v_A2n": v_an, "v_B2n": v_bn, "v_A2t": u_t, "v_A2": math.hypot(v_an, u_t), "v_B2": abs(v_bn)}
+
+
+def _aqa_2007_oblique(u: float, e: float, swapped: bool = False) -> dict:
+    """Equal balls, B at rest, A's path at 30 deg to the line of centres (v09: sin for cos)."""
+    along = u * (math.sin(math.radians(30)) if swapped else math.cos(math.radians(30)))
+    v_a, v_b = _after(1.0, 1.0, e, along, 0.0)
+    return {"v_A2n": v_a, "v_B2": v_b}
 
 
 def _ocr_2006_find_e(v_a: float | None = None) -> dict:
@@ -118,12 +133,11 @@ def _cie_2012_q2(u: float, _e: float, ke_of_difference: bool = False) -> dict:
 
 
 NUMERIC = {
-    "v02-goalie-reduced-mass.tex": (lambda: _goalie(False), None),
+    "v02-glancing-disks-n-t.tex": (_glancing, None),
     "v03-wall-away-positive.txt": (_wall, None),
     "v04-two-cars-slugs-left.md": (_two_cars, None),
     "v06-suitcases-nlr-reversed.txt": (_suitcases, lambda: _suitcases(reversed_nlr=True)),
     "v08-ocr-2006-find-e-copied.tex": (_ocr_2006_find_e, lambda: _ocr_2006_find_e(v_a=3.0)),
-    "v09-two-cars-b-sign.txt": (_two_cars, lambda: _two_cars(b_sign=-1.0)),
     "v10-goalie-ke-after-puck-only.md": (lambda: _goalie(False), lambda: _goalie(True)),
     "v12-wall-two-slips.txt": (_wall, lambda: _wall(j_sign=-1.0, ke_of_difference=True)),
     "v13-ocr-2014-two-slips.md": (_ocr_2014, lambda: _ocr_2014(b_sign=1.0, t_1_slip=True)),
@@ -134,6 +148,10 @@ SYMBOLIC = {
     "v01-edexcel-2004-q-first.md": (_edexcel_2004, None),
     "v05-edexcel-2011-relative.tex": (_edexcel_2011, None),
     "v07-cie-2012-impulse-ke-diff.md": (_cie_2012_q2, lambda u, e: _cie_2012_q2(u, e, ke_of_difference=True)),
+    "v09-aqa-2007-oblique-sin-cos.txt": (
+        _aqa_2007_oblique,
+        lambda u, e: _aqa_2007_oblique(u, e, swapped=True),
+    ),
     "v11-edexcel-2004-masses-swapped.tex": (_edexcel_2004, lambda u, e: _edexcel_2004(u, e, swapped=True)),
 }
 
