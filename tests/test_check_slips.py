@@ -774,12 +774,13 @@ def test_a_sign_lost_combining_two_right_equations_is_algebra_not_a_mistake_they
     assert got[4][1] == "algebra"
 
 
-@pytest.mark.parametrize(("total", "status"), [("7020", "correct"), ("7000", "correct"), ("6930", "wrong")])
+@pytest.mark.parametrize(("total", "status"), [("7020", "correct"), ("7.0e3", "correct"), ("6930", "wrong")])
 def test_whole_numbers_added_wrongly_in_a_chain_of_rounded_decimals_are_arithmetic(
     tmp_path, total: str, status: str
 ) -> None:
     # 140 000 kg at 0.300 m/s and 100 000 kg at 0.120 m/s the other way (by hand): ½(140 000)(0.09)
-    # = 6300 and ½(100 000)(0.0144) = 720, T_1 = 7020 J (7000 at two figures); 6300 + 720 written
+    # = 6300 and ½(100 000)(0.0144) = 720, T_1 = 7020 J (7.0e3 at two figures; a bare 7000 reads as four
+    # figures, and 0.120 is exact data, so it is a slip); 6300 + 720 written
     # 6930 is a slip of adding, though within the slack of the first side's three-figure decimals.
     problem = tmp_path / "ke.toml"
     problem.write_text(
