@@ -11,6 +11,7 @@ import math
 
 import pytest
 from test_derivation_corpus_data import CASES, _formula, _given
+from test_derivation_corpus_data import _thrown_down as _thrown_down_from
 
 V_CASES = {c.name: c for c in CASES if c.name.startswith("v")}
 G_FT = 32.2
@@ -95,16 +96,7 @@ def _ocr_2014(b_sign: float = -1.0, t_1_slip: bool = False) -> dict:
 
 
 def _thrown_down() -> dict:
-    g = _given("chain-ocr-m2-2015-thrown-down-bounce")
-    v_1 = math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"])
-    v_2 = g["e_floor"] * v_1
-    return {
-        "v_1": v_1,
-        "v_2": v_2,
-        "h_2": v_2**2 / (2 * g["g"]),
-        "J": g["m"] * (v_1 + v_2),
-        "E_lost": 0.5 * g["m"] * (v_1**2 - v_2**2),
-    }
+    return _thrown_down_from(_given("chain-ocr-m2-2015-thrown-down-bounce"))
 
 
 def _drop_rebound(rise_factor: float = 2.0) -> dict:
