@@ -115,7 +115,7 @@ _SPEED_NAMED = (
 )
 
 
-_LETTER = r"([A-Za-z](?:_?\w{1,2})?)"
+_LETTER = rf"({_ONE_NAME})"
 #: One body's speeds before and after, in one breath: "let the speed be u before and v after",
 #: "its speed is u before the impact and v after it", "speeds u and v before and after".
 _SPEEDS_BEFORE_AFTER = (
