@@ -1,7 +1,8 @@
 """A line labelled in words and worked in numbers: a total of the momenta before the impact
 (``p before = 150000 x 0.300 + 110000 x 0.120 = 58200``), a component before. The checker
-reads such a line as arithmetic only (its first side is words or a name of the student's own), but a teacher marks it against the total momentum the
-problem gives, and names the slip (B's velocity with the wrong sign, the masses exchanged).
+reads such a line as arithmetic only (its first side is words or a name of the student's own),
+but a teacher marks it against the total momentum the problem gives, and names the slip (B's
+velocity with the wrong sign, the masses exchanged).
 
 :func:`momentum_before` gives the relation "the total momentum before = that working" when the
 line is labelled a momentum before and the working is the total with a common mistake in its

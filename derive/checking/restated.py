@@ -1,10 +1,11 @@
 """Givens restated in the student's names: ``Given: m = 0.060 kg, v = 28 m/s``, ``Puck: v_{1i} =
 35.0 m/s``, ``v=35.0 m/s`` on the first lines. A line before the working whose relations are all
-a name set to a number, where a number is the problem's value of exactly one given velocity (to the figures
-written, either sign: the student's positive may be derive's negative), declares that name as
-that given: it is never a slip, and ``v`` there is the speed before, not the habit's velocity
-after. Written without a sign, it is the given's size (``v = 4`` where the student's positive
-points out of the wall: ``v_{x,i} = -v``); with one, the velocity. A zero says too little (B at rest, a velocity after that vanishes) and declares nothing.
+a name set to a number, where a number is the problem's value of exactly one given velocity (to
+the figures written, either sign: the student's positive may be derive's negative), declares that
+name as that given: it is never a slip, and ``v`` there is the speed before, not the habit's
+velocity after. Written without a sign, it is the given's size (``v = 4`` where the student's
+positive points out of the wall: ``v_{x,i} = -v``); with one, the velocity. A zero says too
+little (B at rest, a velocity after that vanishes) and declares nothing.
 """
 
 from __future__ import annotations
