@@ -139,6 +139,7 @@ CORRECT: dict[str, list[str]] = {
         "4 x 12 + 8 x 4 = 4 x v_A2 + 8 x v_B2",
         "KE before = 0.5x4x12^2 + 0.5x8x4^2 = 352 J",  # x for times, typed without spaces
         "4x12 + 8x4 = 4x4 + 8x8",
+        "KE after = 0.5x4.0x4.0^2 + 0.5x8.0x8.0^2 = 288 J",
         "KE lost = 352 J − 288 J = 64 J",
         "v_B2 - v_A2 = 0.5(12 m/s - 4 m/s) = 4 m/s",
         "KE lost = 6.4E1 J",
@@ -348,6 +349,7 @@ WRONG: dict[str, list[str]] = {
         "KE lost = 352 J − 280 J = 72 J",
         "4 x 12 + 8 x 4 = 8 x v_A2 + 4 x v_B2",
         "KE before = 0.5x4x12^2 + 0.5x8x4^2 = 288 J",
+        "KE after = 0.5x4.0x4.0^2 + 0.5x8.0x8.0^2 = 352 J",
         "$v_{A2} = 5 m/s$",
         r"$v_{B2} = 6\ ms^{-1}$",
         "v_{B2} = 6",
