@@ -35,7 +35,6 @@ from derive.checking.ownnames import combos, directed, named_later, own_angles, 
 from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
-from derive.checking.totals import signed_change
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -90,7 +89,7 @@ def read_lines(
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
-        rewritten.append(signed_change(r.sides, sides))  # ΔKE = 6523 - 7542 = -1019: -T_lost
+        rewritten.append(sides)
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {

@@ -247,7 +247,7 @@ def _primed_in(text: str, stem: str) -> bool:
 
 
 #: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).
-_CHANGE = re.compile(r"^\s*(?:\\?Delta|Δ)\s*(?:KE|K|E_?k|T)\s*$")
+_CHANGE = re.compile(r"^\s*(?:\\?Delta|Δ)\s*(?:KE|K|E_?k|E|T)\s*$")
 
 
 def energy_change(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:

@@ -31,9 +31,8 @@ from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
-from derive.checking.totals import totals
 from derive.checking.wordnames import in_words, says_what
-from derive.mathtext.notation import student
+from derive.mathtext.notation import glued_times, student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import DIMENSIONLESS, MASS
@@ -126,8 +125,7 @@ def rewrite(text: str, known: set[str]) -> str:
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
     text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
-    for _ in range(2):  # 0.5x0.8x1.2^2: x for times between numbers typed without spaces
-        text = _X_GLUED.sub(r"\1*", text)
+    text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
@@ -158,8 +156,6 @@ def rewrite(text: str, known: set[str]) -> str:
 
 #: A number glued to one name after a slash, the term ending there (``/5m``, ``/2g)``, not
 #: ``/2mv^2``): one divisor, as the student means it.
-#: x for times between two numbers typed without spaces, the first a number of its own (not v2x3).
-_X_GLUED = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[xX](?=\.?\d)")
 _GLUED_DIVISOR = re.compile(r"/\s*(\d+\.?\d*[A-Za-z](?:_[A-Za-z0-9]+)?)(?=\s*(?:$|[)+\-=*/,;]))")
 
 
@@ -366,7 +362,6 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
-    out.update(totals(ctx, used))  # p_i, p_f: the total momentum before and after
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
 
 

@@ -114,6 +114,19 @@ _STANDARD_FORM = re.compile(
 #: ``x`` for times, spaced, between a number (or bracket) and a number, a bracket or a name with a
 #: subscript (``4 x 12``, ``2 x (3 + 1)``, ``4 x v_A2``): a student's own x is not written so.
 _X_TIMES = re.compile(r"(?<=[\d)])\s+[xX]\s+(?=[\d(.]|[A-Za-z]\w*_)")
+#: x for times between two numbers typed without spaces, the first a number of its own (not v2x3).
+_X_GLUED = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[xX](?=\.?\d)")
+
+
+def glued_times(text: str) -> str:
+    """``0.5x0.8x1.2^2`` as ``0.5*0.8*1.2^2``: x typed for times between numbers, without spaces.
+
+    >>> glued_times("0.5x0.8x1.2^2 + v2x3")
+    '0.5*0.8*1.2^2 + v2x3'
+    """
+    for _ in range(2):  # each inner number stands on both sides of an x
+        text = _X_GLUED.sub(r"\1*", text)
+    return text
 
 
 #: A mixed number (``2 2/9``, ``1 1/2``): a whole number, a space and a proper fraction.
