@@ -515,3 +515,32 @@ def test_mu_alone_on_the_left_is_m_times_u_even_when_the_momentum_is_wrong(tmp_p
     if expected == "wrong":
         slip = next(i for i in report(str(problem), work).items if i.status == "wrong")
         assert "masses_swapped" in {d.mistake for d in slip.diagnosis}
+
+
+#: CIE 9231 Nov 2014 Q1: A (2m) at 4u meets B (m) at 3u head on: the speeds before are 4u and 3u
+#: (B's velocity along A's direction is -3u). OCR M3 2007: A at 15 m/s at alpha to the line of
+#: centres (sin alpha = 0.8), B at 12 m/s along it: the speeds before are 15 and 12 m/s.
+HEAD_ON = "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses"
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "speed of A before = 4u\nspeed of B before = 3u",
+        "initial speed of A = 4u\ninitial speed of B = 3u",
+        "A's speed before = 4u\nB's initial speed = 3u",
+        "Speed of A before $= 4u$, speed of B before $= 3u$.",
+    ],
+)
+def test_a_speed_before_said_in_words_is_the_size_of_the_velocity_before(work: str) -> None:
+    assert set(by_line(HEAD_ON, work).values()) == {"correct"}
+
+
+def test_a_speed_before_in_words_set_to_a_wrong_value_is_wrong_not_unread() -> None:
+    got = by_line(HEAD_ON, "speed of A before = 4u\nspeed of B before = -3u")
+    assert got == {"1": "correct", "2": "wrong"}
+
+
+def test_a_speed_before_in_an_oblique_impact_is_the_speed_not_a_component() -> None:
+    got = by_line("ocr-m3-2007-oblique-sin-alpha-0p8", "speed of A before = 15 m/s\nspeed of B before = 12 m/s")
+    assert got == {"1": "correct", "2": "correct"}

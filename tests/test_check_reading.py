@@ -1132,3 +1132,39 @@ def test_a_minus_after_a_label_in_text_is_kept(label: str) -> None:
 def test_a_given_written_without_its_sign_is_exact_data() -> None:
     assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.225") == ["correct"]
     assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.235") == ["wrong"]
+
+
+# --- prose around a relation typed in inline mathematics --------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("From (2), $v_B = v_A + 7eu$. Put into (1):", [("v_B", "v_A + 7eu")]),
+        ("Sub $v_B = v_A + 7eu$ into (1):", [("v_B", "v_A + 7eu")]),
+        ("Using (1) and (2), $v_B = v_A + 7eu$, then substitute in (1)", [("v_B", "v_A + 7eu")]),
+        (r"Substituting \(v_B = v_A + 7eu\) in eqn 1 gives", [("v_B", "v_A + 7eu")]),
+        ("$v_B = 1.2$ m/s to the left", [("v_B", "1.2")]),
+        ("Speed of B after $= 6.5v$, which is less", [("Speed of B after", "6.5v")]),
+    ],
+)
+def test_words_around_a_whole_relation_in_inline_maths_are_not_its_sides(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+#: CIE 9231 Nov 2014 Q1 (A 2m at 4u, B m at 3u toward it): CLM 2m(4u) - m(3u) = 2m v_A + m v_B,
+#: so 5u = 2v_A + v_B; NEL v_B - v_A = e(4u + 3u) = 7eu; then 5u = 3v_A + 7eu, v_A = (5 - 7e)u/3.
+HEAD_ON = "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses"
+
+
+def test_a_relation_announced_in_words_before_a_substitution_is_judged() -> None:
+    work = (
+        "$5u = 2v_A + v_B$ (1)\n\n$v_B - v_A = 7eu$ (2)\n\nFrom (2), $v_B = v_A + 7eu$. Put into (1):\n\n"
+        "$5u = 3v_A + 7eu$\n\nSub $v_A = (5 - 7e)u/3$ into (2) for B.\n"
+    )
+    got = {i.name: i.status for i in report(HEAD_ON, work).items if i.kind == "line"}
+    assert got == {"1": "correct", "3": "correct", "5": "correct", "7": "correct", "9": "correct"}
+
+
+def test_a_wrong_relation_announced_in_words_is_wrong_not_unread() -> None:
+    work = "$5u = 2v_A + v_B$ (1)\n\nSub $v_B = v_A + 5eu$ into (1):\n"
+    got = {i.name: i.status for i in report(HEAD_ON, work).items if i.kind == "line"}
+    assert got == {"1": "correct", "3": "wrong"}

@@ -181,7 +181,19 @@ def by_value(
                 hits.append(e)
         if hits:
             out[name] = hits[0]  # equal masses: either, and the first is A's
+        elif (only := _only_one(table.get(dim, []))) is not None:  # "J = 0.238": the one impulse, worked wrongly
+            x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
+            out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _only_one(quantities: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
+    """The one quantity of a kind, up to its sign (the impulse ``J_n`` and ``-J_n``), or None
+    where the kind has more than one (two masses, three energies)."""
+    first = {what.lstrip("-") for what, _e in quantities}
+    if len(first) != 1:
+        return None
+    return next(e for what, e in quantities if not what.startswith("-"))
 
 
 def of_kind(dim: Dim | None, what: str) -> bool:

@@ -254,8 +254,11 @@ _PROSE_HEAD = re.compile(
 )
 
 
-#: A clause of words and a comma before a relation, and a verb that leads in (``Energy lost, using ΔKE``).
-_CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?")
+#: A clause of words (and equations' tags: ``From (2),``) and a comma before a relation, and a verb that
+#: leads in (``Energy lost, using ΔKE``).
+_CLAUSE_HEAD = re.compile(
+    r"^\s*(?:[A-Za-z][A-Za-z' ]*|(?=\(\s*\d))(?:\(\s*\d{1,2}[a-z]?\s*\)[A-Za-z' ]*)*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?"
+)
 
 
 #: Words that lead into a side that is a number's working (``that's 0.3888/1.08``, ``which is 2 + 3``);

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 
 from derive.mathtext.arrows import arrows_said
 from derive.mathtext.bracketed import bracketed_names
+from derive.mathtext.inline import words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
@@ -220,6 +221,8 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
+        if words_end_it(out[-1], raw[i:]):
+            out.append(";")  # "Sub $v_Q = v_P + 5ue$ into (1):": the words after are not the relation's
 
 
 #: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
