@@ -33,11 +33,7 @@ def _said_after(text: str) -> bool:
     or a direction (``$v = 1.2$ to the left``)."""
     token = re.match(r"^[\s.,;:]*([^\s,;]+)", text)
     head = token.group(1).rstrip(".:") if token else ""
-    return (
-        is_unit(head)
-        or bool(direction_of(f"1 {text.strip(' .,;:')}"))
-        or _UNITISH.match(text) is not None
-    )
+    return is_unit(head) or bool(direction_of(f"1 {text.strip(' .,;:')}")) or _UNITISH.match(text) is not None
 
 
 #: The start of a unit after a number (``kg·m/s``, ``N s``, ``m s^-1``): the unit's, not words.
