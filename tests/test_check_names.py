@@ -544,3 +544,29 @@ def test_a_speed_before_in_words_set_to_a_wrong_value_is_wrong_not_unread() -> N
 def test_a_speed_before_in_an_oblique_impact_is_the_speed_not_a_component() -> None:
     got = by_line("ocr-m3-2007-oblique-sin-alpha-0p8", "speed of A before = 15 m/s\nspeed of B before = 12 m/s")
     assert got == {"1": "correct", "2": "correct"}
+
+
+#: Giancoli 7-18 (0.060 kg at 28 m/s, 45° to a wall, same speed back): the normal component
+#: 28 cos 45° = 19.80 m/s reverses, so the ball's change of momentum along the normal is
+#: 0.060(-19.80 - 19.80) = -2.376 kg m/s and the impulse on it has size 2.376 N s.
+TENNIS = "giancoli-7-18-tennis-ball-wall-45deg"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("Dp = 0.060(-19.80 - 19.80) = -2.376\nimpulse = 2.38 N s", ["correct", "correct"]),
+        (
+            "change in momentum = 0.060(-19.80 - 19.80) = -2.376\nso the impulse on the ball = 2.376 N s",
+            ["correct"] * 2,
+        ),
+        ("impulse = change in momentum = 0.060(19.80 + 19.80) = 2.376 N s", ["correct"]),
+        ("Δp = 0.060(-19.80 - 19.80) = -2.367\nimpulse exerted by the wall = 2.367 N s", ["wrong", "carried"]),
+        ("dp = 0.060(-19.80 - 19.80) = -2.367\nJ = 2.367 N s", ["wrong", "carried"]),
+        ("impulse = change in momentum = 0.060(19.80 - 19.80) = 0", ["wrong"]),
+        ("the impulse = 3.1 N s", ["wrong"]),
+    ],
+)
+def test_an_impulse_or_a_change_of_momentum_in_words_is_the_impulse(work: str, expected: list) -> None:
+    got = by_line(TENNIS, work)
+    assert [got.get(str(k + 1)) for k in range(len(expected))] == expected

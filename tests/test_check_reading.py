@@ -1168,3 +1168,40 @@ def test_a_wrong_relation_announced_in_words_is_wrong_not_unread() -> None:
     work = "$5u = 2v_A + v_B$ (1)\n\nSub $v_B = v_A + 5eu$ into (1):\n"
     got = {i.name: i.status for i in report(HEAD_ON, work).items if i.kind == "line"}
     assert got == {"1": "correct", "3": "wrong"}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (r"\textbf{Q5} \quad $m = 0.2$ kg, $u = 5$ m/s", [("m", "0.2"), ("u", "5")]),
+        ("Q3 v = 2.4", [("v", "2.4")]),
+        ("Question 7: e = 0.5", [("e", "0.5")]),
+        ("Q12a  x = 3", [("x", "3")]),
+        ("Q5 = 3", [("Q5", "3")]),  # a name, not a question's number
+    ],
+)
+def test_a_questions_number_before_a_relation_is_not_its_name(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+#: AQA M3 June 2016 Q6(a): A (speed u) moves at 60° to the line of centres, B at rest: along the
+#: line A's component is u cos 60° = u/2, across it u sin 60° = (√3/2)u (unchanged by the impact).
+ALONG_WALL = "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("along l.o.c: u cos60 = u/2\nperp to l.o.c: u sin60 = (root3/2)u, unchanged by the impact", ["correct"] * 2),
+        (
+            "along the line of centres: A has u sin60 = (root3/2)u\n"
+            "perpendicular to the line of centres: u cos60 = u/2, unchanged",
+            ["wrong", "wrong"],
+        ),
+        ("along loc: u sin 60 = (root3/2)u", ["wrong"]),
+    ],
+)
+def test_a_symbolic_component_labelled_by_its_axis_in_words_is_that_component(work: str, expected: list) -> None:
+    items = [i for i in report(ALONG_WALL, work).items if i.kind == "line"]
+    assert [i.status for i in items] == expected
+    assert all(i.slip == "sin_cos_swapped" for i in items if i.status == "wrong")

@@ -30,7 +30,14 @@ import sympy
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
-from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
+from derive.checking.spellings import (
+    angle_sum_in_degrees,
+    greek_letters,
+    impulse_name,
+    marked_names,
+    notes_names,
+    subscript,
+)
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import glued_times, student
 from derive.mathtext.reader import Relation
@@ -121,6 +128,7 @@ GREEK = frozenset(
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
+    text = impulse_name(text) or text  # "impulse on the ball": one name
     text = marked_names(re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text))  # v₁ -> v_1
     text = greek_letters(text, known)
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.

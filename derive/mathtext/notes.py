@@ -126,7 +126,7 @@ _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
 _AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\(?:checkmark|cmark|tick|ding\s*[{(]\s*5[12]\s*[})])(?![A-Za-z]))\s*[^=✓✔]*$")
 #: A clause after a comma that says no more of the value (``= u(2 + 3e), in its original direction``).
 _CLAUSE = re.compile(
-    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the)\b"
+    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the|unchanged|unaltered|unaffected|constant|conserved|same)\b"
     r"(?![^=\d]*\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way)\b)[^=\d()\[\]]*$",
     re.I,
 )

@@ -84,9 +84,9 @@ _COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 #: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
 _PART = re.compile(
-    r"^\s*(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
+    r"^\s*(?:(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
     r"(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)|(?:[a-h]|[ivx]{1,4})\))(?:\s*\(\s*(?:[a-h]|[ivx]{1,4})\s*\))*"
-    r"\s*[:.]?\s+(?=[^\s=+*/^)-])",
+    r"|(?:Q|question\s*)\d{1,2}[a-h]?)\s*[:.]?\s+(?=[^\s=+*/^)-])",  # "Q5 m = 0.2": a question's number
     re.I,
 )
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
