@@ -530,15 +530,24 @@ HEAD_ON = "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses"
         "initial speed of A = 4u\ninitial speed of B = 3u",
         "A's speed before = 4u\nB's initial speed = 3u",
         "Speed of A before $= 4u$, speed of B before $= 3u$.",
+        "A initial speed = 4u\nB initial velocity = -3u",
+        "initial velocity of A = 4u\nvelocity of B before = -3u",
     ],
 )
 def test_a_speed_before_said_in_words_is_the_size_of_the_velocity_before(work: str) -> None:
     assert set(by_line(HEAD_ON, work).values()) == {"correct"}
 
 
-def test_a_speed_before_in_words_set_to_a_wrong_value_is_wrong_not_unread() -> None:
-    got = by_line(HEAD_ON, "speed of A before = 4u\nspeed of B before = -3u")
-    assert got == {"1": "correct", "2": "wrong"}
+@pytest.mark.parametrize(
+    "work",
+    [
+        "speed of A before = 4u\nspeed of B before = -3u",
+        "A initial speed = 4u\nB initial velocity = 3u",
+        "initial velocity of A = 4u\nvelocity of B before = 3u",
+    ],
+)
+def test_a_speed_before_in_words_set_to_a_wrong_value_is_wrong_not_unread(work: str) -> None:
+    assert by_line(HEAD_ON, work) == {"1": "correct", "2": "wrong"}
 
 
 def test_a_speed_before_in_an_oblique_impact_is_the_speed_not_a_component() -> None:

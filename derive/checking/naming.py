@@ -31,7 +31,9 @@ from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
 from derive.checking.spellings import (
+    BODY_WHEN,
     angle_sum_in_degrees,
+    body_when,
     greek_letters,
     impulse_name,
     marked_names,
@@ -53,11 +55,7 @@ PHRASES = (
     ),
     (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
     (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
-    (  # "speed of A before", "initial speed of B", "A's speed before", "A's initial speed": a speed before
-        r"(?:initial\s+speed\s+of\s+([AB])|speed\s+of\s+([AB])\s+(?:before|initially)"
-        r"|(?<![\w'])([AB])['’]s\s+(?:initial\s+speed|speed\s+before))\b",
-        lambda m: f"speed_{m[1] or m[2] or m[3]}1",
-    ),
+    (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
     (r"(?:final\s+)?speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),

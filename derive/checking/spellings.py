@@ -123,3 +123,21 @@ def impulse_name(side: str) -> str | None:
         return None
     name = "impulse" if m[1] else "dp"  # "change in momentum": a name of its own, its sign its own
     return f"{name}_{m[2].upper()}" if m[2] else name
+
+
+#: A body's speed or velocity and when, in words: "speed of A before", "initial velocity of B",
+#: "A's initial speed", "B final velocity", "velocity of A after" (read by :func:`body_when`).
+BODY_WHEN = (
+    r"(?<![\w'])(?:(initial|final)\s+(speed|velocity)\s+of\s+([AB])|(speed|velocity)\s+of\s+([AB])\s+"
+    r"(before|after|initially|finally)|([AB])(?:['’]s)?\s+(initial|final)\s+(speed|velocity))(?![\w'])"
+)
+
+
+def body_when(m: re.Match) -> str:
+    """The name for :data:`BODY_WHEN`'s phrase: ``speed_A1`` (a speed before), ``speed_A`` (after),
+    ``v_A1``, ``v_A2``."""
+    when, kind, body = (m[1], m[2], m[3]) if m[3] else (m[6], m[4], m[5]) if m[5] else (m[8], m[9], m[7])
+    before = when.lower() in ("initial", "before", "initially")
+    if kind.lower() == "speed":
+        return f"speed_{body.upper()}1" if before else f"speed_{body.upper()}"
+    return f"v_{body.upper()}{1 if before else 2}"
