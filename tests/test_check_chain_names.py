@@ -172,3 +172,32 @@ def test_a_carried_product_with_x_for_times_is_carried() -> None:
     found = lines("chain-car-rear-ends-suv-skid", work)
     assert found[3][0] == "wrong"
     assert [found[n][0] for n in (5, 6)] == ["carried"] * 2  # line 4 is another class (numbers for a)
+
+
+@pytest.mark.parametrize(
+    ("problem", "work", "lines_right"),
+    [
+        # OCR M2 2007 (0.2 kg thrown down at 21 m/s from 40 m): v_1^2 = 21^2 + 2(9.8)(40) = 441 + 784
+        # = 1225, v_1 = 35 m/s. The chain's own u is the velocity after the bounce (28 m/s up).
+        (
+            "chain-ocr-m2-2007-rebounds-to-start",
+            "Given: m = 0.2 kg, u = 21 m/s down, h = 40 m\nv_1^2 = 21^2 + 2(9.8)(40) = 1225\nv_1 = 35 m/s",
+            (2, 3),
+        ),
+        # MSU bullet (0.020 kg at 300 m/s into a 4 kg block): V = 0.020(300)/4.020 = 1.4925 m/s.
+        # The chain's own V is that common velocity, not the bullet's 300 m/s.
+        ("chain-msu-bullet-block-swings", "V = 300 m/s, M = 4 kg\nv_1 = 0.020(300)/4.020 = 1.49 m/s", (2,)),
+    ],
+)
+def test_a_given_restated_in_a_name_the_chain_has_for_another_quantity_is_not_marked(
+    problem: str, work: str, lines_right: tuple
+) -> None:
+    got = lines(problem, work)
+    assert got.get(1, ("not read", ""))[0] in ("not read", "correct")
+    assert all(got[n][0] == "correct" for n in lines_right), got
+
+
+def test_a_chain_name_set_to_a_given_after_the_working_is_still_judged() -> None:
+    # OCR M2 2007: the chain's u (after the bounce) is 28 m/s up, not the 21 m/s thrown down.
+    got = lines("chain-ocr-m2-2007-rebounds-to-start", "v_1^2 = 21^2 + 2(9.8)(40) = 1225\nu = 21")
+    assert got[2][0] == "wrong"

@@ -515,3 +515,67 @@ def test_mu_alone_on_the_left_is_m_times_u_even_when_the_momentum_is_wrong(tmp_p
     if expected == "wrong":
         slip = next(i for i in report(str(problem), work).items if i.status == "wrong")
         assert "masses_swapped" in {d.mistake for d in slip.diagnosis}
+
+
+#: CIE 9231 Nov 2014 Q1: A (2m) at 4u meets B (m) at 3u head on: the speeds before are 4u and 3u
+#: (B's velocity along A's direction is -3u). OCR M3 2007: A at 15 m/s at alpha to the line of
+#: centres (sin alpha = 0.8), B at 12 m/s along it: the speeds before are 15 and 12 m/s.
+HEAD_ON = "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses"
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "speed of A before = 4u\nspeed of B before = 3u",
+        "initial speed of A = 4u\ninitial speed of B = 3u",
+        "A's speed before = 4u\nB's initial speed = 3u",
+        "Speed of A before $= 4u$, speed of B before $= 3u$.",
+        "A initial speed = 4u\nB initial velocity = -3u",
+        "initial velocity of A = 4u\nvelocity of B before = -3u",
+    ],
+)
+def test_a_speed_before_said_in_words_is_the_size_of_the_velocity_before(work: str) -> None:
+    assert set(by_line(HEAD_ON, work).values()) == {"correct"}
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "speed of A before = 4u\nspeed of B before = -3u",
+        "A initial speed = 4u\nB initial velocity = 3u",
+        "initial velocity of A = 4u\nvelocity of B before = 3u",
+    ],
+)
+def test_a_speed_before_in_words_set_to_a_wrong_value_is_wrong_not_unread(work: str) -> None:
+    assert by_line(HEAD_ON, work) == {"1": "correct", "2": "wrong"}
+
+
+def test_a_speed_before_in_an_oblique_impact_is_the_speed_not_a_component() -> None:
+    got = by_line("ocr-m3-2007-oblique-sin-alpha-0p8", "speed of A before = 15 m/s\nspeed of B before = 12 m/s")
+    assert got == {"1": "correct", "2": "correct"}
+
+
+#: Giancoli 7-18 (0.060 kg at 28 m/s, 45° to a wall, same speed back): the normal component
+#: 28 cos 45° = 19.80 m/s reverses, so the ball's change of momentum along the normal is
+#: 0.060(-19.80 - 19.80) = -2.376 kg m/s and the impulse on it has size 2.376 N s.
+TENNIS = "giancoli-7-18-tennis-ball-wall-45deg"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("Dp = 0.060(-19.80 - 19.80) = -2.376\nimpulse = 2.38 N s", ["correct", "correct"]),
+        (
+            "change in momentum = 0.060(-19.80 - 19.80) = -2.376\nso the impulse on the ball = 2.376 N s",
+            ["correct"] * 2,
+        ),
+        ("impulse = change in momentum = 0.060(19.80 + 19.80) = 2.376 N s", ["correct"]),
+        ("Δp = 0.060(-19.80 - 19.80) = -2.367\nimpulse exerted by the wall = 2.367 N s", ["wrong", "carried"]),
+        ("dp = 0.060(-19.80 - 19.80) = -2.367\nJ = 2.367 N s", ["wrong", "carried"]),
+        ("impulse = change in momentum = 0.060(19.80 - 19.80) = 0", ["wrong"]),
+        ("the impulse = 3.1 N s", ["wrong"]),
+    ],
+)
+def test_an_impulse_or_a_change_of_momentum_in_words_is_the_impulse(work: str, expected: list) -> None:
+    got = by_line(TENNIS, work)
+    assert [got.get(str(k + 1)) for k in range(len(expected))] == expected

@@ -1132,3 +1132,76 @@ def test_a_minus_after_a_label_in_text_is_kept(label: str) -> None:
 def test_a_given_written_without_its_sign_is_exact_data() -> None:
     assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.225") == ["correct"]
     assert statuses("ocr-m2-2011-spheres-find-e-and-mass", "½(0.2)(1.5)^2 = 0.235") == ["wrong"]
+
+
+# --- prose around a relation typed in inline mathematics --------------------------------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("From (2), $v_B = v_A + 7eu$. Put into (1):", [("v_B", "v_A + 7eu")]),
+        ("Sub $v_B = v_A + 7eu$ into (1):", [("v_B", "v_A + 7eu")]),
+        ("Using (1) and (2), $v_B = v_A + 7eu$, then substitute in (1)", [("v_B", "v_A + 7eu")]),
+        (r"Substituting \(v_B = v_A + 7eu\) in eqn 1 gives", [("v_B", "v_A + 7eu")]),
+        ("$v_B = 1.2$ m/s to the left", [("v_B", "1.2")]),
+        ("Speed of B after $= 6.5v$, which is less", [("Speed of B after", "6.5v")]),
+    ],
+)
+def test_words_around_a_whole_relation_in_inline_maths_are_not_its_sides(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+#: CIE 9231 Nov 2014 Q1 (A 2m at 4u, B m at 3u toward it): CLM 2m(4u) - m(3u) = 2m v_A + m v_B,
+#: so 5u = 2v_A + v_B; NEL v_B - v_A = e(4u + 3u) = 7eu; then 5u = 3v_A + 7eu, v_A = (5 - 7e)u/3.
+HEAD_ON = "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses"
+
+
+def test_a_relation_announced_in_words_before_a_substitution_is_judged() -> None:
+    work = (
+        "$5u = 2v_A + v_B$ (1)\n\n$v_B - v_A = 7eu$ (2)\n\nFrom (2), $v_B = v_A + 7eu$. Put into (1):\n\n"
+        "$5u = 3v_A + 7eu$\n\nSub $v_A = (5 - 7e)u/3$ into (2) for B.\n"
+    )
+    got = {i.name: i.status for i in report(HEAD_ON, work).items if i.kind == "line"}
+    assert got == {"1": "correct", "3": "correct", "5": "correct", "7": "correct", "9": "correct"}
+
+
+def test_a_wrong_relation_announced_in_words_is_wrong_not_unread() -> None:
+    work = "$5u = 2v_A + v_B$ (1)\n\nSub $v_B = v_A + 5eu$ into (1):\n"
+    got = {i.name: i.status for i in report(HEAD_ON, work).items if i.kind == "line"}
+    assert got == {"1": "correct", "3": "wrong"}
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (r"\textbf{Q5} \quad $m = 0.2$ kg, $u = 5$ m/s", [("m", "0.2"), ("u", "5")]),
+        ("Q3 v = 2.4", [("v", "2.4")]),
+        ("Question 7: e = 0.5", [("e", "0.5")]),
+        ("Q12a  x = 3", [("x", "3")]),
+        ("Q5 = 3", [("Q5", "3")]),  # a name, not a question's number
+    ],
+)
+def test_a_questions_number_before_a_relation_is_not_its_name(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+#: AQA M3 June 2016 Q6(a): A (speed u) moves at 60° to the line of centres, B at rest: along the
+#: line A's component is u cos 60° = u/2, across it u sin 60° = (√3/2)u (unchanged by the impact).
+ALONG_WALL = "aqa-m3-2016-june-q6a-path-along-wall-line-at-60deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("along l.o.c: u cos60 = u/2\nperp to l.o.c: u sin60 = (root3/2)u, unchanged by the impact", ["correct"] * 2),
+        (
+            "along the line of centres: A has u sin60 = (root3/2)u\n"
+            "perpendicular to the line of centres: u cos60 = u/2, unchanged",
+            ["wrong", "wrong"],
+        ),
+        ("along loc: u sin 60 = (root3/2)u", ["wrong"]),
+    ],
+)
+def test_a_symbolic_component_labelled_by_its_axis_in_words_is_that_component(work: str, expected: list) -> None:
+    items = [i for i in report(ALONG_WALL, work).items if i.kind == "line"]
+    assert [i.status for i in items] == expected
+    assert all(i.slip == "sin_cos_swapped" for i in items if i.status == "wrong")

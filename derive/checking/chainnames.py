@@ -22,6 +22,7 @@ from derive.checking.naming import PREFIX, Open, read_side
 from derive.checking.report import Item
 from derive.errors import InputError
 from derive.problem.expr import ParseError
+from derive.problem.units import VELOCITY
 
 _NAME = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
 _WHEN = r"(?:just\s+|immediately\s+)?(after|before)\b"
@@ -58,7 +59,45 @@ def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
     is a name, not a relation to judge)."""
     said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
     read = [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    read = [x for x in read if not _restated(ctx, x, read)]
     return {**energies(ctx, read), **said}, read
+
+
+#: A given restated: a name set to a number (``u = 5``, ``h = 1.6``), as a line of givens has it.
+_STATED = re.compile(r"\s*[A-Za-z]\w{0,6}\s*")
+_GIVEN_NUMBER = re.compile(r"\s*[-+]?\s*\d+\.?(\d*)\s*")
+
+
+def _restated(ctx: Context, x: tuple, read: list) -> bool:
+    """Whether ``x`` (relation, sides, expressions) restates a given speed on a line of givens before the
+    working (``Q5  m = 0.2 kg, u = 5 m/s down, h = 1.6 m``: all of its relations a name set to a
+    number) in a name the chain has for another quantity: its number is a given's (to the figures
+    written, either sign) while the relation, read in the chain's names, is false (the chain's ``u``
+    is the velocity after the bounce). A teacher does not mark it; the checker does not judge it."""
+    r, sides, exprs = x
+    worked = [y[0].line for y in read if not _is_stated(y[1])]
+    if not _is_stated(sides) or (worked and r.line >= min(worked)) or len(exprs) != 2:
+        return False
+    m = _GIVEN_NUMBER.fullmatch(sides[1])
+    half = 0.5 * 10 ** -len(m.group(1)) + 1e-12
+    value = abs(float(re.sub(r"\s", "", sides[1])))
+    values = [  # a given speed (``e = 0.7`` for a wall's e is a stage's e, which the chain judges)
+        abs(float(g.value))
+        for g in ctx.problem.givens
+        if g.value is not None and g.value.is_number and g.dim == VELOCITY
+    ]
+    if not any(abs(value - v) <= half for v in values):
+        return False
+    chain = {str(k): v for k, v in ctx.solution.values.items()}
+    own = exprs[0].xreplace({s: chain[s.name] for s in exprs[0].free_symbols if s.name in chain})
+    try:
+        return not own.free_symbols and abs(float(own) - float(exprs[1])) > half
+    except (TypeError, ValueError):
+        return False
+
+
+def _is_stated(sides: tuple) -> bool:
+    return len(sides) == 2 and _STATED.fullmatch(sides[0]) is not None and _GIVEN_NUMBER.fullmatch(sides[1]) is not None
 
 
 def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:

@@ -178,6 +178,10 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
             out[f"speed_{b}"] = derived[f"v_{b}2"][0]
         elif not ctx.problem.oblique and getattr(ctx.model.nm, f"{b}2n", None) is not None:
             out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
+    for b in "AB":  # a speed before ("speed of A before"): the size of the velocity before
+        n, t = (getattr(ctx.model.nm, f"{b}1{c}", None) for c in "nt")
+        if n is not None:
+            out[f"speed_{b}1"] = sympy.sqrt(n**2 + (t**2 if t is not None and ctx.problem.oblique else 0))
     if getattr(ctx.problem, "fixed_B", False) and "speed_A" in out:
         out["speed_after"] = out["speed_A"]  # "rebound speed": only A moves after hitting a wall
     nm = ctx.model.nm

@@ -14,6 +14,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+import sympy
+
 from derive.checking import slipnames
 from derive.checking.context import DEG, Context
 from derive.checking.inference import Read
@@ -89,6 +91,7 @@ def momentum_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> 
 #: The axis a label names: along the line of centres (n), or across it (t).
 _ALONG = re.compile(
     r"(?i)\balong\b|\bparallel\b|line of (?:centres|centers|impact)|\bnormal\b|(?<![A-Za-z])[xn](?![A-Za-z])"
+    r"|\bl\.?\s?o\.?\s?c\b"
 )
 _ACROSS = re.compile(r"(?i)\bperp|\bacross\b|\btangent|plane of contact|(?<![A-Za-z])[yt](?![A-Za-z])")
 
@@ -99,12 +102,18 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     1``), resolves a body's given speed with a common mistake (sin and cos swapped, the angle
     from the other axis); None otherwise."""
     exprs = line.exprs or ()
-    if not getattr(ctx.problem, "oblique", False) or len(exprs) < 2 or any(x.free_symbols - {DEG} for x in exprs):
-        return None
+    givens = {g.symbol for g in ctx.problem.givens}
+    if (
+        not getattr(ctx.problem, "oblique", False)
+        or len(exprs) < 2
+        or any(x.free_symbols - {DEG} - givens for x in exprs)
+    ):
+        return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
     label = _label(line)
-    if not re.search(r"(?i)\b(?:sin|cos)\b", line.sides[0]) or not label:
+    if not re.search(r"(?i)\b(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
         return None
-    along, across = _ALONG.search(label) is not None, _ACROSS.search(label) is not None
+    across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names
+    along = _ALONG.search(label) is not None and not across
     if along == across:
         return None
     names, axis = ctx.equation_names(), "n" if along else "t"
@@ -113,9 +122,11 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     for b in "AB":
         speed = names.get(f"v_{b}1")
         value = ctx.in_unknowns(speed[0]) if speed is not None else None
-        known = value is not None and value.is_number and value != 0 and f"v_{b}1{axis}" in names
-        if known and any(abs(float(t) - float(value)) < 1e-12 for t in written):
+        known = value is not None and value != 0 and f"v_{b}1{axis}" in names
+        if known and value.is_number and any(abs(float(t) - float(value)) < 1e-12 for t in written):
             bodies.append(b)
+        elif known and isinstance(value, sympy.Symbol) and value in exprs[0].free_symbols:
+            bodies.append(b)  # "A has u sin30 = u/2": A's speed u, a letter
     if len(bodies) != 1:
         return None
     sym = names[f"v_{bodies[0]}1{axis}"][0]

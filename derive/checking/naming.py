@@ -30,7 +30,16 @@ import sympy
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
-from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
+from derive.checking.spellings import (
+    BODY_WHEN,
+    angle_sum_in_degrees,
+    body_when,
+    greek_letters,
+    impulse_name,
+    marked_names,
+    notes_names,
+    subscript,
+)
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import glued_times, student
 from derive.mathtext.reader import Relation
@@ -46,6 +55,7 @@ PHRASES = (
     ),
     (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
     (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
+    (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
     (r"(?:final\s+)?speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),
@@ -116,6 +126,7 @@ GREEK = frozenset(
 
 def rewrite(text: str, known: set[str]) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
+    text = impulse_name(text) or text  # "impulse on the ball": one name
     text = marked_names(re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text))  # v₁ -> v_1
     text = greek_letters(text, known)
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.

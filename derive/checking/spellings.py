@@ -94,3 +94,50 @@ def marked_names(text: str) -> str:
     )
     text = re.sub(r"(?<![A-Za-z\\])([A-Za-z]{1,2})_\{([A-Za-z0-9]{1,4})\}", r"\1_\2", text)
     return re.sub(r"(?<![\w\\])([uvVw])([AB12])(\d?[nt]?)(?=')", r"\1_\2\3", text)
+
+
+#: An impulse said in words as all of a side (``impulse``, ``the impulse on the ball``, ``impulse on
+#: B``, ``impulse exerted by the wall``, ``change in momentum``, the impulse on the body): the body it
+#: acts on where a letter says it.
+_IMPULSE_SAID = re.compile(
+    r"^\s*(?:the\s+)?(?:(impulse)|change\s+(?:in|of)\s+(?:its\s+|the\s+)?momentum|momentum\s+change)(?:\s+(?:on|exerted\s+on|given\s+to|of|by|exerted\s+by|from)\s+(?:the\s+)?"
+    r"(?:([AB])|ball|particle|sphere|disc|puck|body|wall|cushion|ground|floor|it))?\s*$",
+    re.I,
+)
+
+
+#: A change of momentum typed as a name (``Dp``, ``dp``, ``Δp``, ``\Delta p_x``, ``delta_p``, ``Δp_B``),
+#: along the line of impact (x, n) or of a body.
+_CHANGE_NAME = re.compile(r"^\s*(?:D|d|Δ|\\?Delta\s*|delta_?)\s*p(?:_?\{?(?:([AB])|[xn])\}?)?\s*$")
+
+
+def impulse_name(side: str) -> str | None:
+    """A side that is an impulse in words as one name (``impulse``, ``impulse_B`` for "impulse on
+    B", ``dp`` for "change in momentum"), whose meaning its value or its relations settle (:mod:`.valuenames`);
+    None where the side is not one."""
+    m = _CHANGE_NAME.match(side)
+    if m is not None:
+        return f"dp_{m[1]}" if m[1] else "dp"
+    m = _IMPULSE_SAID.match(side)
+    if m is None:
+        return None
+    name = "impulse" if m[1] else "dp"  # "change in momentum": a name of its own, its sign its own
+    return f"{name}_{m[2].upper()}" if m[2] else name
+
+
+#: A body's speed or velocity and when, in words: "speed of A before", "initial velocity of B",
+#: "A's initial speed", "B final velocity", "velocity of A after" (read by :func:`body_when`).
+BODY_WHEN = (
+    r"(?<![\w'])(?:(initial|final)\s+(speed|velocity)\s+of\s+([AB])|(speed|velocity)\s+of\s+([AB])\s+"
+    r"(before|after|initially|finally)|([AB])(?:['’]s)?\s+(initial|final)\s+(speed|velocity))(?![\w'])"
+)
+
+
+def body_when(m: re.Match) -> str:
+    """The name for :data:`BODY_WHEN`'s phrase: ``speed_A1`` (a speed before), ``speed_A`` (after),
+    ``v_A1``, ``v_A2``."""
+    when, kind, body = (m[1], m[2], m[3]) if m[3] else (m[6], m[4], m[5]) if m[5] else (m[8], m[9], m[7])
+    before = when.lower() in ("initial", "before", "initially")
+    if kind.lower() == "speed":
+        return f"speed_{body.upper()}1" if before else f"speed_{body.upper()}"
+    return f"v_{body.upper()}{1 if before else 2}"

@@ -18,6 +18,7 @@ import sympy
 from derive.checking.context import Context
 from derive.checking.naming import common_velocity, moving_together
 from derive.checking.numeric import number_of
+from derive.checking.spellings import impulse_name
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation
 from derive.mathtext.units import in_si
@@ -129,9 +130,11 @@ def by_letter(relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, 
     impulse), a kind that a unit or words after it may still overrule (:func:`kinds`)."""
     out: dict[str, Dim] = {}
     for r in relations:
-        name = r.sides[0].strip()
+        name = impulse_name(r.sides[0]) or r.sides[0].strip()
         if len(r.sides) < 2 or name in reserved or not re.match(r"[-+]?\d", r.sides[-1].strip()):
             continue
+        if name.startswith(("impulse", "dp")) and impulse_name(r.sides[0]):
+            out[name] = IMPULSE  # "impulse on the ball = 11.2 N s"
         for pattern, dim in _LETTERS:
             if pattern.fullmatch(name):
                 out[name] = dim
@@ -161,9 +164,14 @@ def by_value(
     out: dict[str, sympy.Expr] = {}
     table = quantities(ctx)
     for r in relations:
-        name = r.sides[0].strip()
+        name = impulse_name(r.sides[0]) or r.sides[0].strip()
         dim = found.get(name)
-        if dim is None or name in out or len(r.sides) < 2 or any(re.search(r"[A-Za-z]", x) for x in r.sides[1:-1]):
+        if (
+            dim is None
+            or name in out
+            or len(r.sides) < 2
+            or any(re.search(r"[A-Za-z]", x) and not impulse_name(x) for x in r.sides[1:-1])
+        ):
             continue  # "mu = m1 m2/(m1 + m2) = 0.1497 kg": a name defined by its expression
         m = re.match(r"([-+]?)(\d+)\.?(\d*)", r.sides[-1].strip())
         try:  # "20/1000": 20 g read in kg
@@ -171,6 +179,8 @@ def by_value(
         except ParseError:
             value = None
         if m is None or value is None or float(m.group(0)) == 0:
+            if m is not None and value == 0 and (only := _only_one(table.get(dim, []))) is not None:
+                out[name] = only  # "impulse = 0": the one impulse, its sign no matter
             continue
         written = value.real
         half = (0.5 * 10 ** -len(m.group(3)) + 1e-12) * abs(written / float(m.group(0)))  # to the figures written
@@ -181,7 +191,19 @@ def by_value(
                 hits.append(e)
         if hits:
             out[name] = hits[0]  # equal masses: either, and the first is A's
+        elif (only := _only_one(table.get(dim, []))) is not None:  # "J = 0.238": the one impulse, worked wrongly
+            x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
+            out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _only_one(quantities: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
+    """The one quantity of a kind, up to its sign (the impulse ``J_n`` and ``-J_n``), or None
+    where the kind has more than one (two masses, three energies)."""
+    first = {what.lstrip("-") for what, _e in quantities}
+    if len(first) != 1:
+        return None
+    return next(e for what, e in quantities if not what.startswith("-"))
 
 
 def of_kind(dim: Dim | None, what: str) -> bool:

@@ -105,9 +105,9 @@ def meaning(name: str, problem: Any) -> str:
     }
     if name in fixed:
         return fixed[name]
-    m = re.fullmatch(r"speed_([AB])", name)
+    m = re.fullmatch(r"speed_([AB])(1?)", name)
     if m:
-        return f"{_body(problem, m.group(1))} speed after the impact"
+        return f"{_body(problem, m.group(1))} speed {'before' if m.group(2) else 'after'} the impact"
     return f"the given {name}"
 
 

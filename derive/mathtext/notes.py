@@ -126,7 +126,7 @@ _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
 _AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\(?:checkmark|cmark|tick|ding\s*[{(]\s*5[12]\s*[})])(?![A-Za-z]))\s*[^=✓✔]*$")
 #: A clause after a comma that says no more of the value (``= u(2 + 3e), in its original direction``).
 _CLAUSE = re.compile(
-    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the)\b"
+    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the|unchanged|unaltered|unaffected|constant|conserved|same)\b"
     r"(?![^=\d]*\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way)\b)[^=\d()\[\]]*$",
     re.I,
 )
@@ -254,8 +254,11 @@ _PROSE_HEAD = re.compile(
 )
 
 
-#: A clause of words and a comma before a relation, and a verb that leads in (``Energy lost, using ΔKE``).
-_CLAUSE_HEAD = re.compile(r"^\s*[A-Za-z][A-Za-z' ]*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?")
+#: A clause of words (and equations' tags: ``From (2),``) and a comma before a relation, and a verb that
+#: leads in (``Energy lost, using ΔKE``).
+_CLAUSE_HEAD = re.compile(
+    r"^\s*(?:[A-Za-z][A-Za-z' ]*|(?=\(\s*\d))(?:\(\s*\d{1,2}[a-z]?\s*\)[A-Za-z' ]*)*,\s*(?:(?:using|use|by|from|taking)\s+(?=(?:Delta\s+)?\S+\s*$))?"
+)
 
 
 #: Words that lead into a side that is a number's working (``that's 0.3888/1.08``, ``which is 2 + 3``);

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 
 from derive.mathtext.arrows import arrows_said
 from derive.mathtext.bracketed import bracketed_names
+from derive.mathtext.inline import words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
@@ -83,9 +84,9 @@ _COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 #: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
 _PART = re.compile(
-    r"^\s*(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
+    r"^\s*(?:(?:(?:Q|question\s*)\d{1,2}\s*)?(?:part\s+)?"
     r"(?:\(\s*(?:[a-h]|[ivx]{1,4})\s*\)|(?:[a-h]|[ivx]{1,4})\))(?:\s*\(\s*(?:[a-h]|[ivx]{1,4})\s*\))*"
-    r"\s*[:.]?\s+(?=[^\s=+*/^)-])",
+    r"|(?:Q|question\s*)\d{1,2}[a-h]?)\s*[:.]?\s+(?=[^\s=+*/^)-])",  # "Q5 m = 0.2": a question's number
     re.I,
 )
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
@@ -220,6 +221,8 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
+        if words_end_it(out[-1], raw[i:]):
+            out.append(";")  # "Sub $v_Q = v_P + 5ue$ into (1):": the words after are not the relation's
 
 
 #: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).

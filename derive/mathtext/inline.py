@@ -1,0 +1,46 @@
+"""Words after a piece of inline mathematics that holds a whole relation: the student's prose,
+not part of the relation (``Sub $v_Q = v_P + 5ue$ into (1):``, ``From (2), $x = y - 5eu$. Put
+into (1):``), unless they still say its value: a unit (``$v = 3$ m/s``) or a direction in words
+(``$v = 1.2$ to the left``).
+
+>>> words_end_it("v_Q = v_P + 5ue", " into (1):")
+True
+>>> words_end_it("v = 3", " m/s to the left")
+False
+>>> words_end_it("= 6.5v", ", speed of Q before")
+False
+"""
+
+from __future__ import annotations
+
+import re
+
+from derive.mathtext.sides import direction_of
+from derive.mathtext.units import is_unit
+
+#: Words after a piece of mathematics (``$x = y - 5eu$. Put into (1)``, ``$… = 2u$ into (2)``).
+_PROSE_AFTER = re.compile(r"^[\s.,;:]*([A-Za-z]{2,})\b")
+
+
+def _whole_relation(plain: str) -> bool:
+    """Whether a piece of mathematics is a relation with both sides in it (``x = y - 5eu``; not
+    ``= 6.5v``, whose name is in the words before it, nor rows joined by ";")."""
+    return ";" not in plain and bool(re.match(r"^[^=≈]*[A-Za-z0-9][^=≈]*[=≈].*[A-Za-z0-9)][^=≈]*$", plain.strip()))
+
+
+def _said_after(text: str) -> bool:
+    """Whether the words after a relation's mathematics still say its value: a unit (``$v = 3$ m/s``)
+    or a direction (``$v = 1.2$ to the left``)."""
+    token = re.match(r"^[\s.,;:]*([^\s,;]+)", text)
+    head = token.group(1).rstrip(".:") if token else ""
+    return is_unit(head) or bool(direction_of(f"1 {text.strip(' .,;:')}")) or _UNITISH.match(text) is not None
+
+
+#: The start of a unit after a number (``kg·m/s``, ``N s``, ``m s^-1``): the unit's, not words.
+_UNITISH = re.compile(r"^\s*(?:kg|k?N|k?J|m|s|ft|lb|slugs?|g|km|mph|Ns|rad|deg|degrees)(?![A-Za-z])")
+
+
+def words_end_it(plain: str, after: str) -> bool:
+    """Whether the words ``after`` a piece of mathematics (``plain``, made plain) end the relation
+    it holds: a relation with both sides inside, followed by prose that is no unit and no direction."""
+    return _whole_relation(plain) and _PROSE_AFTER.match(after) is not None and not _said_after(after)
