@@ -226,3 +226,36 @@ def test_a_law_in_names_after_a_given_copied_wrongly_is_correct_and_the_numbers_
     )
     got = {n: s for n, (s, _, _) in lines(str(problem), work).items()}
     assert got == {1: "wrong", 2: "correct", 3: "carried", 4: "correct", 5: "carried", 6: "carried"}
+
+
+def test_a_line_going_on_from_a_wrong_line_is_carried_whatever_markup_opens_it() -> None:
+    # Edexcel M2 2010 Q2: 2m at 2u meets m at u. T_1 = ½(2m)(2u)² + ½m u² = 9/2 mu²; the
+    # half left out, (2m)(2u)² + m u² = 8mu² + mu² = 9mu²: the second line is right as
+    # algebra but goes on from the wrong one ("= ..."), however the line is opened.
+    openers = ["$= {}$", "$$= {}$$", "\\[ = {} \\]", "  = {}", "> = {}", "- = {}", "* $= {}$"]
+    for opener in openers:
+        work = "KE before $= (2m)(2u)^2 + m u^2$\n" + opener.format("8mu^2 + mu^2 = 9mu^2") + "\n"
+        found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+        assert found[1][:2] == ("wrong", "ke_formula"), opener
+        assert found[2][0] == "carried", opener
+    work = "\\begin{align*}\nKE_1 &= (2m)(2u)^2 + m u^2 \\\\\n&= 8mu^2 + mu^2 = 9mu^2\n\\end{align*}\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert (found[2][0], found[3][0]) == ("wrong", "carried")
+
+
+def test_a_wrong_value_in_powers_of_ten_is_carried_where_written_as_a_decimal() -> None:
+    # MSU bullet: 0.020 kg at 300 m/s lodges in 4.0 kg: V = 6/4.02 = 1.4925 m/s; the energy
+    # after with the bullet alone, ½(0.020)(1.49²) = 0.0222 = 2.22 × 10⁻² J (for 4.46 J):
+    # 0.0222/900 = 2.47 × 10⁻⁵ is right as arithmetic, but worked from the wrong value;
+    # and the other way round, 0.0222 then 2.22 × 10⁻² again.
+    problem = "msu-lectureonline-bullet-lodges-in-block"
+    for wrong, again in (("2.22 \\times 10^{-2}", "0.0222"), ("0.0222", "2.22 \\times 10^{-2}")):
+        work = f"$V = 6/4.02 = 1.49$\n$KE_f = \\frac12 (0.020)(1.49)^2 = {wrong}$\n$\\frac{{{again}}}{{900}} = 2.47 \\times 10^{{-5}}$\n"
+        found = lines(problem, work)
+        assert found[1][0] == "correct"
+        assert found[2][0] == "wrong"
+        assert found[3][0] == "carried", wrong
+    # a line in names, right at its figures, that puts the wrong value in (ΔKE = -900 for -895.5)
+    work = "$V = 6/4.02 = 1.49$\n$KE_f = \\frac12 (0.020)(1.49)^2 = 2.22 \\times 10^{-2}$\n$\\Delta KE = KE_f - 900 = 0.0222 - 900 = -899.98$\n"
+    found = lines(problem, work)
+    assert found[3][0] == "carried"
