@@ -172,3 +172,12 @@ def test_a_carried_product_with_x_for_times_is_carried() -> None:
     found = lines("chain-car-rear-ends-suv-skid", work)
     assert found[3][0] == "wrong"
     assert [found[n][0] for n in (5, 6)] == ["carried"] * 2  # line 4 is another class (numbers for a)
+
+
+def test_a_chains_answer_in_a_letter_of_the_students_own_is_judged_as_the_result() -> None:
+    # MSU bullet and block swing: V = 6/4.02 = 1.4925 m/s, h_2 = V²/(2 × 9.81) = 0.1135 m.
+    # "h = …" worked once at the end, the chain's one h: it is h_2, right or wrong; worked
+    # with V²/g it is 0.2271, which a teacher marks wrong (not a name of the student's own).
+    head = "0.020(300) = 4.02 V\nV = 1.4925\n"
+    assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/(2 x 9.81) = 0.1135\n")[3][0] == "correct"
+    assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/9.81 = 0.2271\n")[3][0] == "wrong"
