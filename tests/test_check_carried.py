@@ -226,3 +226,71 @@ def test_a_law_in_names_after_a_given_copied_wrongly_is_correct_and_the_numbers_
     )
     got = {n: s for n, (s, _, _) in lines(str(problem), work).items()}
     assert got == {1: "wrong", 2: "correct", 3: "carried", 4: "correct", 5: "carried", 6: "carried"}
+
+
+def test_a_line_going_on_from_a_wrong_line_is_carried_whatever_markup_opens_it() -> None:
+    # Edexcel M2 2010 Q2: 2m at 2u meets m at u. T_1 = ½(2m)(2u)² + ½m u² = 9/2 mu²; the
+    # half left out, (2m)(2u)² + m u² = 8mu² + mu² = 9mu²: the second line is right as
+    # algebra but goes on from the wrong one ("= ..."), however the line is opened.
+    openers = ["$= {}$", "$$= {}$$", "\\[ = {} \\]", "  = {}", "> = {}", "- = {}", "* $= {}$"]
+    for opener in openers:
+        work = "KE before $= (2m)(2u)^2 + m u^2$\n" + opener.format("8mu^2 + mu^2 = 9mu^2") + "\n"
+        found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+        assert found[1][:2] == ("wrong", "ke_formula"), opener
+        assert found[2][0] == "carried", opener
+    work = "\\begin{align*}\nKE_1 &= (2m)(2u)^2 + m u^2 \\\\\n&= 8mu^2 + mu^2 = 9mu^2\n\\end{align*}\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert (found[2][0], found[3][0]) == ("wrong", "carried")
+
+
+def test_a_wrong_value_in_powers_of_ten_is_carried_where_written_as_a_decimal() -> None:
+    # MSU bullet: 0.020 kg at 300 m/s lodges in 4.0 kg: V = 6/4.02 = 1.4925 m/s; the energy
+    # after with the bullet alone, ½(0.020)(1.49²) = 0.0222 = 2.22 × 10⁻² J (for 4.46 J):
+    # 0.0222/900 = 2.47 × 10⁻⁵ is right as arithmetic, but worked from the wrong value;
+    # and the other way round, 0.0222 then 2.22 × 10⁻² again.
+    problem = "msu-lectureonline-bullet-lodges-in-block"
+    for wrong, again in (("2.22 \\times 10^{-2}", "0.0222"), ("0.0222", "2.22 \\times 10^{-2}")):
+        work = f"$V = 6/4.02 = 1.49$\n$KE_f = \\frac12 (0.020)(1.49)^2 = {wrong}$\n$\\frac{{{again}}}{{900}} = 2.47 \\times 10^{{-5}}$\n"
+        found = lines(problem, work)
+        assert found[1][0] == "correct"
+        assert found[2][0] == "wrong"
+        assert found[3][0] == "carried", wrong
+    # a line in names, right at its figures, that puts the wrong value in (ΔKE = -900 for -895.5)
+    work = "$V = 6/4.02 = 1.49$\n$KE_f = \\frac12 (0.020)(1.49)^2 = 2.22 \\times 10^{-2}$\n$\\Delta KE = KE_f - 900 = 0.0222 - 900 = -899.98$\n"
+    found = lines(problem, work)
+    assert found[3][0] == "carried"
+
+
+def test_a_given_velocity_copied_as_another_number_carries_through_the_find_e() -> None:
+    # Beer & Johnston 13.13: 20 Mg at 0.5 m/s hits 35 Mg at rest, B leaves at 0.3 m/s: 10 = 20 v_A2
+    # + 10.5, v_A2 = -0.025, e = 0.325/0.5 = 0.65. B's 0.3 copied as 0.2: 10 = 20 v_A2 + 7, v_A2 =
+    # 0.15, e = (0.2 - 0.15)/0.5 = 0.1; as 0.4: 10 = 20 v_A2 + 14, v_A2 = -0.2, e = 0.6/0.5 = 1.2.
+    # Every line after is right given the number as copied: carried, not a further slip.
+    problem = "beer-johnston-13-13-railroad-cars-find-e"
+    for c, rest in (
+        ("0.2", "10 = 20 v_A2 + 7\nv_A2 = 3/20 = 0.15\ne = (0.2 - 0.15)/(0.5 - 0) = 0.1\n"),
+        ("0.4", "10 = 20 v_A2 + 14\nv_A2 = -4/20 = -0.2\ne = (0.4 + 0.2)/(0.5 - 0) = 1.2\n"),
+    ):
+        found = lines(problem, f"20(0.5) + 35(0) = 20 v_A2 + 35({c})\n" + rest)
+        assert found[1][:2] == ("wrong", "copied_wrong"), c
+        assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3, c
+
+
+def test_an_unknown_found_from_the_condition_before_a_slip_stays_as_the_student_found_it() -> None:
+    # CIE 2014 Q3: m at u hits 9m at rest and half the energy is lost: ½(9m/10)(1 - e²)u² =
+    # ½(½mu²), so 1 - e² = 5/9 and e = 2/3 (found right, first). Then the masses exchanged in
+    # the momentum: u = 9v_1 + v_2 with v_2 - v_1 = 2u/3 gives u = 10v_1 + 2u/3, v_1 = u/30,
+    # v_2 = 7u/10: right given the slip with e kept at 2/3 (not e solved again from the
+    # condition with the slip's velocities), so the restitution line is correct, the rest carried.
+    work = (
+        "1 - e^2 = 5/9, so e = 2/3\n"
+        "m u + 0 = 9m v_1 + m v_2\n"
+        "v_2 - v_1 = e u = 2u/3\n"
+        "v_1 = u/30\n"
+        "v_2 = u/30 + 2u/3 = 7u/10\n"
+    )
+    found = lines("cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "masses_swapped")
+    assert found[3][0] == "correct"
+    assert found[4][0] == found[5][0] == "carried"

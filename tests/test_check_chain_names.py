@@ -201,3 +201,12 @@ def test_a_chain_name_set_to_a_given_after_the_working_is_still_judged() -> None
     # OCR M2 2007: the chain's u (after the bounce) is 28 m/s up, not the 21 m/s thrown down.
     got = lines("chain-ocr-m2-2007-rebounds-to-start", "v_1^2 = 21^2 + 2(9.8)(40) = 1225\nu = 21")
     assert got[2][0] == "wrong"
+
+
+def test_a_chains_answer_in_a_letter_of_the_students_own_is_judged_as_the_result() -> None:
+    # MSU bullet and block swing: V = 6/4.02 = 1.4925 m/s, h_2 = V²/(2 × 9.81) = 0.1135 m.
+    # "h = …" worked once at the end, the chain's one h: it is h_2, right or wrong; worked
+    # with V²/g it is 0.2271, which a teacher marks wrong (not a name of the student's own).
+    head = "0.020(300) = 4.02 V\nV = 1.4925\n"
+    assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/(2 x 9.81) = 0.1135\n")[3][0] == "correct"
+    assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/9.81 = 0.2271\n")[3][0] == "wrong"

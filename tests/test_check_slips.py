@@ -813,3 +813,50 @@ def test_a_speed_for_its_component_along_the_line_of_centres_in_e_is_e_speeds(wo
         assert got[:2] == ("wrong", "e_speeds")
     else:
         assert got[0] == "wrong" and got[1] != "e_speeds"
+
+
+def test_a_kinetic_energy_of_one_body_alone_is_named_ke_formula() -> None:
+    # OCR M2 2006: 2 kg at 5 m/s meets 1 kg at 5 m/s (v_B1 = -5), e = 0.8: 10 - 5 = 2a + b,
+    # b - a = 8 -> a = -1, b = 7. T_1 = 25 + 12.5 = 37.5; T_2 = 1 + 24.5 = 25.5; lost 12.
+    # The energy after with A left out: ½(1)(7²) = 24.5, and 37.5 - 24.5 = 13 is carried;
+    # the energy before with B left out: ½(2)(5²) = 25.
+    problem = "ocr-m2-2006-spheres-meet-at-5-ke-lost"
+    found = lines(
+        problem,
+        "KE before = 0.5(2)(5^2) + 0.5(1)(5^2) = 37.5\nKE after = 0.5(1)(7^2) = 24.5\nKE lost = 37.5 - 24.5 = 13\n",
+    )
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "ke_formula")
+    assert found[3][0] == "carried"
+    found = lines(problem, "KE before = 0.5(2)(5^2) = 25\nKE after = 0.5(2)(1^2) + 0.5(1)(7^2) = 25.5\n")
+    assert found[1][:2] == ("wrong", "ke_formula")
+    # the bullet's energy alone after it lodges (MSU: 0.020 kg at 300 m/s into 4.0 kg at rest):
+    # V = 6/4.02 = 1.4925; ½(0.020)(1.4925²) = 0.0223 for ½(4.02)(1.4925²) = 4.478
+    found = lines(
+        "msu-lectureonline-bullet-lodges-in-block",
+        "0.020(300) = 4.02 V\nV = 1.4925\nKE after = 0.5(0.020)(1.4925^2) = 0.0223\n",
+    )
+    assert found[3][:2] == ("wrong", "ke_formula")
+
+
+def test_a_rule_of_motion_with_its_factor_2_lost_in_a_chain_is_algebra() -> None:
+    # MSU bullet and block swing: 0.020 kg at 300 m/s lodges in 4.0 kg, g = 9.81: V = 6/4.02
+    # = 1.4925 m/s; it rises h_2 = V²/(2g) = 2.2276/19.62 = 0.1135 m. With the 2 lost, V²/g =
+    # 0.2271; with it put in twice, V²/(4g) = 0.0568: each the rule with a factor 2 wrong.
+    problem = "chain-msu-bullet-block-swings"
+    head = "0.020(300) = 4.02 V\nV = 1.4925\n"
+    for last in (
+        "h = 1.4925^2/9.81 = 0.2271",
+        "h = V^2/g = 1.4925^2/9.81 = 0.2271 m",
+        "h = 1.4925^2/(4 x 9.81) = 0.0568",
+    ):
+        found = lines(problem, head + last + "\n")
+        assert found[3][:2] == ("wrong", "algebra"), last
+    assert lines(problem, head + "h = 1.4925^2/(2 x 9.81) = 0.1135\n")[3][0] == "correct"
+    # OCR M2 2006 dropped 2 m (g = 9.8): v1^2 = 2(9.8)(2) = 39.2; with the 2 lost, 19.6 and v1 = 4.43
+    found = lines("chain-ocr-m2-2006-drop-rebound", "v1^2 = 9.8 x 2 = 19.6\nv1 = 4.43\n")
+    assert found[1][:2] == ("wrong", "algebra")
+    assert found[2][0] == "carried"
+    # a wrong number that is not a factor 2 off is not named algebra
+    found = lines(problem, head + "h = 1.4925^2/(3 x 9.81) = 0.0757\n")
+    assert found[3][0] == "wrong" and found[3][1] != "algebra"

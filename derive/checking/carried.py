@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
-from derive.checking import slipnames
+from derive.checking import slipnames, slipworld
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
@@ -146,8 +146,10 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
 
     if speed_for_component(trace, line, world):
         return 4, SPEEDS, "e_speeds"
-    if slipnames.copied_wrong(trace.ctx, bad, holds, " = ".join(line.sides)):
-        return j, f": {slipnames.COPIED}", "copied_wrong"
+    if (copied := slipworld.number_copied(trace, bad)) or slipnames.copied_wrong(
+        trace.ctx, bad, holds, " = ".join(line.sides)
+    ):
+        return (0, copied, "copied_wrong") if copied else (j, f": {slipnames.COPIED}", "copied_wrong")
     if given_negated(trace, bad):
         return 0, slipnames.FLIPPED["b_sign"], "b_sign"  # 0: no equation replaced
     flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
@@ -275,7 +277,9 @@ def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) 
             continue  # a value found (w = u(1 + e)), not rounded decimals, that the slip's world changes
         if sympy.degree(sympy.expand(h.difference), next(iter(kept))) != 1:
             continue
-        for k in trace.equations:
+        nm = trace.ctx.model.nm
+        found_first = not kept & {nm.A2n, nm.B2n, nm.A2t, nm.B2t}  # e or a mass: from the problem's condition
+        for k in sorted(trace.equations, key=lambda k: (k <= 4, k)) if found_first else trace.equations:
             if k == j:
                 continue
             equations = {**trace.equations, k: h.difference}

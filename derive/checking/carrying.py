@@ -29,6 +29,10 @@ from derive.problem.expr import ParseError
 Line = Read
 
 
+#: A line that goes on from the one above: "=" first, after any markup that opens it (a list's
+#: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing).
+_GOES_ON = re.compile(r"\s*(?:(?:[*>+-]|\$\$?|\\[(\[]|&|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)")
+
 #: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
 _TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")
 
@@ -50,6 +54,24 @@ def side_value(text: str) -> float | None:
         return None
     v = number_of(x) if not x.free_symbols else None
     return v.real if v is not None and abs(v.imag) < 1e-12 else None
+
+
+#: A number in powers of ten as written: ``4.20 * 10^(-4)``, ``4.20e-4``.
+_POWER = re.compile(r"^\s*(\d+\.?\d*)\s*(?:(?:\*|×|x)\s*10\s*\^\s*\(?\s*([-+−]?\d+)\s*\)?|[eE]([-+]?\d+))\s*$")
+
+
+def _other_forms(side: str) -> set[str]:
+    """The same number written the other way, so that a later line that writes it is seen to
+    use it: ``4.20 * 10^(-4)`` is also ``0.000420``, and ``0.000420`` is ``4.20`` × 10⁻⁴."""
+    text = side.strip().lstrip("+-−")
+    m = _POWER.match(text)
+    if m:
+        d = Decimal(m.group(1)).scaleb(int((m.group(2) or m.group(3)).replace("−", "-")))
+        return {f"{d:f}"} if "." in f"{d:f}" else set()
+    m = re.fullmatch(r"0\.(0+)([1-9]\d*)", text)
+    if m and len(m.group(2)) > 1:
+        return {f"{m.group(2)[0]}.{m.group(2)[1:]}"}
+    return set()
 
 
 def _slack(side: str) -> float:
@@ -122,13 +144,14 @@ class Carrying:
     def _continues(self, line: Line) -> bool:
         """Whether ``line`` goes on from a wrong or carried line (``= u(1 + kλ)/(ku(1 + λ))`` under
         ``e = w/(u(1 + λ))`` with the approach wrong): right as algebra, it carries the slip."""
-        return self.went_wrong and re.match(r"\s*&?\s*(?:=|≈|\\approx\b|~=)", line.written) is not None
+        return self.went_wrong and _GOES_ON.match(line.written) is not None
 
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a
         number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``)."""
         stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
         self.wrong_values |= decimals([*stated, *line.sides[-1:]])
+        self.wrong_values |= _other_forms(line.sides[-1]) if line.sides else set()
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
         self.stated.setdefault(line.number, set()).update(re.findall(r"\d+\.?\d*", line.sides[-1]))
         last = line.exprs[-1] if line.exprs else None
@@ -222,7 +245,9 @@ class Carrying:
         if not decimals(line.sides[:-1]) & self.wrong_values and not terms and not self._wrong_integers(line):
             return self._goes_on(line, pairs)
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
-            return self.world is not None and self.holds(pairs, self.world) and self._moved(pairs)
+            if self.world is not None and self.holds(pairs, self.world) and self._moved(pairs):
+                return True
+            return self._with_own_values(line)  # ΔKE = KE_f - KE_i = 0.000420 - 91.875 after KE_f wrong
         return True
 
     def _writes_copied(self, line: Line) -> bool:

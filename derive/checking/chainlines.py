@@ -11,7 +11,6 @@ only with the student's own earlier numbers is carried.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
 from dataclasses import replace
 from functools import partial
 
@@ -32,6 +31,7 @@ from derive.checking.stageslips import (
     own_root,
     own_sides,
     own_value,
+    rule_named,
     stage_given,
     stage_mistakes,
 )
@@ -39,7 +39,6 @@ from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
-from derive.problem.units import FORCE
 
 
 def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
@@ -91,9 +90,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
         if item.status == "wrong" and not item.again and not item.slip:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
-            if not item.slip and _weight_as_mass(ctx, sides, reread, values, true_defs):
-                phrase = mistakes.phrase("weight_as_mass")
-                item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
+            item = rule_named(ctx, item, (sides, exprs), reread, partial(_holds, ctx, sides, subs=[true_defs, values]))
             if not item.slip and copied_into_working(
                 ctx, sides, exprs, partial(_holds, ctx, sides, subs=[true_defs, values])
             ):
@@ -224,7 +221,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
     cands = [
         c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
     ]
-    defined = _introduced(read)
+    defined = _introduced(read) - _answers(read, values, given)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
         for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
             alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
@@ -258,6 +255,17 @@ def _introduced(read: list) -> set[sympy.Symbol]:
             out.add(left)
         seen |= set().union(*(_own(x) for x in exprs))
     return out
+
+
+def _answers(read: list, values: dict, given: set) -> set[sympy.Symbol]:
+    """The student's own names worked out once and used nowhere else, each of the letter of one
+    of the chain's results (``h = 1.49^2/9.81 = 0.227`` where the chain finds h_2): the answer,
+    judged as that result, not a quantity of the student's own."""
+    uses = [p for _r, _sides, exprs in read for p in set().union(*(_own(x) for x in exprs))]
+    one = {p for p in uses if uses.count(p) == 1 and "_" not in p.name}
+    return {p for p in one if len([v for v in values if v.name.partition("_")[0] == p.name[1:]]) == 1} - {
+        p for p in one for v in given if v.name.partition("_")[0] == p.name[1:]
+    }
 
 
 def _only(sides, exprs: list, p: sympy.Symbol, found: dict) -> tuple | None:
@@ -410,29 +418,6 @@ def _keep_root(ctx, exprs, values, true_defs, own_defs) -> None:
         root = _root(ctx, exprs[0] - exprs[-1], u, values)
         if root is not None:
             own_defs[u] = root
-
-
-def _weight_as_mass(ctx: Context, sides, reread: Callable[[str], sympy.Expr], values: dict, true_defs: dict) -> bool:
-    """Whether the line holds once a weight written in it (``½(10)(15.33)^2`` for B's 10 lb) is
-    put back as the mass, W/g: in every side, or in one side only (the friction ``0.4(10)``
-    on the other is a force, rightly the weight). ``reread`` reads a side as written."""
-    g = values.get(sympy.Symbol("g"))
-    weights = [x.value for x in ctx.problem.givens if x.dim == FORCE and x.value is not None]
-    if g is None or not weights:
-        return False
-    for w in (w for w in weights if w.is_Rational and w != 0):
-        at = re.compile(rf"(?<![\w.]){re.escape(str(w))}(?![\w.]|\.\d)")
-        for k in (None, *range(len(sides))):
-            mass = [at.sub(f"({w}/({g}))", t) if k in (None, i) else t for i, t in enumerate(sides)]
-            if mass == list(sides):
-                continue
-            try:
-                exprs = [reread(t) for t in mass]
-            except (ParseError, ValueError, TypeError):
-                continue
-            if _holds(ctx, sides, exprs, [true_defs, values]):
-                return True
-    return False
 
 
 def _root(ctx: Context, F: sympy.Expr, u: sympy.Symbol, values) -> sympy.Expr | None:

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, words
+from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, slipworld, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -144,7 +144,7 @@ class Trace(Carrying):
             self._wrote_wrong(line)
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
-                self._refine(own[0])
+                slipworld.refine(self, own[0])
             return self._carried(line)
         if self.wrong_number is not None and self._carries_number(line):
             self._replace(line, next(p for p in pairs if not self.holds([p], self.truth)), slip=False)
@@ -263,6 +263,8 @@ class Trace(Carrying):
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
         diags = fresh if fresh and len(fresh) < len(diags) else diags
+        if v.rule in ("mistaken_equation", "solves_as_mistake") and (copied := slipworld.number_copied(self, bad)):
+            return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
@@ -390,29 +392,6 @@ class Trace(Carrying):
                     self.world = world
         if slip:
             self.slips.append(line.number)
-
-    def _refine(self, pair: Pair) -> None:
-        """Put a carried line's own equation in place of one of the world's that it barely
-        changes (its rounded numbers), so that later lines are judged from the student's."""
-        assert self.world is not None
-        F = pair.difference
-        if any(not p.exp.is_Integer and p.base.free_symbols & set(self.U) for p in F.atoms(sympy.Pow)):
-            return  # a speed (the size of a velocity) stands for none of the world's equations
-        if any(f.free_symbols & set(self.U) for f in F.atoms(sympy.Function)):
-            return  # an unknown angle's sine: its equation solved again costs seconds, for a rounding
-        for j in list(self.equations):
-            trial = solve_world({**self.equations, j: F}, self.U, self.pts, self.world)
-            if trial is None:
-                continue
-            near = all(
-                abs((number_of(t[u]) or 0) - (number_of(w[u]) or 0)) <= 0.02 * max(1.0, abs(number_of(w[u]) or 0))
-                for t, w in zip(trial, self.world, strict=True)
-                for u in self.U
-            )
-            if near:
-                self.equations[j] = F
-                self.world = trial
-                return
 
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one

@@ -168,6 +168,11 @@ def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
         t1 = sum((energy(m, speed(b, "1")) for b, m in bodies), zero)
         t2 = sum((energy(m, speed(b, "2")) for b, m in bodies), zero)
         forms.append({"T_1": t1, "T_2": t2, "T_lost": t1 - t2})
+    if len(bodies) > 1:  # the energy before or after of one body alone, the other left out
+        t1, t2 = ({b: half * m * speed(b, k) ** 2 for b, m in bodies} for k in "12")
+        for b in t1:
+            forms.append({"T_2": t2[b], "T_lost": sum(t1.values(), zero) - t2[b]})
+            forms.append({"T_1": t1[b], "T_lost": t1[b] - sum(t2.values(), zero)})
     lost_speeds = sum((half * m * (speed(b, "1") - speed(b, "2")) ** 2 for b, m in bodies), zero)
     lost_velocities = sum(
         (half * m * sum(((a - c) ** 2 for a, c in zip(comps(b, "1"), comps(b, "2"), strict=True)), zero))

@@ -10,9 +10,12 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.report import Item
 from derive.errors import InputError
+from derive.problem.expr import ParseError
+from derive.problem.units import FORCE
 
 #: A stage's mistakes: the chain's names of its results -> the results' names in the stage,
 #: and the stage's common mistakes solved (each with its values by those names).
@@ -128,3 +131,64 @@ def numbers_written(sides: tuple[str, ...] | list[str], data: set) -> set[str]:
     came to, and a later line worked from it."""
     found = re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", " ".join(sides))
     return {t for t in found if ("." in t or len(t.strip("0")) >= 2) and sympy.Rational(t) not in data}
+
+
+def rule_named(ctx: Context, item: Item, line: tuple, reread: Callable[[str], sympy.Expr], holds: Callable) -> Item:
+    """A chain's slip named by the rule it breaks: a weight used as the mass, or a rule of motion
+    with a factor 2 lost (``line``: the sides as written and as read)."""
+    sides, exprs = line
+    lead = item.message.split(": ")[0]
+    if not item.slip and weight_as_mass(ctx, sides, reread, holds):
+        item = replace(item, slip="weight_as_mass", message=f"{lead}: it {mistakes.phrase('weight_as_mass')}.")
+    if not item.slip and factor_lost(ctx, exprs, holds):
+        item = replace(item, slip="algebra", message=f"{lead}{FACTOR_LOST}")
+    return item
+
+
+def weight_as_mass(
+    ctx: Context, sides, reread: Callable[[str], sympy.Expr], holds: Callable[[list], bool | None]
+) -> bool:
+    """Whether the line holds once a weight written in it (``½(10)(15.33)^2`` for B's 10 lb) is
+    put back as the mass, W/g: in every side, or in one side only (the friction ``0.4(10)``
+    on the other is a force, rightly the weight). ``reread`` reads a side as written."""
+    g = next((v for k, v in ctx.solution.values.items() if str(k) == "g"), None)
+    weights = [x.value for x in ctx.problem.givens if x.dim == FORCE and x.value is not None]
+    if g is None or not weights:
+        return False
+    for w in (w for w in weights if w.is_Rational and w != 0):
+        at = re.compile(rf"(?<![\w.]){re.escape(str(w))}(?![\w.]|\.\d)")
+        for k in (None, *range(len(sides))):
+            mass = [at.sub(f"({w}/({g}))", t) if k in (None, i) else t for i, t in enumerate(sides)]
+            if mass == list(sides):
+                continue
+            try:
+                exprs = [reread(t) for t in mass]
+            except (ParseError, ValueError, TypeError):
+                continue
+            if holds(exprs):
+                return True
+    return False
+
+
+#: The words for a rule of motion written with a factor 2 lost or put in (v² = gh for 2gh).
+FACTOR_LOST = ": the rule is written with a factor of 2 lost or put in (an algebra slip: v² = 2gh, h = v²/(2g))."
+#: The units of the speeds and lengths a rule of motion (v² = u² + 2as) relates.
+_MOTION = {"m/s", "ft/s", "km/h", "mi/h", "m", "ft", "cm", "km", "in"}
+
+
+def factor_lost(ctx: Context, exprs: list[sympy.Expr], holds: Callable[[list], bool | None]) -> bool:
+    """Whether a line of a rule of motion in the chain's speeds and heights holds once its sides
+    in those names are halved or doubled (``v2^2 = 9.8 × 1.4 = 13.72`` for v² = 2gh): a factor
+    2 dropped in the rule, which a teacher marks as algebra. A line in an energy, an impulse or
+    e is left to the other names."""
+    results = ctx.solution.results
+    found = [{s for s in x.free_symbols if s.name in results} for x in exprs]
+    units = {str(getattr(results[s.name], "unit", "") or "") for named in found for s in named}
+    named = [i for i, n in enumerate(found) if n]
+    if not named or len(named) == len(exprs) or not units <= _MOTION:
+        return False
+    for f in (sympy.Rational(1, 2), sympy.Integer(2)):  # every side in the names, or one alone (h = V²/g)
+        for scaled in (named, *([i] for i in named if len(named) > 1)):
+            if holds([x * f if i in scaled else x for i, x in enumerate(exprs)]):
+                return True
+    return False

@@ -1,0 +1,89 @@
+"""The slip's world made as the student has it: a given written as another number in a relation
+(the problem solved with it so), and a carried line's own equation, barely different from the
+world's, put in its place (its rounded numbers), so that the lines after are judged from what
+the student wrote, not from what derive would have had them write."""
+
+from __future__ import annotations
+
+import re
+from typing import TYPE_CHECKING, Protocol
+
+import sympy
+
+from derive.checking.mistakes import Variant
+from derive.checking.numeric import number_of
+from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world
+from derive.mathtext.notation import student
+
+if TYPE_CHECKING:
+    from derive.checking.context import Context
+    from derive.checking.relations import Point, Values
+
+
+class Trace(Protocol):
+    """What of :class:`~.lines.Trace` (the derivation read so far) the slip's world is made from."""
+
+    ctx: Context
+    U: tuple[sympy.Symbol, ...]
+    pts: list[Point]
+    truth: list[Values]
+    world: list[Values] | None
+    equations: dict[int, sympy.Expr]
+    copied: dict[sympy.Symbol, sympy.Expr]
+    variant: Variant
+
+    def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
+
+
+def _shown(x: sympy.Expr) -> str:
+    return str(x) if x.is_Integer else f"{float(x):g}"
+
+
+def number_copied(trace: Trace, bad: Pair) -> str:
+    """``2(5) + 1(0) = 2(3) + v_B`` where A goes on at 2 m/s: a relation in one unknown (which
+    a wrong velocity from any mistake would also let hold) that writes a number that is none of
+    the data and holds with the problem solved with a given copied as that number. The slip's
+    world is then the problem so; the words of the verdict ("" where it is not so)."""
+    if bad.raw is None or trace.world is not None or len(bad.difference.free_symbols & set(trace.U)) != 1:
+        return ""
+    working = [t for t in bad.text.split(" = ") if not NUMBER_SIDE.match(student(t.strip()))]  # not a result
+    written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.^])", " ".join(working))}
+    for c in written - set(trace.ctx.data) - {0, 1}:
+        for g in (g for g in trace.ctx.problem.givens if not g.unknown and g.value is not None and g.value.is_Rational):
+            model, variant = trace.ctx.model, Variant(values={g.symbol: c})
+            sol = model.solve(variant) if abs(c) != abs(g.value) else None  # solved so, a find-e problem too
+            if not sol or any(u not in sol for u in trace.U):
+                continue
+            world = [
+                {u: model.num(sympy.sympify(sol[u]), variant.values).xreplace(pt) for u in trace.U} for pt in trace.pts
+            ]
+            if not trace.holds([bad], world):
+                continue
+            trace.copied[g.symbol], trace.variant, trace.world = c, variant, world
+            trace.equations = {j: F for j, F in model.numbered(variant).items() if j in trace.equations}
+            return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {_shown(c)}."
+    return ""
+
+
+def refine(trace: Trace, pair: Pair) -> None:
+    """Put a carried line's own equation in place of one of the world's that it barely
+    changes (its rounded numbers), so that later lines are judged from the student's."""
+    assert trace.world is not None
+    F = pair.difference
+    if any(not p.exp.is_Integer and p.base.free_symbols & set(trace.U) for p in F.atoms(sympy.Pow)):
+        return  # a speed (the size of a velocity) stands for none of the world's equations
+    if any(f.free_symbols & set(trace.U) for f in F.atoms(sympy.Function)):
+        return  # an unknown angle's sine: its equation solved again costs seconds, for a rounding
+    for j in list(trace.equations):
+        trial = solve_world({**trace.equations, j: F}, trace.U, trace.pts, trace.world)
+        if trial is None:
+            continue
+        near = all(
+            abs((number_of(t[u]) or 0) - (number_of(w[u]) or 0)) <= 0.02 * max(1.0, abs(number_of(w[u]) or 0))
+            for t, w in zip(trial, trace.world, strict=True)
+            for u in trace.U
+        )
+        if near:
+            trace.equations[j] = F
+            trace.world = trial
+            return
