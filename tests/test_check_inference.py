@@ -77,3 +77,125 @@ def test_derives_names_in_derives_frame_with_one_sign_slip_stay_in_derives_frame
     work = "v_A1 = 12, v_B1 = 4\n4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 - 4)\nv_A2 = 4\nv_B2 = -8"
     seen = by_line(CATCH, work)
     assert seen["5"] == "wrong" and seen["4"] == "correct" and seen["1"] == "correct", seen
+
+
+# ------------------------------------------------- names never seen, read from the relations
+
+
+@pytest.mark.parametrize(
+    ("work", "said"),
+    [
+        ("4(12) + 8(4) = 4P + 8Q\nQ - P = 0.5(12 - 4)\nQ = P + 4\n80 = 12P + 32\nP = 4\nQ = 8", "P is v_A2"),
+        ("4(12) + 8(4) = 4V1 + 8V2\nV2 - V1 = 0.5(12 - 4) = 4\nV1 = 4, V2 = 8", "V_1 is v_A2"),
+        ("4(12) + 8(4) = 4w1 + 8w2\nw2 - w1 = 0.5(12 - 4) = 4\nw1 = 4\nw2 = 8", "w_1 is v_A2"),
+        ("4(12) + 8(4) = 4α + 8β\nβ − α = 0.5(12 − 4)\nα = 4 m/s\nβ = 8 m/s", "alpha is v_A2"),
+        ("4(12) + 8(4) = 4 s + 8 q\nq - s = 4\ns = 4, q = 8", "s is v_A2"),
+    ],
+)
+def test_two_names_of_the_students_own_read_as_the_velocities_after(work: str, said: str) -> None:
+    report = derive.check(derive.solve(derive.load(CATCH)), derivation=work)
+    assert any(said in n for n in report.notes), report.notes
+    all_correct(CATCH, work)
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "P = 4\nQ = -e P = -1.6",  # P before, Q after: not A's and B's (there is no B to move)
+        "Taking the direction towards the wall as positive, V1 = 4 and V2 = -e V1 = -1.6 m/s",
+        "w = 0.4 × 4 = 1.6 m/s\nKE lost = ½(2)(4²) − ½(2)(1.6²) = 16 − 2.56 = 13.44 J",
+        "Q = 0.4(4) = 1.6\nloss = 0.5(2)(16) - 0.5(2)(Q^2) = 13.44",
+    ],
+)
+def test_names_at_a_wall_are_the_balls_before_and_after(work: str) -> None:
+    all_correct(WALL, work)
+
+
+@pytest.mark.parametrize(
+    ("problem", "work"),
+    [
+        (WALL, "vel_after = -1.6\nKE_lost = 0.5(2)(4^2 - vel_after^2) = 13.44"),
+        (WALL, "velA_after = -0.4(4) = -1.6"),
+        (WALL, "v_rebound = 0.4 * 4 = 1.6\nloss = 0.5*2*4^2 - 0.5*2*v_rebound^2 = 13.44"),
+        (
+            CATCH,
+            "momentum: 4*12 + 8*4 = 4*vel_after_A + 8*vel_after_B\n"
+            "restitution: vel_after_B - vel_after_A = 0.5*(12 - 4)\nvel_after_A = 4\nvel_after_B = 8",
+        ),
+    ],
+)
+def test_names_in_words_joined_by_underscores(problem: str, work: str) -> None:
+    all_correct(problem, work)
+
+
+def test_a_name_nothing_settles_is_not_read_never_wrong() -> None:
+    assert by_line(WALL, "rebound_speed = 1.6") == {"1": "not read"}
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "Left positive.\nu1 = -12, u2 = -4\n-48 - 32 = 4 v1 + 8 v2\nv2 - v1 = -0.5(-4 + 12) = -4\nv1 = -4, v2 = -8",
+        "Taking the direction from B to A along the line of centres as positive:\nu_A = -12, u_B = -4\n"
+        "4(-12) + 8(-4) = 4x + 8y\ny - x = -0.5(-4 - (-12))\nx = -4\ny = -8",
+    ],
+)
+def test_habitual_and_own_names_in_a_reversed_frame(work: str) -> None:
+    all_correct(CATCH, work)
+
+
+def test_speed_of_approach_in_words_is_not_a_speed_of_a() -> None:
+    # "speed of approach" once read as "speed of A" + "pproach"
+    all_correct(WALL, "v = -1.6 m/s\ne = speed of separation / speed of approach = 1.6/4 = 0.4")
+
+
+# ------------------------------------------------- axes placed in words
+
+CUSHION = "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta"  # U at α to the cushion, e₁: tan β = e₁ tan α
+
+
+@pytest.mark.parametrize(
+    "axes",
+    [
+        "Take i along the cushion and j away from the cushion.",
+        r"Unit vectors: $\hat{\imath}$ parallel to DC (the cushion), $\hat{\jmath}$ pointing out of the cushion.",
+        r"$\mathbf{i}$ along the cushion; $\mathbf{j}$ perpendicular to it, away from the cushion.",
+    ],
+)
+def test_unit_vectors_placed_in_words_at_a_cushion(axes: str) -> None:
+    # i along the cushion (derive's t), j away from it (-n): u = U cos α i - U sin α j,
+    # v = U cos α i + e₁ U sin α j (the part across reversed and times e₁)
+    work = "\n".join(
+        [
+            axes,
+            r"$$\mathbf{u} = U\cos\alpha\,\mathbf{i} - U\sin\alpha\,\mathbf{j}$$",
+            r"$$\mathbf{v} = U\cos\alpha\,\mathbf{i} + e_1 U\sin\alpha\,\mathbf{j}$$",
+            r"$$\tan\beta = \frac{e_1 U\sin\alpha}{U\cos\alpha} = e_1\tan\alpha$$",
+        ]
+    )
+    report = derive.check(derive.solve(derive.load(CUSHION)), derivation=work)
+    assert any("axes" in n for n in report.notes), report.notes
+    all_correct(CUSHION, work)
+
+
+def test_unit_vectors_placed_in_words_and_a_slip_across() -> None:
+    # j away from the cushion: after the impact the j part is +e₁ U sin α; -e₁ U sin α is a slip
+    work = "Take i along the cushion and j away from the cushion.\nu = U cos α i - U sin α j\nv = U cos α i - e_1 U sin α j"
+    seen = by_line(CUSHION, work)
+    assert seen["2"] == "correct" and seen["3"] == "wrong", seen
+
+
+@pytest.mark.parametrize(
+    ("text", "axes"),
+    [
+        ("Wall along i, j pointing away from the wall.", {"n": ("t", 1), "t": ("n", -1)}),
+        ("x-axis parallel to the cushion, y-axis into the cushion", {"n": ("t", 1), "t": ("n", 1)}),
+        ("I take the y axis along the line of centres", {"t": ("n", 1), "n": ("t", 1)}),
+        ("i along the line of centres, j perpendicular to it", {}),  # derive's own
+        ("v = 3i + 4j", {}),
+    ],
+)
+def test_axes_placed_in_words(text: str, axes: dict) -> None:
+    from derive.checking.frames import declared_axes
+
+    assert declared_axes(text) == axes

@@ -10,6 +10,7 @@ own, or one of derive's n components).
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 import sympy
@@ -86,3 +87,51 @@ def score(found: list[list[Pair]], mapping: dict, ctx: Context, pt: dict, truth:
             if a is not None and b is not None and abs(a - b) <= 2 * tol * max(abs(a), abs(b)) + 1e-12:
                 n += 1
     return n
+
+
+#: A unit vector or an axis as students name it in words (``\mathbf{i}``, ``î``, ``the x-axis``),
+#: by the axis the vector reader gives it (:data:`~derive.mathtext.vectors.UNITS`): n or t.
+_UNIT_WORD = re.compile(r"(?<![\w\\])(?:(i|x|X)|(j|y|Y))(?:[-\s]?axis)?(?![\w(])")  # not "I take"
+_STYLED = re.compile(r"\\(?:mathbf|hat|vec|boldsymbol|underline|bm|textbf|mathit)\s*\{?\s*\\?([a-z])(?:math)?\s*\}?")
+_WALL = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface|table\s+edge|side)"
+_LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact)|common\s+normal|normal)"
+#: Words that place an axis: (pattern, derive's axis, sign).
+_PLACES = (
+    (rf"(?:along|parallel\s+to)\s+{_WALL}|{_WALL}\s+(?:is\s+)?(?:along|parallel\s+to)", "t", 1),
+    (rf"(?:away\s+from|out\s+of|out\s+from)\s+{_WALL}", "n", -1),
+    (rf"(?:into|towards?|to)\s+{_WALL}", "n", 1),
+    (rf"(?:perpendicular|normal|at\s+right\s+angles)\s+to\s+{_WALL}", "n", 0),
+    (rf"(?:along|parallel\s+to)\s+{_LINE}(?:\s+from\s+B\s+to(?:wards)?\s+A\b)", "n", -1),
+    (rf"(?:along|parallel\s+to)\s+{_LINE}", "n", 1),
+    (rf"(?:perpendicular|at\s+right\s+angles)\s+to\s+{_LINE}|along\s+the\s+(?:common\s+)?tangent", "t", 0),
+)
+
+
+def declared_axes(text: str) -> dict[str, tuple[str, int]]:
+    """The axes a student places in words (``wall along i, j pointing away from the wall``): the
+    vector reader's axis of each unit vector (i, x: n; j, y: t) -> derive's axis and its sign
+    (0 where the words give none). Empty where no axis is placed, or where it is derive's own."""
+    plain = _STYLED.sub(r"\1", text).replace("$", " ").replace("î", "i").replace("ĵ", "j")
+    found: dict[str, tuple[str, int]] = {}
+    last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")
+    for clause in re.split(r"[.;,\n]|\band\b", plain):
+        units = {"n" if m.group(1) else "t" for m in _UNIT_WORD.finditer(clause)}
+        last = units.pop() if len(units) == 1 else "" if units else last
+        place = next(((a, sg) for pattern, a, sg in _PLACES if re.search(pattern, clause, re.I)), None)
+        if last and place and (last not in found or (found[last][0] == place[0] and not found[last][1])):
+            found[last] = place
+    if len(found) == 1:  # the other axis is the other one, its sign as derive's
+        ((mine, (axis, _sign)),) = found.items()
+        found[{"n": "t", "t": "n"}[mine]] = ({"n": "t", "t": "n"}[axis], 1)
+    if len(found) != 2 or found["n"][0] == found["t"][0]:
+        return {}
+    out = {k: (a, s or 1) for k, (a, s) in found.items()}
+    return {} if out == {"n": ("n", 1), "t": ("t", 1)} else out
+
+
+def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
+    """What the report says of the axes placed in words."""
+    if not axes:
+        return []
+    said = [f"{u} along {'-' if s < 0 else '+'}{a}" for u, (a, s) in zip("ij", (axes["n"], axes["t"]), strict=True)]
+    return [f"Read your axes from your words: {', '.join(said)} (derive's n: along the line of impact, from A toward B or into the wall)."]

@@ -16,7 +16,7 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
-from derive.checking.frames import flipped, score, uses_n_components
+from derive.checking.frames import axes_said, declared_axes, flipped, score, uses_n_components
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
@@ -68,7 +68,8 @@ def read_lines(
 ) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
-    every = energy_change(directed(read_relations(text), text))
+    axes = declared_axes(text) if ctx.problem.oblique else {}
+    every = energy_change(directed(read_relations(text, axes), text))
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
@@ -121,7 +122,7 @@ def read_lines(
     }
     split = sorted(greek & GREEK - known)
     split = [w for w in split if all(c in problem for c in w)]  # \mu as m u, where m and u are given
-    return lines, said_read(meanings, declared, inferred, s, sign) + (
+    return lines, said_read(meanings, declared, inferred, s, sign) + axes_said(axes) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
@@ -303,6 +304,8 @@ def _infer(
             if len(new) >= 2 and not together:
                 together = new[:JOINT]
     cands = candidates(ctx, truth, set((kinded or {}).values()))
+    if ctx.problem.fixed_B:  # a wall's velocities are no one's name
+        cands = [c for c in cands if not re.fullmatch(r"v_B\d\w?", _symbol_name(c[1]))]
     kind = {sympy.Symbol(PREFIX + n): d for n, d in (kinded or {}).items()}
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
@@ -388,8 +391,15 @@ def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
         return 1.0  # I or J for the impulse: one relation is enough
     if len(group) != 2:
         return 0.0
-    first, second = (str(c[1]) for c in combo)
-    return 1.5 if "A" in first and "B" in second and "B" not in first else 0.0
+    first, second = (_symbol_name(c[1]) for c in combo)  # a body's velocity (the common velocity is neither's)
+    same_time = first.replace("A", "B") == second  # v_A2 and v_B2, not v_A1 and v_B2
+    return 1.5 if "A" in first and same_time else 0.0
+
+
+def _symbol_name(e: sympy.Expr) -> str:
+    """The name of ``e``, a symbol or its negative ("" for any other expression)."""
+    e = -e if isinstance(-e, sympy.Symbol) else e
+    return e.name if isinstance(e, sympy.Symbol) else ""
 
 
 def _velocity(e: sympy.Expr) -> bool:

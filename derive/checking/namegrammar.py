@@ -31,7 +31,7 @@ from derive.checking.naming import moving_together
 from derive.mathtext.reader import Relation
 
 #: Base letters by kind, longest first.
-_BASES = (("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
+_BASES = (("velocity", "v"), ("vel", "v"), ("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
 _VELOCITY = frozenset("vuwVUW")
 _TIMES = (
     ("initial", "1"), ("final", "2"), ("before", "1"), ("after", "2"), ("init", "1"), ("fin", "2"),
