@@ -134,4 +134,6 @@ def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
     if not axes:
         return []
     said = [f"{u} along {'-' if s < 0 else '+'}{a}" for u, (a, s) in zip("ij", (axes["n"], axes["t"]), strict=True)]
-    return [f"Read your axes from your words: {', '.join(said)} (derive's n: along the line of impact, from A toward B or into the wall)."]
+    return [
+        f"Read your axes from your words: {', '.join(said)} (derive's n: along the line of impact, from A toward B or into the wall)."
+    ]
