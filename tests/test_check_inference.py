@@ -199,3 +199,44 @@ def test_axes_placed_in_words(text: str, axes: dict) -> None:
     from derive.checking.frames import declared_axes
 
     assert declared_axes(text) == axes
+
+
+# ------------------------------------------------- conventions said in words
+
+
+@pytest.mark.parametrize(
+    ("words", "sign"),
+    [
+        ("taking the initial direction of motion of A as positive", 1),
+        ("taking the original direction of the ball as positive", 1),
+        ("taking the direction of approach as positive", 1),
+        ("positive towards B", 1),
+        ("positive: towards A", -1),
+        ("positive in the direction the ball rebounds", -1),
+        ("positive direction: from the wall", -1),
+        ("out from the wall is positive", -1),
+        ("I take the direction towards the wall as positive, so after the rebound v = -1.6", 1),
+        ("positive towards a wall", 0),  # "a", not the body A: left to the values
+    ],
+)
+def test_a_convention_said_in_words(words: str, sign: int) -> None:
+    from derive.checking.conventions import sign_of
+
+    assert sign_of(words) == sign
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = 1.6",
+        "I take the original direction of the ball as positive, so after the rebound v_A2 = -0.4(4) = -1.6",
+    ],
+)
+def test_derives_names_with_a_convention_said_in_words(work: str) -> None:
+    all_correct(WALL, work)
+
+
+def test_a_sign_slip_under_a_convention_said_in_words() -> None:
+    # rebound direction positive: the ball arrives at -4 and leaves at +1.6; -1.6 is a slip
+    seen = by_line(WALL, "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = -1.6")
+    assert seen == {"2": "correct", "3": "wrong"}, seen

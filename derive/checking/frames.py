@@ -133,7 +133,6 @@ def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
     """What the report says of the axes placed in words."""
     if not axes:
         return []
-    said = [f"{u} along {'-' if s < 0 else '+'}{a}" for u, (a, s) in zip("ij", (axes["n"], axes["t"]), strict=True)]
-    return [
-        f"Read your axes from your words: {', '.join(said)} (derive's n: along the line of impact, from A toward B or into the wall)."
-    ]
+    way = {("n", 1): "n", ("n", -1): "-n", ("t", 1): "t", ("t", -1): "-t"}
+    said = f"i (or x) is derive's {way[axes['n']]}, j (or y) is derive's {way[axes['t']]}"
+    return [f"Read your axes from your words: {said} (n: the line of impact, from A toward B or into the wall)."]
