@@ -240,3 +240,13 @@ def test_a_sign_slip_under_a_convention_said_in_words() -> None:
     # rebound direction positive: the ball arrives at -4 and leaves at +1.6; -1.6 is a slip
     seen = by_line(WALL, "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = -1.6")
     assert seen == {"2": "correct", "3": "wrong"}, seen
+
+
+def test_components_named_on_axes_placed_in_words() -> None:
+    # x along the cushion (derive's t), y away from it (-n): u_y = -U sin α before, v_y = +e₁ U sin α after
+    lead = "Take x along the cushion and y away from the cushion.\nu_x = U cos α, u_y = -U sin α\n"
+    all_correct(CUSHION, lead + "v_x = U cos α, v_y = e_1 U sin α\ntan β = v_y/v_x = e_1 tan α")
+    report = derive.check(derive.solve(derive.load(CUSHION)), derivation=lead)
+    assert any("u_y as -v_A1n" in n for n in report.notes), report.notes
+    seen = by_line(CUSHION, lead + "v_x = U cos α, v_y = -e_1 U sin α")
+    assert seen == {"2": "correct", "3": "wrong"}, seen

@@ -136,3 +136,26 @@ def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
     way = {("n", 1): "n", ("n", -1): "-n", ("t", 1): "t", ("t", -1): "-t"}
     said = f"i (or x) is derive's {way[axes['n']]}, j (or y) is derive's {way[axes['t']]}"
     return [f"Read your axes from your words: {said} (n: the line of impact, from A toward B or into the wall)."]
+
+
+def axis_names(ctx: Context, axes: dict[str, tuple[str, int]], used: set[str]) -> dict[str, sympy.Expr]:
+    """With the axes placed in words, ``u_x``, ``v_y``, ``u_Ax`` (u before, v after; x and y the
+    student's axes) are derive's components on them, with their signs (``y`` away from a wall:
+    ``u_y`` is -n before). Only the names ``used`` are given."""
+    if not axes or not ctx.problem.oblique:
+        return {}
+    nm = ctx.model.nm
+    out: dict[str, sympy.Expr] = {}
+    bodies = ("A",) if ctx.problem.fixed_B else ("A", "B")
+    for base, time in (("u", "1"), ("v", "2")):
+        for letter, mine in (("x", "n"), ("y", "t")):
+            axis, sign = axes[mine]
+            for body in bodies:
+                c = getattr(nm, f"{body}{time}{axis}", None)
+                if c is None:
+                    continue
+                spelled = {f"{base}_{body}{letter}", f"{base}{body}{letter}", f"{base}_{body}_{letter}"}
+                if len(bodies) == 1:
+                    spelled |= {f"{base}_{letter}", f"{base}{letter}"}
+                out.update({n: sign * c for n in spelled & used})
+    return out

@@ -16,7 +16,7 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
-from derive.checking.frames import axes_said, declared_axes, flipped, score, uses_n_components
+from derive.checking.frames import axes_said, axis_names, declared_axes, flipped, score, uses_n_components
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
@@ -96,6 +96,7 @@ def read_lines(
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
+        **axis_names(ctx, axes, used),
         **valued,
         **grammar,
         **declared,
