@@ -384,11 +384,7 @@ WRONG: dict[str, list[str]] = {
 }
 
 #: Classes still misjudged (the breadth figure counts them as failures): text -> why.
-NOT_YET = {
-    "taking away from the wall as positive\nv_A1 = -4, v_A2 = 1.6": (
-        "a convention declared in words does not turn derive's own names (v_A1) round (names area)"
-    ),
-}
+NOT_YET = {}
 
 CASES = [
     pytest.param(p, t, v, marks=pytest.mark.xfail(strict=True, reason=NOT_YET[t])) if t in NOT_YET else (p, t, v)

@@ -10,14 +10,17 @@ import re
 #: Fixed bodies students name in their sign conventions.
 _FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
 _REVERSED = re.compile(
-    rf"revers|opposite|negative|away\s+from\s+{_FIXED}|from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
+    rf"revers|opposite|negative|away\s+from\s+{_FIXED}|(?<!\w)from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
+    rf"|(?:out\s+)?from\s+{_FIXED}|out\s+of\s+{_FIXED}|rebound|bounces?\s+back|(?<!\w)to(?:wards?)?\s+(?-i:A)\b"
     r"|\bb'?s\s+(?:initial\s+)?(?:direction|motion)|direction\s+of\s+b\b",
     re.I,
 )
 _FORWARD = re.compile(
     rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
     r"|direction\s+(?:that\s+|in\s+which\s+)?a\s+(?:moves|travels|is\s+(?:moving|travelling)|goes|starts)"
-    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive",
+    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive|(?<!\w)to(?:wards?)?\s+(?-i:B)\b|direction\s+of\s+approach"
+    r"|(?:initial|original)\s+direction(?:\s+of\s+(?:motion\s+of\s+)?(?:a|the\s+(?:ball|sphere|particle|puck)))?\b"
+    r"|direction\s+of\s+motion\s+of\s+a\b",
     re.I,
 )
 
@@ -26,6 +29,10 @@ def sign_of(words: str) -> int:
     """The sign convention a phrase states: -1 reversed (away from the wall, B's direction), +1
     derive's n (from A toward B, toward the wall, A's direction), 0 where it does not say
     (up, down, left, right: inferred from the values)."""
+    said = [
+        c for c in re.split(r"[,;.]|\b(?:so|then|hence|giving)\b", words) if re.search(r"positive|\+\s?ve\b", c, re.I)
+    ]
+    words = said[0] if said else words  # "towards the wall as positive, so after the rebound …": its clause
     if _REVERSED.search(words):
         return -1
     return 1 if _FORWARD.search(words) else 0

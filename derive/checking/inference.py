@@ -16,7 +16,8 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.context import DEG, Context
-from derive.checking.figures import literal_tolerance
+from derive.checking.frames import axes_said, axis_names, declared_axes, flipped, score, uses_n_components
+from derive.checking.frames import pairs as frame_pairs
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -30,7 +31,6 @@ from derive.checking.naming import (
     read_side,
     rewrite,
 )
-from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
 from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
@@ -68,7 +68,8 @@ def read_lines(
 ) -> tuple[list[Read], list[str]]:
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
-    every = energy_change(directed(read_relations(text), text))
+    axes = declared_axes(text) if ctx.problem.oblique else {}
+    every = energy_change(directed(read_relations(text, axes), text))
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
@@ -95,6 +96,7 @@ def read_lines(
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
+        **axis_names(ctx, axes, used),
         **valued,
         **grammar,
         **declared,
@@ -106,11 +108,13 @@ def read_lines(
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
-    signs = (sign,) if sign else (1, -1) if own else (1,)  # derive's names only: nothing to infer
+    signs = (sign,) if sign else (1, -1) if own or uses_n_components(ctx, raw) else (1,)
+    ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, raw, meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
-        key=lambda c: c[0],
+        ((*_infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
+        key=lambda c: c[0] + (0 if own or c[3] == -1 else 1),  # derive's names only: two more must hold
     )
+    raw = ways[s]
     named_later(raw, mapping, problem)
     lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
@@ -119,7 +123,7 @@ def read_lines(
     }
     split = sorted(greek & GREEK - known)
     split = [w for w in split if all(c in problem for c in w)]  # \mu as m u, where m and u are given
-    return lines, said_read(meanings, declared, inferred, s, sign) + (
+    return lines, said_read(meanings, declared, inferred, s, sign) + axes_said(axes) + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
@@ -290,21 +294,23 @@ def _infer(
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) and not is_size(ctx, e) else e
+    pairs = frame_pairs(ctx, raw, pt, truth)
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
-        return 0, {}, {}
-    pairs = _pairs(ctx, raw, pt, truth)
+        return score(pairs, {}, ctx, pt, truth) + (0.5 if sign == 1 else 0), {}, {}
     shapes = Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
     unknown: list[sympy.Symbol] = []
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
     for pairs_of_line in pairs:
-        for _t, (left, right) in pairs_of_line:
+        for _t, (left, right), _m in pairs_of_line:
             found = sorted(_placeholders(left) | _placeholders(right), key=str)
             new = [p for p in found if p not in mapping]
             unknown += [p for p in new if p not in unknown]
             if len(new) >= 2 and not together:
                 together = new[:JOINT]
     cands = candidates(ctx, truth, set((kinded or {}).values()))
+    if ctx.problem.fixed_B:  # a wall's velocities are no one's name
+        cands = [c for c in cands if not re.fullmatch(r"v_B\d\w?", _symbol_name(c[1]))]
     kind = {sympy.Symbol(PREFIX + n): d for n, d in (kinded or {}).items()}
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
@@ -322,7 +328,7 @@ def _infer(
         best = max(
             options,
             key=lambda combo: (
-                _score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
+                score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
                 + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
                 + _natural(group, combo)
             ),
@@ -330,15 +336,15 @@ def _infer(
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
-        fit = _score(pairs, trial, ctx, pt, truth) + shapes.score(trial)
-        if fit < _score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping) + need:
+        fit = score(pairs, trial, ctx, pt, truth) + shapes.score(trial)
+        if fit < score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping) + need:
             continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what
     _by_analogy(unknown, mapping, inferred, {c[1]: c[0] for c in cands})
     mapping = {k: v.xreplace(mapping) for k, v in mapping.items()}
-    return _score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
+    return score(pairs, mapping, ctx, pt, truth) + (0.5 if sign == 1 else 0), mapping, inferred
 
 
 def _solved_for(raw: list[Read]) -> set[sympy.Symbol]:
@@ -390,42 +396,19 @@ def _natural(group: list[sympy.Symbol], combo: tuple) -> float:
         return 1.0  # I or J for the impulse: one relation is enough
     if len(group) != 2:
         return 0.0
-    first, second = (str(c[1]) for c in combo)
-    return 1.5 if "A" in first and "B" in second and "B" not in first else 0.0
+    first, second = (_symbol_name(c[1]) for c in combo)  # a body's velocity (the common velocity is neither's)
+    same_time = first.replace("A", "B") == second  # v_A2 and v_B2, not v_A1 and v_B2
+    return 1.5 if "A" in first and same_time else 0.0
+
+
+def _symbol_name(e: sympy.Expr) -> str:
+    """The name of ``e``, a symbol or its negative ("" for any other expression)."""
+    e = -e if isinstance(-e, sympy.Symbol) else e
+    return e.name if isinstance(e, sympy.Symbol) else ""
 
 
 def _velocity(e: sympy.Expr) -> bool:
     return any(s.name.startswith("v_") for s in e.free_symbols)
-
-
-def _pairs(ctx: Context, raw: list[Read], pt: dict, truth: dict) -> list[list[tuple[float, sympy.Expr]]]:
-    """For each relation, each ``=`` as (tolerance, left - right with the true values in)."""
-    out = []
-    for r in raw:
-        if r.exprs is None or r.defines or r.direction:  # a direction in words is derive's: no sign to infer
-            out.append([])
-            continue
-        diffs = []
-        for i in range(len(r.exprs) - 1):
-            tol = max(literal_tolerance(f"{r.sides[i]} = {r.sides[i + 1]}", ctx.data), 1e-9)
-            left, right = (ctx.in_unknowns(x).xreplace(pt).xreplace(truth) for x in r.exprs[i : i + 2])
-            diffs.append((tol, (left, right)))
-        out.append(diffs)
-    return out
-
-
-def _score(pairs, mapping, ctx: Context, pt: dict, truth: dict) -> int:
-    """How many ``=`` hold (of those with a student's name in them) under ``mapping``."""
-    subs = {k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in mapping.items()}
-    n = 0
-    for line in pairs:
-        for tol, (left, right) in line:
-            if not (_placeholders(left) | _placeholders(right)):
-                continue
-            a, b = number_of(left.xreplace(subs)), number_of(right.xreplace(subs))
-            if a is not None and b is not None and abs(a - b) <= 2 * tol * max(abs(a), abs(b)) + 1e-12:
-                n += 1
-    return n
 
 
 def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:

@@ -31,7 +31,7 @@ from derive.checking.naming import moving_together
 from derive.mathtext.reader import Relation
 
 #: Base letters by kind, longest first.
-_BASES = (("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
+_BASES = (("velocity", "v"), ("vel", "v"), ("KE", "K"), ("Ek", "K"), ("E_k", "K"), ("K", "K"), ("E", "K"), ("T", "K"))
 _VELOCITY = frozenset("vuwVUW")
 _TIMES = (
     ("initial", "1"), ("final", "2"), ("before", "1"), ("after", "2"), ("init", "1"), ("fin", "2"),
@@ -297,6 +297,6 @@ def said_read(meanings: dict, declared: dict, inferred: dict[str, str], sign: in
 def _shown(e: sympy.Expr) -> str:
     if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
         return e.args[0].name  # a given restated without its sign: said as that given
-    if isinstance(e, sympy.Mul) and len(e.args) == 2 and e.args[0] == -1 and isinstance(e.args[1], sympy.Symbol):
-        return f"-{e.args[1].name}"  # -J_n: the impulse on A, not a common velocity
+    if isinstance(-e, sympy.Symbol):
+        return f"-{(-e).name}"  # -J_n (the impulse on A), or a component on an axis the student turned round
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"

@@ -56,7 +56,7 @@ PHRASES = (
     (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
     (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
     (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
-    (r"(?:final\s+)?speed\s+of\s+([AB])(?:\s+after)?", r"speed_\1"),
+    (r"(?:final\s+)?speed\s+of\s+([AB])(?![\w'])(?:\s+after)?", r"speed_\1"),  # not "speed of approach"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),
     (r"(?<![\w'])([AB])['’]s\s+(?:initial\s+velocity|velocity\s+before)", lambda m: f"v_{m[1].upper()}1"),
@@ -115,6 +115,8 @@ def name_like(name: str) -> bool:
     """A name, not a word: ``x``, ``V``, ``u_A``, ``u1``, ``v_G`` (not ``of``, ``the``, ``KE``)."""
     if name in GREEK or (name.partition("_")[0] in GREEK and re.fullmatch(r"[A-Za-z]+_[A-Za-z0-9]{1,6}", name)):
         return True  # mu, delta_0, theta_2
+    if re.fullmatch(r"[A-Za-z][A-Za-z0-9]{0,11}(?:_[A-Za-z0-9]{1,11}){1,3}", name):
+        return True  # vel_after, speed_B_final: words joined by underscores are a name, never prose
     return len(name) == 1 or re.fullmatch(r"[A-Za-z]{1,2}(?:_[A-Za-z0-9]{1,6}|\d{1,2})", name) is not None
 
 

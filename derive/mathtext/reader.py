@@ -120,8 +120,9 @@ _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 _SIDE = re.compile(r"[A-Za-z0-9\u0391-\u03c9\u03d5]")
 
 
-def read_relations(text: str) -> tuple[Relation, ...]:
-    """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
+def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) -> tuple[Relation, ...]:
+    """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`); ``axes``: the unit
+    vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
     for line, column, written, plain in pieces(text):
         plain = unmarked(unbold(plain))
@@ -140,7 +141,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            for sides in split_vectors(r.sides) if r is not None else ():
+            for sides in split_vectors(r.sides, axes) if r is not None else ():
                 out.append(replace(r, sides=sides))
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)

@@ -33,10 +33,11 @@ _NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)('*)(?:\s+(before|after))?$")
 AXES = ("n", "t")
 
 
-def split_vectors(sides: tuple[str, ...]) -> list[tuple[str, ...]]:
+def split_vectors(sides: tuple[str, ...], axes: dict[str, tuple[str, int]] | None = None) -> list[tuple[str, ...]]:
     """The relations of ``sides``: one per component where it is a relation between vectors
-    (and ``[sides]`` where it is not)."""
-    parts = [_vector(s) for s in sides]
+    (and ``[sides]`` where it is not); ``axes``, where the student placed them in words, takes
+    each unit vector's axis to the one it stands for, with its sign (``j`` away from a wall: -n)."""
+    parts = [_placed(_vector(s), axes) for s in sides]
     if not any(p is not None for p in parts):
         return [sides]
     # a lead-in in words before the first name ("After impact write v_A = a i + …"): the name
@@ -53,6 +54,12 @@ def split_vectors(sides: tuple[str, ...]) -> list[tuple[str, ...]]:
         if any(r != "0" for r in row):
             out.append(tuple(row))
     return out or [sides]
+
+
+def _placed(part: dict[str, str] | None, axes: dict[str, tuple[str, int]] | None) -> dict[str, str] | None:
+    if part is None or not axes:
+        return part
+    return {axes[a][0]: c if axes[a][1] > 0 else f"-({c})" for a, c in part.items()}
 
 
 def component(name: str, axis: str) -> str:

@@ -1,0 +1,161 @@
+"""The student's frame: which way along the line of centres is positive, for derive's own names too.
+
+A student who takes the other way as positive ("left as positive", "away from the wall is +ve",
+or no words at all) and writes derive's names (``(v_A)_1 = -3``, ``v_A2 = +1.6``) means derive's
+components with the sign changed. :mod:`.inference` reads the relations both ways and keeps the
+way the values written hold in; this module flips derive's n components for the other way, and
+scores a reading: how many ``=`` hold of those that a reading can move (a name of the student's
+own, or one of derive's n components).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.figures import literal_tolerance
+from derive.checking.naming import PREFIX
+from derive.checking.numeric import number_of
+
+
+def n_components(ctx: Context) -> dict[sympy.Symbol, sympy.Expr]:
+    """derive's components along n (before and after, A and B) -> the same in the reversed frame."""
+    nm = ctx.model.nm
+    out: dict[sympy.Symbol, sympy.Expr] = {}
+    for c in (nm.A1n, nm.B1n, nm.A2n, nm.B2n):
+        if isinstance(c, sympy.Symbol):
+            out[c] = -c
+    return out
+
+
+def uses_n_components(ctx: Context, raw: list) -> bool:
+    """Whether a relation the student wrote has one of derive's n components in it."""
+    ns = set(n_components(ctx))
+    return any(ns & e.free_symbols for r in raw if r.exprs for e in r.exprs)
+
+
+def flipped(ctx: Context, raw: list, sign: int) -> list:
+    """The relations with derive's n components read in the student's frame (``sign`` -1: the
+    reversed one, so ``v_A1 = -3`` is A's velocity before, 3 along derive's n)."""
+    if sign == 1:
+        return list(raw)
+    flip = n_components(ctx)
+    out = []
+    for r in raw:
+        if r.exprs is None or not any(flip.keys() & e.free_symbols for e in r.exprs):
+            out.append(r)
+            continue
+        out.append(replace(r, exprs=tuple(e.xreplace(flip) for e in r.exprs)))
+    return out
+
+
+Pair = tuple[float, tuple[sympy.Expr, sympy.Expr], bool]
+
+
+def pairs(ctx: Context, raw: list, pt: dict, truth: dict) -> list[list[Pair]]:
+    """For each relation, each ``=`` as (tolerance, (left, right) with the true values in,
+    whether a reading moves it: a student's name or derive's n component in it)."""
+    ns = set(n_components(ctx))
+    out = []
+    for r in raw:
+        if r.exprs is None or r.defines or r.direction:  # a direction in words is derive's: no sign to infer
+            out.append([])
+            continue
+        diffs = []
+        for i in range(len(r.exprs) - 1):
+            tol = max(literal_tolerance(f"{r.sides[i]} = {r.sides[i + 1]}", ctx.data), 1e-9)
+            pair = r.exprs[i : i + 2]
+            moved = any(s.name.startswith(PREFIX) or s in ns for x in pair for s in x.free_symbols)
+            left, right = (ctx.in_unknowns(x).xreplace(pt).xreplace(truth) for x in pair)
+            diffs.append((tol, (left, right), moved))
+        out.append(diffs)
+    return out
+
+
+def score(found: list[list[Pair]], mapping: dict, ctx: Context, pt: dict, truth: dict) -> int:
+    """How many ``=`` hold (of those a reading moves) under ``mapping``."""
+    subs = {k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in mapping.items()}
+    n = 0
+    for line in found:
+        for tol, (left, right), moved in line:
+            if not moved:
+                continue
+            a, b = number_of(left.xreplace(subs)), number_of(right.xreplace(subs))
+            if a is not None and b is not None and abs(a - b) <= 2 * tol * max(abs(a), abs(b)) + 1e-12:
+                n += 1
+    return n
+
+
+#: A unit vector or an axis as students name it in words (``\mathbf{i}``, ``î``, ``the x-axis``),
+#: by the axis the vector reader gives it (:data:`~derive.mathtext.vectors.UNITS`): n or t.
+_UNIT_WORD = re.compile(r"(?<![\w\\])(?:(i|x|X)|(j|y|Y))(?:[-\s]?axis)?(?![\w(])")  # not "I take"
+_STYLED = re.compile(r"\\(?:mathbf|hat|vec|boldsymbol|underline|bm|textbf|mathit)\s*\{?\s*\\?([a-z])(?:math)?\s*\}?")
+_WALL = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface|table\s+edge|side)"
+_LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact)|common\s+normal|normal)"
+#: Words that place an axis: (pattern, derive's axis, sign).
+_PLACES = (
+    (rf"(?:along|parallel\s+to)\s+{_WALL}|{_WALL}\s+(?:is\s+)?(?:along|parallel\s+to)", "t", 1),
+    (rf"(?:away\s+from|out\s+of|out\s+from)\s+{_WALL}", "n", -1),
+    (rf"(?:into|towards?|to)\s+{_WALL}", "n", 1),
+    (rf"(?:perpendicular|normal|at\s+right\s+angles)\s+to\s+{_WALL}", "n", 0),
+    (rf"(?:along|parallel\s+to)\s+{_LINE}(?:\s+from\s+B\s+to(?:wards)?\s+A\b)", "n", -1),
+    (rf"(?:along|parallel\s+to)\s+{_LINE}", "n", 1),
+    (rf"(?:perpendicular|at\s+right\s+angles)\s+to\s+{_LINE}|along\s+the\s+(?:common\s+)?tangent", "t", 0),
+)
+
+
+def declared_axes(text: str) -> dict[str, tuple[str, int]]:
+    """The axes a student places in words (``wall along i, j pointing away from the wall``): the
+    vector reader's axis of each unit vector (i, x: n; j, y: t) -> derive's axis and its sign
+    (0 where the words give none). Empty where no axis is placed, or where it is derive's own."""
+    plain = _STYLED.sub(r"\1", text).replace("$", " ").replace("î", "i").replace("ĵ", "j")
+    found: dict[str, tuple[str, int]] = {}
+    last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")
+    for clause in re.split(r"[.;,\n]|\band\b", plain):
+        units = {"n" if m.group(1) else "t" for m in _UNIT_WORD.finditer(clause)}
+        last = units.pop() if len(units) == 1 else "" if units else last
+        place = next(((a, sg) for pattern, a, sg in _PLACES if re.search(pattern, clause, re.I)), None)
+        if last and place and (last not in found or (found[last][0] == place[0] and not found[last][1])):
+            found[last] = place
+    if len(found) == 1:  # the other axis is the other one, its sign as derive's
+        ((mine, (axis, _sign)),) = found.items()
+        found[{"n": "t", "t": "n"}[mine]] = ({"n": "t", "t": "n"}[axis], 1)
+    if len(found) != 2 or found["n"][0] == found["t"][0]:
+        return {}
+    out = {k: (a, s or 1) for k, (a, s) in found.items()}
+    return {} if out == {"n": ("n", 1), "t": ("t", 1)} else out
+
+
+def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
+    """What the report says of the axes placed in words."""
+    if not axes:
+        return []
+    way = {("n", 1): "n", ("n", -1): "-n", ("t", 1): "t", ("t", -1): "-t"}
+    said = f"i (or x) is derive's {way[axes['n']]}, j (or y) is derive's {way[axes['t']]}"
+    return [f"Read your axes from your words: {said} (n: the line of impact, from A toward B or into the wall)."]
+
+
+def axis_names(ctx: Context, axes: dict[str, tuple[str, int]], used: set[str]) -> dict[str, sympy.Expr]:
+    """With the axes placed in words, ``u_x``, ``v_y``, ``u_Ax`` (u before, v after; x and y the
+    student's axes) are derive's components on them, with their signs (``y`` away from a wall:
+    ``u_y`` is -n before). Only the names ``used`` are given."""
+    if not axes or not ctx.problem.oblique:
+        return {}
+    nm = ctx.model.nm
+    out: dict[str, sympy.Expr] = {}
+    bodies = ("A",) if ctx.problem.fixed_B else ("A", "B")
+    for base, time in (("u", "1"), ("v", "2")):
+        for letter, mine in (("x", "n"), ("y", "t")):
+            axis, sign = axes[mine]
+            for body in bodies:
+                c = getattr(nm, f"{body}{time}{axis}", None)
+                if c is None:
+                    continue
+                spelled = {f"{base}_{body}{letter}", f"{base}{body}{letter}", f"{base}_{body}_{letter}"}
+                if len(bodies) == 1:
+                    spelled |= {f"{base}_{letter}", f"{base}{letter}"}
+                out.update({n: sign * c for n in spelled & used})
+    return out

@@ -1,0 +1,252 @@
+"""The student's frame and names, inferred where nothing declares them (issue #31, conventions).
+
+Values worked by hand from the problems' givens, never from derive's output:
+
+- Edexcel M2 ball and wall (2 kg at 4 m/s into a wall, e = 0.4): rebound speed 0.4 x 4 = 1.6 m/s;
+  away from the wall as positive, the velocity before is -4 and after +1.6.
+- BYJU'S (A 4 kg at 12 m/s catches B 8 kg at 4 m/s, e = 0.5): 4(12) + 8(4) = 80 = 4a + 8b,
+  b - a = 0.5(12 - 4) = 4, so 12a = 48: a = 4, b = 8 m/s, both still moving on. Taking the way
+  they move as negative: before -12 and -4, after -4 and -8.
+- Notes 4c11 is not used here: its numbers are the corpus's.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+
+WALL = "edexcel-m2-ball-rebounds-from-wall"
+CATCH = "byjus-4kg-ball-catches-8kg-ball"
+
+
+def by_line(problem: str, work: str) -> dict[str, str]:
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    out: dict[str, str] = {}
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            worst = ("wrong", "carried", "error", "correct")
+            old = out.get(i.name)
+            out[i.name] = i.status if old is None or worst.index(i.status) < worst.index(old) else old
+    return out
+
+
+def all_correct(problem: str, work: str) -> None:
+    seen = by_line(problem, work)
+    assert seen and set(seen.values()) == {"correct"}, seen
+
+
+# ------------------------------------------------- derive's names in the student's own frame
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "Taking away from the wall as positive.\nv_A1 = -4 m/s\nv_A2 = -e v_A1 = -0.4(-4) = 1.6 m/s",
+        "positive: away from the wall\n$v_{A1} = -4$\n$v_{A2} = 1.6$ m/s",
+        "v_A1 = -4\nv_A2 = -0.4 x (-4) = 1.6",  # nothing said: the values written say it
+        "(v_A)_1 = -4 m/s, so (v_A)_2 = -e(v_A)_1 = +1.6 m/s",
+    ],
+)
+def test_derives_names_in_a_frame_away_from_the_wall(work: str) -> None:
+    all_correct(WALL, work)
+
+
+def test_a_sign_slip_in_the_students_own_frame_is_still_wrong() -> None:
+    work = "Taking away from the wall as positive.\nv_A1 = -4 m/s\nv_A2 = -1.6 m/s"
+    assert by_line(WALL, work) == {"2": "correct", "3": "wrong"}
+
+
+def test_derives_names_with_the_way_both_move_taken_as_negative() -> None:
+    work = "\n".join(
+        [
+            "I take left as positive; both balls roll to the right.",
+            "v_A1 = -12, v_B1 = -4",
+            "4 v_A1 + 8 v_B1 = 4 v_A2 + 8 v_B2",
+            "4(-12) + 8(-4) = -80 = 4 v_A2 + 8 v_B2",
+            "v_B2 - v_A2 = -0.5(v_B1 - v_A1) = -0.5(-4 + 12) = -4",
+            "12 v_A2 = -80 + 32 = -48",
+            "v_A2 = -4 m/s, v_B2 = -8 m/s",
+        ]
+    )
+    all_correct(CATCH, work)
+
+
+def test_derives_names_in_derives_frame_with_one_sign_slip_stay_in_derives_frame() -> None:
+    # v_B2 written with the wrong sign once: that is a slip, not a reversed frame
+    work = "v_A1 = 12, v_B1 = 4\n4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 - 4)\nv_A2 = 4\nv_B2 = -8"
+    seen = by_line(CATCH, work)
+    assert seen["5"] == "wrong" and seen["4"] == "correct" and seen["1"] == "correct", seen
+
+
+# ------------------------------------------------- names never seen, read from the relations
+
+
+@pytest.mark.parametrize(
+    ("work", "said"),
+    [
+        ("4(12) + 8(4) = 4P + 8Q\nQ - P = 0.5(12 - 4)\nQ = P + 4\n80 = 12P + 32\nP = 4\nQ = 8", "P is v_A2"),
+        ("4(12) + 8(4) = 4V1 + 8V2\nV2 - V1 = 0.5(12 - 4) = 4\nV1 = 4, V2 = 8", "V_1 is v_A2"),
+        ("4(12) + 8(4) = 4w1 + 8w2\nw2 - w1 = 0.5(12 - 4) = 4\nw1 = 4\nw2 = 8", "w_1 is v_A2"),
+        ("4(12) + 8(4) = 4α + 8β\nβ − α = 0.5(12 − 4)\nα = 4 m/s\nβ = 8 m/s", "alpha is v_A2"),
+        ("4(12) + 8(4) = 4 s + 8 q\nq - s = 4\ns = 4, q = 8", "s is v_A2"),
+    ],
+)
+def test_two_names_of_the_students_own_read_as_the_velocities_after(work: str, said: str) -> None:
+    report = derive.check(derive.solve(derive.load(CATCH)), derivation=work)
+    assert any(said in n for n in report.notes), report.notes
+    all_correct(CATCH, work)
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "P = 4\nQ = -e P = -1.6",  # P before, Q after: not A's and B's (there is no B to move)
+        "Taking the direction towards the wall as positive, V1 = 4 and V2 = -e V1 = -1.6 m/s",
+        "w = 0.4 × 4 = 1.6 m/s\nKE lost = ½(2)(4²) − ½(2)(1.6²) = 16 − 2.56 = 13.44 J",
+        "Q = 0.4(4) = 1.6\nloss = 0.5(2)(16) - 0.5(2)(Q^2) = 13.44",
+    ],
+)
+def test_names_at_a_wall_are_the_balls_before_and_after(work: str) -> None:
+    all_correct(WALL, work)
+
+
+@pytest.mark.parametrize(
+    ("problem", "work"),
+    [
+        (WALL, "vel_after = -1.6\nKE_lost = 0.5(2)(4^2 - vel_after^2) = 13.44"),
+        (WALL, "velA_after = -0.4(4) = -1.6"),
+        (WALL, "v_rebound = 0.4 * 4 = 1.6\nloss = 0.5*2*4^2 - 0.5*2*v_rebound^2 = 13.44"),
+        (
+            CATCH,
+            "momentum: 4*12 + 8*4 = 4*vel_after_A + 8*vel_after_B\n"
+            "restitution: vel_after_B - vel_after_A = 0.5*(12 - 4)\nvel_after_A = 4\nvel_after_B = 8",
+        ),
+    ],
+)
+def test_names_in_words_joined_by_underscores(problem: str, work: str) -> None:
+    all_correct(problem, work)
+
+
+def test_a_name_nothing_settles_is_not_read_never_wrong() -> None:
+    assert by_line(WALL, "rebound_speed = 1.6") == {"1": "not read"}
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "Left positive.\nu1 = -12, u2 = -4\n-48 - 32 = 4 v1 + 8 v2\nv2 - v1 = -0.5(-4 + 12) = -4\nv1 = -4, v2 = -8",
+        "Taking the direction from B to A along the line of centres as positive:\nu_A = -12, u_B = -4\n"
+        "4(-12) + 8(-4) = 4x + 8y\ny - x = -0.5(-4 - (-12))\nx = -4\ny = -8",
+    ],
+)
+def test_habitual_and_own_names_in_a_reversed_frame(work: str) -> None:
+    all_correct(CATCH, work)
+
+
+def test_speed_of_approach_in_words_is_not_a_speed_of_a() -> None:
+    # "speed of approach" once read as "speed of A" + "pproach"
+    all_correct(WALL, "v = -1.6 m/s\ne = speed of separation / speed of approach = 1.6/4 = 0.4")
+
+
+# ------------------------------------------------- axes placed in words
+
+CUSHION = "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta"  # U at α to the cushion, e₁: tan β = e₁ tan α
+
+
+@pytest.mark.parametrize(
+    "axes",
+    [
+        "Take i along the cushion and j away from the cushion.",
+        r"Unit vectors: $\hat{\imath}$ parallel to DC (the cushion), $\hat{\jmath}$ pointing out of the cushion.",
+        r"$\mathbf{i}$ along the cushion; $\mathbf{j}$ perpendicular to it, away from the cushion.",
+    ],
+)
+def test_unit_vectors_placed_in_words_at_a_cushion(axes: str) -> None:
+    # i along the cushion (derive's t), j away from it (-n): u = U cos α i - U sin α j,
+    # v = U cos α i + e₁ U sin α j (the part across reversed and times e₁)
+    work = "\n".join(
+        [
+            axes,
+            r"$$\mathbf{u} = U\cos\alpha\,\mathbf{i} - U\sin\alpha\,\mathbf{j}$$",
+            r"$$\mathbf{v} = U\cos\alpha\,\mathbf{i} + e_1 U\sin\alpha\,\mathbf{j}$$",
+            r"$$\tan\beta = \frac{e_1 U\sin\alpha}{U\cos\alpha} = e_1\tan\alpha$$",
+        ]
+    )
+    report = derive.check(derive.solve(derive.load(CUSHION)), derivation=work)
+    assert any("axes" in n for n in report.notes), report.notes
+    all_correct(CUSHION, work)
+
+
+def test_unit_vectors_placed_in_words_and_a_slip_across() -> None:
+    # j away from the cushion: after the impact the j part is +e₁ U sin α; -e₁ U sin α is a slip
+    work = "Take i along the cushion and j away from the cushion.\nu = U cos α i - U sin α j\nv = U cos α i - e_1 U sin α j"
+    seen = by_line(CUSHION, work)
+    assert seen["2"] == "correct" and seen["3"] == "wrong", seen
+
+
+@pytest.mark.parametrize(
+    ("text", "axes"),
+    [
+        ("Wall along i, j pointing away from the wall.", {"n": ("t", 1), "t": ("n", -1)}),
+        ("x-axis parallel to the cushion, y-axis into the cushion", {"n": ("t", 1), "t": ("n", 1)}),
+        ("I take the y axis along the line of centres", {"t": ("n", 1), "n": ("t", 1)}),
+        ("i along the line of centres, j perpendicular to it", {}),  # derive's own
+        ("v = 3i + 4j", {}),
+    ],
+)
+def test_axes_placed_in_words(text: str, axes: dict) -> None:
+    from derive.checking.frames import declared_axes
+
+    assert declared_axes(text) == axes
+
+
+# ------------------------------------------------- conventions said in words
+
+
+@pytest.mark.parametrize(
+    ("words", "sign"),
+    [
+        ("taking the initial direction of motion of A as positive", 1),
+        ("taking the original direction of the ball as positive", 1),
+        ("taking the direction of approach as positive", 1),
+        ("positive towards B", 1),
+        ("positive: towards A", -1),
+        ("positive in the direction the ball rebounds", -1),
+        ("positive direction: from the wall", -1),
+        ("out from the wall is positive", -1),
+        ("I take the direction towards the wall as positive, so after the rebound v = -1.6", 1),
+        ("positive towards a wall", 0),  # "a", not the body A: left to the values
+    ],
+)
+def test_a_convention_said_in_words(words: str, sign: int) -> None:
+    from derive.checking.conventions import sign_of
+
+    assert sign_of(words) == sign
+
+
+@pytest.mark.parametrize(
+    "work",
+    [
+        "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = 1.6",
+        "I take the original direction of the ball as positive, so after the rebound v_A2 = -0.4(4) = -1.6",
+    ],
+)
+def test_derives_names_with_a_convention_said_in_words(work: str) -> None:
+    all_correct(WALL, work)
+
+
+def test_a_sign_slip_under_a_convention_said_in_words() -> None:
+    # rebound direction positive: the ball arrives at -4 and leaves at +1.6; -1.6 is a slip
+    seen = by_line(WALL, "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = -1.6")
+    assert seen == {"2": "correct", "3": "wrong"}, seen
+
+
+def test_components_named_on_axes_placed_in_words() -> None:
+    # x along the cushion (derive's t), y away from it (-n): u_y = -U sin α before, v_y = +e₁ U sin α after
+    lead = "Take x along the cushion and y away from the cushion.\nu_x = U cos α, u_y = -U sin α\n"
+    all_correct(CUSHION, lead + "v_x = U cos α, v_y = e_1 U sin α\ntan β = v_y/v_x = e_1 tan α")
+    report = derive.check(derive.solve(derive.load(CUSHION)), derivation=lead)
+    assert any("u_y as -v_A1n" in n for n in report.notes), report.notes
+    seen = by_line(CUSHION, lead + "v_x = U cos α, v_y = -e_1 U sin α")
+    assert seen == {"2": "correct", "3": "wrong"}, seen
