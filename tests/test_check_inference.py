@@ -217,6 +217,9 @@ def test_axes_placed_in_words(text: str, axes: dict) -> None:
         ("out from the wall is positive", -1),
         ("I take the direction towards the wall as positive, so after the rebound v = -1.6", 1),
         ("positive towards a wall", 0),  # "a", not the body A: left to the values
+        ("to the left (B's original direction) as positive", -1),
+        ("A’s original direction is positive", 1),
+        ("to the left (Q's original direction) as positive", 0),  # a letter of the exam's: left to the values
     ],
 )
 def test_a_convention_said_in_words(words: str, sign: int) -> None:
@@ -234,6 +237,20 @@ def test_a_convention_said_in_words(words: str, sign: int) -> None:
 )
 def test_derives_names_with_a_convention_said_in_words(work: str) -> None:
     all_correct(WALL, work)
+
+
+def test_another_bodys_original_direction_is_not_the_first_bodys() -> None:
+    # CIE 9231 Nov 2014 (2m at 4u meets m at 3u head-on). Left (B's way) positive: before -4u and
+    # +3u; -5u = 2x + y and x - y = 7eu give x = -(5 - 7e)u/3, y = -(5 + 14e)u/3, which are
+    # (5 - 7e)u/3 and (5 + 14e)u/3 to the right, the mark scheme's v_A and v_B.
+    lead = (
+        "to the left (B's original direction) as positive. Let x and y be A's and B's velocities after, to the left.\n"
+    )
+    work = "2m(-4u) + m(3u) = 2mx + my\n-5u = 2x + y\nx - y = e(3u - (-4u)) = 7eu\n3x = 7eu - 5u\nx = -(5 - 7e)u/3\n"
+    all_correct(
+        "cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses",
+        lead.replace("to the", "I take the direction to the") + work,
+    )
 
 
 def test_a_sign_slip_under_a_convention_said_in_words() -> None:

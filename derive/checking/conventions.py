@@ -12,14 +12,14 @@ _FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|b
 _REVERSED = re.compile(
     rf"revers|opposite|negative|away\s+from\s+{_FIXED}|(?<!\w)from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
     rf"|(?:out\s+)?from\s+{_FIXED}|out\s+of\s+{_FIXED}|rebound|bounces?\s+back|(?<!\w)to(?:wards?)?\s+(?-i:A)\b"
-    r"|\bb'?s\s+(?:initial\s+)?(?:direction|motion)|direction\s+of\s+b\b",
+    r"|\bb['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)|direction\s+of\s+b\b",
     re.I,
 )
 _FORWARD = re.compile(
-    rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba'?s\s+(?:initial\s+)?(?:direction|motion)"
+    rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)"
     r"|direction\s+(?:that\s+|in\s+which\s+)?a\s+(?:moves|travels|is\s+(?:moving|travelling)|goes|starts)"
     r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive|(?<!\w)to(?:wards?)?\s+(?-i:B)\b|direction\s+of\s+approach"
-    r"|(?:initial|original)\s+direction(?:\s+of\s+(?:motion\s+of\s+)?(?:a|the\s+(?:ball|sphere|particle|puck)))?\b"
+    r"|(?<!['’]s\s)(?:initial|original)\s+direction(?:\s+of\s+(?:motion\s+of\s+)?(?:a|the\s+(?:ball|sphere|particle|puck)))?\b"
     r"|direction\s+of\s+motion\s+of\s+a\b",
     re.I,
 )
