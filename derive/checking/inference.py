@@ -33,6 +33,7 @@ from derive.checking.naming import (
 from derive.checking.numeric import number_of
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
 from derive.checking.restated import is_size, restated
+from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
@@ -112,6 +113,7 @@ def read_lines(
         key=lambda c: c[0],
     )
     named_later(raw, mapping, problem)
+    said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
     lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
@@ -180,6 +182,9 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
             out[f"speed_{b}"] = sympy.sqrt(getattr(ctx.model.nm, f"{b}2n") ** 2)  # |v_A|, at one dimension
     if getattr(ctx.problem, "fixed_B", False) and "speed_A" in out:
         out["speed_after"] = out["speed_A"]  # "rebound speed": only A moves after hitting a wall
+        out.update(
+            velocity_after=ctx.model.nm.A2n, velocity_before=ctx.model.nm.A1n, speed_before=sympy.Abs(ctx.model.nm.A1n)
+        )
     nm = ctx.model.nm
     b1, b2 = nm.B1n if nm.B1n is not None else 0, nm.B2n if nm.B2n is not None else 0
     out["speed_app"] = nm.A1n - b1  # the speed of approach along n (positive: they approach)
@@ -200,8 +205,8 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
                     shown[0] = r.lead
                     continue
-                if i == len(sides) - 1 or len(sides) < 3 or (i and len(exprs) < 1):
-                    raise
+                if i == len(sides) - 1 or len(sides) < 3 or (i and not exprs and len(sides) - i < 3):
+                    raise  # "impulse = change in momentum = 0.8(1.2) + 0.8(4) = 4.16": words, words, then a relation
                 shown[i] = None  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
         first = exprs[0] if exprs else None
         if (

@@ -30,6 +30,8 @@ import sympy
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
+from derive.checking.saidwords import times_beside_words
+from derive.checking.saidwords import together as moving_off_together
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
 from derive.checking.wordnames import in_words, says_what
 from derive.mathtext.notation import glued_times, student
@@ -58,6 +60,11 @@ PHRASES = (
     (
         r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
         "speed_after",  # A's speed after hitting a wall (a name only where B is fixed: inference._speeds)
+    ),
+    (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
+    (
+        r"^\s*(?:the\s+)?velocity\s+(after|before)(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$",
+        r"velocity_\1",
     ),
     (
         r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed|(?<=\()\s*approach\s*(?=\))",
@@ -121,6 +128,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
+    text = times_beside_words(text)  # "e x speed before": times, beside a quantity said in words
     text = re.sub(
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
     )
@@ -357,8 +365,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if u_used:
         out["v"] = after["A"]
-    if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
-        out["V"] = out["v_f"] = out["v_2"] = moving_together(ctx, after["A"], after["B"])
+    if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
+        out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
     for name in COMMON:
         out[name] = common_velocity(ctx)
@@ -374,7 +382,7 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
     out: dict[str, sympy.Expr] = {}
     given = {g.name for g in p.givens if not g.unknown}
     open_ = [b for b in "AB" if not ({f"v_{b}2", f"v_{b}2n"} & given)]
-    together = any(g.name == "e" and g.value == 0 for g in p.givens)
+    together = moving_off_together(p)
     lone = moving_together(ctx, after["A"], after["B"]) if together else after[open_[0]] if len(open_) == 1 else None
     if not p.oblique and not u_used and lone is not None:
         out["V"] = lone  # together: their common velocity after (:func:`moving_together`)
@@ -392,7 +400,7 @@ def moving_together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) ->
     """The one velocity of two bodies that move off together (e = 0): the velocity of their
     centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
     when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
-    if ctx.problem.fixed_B or a is None or b is None:
+    if ctx.problem.fixed_B or a is None or b is None or a == b:
         return a
     m = ctx.model
     return (m.m_A * a + m.m_B * b) / (m.m_A + m.m_B)

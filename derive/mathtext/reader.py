@@ -34,7 +34,16 @@ from derive.mathtext.notes import (
     without_note,
 )
 from derive.mathtext.parser import GREEK
-from derive.mathtext.sides import direction_of, html_marks, thousands, typed_names, units_inside, without_direction
+from derive.mathtext.sides import (
+    decimal_commas,
+    direction_of,
+    html_marks,
+    thousands,
+    typed_names,
+    units_inside,
+    without_direction,
+)
+from derive.mathtext.texwords import tex_comment, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -70,8 +79,15 @@ _CLOSE = {
     "$": re.compile(r"(?<!\\)\$"),
 }
 _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
+#: "So", "hence" and "and" as students abroad write them (German, French, Spanish, Italian, Dutch).
+_SO_ABROAD = (
+    r"also|daher|damit|somit|folglich|und|donc|alors|d['’]où|ainsi|et|entonces|luego|por\s+(?:lo\s+)?tanto"
+    r"|as[ií]\s+que|quindi|dunque|perciò|dus"
+)
 _ARROW = re.compile(
-    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at)(?![\w])",
+    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at|"
+    + _SO_ABROAD
+    + r")(?![\w])",
     re.I,
 )
 #: "with", "where": what follows defines the names of the relation before it.
@@ -104,8 +120,6 @@ def without_unit(side: str) -> str:
     return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
 
 
-#: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
-_TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
 _UNIT_BRACKET = re.compile(
     r"\s*\((?=[^()]*[A-Za-z])(?:[\s/*^·.-]|\(\s*-\s*1\s*\)|-?1\b|m|s|kg|N|J|ft|lb|slug)+\)\s*\.?\s*$"
@@ -132,6 +146,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
         main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
+        main, aside = decimal_commas(main), decimal_commas(aside)  # "0,25": nought point two
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
         for part, is_aside in parts:
             r = relation(line, column, written, part)
@@ -154,7 +169,7 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     lines = text.split("\n")
     n, close, rows = 0, None, []
     while n < len(lines):
-        raw = _tex_comment(lines[n])
+        raw = tex_comment(lines[n])
         if close is None:
             plain, close, rows = _line(raw, n + 1)
             if plain.strip():
@@ -210,9 +225,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         m = _OPEN.search(raw, i)
         if m is None:  # LaTeX typed with no delimiters (``v_A2 = \\frac{8}{9}u``): read as mathematics
             rest = raw[i:]
-            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else _tex_text(rest))
+            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else tex_text(rest))
             return " ".join(out), None, []
-        out.append(_tex_text(raw[i : m.start()]))
+        out.append(tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
@@ -220,23 +235,6 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
-
-
-#: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
-_TEX_WORDS = re.compile(
-    r"\\(?:textbf|textit|emph|underline|textsc|(?:sub)*section\*?|paragraph\*?|item)\s*(?:\{([^{}]*)\})?"
-)
-
-
-def _tex_text(text: str) -> str:
-    """Words around mathematics without LaTeX's spacing and formatting commands."""
-    return _TEX_WORDS.sub(lambda m: f" {m.group(1) or ''} ", _TEX_SPACE.sub(" ", text))
-
-
-def _tex_comment(line: str) -> str:
-    """A line without its TeX comment (``%`` not after a backslash)."""
-    m = re.search(r"(?<!\\)%", line)
-    return line[: m.start()] if m and not re.search(r"\d\s*$", line[: m.start()]) else line
 
 
 def split_relations(plain: str) -> list[str]:
@@ -346,7 +344,7 @@ def _side(text: str) -> str:
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
-    text = thousands(bracketed_names(text))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
+    text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it

@@ -27,8 +27,14 @@ _GLUED_BODY = re.compile(r"(?<![\w'\\])([muvwp])([ABPQ])(?![\w'])")
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
 
-#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``.
-_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])\d{1,3}(?:,\d{3})+(?![\d,])")
+#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``, nor
+#: a decimal comma after a nought (``0,250``).
+_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])(?!0,)\d{1,3}(?:,\d{3})+(?![\d,])")
+#: A decimal comma as European students type it (``0,25``, ``3,46``, ``-0,0761``): digits either side,
+#: no space; not a list of three or more (``1,2,3``), nor thousands (read before it).
+_DECIMAL_COMMA = re.compile(r"(?<![\d.,^_])(\d+),(\d+)(?![\d,]|\.\d)")
+#: A pair in brackets of its own (``= (3,4)``, ``[2,5]``): a vector or an interval, not a decimal.
+_PAIR = re.compile(r"(?:^|(?<=[\s=,;:]))[(\[<⟨{]\s*-?\d+,\d+\s*[)\]>⟩}]")
 
 
 #: HTML's subscripts and powers, as a Markdown page types them (``v<sub>A2</sub>``, ``s<sup>-1</sup>``).
@@ -46,6 +52,16 @@ def thousands(text: str) -> str:
     number: a teacher reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
     text = _THOUSANDS_COMMA.sub(lambda m: m.group(0).replace(",", ""), text)
     return _THOUSANDS.sub(lambda m: re.sub(r"\s", "", m.group(0)), text)
+
+
+def decimal_commas(text: str) -> str:
+    """``text`` with each decimal comma written as a point (``0,25`` as ``0.25``): a teacher in
+    Germany, France or Spain reads ``m(0,2 - 3)`` as nought point two; a pair in brackets of its
+    own (``v = (3,4)``) stays a pair."""
+    pairs = [m.span() for m in _PAIR.finditer(text)]
+    return _DECIMAL_COMMA.sub(
+        lambda m: m.group(0) if any(a <= m.start() < b for a, b in pairs) else f"{m[1]}.{m[2]}", text
+    )
 
 
 def typed_names(text: str) -> str:
