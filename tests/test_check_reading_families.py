@@ -133,3 +133,164 @@ def test_an_own_value_said_again_is_marked_as_the_line_that_worked_it() -> None:
         "correct",
         "correct",
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "verdict"),
+    [
+        ("e = [v_B2 - v_A2] / [v_A1 - v_B1]", "correct"),
+        ("e = [(vB)2 - (vA)2] / [(vA)1 - (vB)1]", "correct"),
+        ("v_B2 - v_A2 = 0.5 * [12 - 4] = 4", "correct"),
+        ("e = [(vA)2 - (vB)2] / [(vA)1 - (vB)1]", "wrong"),  # separation the wrong way round
+    ],
+)
+def test_square_brackets_after_an_operator_are_mathematics(text: str, verdict: str) -> None:
+    assert statuses(DIRECT, text) == [verdict]
+
+
+#: A bullet (0.02 kg, 400 m/s) lodges in a block at rest; they move off together at 2 m/s (both
+#: velocities after given): 0.02(400) = 8 = (0.02 + m_B)(2), so m_B = (8 - 0.04)/2 = 3.98 kg.
+LODGES = """title = "Bullet lodges in a block: find the block's mass (inverse)"
+kind = "direct"
+statement = "A bullet of mass {m_A} travelling at {v_A1} lodges in a block at rest; they move off at 2 m/s."
+question = "Find the mass of the block."
+digits = 3
+
+[given]
+m_A = "0.02 kg"
+m_B = "? kg"
+e = "?"
+v_A1 = "400 m/s"
+v_B1 = 0
+v_A2 = "2 m/s"
+v_B2 = "2 m/s"
+"""
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("m_A u_A = (m_A + m_B) v'", ["correct"]),
+        ("0.02(400) = (0.02 + m_B) v'", ["correct"]),
+        (r"$m_A v_{A1} = (m_A + m_B)\,v'$", ["correct"]),
+        ("m_A u_A = (m_A + m_B) V'", ["correct"]),
+        ("0.02(400) = (0.02 + m_B) v'\nv' = 2\n8 = 0.04 + 2 m_B\nm_B = 3.98 kg", ["correct"] * 4),
+        ("0.02(400) = (0.02 + m_B) v'\n8 = 0.04 + m_B", ["correct", "wrong"]),
+    ],
+)
+def test_v_prime_is_the_velocity_both_move_off_with(tmp_path, text: str, expected: list[str]) -> None:
+    path = tmp_path / "lodges.toml"
+    path.write_text(LODGES, encoding="utf-8")
+    report = derive.check(derive.solve(derive.load(str(path))), derivation=text)
+    assert [i.status for i in report.items if i.kind == "line"] == expected
+
+
+@pytest.mark.parametrize(
+    ("problem", "text", "verdict"),
+    [
+        # mcasco-two-cars-no-bounce: A at 3 ft/s, B at 6 ft/s toward it (the other way)
+        ("mcasco-two-cars-no-bounce", "(vB)1 = 6 ft/s left", "correct"),
+        ("mcasco-two-cars-no-bounce", "Given: (vA)1 = 3 ft/s right, (vB)1 = 6 ft/s left", "correct"),
+        ("mcasco-two-cars-no-bounce", "(vB)1 = 6 ft/s right", "wrong"),
+        (DIRECT, "v_B1 = 4 m/s right", "correct"),  # B at 4 m/s the same way as A
+        (DIRECT, "v_A2 = 4 m/s (right)", "correct"),
+        (DIRECT, "v_B1 = 4 m/s left", "wrong"),
+    ],
+)
+def test_left_or_right_alone_after_a_speed_is_its_direction(problem: str, text: str, verdict: str) -> None:
+    assert statuses(problem, text) == [verdict]
+
+
+#: msu-lectureonline-bullet-lodges-in-block: a 0.020 kg bullet at 300 m/s lodges in a 4.0 kg block at
+#: rest (e = 0): v' = 0.020(300)/4.02 = 1.4925 m/s. "at" parts "m = 0.020 kg" from what follows; the
+#: speed before the comma is no part of M's side; v and v' are the bullet's speed before and after.
+BULLET = "msu-lectureonline-bullet-lodges-in-block"
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "bullet m = 0.020 kg at 300 m/s, block M = 4.0 kg at rest\nv' = m v/(m + M) = 0.020(300)/4.02 = 1.49 m/s",
+            ["correct", "correct"],
+        ),
+        ("m = 0.020 kg moving at 300 m/s, M = 4.0 kg\nm v = (m + M) v'\nv' = 6/4.02 = 1.49 m/s", ["correct"] * 3),
+        (
+            "bullet m = 0.020 kg at 300 m/s, block M = 4.0 kg at rest\nv' = m v/(m + M) = 0.020(300)/4.02 = 1.59 m/s",
+            ["correct", "wrong"],
+        ),
+        ("bullet m = 0.020 kg at 300 m/s, block M = 4.0 kg at rest\nv' = M v/(m + M)", ["correct", "wrong"]),
+    ],
+)
+def test_v_before_and_v_prime_after_with_masses_said_in_a_sentence(text: str, expected: list[str]) -> None:
+    assert statuses(BULLET, text) == expected
+
+
+def test_a_speed_before_a_comma_is_no_part_of_the_next_relation() -> None:
+    assert sides("Puck m = 0.150 kg at 35.0 m/s, goalie M = 70.0 kg at rest.") == [("m", "0.150"), ("M", "70.0")]
+    assert sides("x = 1, 2") == [("x", "1, 2")]
+
+
+@pytest.mark.parametrize(
+    "law",
+    [
+        "v^2 = u^2 + 2as",
+        "v² = u² + 2as",
+        "v = u + at",
+        "s = ut + ½at²",
+        "s = ut + (1/2)at^2",
+        "F = ma",
+        "s = (u + v)t/2",
+    ],
+)
+def test_a_law_of_motion_quoted_in_its_letters_is_not_marked(law: str) -> None:
+    """A teacher does not mark the formula a student writes before using it; the line after is marked."""
+    assert sides(law) == []
+    assert statuses(WALL, f"{law}\nv_A2 = -0.4(4) = -1.6") == ["correct"]
+
+
+def test_a_law_with_its_numbers_is_still_read() -> None:
+    assert sides("v^2 = u^2 + 2as = 21^2 + 2(9.8)(40) = 1225") == [("v^2", "u^2 + 2as", "21^2 + 2(9.8)(40)", "1225")]
+    assert sides("v = 2 at t = 3") == [("v", "2"), ("t", "3")]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("0.68 = 0.2(2.9 + v_B'')\nv_B'' = 0.5 m/s", ["correct", "correct"]),
+        ("0.68 = 0.2(2.9 + v_B'')\nv_B'' = 0.6 m/s", ["correct", "wrong"]),
+    ],
+)
+def test_two_primes_name_the_velocity_after_a_second_impact(text: str, expected: list[str]) -> None:
+    """chain-ocr-m2-2011-find-e-mass-then-wall: B leaves A at 2.9 m/s toward the wall and gets an
+    impulse of 0.68 N s from it: 0.68 = 0.2(2.9 + w), w = 3.4 - 2.9 = 0.5 m/s back (``v_B''``)."""
+    assert statuses("chain-ocr-m2-2011-find-e-mass-then-wall", text) == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        (
+            "v_cm = (m_A v_A + m_B v_B)/(m_A + m_B) = 0.077/0.049 = 1.571 m/s\nv_i' = 2 v_cm - v_i\n"
+            "v_A' = 2(1.571) - 3.5 = -0.357 m/s\nv_B' = 2(1.571) - 0 = 3.14 m/s",
+            ["correct"] * 4,
+        ),
+        ("v_cm = 0.077/0.049 = 1.571 m/s\n$v_i' = 2v_{cm} - v_i$", ["correct", "correct"]),
+        ("v_cm = 0.077/0.049 = 1.571 m/s\nv_i' = v_cm - v_i", ["correct", "wrong"]),
+    ],
+)
+def test_a_rule_written_once_for_each_body_with_the_index_i(text: str, expected: list[str]) -> None:
+    """uoguelph-8-34-superballs-grams (e = 1): 22 g at 3.5 m/s hits 27 g at rest; v_cm = 0.077/0.049
+    = 1.5714; v_A' = 2(1.5714) - 3.5 = -0.357, v_B' = 3.143 (= 2(22)/49 × 3.5). ``v_f = 2v_cm - v_i``
+    (i for initial) is one relation."""
+    assert statuses("uoguelph-8-34-superballs-grams", text) == expected
+    assert sides("v_f = 2v_cm - v_i") == [("v_f", "2v_cm - v_i")]
+
+
+def test_masses_that_cancel_in_a_chain_need_no_values() -> None:
+    """chain-msu-bullet-block-swings: V = 0.020(300)/4.02 = 1.4925 m/s; the block and bullet rise
+    h = V²/(2g) = 2.2277/19.62 = 0.1135 m; ½(m1 + m2)V² = (m1 + m2) g h holds whatever the masses."""
+    chain = "chain-msu-bullet-block-swings"
+    work = "V = 0.020(300)/4.02 = 1.493 m/s\n(1/2)(m1 + m2)V^2 = (m1 + m2) g h\nh = 1.493^2/(2(9.81)) = 0.114 m"
+    assert statuses(chain, work) == ["correct"] * 3
+    assert "correct" not in statuses(chain, "(m1 + m2)V^2 = (m1 + m2) g h")  # the ½ lost: never right

@@ -129,8 +129,10 @@ def rewrite(text: str, known: set[str]) -> str:
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
     text = times_beside_words(text)  # "e x speed before": times, beside a quantity said in words
-    text = re.sub(
-        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
+    text = re.sub(  # v' -> v_p; v_2'' (after a second impact) -> v_2pp
+        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)('+)",
+        lambda m: m[1] + ("" if "_" in m[1] else "_") + "p" * len(m[2]),
+        text,
     )
     text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
     text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
@@ -368,6 +370,10 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
         out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
+    rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0}
+    moving = [x for b, x in before.items() if x is not None and b not in rest]
+    if used is not None and {"v", "v_p"} <= used and len(moving) == 1:  # v' = m v/(m + M): v before, v' after
+        out["v"] = moving[0]
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}

@@ -229,6 +229,13 @@ def _restated_in_brackets(text: str) -> str:
     return text[: text.index("(", m.end("value"))].rstrip() if same else text
 
 
+#: "So", "hence" and "and" as students abroad write them (German, French, Spanish, Italian, Dutch).
+SO_ABROAD = (
+    r"also|daher|damit|somit|folglich|und|donc|alors|d['’]où|ainsi|et|entonces|luego|por\s+(?:lo\s+)?tanto"
+    r"|as[ií]\s+que|quindi|dunque|perciò|dus"
+)
+
+
 #: The longest note read after a relation (its patterns look at the end of a line only).
 NOTE_CHARS = 200
 
@@ -336,3 +343,41 @@ GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)
 #: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
 #: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
 REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")
+
+
+#: Laws of motion quoted in their textbook letters before they are used (``v^2 = u^2 + 2as``,
+#: ``v = u + at``, ``s = ut + ½at²``, ``F = ma``): a formula stated, not a claim about the problem,
+#: which a teacher does not mark. Written without spaces or times signs, ``²`` as ``^2``.
+_LAWS = frozenset(
+    {
+        "v^2=u^2+2as",
+        "v^2=u^2-2as",
+        "v^2-u^2=2as",
+        "v=u+at",
+        "v=u-at",
+        "s=ut+1/2at^2",
+        "s=ut-1/2at^2",
+        "s=ut+at^2/2",
+        "s=1/2(u+v)t",
+        "s=(u+v)t/2",
+        "s=(u+v)/2t",
+        "s=((u+v)/2)t",
+        "s=vt-1/2at^2",
+        "F=ma",
+        "v^2=u^2+2gs",
+        "v^2=u^2-2gs",
+        "v=u+gt",
+        "v=u-gt",
+        "s=ut+1/2gt^2",
+        "s=ut-1/2gt^2",
+    }
+)
+
+
+def quoted_law(sides: tuple[str, ...]) -> bool:
+    """Whether a relation of two sides is a law of motion quoted in its textbook letters (either
+    side first): a formula stated before it is used."""
+    if len(sides) != 2:
+        return False
+    plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
+    return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS

@@ -27,16 +27,20 @@ from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import (
     GAP_THEN_NAME,
     REMARK_END,
+    SO_ABROAD,
     UNIT_THEN_NAME,
     name_after_words,
+    quoted_law,
     unbold,
     unmarked,
     without_note,
 )
 from derive.mathtext.parser import GREEK
 from derive.mathtext.sides import (
+    LONE_VALUE,
     decimal_commas,
     direction_of,
+    each_body,
     html_marks,
     thousands,
     typed_names,
@@ -79,14 +83,9 @@ _CLOSE = {
     "$": re.compile(r"(?<!\\)\$"),
 }
 _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
-#: "So", "hence" and "and" as students abroad write them (German, French, Spanish, Italian, Dutch).
-_SO_ABROAD = (
-    r"also|daher|damit|somit|folglich|und|donc|alors|d['’]où|ainsi|et|entonces|luego|por\s+(?:lo\s+)?tanto"
-    r"|as[ií]\s+que|quindi|dunque|perciò|dus"
-)
 _ARROW = re.compile(
     r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at|"
-    + _SO_ABROAD
+    + SO_ABROAD
     + r")(?![\w])",
     re.I,
 )
@@ -154,7 +153,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            for sides in split_vectors(r.sides) if r is not None else ():
+            for sides in (e for v in split_vectors(r.sides) for e in each_body(v, text)) if r is not None else ():
                 out.append(replace(r, sides=sides))
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
@@ -263,8 +262,8 @@ def _arrow_split(plain: str) -> list[str]:
     out, start = [], 0
     for m in _ARROW.finditer(plain):
         head = plain[: m.start()]
-        if head.count("(") > head.count(")"):
-            continue
+        if head.count("(") > head.count(")") or (m.group(0).lower() == "at" and re.search(r"[-+*/=()]\s*$", head)):
+            continue  # "v = u + at": a product, not "at"
         out.append(plain[start : m.start()])
         start = m.end()
     return [*out, plain[start:]]
@@ -293,8 +292,8 @@ def _comma_split(piece: str) -> list[str]:
     bits = _top_level_split(piece, ",")
     out: list[str] = []
     for bit in bits:
-        if out and (("=" in bit and "=" in out[-1]) or _LABEL.match(bit)):
-            out.append(bit)
+        if out and (("=" in bit and ("=" in out[-1] or LONE_VALUE.fullmatch(out[-1]))) or _LABEL.match(bit)):
+            out.append(bit)  # "(at) 35.0 m/s, goalie M = 70.0 kg": the speed is no part of M's side
         elif out:
             out[-1] += "," + bit
         else:
@@ -313,7 +312,7 @@ def _top_level_split(s: str, sep: str) -> list[str]:
     return out
 
 
-_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(])")
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(^])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
 MATH_WORDS = GREEK | FUNCTIONS | {"deg", "degree", "degrees", "rad", "radian", "radians"}
 
@@ -430,6 +429,8 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
     sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
+    if quoted_law(sides):
+        return None  # "v^2 = u^2 + 2as": a law quoted before it is used, not marked
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words
         sides = tuple(s for s in sides if re.search(_SIDE, s) and not _POINTS.match(s))
         if len(sides) < 2:

@@ -37,6 +37,10 @@ _DECIMAL_COMMA = re.compile(r"(?<![\d.,^_])(\d+),(\d+)(?![\d,]|\.\d)")
 _PAIR = re.compile(r"(?:^|(?<=[\s=,;:]))[(\[<⟨{]\s*-?\d+,\d+\s*[)\]>⟩}]")
 
 
+#: A number and its unit alone before a comma (``35.0 m/s, M = 70.0 kg``): no relation's side.
+LONE_VALUE = re.compile(r"\s*[-+]?\d[\d.]*\s*(?:[A-Za-z]{1,3}(?:\s*/\s*[A-Za-z]{1,3})?)?\s*")
+
+
 #: HTML's subscripts and powers, as a Markdown page types them (``v<sub>A2</sub>``, ``s<sup>-1</sup>``).
 _HTML_MARK = re.compile(r"<(sub|sup)>\s*([^<>]{1,12}?)\s*</\1>", re.I)
 
@@ -64,6 +68,23 @@ def decimal_commas(text: str) -> str:
     )
 
 
+#: A name with the index i for "each body", after (``v_i'``) and before (``v_i``) in one relation.
+_EACH_AFTER = re.compile(r"(?<![\w\\])[A-Za-z]_i'")
+_EACH_BEFORE = re.compile(r"(?<![\w\\])[A-Za-z]_i(?![\w'])")
+
+
+def each_body(sides: tuple[str, ...], text: str) -> list[tuple[str, ...]]:
+    """A relation for each body written once with the index i (``v_i' = 2v_S - v_i``: the rule for
+    body 1 and body 2, or A and B as the text names them); any other relation as it is. ``v_f =
+    2v_cm - v_i`` (i for initial: no ``v_i'``) stays one."""
+    joined = " = ".join(sides)
+    if not (_EACH_AFTER.search(joined) and _EACH_BEFORE.search(joined)):
+        return [sides]
+    bodies = ("1", "2") if re.search(r"_\{?[12](?![\w.])", text) else ("A", "B")
+    each = re.compile(r"(?<![\w\\])([A-Za-z])_i(?!\w)")
+    return [tuple(each.sub(rf"\1_{b}", side) for side in sides) for b in bodies]
+
+
 def typed_names(text: str) -> str:
     """``text`` with names whose subscript or prime is typed another way written as one name
     (``mA`` as ``m_A``: the body glued to the letter)."""
@@ -88,14 +109,14 @@ def units_inside(text: str) -> str:
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
-    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
-    r"|in\s+the\s+same\s+direction))\b",
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$))|(to\s+the\s+right|rightwards?"
+    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)))\b",
     re.I,
 )
 
 
 _DIRECTION_END = re.compile(
-    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
+    r"\s*\(?\s*(?:(?:to\s+the\s+)?(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
     r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
     re.I,
 )
