@@ -102,3 +102,52 @@ def test_work_with_decimal_commas_is_judged_correct(problem: str, text: str) -> 
 )
 def test_a_slip_with_decimal_commas_is_wrong(problem: str, text: str) -> None:
     assert "wrong" in statuses(problem, text)
+
+
+@pytest.mark.parametrize(
+    ("problem", "text"),
+    [
+        (DIRECT, "Impulserhaltung: m_A·v_A + m_B·v_B = m_A·v_A' + m_B·v_B'"),
+        (DIRECT, "Impulserhaltung: 4 · 12 + 8 · 4 = 4 · v_A' + 8 · v_B'"),
+        (DIRECT, "Stoßzahl: e = (v_B' − v_A')/(v_A − v_B) = 0,5"),
+        (DIRECT, "Daraus folgt: v_A' = 4 m/s und v_B' = 8 m/s."),
+        (DIRECT, "Die Geschwindigkeit von A nach dem Stoß beträgt v_A' = 4 m/s."),
+        (DIRECT, "Conservation de la quantité de mouvement : 4 × 12 + 8 × 4 = 4 v'_A + 8 v'_B"),
+        (DIRECT, "d'où v'_A = 4 m·s⁻¹ et v'_B = 8 m·s⁻¹"),
+        (DIRECT, "Conservación del momento: 4(12) + 8(4) = 4 v_A' + 8 v_B'"),
+        (DIRECT, "por lo tanto v_A' = 4 m/s y v_B' = 8 m/s"),
+        (DIRECT, "Energía cinética antes: E_c = ½·4·12² + ½·8·4² = 352 J"),
+        (DIRECT, "Perdita di energia: ΔE = 352 − 288 = 64 J"),
+        (DIRECT, "v_A' = 4,0 m/s ; v_B' = 8,0 m/s"),
+        (WALL, "v' = −e · v = −0,4 · 4 m/s = −1,6 m/s"),
+        (WALL, "Kraftstoß: I = m · (v' − v) = 2 kg · (−1,6 − 4) m/s = −11,2 Ns"),
+        (WALL, "Energieverlust: ΔE = ½ · 2 · 4² − ½ · 2 · 1,6² = 16 − 2,56 = 13,44 J"),
+        (WALL, "la vitesse après le choc est v' = 1,6 m/s (vers la gauche)"),
+    ],
+)
+def test_a_line_typed_abroad_is_read_as_at_home(problem: str, text: str) -> None:
+    """v and v' on a wall: the ball's velocity before and after (v' = -e v = -0.4(4) = -1.6)."""
+    got = statuses(problem, text)
+    assert got and all(s == "correct" for s in got), got
+
+
+@pytest.mark.parametrize(
+    ("problem", "text"),
+    [
+        (WALL, "v' = −e · v = −0,4 · 4 m/s = −1,2 m/s"),
+        (WALL, "Kraftstoß: I = m · (v' − v) = 2 kg · (1,6 − 4) m/s = −4,8 Ns"),
+        (DIRECT, "por lo tanto v_A' = 5 m/s y v_B' = 8 m/s"),
+    ],
+)
+def test_a_slip_typed_abroad_is_wrong(problem: str, text: str) -> None:
+    assert "wrong" in statuses(problem, text)
+
+
+def test_points_between_thousands_where_commas_are_the_decimals() -> None:
+    """mcasco-two-cars-no-bounce in a German hand: 4500 lb at 3 ft/s, 3000 lb at 6 ft/s the other
+    way; 4500(3) - 3000(6) = 13500 - 18000 = -4500; V = -4500/7500 = -0.6 ft/s."""
+    work = "4.500 · 3 − 3.000 · 6 = 13.500 − 18.000 = −4.500\nV = −4.500/7.500 = −0,6 ft/s"
+    assert statuses("mcasco-two-cars-no-bounce", work) == ["correct", "correct"]
+    assert sides("m_A = 1.200 kg, v = 0,5 m/s") == [("m_A", "1200"), ("v", "0.5")]
+    assert sides("m_A = 1.200 kg, v = 0.5 m/s") == [("m_A", "1.200"), ("v", "0.5")]  # points are decimals here
+    assert sides("m = 1.200 kg") == [("m", "1.200")]

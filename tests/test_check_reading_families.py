@@ -294,3 +294,24 @@ def test_masses_that_cancel_in_a_chain_need_no_values() -> None:
     work = "V = 0.020(300)/4.02 = 1.493 m/s\n(1/2)(m1 + m2)V^2 = (m1 + m2) g h\nh = 1.493^2/(2(9.81)) = 0.114 m"
     assert statuses(chain, work) == ["correct"] * 3
     assert "correct" not in statuses(chain, "(m1 + m2)V^2 = (m1 + m2) g h")  # the ½ lost: never right
+
+
+@pytest.mark.parametrize(
+    ("problem", "text", "verdict"),
+    [
+        (DIRECT, "KE lost = 64 J (18.2%)", "correct"),  # 64/352 = 18.2 %: an aside
+        (DIRECT, r"$v_{A2} = 4$ \si{m/s}", "correct"),
+        (DIRECT, r"$v_{B2} = 8$~\si{\metre\per\second}", "correct"),
+        (DIRECT, "impulse = 32 N s", "correct"),  # on B: 8(8 - 4); on A: 4(4 - 12) = -32
+        (WALL, "impulse = 11.2 Ns away from the wall", "correct"),
+        (WALL, "impulse on the ball = 11.2 N s", "correct"),
+        (DIRECT, "KE lost = 60 J (17%)", "wrong"),
+    ],
+)
+def test_asides_and_units_in_text_and_the_impulse_in_words(problem: str, text: str, verdict: str) -> None:
+    assert statuses(problem, text) == [verdict]
+
+
+def test_a_share_in_brackets_is_an_aside_but_a_product_is_not() -> None:
+    assert sides("KE lost = 64 J (18.2%)") == [("KE lost", "64")]
+    assert sides("p = 2(30%)") == [("p", "2(30%)")]

@@ -30,7 +30,7 @@ import sympy
 from derive.checking.axisnames import letter_components
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
-from derive.checking.saidwords import times_beside_words
+from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
 from derive.checking.spellings import angle_sum_in_degrees, greek_letters, marked_names, notes_names, subscript
 from derive.checking.wordnames import in_words, says_what
@@ -61,17 +61,13 @@ PHRASES = (
         r"(?:rebound(?:ing)?\s+speed|speed\s+of\s+rebound|^\s*speed\s+after(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$)",
         "speed_after",  # A's speed after hitting a wall (a name only where B is fixed: inference._speeds)
     ),
-    (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
-    (
-        r"^\s*(?:the\s+)?velocity\s+(after|before)(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$",
-        r"velocity_\1",
-    ),
     (
         r"speed\s+of\s+approach|approach(?:ing)?\s+speed|closing\s+speed|(?<=\()\s*approach\s*(?=\))",
         "speed_app",
     ),  # not "relative speed":
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
+PHRASES += SAID_PHRASES  # a wall's velocity and speed in words
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -128,7 +124,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = times_beside_words(text)  # "e x speed before": times, beside a quantity said in words
+    text = times_beside_words(text, known)  # "e x speed before": times, beside a quantity said in words
     text = re.sub(  # v' -> v_p; v_2'' (after a second impact) -> v_2pp
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)('+)",
         lambda m: m[1] + ("" if "_" in m[1] else "_") + "p" * len(m[2]),
@@ -362,7 +358,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
         if u_used:
             out["v_n"], out["v_t"] = nm.A2n, nm.A2t
-    if ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
+    if fixed := ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
         out["m"] = ctx.model.m_A
         out["v"] = after["A"]
     if u_used:
@@ -370,10 +366,10 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
         out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
-    rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0}
-    moving = [x for b, x in before.items() if x is not None and b not in rest]
+    rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0} | set("B" * fixed)
+    moving = [b for b, x in before.items() if x is not None and b not in rest]
     if used is not None and {"v", "v_p"} <= used and len(moving) == 1:  # v' = m v/(m + M): v before, v' after
-        out["v"] = moving[0]
+        out["v"], out["v_p"] = before[moving[0]], out.get("v_p", after[moving[0]])
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}

@@ -7,13 +7,31 @@ from __future__ import annotations
 
 import re
 
+#: Quantities said in words, as names (:func:`.naming.rewrite`; a wall's speeds and velocities valued in
+#: ``inference._speeds`` where B is fixed): a speed before, a velocity before or after.
+SAID_PHRASES = (
+    (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
+    (
+        r"^\s*(?:the\s+)?velocity\s+(after|before)(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$",
+        r"velocity_\1",
+    ),
+)
+
 #: An ``x`` for times beside a quantity said in words, rewritten as a name (``e x speed_before``,
 #: ``speed_before x e``): never the letter x.
 _TIMES_WORDS = re.compile(r"(?<=\S)\s+x\s+(?=(?:speed|velocity)_(?:after|before)\b)|(?<=_after|before)\s+x\s+(?=\S)")
 
 
-def times_beside_words(text: str) -> str:
-    """``text`` with each ``x`` beside a quantity said in words written as ``*``."""
+#: The impulse said in words, a whole side (``impulse = 11.2 N s``, ``impulse on the ball = …``).
+_IMPULSE = re.compile(r"^\s*(?:the\s+)?impulse(?:\s+(?:on|of)\s+(?:the\s+)?(?:ball|particle|sphere|puck))?\s*$", re.I)
+
+
+def times_beside_words(text: str, known: set[str] | frozenset[str] = frozenset()) -> str:
+    """``text`` with each ``x`` beside a quantity said in words written as ``*``, and the impulse
+    in words as its size where the problem is one impact (its impulse ``J_n`` known; a chain's
+    impulses are its stages' own, and a word there stays the student's own name): "impulse =
+    11.2 N s away from the wall" gives its direction in words, as "magnitude of impulse" does."""
+    text = _IMPULSE.sub("sqrt(J_n^2)", text) if "J_n" in known else text
     return _TIMES_WORDS.sub(" * ", text)
 
 

@@ -198,6 +198,8 @@ def _remark_in_brackets(text: str) -> str:
     return text
 
 
+#: A percentage in brackets after a value (``= 64 J (18.2%)``, ``(≈ 18 % of the KE lost)``): an aside.
+_PERCENT = re.compile(r"(?:(?<=[A-Za-z])\s*|(?<=[\w.)])\s+)\(\s*[≈~=]?\s*(?:about\s+)?\d[\d.,]*\s*%[^()=]*\)\s*\.?\s*$")
 #: The value said again in brackets as a speed and a direction (``= -0.025 m/s (i.e. 0.025 m/s ←)``,
 #: ``= -1.6 (so 1.6 m/s away from the wall)``, ``= -3 (3 m/s to the left)``).
 _RESTATED = re.compile(
@@ -251,6 +253,7 @@ def without_note(text: str) -> tuple[str, str]:
 def _note(text: str, equals_before: bool) -> tuple[str, str]:
     """The end of a relation without its note, and the tag (see :func:`without_note`)."""
     text = _restated_in_brackets(text)  # "(so 0.2 m/s ←)": before the arrow is read as a pointer
+    text = _PERCENT.sub("", text)  # "= 64 J (18.2%)": the share, an aside
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
     text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", _CODE_COMMENT.sub("", text))))

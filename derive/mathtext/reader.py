@@ -41,6 +41,7 @@ from derive.mathtext.sides import (
     decimal_commas,
     direction_of,
     each_body,
+    european_points,
     html_marks,
     thousands,
     typed_names,
@@ -135,8 +136,9 @@ _SIDE = re.compile(r"[A-Za-z0-9\u0391-\u03c9\u03d5]")
 def read_relations(text: str) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`)."""
     out: list[Relation] = []
+    points = european_points(text)
     for line, column, written, plain in pieces(text):
-        plain = unmarked(unbold(plain))
+        plain = points(unmarked(unbold(plain)))
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
@@ -241,6 +243,9 @@ def split_relations(plain: str) -> list[str]:
     brackets) that comes before another relation."""
     plain = re.sub(r"(?<=\s)~(?=\s)|≃|≅|∼", "=", plain.replace("≈", "="))  # "v ~ 4": about, as ≈
     plain = re.sub(r"(?<=\s)&(?=\s+[^=&]*=)", " ; ", plain)  # "a = 1 & b = 2" in plain text: and
+    plain = re.sub(
+        r"(\d|\)|/s|J|kg)\s+y\s+(?=[A-Za-z][\w']*\s*=)", r"\1 ; ", plain
+    )  # Spanish "and": "= 4 m/s y v_B = 8"
     plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
     parts: list[str] = []
     plain = re.sub(

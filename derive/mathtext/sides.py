@@ -9,6 +9,7 @@ it (``352 J − 288 J``), and a direction in words after its number (``= 1.04 m/
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 #: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
 _BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
@@ -83,6 +84,21 @@ def each_body(sides: tuple[str, ...], text: str) -> list[tuple[str, ...]]:
     bodies = ("1", "2") if re.search(r"_\{?[12](?![\w.])", text) else ("A", "B")
     each = re.compile(r"(?<![\w\\])([A-Za-z])_i(?!\w)")
     return [tuple(each.sub(rf"\1_{b}", side) for side in sides) for b in bodies]
+
+
+#: A point between thousands, as Germany writes it (``1.200 kg``), where commas are the decimals.
+_THOUSANDS_POINT = re.compile(r"(?<![\d.,])\d{1,3}(?:\.\d{3})+(?![\d.,])")
+
+
+def european_points(text: str) -> Callable[[str], str]:
+    """How to read the points of ``text``'s numbers: where it writes its decimals with a comma
+    (``0,25``, ``0{,}25``) and every point has three digits after it, ``1.200 kg`` is twelve
+    hundred (the points dropped); elsewhere a point is a decimal point (nothing changed)."""
+    decimal = r"(?<![\d.,])0,\d|\d,(?:\d{1,2}|\d{4,})(?![\d,])|\d\{,\}\d"  # 0,250; 0,5; 0{,}25: not 4,500
+    commas = re.search(decimal, text) and not re.search(r"\d\.(?:\d{1,2}|\d{4,})(?!\d)", text)
+    if not commas or not _THOUSANDS_POINT.search(text):
+        return lambda plain: plain
+    return lambda plain: _THOUSANDS_POINT.sub(lambda m: m[0].replace(".", ""), plain)
 
 
 def typed_names(text: str) -> str:

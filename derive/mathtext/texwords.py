@@ -27,9 +27,20 @@ _TEX_BOX = re.compile(
 )
 
 
+#: siunitx in text after the mathematics (``$v = 4$ \\si{m/s}``, ``\\SI{4}{m/s}``): the number and the
+#: unit as typed (a unit of commands, ``\\metre\\per\\second``, dropped).
+_SIUNITX = re.compile(r"\\SI\s*\{([^{}]*)\}\s*\{([^{}]*)\}|\\si\s*\{([^{}]*)\}")
+
+
+def _siunitx(m: re.Match[str]) -> str:
+    unit = m[2] or m[3]
+    return f" {m[1] or ''} {'' if chr(92) in unit else unit} "
+
+
 def tex_text(text: str) -> str:
     """Words around mathematics without LaTeX's spacing and formatting commands, a box's command
     and the brace that closes it (``\\fbox{$v = 2$}``: the ``}`` after the mathematics)."""
+    text = _SIUNITX.sub(_siunitx, text)  # \si{m/s} after the mathematics: its unit
     text = _TEX_SPACE.sub(" ", _TEX_BOX.sub(" ", text))
     text = _TEX_WORDS.sub(lambda m: f" {m.group(1) or ''} ", text)
     out, depth = [], 0
