@@ -151,3 +151,39 @@ def test_points_between_thousands_where_commas_are_the_decimals() -> None:
     assert sides("m_A = 1.200 kg, v = 0,5 m/s") == [("m_A", "1200"), ("v", "0.5")]
     assert sides("m_A = 1.200 kg, v = 0.5 m/s") == [("m_A", "1.200"), ("v", "0.5")]  # points are decimals here
     assert sides("m = 1.200 kg") == [("m", "1.200")]
+
+
+@pytest.mark.parametrize(
+    ("text", "verdict"),
+    [
+        ("E_c avant = 352 J", "correct"),  # ½·4·144 + ½·8·16
+        ("E_c après = 288 J", "correct"),
+        ("E_kin vorher = 352 J", "correct"),
+        ("E_kin,nachher = 288 J", "correct"),
+        ("Energieverlust = 64 J", "correct"),
+        ("perte d'énergie = 352 − 288 = 64 J", "correct"),
+        ("pérdida de energía = 64 J", "correct"),
+        ("E_k before = 352 J", "correct"),
+        ("E_kin nachher = 352 J", "wrong"),
+        ("perte d'énergie = 60 J", "wrong"),
+    ],
+)
+def test_kinetic_energies_named_in_other_languages(text: str, verdict: str) -> None:
+    assert statuses(DIRECT, text) == [verdict]
+
+
+@pytest.mark.parametrize(
+    ("text", "direction"),
+    [
+        ("v = 1,6 m/s (zurück)", -1),
+        ("v = 1.6 m/s nach links", -1),
+        ("v = 1.6 m/s vers la gauche", -1),
+        ("v = 1.6 m/s hacia la izquierda", -1),
+        ("v = 4 m/s nach rechts", 1),
+        ("v = 4 m/s à droite", 1),
+        ("v = 2 leftover", 0),
+    ],
+)
+def test_a_direction_in_words_abroad(text: str, direction: int) -> None:
+    (r,) = read_relations(text)
+    assert r.direction == direction and r.sides[-1] in ("1.6", "4", "2")

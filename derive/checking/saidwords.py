@@ -7,9 +7,19 @@ from __future__ import annotations
 
 import re
 
+#: A kinetic energy's name as students write it at home and abroad (E_k, E_kin, E_c: énergie cinétique).
+_ENERGY = r"E_?(?:k|c|kin|cin)|KE|Ekin"
+#: The energy lost, in German, French, Spanish and Italian.
+_LOST = (
+    r"(?:kinetischer\s+)?Energieverlust|Verlust\s+an\s+(?:kinetischer\s+)?Energie|perte\s+d['’]\s*[ée]nergie(?:\s+cin[ée]tique)?"
+    r"|[ée]nergie\s+perdue|p[ée]rdida\s+de\s+energ[ií]a(?:\s+cin[ée]tica)?|energ[ií]a\s+perdida|perdita\s+di\s+energia"
+)
 #: Quantities said in words, as names (:func:`.naming.rewrite`; a wall's speeds and velocities valued in
 #: ``inference._speeds`` where B is fixed): a speed before, a velocity before or after.
 SAID_PHRASES = (
+    (rf"(?:{_ENERGY})[\s_,]*(?:before|initial|vorher|avant|antes|prima|iniziale|initiale?)\b", "T_1"),
+    (rf"(?:{_ENERGY})[\s_,]*(?:after|final|nachher|apr[eè]s|despu[eé]s|dopo|finale)(?!\w)", "T_2"),
+    (rf"^\s*(?:{_LOST})\s*$", "T_lost"),
     (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
     (
         r"^\s*(?:the\s+)?velocity\s+(after|before)(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$",

@@ -123,17 +123,28 @@ def units_inside(text: str) -> str:
 
 
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
+#: "Back" and "on" (to the left, to the right) as students abroad write them after a speed.
+_BACK_ABROAD = (
+    r"zurück|nach\s+links|vers\s+la\s+gauche|à\s+gauche|en\s+sens\s+inverse|hacia\s+(?:la\s+)?izquierda|hacia\s+atrás"
+)
+_ON_ABROAD = r"nach\s+rechts|vers\s+la\s+droite|à\s+droite|hacia\s+(?:la\s+)?derecha"
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
-    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$))|(to\s+the\s+right|rightwards?"
-    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)))\b",
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$)|"
+    + _BACK_ABROAD
+    + r")|(to\s+the\s+right|rightwards?"
+    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)|" + _ON_ABROAD + r"))(?!\w)",
     re.I,
 )
 
 
 _DIRECTION_END = re.compile(
     r"\s*\(?\s*(?:(?:to\s+the\s+)?(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
-    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
+    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way|"
+    + _BACK_ABROAD
+    + "|"
+    + _ON_ABROAD
+    + r")\s*\)?\s*[.,;]?\s*$",
     re.I,
 )
 
