@@ -315,3 +315,24 @@ def test_asides_and_units_in_text_and_the_impulse_in_words(problem: str, text: s
 def test_a_share_in_brackets_is_an_aside_but_a_product_is_not() -> None:
     assert sides("KE lost = 64 J (18.2%)") == [("KE lost", "64")]
     assert sides("p = 2(30%)") == [("p", "2(30%)")]
+
+
+@pytest.mark.parametrize(
+    ("text", "verdict"),
+    [
+        ("The speed of B after the collision is 8 m/s.", "correct"),
+        ("So B's speed after the collision is 8 m/s", "correct"),
+        ("speed of B after the collision = 8 m/s", "correct"),
+        ("the kinetic energy lost was about 64 J", "correct"),
+        ("A's final velocity is 4 m/s", "correct"),
+        ("The speed of B after the collision is 9 m/s.", "wrong"),
+        ("the kinetic energy lost was 60 J", "wrong"),
+    ],
+)
+def test_a_quantity_said_to_be_a_number_in_words(text: str, verdict: str) -> None:
+    assert statuses(DIRECT, text) == [verdict]
+
+
+@pytest.mark.parametrize("text", ["the ball is 2 m from the wall", "speed is important here", "A is 3 m from B"])
+def test_other_sentences_with_is_stay_prose(text: str) -> None:
+    assert sides(text) == []

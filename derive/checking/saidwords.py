@@ -17,6 +17,7 @@ _LOST = (
 #: Quantities said in words, as names (:func:`.naming.rewrite`; a wall's speeds and velocities valued in
 #: ``inference._speeds`` where B is fixed): a speed before, a velocity before or after.
 SAID_PHRASES = (
+    (r"(?<=speed_[AB])\s+(?:the\s+)?(?:collision|impact)\b", ""),  # "speed of B after the collision"
     (rf"(?:{_ENERGY})[\s_,]*(?:before|initial|vorher|avant|antes|prima|iniziale|initiale?)\b", "T_1"),
     (rf"(?:{_ENERGY})[\s_,]*(?:after|final|nachher|apr[eè]s|despu[eé]s|dopo|finale)(?!\w)", "T_2"),
     (rf"^\s*(?:{_LOST})\s*$", "T_lost"),

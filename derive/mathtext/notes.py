@@ -384,3 +384,20 @@ def quoted_law(sides: tuple[str, ...]) -> bool:
         return False
     plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
     return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
+
+
+#: A quantity said equal to a number in words, with no ``=`` on the line: "The speed of B after the
+#: collision is 8 m/s", "the kinetic energy lost was about 64 J", "B's velocity becomes 2.4 m/s".
+_SAID_IS = re.compile(
+    r"^(?P<subject>\s*(?:so\s+|hence\s+|therefore\s+)?(?:the\s+)?(?:[AB]['’]s\s+)?(?:final\s+|initial\s+|total\s+)?"
+    r"(?:speed|velocity|KE|kinetic\s+energy|impulse|energy\s+lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy))"
+    r"[A-Za-z'’ ]{0,40}?)\s+(?:is|was|will\s+be|becomes|equals)\s+(?:about\s+|approximately\s+|roughly\s+|now\s+)?"
+    r"(?=[-+−]?\d)",
+    re.I,
+)
+
+
+def said_is(text: str) -> str:
+    """``text`` with a quantity said to be a number in words written as a relation ("the speed of B
+    after the collision is 8 m/s" as ``… = 8 m/s``); a line with an ``=`` already as it is."""
+    return text if "=" in text else _SAID_IS.sub(lambda m: f"{m['subject']} = ", text, count=1)

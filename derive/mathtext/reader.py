@@ -31,6 +31,7 @@ from derive.mathtext.notes import (
     UNIT_THEN_NAME,
     name_after_words,
     quoted_law,
+    said_is,
     unbold,
     unmarked,
     without_note,
@@ -138,7 +139,7 @@ def read_relations(text: str) -> tuple[Relation, ...]:
     out: list[Relation] = []
     points = european_points(text)
     for line, column, written, plain in pieces(text):
-        plain = points(unmarked(unbold(plain)))
+        plain = said_is(points(unmarked(unbold(plain))))  # "B's speed after is 8 m/s": B's speed after = 8
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
