@@ -15,6 +15,7 @@ from dataclasses import dataclass, replace
 import sympy
 
 from derive.checking.axisnames import components
+from derive.checking.componentlabels import body_labels
 from derive.checking.context import DEG, Context
 from derive.checking.frames import axes_said, axis_names, declared_axes, flipped, score, uses_n_components
 from derive.checking.frames import pairs as frame_pairs
@@ -23,7 +24,6 @@ from derive.checking.naming import (
     GREEK,
     PREFIX,
     Open,
-    body_labels,
     declarations,
     declares,
     habits,
@@ -33,6 +33,7 @@ from derive.checking.naming import (
 )
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
 from derive.checking.restated import is_size, restated
+from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
@@ -116,6 +117,7 @@ def read_lines(
     )
     raw = ways[s]
     named_later(raw, mapping, problem)
+    said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
     lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
@@ -188,6 +190,9 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
             out[f"speed_{b}1"] = sympy.sqrt(n**2 + (t**2 if t is not None and ctx.problem.oblique else 0))
     if getattr(ctx.problem, "fixed_B", False) and "speed_A" in out:
         out["speed_after"] = out["speed_A"]  # "rebound speed": only A moves after hitting a wall
+        out.update(
+            velocity_after=ctx.model.nm.A2n, velocity_before=ctx.model.nm.A1n, speed_before=sympy.Abs(ctx.model.nm.A1n)
+        )
     nm = ctx.model.nm
     b1, b2 = nm.B1n if nm.B1n is not None else 0, nm.B2n if nm.B2n is not None else 0
     out["speed_app"] = nm.A1n - b1  # the speed of approach along n (positive: they approach)
@@ -208,8 +213,8 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
                     shown[0] = r.lead
                     continue
-                if i == len(sides) - 1 or len(sides) < 3 or (i and len(exprs) < 1):
-                    raise
+                if i == len(sides) - 1 or len(sides) < 3 or (i and not exprs and len(sides) - i < 3):
+                    raise  # "impulse = change in momentum = 0.8(1.2) + 0.8(4) = 4.16": words, words, then a relation
                 shown[i] = None  # "momentum before = 4(3) + 2(-1) = 10": words, then a relation
         first = exprs[0] if exprs else None
         if (

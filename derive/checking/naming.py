@@ -23,13 +23,15 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator, Mapping
-from dataclasses import replace
 
 import sympy
 
 from derive.checking.axisnames import letter_components
+from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
+from derive.checking.saidwords import SAID_PHRASES, times_beside_words
+from derive.checking.saidwords import together as moving_off_together
 from derive.checking.spellings import (
     BODY_WHEN,
     angle_sum_in_degrees,
@@ -75,6 +77,7 @@ PHRASES = (
     ),  # not "relative speed":
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
+PHRASES += SAID_PHRASES  # a wall's velocity and speed in words
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -134,8 +137,11 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = re.sub(
-        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)'", lambda m: m.group(1) + ("p" if "_" in m.group(1) else "_p"), text
+    text = times_beside_words(text, known)  # "e x speed before": times, beside a quantity said in words
+    text = re.sub(  # v' -> v_p; v_2'' (after a second impact) -> v_2pp
+        r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)('+)",
+        lambda m: m[1] + ("" if "_" in m[1] else "_") + "p" * len(m[2]),
+        text,
     )
     text = _GLUED_DIVISOR.sub(r"/(\1)", text)  # 3m/5m, v^2/2g: the divisor is 5m, 2g
     text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
@@ -177,64 +183,6 @@ _BODY = re.compile(
 )
 
 
-#: "the component of A's velocity" before "along the line of centres" (the body is its label).
-_COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
-#: A component named by its axis alone: "along the line of centres", "perpendicular to it".
-_AXIS_ONLY = re.compile(
-    r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
-)
-
-
-#: "Along the line of centres A has u sin 30°", "across it u cos 30°": a component, then its value.
-_HAS = re.compile(
-    r"^\s*((?:along|across|perpendicular\s+to)\s+(?:it|the\s+line\s+of\s+(?:centres|impact)))\s*,?\s*"
-    r"(?:([AB])\s+has\s+)?(\S.*)$",
-    re.I,
-)
-
-
-def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
-    """The relations, a component's value named in words split off (``Along the line of centres
-    A has u sin 30° = u/2`` -> ``along the line of centres = u sin 30° = u/2``), and each one's
-    body: its lead-in (``A:``), else the body its first side names a component of
-    (``Component of A's velocity along the line of centres = …``), else, for a component named
-    by its axis alone (``perpendicular to the line of centres = …``), the body of such a
-    component just before."""
-    out, labels, body = [], [], ""
-    for r in relations:
-        m = _COMPONENT_OF.match(r.sides[0])
-        h = _HAS.match(r.sides[0]) if not r.label else None
-        if m:
-            body = m.group(1).upper()
-            labels.append(r.label or body)
-        elif h and (h.group(2) or body):
-            body = (h.group(2) or body).upper()
-            r = replace(r, sides=(_unsigned(h.group(1), h.group(3)), h.group(3), *r.sides[1:]))
-            labels.append(body)
-        elif not r.label and body and _AXIS_ONLY.match(r.sides[0]):
-            r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
-            labels.append(body)
-        else:
-            body = "" if r.label else body
-            if r.label and len(r.sides) > 1 and _AXIS_ONLY.match(r.sides[0]):  # "B: across = 15 sin 37.6°"
-                r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
-            labels.append(r.label)
-        out.append(r)
-    return out, labels
-
-
-def _unsigned(words: str, value: str) -> str:
-    """The words naming the axis across the line of centres, marked where the value after them is
-    written unsigned (``across it A has u sin 30°``): a size, in the student's own direction across."""
-    if re.match(r"\s*(?:across|perpendicular)", words, re.I) and not value.lstrip().startswith("-"):
-        return words + " " + _SIZE
-    return words
-
-
-#: The mark :func:`_unsigned` puts on the words naming an axis across, read as ``A_T`` (:func:`.axisnames.letter_components`).
-_SIZE = "unsigned"
-
-
 def of_the_body(
     text: str, label: str, seen: set[str] = frozenset(), names: bool = True, keep: set[str] = frozenset()
 ) -> str:
@@ -254,11 +202,11 @@ def of_the_body(
         text = re.sub(r"\b([uv])_?([xynt])\b", lambda k: own(k, f"{k.group(1)}_{body}{k.group(2)}"), text)
         text = re.sub(r"\b([uv])\b(?!_)", lambda k: own(k, f"{k.group(1)}_{body}"), text)
     prime = "'" if after else ""
-    text = _COMPONENT_OF.sub("", text)
+    text = COMPONENT_OF.sub("", text)
     if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
         return f"{body}_n{prime}"
     across = re.fullmatch(
-        rf"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*({_SIZE})?\s*",
+        rf"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*({SIZE})?\s*",
         text,
         re.I,
     )
@@ -365,14 +313,18 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["u_n"], out["u_t"] = nm.A1n, nm.A1t
         if u_used:
             out["v_n"], out["v_t"] = nm.A2n, nm.A2t
-    if ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
+    if fixed := ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
         out["m"] = ctx.model.m_A
         out["v"] = after["A"]
     if u_used:
         out["v"] = after["A"]
-    if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
-        out["V"] = out["v_f"] = out["v_2"] = moving_together(ctx, after["A"], after["B"])
+    if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
+        out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
     out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
+    rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0} | set("B" * fixed)
+    moving = [b for b, x in before.items() if x is not None and b not in rest]
+    if used is not None and {"v", "v_p"} <= used and len(moving) == 1:  # v' = m v/(m + M): v before, v' after
+        out["v"], out["v_p"] = before[moving[0]], out.get("v_p", after[moving[0]])
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}
@@ -387,7 +339,7 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
     out: dict[str, sympy.Expr] = {}
     given = {g.name for g in p.givens if not g.unknown}
     open_ = [b for b in "AB" if not ({f"v_{b}2", f"v_{b}2n"} & given)]
-    together = any(g.name == "e" and g.value == 0 for g in p.givens)
+    together = moving_off_together(p)
     lone = moving_together(ctx, after["A"], after["B"]) if together else after[open_[0]] if len(open_) == 1 else None
     if not p.oblique and not u_used and lone is not None:
         out["V"] = lone  # together: their common velocity after (:func:`moving_together`)
@@ -405,7 +357,7 @@ def moving_together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) ->
     """The one velocity of two bodies that move off together (e = 0): the velocity of their
     centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
     when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
-    if ctx.problem.fixed_B or a is None or b is None:
+    if ctx.problem.fixed_B or a is None or b is None or a == b:
         return a
     m = ctx.model
     return (m.m_A * a + m.m_B * b) / (m.m_A + m.m_B)

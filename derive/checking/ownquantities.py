@@ -108,8 +108,8 @@ def paired(read: list, found: dict, values: dict, holds: Callable, own: set) -> 
         p, q = sorted(names, key=str)
         cands = [[v for v, x in values.items() if x.is_number and x != 0 and _letter(v, n)] for n in (p, q)]
         fits = [(a, b) for a in cands[0] for b in cands[1] if a != b and holds(sides, exprs, {**subs, p: a, q: b})]
-        if len(fits) == 1:
-            out[p], out[q] = fits[0]
+        if len(fits) == 1 or (fits and fits[0][::-1] in fits):  # ½(m1 + m2)V² = μ(m1 + m2)g d: either way
+            out[p], out[q] = fits[0]  # the chain's order: m1 its first mass
     return out
 
 

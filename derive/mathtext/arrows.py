@@ -32,4 +32,5 @@ def arrows_said(plain: str) -> str:
 
 def _said(m: re.Match[str]) -> str:
     """The direction an arrow after a value points, in words (``↓``: downwards)."""
-    return " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"
+    said = " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"
+    return said + ")" if m[0].rstrip().endswith(")") and "(" not in m[0] else said  # "(0.2 ←)": its bracket stays

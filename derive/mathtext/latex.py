@@ -16,6 +16,8 @@ from derive.mathtext.units import SCALED, is_unit, plain_unit
 from derive.mathtext.vectors import AXES, component
 
 _THOUSANDS = re.compile(r"(?<=\d)\\[,;: ](?=\d{3}(?!\d))")  # 45\,000
+#: A decimal comma in braces, as European LaTeX writes it (``0{,}250``, ``3{,}46``): a point.
+_DECIMAL_COMMA = re.compile(r"(?<=\d)\s*\{,\}\s*(?=\d)")
 _TAG = re.compile(r"\\tag\*?\{([^{}]*)\}")
 #: A tag written after the relation: ``\\quad (3)``, ``&& (ii)``.
 _TAG_END = re.compile(r"(?:\\q?quad|&|\s)\s*(?:\\[lc]?dots[bc]?\s*)?\(\s*(\d{1,2}[a-z]?|[ivx]{1,4})\s*\)\s*$")
@@ -75,7 +77,7 @@ def latex_to_plain(tex: str) -> str:
     'theta = atan(3.05/1.11) (3)'
     """
     tags = [f" ({t.strip()})" for t in _TAG.findall(tex)]
-    s = _TAG.sub(" ", _THOUSANDS.sub("", bracketed_names(tex, tex=True)))
+    s = _TAG.sub(" ", _THOUSANDS.sub("", _DECIMAL_COMMA.sub(".", bracketed_names(tex, tex=True))))
     m = _TAG_END.search(s)
     if m:
         s, tags = s[: m.start()], [f" ({m.group(1)})", *tags]

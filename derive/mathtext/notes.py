@@ -113,6 +113,13 @@ _TAG = re.compile(
     r"(?:\(\s*(?:eqn?\.?\s*)?(?P<a>\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|\[\s*(?P<b>\d{1,2}[a-z]?)\s*\]"
     r"|\{\s*(?P<c>\d{1,2})\s*\}|eqn?\.?\s*(?P<d>\d{1,2}))\s*$"
 )
+#: A part's label after a relation (``= 0.250 m/s   (a)``, ``… kg (b)(ii)``, ``-- part (c)``, ``[b]``,
+#: ``Ans (a)``): after a gap, dots or a dash, or after a unit; not a factor (``= 2 (a)`` stays).
+_PART_END = re.compile(
+    r"(?:\s{2,}|\s*(?:\.{2,}|…|-{2,}|—|–)\s*|(?<=[A-Za-z/²³¹°.])\s+)"
+    r"(?:(?:ans(?:wer)?\.?|part)\s*)?[(\[]\s*[a-h]\s*[)\]](?:\s*[(\[]\s*[ivx]{1,4}\s*[)\]])?\s*\.?\s*$",
+    re.I,
+)
 #: A number in brackets after a value (its unrounded value, or the value to more figures).
 _UNROUNDED = re.compile(
     r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²1]+){0,4})(?P<gap>\s+)"
@@ -191,6 +198,46 @@ def _remark_in_brackets(text: str) -> str:
     return text
 
 
+#: A percentage in brackets after a value (``= 64 J (18.2%)``, ``(≈ 18 % of the KE lost)``): an aside.
+_PERCENT = re.compile(r"(?:(?<=[A-Za-z])\s*|(?<=[\w.)])\s+)\(\s*[≈~=]?\s*(?:about\s+)?\d[\d.,]*\s*%[^()=]*\)\s*\.?\s*$")
+#: The value said again in brackets as a speed and a direction (``= -0.025 m/s (i.e. 0.025 m/s ←)``,
+#: ``= -1.6 (so 1.6 m/s away from the wall)``, ``= -3 (3 m/s to the left)``).
+_RESTATED = re.compile(
+    r"(?P<value>\d[\d.]*)(?P<mid>[^()=\d]{0,24}?)\s*\(\s*(?P<lead>(?:i\.?\s?e\.?,?|that\s+is,?|that's|which\s+is|so"
+    r"|[=≈~]|about|approx\.?|a\s+speed\s+of|speed|\s)*)(?P<again>\d[\d.]*)(?P<rest>[^()=\d]*)\)\s*[.!]?\s*$",
+    re.I,
+)
+#: What may follow the number said again: its unit, an arrow, a direction in words.
+_SAID_AGAIN = re.compile(
+    r"(?:\s|[←→⟵⟶↑↓/^\-<>.,]|\\(?:long)?(?:left|right|up|down)arrow|\\gets|\\to|m|s|ms|kg|N|Ns|J|ft|ft/s|km/h|mph"
+    r"|to|the|in|of|from|towards?|away|left|right|leftwards|rightwards|backwards?|forwards?|up|upwards|down"
+    r"|downwards|opposite|same|other|way|direction|original|wall|ground|floor|[AB])*",
+    re.I,
+)
+
+
+def _restated_in_brackets(text: str) -> str:
+    """``text`` without its value said again in brackets as a speed with a direction (the same
+    number, a unit, an arrow or words): the student restating the answer, not a product."""
+    m = _RESTATED.search(text)
+    if m is None or not all(_SAID_AGAIN.fullmatch(m[k]) for k in ("mid", "rest")):
+        return text
+    if not (m["lead"].strip() or m["rest"].strip()):
+        return text  # "2e --(2)": a tag, "= 1.6 (1.6)": the value to no more figures
+    try:
+        same = abs(float(m.group("value").rstrip(".")) - float(m.group("again").rstrip("."))) < 1e-12
+    except ValueError:
+        return text
+    return text[: text.index("(", m.end("value"))].rstrip() if same else text
+
+
+#: "So", "hence" and "and" as students abroad write them (German, French, Spanish, Italian, Dutch).
+SO_ABROAD = (
+    r"also|daher|damit|somit|folglich|und|donc|alors|d['’]où|ainsi|et|entonces|luego|por\s+(?:lo\s+)?tanto"
+    r"|as[ií]\s+que|quindi|dunque|perciò|dus"
+)
+
+
 #: The longest note read after a relation (its patterns look at the end of a line only).
 NOTE_CHARS = 200
 
@@ -205,19 +252,25 @@ def without_note(text: str) -> tuple[str, str]:
 
 def _note(text: str, equals_before: bool) -> tuple[str, str]:
     """The end of a relation without its note, and the tag (see :func:`without_note`)."""
+    text = _restated_in_brackets(text)  # "(so 0.2 m/s ←)": before the arrow is read as a pointer
+    text = _PERCENT.sub("", text)  # "= 64 J (18.2%)": the share, an aside
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
     text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", _CODE_COMMENT.sub("", text))))
     m = _CONVERTED.search(text) or _DASH_CONVERTED.search(text)
     if m and is_unit(m.group("unit").strip()) and _after_unit(text[: m.start("gap")]):
         text = text[: m.start("gap")]
-    text = _remark_in_brackets(_FIGURES.sub("", text))
+    text = _restated_in_brackets(_remark_in_brackets(_FIGURES.sub("", text)))
     m = _SQUARE.search(text)
-    if m and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
+    after_operator = (
+        m is not None and re.search(r"[-+*/×·÷=(]\s*$", text[: m.start()]) is not None
+    )  # "/ [(vA)1 - (vB)1]"
+    if m and not after_operator and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
         text = text[: m.start()]  # "[w left, 2.9 right]"; "[(delta_0 + x)^2 - delta_0^2]" is mathematics
     m = _UNROUNDED.search(text)
     if m and _is_more_figures(m):
         text = text[: m.start("gap")]
+    text = _PART_END.sub("", text)
     m = _TAG.search(text)
     if m is None:
         return text, ""
@@ -296,3 +349,58 @@ GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)
 #: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
 #: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
 REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")
+
+
+#: Laws of motion quoted in their textbook letters before they are used (``v^2 = u^2 + 2as``,
+#: ``v = u + at``, ``s = ut + ½at²``, ``F = ma``): a formula stated, not a claim about the problem,
+#: which a teacher does not mark. Written without spaces or times signs, ``²`` as ``^2``.
+_LAWS = frozenset(
+    {
+        "v^2=u^2+2as",
+        "v^2=u^2-2as",
+        "v^2-u^2=2as",
+        "v=u+at",
+        "v=u-at",
+        "s=ut+1/2at^2",
+        "s=ut-1/2at^2",
+        "s=ut+at^2/2",
+        "s=1/2(u+v)t",
+        "s=(u+v)t/2",
+        "s=(u+v)/2t",
+        "s=((u+v)/2)t",
+        "s=vt-1/2at^2",
+        "F=ma",
+        "v^2=u^2+2gs",
+        "v^2=u^2-2gs",
+        "v=u+gt",
+        "v=u-gt",
+        "s=ut+1/2gt^2",
+        "s=ut-1/2gt^2",
+    }
+)
+
+
+def quoted_law(sides: tuple[str, ...]) -> bool:
+    """Whether a relation of two sides is a law of motion quoted in its textbook letters (either
+    side first): a formula stated before it is used."""
+    if len(sides) != 2:
+        return False
+    plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
+    return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
+
+
+#: A quantity said equal to a number in words, with no ``=`` on the line: "The speed of B after the
+#: collision is 8 m/s", "the kinetic energy lost was about 64 J", "B's velocity becomes 2.4 m/s".
+_SAID_IS = re.compile(
+    r"^(?P<subject>\s*(?:so\s+|hence\s+|therefore\s+)?(?:the\s+)?(?:[AB]['’]s\s+)?(?:final\s+|initial\s+|total\s+)?"
+    r"(?:speed|velocity|KE|kinetic\s+energy|impulse|energy\s+lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy))"
+    r"[A-Za-z'’ ]{0,40}?)\s+(?:is|was|will\s+be|becomes|equals)\s+(?:about\s+|approximately\s+|roughly\s+|now\s+)?"
+    r"(?=[-+−]?\d)",
+    re.I,
+)
+
+
+def said_is(text: str) -> str:
+    """``text`` with a quantity said to be a number in words written as a relation ("the speed of B
+    after the collision is 8 m/s" as ``… = 8 m/s``); a line with an ``=`` already as it is."""
+    return text if "=" in text else _SAID_IS.sub(lambda m: f"{m['subject']} = ", text, count=1)

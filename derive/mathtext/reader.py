@@ -19,23 +19,33 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.arrows import arrows_said
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.inline import words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import (
-    GAP_THEN_NAME,
     REMARK_END,
-    UNIT_THEN_NAME,
     name_after_words,
+    quoted_law,
+    said_is,
     unbold,
     unmarked,
     without_note,
 )
 from derive.mathtext.parser import GREEK
-from derive.mathtext.sides import direction_of, html_marks, thousands, typed_names, units_inside, without_direction
+from derive.mathtext.sides import (
+    decimal_commas,
+    direction_of,
+    each_body,
+    european_points,
+    thousands,
+    typed_names,
+    units_inside,
+    without_direction,
+)
+from derive.mathtext.splitting import split_relations
+from derive.mathtext.texwords import tex_comment, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -71,10 +81,6 @@ _CLOSE = {
     "$": re.compile(r"(?<!\\)\$"),
 }
 _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
-_ARROW = re.compile(
-    r"⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at)(?![\w])",
-    re.I,
-)
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
@@ -105,15 +111,12 @@ def without_unit(side: str) -> str:
     return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
 
 
-#: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
-_TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
 _UNIT_BRACKET = re.compile(
     r"\s*\((?=[^()]*[A-Za-z])(?:[\s/*^·.-]|\(\s*-\s*1\s*\)|-?1\b|m|s|kg|N|J|ft|lb|slug)+\)\s*\.?\s*$"
 )
 _TICK = re.compile(r"\s*(?:✓|✔|✗)\s*")
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
-_RELATION = re.compile(r"=|≈|≃|≅|∼|(?<=\s)~(?=\s)")
 #: An angle named by three points (``APB = 90°``, ``∠ABC``, ``angle PQR``): geometry in words.
 _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 #: What a side has: a letter (Latin or Greek: ``θ + φ = 90°``) or a digit.
@@ -124,8 +127,9 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`); ``axes``: the unit
     vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
+    points = european_points(text)
     for line, column, written, plain in pieces(text):
-        plain = unmarked(unbold(plain))
+        plain = said_is(points(unmarked(unbold(plain))))  # "B's speed after is 8 m/s": B's speed after = 8
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
@@ -134,6 +138,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
         main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
+        main, aside = decimal_commas(main), decimal_commas(aside)  # "0,25": nought point two
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
         for part, is_aside in parts:
             r = relation(line, column, written, part)
@@ -141,7 +146,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            for sides in split_vectors(r.sides, axes) if r is not None else ():
+            for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
                 out.append(replace(r, sides=sides))
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
@@ -156,7 +161,7 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     lines = text.split("\n")
     n, close, rows = 0, None, []
     while n < len(lines):
-        raw = _tex_comment(lines[n])
+        raw = tex_comment(lines[n])
         if close is None:
             plain, close, rows = _line(raw, n + 1)
             if plain.strip():
@@ -212,9 +217,9 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         m = _OPEN.search(raw, i)
         if m is None:  # LaTeX typed with no delimiters (``v_A2 = \\frac{8}{9}u``): read as mathematics
             rest = raw[i:]
-            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else _tex_text(rest))
+            out.append(row_plain(rest) if i == 0 and _BARE_LATEX.search(rest) else tex_text(rest))
             return " ".join(out), None, []
-        out.append(_tex_text(raw[i : m.start()]))
+        out.append(tex_text(raw[i : m.start()]))
         close = _CLOSE.get(m.group(0), _ENV_CLOSE)
         end = close.search(raw, m.end())
         if end is None:
@@ -226,100 +231,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
             out.append(";")  # "Sub $v_Q = v_P + 5ue$ into (1):": the words after are not the relation's
 
 
-#: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
-_TEX_WORDS = re.compile(
-    r"\\(?:textbf|textit|emph|underline|textsc|(?:sub)*section\*?|paragraph\*?|item)\s*(?:\{([^{}]*)\})?"
-)
-
-
-def _tex_text(text: str) -> str:
-    """Words around mathematics without LaTeX's spacing and formatting commands."""
-    return _TEX_WORDS.sub(lambda m: f" {m.group(1) or ''} ", _TEX_SPACE.sub(" ", text))
-
-
-def _tex_comment(line: str) -> str:
-    """A line without its TeX comment (``%`` not after a backslash)."""
-    m = re.search(r"(?<!\\)%", line)
-    return line[: m.start()] if m and not re.search(r"\d\s*$", line[: m.start()]) else line
-
-
-def split_relations(plain: str) -> list[str]:
-    """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
-    brackets) that comes before another relation."""
-    plain = re.sub(r"(?<=\s)~(?=\s)|≃|≅|∼", "=", plain.replace("≈", "="))  # "v ~ 4": about, as ≈
-    plain = re.sub(r"(?<=\s)&(?=\s+[^=&]*=)", " ; ", plain)  # "a = 1 & b = 2" in plain text: and
-    plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
-    parts: list[str] = []
-    plain = re.sub(
-        r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
-    )  # a sentence ends
-    plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
-    plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
-    plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
-    for chunk in _arrow_split(plain):
-        for piece in _top_level_split(chunk, ";"):
-            for part in _colon_split(piece):
-                parts += _comma_split(part)
-    return [p for p in parts if _RELATION.search(p)]
-
-
-def _arrow_split(plain: str) -> list[str]:
-    """``plain`` split at its arrows and words such as "so", outside brackets (``-1.2 (so speed
-    1.2)`` is one piece)."""
-    out, start = [], 0
-    for m in _ARROW.finditer(plain):
-        head = plain[: m.start()]
-        if head.count("(") > head.count(")"):
-            continue
-        out.append(plain[start : m.start()])
-        start = m.end()
-    return [*out, plain[start:]]
-
-
-def _colon_split(piece: str) -> list[str]:
-    """``Substituting b = a + 6: 8a + 18 = -8`` -> two: a colon between two relations ends the
-    first (one after words alone, ``CLM: …``, leads in and stays)."""
-    bits = [b for b in re.split(r":(?!=)", piece)]
-    out: list[str] = [bits[0]]
-    for bit in bits[1:]:
-        if "=" in bit and "=" in out[-1] and out[-1].count("(") == out[-1].count(")"):
-            out.append(bit)
-        else:
-            out[-1] += ":" + bit
-    return out
-
-
-#: A body's or a quantity's lead-in after a comma (``A: 4cos60 = 2, B: -6``): a piece of its own.
-_LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
-
-
-def _comma_split(piece: str) -> list[str]:
-    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one; ``A: 2, B: -6``
-    two."""
-    bits = _top_level_split(piece, ",")
-    out: list[str] = []
-    for bit in bits:
-        if out and (("=" in bit and "=" in out[-1]) or _LABEL.match(bit)):
-            out.append(bit)
-        elif out:
-            out[-1] += "," + bit
-        else:
-            out.append(bit)
-    return out
-
-
-def _top_level_split(s: str, sep: str) -> list[str]:
-    out, depth, start = [], 0, 0
-    for i, c in enumerate(s):
-        depth += {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0)
-        if c == sep and depth == 0:
-            out.append(s[start:i])
-            start = i + 1
-    out.append(s[start:])
-    return out
-
-
-_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(])")
+_WORD = re.compile(r"(?<![\w])(?:[A-Za-z]{3,}|to|of|at|on|in|up|by|as|is|ok|OK|it)(?![\w(^])")
 #: Words that belong to the mathematics (functions, angle units, Greek letters' names).
 MATH_WORDS = GREEK | FUNCTIONS | {"deg", "degree", "degrees", "rad", "radian", "radians"}
 
@@ -350,7 +262,7 @@ def _side(text: str) -> str:
     text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
-    text = thousands(bracketed_names(text))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
+    text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
     text = _BRACKETED_NAME.sub(
         lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
     )  # (v_B)_2: v_B2, as the textbooks write it
@@ -436,6 +348,8 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
     sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
+    if quoted_law(sides):
+        return None  # "v^2 = u^2 + 2as": a law quoted before it is used, not marked
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words
         sides = tuple(s for s in sides if re.search(_SIDE, s) and not _POINTS.match(s))
         if len(sides) < 2:

@@ -9,6 +9,7 @@ it (``352 J − 288 J``), and a direction in words after its number (``= 1.04 m/
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 #: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
 _BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
@@ -27,8 +28,18 @@ _GLUED_BODY = re.compile(r"(?<![\w'\\])([muvwp])([ABPQ])(?![\w'])")
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
 
-#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``.
-_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])\d{1,3}(?:,\d{3})+(?![\d,])")
+#: The same with commas (``20,000``, ``1,581.25``), no space after them: not a pair ``(3, 4)``, nor
+#: a decimal comma after a nought (``0,250``).
+_THOUSANDS_COMMA = re.compile(r"(?<![\d.^_,])(?!0,)\d{1,3}(?:,\d{3})+(?![\d,])")
+#: A decimal comma as European students type it (``0,25``, ``3,46``, ``-0,0761``): digits either side,
+#: no space; not a list of three or more (``1,2,3``), nor thousands (read before it).
+_DECIMAL_COMMA = re.compile(r"(?<![\d.,^_])(\d+),(\d+)(?![\d,]|\.\d)")
+#: A pair in brackets of its own (``= (3,4)``, ``[2,5]``): a vector or an interval, not a decimal.
+_PAIR = re.compile(r"(?:^|(?<=[\s=,;:]))[(\[<⟨{]\s*-?\d+,\d+\s*[)\]>⟩}]")
+
+
+#: A number and its unit alone before a comma (``35.0 m/s, M = 70.0 kg``): no relation's side.
+LONE_VALUE = re.compile(r"\s*[-+]?\d[\d.]*\s*(?:[A-Za-z]{1,3}(?:\s*/\s*[A-Za-z]{1,3})?)?\s*")
 
 
 #: HTML's subscripts and powers, as a Markdown page types them (``v<sub>A2</sub>``, ``s<sup>-1</sup>``).
@@ -46,6 +57,48 @@ def thousands(text: str) -> str:
     number: a teacher reads ``(20 000)(0.5)^2`` as twenty thousand, never 20 times 0."""
     text = _THOUSANDS_COMMA.sub(lambda m: m.group(0).replace(",", ""), text)
     return _THOUSANDS.sub(lambda m: re.sub(r"\s", "", m.group(0)), text)
+
+
+def decimal_commas(text: str) -> str:
+    """``text`` with each decimal comma written as a point (``0,25`` as ``0.25``): a teacher in
+    Germany, France or Spain reads ``m(0,2 - 3)`` as nought point two; a pair in brackets of its
+    own (``v = (3,4)``) stays a pair."""
+    pairs = [m.span() for m in _PAIR.finditer(text)]
+    return _DECIMAL_COMMA.sub(
+        lambda m: m.group(0) if any(a <= m.start() < b for a, b in pairs) else f"{m[1]}.{m[2]}", text
+    )
+
+
+#: A name with the index i for "each body", after (``v_i'``) and before (``v_i``) in one relation.
+_EACH_AFTER = re.compile(r"(?<![\w\\])[A-Za-z]_i'")
+_EACH_BEFORE = re.compile(r"(?<![\w\\])[A-Za-z]_i(?![\w'])")
+
+
+def each_body(sides: tuple[str, ...], text: str) -> list[tuple[str, ...]]:
+    """A relation for each body written once with the index i (``v_i' = 2v_S - v_i``: the rule for
+    body 1 and body 2, or A and B as the text names them); any other relation as it is. ``v_f =
+    2v_cm - v_i`` (i for initial: no ``v_i'``) stays one."""
+    joined = " = ".join(sides)
+    if not (_EACH_AFTER.search(joined) and _EACH_BEFORE.search(joined)):
+        return [sides]
+    bodies = ("1", "2") if re.search(r"_\{?[12](?![\w.])", text) else ("A", "B")
+    each = re.compile(r"(?<![\w\\])([A-Za-z])_i(?!\w)")
+    return [tuple(each.sub(rf"\1_{b}", side) for side in sides) for b in bodies]
+
+
+#: A point between thousands, as Germany writes it (``1.200 kg``), where commas are the decimals.
+_THOUSANDS_POINT = re.compile(r"(?<![\d.,])\d{1,3}(?:\.\d{3})+(?![\d.,])")
+
+
+def european_points(text: str) -> Callable[[str], str]:
+    """How to read the points of ``text``'s numbers: where it writes its decimals with a comma
+    (``0,25``, ``0{,}25``) and every point has three digits after it, ``1.200 kg`` is twelve
+    hundred (the points dropped); elsewhere a point is a decimal point (nothing changed)."""
+    decimal = r"(?<![\d.,])0,\d|\d,(?:\d{1,2}|\d{4,})(?![\d,])|\d\{,\}\d"  # 0,250; 0,5; 0{,}25: not 4,500
+    commas = re.search(decimal, text) and not re.search(r"\d\.(?:\d{1,2}|\d{4,})(?!\d)", text)
+    if not commas or not _THOUSANDS_POINT.search(text):
+        return lambda plain: plain
+    return lambda plain: _THOUSANDS_POINT.sub(lambda m: m[0].replace(".", ""), plain)
 
 
 def typed_names(text: str) -> str:
@@ -70,17 +123,28 @@ def units_inside(text: str) -> str:
 
 
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
+#: "Back" and "on" (to the left, to the right) as students abroad write them after a speed.
+_BACK_ABROAD = (
+    r"zurück|nach\s+links|vers\s+la\s+gauche|à\s+gauche|en\s+sens\s+inverse|hacia\s+(?:la\s+)?izquierda|hacia\s+atrás"
+)
+_ON_ABROAD = r"nach\s+rechts|vers\s+la\s+droite|à\s+droite|hacia\s+(?:la\s+)?derecha"
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
-    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
-    r"|in\s+the\s+same\s+direction))\b",
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$)|"
+    + _BACK_ABROAD
+    + r")|(to\s+the\s+right|rightwards?"
+    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)|" + _ON_ABROAD + r"))(?!\w)",
     re.I,
 )
 
 
 _DIRECTION_END = re.compile(
-    r"\s*\(?\s*(?:to\s+the\s+(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
-    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way)\s*\)?\s*[.,;]?\s*$",
+    r"\s*\(?\s*(?:(?:to\s+the\s+)?(?:left|right)|(?:left|right)wards?|backwards?|forwards?"
+    r"|in\s+the\s+(?:opposite|same)\s+direction|the\s+other\s+way|"
+    + _BACK_ABROAD
+    + "|"
+    + _ON_ABROAD
+    + r")\s*\)?\s*[.,;]?\s*$",
     re.I,
 )
 

@@ -1,0 +1,69 @@
+"""Components a student labels in words (``Along the line of centres A has u sin 30°``,
+``Component of A's velocity along the line of centres = …``): each relation's body.
+
+Holds the phrases and :func:`body_labels`; imports only mathtext's Relation.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+
+from derive.mathtext.reader import Relation
+
+#: "the component of A's velocity" before "along the line of centres" (the body is its label).
+COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
+#: A component named by its axis alone: "along the line of centres", "perpendicular to it".
+_AXIS_ONLY = re.compile(
+    r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
+)
+
+
+#: "Along the line of centres A has u sin 30°", "across it u cos 30°": a component, then its value.
+_HAS = re.compile(
+    r"^\s*((?:along|across|perpendicular\s+to)\s+(?:it|the\s+line\s+of\s+(?:centres|impact)))\s*,?\s*"
+    r"(?:([AB])\s+has\s+)?(\S.*)$",
+    re.I,
+)
+
+
+def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
+    """The relations, a component's value named in words split off (``Along the line of centres
+    A has u sin 30° = u/2`` -> ``along the line of centres = u sin 30° = u/2``), and each one's
+    body: its lead-in (``A:``), else the body its first side names a component of
+    (``Component of A's velocity along the line of centres = …``), else, for a component named
+    by its axis alone (``perpendicular to the line of centres = …``), the body of such a
+    component just before."""
+    out, labels, body = [], [], ""
+    for r in relations:
+        m = COMPONENT_OF.match(r.sides[0])
+        h = _HAS.match(r.sides[0]) if not r.label else None
+        if m:
+            body = m.group(1).upper()
+            labels.append(r.label or body)
+        elif h and (h.group(2) or body):
+            body = (h.group(2) or body).upper()
+            r = replace(r, sides=(_unsigned(h.group(1), h.group(3)), h.group(3), *r.sides[1:]))
+            labels.append(body)
+        elif not r.label and body and _AXIS_ONLY.match(r.sides[0]):
+            r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
+            labels.append(body)
+        else:
+            body = "" if r.label else body
+            if r.label and len(r.sides) > 1 and _AXIS_ONLY.match(r.sides[0]):  # "B: across = 15 sin 37.6°"
+                r = replace(r, sides=(_unsigned(r.sides[0], r.sides[1]), *r.sides[1:]))
+            labels.append(r.label)
+        out.append(r)
+    return out, labels
+
+
+def _unsigned(words: str, value: str) -> str:
+    """The words naming the axis across the line of centres, marked where the value after them is
+    written unsigned (``across it A has u sin 30°``): a size, in the student's own direction across."""
+    if re.match(r"\s*(?:across|perpendicular)", words, re.I) and not value.lstrip().startswith("-"):
+        return words + " " + SIZE
+    return words
+
+
+#: The mark :func:`_unsigned` puts on the words naming an axis across, read as ``A_T`` (:func:`.axisnames.letter_components`).
+SIZE = "unsigned"

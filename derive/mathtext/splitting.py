@@ -1,0 +1,100 @@
+"""One piece of a line split into its relations: at arrows and words such as "so" (in the
+student's language), at ";", at a colon between two relations and at a comma before another.
+
+Imports only mathtext's leaf modules.
+"""
+
+from __future__ import annotations
+
+import re
+
+from derive.mathtext.arrows import arrows_said
+from derive.mathtext.notes import GAP_THEN_NAME, SO_ABROAD, UNIT_THEN_NAME
+from derive.mathtext.sides import LONE_VALUE, html_marks
+
+_ARROW = re.compile(
+    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at|"
+    + SO_ABROAD
+    + r")(?![\w])",
+    re.I,
+)
+_RELATION = re.compile(r"=|≈|≃|≅|∼|(?<=\s)~(?=\s)")
+
+
+def split_relations(plain: str) -> list[str]:
+    """The relations of one piece: split at arrows, "so", ";" and at a comma (outside
+    brackets) that comes before another relation."""
+    plain = re.sub(r"(?<=\s)~(?=\s)|≃|≅|∼", "=", plain.replace("≈", "="))  # "v ~ 4": about, as ≈
+    plain = re.sub(r"(?<=\s)&(?=\s+[^=&]*=)", " ; ", plain)  # "a = 1 & b = 2" in plain text: and
+    plain = re.sub(
+        r"(\d|\)|/s|J|kg)\s+y\s+(?=[A-Za-z][\w']*\s*=)", r"\1 ; ", plain
+    )  # Spanish "and": "= 4 m/s y v_B = 8"
+    plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
+    parts: list[str] = []
+    plain = re.sub(
+        r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
+    )  # a sentence ends
+    plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
+    plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
+    plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
+    for chunk in _arrow_split(plain):
+        for piece in _top_level_split(chunk, ";"):
+            for part in _colon_split(piece):
+                parts += _comma_split(part)
+    return [p for p in parts if _RELATION.search(p)]
+
+
+def _arrow_split(plain: str) -> list[str]:
+    """``plain`` split at its arrows and words such as "so", outside brackets (``-1.2 (so speed
+    1.2)`` is one piece)."""
+    out, start = [], 0
+    for m in _ARROW.finditer(plain):
+        head = plain[: m.start()]
+        if head.count("(") > head.count(")") or (m.group(0).lower() == "at" and re.search(r"[-+*/=()]\s*$", head)):
+            continue  # "v = u + at": a product, not "at"
+        out.append(plain[start : m.start()])
+        start = m.end()
+    return [*out, plain[start:]]
+
+
+def _colon_split(piece: str) -> list[str]:
+    """``Substituting b = a + 6: 8a + 18 = -8`` -> two: a colon between two relations ends the
+    first (one after words alone, ``CLM: …``, leads in and stays)."""
+    bits = [b for b in re.split(r":(?!=)", piece)]
+    out: list[str] = [bits[0]]
+    for bit in bits[1:]:
+        if "=" in bit and "=" in out[-1] and out[-1].count("(") == out[-1].count(")"):
+            out.append(bit)
+        else:
+            out[-1] += ":" + bit
+    return out
+
+
+#: A body's or a quantity's lead-in after a comma (``A: 4cos60 = 2, B: -6``): a piece of its own.
+_LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
+
+
+def _comma_split(piece: str) -> list[str]:
+    """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one; ``A: 2, B: -6``
+    two."""
+    bits = _top_level_split(piece, ",")
+    out: list[str] = []
+    for bit in bits:
+        if out and (("=" in bit and ("=" in out[-1] or LONE_VALUE.fullmatch(out[-1]))) or _LABEL.match(bit)):
+            out.append(bit)  # "(at) 35.0 m/s, goalie M = 70.0 kg": the speed is no part of M's side
+        elif out:
+            out[-1] += "," + bit
+        else:
+            out.append(bit)
+    return out
+
+
+def _top_level_split(s: str, sep: str) -> list[str]:
+    out, depth, start = [], 0, 0
+    for i, c in enumerate(s):
+        depth += {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0)
+        if c == sep and depth == 0:
+            out.append(s[start:i])
+            start = i + 1
+    out.append(s[start:])
+    return out
