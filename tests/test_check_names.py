@@ -515,3 +515,41 @@ def test_mu_alone_on_the_left_is_m_times_u_even_when_the_momentum_is_wrong(tmp_p
     if expected == "wrong":
         slip = next(i for i in report(str(problem), work).items if i.status == "wrong")
         assert "masses_swapped" in {d.mistake for d in slip.diagnosis}
+
+
+# A name declared for a body's SPEED with words that say it moves backwards ("(A bounces back)",
+# "A moving backwards") is the mark scheme's v: minus the velocity along derive's +n, the
+# convention unchanged for everything else. 2 kg at 5 m/s hits 3 kg at rest, e = 0.8, by hand:
+# 10 = 2a + 3b, b - a = 4 -> a = -0.4, b = 3.6: A bounces back at s = 0.4.
+def test_a_speed_declared_backwards_is_minus_the_velocity(tmp_path) -> None:
+    problem = tmp_path / "back.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "2 kg"\nm_B = "3 kg"\nv_A1 = "5 m/s"\nv_B1 = "0 m/s"\ne = "0.8"\n'
+    )
+    work = (
+        "Let s be the speed of A after the impact (A bounces back).\n"
+        "2(5) + 3(0) = -2s + 3v_B\nv_B + s = 0.8(5)\nv_B = 4 - s\n10 = -2s + 12 - 3s\n5s = 2\ns = 0.4 m/s\n"
+    )
+    assert set(by_line(str(problem), work).values()) == {"correct"}
+
+
+def test_a_speed_declared_backwards_in_letters_is_said_so_not_as_the_convention_turned() -> None:
+    # CAIE 9231 Nov 2014 Q1 (2m at 4u, m at 3u toward it): 8mu - 3mu = -2ms + mw and
+    # w + s = 7eu give 3s = 7eu - 5u, s = u(7e - 5)/3 = -v_A2 (mark scheme v_A = (5 - 7e)u/3).
+    work = (
+        "Let s be the speed of A after the impact, A moving backwards, and w the velocity of B.\n"
+        "2m(4u) - m(3u) = -2ms + mw\nw + s = 7eu\n3s = 7eu - 5u\ns = u(7e - 5)/3\n"
+    )
+    r = report("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert {i.status for i in r.items if i.kind == "line"} == {"correct"}
+    said = " ".join(r.notes)
+    assert "s is -v_A2" in said
+    assert "positive direction is opposite" not in said  # not derive's n turned for every name
+
+
+def test_mu_before_a_chain_that_ends_in_letters_is_m_times_u_not_a_mass() -> None:
+    # Edexcel M2 June 2024 Q5 (m at u hits 2m at rest, P reverses), x P's speed back, y Q's
+    # velocity: mu = -mx + 2my, y + x = eu -> mu = 2meu - 3mx, x = u(2e - 1)/3 (= -v_A2). The
+    # chain's last side starts with a digit (2meu): it is no mass's number, mu stays m × u.
+    work = "mu = -mx + 2my\ny + x = eu\nmu = -mx + 2m(eu - x) = 2meu - 3mx\nx = u(2e - 1)/3\n"
+    assert set(by_line("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work).values()) == {"correct"}

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, words
+from derive.checking import carried, cofunctions, labelled, misread, mistakes, slipnames, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -265,7 +265,7 @@ class Trace(Carrying):
         diags = fresh if fresh and len(fresh) < len(diags) else diags
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
-        if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
+        if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
         if not diags:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)

@@ -297,4 +297,6 @@ def said_read(meanings: dict, declared: dict, inferred: dict[str, str], sign: in
 def _shown(e: sympy.Expr) -> str:
     if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
         return e.args[0].name  # a given restated without its sign: said as that given
+    if isinstance(-e, sympy.Symbol):
+        return f"-{(-e).name}"  # a speed declared backwards: minus the velocity
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"
