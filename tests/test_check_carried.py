@@ -287,3 +287,23 @@ def test_a_worked_number_with_two_digits_swapped_is_the_slip_though_the_line_hol
     assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
     assert found[4][:2] == ("wrong", "arithmetic")
     assert found[5][0] == "carried"
+
+
+def test_energies_worked_with_a_given_copied_wrongly_are_carried(tmp_path) -> None:
+    # A 50 g pellet at 200 m/s lodges in a 2 kg block. By hand: V = 10/2.05 = 4.878, KE before
+    # ½(0.05)(200²) = 1000 J. Copied as 0.5 kg: V = 100/2.5 = 40, KE before ½(0.5)(200²) = 10000,
+    # after ½(2.5)(40²) = 2000, lost 8000: each energy is worked from the 0.5 kg, so carried
+    # (the results of the problem are worked from the given as the student copied it).
+    problem = _inverse(tmp_path, "pellet", 'm_A = "50 g"\nm_B = "2 kg"\nv_A1 = "200 m/s"\nv_B1 = "0 m/s"\ne = 0\n')
+    work = (
+        "m = 50 g = 0.5 kg, M = 2 kg, u = 200 m/s\n"
+        "m u = (m + M) V\n"
+        "V = 0.5 x 200 / 2.5 = 40 m/s\n"
+        "KE before = 1/2 m u^2 = 0.5 x 0.5 x 200^2 = 10000 J\n"
+        "KE after = 1/2 (m + M) V^2 = 0.5 x 2.5 x 40^2 = 2000 J\n"
+        "KE lost = 10000 - 2000 = 8000 J\n"
+    )
+    found = lines(problem, work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == "correct"
+    assert [found[n][0] for n in (3, 4, 5, 6)] == ["carried"] * 4

@@ -157,7 +157,7 @@ class Trace(Carrying):
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
-        raw = [x.xreplace(self.copied) for x in line.exprs or ()]  # a given copied wrongly: as the student has it
+        raw = [misread.with_copied(self.ctx, x, self.copied) for x in line.exprs or ()]  # as the student has it
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         # a chain that ends in a number as written: each side is compared with that number

@@ -127,6 +127,15 @@ def _shown(x: sympy.Rational) -> str:
     return str(x) if x.is_Integer else f"{float(x):g}"
 
 
+def with_copied(ctx: Context, x: sympy.Expr, copied: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
+    """``x`` with the givens copied wrongly as the student has them, in the results worked from
+    them too (``KE before`` is ½ m u² with the bullet's 0.2 kg, where 20 g was copied so)."""
+    if not copied:
+        return x
+    derived = {s: e for s, e in ctx.derived().values() if s in x.free_symbols and e.free_symbols & set(copied)}
+    return x.xreplace(derived).xreplace(copied)
+
+
 def _values(trace: Trace) -> set[sympy.Rational]:
     """The problem's values worked out (a velocity after, a mass asked for), as the numbers a
     student may write for them: these are no misread givens."""
