@@ -553,3 +553,31 @@ def test_mu_before_a_chain_that_ends_in_letters_is_m_times_u_not_a_mass() -> Non
     # chain's last side starts with a digit (2meu): it is no mass's number, mu stays m × u.
     work = "mu = -mx + 2my\ny + x = eu\nmu = -mx + 2m(eu - x) = 2meu - 3mx\nx = u(2e - 1)/3\n"
     assert set(by_line("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work).values()) == {"correct"}
+
+
+def test_v_beside_v_primed_is_the_velocity_before_where_the_bodies_move_off_together() -> None:
+    # OpenStax's v and v′: MSU bullet (0.020 kg at 300 m/s into 4.0 kg, they move together), by
+    # hand: v′ = 0.020(300)/4.02 = 6/4.02 = 1.4925; KE before ½(0.020)(300²) = 900 J. v is the
+    # bullet's velocity before (v′ the one after), not the common velocity.
+    work = (
+        "Bullet m = 0.020 kg at 300 m/s, block M = 4.0 kg at rest.\n"
+        "v' = m v/(m + M) = 0.020(300)/4.02 = 6/4.02 = 1.49 m/s\n"
+        "KE before = 1/2 m v^2 = 0.5(0.020)(300)^2 = 900 J\n"
+    )
+    assert by_line(BULLET, work) == {"1": "correct", "2": "correct", "3": "correct"}
+
+
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("impulse = 2(4 + 1.6) = 11.2 N s", "correct"),
+        ("impulse = 2(-1.6 - 4) = -11.2 N s", "correct"),  # in the student's own sense
+        ("impulse = 2(4 - 1.6) = 4.8 N s", "wrong"),  # right arithmetic, the rebound's sign lost
+        ("impulse = -4.8 N s", "wrong"),
+    ],
+)
+def test_the_word_impulse_alone_is_the_impulse_in_either_sense(line: str, expected: str) -> None:
+    # Edexcel M2 wall (2 kg at 4 m/s, e = 0.4), by hand: rebound 1.6 m/s, impulse 2(4 + 1.6) = 11.2
+    # N s. "impulse" on its own names it (as "the magnitude of the impulse" does), its sign the
+    # student's: -11.2 is right, 4.8 (and -4.8) is not.
+    assert by_line("edexcel-m2-ball-rebounds-from-wall", line) == {"1": expected}

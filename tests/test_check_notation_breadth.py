@@ -385,9 +385,6 @@ WRONG: dict[str, list[str]] = {
 
 #: Classes still misjudged (the breadth figure counts them as failures): text -> why.
 NOT_YET = {
-    "impulse on the ball = 11.2 N s": "'impulse' in words is a name only as 'impulse on B' (valuenames: names area)",
-    "impulse = 2(4 − 1.6) = 4.8 N s": "'impulse' alone is not a name: the line is judged by its arithmetic only",
-    "impulse = 4.8 N s": "'impulse' alone is not a name: the line is not read",
     "taking away from the wall as positive\nv_A1 = -4, v_A2 = 1.6": (
         "a convention declared in words does not turn derive's own names (v_A1) round (names area)"
     ),

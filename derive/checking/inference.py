@@ -188,6 +188,10 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
     return out
 
 
+#: "impulse = -11.2 N s", the word alone: the impact's impulse, its size signed as its number is.
+_IMPULSE = re.compile(r"\s*(?:the\s+)?impulse(?:\s+on\s+the\s+(?:ball|sphere|particle))?\s*", re.I)
+
+
 def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
     exprs: list[sympy.Expr] = []
     shown = list(r.sides)
@@ -196,6 +200,9 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             try:
                 exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
             except ParseError:
+                if i == 0 and _IMPULSE.fullmatch(side) and "J_n" in names.known:
+                    exprs.append(sympy.sqrt(names.known["J_n"] ** 2) * (-1 if r.sides[-1].strip()[:1] in "-−" else 1))
+                    continue
                 if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
                     shown[0] = r.lead

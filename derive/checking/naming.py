@@ -359,7 +359,10 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if any(g.name == "e" and g.value == 0 for g in ctx.problem.givens):  # they move off together: V after
         out["V"] = out["v_f"] = out["v_2"] = moving_together(ctx, after["A"], after["B"])
-    out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
+    primed = used is not None and {"v", "v_p"} <= used  # v and v′ (OpenStax): v is the velocity before
+    out.update(_lone(ctx, after, u_used, (used is not None and {"v", "V"} <= used) or primed))
+    if primed and not ctx.problem.oblique:
+        out["v"] = before["A"]
     for name in COMMON:
         out[name] = common_velocity(ctx)
     return {k: v for k, v in out.items() if (used is None or k in used) and k not in names and v is not None}

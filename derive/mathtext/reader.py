@@ -289,13 +289,18 @@ def _colon_split(piece: str) -> list[str]:
 _LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
 
 
+#: Words and numbers with no "=" before a comma (``35.0 m/s`` of ``m = 0.150 kg at 35.0 m/s, goalie
+#: M = 70.0 kg``, split at "at"): what they say ends there, and the relation after is one of its own.
+_NO_RELATION = re.compile(r"^[^=()\[\]{}]*\d[^=()\[\]{}]*$")  # a number in it: words alone lead in
+
+
 def _comma_split(piece: str) -> list[str]:
     """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one; ``A: 2, B: -6``
     two."""
     bits = _top_level_split(piece, ",")
     out: list[str] = []
     for bit in bits:
-        if out and (("=" in bit and "=" in out[-1]) or _LABEL.match(bit)):
+        if out and (("=" in bit and ("=" in out[-1] or _NO_RELATION.match(out[-1]))) or _LABEL.match(bit)):
             out.append(bit)
         elif out:
             out[-1] += "," + bit
