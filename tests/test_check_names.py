@@ -581,3 +581,16 @@ def test_the_word_impulse_alone_is_the_impulse_in_either_sense(line: str, expect
     # N s. "impulse" on its own names it (as "the magnitude of the impulse" does), its sign the
     # student's: -11.2 is right, 4.8 (and -4.8) is not.
     assert by_line("edexcel-m2-ball-rebounds-from-wall", line) == {"1": expected}
+
+
+@pytest.mark.parametrize(("answer", "expected"), [("1000", "correct"), ("1500", "wrong")])
+def test_the_mass_asked_for_named_in_words_is_the_students_m(tmp_path, answer: str, expected: str) -> None:
+    # A 1500 kg van at 5 m/s runs into a parked car (mass M); they move on together at 3 m/s.
+    # By hand: 7500 = 3(1500 + M) -> M = 1000 kg. "mass of the parked car" names the one mass to find.
+    problem = tmp_path / "van.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "1500 kg"\nm_B = "? kg"\ne = "?"\n'
+        'v_A1 = "5 m/s"\nv_B1 = 0\nv_A2 = "3 m/s"\nv_B2 = "3 m/s"\n'
+    )
+    work = f"1500(5) = (1500 + M)(3)\n7500 = 4500 + 3M\nAnswer: mass of the parked car = {answer} kg\n"
+    assert by_line(str(problem), work) == {"1": "correct", "2": "correct", "3": expected}

@@ -36,6 +36,7 @@ from derive.checking.restated import is_size, restated
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
+from derive.checking.wordlabels import word_label
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -188,10 +189,6 @@ def _speeds(ctx: Context) -> dict[str, sympy.Expr]:
     return out
 
 
-#: "impulse = -11.2 N s", the word alone: the impact's impulse, its size signed as its number is.
-_IMPULSE = re.compile(r"\s*(?:the\s+)?impulse(?:\s+on\s+the\s+(?:ball|sphere|particle))?\s*", re.I)
-
-
 def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
     exprs: list[sympy.Expr] = []
     shown = list(r.sides)
@@ -200,8 +197,8 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             try:
                 exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
             except ParseError:
-                if i == 0 and _IMPULSE.fullmatch(side) and "J_n" in names.known:
-                    exprs.append(sympy.sqrt(names.known["J_n"] ** 2) * (-1 if r.sides[-1].strip()[:1] in "-−" else 1))
+                if i == 0 and (label := word_label(side, names, r.sides[-1])) is not None:  # "impulse = 11.2"
+                    exprs.append(label)
                     continue
                 if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
