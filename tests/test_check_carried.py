@@ -294,3 +294,84 @@ def test_an_unknown_found_from_the_condition_before_a_slip_stays_as_the_student_
     assert found[2][:2] == ("wrong", "masses_swapped")
     assert found[3][0] == "correct"
     assert found[4][0] == found[5][0] == "carried"
+
+
+def _inverse(tmp_path, name: str, given: str) -> str:
+    problem = tmp_path / f"{name}.toml"
+    problem.write_text(f'title = "t"\nkind = "direct"\n[given]\n{given}')
+    return str(problem)
+
+
+def test_a_given_misread_by_one_digit_in_a_find_the_mass_problem_is_the_slip_not_the_masses_swapped(tmp_path) -> None:
+    # A 1500 kg van at 5 m/s runs into a parked car (mass M); they move on together at 3 m/s.
+    # By hand: 1500(5) = 7500 = 3(1500 + M) -> M = 1000 kg. Read as 6 m/s: 9000 = 4500 + 3M,
+    # M = 1500 kg, the van's own mass: M is still the mass solved for (not the 1500 kg given),
+    # and the slip is the copy (every other number on the line is the problem's).
+    problem = _inverse(
+        tmp_path,
+        "van",
+        'm_A = "1500 kg"\nm_B = "? kg"\ne = "?"\nv_A1 = "5 m/s"\nv_B1 = 0\nv_A2 = "3 m/s"\nv_B2 = "3 m/s"\n',
+    )
+    work = "Let M be the mass of the parked car.\n1500 x 6 = (1500 + M) x 3\n9000 = 4500 + 3M\n3M = 4500\nM = 1500 kg\n"
+    found = lines(problem, work)
+    assert found[2][:2] == ("wrong", "copied_wrong")
+    assert found[3][0] == found[4][0] == found[5][0] == "carried"
+
+
+def test_a_given_velocity_after_misread_is_carried_into_the_restitution_worked_with_it(tmp_path) -> None:
+    # 3 kg at 4 m/s hits 2 kg at rest; A goes on at 2 m/s; find e. By hand: 12 = 6 + 2v_B ->
+    # v_B = 3, e = (3 - 2)/4 = 0.25. A's 2 m/s read as 1: 12 = 3 + 2v_B -> v_B = 4.5 and
+    # e = (4.5 - 1)/4 = 0.875: the law in names is right, the numbers put in carry the copy.
+    problem = _inverse(
+        tmp_path, "finde", 'm_A = "3 kg"\nm_B = "2 kg"\ne = "?"\nv_A1 = "4 m/s"\nv_B1 = 0\nv_A2 = "2 m/s"\n'
+    )
+    work = (
+        "3(4) + 2(0) = 3(1) + 2 v_B2\n"
+        "12 = 3 + 2 v_B2\n"
+        "v_B2 = 4.5 m/s\n"
+        "e = (v_B2 - v_A2)/(v_A1 - v_B1)\n"
+        "e = (4.5 - 1)/(4 - 0) = 0.875\n"
+    )
+    found = lines(problem, work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == found[3][0] == found[5][0] == "carried"
+    assert found[4][0] == "correct"
+
+
+def test_a_worked_number_with_two_digits_swapped_is_the_slip_though_the_line_holds_at_one_figure(tmp_path) -> None:
+    # 0.2 kg at 35 m/s hits 0.27 kg at rest, elastic. By hand: 7 = 0.2a + 0.27b, b = a + 35,
+    # 0.27 x 35 = 9.45: 7 = 0.47a + 9.45 -> a = -5.2128, b = 29.787. Written 9.54: at the one
+    # figure of "7" the line still holds (0.47a + 9.54 = 7.09), but its digits are 9.45's
+    # swapped: the slip (arithmetic), and a = -2.54/0.47 = -5.404 carries it.
+    problem = _inverse(tmp_path, "swap", 'm_A = "0.2 kg"\nm_B = "0.27 kg"\nv_A1 = "35 m/s"\nv_B1 = "0 m/s"\ne = "1"\n')
+    work = (
+        "0.2(35) + 0.27(0) = 0.2a + 0.27b\n"
+        "b - a = 35\n"
+        "7 = 0.2a + 0.27(a + 35)\n"
+        "7 = 0.47a + 9.54\n"
+        "a = (7 - 9.54)/0.47 = -5.404 m/s\n"
+    )
+    found = lines(problem, work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == "carried"
+
+
+def test_energies_worked_with_a_given_copied_wrongly_are_carried(tmp_path) -> None:
+    # A 50 g pellet at 200 m/s lodges in a 2 kg block. By hand: V = 10/2.05 = 4.878, KE before
+    # ½(0.05)(200²) = 1000 J. Copied as 0.5 kg: V = 100/2.5 = 40, KE before ½(0.5)(200²) = 10000,
+    # after ½(2.5)(40²) = 2000, lost 8000: each energy is worked from the 0.5 kg, so carried
+    # (the results of the problem are worked from the given as the student copied it).
+    problem = _inverse(tmp_path, "pellet", 'm_A = "50 g"\nm_B = "2 kg"\nv_A1 = "200 m/s"\nv_B1 = "0 m/s"\ne = 0\n')
+    work = (
+        "m = 50 g = 0.5 kg, M = 2 kg, u = 200 m/s\n"
+        "m u = (m + M) V\n"
+        "V = 0.5 x 200 / 2.5 = 40 m/s\n"
+        "KE before = 1/2 m u^2 = 0.5 x 0.5 x 200^2 = 10000 J\n"
+        "KE after = 1/2 (m + M) V^2 = 0.5 x 2.5 x 40^2 = 2000 J\n"
+        "KE lost = 10000 - 2000 = 8000 J\n"
+    )
+    found = lines(problem, work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == "correct"
+    assert [found[n][0] for n in (3, 4, 5, 6)] == ["carried"] * 4

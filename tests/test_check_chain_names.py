@@ -210,3 +210,20 @@ def test_a_chains_answer_in_a_letter_of_the_students_own_is_judged_as_the_result
     head = "0.020(300) = 4.02 V\nV = 1.4925\n"
     assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/(2 x 9.81) = 0.1135\n")[3][0] == "correct"
     assert lines("chain-msu-bullet-block-swings", head + "h = 1.4925^2/9.81 = 0.2271\n")[3][0] == "wrong"
+
+
+def test_a_speed_from_its_square_worked_wrongly_is_carried() -> None:
+    # Car and SUV skid (0.80, 2.7 m, g = 9.8; 910 kg into 2100 kg at rest). By hand: V² = 2(0.8)(9.8)(2.7)
+    # = 42.336, V = 6.507. With g left out: V² = 2(0.80)(2.7) = 4.32 (the slip), V = √4.32 = 2.08 is
+    # the student's own V (carried), and 910 v = 3010(2.08), v = 6.88 carry it on.
+    work = "V^2 = 2 mu_k d = 2(0.80)(2.7) = 4.32\nV = 2.08 m/s\n910 v = 3010(2.08)\nv = 6.88 m/s\n"
+    found = lines("chain-car-rear-ends-suv-skid", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
+
+
+def test_a_line_right_with_a_name_of_the_students_own_but_worked_from_a_wrong_number_is_carried() -> None:
+    # As above (V = 2.08 from the slip): 910u = 3010 × 2.08 holds for the student's own u, but its
+    # working is the wrong 2.08 (truly 3010 × 6.507): carried, not correct.
+    work = "V^2 = 2 mu_k d = 2(0.80)(2.7) = 4.32\nV = 2.08 m/s\n910u = 3010 x 2.08\n"
+    assert lines("chain-car-rear-ends-suv-skid", work)[3][0] == "carried"

@@ -579,3 +579,82 @@ TENNIS = "giancoli-7-18-tennis-ball-wall-45deg"
 def test_an_impulse_or_a_change_of_momentum_in_words_is_the_impulse(work: str, expected: list) -> None:
     got = by_line(TENNIS, work)
     assert [got.get(str(k + 1)) for k in range(len(expected))] == expected
+
+
+# A name declared for a body's SPEED with words that say it moves backwards ("(A bounces back)",
+# "A moving backwards") is the mark scheme's v: minus the velocity along derive's +n, the
+# convention unchanged for everything else. 2 kg at 5 m/s hits 3 kg at rest, e = 0.8, by hand:
+# 10 = 2a + 3b, b - a = 4 -> a = -0.4, b = 3.6: A bounces back at s = 0.4.
+def test_a_speed_declared_backwards_is_minus_the_velocity(tmp_path) -> None:
+    problem = tmp_path / "back.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "2 kg"\nm_B = "3 kg"\nv_A1 = "5 m/s"\nv_B1 = "0 m/s"\ne = "0.8"\n'
+    )
+    work = (
+        "Let s be the speed of A after the impact (A bounces back).\n"
+        "2(5) + 3(0) = -2s + 3v_B\nv_B + s = 0.8(5)\nv_B = 4 - s\n10 = -2s + 12 - 3s\n5s = 2\ns = 0.4 m/s\n"
+    )
+    assert set(by_line(str(problem), work).values()) == {"correct"}
+
+
+def test_a_speed_declared_backwards_in_letters_is_said_so_not_as_the_convention_turned() -> None:
+    # CAIE 9231 Nov 2014 Q1 (2m at 4u, m at 3u toward it): 8mu - 3mu = -2ms + mw and
+    # w + s = 7eu give 3s = 7eu - 5u, s = u(7e - 5)/3 = -v_A2 (mark scheme v_A = (5 - 7e)u/3).
+    work = (
+        "Let s be the speed of A after the impact, A moving backwards, and w the velocity of B.\n"
+        "2m(4u) - m(3u) = -2ms + mw\nw + s = 7eu\n3s = 7eu - 5u\ns = u(7e - 5)/3\n"
+    )
+    r = report("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert {i.status for i in r.items if i.kind == "line"} == {"correct"}
+    said = " ".join(r.notes)
+    assert "s is -v_A2" in said
+    assert "positive direction is opposite" not in said  # not derive's n turned for every name
+
+
+def test_mu_before_a_chain_that_ends_in_letters_is_m_times_u_not_a_mass() -> None:
+    # Edexcel M2 June 2024 Q5 (m at u hits 2m at rest, P reverses), x P's speed back, y Q's
+    # velocity: mu = -mx + 2my, y + x = eu -> mu = 2meu - 3mx, x = u(2e - 1)/3 (= -v_A2). The
+    # chain's last side starts with a digit (2meu): it is no mass's number, mu stays m × u.
+    work = "mu = -mx + 2my\ny + x = eu\nmu = -mx + 2m(eu - x) = 2meu - 3mx\nx = u(2e - 1)/3\n"
+    assert set(by_line("edexcel-m2-2024-june-q5-m-hits-2m-speed-of-p", work).values()) == {"correct"}
+
+
+def test_v_beside_v_primed_is_the_velocity_before_where_the_bodies_move_off_together() -> None:
+    # OpenStax's v and v′: MSU bullet (0.020 kg at 300 m/s into 4.0 kg, they move together), by
+    # hand: v′ = 0.020(300)/4.02 = 6/4.02 = 1.4925; KE before ½(0.020)(300²) = 900 J. v is the
+    # bullet's velocity before (v′ the one after), not the common velocity.
+    work = (
+        "Bullet m = 0.020 kg at 300 m/s, block M = 4.0 kg at rest.\n"
+        "v' = m v/(m + M) = 0.020(300)/4.02 = 6/4.02 = 1.49 m/s\n"
+        "KE before = 1/2 m v^2 = 0.5(0.020)(300)^2 = 900 J\n"
+    )
+    assert by_line(BULLET, work) == {"1": "correct", "2": "correct", "3": "correct"}
+
+
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("impulse = 2(4 + 1.6) = 11.2 N s", "correct"),
+        ("impulse = 2(-1.6 - 4) = -11.2 N s", "correct"),  # in the student's own sense
+        ("impulse = 2(4 - 1.6) = 4.8 N s", "wrong"),  # right arithmetic, the rebound's sign lost
+        ("impulse = -4.8 N s", "wrong"),
+    ],
+)
+def test_the_word_impulse_alone_is_the_impulse_in_either_sense(line: str, expected: str) -> None:
+    # Edexcel M2 wall (2 kg at 4 m/s, e = 0.4), by hand: rebound 1.6 m/s, impulse 2(4 + 1.6) = 11.2
+    # N s. "impulse" on its own names it (as "the magnitude of the impulse" does), its sign the
+    # student's: -11.2 is right, 4.8 (and -4.8) is not.
+    assert by_line("edexcel-m2-ball-rebounds-from-wall", line) == {"1": expected}
+
+
+@pytest.mark.parametrize(("answer", "expected"), [("1000", "correct"), ("1500", "wrong")])
+def test_the_mass_asked_for_named_in_words_is_the_students_m(tmp_path, answer: str, expected: str) -> None:
+    # A 1500 kg van at 5 m/s runs into a parked car (mass M); they move on together at 3 m/s.
+    # By hand: 7500 = 3(1500 + M) -> M = 1000 kg. "mass of the parked car" names the one mass to find.
+    problem = tmp_path / "van.toml"
+    problem.write_text(
+        'title = "t"\nkind = "direct"\n[given]\nm_A = "1500 kg"\nm_B = "? kg"\ne = "?"\n'
+        'v_A1 = "5 m/s"\nv_B1 = 0\nv_A2 = "3 m/s"\nv_B2 = "3 m/s"\n'
+    )
+    work = f"1500(5) = (1500 + M)(3)\n7500 = 4500 + 3M\nAnswer: mass of the parked car = {answer} kg\n"
+    assert by_line(str(problem), work) == {"1": "correct", "2": "correct", "3": expected}

@@ -1004,6 +1004,34 @@ def test_an_arrow_after_a_value_is_its_direction(line: str, expected: list[str])
     assert statuses("edexcel-m2-ball-rebounds-from-wall", line) == expected
 
 
+# The arrow is read where the student declares the positive way in words too (an arrow
+# against it makes the value negative, as "to the left" does), and where the answer is
+# marked after it ("← **Ans.**", "<- (Ans.)"). Same wall, by hand: v_A2 = -1.6 m/s.
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("Taking right as positive.\nv_A2 = 1.6 m/s ←", ["correct"]),
+        ("Positive to the right.\n$v_{A2} = 1.6$ m/s $\\leftarrow$, \\quad $e = 0.4$", ["correct"]),
+        ("Positive to the right.\nv_A2 = 1.6 m/s → Ans.", ["wrong"]),
+        ("v_A2 = 1.6 m/s ← **Ans.**", ["correct"]),
+        ("v_A2 = 1.6 m/s <- (Ans.)", ["correct"]),
+        ("v_A2 = 1.6 m/s -> Ans", ["wrong"]),
+    ],
+)
+def test_an_arrow_after_a_value_is_read_with_a_convention_in_words_and_an_answer_mark(
+    work: str, expected: list[str]
+) -> None:
+    got = [i.status for i in report("edexcel-m2-ball-rebounds-from-wall", work).items if i.kind == "line"]
+    assert got == expected
+
+
+def test_a_relation_after_a_comma_that_ends_words_split_off_at_at_is_its_own() -> None:
+    # "m = 0.150 kg at 35.0 m/s, goalie M = 70.0 kg": split at "at", then "35.0 m/s" has no "=":
+    # the comma ends it, and "M = 70.0" is a relation of its own (not "35.0 m/s, M = 70.0").
+    assert sides("Trolley m = 2.0 kg at 3.0 m/s, second trolley M = 5.0 kg at rest") == [("m", "2.0"), ("M", "5.0")]
+    assert sides("x = 1, 2") == [("x", "1, 2")]
+
+
 def test_an_arrow_between_relations_still_splits_them() -> None:
     assert sides("x = 2 → y = 3") == [("x", "2"), ("y", "3")]
     assert [r.direction for r in read_relations("v_A2 = 1.6 m/s ←, v_B2 = 2 m/s →")] == [-1, 1]

@@ -83,7 +83,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
-        if item.status == "correct" and slips and numbers_written(sides[:-1], set()) & wrong:
+        if item.status == "correct" and slips and numbers_written(sides, set(), working=True) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
             holds = partial(_holds, ctx, subs=[true_defs, values])

@@ -37,6 +37,7 @@ from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
+from derive.checking.wordlabels import word_label
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
 from derive.problem.expr import ParseError
@@ -209,6 +210,9 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             try:
                 exprs.append(read_side(side, names, i == 0, i == len(sides) - 1))
             except ParseError:
+                if i == 0 and (label := word_label(side, names, r.sides[-1])) is not None:  # "impulse = 11.2"
+                    exprs.append(label)
+                    continue
                 if i == 0 and r.lead:  # "loss = ½ mu (relative speed)^2 ⏎ = ½(1.2m)(36)": the chain's subject
                     exprs.append(read_side(rewrite(r.lead, set(names.known) | names.extra), names, True, False))
                     shown[0] = r.lead

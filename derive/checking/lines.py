@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, slipworld, words
+from derive.checking import carried, cofunctions, labelled, misread, mistakes, slipnames, slipworld, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -157,7 +157,7 @@ class Trace(Carrying):
 
     def pairs(self, line: Line) -> list[Pair]:
         """Each ``=`` of the line, in the unknowns."""
-        raw = [x.xreplace(self.copied) for x in line.exprs or ()]  # a given copied wrongly: as the student has it
+        raw = [misread.with_copied(self.ctx, x, self.copied) for x in line.exprs or ()]  # as the student has it
         sides, exprs = line.sides, [self.ctx.in_unknowns(x) for x in raw]
         out = []
         # a chain that ends in a number as written: each side is compared with that number
@@ -267,7 +267,7 @@ class Trace(Carrying):
             return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
-        if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
+        if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
         if not diags:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)

@@ -298,5 +298,7 @@ def _shown(e: sympy.Expr) -> str:
     if isinstance(e, sympy.Abs) and isinstance(e.args[0], sympy.Symbol):
         return e.args[0].name  # a given restated without its sign: said as that given
     if isinstance(-e, sympy.Symbol):
-        return f"-{(-e).name}"  # -J_n (the impulse on A), or a component on an axis the student turned round
+        return (
+            f"-{(-e).name}"  # -J_n (the impulse on A), a component on an axis turned round, a speed declared backwards
+        )
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"

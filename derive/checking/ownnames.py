@@ -129,6 +129,13 @@ def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
 
 
 _DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
+#: An arrow after a value that points each way (``0.025 m/s $\leftarrow$``, ``0.6 ft/s ←``).
+_ARROW = {
+    "left": r"←|⟵|<-{1,2}(?!>)|\\(?:long)?leftarrow\b",
+    "right": r"→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b",
+    "up": r"↑|\\uparrow\b",
+    "down": r"↓|\\downarrow\b",
+}
 _WAY = r"(left|right|up|down)(?:wards?)?"
 _POSITIVE = re.compile(
     rf"(?:taking|take|with)?\s*(?:the\s+)?(?:direction\s+)?(?:to\s+the\s+)?{_WAY}\s*(?:is|=|as|taken\s+as)?\s*"
@@ -148,9 +155,9 @@ def directed(relations: tuple, text: str) -> tuple:
     out: list[Any] = []
     for r in relations:
         last = r.sides[-1].strip()
-        way = rf"(?:to(?:wards)?\s+the\s+|to\s+)?{opposite}(?:wards?)?\b"
+        way = rf"\b(?:to(?:wards)?\s+the\s+|to\s+)?{opposite}(?:wards?)?\b|{_ARROW[opposite]}"
         if re.fullmatch(r"\d+\.?\d*", last) and re.search(
-            rf"(?<![\d.]){re.escape(last)}\b[^=\d]*?\b{way}", r.written, re.I
+            rf"(?<![\d.]){re.escape(last)}\b[^=\d]*?(?:{way})", r.written, re.I
         ):
             r = replace(r, sides=(*r.sides[:-1], f"-{last}"))
         out.append(replace(r, direction=0) if getattr(r, "direction", 0) else r)

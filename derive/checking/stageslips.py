@@ -86,6 +86,9 @@ def own_value(own: dict, left: sympy.Expr, line: tuple, status: str, number: Cal
     number written last, or on a wrong or carried line the expression in the unknowns it comes
     to (``u_B = 9(1 + e)/2``, with 9 copied for 7)."""
     sides, exprs = line
+    if left.is_Pow and left.exp == 2 and left.base.is_Symbol and status in ("wrong", "carried") and number(sides[-1]):
+        own[left.base] = sympy.sqrt(sympy.Rational(sides[-1].strip()))  # V² = 21.17 after a slip: V = √21.17
+        return
     if not left.is_Symbol or len(exprs) < 2:
         return
     if number(sides[-1]):
@@ -125,10 +128,13 @@ def own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) 
         own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
 
 
-def numbers_written(sides: tuple[str, ...] | list[str], data: set) -> set[str]:
+def numbers_written(sides: tuple[str, ...] | list[str], data: set, working: bool = False) -> set[str]:
     """The decimals written in ``sides`` and the whole numbers of two figures or more
     (``1125`` in ``sqrt(1125)``), as written, but the problem's ``data``: a number a wrong line
-    came to, and a later line worked from it."""
+    came to, and a later line worked from it. ``working``: of the sides but a last one that is
+    a number alone (the line's result; ``3010 × 4.601`` is working)."""
+    if working and sides and re.fullmatch(r"\s*[-+]?\d+(?:\.\d+)?\s*[A-Za-z/ ]*", sides[-1]):
+        sides = sides[:-1]
     found = re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", " ".join(sides))
     return {t for t in found if ("." in t or len(t.strip("0")) >= 2) and sympy.Rational(t) not in data}
 

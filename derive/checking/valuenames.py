@@ -125,14 +125,20 @@ def kinds(relations: tuple[Relation, ...], text: str, reserved: set[str]) -> dic
 _LETTERS = ((re.compile(r"[mM](?:_?\w{1,3})?"), MASS), (re.compile(r"[IJ](?:_?\w{1,2})?"), IMPULSE))
 
 
+#: A side that is a number, perhaps times a power of ten, and a unit apart from it (``70.0``, ``1.2 kg``).
+_NUMBER_SIDE = re.compile(
+    r"[-+]?\s*\d[\d.]*(?:\s*(?:×|x|\*|\\times|\\cdot)\s*10\s*\^?\s*\{?[-−]?\d+\}?)?(?:\s+[A-Za-z\\][^=+*]*)?"
+)
+
+
 def by_letter(relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, Dim]:
     """The names set to a number whose letter says its kind (``m``, ``M_2`` a mass; ``J``, ``I`` an
     impulse), a kind that a unit or words after it may still overrule (:func:`kinds`)."""
     out: dict[str, Dim] = {}
     for r in relations:
         name = impulse_name(r.sides[0]) or r.sides[0].strip()
-        if len(r.sides) < 2 or name in reserved or not re.match(r"[-+]?\d", r.sides[-1].strip()):
-            continue
+        if len(r.sides) < 2 or name in reserved or not _NUMBER_SIDE.fullmatch(r.sides[-1].strip()):
+            continue  # "mu = -mv + 2m(eu - v) = 2meu - 3mv": letters, not a mass's number
         if name.startswith(("impulse", "dp")) and impulse_name(r.sides[0]):
             out[name] = IMPULSE  # "impulse on the ball = 11.2 N s"
         for pattern, dim in _LETTERS:
@@ -163,7 +169,8 @@ def by_value(
     point of the givens, the true values of the unknowns) puts the numbers in."""
     out: dict[str, sympy.Expr] = {}
     table = quantities(ctx)
-    for r in relations:
+    asked = {g.name for g in ctx.problem.givens if g.unknown}
+    for k, r in enumerate(relations):
         name = impulse_name(r.sides[0]) or r.sides[0].strip()
         dim = found.get(name)
         if (
@@ -173,6 +180,7 @@ def by_value(
             or any(re.search(r"[A-Za-z]", x) and not impulse_name(x) for x in r.sides[1:-1])
         ):
             continue  # "mu = m1 m2/(m1 + m2) = 0.1497 kg": a name defined by its expression
+        solved = _met_before(name, relations[:k])  # "6M = 7200 -> M = 1200 kg": a result, not a given restated
         m = re.match(r"([-+]?)(\d+)\.?(\d*)", r.sides[-1].strip())
         try:  # "20/1000": 20 g read in kg
             value = number_of(parse(student(r.sides[-1]), {}).expr) if m else None
@@ -185,7 +193,9 @@ def by_value(
         written = value.real
         half = (0.5 * 10 ** -len(m.group(3)) + 1e-12) * abs(written / float(m.group(0)))  # to the figures written
         hits = []
-        for _what, e in table.get(dim, []):
+        for what, e in table.get(dim, []):
+            if solved and what in ("m_A", "m_B") and what not in asked:
+                continue  # a mass solved for is the one asked for, even where a slip makes it the other's
             x = number_of(ctx.in_unknowns(e).xreplace(values[0]).xreplace(values[1]))
             if x is not None and abs(x.imag) < 1e-12 and abs(x.real - written) <= 1.01 * half:
                 hits.append(e)
@@ -204,6 +214,13 @@ def _only_one(quantities: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
     if len(first) != 1:
         return None
     return next(e for what, e in quantities if not what.startswith("-"))
+
+
+def _met_before(name: str, earlier: tuple[Relation, ...]) -> bool:
+    """Whether ``name`` is written in one of the ``earlier`` relations among other terms
+    (``(1200 + M) x 6``): a value it is set to afterwards is what the student solved for."""
+    word = re.compile(rf"(?<![\w\\]){re.escape(name)}(?!\w)")
+    return any(len(r.sides) >= 2 and any(word.search(s) for s in r.sides) for r in earlier)
 
 
 def of_kind(dim: Dim | None, what: str) -> bool:

@@ -234,15 +234,34 @@ def _direct(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     plain = re.sub(r"\\[A-Za-z]+\{[^{}]*\}|\$|\\[()]|[{}]", " ", line)
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
-    found = [((m[1], m[3]), (m[2], m[4]), m[5]) for m in _PAIR_WORDS.finditer(plain)]
-    found += [((m[1], m[2]), None, m[3]) for m in _ONE_WORDS.finditer(plain)]
-    for first, second, when in found:
+    found = [((m[1], m[3]), (m[2], m[4]), m[5], 1) for m in _PAIR_WORDS.finditer(plain)]
+    found += [((m[1], m[2]), None, m[3], _backwards(m, plain)) for m in _ONE_WORDS.finditer(plain)]
+    for first, second, when, sign in found:
         for name, body in (first, second) if second else (first,):
             b = _body(body, ctx)
             key = f"v_{b}{'2' if when.lower() == 'after' else '1'}"
             if b and key in names:
-                out.setdefault(name.replace("{", "").replace("}", ""), names[key][0])
+                out.setdefault(name.replace("{", "").replace("}", ""), sign * names[key][0])
     return out
+
+
+#: Words after a body's speed is named that say it moves backwards ("(P goes backwards)", "P
+#: rebounds", "in the opposite direction", "to the left").
+_BACKWARDS = re.compile(
+    r"^[^;.=]{0,30}?\b(?:backwards?|back|reverses|rebounds?|bounces\s+back|in\s+the\s+opposite\s+direction"
+    r"|the\s+other\s+way|to\s+the\s+left|leftwards?)\b",
+    re.I,
+)
+
+
+def _backwards(m: re.Match[str], plain: str) -> int:
+    """-1 where a name declared for a body's speed (not its velocity) is said, in the words just
+    after, to be backwards ("let v be the speed of P after (P goes backwards)"): the mark scheme's
+    v, the size of a velocity against derive's +n (from A toward B), is minus that velocity."""
+    if not re.search(r"\bspeed", m.group(0), re.I):
+        return 1
+    tail = re.split(r"\band\s+[A-Za-z](?:_?\w{1,2})?\s+(?:the|be|is|as)\b", plain[m.end() :], maxsplit=1)[0]
+    return -1 if _BACKWARDS.match(tail) else 1
 
 
 def _body(words: str, ctx: Context) -> str:

@@ -180,7 +180,7 @@ def notes_in_words(notes: tuple[str, ...] | list[str], known: dict[str, str]) ->
         for student, name in pairs:
             if form[2] == "habit":
                 student = re.sub(r"(?<=[A-Za-z0-9])_?p$", "′", student) if re.search(r"_\w*p$", student) else student
-            if "*" in name:
+            if "*" in name and name.replace("*", "") == student:  # mu as m*u (not friction as mu_k*g*3010)
                 out.append(product_note(student))
             else:
                 out.append(name_note(student, _meant(name, known), form[2]))

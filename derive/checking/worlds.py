@@ -37,6 +37,7 @@ class Pair:
     right: sympy.Expr
     tol: float
     raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
+    own_figures: bool = False  # judged at ``tol`` only, not at the figures of a side of one number
 
     @property
     def difference(self) -> sympy.Expr:
@@ -52,7 +53,8 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         scale = max(abs(left), abs(right))
         tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
         far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
-        if far and not satisfied(p.difference, vals, U, [pt], tol) and not at_figures(p, left, right):
+        loose = not p.own_figures and at_figures(p, left, right)
+        if far and not satisfied(p.difference, vals, U, [pt], tol) and not loose:
             return identity(p)
     return True
 

@@ -15,7 +15,7 @@ import re
 #: direction it points, as words say it ("to the left"), not "so".
 _ARROW_DIRECTION = re.compile(
     r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|(↓|\\downarrow)|(↑|\\uparrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
-    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]))"  # bounded gaps: a long run of spaces stays cheap
+    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]|\**\s*\(?\s*[Aa]ns\b\.?\s*\)?\s*\**\s*$))"  # "← **Ans.**" (a pointer "<- answer" is no direction)
 )
 _ARROWS = r"→|⟶|-{1,2}>|←|⟵|<-{1,2}|↑|↓|\\(?:long)?(?:right|left)arrow|\\(?:up|down)arrow"
 #: A sign convention's mark before a relation, as engineering texts write it: ``(+→)``, ``(→+)``,
@@ -33,4 +33,6 @@ def arrows_said(plain: str) -> str:
 def _said(m: re.Match[str]) -> str:
     """The direction an arrow after a value points, in words (``↓``: downwards)."""
     said = " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"
+    after = m.string[m.end() : m.end() + 1]
+    said += " " if after and (after.isalnum() or after in "*(") else ""  # "← **Ans.**": a word apart
     return said + ")" if m[0].rstrip().endswith(")") and "(" not in m[0] else said  # "(0.2 ←)": its bracket stays
