@@ -137,7 +137,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"\bK\.\s?E\b\.?", "KE", text, flags=re.I)  # K.E.
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
-    text = times_beside_words(text, known)  # "e x speed before": times, beside a quantity said in words
+    text = times_beside_words(text)  # "e x speed before": times, beside a quantity said in words
     text = re.sub(  # v' -> v_p; v_2'' (after a second impact) -> v_2pp
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)('+)",
         lambda m: m[1] + ("" if "_" in m[1] else "_") + "p" * len(m[2]),

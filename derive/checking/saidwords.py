@@ -33,16 +33,9 @@ SAID_PHRASES = (
 _TIMES_WORDS = re.compile(r"(?<=\S)\s+x\s+(?=(?:speed|velocity)_(?:after|before)\b)|(?<=_after|before)\s+x\s+(?=\S)")
 
 
-#: The impulse said in words, a whole side (``impulse = 11.2 N s``, ``impulse on the ball = …``).
-_IMPULSE = re.compile(r"^\s*(?:the\s+)?impulse(?:\s+(?:on|of)\s+(?:the\s+)?(?:ball|particle|sphere|puck))?\s*$", re.I)
-
-
-def times_beside_words(text: str, known: set[str] | frozenset[str] = frozenset()) -> str:
-    """``text`` with each ``x`` beside a quantity said in words written as ``*``, and the impulse
-    in words as its size where the problem is one impact (its impulse ``J_n`` known; a chain's
-    impulses are its stages' own, and a word there stays the student's own name): "impulse =
-    11.2 N s away from the wall" gives its direction in words, as "magnitude of impulse" does."""
-    text = _IMPULSE.sub("sqrt(J_n^2)", text) if "J_n" in known else text
+def times_beside_words(text: str) -> str:
+    """``text`` with each ``x`` beside a quantity said in words written as ``*`` (the impulse in
+    words is :mod:`.wordlabels`' and :func:`.spellings.impulse_name`'s: signed as the student writes it)."""
     return _TIMES_WORDS.sub(" * ", text)
 
 

@@ -187,7 +187,12 @@ def by_value(
         except ParseError:
             value = None
         if m is None or value is None or float(m.group(0)) == 0:
-            if m is not None and value == 0 and (only := _only_one(table.get(dim, []))) is not None:
+            if (
+                m is not None
+                and value == 0
+                and _says_impulse(name)
+                and (only := _only_one(table.get(dim, []))) is not None
+            ):
                 out[name] = only  # "impulse = 0": the one impulse, its sign no matter
             continue
         written = value.real
@@ -201,10 +206,16 @@ def by_value(
                 hits.append(e)
         if hits:
             out[name] = hits[0]  # equal masses: either, and the first is A's
-        elif (only := _only_one(table.get(dim, []))) is not None:  # "J = 0.238": the one impulse, worked wrongly
+        elif _says_impulse(name) and (only := _only_one(table.get(dim, []))) is not None:  # "J = 0.238", worked wrongly
             x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
             out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _says_impulse(name: str) -> bool:
+    """Whether the name's letter or word says it is the impulse (``J``, ``I_n``, ``impulse``, ``dp``),
+    not a quantity of the same unit a student names otherwise (``P``, a total momentum)."""
+    return bool(_LETTERS[1][0].fullmatch(name)) or name.startswith(("impulse", "dp"))
 
 
 def _only_one(quantities: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
