@@ -34,7 +34,7 @@ from derive.mathtext.notation import student
 
 TRUE = "substituting the correct values"
 SOLVING = {
-    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
+    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign, a factor or a letter lost).",
     "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
 }
 #: A line whose rule holds but whose working does not come to what it claims.

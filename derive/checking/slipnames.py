@@ -25,7 +25,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes
+from derive.checking import energyforms, mistakes, rearranging
 from derive.checking.context import DEG, Context
 from derive.checking.figures import figures
 from derive.checking.mistakes import Mistake
@@ -178,7 +178,7 @@ def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
         forms.append(
             {"T_lost": half * m * sum(((a - c) ** 2 for a, c in zip(comps(b, "1"), comps(b, "2"), strict=True)), zero)}
         )
-    return forms
+    return forms + energyforms.more_energies(ctx)  # one body's energy for both; e times the energy
 
 
 def _holds_with(ctx: Context, bad: Pair, subs: dict[sympy.Symbol, sympy.Expr], holds: Holds) -> bool:
@@ -214,6 +214,8 @@ def solving_slip(
     # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
+    if held and rearranging.kind(failing[0], held[-1], U, pt):  # a sign, a factor, a letter lost
+        return "algebra"
     if held and _same_but_number(failing[0].difference, held[-1].difference, U, pt):
         return "arithmetic"
     return ""

@@ -1,0 +1,97 @@
+"""Slips named as a teacher names them, in the forms students write them (issue #31): the
+impact rule upside down, algebra (a sign or a factor lost in rearranging) against arithmetic
+(a number worked wrongly), the kinetic energy's wrong formulas. Every number is worked by hand
+from the problem files' givens (in the comments), never from derive's output."""
+
+from __future__ import annotations
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
+    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+
+
+def test_restitution_with_e_on_the_separations_side_is_restitution_reversed() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: approach 12 - 4 = 8, separation 4.
+    # Upside down: 0.5(v_B2 - v_A2) = 8, so v_B2 - v_A2 = 16 (carried); also as a ratio.
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n0.5(v_B2 - v_A2) = 12 - 4\nv_B2 - v_A2 = 16\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "restitution_reversed")
+    assert found[3][0] == "carried"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "e = (12 - 4)/(v_B2 - v_A2)\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+    # AQA 2014 (symbolic): 2m at 2u hits m at rest, e = 2/3: (2/3)(v_B - v_A) = 2u, upside down
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", "(2/3)(v_B2 - v_A2) = 2u\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+
+
+def test_a_term_moved_across_without_its_sign_changed_is_algebra() -> None:
+    # OCR M2 2006: 2 kg at 5 hits 1 kg at rest, A after at 2: 10 = 4 + v_B2, so v_B2 = 6;
+    # 10 + 4 = v_B2 moves the 4 across with its sign kept (algebra, not arithmetic), and
+    # v_B2 = 14 is carried.
+    work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\n10 + 4 = v_B2\nv_B2 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+    # Beer & Johnston 13.13 (Mg): 10 = 20 v + 10.5, the 10.5 kept positive on the left
+    work = "20(0.5) + 0 = 20 v_A2 + 35(0.3)\n10 = 20 v_A2 + 10.5\n10 + 10.5 = 20 v_A2\n"
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert found[3][:2] == ("wrong", "algebra")
+
+
+def test_the_unknowns_coefficient_lost_in_rearranging_is_algebra() -> None:
+    # Young & Freedman 8.96: 0.0400 kg at 0.200 m/s, 0.050 m/s after, red puck at rest, e = 1:
+    # 0.008 = 0.002 + m_B v_B2; v_B2 = 0.250 (e = 1: 0.200 = v_B2 - 0.050), so m_B = 0.024.
+    # 0.008 = 0.002 + 0.250 m_B is right; 0.006 = m_B drops m_B's coefficient 0.250 (algebra)
+    work = "0.008 = 0.002 + 0.250 m_B\n0.006 = m_B\n"
+    found = lines("young-freedman-8-96-pucks-find-mass", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+
+
+def test_a_letter_lost_in_taking_a_factor_out_is_algebra_a_number_is_arithmetic() -> None:
+    # Edexcel M2 2010: P (2m) at 2u, Q (m) at -u: 3u = 2 v_P + v_Q and v_Q - v_P = 3eu, so
+    # 3u = 3 v_P + 3eu, u = v_P + eu and v_P = u - eu = u(1 - e). u(1 - e^2) has a letter too
+    # many in one term (algebra); u(1 - 3e) has its letters right and a number wrong (arithmetic).
+    base = "3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 3eu\n3u = 3 v_A2 + 3eu\nu = v_A2 + eu\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", base + "v_A2 = u(1 - e^2)\n")
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", base + "v_A2 = u(1 - 3e)\n")
+    assert found[5][:2] == ("wrong", "arithmetic")
+
+
+def test_a_sum_worked_wrongly_with_no_term_shown_moved_is_arithmetic() -> None:
+    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 shows no 4 moved across: a teacher
+    # marks the number (10 - 4 = 6, not 14), arithmetic.
+    work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\nv_B2 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+
+
+def test_kinetic_energy_after_as_e_times_the_energy_before_is_ke_formula() -> None:
+    # Edexcel M2 wall: 2 kg at 4 m/s, e = 0.4: rebound 1.6 m/s, KE before ½(2)(16) = 16 J,
+    # after ½(2)(1.6²) = 2.56 J; e x 16 = 6.4 J scales the energy by e, not e² (ke_formula),
+    # and the loss 16 - 6.4 = 9.6 J is carried.
+    work = "KE before = 0.5(2)(4)^2 = 16\nKE after = 0.4 x 16 = 6.4\nKE lost = 16 - 6.4 = 9.6\n"
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "ke_formula")
+    assert found[3][0] == "carried"
+
+
+def test_one_bodys_kinetic_energy_for_both_is_ke_formula() -> None:
+    # MSU: a 0.020 kg bullet at 300 m/s lodges in a 4.0 kg block: V = 6/4.02 = 1.4925 m/s,
+    # KE after ½(4.02)(1.4925²) = 4.478 J; the block's mass alone, ½(4.0)(1.4925²) = 4.455 J
+    work = "T_2 = 0.5(4.0)(1.4925)^2 = 4.455\n"
+    found = lines("msu-lectureonline-bullet-lodges-in-block", work)
+    assert found[1][:2] == ("wrong", "ke_formula")
+    # AQA 2007 head-on (0.3 kg at 3, 0.2 kg at 2 toward it): KE before 1.35 + 0.4 = 1.75 J;
+    # A's alone, 0.5(0.3)(3)^2 = 1.35, is one body's energy for the two
+    found = lines("aqa-m3-2007-spheres-approach-head-on", "KE before = 0.5(0.3)(3)^2 = 1.35\n")
+    assert found[1][:2] == ("wrong", "ke_formula")
