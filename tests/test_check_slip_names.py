@@ -95,3 +95,18 @@ def test_one_bodys_kinetic_energy_for_both_is_ke_formula() -> None:
     # A's alone, 0.5(0.3)(3)^2 = 1.35, is one body's energy for the two
     found = lines("aqa-m3-2007-spheres-approach-head-on", "KE before = 0.5(0.3)(3)^2 = 1.35\n")
     assert found[1][:2] == ("wrong", "ke_formula")
+
+
+def test_a_chains_energy_without_its_half_is_ke_formula_and_a_half_lost_cancelling_is_algebra() -> None:
+    # OCR M2 2006 chain: 0.3 kg dropped from 2 m: ½(0.3) v1² = 0.3(9.8)(2), v1² = 39.2,
+    # v1 = 6.26 m/s. 0.3 v1² (the ½ of the kinetic energy dropped) gives v1² = 19.6, 4.43.
+    work = "0.3(9.8)(2) = 0.3 v1^2\nv1 = sqrt(19.6) = 4.43\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][:2] == ("wrong", "ke_formula")
+    assert found[2][0] == "carried"
+    # the masses cancelled and the ½ lost with them: v1² = g h, no mass with the square
+    work = "0.3(9.8)(2) = 0.5(0.3) v1^2\nv1^2 = 9.8(2) = 19.6\nv1 = 4.43\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    assert found[3][0] == "carried"

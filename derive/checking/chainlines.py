@@ -24,7 +24,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
-from derive.checking.slipnames import COPIED, FLIPPED, copied_into_working, sign_of_a_term
+from derive.checking.slipnames import COPIED, copied_into_working
 from derive.checking.stageslips import (
     StageMistakes,
     named_arithmetic,
@@ -35,6 +35,7 @@ from derive.checking.stageslips import (
     stage_given,
     stage_mistakes,
 )
+from derive.checking.termslips import term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -94,15 +95,14 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             if not item.slip and _weight_as_mass(ctx, sides, reread, values, true_defs):
                 phrase = mistakes.phrase("weight_as_mass")
                 item = replace(item, slip="weight_as_mass", message=f"{item.message.split(': ')[0]}: it {phrase}.")
-            if not item.slip and copied_into_working(
-                ctx, sides, exprs, partial(_holds, ctx, sides, subs=[true_defs, values])
-            ):
+            at = partial(_holds, ctx, sides, subs=[true_defs, values])
+            if not item.slip and copied_into_working(ctx, sides, exprs, at):
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip = "" if item.slip else sign_of_a_term(exprs, partial(_holds, ctx, sides, subs=[true_defs, values]))
-            if flip and not item.message.endswith("(an arithmetic slip)."):  # a sign lost
-                item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{FLIPPED[flip]}")
+            flip, why = ("", "") if item.slip else term_slip(exprs, at)
+            if flip and not item.message.endswith("(an arithmetic slip)."):  # a sign lost, a ½ dropped
+                item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
         written.append(exprs)
