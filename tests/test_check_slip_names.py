@@ -110,3 +110,27 @@ def test_a_chains_energy_without_its_half_is_ke_formula_and_a_half_lost_cancelli
     assert found[1][0] == "correct"
     assert found[2][:2] == ("wrong", "algebra")
     assert found[3][0] == "carried"
+
+
+def test_a_number_worked_wrongly_with_two_unknowns_kept_is_arithmetic() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4: 4(12) + 8(4) = 48 + 32 = 80, not 90; the unknowns'
+    # terms 4 v_A2 + 8 v_B2 as they were: arithmetic, on one line ("i.e.") or two
+    for work in (
+        "4(12) + 8(4) = 4 v_A2 + 8 v_B2, i.e. 90 = 4 v_A2 + 8 v_B2\n",
+        "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n90 = 4 v_A2 + 8 v_B2\n",
+    ):
+        found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+        assert max(found.items())[1][:2] == ("wrong", "arithmetic"), work
+
+
+def test_a_value_put_in_with_its_sign_lost_in_a_lines_working_is_algebra() -> None:
+    # OCR M2 2014: 2m at 4 meets 3m at 2 the other way, e = 0.4: 2 = 2a + 3b, b - a = 2.4, so
+    # a = -1.04, b = 1.36: 3b = 2 - 2a = 2 + 2.08 = 4.08. 2 - 2.08 puts a in with its sign
+    # lost (algebra); 2 + 2.08 = 4.8 is a sum worked wrongly (arithmetic).
+    work = "v_A2 = -1.04\n3 v_B2 = 2 - 2 v_A2 = 2 - 2.08 = -0.08\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    work = "v_A2 = -1.04\n3 v_B2 = 2 - 2 v_A2 = 2 + 2.08 = 4.8\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[2][:2] == ("wrong", "arithmetic")

@@ -2,8 +2,8 @@
 
 :func:`~.slipnames.wrong_energies` has the formula's own slips (no square, no half, the
 energy lost as ½m(u − v)²); these are the slips in what the formula is applied to: one
-body's energy for the two bodies' (``KE after = ½(150000)(0.2238)²`` for two coupled cars,
-the second car left out), and the energy after as e times the energy before (e scales the
+body's energy for the two bodies' (``T_2 = ½(4.0)(1.4925)²`` for a bullet lodged in a
+block, the bullet left out), and the energy after as e times the energy before (e scales the
 speed, so the energy scales by e², and only where the other body is a wall).
 """
 

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, words
+from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, termslips, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -286,7 +286,7 @@ class Trace(Carrying):
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
             if not name and carried.worked_wrongly(self, line, world):
-                return diags, None, WORKING, "arithmetic"
+                return diags, None, *termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)

@@ -1,10 +1,10 @@
 """Algebra or arithmetic: how a line that rearranges the relation before it went wrong.
 
 A teacher names a slip in working one relation from the one before it by what was done
-wrongly. Algebra: a term moved across without its sign changed (``12000 + 7200 = 6M`` from
-``12000 = 7200 + 6M``), the unknown's coefficient lost or doubled (``12000 = 7200 + m`` from
-``12000 = 6(1200 + m)``; ``V² = μgd`` from ``½V² = μgd``), or a letter lost from a term in
-taking a factor out (``w = u(1 + λ)/k`` from ``u + kλu = kw``). Arithmetic: the unknown's
+wrongly. Algebra: a term moved across without its sign changed (``10 + 4 = v`` from
+``10 = 4 + v``), the unknown's coefficient lost or doubled (``0.006 = m`` from
+``0.006 = 0.25 m``; ``v² = gh`` from ``½v² = gh``), or a letter lost or gained in a term of
+what the unknown comes to (``v = u(1 - e²)`` for u(1 - e)). Arithmetic: the unknown's
 terms as they were and a number worked wrongly (``v = 5`` from ``10 = 4 + v``; ``5eu`` for
 ``3(5eu)``). :func:`kind` finds the first three; the rest is :mod:`.slipnames`' arithmetic.
 """
@@ -25,7 +25,7 @@ FACTORS = (sympy.Integer(2), sympy.Rational(1, 2))
 def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     """``algebra`` where ``bad`` (false) is ``held`` (true, the relation just before it) with
     one term's sign lost, its unknown's coefficient lost (or ½ dropped or doubled), or a
-    letter lost from one term of what the unknown comes to; "" otherwise."""
+    letter lost or gained in one term of what the unknown comes to; "" otherwise."""
     tol = max(bad.tol, 1e-9)
     for variant in _variants(held, bad, set(U)):
         if proportional(bad.difference, variant, U, [pt], tol):
@@ -66,8 +66,8 @@ def _written(t: sympy.Expr, bad: Pair) -> bool:
 
 def _letter_lost(F: sympy.Expr, G: sympy.Expr, U: tuple) -> bool:
     """Whether ``F`` and ``G`` (each linear in the one unknown) give it as expressions in the
-    symbolic givens that differ in one term only, by a factor of letters (``u/k + λu/k`` for
-    ``u/k + λu``: the k lost from λ's term), not by a number (that is arithmetic)."""
+    symbolic givens that differ in one term only, by a factor of letters (``u - e²u`` for
+    ``u - eu``), not by a number (``u - 3eu``: that is arithmetic)."""
     x = [u for u in U if F.has(u)]
     if len(x) != 1:
         return False

@@ -1,19 +1,26 @@
-"""A chain's wrong line named by its one wrong term: a sign lost, or a squared term's ½.
+"""A line named by its one wrong term: a sign lost, a squared term's ½, a value's sign put in.
 
 A chain's lines are judged as numbers (:mod:`.chainlines`); a line that holds once one of its
 terms is put right names the slip: a sign (:func:`~.slipnames.sign_of_a_term`), or the factor
 2 of a square: the ½ of ½ m v² dropped is the kinetic energy's formula (``ke_formula``), a
-½ lost from V² once the masses cancelled is a slip in rearranging (``algebra``).
+½ lost from v² once the masses cancelled is a slip in rearranging (``algebra``). A line's
+own working that puts a value in with its sign lost is ``algebra`` too.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 import sympy
 
+from derive.checking.carried import Trace, sides
 from derive.checking.rearranging import FACTORS
 from derive.checking.slipnames import FLIPPED, sign_of_a_term
+
+if TYPE_CHECKING:
+    from derive.checking.inference import Read
+    from derive.checking.relations import Values
 
 #: What a report says of a chain's line that holds with a squared term's factor of 2 put right.
 HALVED = {
@@ -25,9 +32,9 @@ HALVED = {
 def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None]) -> tuple[str, str]:
     """A chain's line named by the one term that is wrong, with the words for it: a sign lost
     (:func:`~.slipnames.sign_of_a_term`), else a squared term's factor of 2 lost or doubled:
-    ``ke_formula`` where the square has a mass with it (``(15)(6) = (15/32.2) v1²``: the ½ of
-    ½ m v² dropped), ``algebra`` where it stands alone (``V² = μ g d`` from ½ V² = μ g d: the
-    masses cancelled and the ½ lost); ("", "") otherwise."""
+    ``ke_formula`` where the square has a mass with it (``0.3(9.8)(2) = 0.3 v1²``: the ½ of
+    ½ m v² dropped), ``algebra`` where it stands alone (``v1² = 9.8(2)`` from ½(0.3) v1² =
+    0.3(9.8)(2): the masses cancelled and the ½ lost); ("", "") otherwise."""
     flip = sign_of_a_term(exprs, holds)
     if flip:
         return flip, FLIPPED[flip]
@@ -44,3 +51,26 @@ def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None]) -> 
         return "", ""
     name = found.pop()
     return name, HALVED[name]
+
+
+#: What a report says of a line whose working puts a value in with its sign lost.
+SIGN_PUT_IN = (
+    ": a step of its working puts a value in with its sign lost (a negative velocity written as positive):"
+    " a slip in the algebra, not in the numbers."
+)
+
+
+def working_slip(trace: Trace, line: Read, world: list[Values], worked: str) -> tuple[str, str]:
+    """The words and name of a slip inside a line's working (:func:`~.carried.worked_wrongly`):
+    ``algebra`` where the step from letters to numbers holds with one unknown's value put in
+    with its sign lost (``3 v_B2 = 2 - 2 v_A2 = 2 - 2.08`` with v_A2 = -1.04),
+    else ``worked`` and ``arithmetic`` (an expression worked wrongly)."""
+    unknowns = set(trace.U)
+    for i in range(len(line.sides) - 1):
+        p = sides(trace, line, i, i + 1)
+        if trace.holds([p], world) or p.right.free_symbols & unknowns or not p.left.free_symbols & unknowns:
+            continue
+        for u in p.left.free_symbols & unknowns:
+            if trace.holds([p], [{**w, u: -w[u]} for w in world]):
+                return SIGN_PUT_IN, "algebra"
+    return worked, "arithmetic"
