@@ -134,3 +134,35 @@ def test_a_value_put_in_with_its_sign_lost_in_a_lines_working_is_algebra() -> No
     work = "v_A2 = -1.04\n3 v_B2 = 2 - 2 v_A2 = 2 + 2.08 = 4.8\n"
     found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
     assert found[2][:2] == ("wrong", "arithmetic")
+
+
+def test_kinetic_energy_lost_by_one_body_only_or_scaled_by_e_squared_is_ke_formula() -> None:
+    # AQA 2007 head-on: 0.3 kg at 3, 0.2 kg at 2 toward it, e = 0.8: after -0.6 and 3.4;
+    # KE 1.35 + 0.4 = 1.75 before, 0.054 + 1.156 = 1.21 after, 0.54 lost. A's loss alone,
+    # 0.5(0.3)(3² - 0.6²) = 1.296, is one body's energy for the two.
+    found = lines("aqa-m3-2007-spheres-approach-head-on", "KE lost = 0.5(0.3)(3^2 - 0.6^2) = 1.296\n")
+    assert found[1][:2] == ("wrong", "ke_formula")
+    # Byju's: 4 kg at 12, 8 kg at 4, e = 0.5: after 4 and 8; KE 288 + 64 = 352 before, 32 + 256
+    # = 288 after. e² x 352 = 88 scales two bodies' energy as a wall's.
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "KE before = 288 + 64 = 352\nKE after = 0.25 x 352 = 88\n")
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "ke_formula")
+
+
+def test_a_walls_impulse_with_the_rebound_speed_as_the_velocity_is_b_sign() -> None:
+    # Edexcel M2 wall: 2 kg at 4 m/s toward the wall, e = 0.4: rebound speed 0.4(4) = 1.6, the
+    # velocity -1.6; I = 2(-1.6 - 4) = -11.2. I = m(v - u) = 2(1.6 - 4) = -4.8 puts the speed in
+    # as the velocity: a velocity the wrong way (b_sign), and its size 4.8 is carried.
+    work = "speed after: |v| = 0.4 x 4 = 1.6\nI = m(v - u) = 2(1.6 - 4) = -4.8\nmagnitude of impulse = 4.8 N s\n"
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    work = (
+        "The ball rebounds with speed $v = eu = 0.4(4) = 1.6$ m/s.\n\nImpulse $I = m(v - u) = 2(1.6 - 4) = -4.8$ N s\n"
+    )
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[3][:2] == ("wrong", "b_sign")
+    # the velocity after written as +e u (the rule itself) stays restitution_reversed
+    found = lines("edexcel-m2-ball-rebounds-from-wall", "v_A2 = 0.4(4) = 1.6\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")

@@ -259,6 +259,8 @@ class Trace(Carrying):
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
+        if (wall := termslips.rebound_speed(self.ctx, bad, v)) is not None:  # I = m(v - u), v a speed
+            return (), v.equation, *wall
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
@@ -410,14 +412,12 @@ class Trace(Carrying):
                 for u in self.U
             )
             if near:
-                self.equations[j] = F
-                self.world = trial
+                self.equations[j], self.world = F, trial
                 return
 
     def _closest(self, F: sympy.Expr) -> int | None:
-        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one
-        unknown (``v' = 0.0784``) never stands for "they move off together", v_B2 = v_A2 (e = 0:
-        the student's one name is both velocities)."""
+        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one unknown
+        (``v' = 0.0784``) never for "they move off together" (e = 0: one name for both velocities)."""
         j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
         if j is None or len(F.free_symbols & set(self.U)) != 1 or not together(self.equations[j], self.U):
             return j

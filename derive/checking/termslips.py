@@ -4,7 +4,8 @@ A chain's lines are judged as numbers (:mod:`.chainlines`); a line that holds on
 terms is put right names the slip: a sign (:func:`~.slipnames.sign_of_a_term`), or the factor
 2 of a square: the ½ of ½ m v² dropped is the kinetic energy's formula (``ke_formula``), a
 ½ lost from v² once the masses cancelled is a slip in rearranging (``algebra``). A line's
-own working that puts a value in with its sign lost is ``algebra`` too.
+own working that puts a value in with its sign lost is ``algebra`` too; a wall's impulse line
+with the rebound speed put in as the velocity after is ``b_sign`` (a velocity the wrong way).
 """
 
 from __future__ import annotations
@@ -17,8 +18,11 @@ import sympy
 from derive.checking.carried import Trace, sides
 from derive.checking.rearranging import FACTORS
 from derive.checking.slipnames import FLIPPED, sign_of_a_term
+from derive.checking.worlds import Pair
 
 if TYPE_CHECKING:
+    from derive.checking.context import Context
+    from derive.checking.equation import Verdict
     from derive.checking.inference import Read
     from derive.checking.relations import Values
 
@@ -74,3 +78,15 @@ def working_slip(trace: Trace, line: Read, world: list[Values], worked: str) -> 
             if trace.holds([p], [{**w, u: -w[u]} for w in world]):
                 return SIGN_PUT_IN, "algebra"
     return worked, "arithmetic"
+
+
+def rebound_speed(ctx: Context, bad: Pair, v: Verdict) -> tuple[str, str] | None:
+    """The words and name (``b_sign``) of a wall's impulse or momentum line (its mass or impulse
+    written) that holds with the rebound speed put in as the velocity after (``I = m(v - u)`` with
+    v = e u > 0, toward the wall): the line is not the impact rule, so its slip is not the rule's
+    differences reversed but a velocity taken in the wrong direction; None otherwise."""
+    if not ctx.problem.fixed_B or bad.raw is None or [d.mistake for d in v.mistakes] != ["restitution_reversed"]:
+        return None
+    written = set().union(*(x.free_symbols for x in bad.raw))
+    impulse = {ctx.model.m_A} | {sym for name, (sym, _x) in ctx.derived().items() if name.startswith("J")}
+    return (FLIPPED["b_sign"], "b_sign") if written & impulse else None
