@@ -27,6 +27,14 @@ def test_restitution_with_e_on_the_separations_side_is_restitution_reversed() ->
     # AQA 2014 (symbolic): 2m at 2u hits m at rest, e = 2/3: (2/3)(v_B - v_A) = 2u, upside down
     found = lines("aqa-m3-2014-symbolic-2m-hits-m", "(2/3)(v_B2 - v_A2) = 2u\n")
     assert found[1][:2] == ("wrong", "restitution_reversed")
+    # Edexcel M2 wall: 4 m/s into the wall, e = 0.4: the rebound is -1.6; 4/0.4 = 10 divides by e
+    found = lines("edexcel-m2-ball-rebounds-from-wall", "v_A2 = 4/0.4 = 10\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, then 2 and 6: e = (6 - 2)/5 = 0.8;
+    # approach over separation, 5/(6 - 2) = 1.25, is the ratio upside down
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 6\ne = 5/(6 - 2) = 1.25\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "restitution_reversed")
 
 
 def test_a_term_moved_across_without_its_sign_changed_is_algebra() -> None:
@@ -166,3 +174,13 @@ def test_a_walls_impulse_with_the_rebound_speed_as_the_velocity_is_b_sign() -> N
     # the velocity after written as +e u (the rule itself) stays restitution_reversed
     found = lines("edexcel-m2-ball-rebounds-from-wall", "v_A2 = 0.4(4) = 1.6\n")
     assert found[1][:2] == ("wrong", "restitution_reversed")
+
+
+def test_a_value_solved_wrongly_that_happens_to_be_a_mistakes_is_algebra() -> None:
+    # Edexcel M2 2010: u = v_P + eu (right) gives v_P = u(1 - e); u(1 + e) loses the sign of eu
+    # moving it across. It is also what the impact rule reversed gives P, but this line does not
+    # state the impact rule, and the line before it held: algebra.
+    work = "3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 3eu\nu = v_A2 + eu\nv_A2 = u(1 + e)\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")

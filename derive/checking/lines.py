@@ -33,10 +33,7 @@ from derive.errors import InputError
 from derive.mathtext.notation import student
 
 TRUE = "substituting the correct values"
-SOLVING = {
-    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign, a factor or a letter lost).",
-    "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
-}
+SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from the one before
 #: A line whose rule holds but whose working does not come to what it claims.
 WORKING = (
     ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
@@ -259,8 +256,8 @@ class Trace(Carrying):
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
-        if (wall := termslips.rebound_speed(self.ctx, bad, v)) is not None:  # I = m(v - u), v a speed
-            return (), v.equation, *wall
+        if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
+            return (), v.equation, *named
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one

@@ -11,13 +11,13 @@ with the rebound speed put in as the velocity after is ``b_sign`` (a velocity th
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
 from derive.checking.carried import Trace, sides
 from derive.checking.rearranging import FACTORS
-from derive.checking.slipnames import FLIPPED, sign_of_a_term
+from derive.checking.slipnames import FLIPPED, Previous, sign_of_a_term, solving_slip
 from derive.checking.worlds import Pair
 
 if TYPE_CHECKING:
@@ -26,6 +26,18 @@ if TYPE_CHECKING:
     from derive.checking.inference import Read
     from derive.checking.relations import Values
 
+
+class Solving(Trace, Protocol):
+    """A :class:`~.carried.Trace` that keeps the relation just before the line, if it held."""
+
+    previous: Previous
+
+
+#: What a report says of a line worked wrongly from the relation just before it, by the slip's name.
+SOLVING = {
+    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign, a factor or a letter lost).",
+    "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
+}
 #: What a report says of a chain's line that holds with a squared term's factor of 2 put right.
 HALVED = {
     "ke_formula": ": the kinetic energy is worked without its half (T = ½ m v²).",
@@ -90,3 +102,21 @@ def rebound_speed(ctx: Context, bad: Pair, v: Verdict) -> tuple[str, str] | None
     written = set().union(*(x.free_symbols for x in bad.raw))
     impulse = {ctx.model.m_A} | {sym for name, (sym, _x) in ctx.derived().items() if name.startswith("J")}
     return (FLIPPED["b_sign"], "b_sign") if written & impulse else None
+
+
+def renamed(trace: Solving, line: Read, bad: Pair, v: Verdict) -> tuple[str, str] | None:
+    """The words and name of a slip a teacher names otherwise than the common mistake the
+    judge found: a wall's impulse line with the rebound speed in it (:func:`rebound_speed`), or
+    a value solved wrongly from the relation just before it (which held), whose value happens
+    to be a mistake's (``v_A2 = u(1 + e)`` from ``u = v_A2 + eu``: a sign lost, not the
+    impact rule reversed, which the line does not state); None otherwise."""
+    wall = rebound_speed(trace.ctx, bad, v)
+    if wall is not None or v.rule != "solves_as_mistake" or trace.previous is None:
+        return wall
+    numeric = {g.symbol for g in trace.ctx.problem.givens if g.value is not None and g.value.is_number}
+    if any(x.free_symbols & numeric for p in trace.previous[1] for x in p.raw or ()):
+        return None  # the line puts numbers in a formula (the masses swapped in it): not a rearrangement
+    world = trace.world if trace.world is not None else trace.truth
+    at = (trace.U, trace.pts[0])
+    name = solving_slip(line.sides, trace.pairs(line), trace.previous, at, lambda p: trace.holds([p], world))
+    return (SOLVING[name], name) if name else None
