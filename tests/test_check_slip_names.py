@@ -184,3 +184,17 @@ def test_a_value_solved_wrongly_that_happens_to_be_a_mistakes_is_algebra() -> No
     found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
     assert found[3][0] == "correct"
     assert found[4][:2] == ("wrong", "algebra")
+
+
+def test_a_chains_e_is_its_one_coefficient_and_its_ratio_upside_down_is_restitution_reversed() -> None:
+    # OCR M2 2006 chain: dropped from 2 m, v1 = sqrt(2(9.8)(2)) = 6.26; back up to 1.4 m, v2 =
+    # sqrt(2(9.8)(1.4)) = 5.24; e = 5.24/6.26 = 0.837. The student's "e" is the chain's e_floor:
+    # 6.26/5.24 = 1.19 is not a name of their own but e worked upside down.
+    work = "v1 = 6.26\nv2 = 5.24\ne = 6.26/5.24 = 1.19\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.837\n")
+    assert found[3][0] == "correct"
+    found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.873\n")
+    assert found[3][:2] == ("wrong", "arithmetic")

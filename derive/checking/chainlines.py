@@ -46,7 +46,7 @@ from derive.problem.units import FORCE
 def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
-    names = Open({s.name: s for s in values})
+    names = Open({**chainnames.lone_restitution(values), **{s.name: s for s in values}})  # e for e_floor
     read = _read(text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
@@ -100,8 +100,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip, why = ("", "") if item.slip else term_slip(exprs, at)
-            if flip and not item.message.endswith("(an arithmetic slip)."):  # a sign lost, a ½ dropped
+            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
+            if flip:  # a sign lost, a ½ dropped, e's ratio upside down
                 item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= numbers_written(sides[-1:], ctx.data)  # not a given

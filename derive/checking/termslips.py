@@ -33,6 +33,9 @@ class Solving(Trace, Protocol):
     previous: Previous
 
 
+#: What a report says of a coefficient of restitution worked as the ratio upside down.
+UPSIDE_DOWN = ": it is the ratio upside down: e = separation / approach (speed after over speed before)."
+
 #: What a report says of a line worked wrongly from the relation just before it, by the slip's name.
 SOLVING = {
     "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign, a factor or a letter lost).",
@@ -45,12 +48,20 @@ HALVED = {
 }
 
 
-def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None]) -> tuple[str, str]:
+def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None], said: str = "") -> tuple[str, str]:
     """A chain's line named by the one term that is wrong, with the words for it: a sign lost
     (:func:`~.slipnames.sign_of_a_term`), else a squared term's factor of 2 lost or doubled:
     ``ke_formula`` where the square has a mass with it (``0.3(9.8)(2) = 0.3 v1²``: the ½ of
     ½ m v² dropped), ``algebra`` where it stands alone (``v1² = 9.8(2)`` from ½(0.3) v1² =
-    0.3(9.8)(2): the masses cancelled and the ½ lost); ("", "") otherwise."""
+    0.3(9.8)(2): the masses cancelled and the ½ lost); ``restitution_reversed`` where a
+    coefficient of restitution is worked as the ratio upside down (``e = 6.26/5.24``: approach
+    over separation); ("", "") otherwise. ``said``: the verdict's words (a line they call an
+    arithmetic slip is one, but for e's ratio upside down)."""
+    e = exprs[0] if exprs and isinstance(exprs[0], sympy.Symbol) else None
+    if e is not None and (e.name == "e" or e.name.startswith("e_")) and holds([1 / e, *exprs[1:]]):
+        return "restitution_reversed", UPSIDE_DOWN
+    if said.endswith("(an arithmetic slip)."):
+        return "", ""
     flip = sign_of_a_term(exprs, holds)
     if flip:
         return flip, FLIPPED[flip]
