@@ -201,7 +201,7 @@ class Trace(Carrying):
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail, name = self._explain(line, bad, answer)
-        if detail == WORKING:  # what the student carries on: the rule's left side = its last
+        if detail in (WORKING, termslips.SIGN_PUT_IN):  # what the student carries on: its rule's left = last
             bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
@@ -257,7 +257,7 @@ class Trace(Carrying):
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
-            return (), v.equation, *named
+            return (), *named
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one

@@ -115,19 +115,21 @@ def rebound_speed(ctx: Context, bad: Pair, v: Verdict) -> tuple[str, str] | None
     return (FLIPPED["b_sign"], "b_sign") if written & impulse else None
 
 
-def renamed(trace: Solving, line: Read, bad: Pair, v: Verdict) -> tuple[str, str] | None:
-    """The words and name of a slip a teacher names otherwise than the common mistake the
-    judge found: a wall's impulse line with the rebound speed in it (:func:`rebound_speed`), or
-    a value solved wrongly from the relation just before it (which held), whose value happens
-    to be a mistake's (``v_A2 = u(1 + e)`` from ``u = v_A2 + eu``: a sign lost, not the
-    impact rule reversed, which the line does not state); None otherwise."""
+def renamed(trace: Solving, line: Read, bad: Pair, v: Verdict) -> tuple[int | None, str, str] | None:
+    """The equation it takes the place of, the words and the name of a slip a teacher names
+    otherwise than the common mistake the judge found: a wall's impulse line with the rebound
+    speed in it (:func:`rebound_speed`), or a value solved wrongly from the relation just
+    before it (which held), whose value happens to be a mistake's (``v_A2 = u(1 + e)`` from ``u = v_A2 + eu``: a sign lost, not the impact rule
+    reversed, which the line does not state); None otherwise."""
     wall = rebound_speed(trace.ctx, bad, v)
-    if wall is not None or v.rule != "solves_as_mistake" or trace.previous is None:
-        return wall
+    if wall is not None:
+        return (v.equation, *wall)
+    if v.rule != "solves_as_mistake" or trace.previous is None:
+        return None
+    world = trace.world if trace.world is not None else trace.truth
     numeric = {g.symbol for g in trace.ctx.problem.givens if g.value is not None and g.value.is_number}
     if any(x.free_symbols & numeric for p in trace.previous[1] for x in p.raw or ()):
         return None  # the line puts numbers in a formula (the masses swapped in it): not a rearrangement
-    world = trace.world if trace.world is not None else trace.truth
     at = (trace.U, trace.pts[0])
     name = solving_slip(line.sides, trace.pairs(line), trace.previous, at, lambda p: trace.holds([p], world))
-    return (SOLVING[name], name) if name else None
+    return (v.equation, SOLVING[name], name) if name else None
