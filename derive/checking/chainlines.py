@@ -23,7 +23,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
-from derive.checking.slipnames import COPIED, FLIPPED, copied_into_working, sign_of_a_term
+from derive.checking.slipnames import COPIED, copied_into_working
 from derive.checking.stageslips import (
     StageMistakes,
     named_arithmetic,
@@ -35,6 +35,7 @@ from derive.checking.stageslips import (
     stage_given,
     stage_mistakes,
 )
+from derive.checking.termslips import term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -44,7 +45,7 @@ from derive.problem.expr import ParseError
 def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
-    names = Open({s.name: s for s in values})
+    names = Open({**chainnames.lone_restitution(values), **{s.name: s for s in values}})  # e for e_floor
     read = _read(text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
@@ -90,16 +91,15 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
         if item.status == "wrong" and not item.again and not item.slip:
             item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
-            item = rule_named(ctx, item, (sides, exprs), reread, partial(_holds, ctx, sides, subs=[true_defs, values]))
-            if not item.slip and copied_into_working(
-                ctx, sides, exprs, partial(_holds, ctx, sides, subs=[true_defs, values])
-            ):
+            at = partial(_holds, ctx, sides, subs=[true_defs, values])
+            item = rule_named(ctx, item, (sides, exprs), reread, at)
+            if not item.slip and copied_into_working(ctx, sides, exprs, at):
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and _solved_wrongly(exprs, previous, sides):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip = "" if item.slip else sign_of_a_term(exprs, partial(_holds, ctx, sides, subs=[true_defs, values]))
-            if flip and not item.message.endswith("(an arithmetic slip)."):  # a sign lost
-                item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{FLIPPED[flip]}")
+            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
+            if flip:  # a sign lost, a ½ dropped, e's ratio upside down
+                item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
         if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
             wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
         written.append(exprs)

@@ -387,3 +387,14 @@ def own_solved(
         own[p] = x
         if p in alias:
             own[alias[p]] = x
+
+
+def lone_restitution(values: dict) -> dict[str, sympy.Symbol]:
+    """``e`` for the chain's one coefficient of restitution where the chain names it otherwise
+    (``e_floor``, ``e_wall``): a student writes e for it, and ``e = 6.26/5.24`` is then judged
+    as that coefficient (not a name of the student's own); {} where the chain has an ``e`` or
+    more than one coefficient."""
+    names = [k for k in values if re.fullmatch(r"e_[A-Za-z]\w*", str(k))]
+    if any(str(k) == "e" for k in values) or len(names) != 1:
+        return {}
+    return {"e": names[0]}

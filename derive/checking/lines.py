@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, misread, mistakes, slipnames, slipworld, words
+from derive.checking import carried, cofunctions, labelled, misread, mistakes, slipnames, slipworld, termslips, words
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -33,10 +33,7 @@ from derive.errors import InputError
 from derive.mathtext.notation import student
 
 TRUE = "substituting the correct values"
-SOLVING = {
-    "algebra": ": it does not follow from the line before (a slip in rearranging it: a sign lost).",
-    "arithmetic": ": it does not follow from the line before (an arithmetic slip: a number worked wrongly).",
-}
+SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from the one before
 #: A line whose rule holds but whose working does not come to what it claims.
 WORKING = (
     ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
@@ -204,7 +201,7 @@ class Trace(Carrying):
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail, name = self._explain(line, bad, answer)
-        if detail == WORKING:  # what the student carries on: the rule's left side = its last
+        if detail in (WORKING, termslips.SIGN_PUT_IN):  # what the student carries on: its rule's left = last
             bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
@@ -259,6 +256,8 @@ class Trace(Carrying):
             return (), None, ": " + self._arithmetic(bad), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
+        if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
+            return (), *named
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
@@ -288,7 +287,7 @@ class Trace(Carrying):
                 line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
             )
             if not name and carried.worked_wrongly(self, line, world):
-                return diags, None, WORKING, "arithmetic"
+                return diags, None, *termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
@@ -394,9 +393,8 @@ class Trace(Carrying):
             self.slips.append(line.number)
 
     def _closest(self, F: sympy.Expr) -> int | None:
-        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one
-        unknown (``v' = 0.0784``) never stands for "they move off together", v_B2 = v_A2 (e = 0:
-        the student's one name is both velocities)."""
+        """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one unknown
+        (``v' = 0.0784``) never for "they move off together" (e = 0: one name for both velocities)."""
         j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
         if j is None or len(F.free_symbols & set(self.U)) != 1 or not together(self.equations[j], self.U):
             return j

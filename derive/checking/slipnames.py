@@ -25,7 +25,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import mistakes
+from derive.checking import energyforms, mistakes, rearranging
 from derive.checking.context import DEG, Context
 from derive.checking.figures import figures
 from derive.checking.mistakes import Mistake
@@ -183,7 +183,7 @@ def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
         forms.append(
             {"T_lost": half * m * sum(((a - c) ** 2 for a, c in zip(comps(b, "1"), comps(b, "2"), strict=True)), zero)}
         )
-    return forms
+    return forms + energyforms.more_energies(ctx)  # one body's energy for both; e times the energy
 
 
 def _holds_with(ctx: Context, bad: Pair, subs: dict[sympy.Symbol, sympy.Expr], holds: Holds) -> bool:
@@ -205,7 +205,7 @@ def solving_slip(
     unknowns = set(U)
     line_u = set().union(*(p.difference.free_symbols & unknowns for p in pairs))
     prev_u = set().union(*(p.difference.free_symbols & unknowns for p in prev_pairs))
-    if len(line_u) != 1 or line_u != prev_u:
+    if not line_u or line_u != prev_u:  # the same unknowns: 90 = 4 v_A + 8 v_B after 4(12) + 8(4) = …
         return ""
     plain = [p for p in pairs if not p.difference.free_symbols & unknowns]
     failing = [p for p in pairs if p.difference.free_symbols & unknowns and not holds(p)]
@@ -214,11 +214,13 @@ def solving_slip(
     # algebra: the rearranged expression shown is not the relation's, its own arithmetic right
     shown = [s for s in line_sides[1:] if not NUMBER_SIDE.match(student(s.strip())) and not _has_letters(s)]
     numbers = set(re.findall(r"\d+\.?\d*", prev_text))
-    if plain and any(set(re.findall(r"\d+\.?\d*", s)) <= numbers | {"1", "2"} for s in shown):
+    if len(line_u) == 1 and plain and any(set(re.findall(r"\d+\.?\d*", s)) <= numbers | {"1", "2"} for s in shown):
         return "algebra"
     # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
+    if len(line_u) == 1 and held and rearranging.kind(failing[0], held[-1], U, pt):  # a sign, a factor, a letter
+        return "algebra"
     if held and _same_but_number(failing[0].difference, held[-1].difference, U, pt):
         return "arithmetic"
     return ""

@@ -40,6 +40,7 @@ KINDS: tuple[Mistake, ...] = (
 #: Further ways a kind shows in the equations a student writes (its equations, numbers in).
 FORMS: dict[str, Callable[[Any, Variant], list[dict[int, sympy.Expr]]]] = {
     "masses_swapped": masses.one_side,
+    "restitution_reversed": restitution.upside_down,
     "weight_as_mass": masses.one_body,
     "energy_conserved": restitution.energy_for_momentum,
 }

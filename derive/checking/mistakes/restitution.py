@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy
 
-from derive.checking.mistakes.equations import Model, point
+from derive.checking.mistakes.equations import APPROACH_A, APPROACH_B, Model, point
 from derive.checking.mistakes.records import Variant, mistake
 
 
@@ -20,6 +20,19 @@ from derive.checking.mistakes.records import Variant, mistake
 def restitution_reversed(model: Model) -> Variant | None:
     """Separation written v_A2n − v_B2n."""
     return Variant(restitution="reversed")
+
+
+def upside_down(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """The impact rule with e on the separation's side, e (v_B2n − v_A2n) = v_A1n − v_B1n
+    (the ratio turned upside down: e = approach / separation), its differences in either
+    order; numbers in. A teacher names it as the rule's differences the wrong way round."""
+    base = model.base()
+    eqs = model.equations(base)
+    if 4 not in eqs:
+        return []
+    nm, e = model.nm, model.e
+    approach = APPROACH_A - APPROACH_B
+    return [model.numbered(base, {**eqs, 4: e * sep - approach}) for sep in (nm.B2n - nm.A2n, nm.A2n - nm.B2n)]
 
 
 @mistake(

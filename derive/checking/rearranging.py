@@ -1,0 +1,92 @@
+"""Algebra or arithmetic: how a line that rearranges the relation before it went wrong.
+
+A teacher names a slip in working one relation from the one before it by what was done
+wrongly. Algebra: a term moved across without its sign changed (``10 + 4 = v`` from
+``10 = 4 + v``), the unknown's coefficient lost or doubled (``0.006 = m`` from
+``0.006 = 0.25 m``; ``v² = gh`` from ``½v² = gh``), or a letter lost or gained in a term of
+what the unknown comes to (``v = u(1 - e²)`` for u(1 - e)). Arithmetic: the unknown's
+terms as they were and a number worked wrongly (``v = 5`` from ``10 = 4 + v``; ``5eu`` for
+``3(5eu)``). :func:`kind` finds the first three; the rest is :mod:`.slipnames`' arithmetic.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.relations import proportional
+from derive.checking.worlds import Pair
+
+#: The factors an unknown's term is taken with wrongly: its ½ dropped, or doubled.
+FACTORS = (sympy.Integer(2), sympy.Rational(1, 2))
+
+
+def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
+    """``algebra`` where ``bad`` (false) is ``held`` (true, the relation just before it) with
+    one term's sign lost, its unknown's coefficient lost (or ½ dropped or doubled), or a
+    letter lost or gained in one term of what the unknown comes to; "" otherwise."""
+    tol = max(bad.tol, 1e-9)
+    for variant in _variants(held, bad, set(U)):
+        if proportional(bad.difference, variant, U, [pt], tol):
+            return "algebra"
+    if _letter_lost(bad.difference, held.difference, U):
+        return "algebra"
+    return ""
+
+
+def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
+    """``held`` (left − right) with one term changed as a slip in rearranging changes it: its
+    sign (a term written on ``bad``: ``2v = 7.1`` from ``7 = 0.1 + 2v`` shows no 0.1 moved, and
+    a teacher marks it as the sum worked wrongly), its numeric coefficient dropped or the term halved or doubled (a term
+    in the unknowns)."""
+    sides = (held.left, held.right)
+    out = []
+    for i, side in enumerate(sides):
+        sign = 1 if i == 0 else -1
+        for t in sympy.Add.make_args(sympy.expand(side)):
+            changed = [-t] if _written(t, bad) else []
+            if t.free_symbols & unknowns:
+                c, _rest = t.as_coeff_Mul()
+                changed += [t / c] if c not in (0, 1, -1) else []
+                changed += [t * k for k in FACTORS]
+            out += [held.difference + sign * (x - t) for x in changed]
+    return out
+
+
+def _written(t: sympy.Expr, bad: Pair) -> bool:
+    """Whether the term ``t`` (or its negative) is on ``bad``: a term with letters among its
+    sides' terms, a number among the numbers of its text."""
+    if t.free_symbols:
+        terms = set().union(*(sympy.Add.make_args(sympy.expand(x)) for x in (bad.left, bad.right)))
+        return t in terms or -t in terms
+    written = {sympy.Rational(n) for n in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", bad.text)}
+    return sympy.nsimplify(abs(t), rational=True) in written
+
+
+def _letter_lost(F: sympy.Expr, G: sympy.Expr, U: tuple) -> bool:
+    """Whether ``F`` and ``G`` (each linear in the one unknown) give it as expressions in the
+    symbolic givens that differ in one term only, by a factor of letters (``u - e²u`` for
+    ``u - eu``), not by a number (``u - 3eu``: that is arithmetic)."""
+    x = [u for u in U if F.has(u)]
+    if len(x) != 1:
+        return False
+    values = [_root(e, x[0]) for e in (F, G)]
+    if any(v is None or not v.free_symbols for v in values):
+        return False
+    terms = [set(sympy.Add.make_args(sympy.expand(v))) for v in values]
+    only = [list(terms[0] - terms[1]), list(terms[1] - terms[0])]
+    if len(only[0]) != 1 or len(only[1]) != 1:
+        return False
+    ratio = sympy.simplify(only[0][0] / only[1][0])
+    c, rest = ratio.as_coeff_Mul()
+    return abs(c) == 1 and bool(rest.free_symbols) and rest.is_Mul | rest.is_Pow | rest.is_Symbol
+
+
+def _root(F: sympy.Expr, x: sympy.Symbol) -> sympy.Expr | None:
+    """The value of ``x`` that ``F = 0`` gives, where ``F`` is linear in it."""
+    F = sympy.expand(sympy.numer(sympy.together(F)))
+    a, b = F.coeff(x, 1), F.coeff(x, 0)
+    if a == 0 or F.has(x**2) or (a.has(x) or b.has(x)):
+        return None
+    return -b / a

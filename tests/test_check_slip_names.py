@@ -1,0 +1,200 @@
+"""Slips named as a teacher names them, in the forms students write them (issue #31): the
+impact rule upside down, algebra (a sign or a factor lost in rearranging) against arithmetic
+(a number worked wrongly), the kinetic energy's wrong formulas. Every number is worked by hand
+from the problem files' givens (in the comments), never from derive's output."""
+
+from __future__ import annotations
+
+import derive
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
+    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+
+
+def test_restitution_with_e_on_the_separations_side_is_restitution_reversed() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: approach 12 - 4 = 8, separation 4.
+    # Upside down: 0.5(v_B2 - v_A2) = 8, so v_B2 - v_A2 = 16 (carried); also as a ratio.
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n0.5(v_B2 - v_A2) = 12 - 4\nv_B2 - v_A2 = 16\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "restitution_reversed")
+    assert found[3][0] == "carried"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "e = (12 - 4)/(v_B2 - v_A2)\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+    # AQA 2014 (symbolic): 2m at 2u hits m at rest, e = 2/3: (2/3)(v_B - v_A) = 2u, upside down
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", "(2/3)(v_B2 - v_A2) = 2u\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+    # Edexcel M2 wall: 4 m/s into the wall, e = 0.4: the rebound is -1.6; 4/0.4 = 10 divides by e
+    found = lines("edexcel-m2-ball-rebounds-from-wall", "v_A2 = 4/0.4 = 10\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, then 2 and 6: e = (6 - 2)/5 = 0.8;
+    # approach over separation, 5/(6 - 2) = 1.25, is the ratio upside down
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 6\ne = 5/(6 - 2) = 1.25\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+
+
+def test_a_term_moved_across_without_its_sign_changed_is_algebra() -> None:
+    # OCR M2 2006: 2 kg at 5 hits 1 kg at rest, A after at 2: 10 = 4 + v_B2, so v_B2 = 6;
+    # 10 + 4 = v_B2 moves the 4 across with its sign kept (algebra, not arithmetic), and
+    # v_B2 = 14 is carried.
+    work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\n10 + 4 = v_B2\nv_B2 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+    # Beer & Johnston 13.13 (Mg): 10 = 20 v + 10.5, the 10.5 kept positive on the left
+    work = "20(0.5) + 0 = 20 v_A2 + 35(0.3)\n10 = 20 v_A2 + 10.5\n10 + 10.5 = 20 v_A2\n"
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert found[3][:2] == ("wrong", "algebra")
+
+
+def test_the_unknowns_coefficient_lost_in_rearranging_is_algebra() -> None:
+    # Young & Freedman 8.96: 0.0400 kg at 0.200 m/s, 0.050 m/s after, red puck at rest, e = 1:
+    # 0.008 = 0.002 + m_B v_B2; v_B2 = 0.250 (e = 1: 0.200 = v_B2 - 0.050), so m_B = 0.024.
+    # 0.008 = 0.002 + 0.250 m_B is right; 0.006 = m_B drops m_B's coefficient 0.250 (algebra)
+    work = "0.008 = 0.002 + 0.250 m_B\n0.006 = m_B\n"
+    found = lines("young-freedman-8-96-pucks-find-mass", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+
+
+def test_a_letter_lost_in_taking_a_factor_out_is_algebra_a_number_is_arithmetic() -> None:
+    # Edexcel M2 2010: P (2m) at 2u, Q (m) at -u: 3u = 2 v_P + v_Q and v_Q - v_P = 3eu, so
+    # 3u = 3 v_P + 3eu, u = v_P + eu and v_P = u - eu = u(1 - e). u(1 - e^2) has a letter too
+    # many in one term (algebra); u(1 - 3e) has its letters right and a number wrong (arithmetic).
+    base = "3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 3eu\n3u = 3 v_A2 + 3eu\nu = v_A2 + eu\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", base + "v_A2 = u(1 - e^2)\n")
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", base + "v_A2 = u(1 - 3e)\n")
+    assert found[5][:2] == ("wrong", "arithmetic")
+
+
+def test_a_sum_worked_wrongly_with_no_term_shown_moved_is_arithmetic() -> None:
+    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 shows no 4 moved across: a teacher
+    # marks the number (10 - 4 = 6, not 14), arithmetic.
+    work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\nv_B2 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+
+
+def test_kinetic_energy_after_as_e_times_the_energy_before_is_ke_formula() -> None:
+    # Edexcel M2 wall: 2 kg at 4 m/s, e = 0.4: rebound 1.6 m/s, KE before ½(2)(16) = 16 J,
+    # after ½(2)(1.6²) = 2.56 J; e x 16 = 6.4 J scales the energy by e, not e² (ke_formula),
+    # and the loss 16 - 6.4 = 9.6 J is carried.
+    work = "KE before = 0.5(2)(4)^2 = 16\nKE after = 0.4 x 16 = 6.4\nKE lost = 16 - 6.4 = 9.6\n"
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "ke_formula")
+    assert found[3][0] == "carried"
+
+
+def test_one_bodys_kinetic_energy_for_both_is_ke_formula() -> None:
+    # MSU: a 0.020 kg bullet at 300 m/s lodges in a 4.0 kg block: V = 6/4.02 = 1.4925 m/s,
+    # KE after ½(4.02)(1.4925²) = 4.478 J; the block's mass alone, ½(4.0)(1.4925²) = 4.455 J
+    work = "T_2 = 0.5(4.0)(1.4925)^2 = 4.455\n"
+    found = lines("msu-lectureonline-bullet-lodges-in-block", work)
+    assert found[1][:2] == ("wrong", "ke_formula")
+    # AQA 2007 head-on (0.3 kg at 3, 0.2 kg at 2 toward it): KE before 1.35 + 0.4 = 1.75 J;
+    # A's alone, 0.5(0.3)(3)^2 = 1.35, is one body's energy for the two
+    found = lines("aqa-m3-2007-spheres-approach-head-on", "KE before = 0.5(0.3)(3)^2 = 1.35\n")
+    assert found[1][:2] == ("wrong", "ke_formula")
+
+
+def test_a_chains_energy_without_its_half_is_ke_formula_and_a_half_lost_cancelling_is_algebra() -> None:
+    # OCR M2 2006 chain: 0.3 kg dropped from 2 m: ½(0.3) v1² = 0.3(9.8)(2), v1² = 39.2,
+    # v1 = 6.26 m/s. 0.3 v1² (the ½ of the kinetic energy dropped) gives v1² = 19.6, 4.43.
+    work = "0.3(9.8)(2) = 0.3 v1^2\nv1 = sqrt(19.6) = 4.43\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][:2] == ("wrong", "ke_formula")
+    assert found[2][0] == "carried"
+    # the masses cancelled and the ½ lost with them: v1² = g h, no mass with the square
+    work = "0.3(9.8)(2) = 0.5(0.3) v1^2\nv1^2 = 9.8(2) = 19.6\nv1 = 4.43\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    assert found[3][0] == "carried"
+
+
+def test_a_number_worked_wrongly_with_two_unknowns_kept_is_arithmetic() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4: 4(12) + 8(4) = 48 + 32 = 80, not 90; the unknowns'
+    # terms 4 v_A2 + 8 v_B2 as they were: arithmetic, on one line ("i.e.") or two
+    for work in (
+        "4(12) + 8(4) = 4 v_A2 + 8 v_B2, i.e. 90 = 4 v_A2 + 8 v_B2\n",
+        "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n90 = 4 v_A2 + 8 v_B2\n",
+    ):
+        found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+        assert max(found.items())[1][:2] == ("wrong", "arithmetic"), work
+
+
+def test_a_value_put_in_with_its_sign_lost_in_a_lines_working_is_algebra() -> None:
+    # OCR M2 2014: 2m at 4 meets 3m at 2 the other way, e = 0.4: 2 = 2a + 3b, b - a = 2.4, so
+    # a = -1.04, b = 1.36: 3b = 2 - 2a = 2 + 2.08 = 4.08. 2 - 2.08 puts a in with its sign
+    # lost (algebra); 2 + 2.08 = 4.8 is a sum worked wrongly (arithmetic).
+    work = "v_A2 = -1.04\n3 v_B2 = 2 - 2 v_A2 = 2 - 2.08 = -0.08\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    work = "v_A2 = -1.04\n3 v_B2 = 2 - 2 v_A2 = 2 + 2.08 = 4.8\n"
+    found = lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+
+
+def test_kinetic_energy_lost_by_one_body_only_or_scaled_by_e_squared_is_ke_formula() -> None:
+    # AQA 2007 head-on: 0.3 kg at 3, 0.2 kg at 2 toward it, e = 0.8: after -0.6 and 3.4;
+    # KE 1.35 + 0.4 = 1.75 before, 0.054 + 1.156 = 1.21 after, 0.54 lost. A's loss alone,
+    # 0.5(0.3)(3² - 0.6²) = 1.296, is one body's energy for the two.
+    found = lines("aqa-m3-2007-spheres-approach-head-on", "KE lost = 0.5(0.3)(3^2 - 0.6^2) = 1.296\n")
+    assert found[1][:2] == ("wrong", "ke_formula")
+    # Byju's: 4 kg at 12, 8 kg at 4, e = 0.5: after 4 and 8; KE 288 + 64 = 352 before, 32 + 256
+    # = 288 after. e² x 352 = 88 scales two bodies' energy as a wall's.
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "KE before = 288 + 64 = 352\nKE after = 0.25 x 352 = 88\n")
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "ke_formula")
+
+
+def test_a_walls_impulse_with_the_rebound_speed_as_the_velocity_is_b_sign() -> None:
+    # Edexcel M2 wall: 2 kg at 4 m/s toward the wall, e = 0.4: rebound speed 0.4(4) = 1.6, the
+    # velocity -1.6; I = 2(-1.6 - 4) = -11.2. I = m(v - u) = 2(1.6 - 4) = -4.8 puts the speed in
+    # as the velocity: a velocity the wrong way (b_sign), and its size 4.8 is carried.
+    work = "speed after: |v| = 0.4 x 4 = 1.6\nI = m(v - u) = 2(1.6 - 4) = -4.8\nmagnitude of impulse = 4.8 N s\n"
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    work = (
+        "The ball rebounds with speed $v = eu = 0.4(4) = 1.6$ m/s.\n\nImpulse $I = m(v - u) = 2(1.6 - 4) = -4.8$ N s\n"
+    )
+    found = lines("edexcel-m2-ball-rebounds-from-wall", work)
+    assert found[3][:2] == ("wrong", "b_sign")
+    # the velocity after written as +e u (the rule itself) stays restitution_reversed
+    found = lines("edexcel-m2-ball-rebounds-from-wall", "v_A2 = 0.4(4) = 1.6\n")
+    assert found[1][:2] == ("wrong", "restitution_reversed")
+
+
+def test_a_value_solved_wrongly_that_happens_to_be_a_mistakes_is_algebra() -> None:
+    # Edexcel M2 2010: u = v_P + eu (right) gives v_P = u(1 - e); u(1 + e) loses the sign of eu
+    # moving it across. It is also what the impact rule reversed gives P, but this line does not
+    # state the impact rule, and the line before it held: algebra.
+    work = "3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 3eu\nu = v_A2 + eu\nv_A2 = u(1 + e)\n"
+    found = lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+
+
+def test_a_chains_e_is_its_one_coefficient_and_its_ratio_upside_down_is_restitution_reversed() -> None:
+    # OCR M2 2006 chain: dropped from 2 m, v1 = sqrt(2(9.8)(2)) = 6.26; back up to 1.4 m, v2 =
+    # sqrt(2(9.8)(1.4)) = 5.24; e = 5.24/6.26 = 0.837. The student's "e" is the chain's e_floor:
+    # 6.26/5.24 = 1.19 is not a name of their own but e worked upside down.
+    work = "v1 = 6.26\nv2 = 5.24\ne = 6.26/5.24 = 1.19\n"
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.837\n")
+    assert found[3][0] == "correct"
+    found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.873\n")
+    assert found[3][:2] == ("wrong", "arithmetic")
