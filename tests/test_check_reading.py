@@ -843,6 +843,20 @@ def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
     assert time.process_time() - start < 5
 
 
+def test_a_long_relation_in_inline_maths_and_a_run_of_dollars_are_read_in_bounded_time() -> None:
+    """Two patterns that backtracked as a power of a line's length (hostile input): prose after a
+    whole relation in inline maths (``$a…a=a…a=$ into (1):``, 10,000 letters: over 60 s before) and
+    a line going on from the one above behind a run of ``$`` (40 of them: minutes before)."""
+    import time
+
+    from derive.checking.carrying import _GOES_ON
+
+    start = time.process_time()
+    assert len(sides("$" + "a" * 4990 + "=" + "a" * 4990 + "=$ into (1):")) <= 1
+    assert _GOES_ON.match("$" * 40 + "x") is None and _GOES_ON.match("$$= 3") is not None
+    assert time.process_time() - start < 5
+
+
 # --- notation breadth (tests/test_check_notation_breadth.py measures it on four problems) ----------
 # OCR M2 2012, a particle of 0.8 kg at 4 m/s into a wall, e = 0.3: v_A2 = -0.3(4) = -1.2 (rebound
 # speed 1.2), KE before ½(0.8)(16) = 6.4 J, after ½(0.8)(1.44) = 0.576 J, lost 5.824 J.

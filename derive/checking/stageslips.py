@@ -182,6 +182,21 @@ FACTOR_LOST = ": the rule is written with a factor of 2 lost or put in (an algeb
 _MOTION = {"m/s", "ft/s", "km/h", "mi/h", "m", "ft", "cm", "km", "in"}
 
 
+def _with_a_mass(side: sympy.Expr) -> bool:
+    """Whether a squared speed in ``side`` has a coefficient that is neither a small number nor
+    made of g (``0.3 v1²``: a mass with it, an energy whose ½ is :mod:`.termslips`' ke_formula;
+    ``V²/9.8`` and ``v²/2`` are rules of motion)."""
+    for t in sympy.Add.make_args(side):
+        squares = [p for p in t.atoms(sympy.Pow) if p.exp == 2 and p.base.free_symbols]
+        if len(squares) != 1 or not (c := abs(t / squares[0])).is_number:
+            continue
+        c = float(c)
+        near = (1, 2, 0.5, 4, 0.25, *(g * k for g in (9.8, 9.81, 32.2, 32.174) for k in (1, 2, 0.5)))
+        if not any(abs(c - x) < 1e-6 * x or abs(c * x - 1) < 1e-6 for x in near):
+            return True
+    return False
+
+
 def factor_lost(ctx: Context, exprs: list[sympy.Expr], holds: Callable[[list], bool | None]) -> bool:
     """Whether a line of a rule of motion in the chain's speeds and heights holds once its sides
     in those names are halved or doubled (``v2^2 = 9.8 × 1.4 = 13.72`` for v² = 2gh): a factor
@@ -191,7 +206,7 @@ def factor_lost(ctx: Context, exprs: list[sympy.Expr], holds: Callable[[list], b
     found = [{s for s in x.free_symbols if s.name in results} for x in exprs]
     units = {str(getattr(results[s.name], "unit", "") or "") for named in found for s in named}
     named = [i for i, n in enumerate(found) if n]
-    if not named or len(named) == len(exprs) or not units <= _MOTION:
+    if not named or len(named) == len(exprs) or not units <= _MOTION or any(_with_a_mass(exprs[i]) for i in named):
         return False
     for f in (sympy.Rational(1, 2), sympy.Integer(2)):  # every side in the names, or one alone (h = V²/g)
         for scaled in (named, *([i] for i in named if len(named) > 1)):

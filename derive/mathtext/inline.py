@@ -25,7 +25,11 @@ _PROSE_AFTER = re.compile(r"^[\s.,;:]*([A-Za-z]{2,})\b")
 def _whole_relation(plain: str) -> bool:
     """Whether a piece of mathematics is a relation with both sides in it (``x = y - 5eu``; not
     ``= 6.5v``, whose name is in the words before it, nor rows joined by ";")."""
-    return ";" not in plain and bool(re.match(r"^[^=≈]*[A-Za-z0-9][^=≈]*[=≈].*[A-Za-z0-9)][^=≈]*$", plain.strip()))
+    s = plain.strip()
+    signs = [k for k, c in enumerate(s) if c in "=≈"]
+    if ";" in plain or not signs:
+        return False  # plain code, not one pattern: a long line must not backtrack (hostile input)
+    return bool(re.search(r"[A-Za-z0-9]", s[: signs[0]])) and bool(re.search(r"[A-Za-z0-9)]", s[signs[-1] + 1 :]))
 
 
 def _said_after(text: str) -> bool:
