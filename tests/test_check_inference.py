@@ -79,6 +79,25 @@ def test_derives_names_in_derives_frame_with_one_sign_slip_stay_in_derives_frame
     assert seen["5"] == "wrong" and seen["4"] == "correct" and seen["1"] == "correct", seen
 
 
+@pytest.mark.parametrize(
+    ("work", "wrong"),
+    [
+        ("v_A2 = -4 m/s\nv_B2 = -8 m/s", {"1", "2"}),  # no words, no given: the answers alone never turn the frame
+        ("Momentum: 4(12) + 8(4) = 80\n80 = 4(-4) + 8(-8)\nv_A2 = -4 m/s\nv_B2 = -8 m/s", {"2", "3", "4"}),
+        ("v_A1 = 12, v_B1 = 4\nv_A2 = -4\nv_B2 = -8", {"2", "3"}),  # A's +12 fixes derive's frame
+        ("v_A1 = -12, v_B1 = 4\nv_A2 = -4\nv_B2 = -8", {"1", "2", "3"}),  # the givens disagree: derive's frame
+    ],
+)
+def test_the_answers_alone_never_choose_a_reversed_frame(work: str, wrong: set) -> None:
+    # true: v_A2 = 4, v_B2 = 8 along the way both move (12a = 48 above)
+    seen = by_line(CATCH, work)
+    assert {k for k, v in seen.items() if v == "wrong"} == wrong, seen
+
+
+def test_a_given_written_reversed_turns_derives_names() -> None:
+    all_correct(CATCH, "v_A1 = -12, v_B1 = -4\nv_A2 = -4\nv_B2 = -8")
+
+
 # ------------------------------------------------- names never seen, read from the relations
 
 

@@ -52,6 +52,29 @@ def flipped(ctx: Context, raw: list, sign: int) -> list:
     return out
 
 
+def reversal_said(ctx: Context, raw: list, pt: dict, truth: dict) -> bool:
+    """Whether the values written put derive's own names in the reversed frame: a line writes a
+    velocity BEFORE (a given) with the reversed sign (``v_A1 = -12`` where A moves at 12 along
+    derive's n), and none writes one with derive's sign. The answers alone never choose the frame
+    (``v_A2 = -4``, ``v_B2 = -8`` is two sign slips, not a frame)."""
+    before = [c for c in (ctx.model.nm.A1n, ctx.model.nm.B1n) if isinstance(c, sympy.Symbol)]
+    votes = set()
+    for r in raw:
+        for c in before:
+            if r.exprs is None or c not in r.exprs:
+                continue
+            true = number_of(ctx.in_unknowns(c).xreplace(pt).xreplace(truth))
+            for e in r.exprs:
+                value = number_of(e) if not e.free_symbols else None
+                if value is None or true is None or abs(true) < 1e-9:
+                    continue
+                if abs(value - true) <= 1e-3 * abs(true):
+                    votes.add(1)
+                elif abs(value + true) <= 1e-3 * abs(true):
+                    votes.add(-1)
+    return votes == {-1}
+
+
 Pair = tuple[float, tuple[sympy.Expr, sympy.Expr], bool]
 
 

@@ -17,7 +17,15 @@ import sympy
 from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import DEG, Context
-from derive.checking.frames import axes_said, axis_names, declared_axes, flipped, score, uses_n_components
+from derive.checking.frames import (
+    axes_said,
+    axis_names,
+    declared_axes,
+    flipped,
+    reversal_said,
+    score,
+    uses_n_components,
+)
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
@@ -110,7 +118,8 @@ def read_lines(
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
     own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
-    signs = (sign,) if sign else (1, -1) if own or uses_n_components(ctx, raw) else (1,)
+    either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
+    signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
     _, mapping, inferred, s = max(
         ((*_infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
