@@ -212,6 +212,12 @@ def test_unit_vectors_placed_in_words_and_a_slip_across() -> None:
         ("I take the y axis along the line of centres", {"t": ("n", 1), "n": ("t", 1)}),
         ("i along the line of centres, j perpendicular to it", {}),  # derive's own
         ("v = 3i + 4j", {}),
+        # a letter not named as an axis: x for "times", a part (i)
+        ("v_x = 1 x 19.8 = 19.8 m/s, so the ball moves away from the wall", {}),
+        ("(i) The ball bounces away from the wall:", {}),
+        ("v = 0.5 x 6 = 3, away from the cushion", {}),
+        ("Take x along the wall, y out of the wall.", {"n": ("t", 1), "t": ("n", -1)}),
+        ("x direction parallel to the cushion; y direction away from the cushion", {"n": ("t", 1), "t": ("n", -1)}),
     ],
 )
 def test_axes_placed_in_words(text: str, axes: dict) -> None:
@@ -276,6 +282,21 @@ def test_a_sign_slip_under_a_convention_said_in_words() -> None:
     # rebound direction positive: the ball arrives at -4 and leaves at +1.6; -1.6 is a slip
     seen = by_line(WALL, "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = -1.6")
     assert seen == {"2": "correct", "3": "wrong"}, seen
+
+
+@pytest.mark.parametrize(
+    "after",
+    [
+        "(i) Away from the wall:\nv_x = -1(19.8) = -19.8 m/s",  # x toward the wall: -19.8 after
+        "v_x = 1 x 19.8 = 19.8 m/s, so the ball moves away from the wall",  # a size with its way in words
+    ],
+)
+def test_a_times_x_or_a_part_label_places_no_axis(after: str) -> None:
+    # Giancoli 7-18: 28 m/s at 45° to the normal, e = 1: 28 cos 45 = 28 sin 45 = 19.8 m/s each way,
+    # the part across reversed (19.8 toward the wall before, 19.8 away after), the part along kept
+    work = f"u_x = 28 cos 45 = 19.8 m/s\nu_y = 28 sin 45 = 19.8 m/s\n{after}"
+    seen = by_line("giancoli-7-18-tennis-ball-wall-45deg", work)
+    assert "wrong" not in seen.values() and seen[max(seen, key=int)] == "correct", seen
 
 
 def test_components_named_on_axes_placed_in_words() -> None:
