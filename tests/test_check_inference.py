@@ -245,6 +245,15 @@ def test_axes_placed_in_words(text: str, axes: dict) -> None:
         ("to the left (B's original direction) as positive", -1),
         ("A’s original direction is positive", 1),
         ("to the left (Q's original direction) as positive", 0),  # a letter of the exam's: left to the values
+        # the way the clause makes positive, not any word in it
+        ("Taking the ball's direction before the rebound as positive.", 1),
+        ("positive towards the wall until it bounces back", 1),
+        ("taking the sphere's direction of motion before the impact as positive", 1),
+        ("taking the direction of B before the collision as positive", -1),
+        ("positive in the original direction of motion of B", -1),
+        ("positive is to A's right", 0),  # A's right: left or right, to the values
+        ("left is positive (from the ground)", 0),  # a point of view, not away from the ground
+        ("right is positive as seen from the bank", 0),
     ],
 )
 def test_a_convention_said_in_words(words: str, sign: int) -> None:
@@ -258,6 +267,9 @@ def test_a_convention_said_in_words(words: str, sign: int) -> None:
     [
         "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = 1.6",
         "I take the original direction of the ball as positive, so after the rebound v_A2 = -0.4(4) = -1.6",
+        # the way before the rebound is the first way: after it the ball moves at -0.4(4)
+        "Taking the ball's direction before the rebound as positive.\nu = 4 m/s\nv = -0.4 x 4 = -1.6 m/s",
+        "Positive: the way the ball moves before it hits the wall.\nv_A1 = 4\nv_A2 = -0.4(4) = -1.6",
     ],
 )
 def test_derives_names_with_a_convention_said_in_words(work: str) -> None:
