@@ -197,6 +197,20 @@ def test_a_given_restated_in_a_name_the_chain_has_for_another_quantity_is_not_ma
     assert all(got[n][0] == "correct" for n in lines_right), got
 
 
+@pytest.mark.parametrize(
+    ("problem", "work"),
+    [
+        # OCR M2 2015 (0.2 kg thrown down at 5 m/s, e = 0.7): the speed at the ground is 7.51 m/s, not
+        # the 5 m/s thrown; v_1 = 5 is the fall forgotten, the chain's own v_1 wrong
+        ("chain-ocr-m2-2015-thrown-down-bounce", "v_1 = 5\nu = -0.7 x 5 = -3.5\nJ = 0.2(5 + 3.5) = 1.7"),
+        # OCR M2 2007 (21 m/s down from 40 m): v_1 = 35 m/s (above), not 21
+        ("chain-ocr-m2-2007-rebounds-to-start", "v_1 = 21"),
+    ],
+)
+def test_a_chains_own_name_set_to_a_given_without_its_unit_or_words_is_judged(problem: str, work: str) -> None:
+    assert lines(problem, work)[1][0] == "wrong"
+
+
 def test_a_chain_name_set_to_a_given_after_the_working_is_still_judged() -> None:
     # OCR M2 2007: the chain's u (after the bounce) is 28 m/s up, not the 21 m/s thrown down.
     got = lines("chain-ocr-m2-2007-rebounds-to-start", "v_1^2 = 21^2 + 2(9.8)(40) = 1225\nu = 21")

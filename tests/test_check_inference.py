@@ -79,6 +79,25 @@ def test_derives_names_in_derives_frame_with_one_sign_slip_stay_in_derives_frame
     assert seen["5"] == "wrong" and seen["4"] == "correct" and seen["1"] == "correct", seen
 
 
+@pytest.mark.parametrize(
+    ("work", "wrong"),
+    [
+        ("v_A2 = -4 m/s\nv_B2 = -8 m/s", {"1", "2"}),  # no words, no given: the answers alone never turn the frame
+        ("Momentum: 4(12) + 8(4) = 80\n80 = 4(-4) + 8(-8)\nv_A2 = -4 m/s\nv_B2 = -8 m/s", {"2", "3", "4"}),
+        ("v_A1 = 12, v_B1 = 4\nv_A2 = -4\nv_B2 = -8", {"2", "3"}),  # A's +12 fixes derive's frame
+        ("v_A1 = -12, v_B1 = 4\nv_A2 = -4\nv_B2 = -8", {"1", "2", "3"}),  # the givens disagree: derive's frame
+    ],
+)
+def test_the_answers_alone_never_choose_a_reversed_frame(work: str, wrong: set) -> None:
+    # true: v_A2 = 4, v_B2 = 8 along the way both move (12a = 48 above)
+    seen = by_line(CATCH, work)
+    assert {k for k, v in seen.items() if v == "wrong"} == wrong, seen
+
+
+def test_a_given_written_reversed_turns_derives_names() -> None:
+    all_correct(CATCH, "v_A1 = -12, v_B1 = -4\nv_A2 = -4\nv_B2 = -8")
+
+
 # ------------------------------------------------- names never seen, read from the relations
 
 
@@ -193,6 +212,12 @@ def test_unit_vectors_placed_in_words_and_a_slip_across() -> None:
         ("I take the y axis along the line of centres", {"t": ("n", 1), "n": ("t", 1)}),
         ("i along the line of centres, j perpendicular to it", {}),  # derive's own
         ("v = 3i + 4j", {}),
+        # a letter not named as an axis: x for "times", a part (i)
+        ("v_x = 1 x 19.8 = 19.8 m/s, so the ball moves away from the wall", {}),
+        ("(i) The ball bounces away from the wall:", {}),
+        ("v = 0.5 x 6 = 3, away from the cushion", {}),
+        ("Take x along the wall, y out of the wall.", {"n": ("t", 1), "t": ("n", -1)}),
+        ("x direction parallel to the cushion; y direction away from the cushion", {"n": ("t", 1), "t": ("n", -1)}),
     ],
 )
 def test_axes_placed_in_words(text: str, axes: dict) -> None:
@@ -220,6 +245,15 @@ def test_axes_placed_in_words(text: str, axes: dict) -> None:
         ("to the left (B's original direction) as positive", -1),
         ("A’s original direction is positive", 1),
         ("to the left (Q's original direction) as positive", 0),  # a letter of the exam's: left to the values
+        # the way the clause makes positive, not any word in it
+        ("Taking the ball's direction before the rebound as positive.", 1),
+        ("positive towards the wall until it bounces back", 1),
+        ("taking the sphere's direction of motion before the impact as positive", 1),
+        ("taking the direction of B before the collision as positive", -1),
+        ("positive in the original direction of motion of B", -1),
+        ("positive is to A's right", 0),  # A's right: left or right, to the values
+        ("left is positive (from the ground)", 0),  # a point of view, not away from the ground
+        ("right is positive as seen from the bank", 0),
     ],
 )
 def test_a_convention_said_in_words(words: str, sign: int) -> None:
@@ -233,6 +267,9 @@ def test_a_convention_said_in_words(words: str, sign: int) -> None:
     [
         "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = 1.6",
         "I take the original direction of the ball as positive, so after the rebound v_A2 = -0.4(4) = -1.6",
+        # the way before the rebound is the first way: after it the ball moves at -0.4(4)
+        "Taking the ball's direction before the rebound as positive.\nu = 4 m/s\nv = -0.4 x 4 = -1.6 m/s",
+        "Positive: the way the ball moves before it hits the wall.\nv_A1 = 4\nv_A2 = -0.4(4) = -1.6",
     ],
 )
 def test_derives_names_with_a_convention_said_in_words(work: str) -> None:
@@ -257,6 +294,21 @@ def test_a_sign_slip_under_a_convention_said_in_words() -> None:
     # rebound direction positive: the ball arrives at -4 and leaves at +1.6; -1.6 is a slip
     seen = by_line(WALL, "positive: the direction of the rebound\nv_A1 = -4\nv_A2 = -1.6")
     assert seen == {"2": "correct", "3": "wrong"}, seen
+
+
+@pytest.mark.parametrize(
+    "after",
+    [
+        "(i) Away from the wall:\nv_x = -1(19.8) = -19.8 m/s",  # x toward the wall: -19.8 after
+        "v_x = 1 x 19.8 = 19.8 m/s, so the ball moves away from the wall",  # a size with its way in words
+    ],
+)
+def test_a_times_x_or_a_part_label_places_no_axis(after: str) -> None:
+    # Giancoli 7-18: 28 m/s at 45° to the normal, e = 1: 28 cos 45 = 28 sin 45 = 19.8 m/s each way,
+    # the part across reversed (19.8 toward the wall before, 19.8 away after), the part along kept
+    work = f"u_x = 28 cos 45 = 19.8 m/s\nu_y = 28 sin 45 = 19.8 m/s\n{after}"
+    seen = by_line("giancoli-7-18-tennis-ball-wall-45deg", work)
+    assert "wrong" not in seen.values() and seen[max(seen, key=int)] == "correct", seen
 
 
 def test_components_named_on_axes_placed_in_words() -> None:

@@ -658,3 +658,38 @@ def test_the_mass_asked_for_named_in_words_is_the_students_m(tmp_path, answer: s
     )
     work = f"1500(5) = (1500 + M)(3)\n7500 = 4500 + 3M\nAnswer: mass of the parked car = {answer} kg\n"
     assert by_line(str(problem), work) == {"1": "correct", "2": "correct", "3": expected}
+
+
+@pytest.mark.parametrize(
+    ("problem", "work", "status"),
+    [
+        # BYJU'S (4 kg at 12 m/s catches 8 kg at 4 m/s, e = 0.5): v_A2 = 4, v_B2 = 8, so the impulse on A
+        # is 4(4 - 12) = -32 N s and on B 8(8 - 4) = +32 N s along the way they move
+        ("byjus-4kg-ball-catches-8kg-ball", "impulse on A = 32 N s", "wrong"),
+        ("byjus-4kg-ball-catches-8kg-ball", "impulse on A = -32 N s", "correct"),
+        ("byjus-4kg-ball-catches-8kg-ball", "impulse on B = 32 N s", "correct"),
+        ("byjus-4kg-ball-catches-8kg-ball", "change in momentum of B = -32 N s", "wrong"),
+        # MSU bullet (0.020 kg at 300 m/s into 4.0 kg at rest): w = 6/4.02 = 1.4925 m/s; the impulse on
+        # the block (B) is 4.0(1.4925) = +5.97 N s, on the bullet (A) 0.020(1.4925 - 300) = -5.97 N s
+        (BULLET, "impulse on A = 5.97 N s", "wrong"),
+        (BULLET, "impulse on A = -5.97 N s", "correct"),
+        (BULLET, "impulse on B = 5.97 N s", "correct"),
+    ],
+)
+def test_an_impulse_on_a_body_named_is_that_bodys(problem: str, work: str, status: str) -> None:
+    assert by_line(problem, work) == {"1": status}
+
+
+def test_an_impulse_on_a_body_is_said_as_written() -> None:
+    from derive.checking.words import glossary, notes_in_words
+
+    solution = derive.solve(derive.load("byjus-4kg-ball-catches-8kg-ball"))
+    notes = derive.check(solution, derivation="impulse on A = -32 N s").notes
+    said = " ".join(notes_in_words(notes, glossary(solution, ["J_n"])))
+    assert "impulse on A: read as the impulse on A along" in said, said
+
+
+def test_a_reversed_frame_said_turns_both_impulses() -> None:
+    # B toward A positive (the givens written -12 and -4): the impulse on A is +32, on B -32
+    work = "v_A1 = -12, v_B1 = -4\nimpulse on A = 32 N s\nimpulse on B = -32 N s"
+    assert set(by_line("byjus-4kg-ball-catches-8kg-ball", work).values()) == {"correct"}

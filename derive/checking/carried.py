@@ -18,7 +18,7 @@ from derive.checking import misread, slipnames, slipworld
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
-from derive.checking.numeric import decimals, number_of
+from derive.checking.numeric import decimals, number_of, shown
 from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
@@ -131,7 +131,7 @@ def given_copied(trace: Trace, bad: Pair) -> str:
     trace.world = [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
     trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
     written = bad.text.split(" = ")[-1].strip()
-    return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {written}."
+    return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {written}."
 
 
 def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | None) -> Found:
@@ -313,10 +313,6 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
         if world is not None and trace.holds([bad], world):
             return m, min(changed)
     return None
-
-
-def _shown(x: sympy.Expr) -> str:
-    return str(x) if x.is_Integer else f"{float(x):g}"
 
 
 def pairs_of(trace: Trace, line: Read) -> list[Pair]:

@@ -19,7 +19,10 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.naming import PREFIX, Open, read_side
+from derive.checking.numeric import shown
 from derive.checking.report import Item
+from derive.checking.restated import stated, written_number
+from derive.checking.valuenames import unit_of
 from derive.errors import InputError
 from derive.problem.expr import ParseError
 from derive.problem.units import VELOCITY
@@ -63,30 +66,33 @@ def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
     return {**energies(ctx, read), **said}, read
 
 
-#: A given restated: a name set to a number (``u = 5``, ``h = 1.6``), as a line of givens has it.
-_STATED = re.compile(r"\s*[A-Za-z]\w{0,6}\s*")
-_GIVEN_NUMBER = re.compile(r"\s*[-+]?\s*\d+\.?(\d*)\s*")
+#: Words of a line of givens after a speed (``u = 21 m/s down``, ``Given: …``): the given's own.
+_GIVEN_WORDS = re.compile(
+    r"\b(?:given|data|thrown|projected|released|initial(?:ly)?|down(?:wards?)?|up(?:wards?)?|vertically)\b", re.I
+)
 
 
 def _restated(ctx: Context, x: tuple, read: list) -> bool:
     """Whether ``x`` (relation, sides, expressions) restates a given speed on a line of givens before the
     working (``Q5  m = 0.2 kg, u = 5 m/s down, h = 1.6 m``: all of its relations a name set to a
-    number) in a name the chain has for another quantity: its number is a given's (to the figures
-    written, either sign) while the relation, read in the chain's names, is false (the chain's ``u``
-    is the velocity after the bounce). A teacher does not mark it; the checker does not judge it."""
+    number, this one with the given's unit or words) in a name the chain has for another quantity:
+    its number is a given's (to the figures written, either sign) while the relation, read in the
+    chain's names, is false (the chain's ``u`` is the velocity after the bounce). A teacher does not
+    mark it; the checker does not judge it. A bare ``v_1 = 5`` (the fall forgotten) is judged."""
     r, sides, exprs = x
-    worked = [y[0].line for y in read if not _is_stated(y[1])]
-    if not _is_stated(sides) or (worked and r.line >= min(worked)) or len(exprs) != 2:
+    worked = [y[0].line for y in read if not stated(y[1])]
+    if not stated(sides) or (worked and r.line >= min(worked)) or len(exprs) != 2:
         return False
-    m = _GIVEN_NUMBER.fullmatch(sides[1])
-    half = 0.5 * 10 ** -len(m.group(1)) + 1e-12
-    value = abs(float(re.sub(r"\s", "", sides[1])))
+    unit = unit_of(r)
+    if not ((unit is not None and unit[0] == VELOCITY) or _GIVEN_WORDS.search(r.written)):
+        return False
+    value, half = written_number(sides[1]) or (0.0, 0.0)
     values = [  # a given speed (``e = 0.7`` for a wall's e is a stage's e, which the chain judges)
         abs(float(g.value))
         for g in ctx.problem.givens
         if g.value is not None and g.value.is_number and g.dim == VELOCITY
     ]
-    if not any(abs(value - v) <= half for v in values):
+    if not any(abs(abs(value) - v) <= half for v in values):
         return False
     chain = {str(k): v for k, v in ctx.solution.values.items()}
     own = exprs[0].xreplace({s: chain[s.name] for s in exprs[0].free_symbols if s.name in chain})
@@ -94,10 +100,6 @@ def _restated(ctx: Context, x: tuple, read: list) -> bool:
         return not own.free_symbols and abs(float(own) - float(exprs[1])) > half
     except (TypeError, ValueError):
         return False
-
-
-def _is_stated(sides: tuple) -> bool:
-    return len(sides) == 2 and _STATED.fullmatch(sides[0]) is not None and _GIVEN_NUMBER.fullmatch(sides[1]) is not None
 
 
 def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[int]]:
@@ -252,7 +254,7 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
         world = _solved_with(chain, g.name, n) if g is not None else None
         if world is not None:
             return (
-                f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {sides[1].strip()}.",
+                f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {sides[1].strip()}.",
                 world,
             )
     for i, side in enumerate(sides):
@@ -276,7 +278,7 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
                 world = _solved_with(chain, g.name, n if g.value > 0 else -n)
                 if world is not None:
                     return (
-                        f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {token}.",
+                        f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {token}.",
                         world,
                     )
     return None
@@ -291,10 +293,6 @@ def _solved_with(chain, name: str, value: sympy.Expr) -> dict | None:
         return dict(run_chain(replace(chain, givens=givens)).values)
     except (InputError, ValueError, TypeError, ArithmeticError, KeyError, IndexError):
         return None
-
-
-def _shown(x: sympy.Expr) -> str:
-    return str(x) if x.is_Integer else f"{float(x):g}"
 
 
 def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, own: dict, said: Declared) -> Item:

@@ -11,16 +11,29 @@ import re
 _FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
 _REVERSED = re.compile(
     rf"revers|opposite|negative|away\s+from\s+{_FIXED}|(?<!\w)from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
-    rf"|(?:out\s+)?from\s+{_FIXED}|out\s+of\s+{_FIXED}|rebound|bounces?\s+back|(?<!\w)to(?:wards?)?\s+(?-i:A)\b"
-    r"|\bb['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)|direction\s+of\s+b\b",
+    rf"|(?:out\s+)?from\s+{_FIXED}|out\s+of\s+{_FIXED}|rebound|bounces?\s+back|(?<!\w)to(?:wards?)?\s+(?-i:A)\b(?!['’])"
+    r"|\bb['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)|(?:direction|motion)\s+of\s+b\b",
     re.I,
 )
 _FORWARD = re.compile(
     rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)"
     r"|direction\s+(?:that\s+|in\s+which\s+)?a\s+(?:moves|travels|is\s+(?:moving|travelling)|goes|starts)"
-    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive|(?<!\w)to(?:wards?)?\s+(?-i:B)\b|direction\s+of\s+approach"
+    r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive|(?<!\w)to(?:wards?)?\s+(?-i:B)\b(?!['’])|direction\s+of\s+approach"
     r"|(?<!['’]s\s)(?:initial|original)\s+direction(?:\s+of\s+(?:motion\s+of\s+)?(?:a|the\s+(?:ball|sphere|particle|puck)))?\b"
     r"|direction\s+of\s+motion\s+of\s+a\b",
+    re.I,
+)
+#: Words in a clause that do not say which way is positive: a point of view ("(from the ground)",
+#: "as seen from the bank") and a time ("before the rebound": the way before it, the first way).
+_NOT_A_WAY = re.compile(
+    rf"\(\s*(?:as\s+)?(?:seen\s+|viewed\s+|observed\s+|looking\s+)?from\s+[^)]*\)"
+    rf"|(?:as\s+)?(?:seen|viewed|observed|looking)\s+from\s+{_FIXED}",
+    re.I,
+)
+_BEFORE = re.compile(
+    r"\b(?:before|prior\s+to|until|up\s+to)\s+(?:the\s+|its\s+|it\s+)?"
+    r"(?:rebound|rebounds|bounces?|bouncing|impact|collision|collides|hits|strikes|hitting|striking)\b[\w\s]*?"
+    r"(?=\s+(?:is|as|be|to\s+be)\b|$)",
     re.I,
 )
 
@@ -33,6 +46,11 @@ def sign_of(words: str) -> int:
         c for c in re.split(r"[,;.]|\b(?:so|then|hence|giving)\b", words) if re.search(r"positive|\+\s?ve\b", c, re.I)
     ]
     words = said[0] if said else words  # "towards the wall as positive, so after the rebound …": its clause
+    words = _BEFORE.sub(" initially ", _NOT_A_WAY.sub(" ", words))
+    if re.search(r"\b(?:direction|motion|way)\s+initially\b", words, re.I) and not re.search(
+        r"\b(?-i:B)['’]?s\s+(?:direction|motion|way)|of\s+(?-i:B)\b", words
+    ):
+        return 1  # "the ball's direction before the rebound": its first way, derive's n
     if _REVERSED.search(words):
         return -1
     return 1 if _FORWARD.search(words) else 0

@@ -52,6 +52,29 @@ def flipped(ctx: Context, raw: list, sign: int) -> list:
     return out
 
 
+def reversal_said(ctx: Context, raw: list, pt: dict, truth: dict) -> bool:
+    """Whether the values written put derive's own names in the reversed frame: a line writes a
+    velocity BEFORE (a given) with the reversed sign (``v_A1 = -12`` where A moves at 12 along
+    derive's n), and none writes one with derive's sign. The answers alone never choose the frame
+    (``v_A2 = -4``, ``v_B2 = -8`` is two sign slips, not a frame)."""
+    before = [c for c in (ctx.model.nm.A1n, ctx.model.nm.B1n) if isinstance(c, sympy.Symbol)]
+    votes = set()
+    for r in raw:
+        for c in before:
+            if r.exprs is None or c not in r.exprs:
+                continue
+            true = number_of(ctx.in_unknowns(c).xreplace(pt).xreplace(truth))
+            for e in r.exprs:
+                value = number_of(e) if not e.free_symbols else None
+                if value is None or true is None or abs(true) < 1e-9:
+                    continue
+                if abs(value - true) <= 1e-3 * abs(true):
+                    votes.add(1)
+                elif abs(value + true) <= 1e-3 * abs(true):
+                    votes.add(-1)
+    return votes == {-1}
+
+
 Pair = tuple[float, tuple[sympy.Expr, sympy.Expr], bool]
 
 
@@ -91,7 +114,15 @@ def score(found: list[list[Pair]], mapping: dict, ctx: Context, pt: dict, truth:
 
 #: A unit vector or an axis as students name it in words (``\mathbf{i}``, ``î``, ``the x-axis``),
 #: by the axis the vector reader gives it (:data:`~derive.mathtext.vectors.UNITS`): n or t.
-_UNIT_WORD = re.compile(r"(?<![\w\\])(?:(i|x|X)|(j|y|Y))(?:[-\s]?axis)?(?![\w(])")  # not "I take"
+#: Only a letter the clause names as an axis: ``x-axis``, a unit vector ``i`` (not a part ``(i)``),
+#: ``x along …``, ``take x …``; never a lone ``x`` for "times" (``1 x 19.8``).
+_UNIT_WORD = re.compile(
+    r"(?<![\w\\(])([ijxyXY])[-\s]?(?:axis|direction)\b"
+    r"|(?<![\w\\(])([ij])(?![\w()])"  # not "I take", not "(i)"
+    r"|(?<![\w\\(])([xyXY])(?=\s+(?:along|parallel|perpendicular|normal|at\s+right|is|points?|pointing|positive"
+    r"|taken|away|out|into|towards?|to|as)\b)"
+    r"|\b(?:[Tt]ake|[Tt]aking|[Ll]et|[Ww]ith|[Cc]hoos(?:e|ing))\s+([xyXY])\b",
+)
 _STYLED = re.compile(r"\\(?:mathbf|hat|vec|boldsymbol|underline|bm|textbf|mathit)\s*\{?\s*\\?([a-z])(?:math)?\s*\}?")
 _WALL = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface|table\s+edge|side)"
 _LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact)|common\s+normal|normal)"
@@ -115,7 +146,7 @@ def declared_axes(text: str) -> dict[str, tuple[str, int]]:
     found: dict[str, tuple[str, int]] = {}
     last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")
     for clause in re.split(r"[.;,\n]|\band\b", plain):
-        units = {"n" if m.group(1) else "t" for m in _UNIT_WORD.finditer(clause)}
+        units = {"n" if m.group(m.lastindex).lower() in "ix" else "t" for m in _UNIT_WORD.finditer(clause)}
         last = units.pop() if len(units) == 1 else "" if units else last
         place = next(((a, sg) for pattern, a, sg in _PLACES if re.search(pattern, clause, re.I)), None)
         if last and place and (last not in found or (found[last][0] == place[0] and not found[last][1])):

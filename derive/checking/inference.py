@@ -17,7 +17,15 @@ import sympy
 from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import DEG, Context
-from derive.checking.frames import axes_said, axis_names, declared_axes, flipped, score, uses_n_components
+from derive.checking.frames import (
+    axes_said,
+    axis_names,
+    declared_axes,
+    flipped,
+    reversal_said,
+    score,
+    uses_n_components,
+)
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
@@ -109,8 +117,10 @@ def read_lines(
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
-    own = any(_placeholders(e) for r in raw if r.exprs for e in r.exprs)
-    signs = (sign,) if sign else (1, -1) if own or uses_n_components(ctx, raw) else (1,)
+    on_body = {n for n in meanings if re.fullmatch(r"(?:impulse|dp)_[AB]", n)}  # their sign is the frame's
+    own = any(p.name[1:] not in on_body for r in raw if r.exprs for e in r.exprs for p in _placeholders(e))
+    either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
+    signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
     _, mapping, inferred, s = max(
         ((*_infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
@@ -302,7 +312,8 @@ def _infer(
     truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
-        base[sympy.Symbol(PREFIX + name)] = sign * e if _velocity(e) and not is_size(ctx, e) else e
+        turned = (_velocity(e) and not is_size(ctx, e)) or re.fullmatch(r"(?:impulse|dp)_[AB]", name)  # on a body
+        base[sympy.Symbol(PREFIX + name)] = sign * e if turned else e
     pairs = frame_pairs(ctx, raw, pt, truth)
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return score(pairs, {}, ctx, pt, truth) + (0.5 if sign == 1 else 0), {}, {}

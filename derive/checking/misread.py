@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Protocol
 import sympy
 
 from derive.checking.mistakes import Variant
-from derive.checking.numeric import number_of
+from derive.checking.numeric import number_of, shown
 from derive.checking.worlds import Pair, solve_world
 
 if TYPE_CHECKING:
@@ -85,7 +85,7 @@ def misread(trace: Trace, line: Read, bad: Pair, diags: tuple) -> Found:
         g = found
     else:
         g = misread[0]
-    said = f"{g.name} = {_shown(abs(g.value))}, not {_shown(c)}"
+    said = f"{g.name} = {shown(abs(g.value))}, not {shown(c)}"
     return None, f": a given is copied wrongly into it: the problem gives {said}.", "copied_wrong"
 
 
@@ -121,10 +121,6 @@ def _copied_world(trace: Trace, bad: Pair, g: Given, copy: sympy.Rational) -> bo
     trace.variant, trace.world, trace.equations = variant, world, equations
     trace.copied[g.symbol] = variant.values[g.symbol]  # the student's v_A2 is the number copied
     return True
-
-
-def _shown(x: sympy.Rational) -> str:
-    return str(x) if x.is_Integer else f"{float(x):g}"
 
 
 def with_copied(ctx: Context, x: sympy.Expr, copied: dict[sympy.Symbol, sympy.Expr]) -> sympy.Expr:
@@ -182,10 +178,10 @@ def swapped_words(trace: Trace, line: Read, bad: Pair) -> Found:
     found = _swapped(trace, line, [bad]) if bad.own_figures else None
     if found is None:
         return None
-    _k, token, shown = found
+    _k, token, needed = found
     return (
         None,
-        f": {token} has its digits in the wrong order: the line needs {shown} there (an arithmetic slip).",
+        f": {token} has its digits in the wrong order: the line needs {needed} there (an arithmetic slip).",
         "arithmetic",
     )
 
@@ -201,9 +197,9 @@ def _swapped(trace: Trace, line: Read, pairs: list[Pair]) -> tuple[int, str, str
         places = len(token.split(".")[1])
         for k, p in enumerate(pairs):
             need = _needed(trace, p, d)
-            shown = f"{abs(need):.{places}f}" if need is not None else token
-            if shown != token and sorted(shown.replace(".", "").lstrip("0")) == sorted(digits):
-                return k, token, shown
+            at = f"{abs(need):.{places}f}" if need is not None else token
+            if at != token and sorted(at.replace(".", "").lstrip("0")) == sorted(digits):
+                return k, token, at
     return None
 
 

@@ -106,3 +106,8 @@ def listed(words: list[str]) -> str:
 def decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
     """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
     return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))
+
+
+def shown(x: sympy.Expr) -> str:
+    """A given's value as a report quotes it (``5``, ``0.35``): an integer as it is, else its float."""
+    return str(x) if x.is_Integer else f"{float(x):g}"

@@ -26,7 +26,7 @@ _NAME = re.compile(r"[A-Za-z]\w{0,6}")
 _NUMBER = re.compile(r"\s*[-+]?\s*(\d+)\.?(\d*)\s*")
 
 
-def _number(side: str) -> tuple[float, float] | None:
+def written_number(side: str) -> tuple[float, float] | None:
     """The number a side is (its value and half its last written figure), None where it is none."""
     m = _NUMBER.fullmatch(side)
     if m is None:
@@ -40,9 +40,13 @@ def _number(side: str) -> tuple[float, float] | None:
     return float(value.real), 0.5 * 10 ** -len(m.group(2)) + 1e-12
 
 
+def stated(sides: tuple[str, ...]) -> bool:
+    """Whether the sides state a value: a name set to a number (``v = 28``)."""
+    return len(sides) == 2 and _NAME.fullmatch(sides[0].strip()) is not None and written_number(sides[1]) is not None
+
+
 def _stated(r: Relation) -> bool:
-    """Whether ``r`` states a value: a name set to a number (``v = 28``)."""
-    return len(r.sides) == 2 and _NAME.fullmatch(r.sides[0].strip()) is not None and _number(r.sides[1]) is not None
+    return stated(r.sides)
 
 
 def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, sympy.Expr]:
@@ -69,7 +73,7 @@ def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) 
         unit = unit_of(r)
         if re.match(r"[mMWEKTJIpPe]", name) or (unit is not None and unit[0] != VELOCITY):
             continue  # a mass, a weight, an energy, an impulse, a momentum, e: not a velocity
-        value, half = _number(r.sides[1])
+        value, half = written_number(r.sides[1])
         hits = [s for s, v in givens if abs(abs(value) - v) <= half]
         if len(hits) == 1:
             typed = " ".join(x.written for x in relations)

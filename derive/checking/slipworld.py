@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Protocol
 import sympy
 
 from derive.checking.mistakes import Variant
-from derive.checking.numeric import number_of
+from derive.checking.numeric import number_of, shown
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world
 from derive.mathtext.notation import student
 
@@ -33,10 +33,6 @@ class Trace(Protocol):
     variant: Variant
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
-
-
-def _shown(x: sympy.Expr) -> str:
-    return str(x) if x.is_Integer else f"{float(x):g}"
 
 
 def number_copied(trace: Trace, bad: Pair) -> str:
@@ -61,7 +57,7 @@ def number_copied(trace: Trace, bad: Pair) -> str:
                 continue
             trace.copied[g.symbol], trace.variant, trace.world = c, variant, world
             trace.equations = {j: F for j, F in model.numbered(variant).items() if j in trace.equations}
-            return f": a given is copied wrongly: the problem gives {g.name} = {_shown(g.value)}, not {_shown(c)}."
+            return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {shown(c)}."
     return ""
 
 

@@ -196,6 +196,9 @@ def by_value(
                 out[name] = only  # "impulse = 0": the one impulse, its sign no matter
             continue
         written = value.real
+        if (on := _body_impulse(name, table.get(dim, []))) is not None:
+            out[name] = on  # "impulse on A = 32 N s": A's, whatever its sign (a wrong sign is a slip)
+            continue
         half = (0.5 * 10 ** -len(m.group(3)) + 1e-12) * abs(written / float(m.group(0)))  # to the figures written
         hits = []
         for what, e in table.get(dim, []):
@@ -210,6 +213,16 @@ def by_value(
             x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
             out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _body_impulse(name: str, impulses: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
+    """The impulse on the body a name says (``impulse_A``, ``dp_B`` from "impulse on A", "change in
+    momentum of B"): on B it is derive's J_n, on A -J_n (n from A toward B); None for no body."""
+    m = re.fullmatch(r"(?:impulse|dp)_([AB])", name)
+    only = _only_one(impulses) if m else None
+    if only is None:
+        return None
+    return only if m[1] == "B" else -only
 
 
 def _says_impulse(name: str) -> bool:

@@ -71,6 +71,8 @@ def _axis(problem: Any, axis: str | None) -> str:
 def meaning(name: str, problem: Any) -> str:
     """derive's name ``name`` (``v_A2n``, ``theta_A1``, ``-v_B2``, ``T_lost``) in words,
     with the problem's labels for the bodies; a name it does not know is given as written."""
+    if name == "-J_n":
+        return "the impulse on A along the line of impact"  # B's impulse turned round: A's (n from A toward B)
     if name.startswith("-"):
         return meaning(name[1:], problem) + ", taken positive the other way"
     when = {"1": "before the impact", "2": "after the impact"}
@@ -131,6 +133,8 @@ def glossary(solution: Any, names: Any = ()) -> dict[str, str]:
 
 
 def _meant(name: str, known: dict[str, str]) -> str:
+    if name == "-J_n" and "J_n" in known:
+        return meaning(name, None)
     if name.startswith("-") and name[1:] in known:
         return known[name[1:]] + ", taken positive the other way"
     return known.get(name, name)
@@ -183,8 +187,18 @@ def notes_in_words(notes: tuple[str, ...] | list[str], known: dict[str, str]) ->
             if "*" in name and name.replace("*", "") == student:  # mu as m*u (not friction as mu_k*g*3010)
                 out.append(product_note(student))
             else:
-                out.append(name_note(student, _meant(name, known), form[2]))
+                out.append(name_note(_said(student), _meant(name, known), form[2]))
     return out
+
+
+def _said(student: str) -> str:
+    """A name read from words (``impulse_A``, ``dp_B``: :func:`~.spellings.impulse_name`) as the
+    student wrote it: "impulse on A", "change in momentum of B"."""
+    m = re.fullmatch(r"(impulse|dp)(?:_([AB]))?", student)
+    if m is None:
+        return student
+    said = "impulse" if m[1] == "impulse" else "change in momentum"
+    return f"{said} {'on' if m[1] == 'impulse' else 'of'} {m[2]}" if m[2] else said
 
 
 def _vectors(pairs: list[tuple[str, str]]) -> list[tuple[str, str]]:
