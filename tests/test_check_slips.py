@@ -860,3 +860,21 @@ def test_a_rule_of_motion_with_its_factor_2_lost_in_a_chain_is_algebra() -> None
     # a wrong number that is not a factor 2 off is not named algebra
     found = lines(problem, head + "h = 1.4925^2/(3 x 9.81) = 0.0757\n")
     assert found[3][0] == "wrong" and found[3][1] != "algebra"
+
+
+def test_energy_conserved_for_the_momentum_where_a_mass_and_e_are_unknown() -> None:
+    # OCR M2 2011: A (m_A?) at 3, B 0.2 kg at -1.5; after A 2, B 2.9. Kinetic energy "kept" in
+    # place of the momentum: 4.5 m_A + 0.225 = 2 m_A + 0.841 -> 2.5 m_A = 0.616, m_A = 0.246
+    # (the momentum gives 3 m_A - 0.3 = 2 m_A + 0.58, m_A = 0.88: the mark scheme's).
+    work = "0.5 m_A (3)^2 + 0.5(0.2)(1.5)^2 = 0.5 m_A (2)^2 + 0.5(0.2)(2.9)^2\n2.5 m_A = 0.616\nm_A = 0.246\n"
+    found = lines("ocr-m2-2011-spheres-find-e-and-mass", work)
+    assert found[1][:2] == ("wrong", "energy_conserved")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_whole_number_rounded_to_three_figures_with_a_zero_is_right() -> None:
+    # OpenStax train cars: 45000 - 13200 = 31800 = 260000 v, v = 0.12231; T_2 = ½(260000)v²
+    # = 1944.7, and from v = 0.1223: 130000(0.01495729) = 1944.4: "1940" is it at 3 figures.
+    work = "150000(0.3) + 110000(-0.12) = 260000 v\nv = 0.1223\nT_2 = 0.5(260000)(0.1223)^2 = 1940\n"
+    found = lines("openstax-cp-8-train-cars-couple", work)
+    assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
