@@ -878,3 +878,25 @@ def test_a_whole_number_rounded_to_three_figures_with_a_zero_is_right() -> None:
     work = "150000(0.3) + 110000(-0.12) = 260000 v\nv = 0.1223\nT_2 = 0.5(260000)(0.1223)^2 = 1940\n"
     found = lines("openstax-cp-8-train-cars-couple", work)
     assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
+
+
+def test_the_number_of_a_relation_in_two_unknowns_worked_wrongly_is_arithmetic() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4: 4(12) + 8(4) = 48 + 32 = 80 = 4 v_A2 + 8 v_B2.
+    # Written 90 on the same line after "so", or 70 on the next: the terms kept, the number
+    # worked wrongly. With v_B2 - v_A2 = 4: 4 v_A2 + 8 v_A2 + 32 = 70 -> 12 v_A2 = 38 (carried).
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "4(12) + 8(4) = 4 v_A2 + 8 v_B2, so 4 v_A2 + 8 v_B2 = 90\n")
+    assert found[1][:2] == ("wrong", "arithmetic")
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n4 v_A2 + 8 v_B2 = 70\nv_B2 - v_A2 = 0.5(12 - 4)\n12 v_A2 = 38\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert [found[i][:2] for i in (1, 2, 3)] == [("correct", ""), ("wrong", "arithmetic"), ("correct", "")]
+    assert found[4][0] == "carried"
+
+
+def test_e_as_approach_over_separation_is_restitution_reversed() -> None:
+    # Beer & Johnston 13.13: 20 Mg at 0.5 hits 35 Mg at rest, which goes on at 0.3:
+    # 10 = 20 v_A2 + 10.5 -> v_A2 = -0.025; e = (0.3 + 0.025)/0.5 = 0.65. Upside down:
+    # e = 0.5/(0.3 + 0.025) = 1.54, the impact rule's differences the wrong way round.
+    work = "20(0.5) = 20 v_A2 + 35(0.3)\nv_A2 = -0.025\ne = (0.5 - 0)/(0.3 + 0.025) = 1.54\n"
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "restitution_reversed")

@@ -18,7 +18,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, slipworld, words
+from derive.checking import carried, cofunctions, labelled, mistakes, slipnames, slipworld, words, workedslips
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
@@ -284,9 +284,9 @@ class Trace(Carrying):
             if further is not None:
                 return self.ctx.diagnosis(further[0]), further[1], f": it {further[0].phrase}.", ""
             world = self.world if self.world is not None else self.truth
-            name = slipnames.solving_slip(
-                line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
-            )
+            at, held = (self.U, self.pts[0]), lambda p: self.holds([p], world)
+            name = slipnames.solving_slip(line.sides, self.pairs(line), self.previous, at, held)
+            name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held)
             if not name and carried.worked_wrongly(self, line, world):
                 return diags, None, WORKING, "arithmetic"
             found = None if name else carried.unnamed(self, line, bad, world, j)

@@ -42,6 +42,7 @@ FORMS: dict[str, Callable[[Any, Variant], list[dict[int, sympy.Expr]]]] = {
     "masses_swapped": masses.one_side,
     "weight_as_mass": masses.one_body,
     "energy_conserved": restitution.energy_for_momentum,
+    "restitution_reversed": restitution.upside_down,
 }
 
 # every kind registered itself when its module was imported; here they are put in report order

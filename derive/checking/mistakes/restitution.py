@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sympy
 
-from derive.checking.mistakes.equations import Model, point
+from derive.checking.mistakes.equations import APPROACH_A, APPROACH_B, Model, point
 from derive.checking.mistakes.records import Variant, mistake
 
 
@@ -75,3 +75,11 @@ def energy_for_momentum(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]
     if 3 not in eqs:
         return []
     return [model.numbered(model.base(), {**eqs, 3: model.energy_equation()})]
+
+
+def upside_down(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """The impact rule with e as approach over separation, e (v_B2n − v_A2n) = v_A1n − v_B1n
+    (a find-e problem's e over 1), the rest kept; numbers in."""
+    nm, eqs = model.nm, model.equations(model.base())
+    eqs[4] = model.e * (nm.B2n - nm.A2n) - (APPROACH_A - APPROACH_B)
+    return [model.numbered(model.base(), eqs)]
