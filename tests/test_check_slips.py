@@ -900,3 +900,44 @@ def test_e_as_approach_over_separation_is_restitution_reversed() -> None:
     found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
     assert found[1][0] == found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "restitution_reversed")
+
+
+def test_the_wrong_kinetic_energy_formula_worked_with_the_speeds_is_carried() -> None:
+    # AQA M3 2007: A 0.3 kg at 3, B 0.2 kg at -2; after A -0.6, B 3.4. KE lost truly
+    # 1.75 - 1.21 = 0.54. As ½m(u - v)² (the slip), then worked with the speeds:
+    # 0.15(3 - 0.6)² + 0.1(2 - 3.4)² = 0.864 + 0.196 = 1.06: the same wrong formula, carried.
+    work = (
+        "v_A2 = -0.6, v_B2 = 3.4\n"
+        "KE lost = 1/2 m_A (u_A - v_A)^2 + 1/2 m_B (u_B - v_B)^2\n"
+        "= 0.5(0.3)(3 - 0.6)^2 + 0.5(0.2)(2 - 3.4)^2\n"
+        "= 0.864 + 0.196 = 1.06 J\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[1][0] == "correct" and found[2][:2] == ("wrong", "ke_formula")
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_line_written_from_the_number_a_slip_came_to_is_carried_not_again() -> None:
+    # AQA discs: 0.8 kg and 0.4 kg at 6 m/s toward each other; B's sign lost in the total:
+    # 4.8 + 2.4 = 7.2 (truly 2.4). The next line writes 7.2: worked from it, carried, not
+    # B's sign lost afresh; 8.16/0.4 = 20.4 carried too.
+    work = "total momentum before: 0.8(6) + 0.4(6) = 7.2\n7.2 = 0.8(-1.2) + 0.4 v_B2\nv_B2 = 8.16/0.4 = 20.4\n"
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_right_relation_after_a_slip_joins_the_students_world() -> None:
+    # OCR M2 2006: 2 kg and 1 kg at 5 m/s toward each other, e = 0.8. B's sign lost in the
+    # momentum only: 10 + 5 = 15 = 2 v_A2 + v_B2; the approach right, v_B2 - v_A2 = 8. Then
+    # 2 v_A2 + v_A2 + 8 = 15, v_A2 = 7/3 = 2.33 (truly -1): both carried.
+    work = (
+        "momentum before = 2(5) + 1(5) = 15\n"
+        "15 = 2 v_A2 + v_B2\n"
+        "v_B2 - v_A2 = 0.8(5 + 5) = 8\n"
+        "3 v_A2 + 8 = 15\n"
+        "v_A2 = 2.33\n"
+    )
+    found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
+    assert found[1][:2] == ("wrong", "b_sign") and found[3][0] == "correct"
+    assert [found[i][0] for i in (2, 4, 5)] == ["carried"] * 3

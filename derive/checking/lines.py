@@ -152,6 +152,8 @@ class Trace(Carrying):
         self._wrote_wrong(line)
         if self._with_own_values(line) or self._with_terms_put_right(line) or self._with_slips_results(line, pairs):
             return carried.again_item(self, line, pairs) or self._carried(line)  # resolved afresh: again
+        if workedslips.wrong_energy_worked(self, line, pairs):  # = 0.5(0.8)(4 - 1.2)²: the wrong formula's working
+            return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
 
@@ -183,6 +185,7 @@ class Trace(Carrying):
         notes = ()
         if self.world is not None and not self.holds(pairs, self.world):
             notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
+            workedslips.into_world(self, line, pairs)
         if answer is not None:
             return self._item(line, "correct", answer.message, answer.method, notes=notes, expected=answer.expected)
         arithmetic = not any(p.difference.free_symbols & set(self.U) for p in pairs) and not line.own_names
@@ -219,6 +222,9 @@ class Trace(Carrying):
             lead = "The first line that is false for this problem"
         self.named[line.number] = {d.mistake for d in diags}
         self._replace(line, bad, j, slip=not again)  # the same mistake again is not a further slip
+        if again and workedslips.works_from_slip(self, line, again[0]):  # 7.2 = -0.96 + 0.4v: its number
+            del self.named[line.number]
+            return self._carried(line)
         expected = answer.expected if answer is not None else ""
         if not expected and j and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
