@@ -941,3 +941,45 @@ def test_a_right_relation_after_a_slip_joins_the_students_world() -> None:
     found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
     assert found[1][:2] == ("wrong", "b_sign") and found[3][0] == "correct"
     assert [found[i][0] for i in (2, 4, 5)] == ["carried"] * 3
+
+
+def test_a_term_not_multiplied_out_in_substituting_is_algebra() -> None:
+    # AQA M3 2009: m at 5u catches 7m at u. 12u = v_A2 + 7 v_B2, v_B2 - v_A2 = e(5u - u) = 4eu.
+    # Substituted: 12u = 8 v_A2 + 28eu, v_A2 = u(3 - 7e)/2; with the 7 not multiplying 4eu:
+    # 12u = 8 v_A2 + 4eu (algebra), v_A2 = u(3 - e)/2 (carried).
+    work = "5u + 7u = v_A2 + 7 v_B2\nv_B2 - v_A2 = 4eu\n12u = v_A2 + 7 v_A2 + 4eu\nv_A2 = u(3 - e)/2\n"
+    found = lines("aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra") and found[4][0] == "carried"
+
+
+def test_the_speed_of_a_body_said_to_reverse_written_as_minus_its_slipped_velocity_is_carried() -> None:
+    # CIE 2014 Nov Q1: 2m at 4u meets m at 3u; 5u = 2 v_A2 + v_B2, v_B2 - v_A2 = 7eu, so
+    # 5u = 3 v_A2 + 7eu. With the 7 lost (algebra): v_A2 = u(5 - e)/3, and A, said to
+    # reverse, has speed -v_A2 = u(e - 5)/3 as the student works it: carried.
+    work = "8u - 3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 7eu\n5u = 3 v_A2 + eu\nv_A2 = u(5 - e)/3\n|v_A2| = u(e - 5)/3\n"
+    found = lines("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == found[5][0] == "carried"
+
+
+def test_a_kinetic_energy_with_the_masses_exchanged_is_masses_swapped_and_its_working_carried() -> None:
+    # Edexcel M2 2004: 2m at 5u hits 3m at rest: v_A2 = 2u - 3eu, v_B2 = 2u + 2eu. KE after
+    # truly ½(2m)v_A2² + ½(3m)v_B2²; written ½(3m)v_A2² + ½(2m)v_B2², then worked out from it.
+    work = (
+        "v_A2 = 2u - 3eu, v_B2 = 2u + 2eu\n"
+        "KE after = 1/2 (3m) v_A2^2 + 1/2 (2m) v_B2^2\n"
+        "= (3/2) m (2u - 3eu)^2 + m (2u + 2eu)^2\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert found[1][0] == "correct" and found[2][:2] == ("wrong", "masses_swapped")
+    assert found[3][0] == "carried"
+
+
+def test_a_sign_lost_in_letters_working_out_a_velocity_is_algebra() -> None:
+    # Edexcel M2 2004: 10u = 2 v_A2 + 3 v_B2, v_B2 - v_A2 = 5eu -> v_B2 = 2u + 2eu; then
+    # v_A2 = v_B2 - 5eu = 2u - 3eu, written 2u + 3eu: a sign lost in the algebra, not arithmetic.
+    work = "10u = 2 v_A2 + 3 v_B2\nv_B2 - v_A2 = 5eu\n5 v_B2 = 10u + 10eu, so v_B2 = 2u + 2eu\nv_A2 = v_B2 - 5eu = 2u + 3eu\n"
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "algebra")

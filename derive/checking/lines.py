@@ -140,7 +140,7 @@ class Trace(Carrying):
                 self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
-        if self.world is not None and self.holds(pairs, self.world):
+        if self.world is not None and (self.holds(pairs, self.world) or workedslips.speed_of_reversed(self, pairs)):
             self._wrote_wrong(line)
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
@@ -269,13 +269,15 @@ class Trace(Carrying):
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
         diags = fresh if fresh and len(fresh) < len(diags) else diags
+        pinned = workedslips.pinned(self, bad)  # its unknowns stated right already: no mistake's world
+        diags = () if pinned else diags
         if v.rule in ("mistaken_equation", "solves_as_mistake") and (copied := slipworld.number_copied(self, bad)):
             return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if (combined := carried.combined(self, bad, diags)) is not None:  # (1) − (2): a sign lost
             return ((), *combined)
-        if not diags:
+        if not diags and not pinned:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
@@ -283,6 +285,8 @@ class Trace(Carrying):
         if not diags:
             if self._ke_formula(bad):
                 return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
+            if workedslips.energy_masses_swapped(self, bad, lambda p: self.holds([p], self.world or self.truth)):
+                return (), KEPT, workedslips.SWAPPED, "masses_swapped"
             early = self._rounded_early(line, bad)
             if early:
                 return diags, j, early, ""
@@ -293,8 +297,10 @@ class Trace(Carrying):
             at, held = (self.U, self.pts[0]), lambda p: self.holds([p], world)
             name = slipnames.solving_slip(line.sides, self.pairs(line), self.previous, at, held)
             name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held)
+            name = workedslips.sign_over_number(self, bad, name, held)
             if not name and carried.worked_wrongly(self, line, world):
-                return diags, None, WORKING, "arithmetic"
+                name = workedslips.sign_over_number(self, bad, "arithmetic", held)  # a sign lost in letters
+                return diags, None, WORKING if name == "arithmetic" else slipnames.FLIPPED[name], name
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
