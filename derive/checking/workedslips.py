@@ -137,6 +137,8 @@ def pinned(trace, bad: Pair) -> bool:
     unknowns = bad.difference.free_symbols & set(trace.U)
     if trace.slips or trace.world is not None or not unknowns:
         return False
+    if any(x.is_Symbol for x in (bad.left, bad.right)):
+        return False  # ``v_1f = (27 - 22)/49 (3.5)``: the value itself worked afresh, the masses swapped in it
     alone = {next(iter(s)) for p in trace.held if len(s := p.difference.free_symbols & set(trace.U)) == 1}
     return unknowns <= alone
 
