@@ -375,3 +375,40 @@ def test_energies_worked_with_a_given_copied_wrongly_are_carried(tmp_path) -> No
     assert found[1][:2] == ("wrong", "copied_wrong")
     assert found[2][0] == "correct"
     assert [found[n][0] for n in (3, 4, 5, 6)] == ["carried"] * 4
+
+
+def test_a_chain_stage_slip_in_one_equation_is_carried_with_the_students_own_values() -> None:
+    # AQA M3 2007 as a chain: A 0.3 kg at 3, B 0.2 kg at 2 toward it, e = 0.8, wall e = 0.7.
+    # Momentum 0.9 - 0.4 = 0.5, written 0.6 (arithmetic); restitution y - x = 4 right. The
+    # student's own: 0.3x + 0.2(x + 4) = 0.6 -> x = -0.4, y = 3.6; the wall: -0.7(3.6) = -2.52
+    # (truly x = -0.6, y = 3.4, w_B = -2.38): each line after is carried, into the wall's stage.
+    work = (
+        "Let x and y be the velocities of A and B after the impact (A's direction positive).\n"
+        "0.3(3) + 0.2(-2) = 0.3x + 0.2y\n"
+        "0.3x + 0.2y = 0.6\n"
+        "y - x = 0.8(3 + 2) = 4\n"
+        "0.3x + 0.2(x + 4) = 0.6, so x = -0.4\n"
+        "y = -0.4 + 4 = 3.6\n"
+        "B rebounds from the wall: w_B = -0.7(3.6) = -2.52\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2][0] == found[4][0] == "correct"
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert [found[i][0] for i in (5, 6, 7)] == ["carried"] * 3
+
+
+def test_a_chain_stage_mistake_gives_the_declared_names_its_values() -> None:
+    # The same chain, the masses swapped in the momentum: 0.2(3) + 0.3(-2) = 0 = 0.2x + 0.3y,
+    # with y - x = 4: 0.5x + 1.2 = 0 -> x = -2.4, y = 1.6; the wall: -0.7(1.6) = -1.12.
+    work = (
+        "Let x and y be the velocities of A and B after the impact (A's direction positive).\n"
+        "0.2(3) + 0.3(-2) = 0.2x + 0.3y\n"
+        "y - x = 0.8(3 + 2) = 4\n"
+        "0.2x + 0.3(x + 4) = 0\n"
+        "0.5x = -1.2, x = -2.4\n"
+        "y = -2.4 + 4 = 1.6\n"
+        "B rebounds from the wall: w_B = -0.7(1.6) = -1.12\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2][:2] == ("wrong", "masses_swapped") and found[3][0] == "correct"
+    assert [found[i][0] for i in (4, 5, 6, 7)] == ["carried"] * 4

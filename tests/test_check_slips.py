@@ -860,3 +860,126 @@ def test_a_rule_of_motion_with_its_factor_2_lost_in_a_chain_is_algebra() -> None
     # a wrong number that is not a factor 2 off is not named algebra
     found = lines(problem, head + "h = 1.4925^2/(3 x 9.81) = 0.0757\n")
     assert found[3][0] == "wrong" and found[3][1] != "algebra"
+
+
+def test_energy_conserved_for_the_momentum_where_a_mass_and_e_are_unknown() -> None:
+    # OCR M2 2011: A (m_A?) at 3, B 0.2 kg at -1.5; after A 2, B 2.9. Kinetic energy "kept" in
+    # place of the momentum: 4.5 m_A + 0.225 = 2 m_A + 0.841 -> 2.5 m_A = 0.616, m_A = 0.246
+    # (the momentum gives 3 m_A - 0.3 = 2 m_A + 0.58, m_A = 0.88: the mark scheme's).
+    work = "0.5 m_A (3)^2 + 0.5(0.2)(1.5)^2 = 0.5 m_A (2)^2 + 0.5(0.2)(2.9)^2\n2.5 m_A = 0.616\nm_A = 0.246\n"
+    found = lines("ocr-m2-2011-spheres-find-e-and-mass", work)
+    assert found[1][:2] == ("wrong", "energy_conserved")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_whole_number_rounded_to_three_figures_with_a_zero_is_right() -> None:
+    # OpenStax train cars: 45000 - 13200 = 31800 = 260000 v, v = 0.12231; T_2 = ½(260000)v²
+    # = 1944.7, and from v = 0.1223: 130000(0.01495729) = 1944.4: "1940" is it at 3 figures.
+    work = "150000(0.3) + 110000(-0.12) = 260000 v\nv = 0.1223\nT_2 = 0.5(260000)(0.1223)^2 = 1940\n"
+    found = lines("openstax-cp-8-train-cars-couple", work)
+    assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
+
+
+def test_the_number_of_a_relation_in_two_unknowns_worked_wrongly_is_arithmetic() -> None:
+    # Byju's: 4 kg at 12 catches 8 kg at 4: 4(12) + 8(4) = 48 + 32 = 80 = 4 v_A2 + 8 v_B2.
+    # Written 90 on the same line after "so", or 70 on the next: the terms kept, the number
+    # worked wrongly. With v_B2 - v_A2 = 4: 4 v_A2 + 8 v_A2 + 32 = 70 -> 12 v_A2 = 38 (carried).
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "4(12) + 8(4) = 4 v_A2 + 8 v_B2, so 4 v_A2 + 8 v_B2 = 90\n")
+    assert found[1][:2] == ("wrong", "arithmetic")
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\n4 v_A2 + 8 v_B2 = 70\nv_B2 - v_A2 = 0.5(12 - 4)\n12 v_A2 = 38\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert [found[i][:2] for i in (1, 2, 3)] == [("correct", ""), ("wrong", "arithmetic"), ("correct", "")]
+    assert found[4][0] == "carried"
+
+
+def test_e_as_approach_over_separation_is_restitution_reversed() -> None:
+    # Beer & Johnston 13.13: 20 Mg at 0.5 hits 35 Mg at rest, which goes on at 0.3:
+    # 10 = 20 v_A2 + 10.5 -> v_A2 = -0.025; e = (0.3 + 0.025)/0.5 = 0.65. Upside down:
+    # e = 0.5/(0.3 + 0.025) = 1.54, the impact rule's differences the wrong way round.
+    work = "20(0.5) = 20 v_A2 + 35(0.3)\nv_A2 = -0.025\ne = (0.5 - 0)/(0.3 + 0.025) = 1.54\n"
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+
+
+def test_the_wrong_kinetic_energy_formula_worked_with_the_speeds_is_carried() -> None:
+    # AQA M3 2007: A 0.3 kg at 3, B 0.2 kg at -2; after A -0.6, B 3.4. KE lost truly
+    # 1.75 - 1.21 = 0.54. As ½m(u - v)² (the slip), then worked with the speeds:
+    # 0.15(3 - 0.6)² + 0.1(2 - 3.4)² = 0.864 + 0.196 = 1.06: the same wrong formula, carried.
+    work = (
+        "v_A2 = -0.6, v_B2 = 3.4\n"
+        "KE lost = 1/2 m_A (u_A - v_A)^2 + 1/2 m_B (u_B - v_B)^2\n"
+        "= 0.5(0.3)(3 - 0.6)^2 + 0.5(0.2)(2 - 3.4)^2\n"
+        "= 0.864 + 0.196 = 1.06 J\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[1][0] == "correct" and found[2][:2] == ("wrong", "ke_formula")
+    assert found[3][0] == found[4][0] == "carried"
+
+
+def test_a_line_written_from_the_number_a_slip_came_to_is_carried_not_again() -> None:
+    # AQA discs: 0.8 kg and 0.4 kg at 6 m/s toward each other; B's sign lost in the total:
+    # 4.8 + 2.4 = 7.2 (truly 2.4). The next line writes 7.2: worked from it, carried, not
+    # B's sign lost afresh; 8.16/0.4 = 20.4 carried too.
+    work = "total momentum before: 0.8(6) + 0.4(6) = 7.2\n7.2 = 0.8(-1.2) + 0.4 v_B2\nv_B2 = 8.16/0.4 = 20.4\n"
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert found[2][0] == found[3][0] == "carried"
+
+
+def test_a_right_relation_after_a_slip_joins_the_students_world() -> None:
+    # OCR M2 2006: 2 kg and 1 kg at 5 m/s toward each other, e = 0.8. B's sign lost in the
+    # momentum only: 10 + 5 = 15 = 2 v_A2 + v_B2; the approach right, v_B2 - v_A2 = 8. Then
+    # 2 v_A2 + v_A2 + 8 = 15, v_A2 = 7/3 = 2.33 (truly -1): both carried.
+    work = (
+        "momentum before = 2(5) + 1(5) = 15\n"
+        "15 = 2 v_A2 + v_B2\n"
+        "v_B2 - v_A2 = 0.8(5 + 5) = 8\n"
+        "3 v_A2 + 8 = 15\n"
+        "v_A2 = 2.33\n"
+    )
+    found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
+    assert found[1][:2] == ("wrong", "b_sign") and found[3][0] == "correct"
+    assert [found[i][0] for i in (2, 4, 5)] == ["carried"] * 3
+
+
+def test_a_term_not_multiplied_out_in_substituting_is_algebra() -> None:
+    # AQA M3 2009: m at 5u catches 7m at u. 12u = v_A2 + 7 v_B2, v_B2 - v_A2 = e(5u - u) = 4eu.
+    # Substituted: 12u = 8 v_A2 + 28eu, v_A2 = u(3 - 7e)/2; with the 7 not multiplying 4eu:
+    # 12u = 8 v_A2 + 4eu (algebra), v_A2 = u(3 - e)/2 (carried).
+    work = "5u + 7u = v_A2 + 7 v_B2\nv_B2 - v_A2 = 4eu\n12u = v_A2 + 7 v_A2 + 4eu\nv_A2 = u(3 - e)/2\n"
+    found = lines("aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra") and found[4][0] == "carried"
+
+
+def test_the_speed_of_a_body_said_to_reverse_written_as_minus_its_slipped_velocity_is_carried() -> None:
+    # CIE 2014 Nov Q1: 2m at 4u meets m at 3u; 5u = 2 v_A2 + v_B2, v_B2 - v_A2 = 7eu, so
+    # 5u = 3 v_A2 + 7eu. With the 7 lost (algebra): v_A2 = u(5 - e)/3, and A, said to
+    # reverse, has speed -v_A2 = u(e - 5)/3 as the student works it: carried.
+    work = "8u - 3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 7eu\n5u = 3 v_A2 + eu\nv_A2 = u(5 - e)/3\n|v_A2| = u(e - 5)/3\n"
+    found = lines("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == found[5][0] == "carried"
+
+
+def test_a_kinetic_energy_with_the_masses_exchanged_is_masses_swapped_and_its_working_carried() -> None:
+    # Edexcel M2 2004: 2m at 5u hits 3m at rest: v_A2 = 2u - 3eu, v_B2 = 2u + 2eu. KE after
+    # truly ½(2m)v_A2² + ½(3m)v_B2²; written ½(3m)v_A2² + ½(2m)v_B2², then worked out from it.
+    work = (
+        "v_A2 = 2u - 3eu, v_B2 = 2u + 2eu\n"
+        "KE after = 1/2 (3m) v_A2^2 + 1/2 (2m) v_B2^2\n"
+        "= (3/2) m (2u - 3eu)^2 + m (2u + 2eu)^2\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert found[1][0] == "correct" and found[2][:2] == ("wrong", "masses_swapped")
+    assert found[3][0] == "carried"
+
+
+def test_a_sign_lost_in_letters_working_out_a_velocity_is_algebra() -> None:
+    # Edexcel M2 2004: 10u = 2 v_A2 + 3 v_B2, v_B2 - v_A2 = 5eu -> v_B2 = 2u + 2eu; then
+    # v_A2 = v_B2 - 5eu = 2u - 3eu, written 2u + 3eu: a sign lost in the algebra, not arithmetic.
+    work = "10u = 2 v_A2 + 3 v_B2\nv_B2 - v_A2 = 5eu\n5 v_B2 = 10u + 10eu, so v_B2 = 2u + 2eu\nv_A2 = v_B2 - 5eu = 2u + 3eu\n"
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "algebra")

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
-from derive.checking import misread, slipnames, slipworld
+from derive.checking import misread, slipnames, slipworld, workedslips
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
@@ -155,6 +155,8 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
     if given_negated(trace, bad):
         return 0, slipnames.FLIPPED["b_sign"], "b_sign"  # 0: no equation replaced
     flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
+    if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds)) is not None:
+        return trace._closest(scaled), workedslips.SCALED, "algebra"  # a factor lost in substituting
     if not flip:
         return None
     if right is not None and right.free_symbols & set(trace.U):

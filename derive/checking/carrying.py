@@ -31,7 +31,10 @@ Line = Read
 
 #: A line that goes on from the one above: "=" first, after any markup that opens it (a list's
 #: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing).
-_GOES_ON = re.compile(r"\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)")  # one $ a step: no backtracking
+_GOES_ON = re.compile(
+    r"\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)"
+)  # one $ a step: no backtracking
+GOES_ON = _GOES_ON  # a line that goes on from the one before ("= ...")
 
 #: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
 _TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")

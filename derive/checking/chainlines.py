@@ -16,7 +16,7 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainnames, mistakes, principles, words
+from derive.checking import chainnames, chainsolve, mistakes, principles, words
 from derive.checking import ownquantities as own
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
@@ -95,7 +95,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             item = rule_named(ctx, item, (sides, exprs), reread, at)
             if not item.slip and copied_into_working(ctx, sides, exprs, at):
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
-            if not item.slip and _solved_wrongly(exprs, previous, sides):
+            if not item.slip and (_solved_wrongly(exprs, previous, sides) or chainsolve.number_worked(exprs, previous)):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
             flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
             if flip:  # a sign lost, a ½ dropped, e's ratio upside down
@@ -109,6 +109,10 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
         if item.status == "correct" and slips and len(exprs) == 2:
             own_root(exprs, values, own_defs, _givens(ctx))
+        if item.status == "correct" and slips:  # the stage's names as the student's relations make them
+            chainsolve.resolved(ctx, exprs, written[:-1], own_defs, values, (_givens(ctx), alias))
+        if slips and item.status != "not read":  # a later stage's values, from the student's wrong ones
+            chainsolve.downstream(ctx, own_defs, values, _givens(ctx), written)
         if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
@@ -401,7 +405,7 @@ def _named(ctx, item: Item, sides, exprs, values, true_defs, own_defs, stages: S
     the student is solved for it (``½(0.020)(300²) = ½(4.02) V²``) and its root kept."""
     for name, given in stages:
         if _holds(ctx, sides, exprs, [{**true_defs, **given}, values]):
-            own_defs.update({k: v for k, v in given.items() if k not in own_defs})
+            own_defs.update({k: v for k, v in given.items() if own_defs.get(k, true_defs.get(k)) == true_defs.get(k)})
             phrase = mistakes.phrase(name) or name
             lead = item.message.split(": ")[0]
             return replace(item, slip=name, message=f"{lead}: it {phrase}.")

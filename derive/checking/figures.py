@@ -81,6 +81,10 @@ def literal_tolerance(text: str, data: set[sympy.Rational]) -> float:
     tol = 0.0
     for m in _LITERAL.finditer(text):
         tok = m.group(1)
+        place = rounded_whole(tok or "")
+        if place is not None and sympy.Rational(tok) not in data:
+            tol += float(place / Decimal(tok))
+            continue
         if not tok or not re.search(r"[.eE]", tok):
             continue
         if len(tok) > 30 or abs(Decimal(tok).adjusted()) > 30:
@@ -103,6 +107,13 @@ def side_slack(side: str, data: set[sympy.Rational], read: Callable[[str], float
         return None
     for m in _LITERAL.finditer(side):
         tok = m.group(1)
+        place = rounded_whole(tok or "")
+        if place is not None and sympy.Rational(tok) not in data:
+            moved = read(side[: m.start(1)] + str(Decimal(tok) + place) + side[m.end(1) :])
+            if moved is None:
+                return None
+            total += abs(moved - start)
+            continue
         if not tok or not re.search(r"[.eE]", tok) or len(tok) > 30:
             continue
         d = Decimal(tok)
@@ -113,3 +124,13 @@ def side_slack(side: str, data: set[sympy.Rational], read: Callable[[str], float
             return None
         total += abs(moved - start)
     return total
+
+
+def rounded_whole(tok: str) -> Decimal | None:
+    """One unit in the last place of a whole number rounded to the tens or further with at
+    least three figures before its zeros (2130 for 2133.3, as 3 figures are written), as
+    :func:`literal_tolerance` allows a decimal's; None for any other (12000 and 7452 are exact)."""
+    if not tok.isdigit() or not tok.endswith("0") or len(tok) > 30:
+        return None
+    core = tok.rstrip("0")
+    return Decimal(10) ** (len(tok) - len(core)) if len(core) >= 3 else None

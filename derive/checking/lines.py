@@ -18,16 +18,28 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import carried, cofunctions, labelled, misread, mistakes, slipnames, slipworld, termslips, words
+from derive.checking import (
+    carried,
+    cofunctions,
+    labelled,
+    misread,
+    mistakes,
+    slipnames,
+    slipworld,
+    termslips,
+    words,
+    workedslips,
+)
 from derive.checking.bodywords import as_typed, body_words
 from derive.checking.carrying import Carrying, together
 from derive.checking.context import DEG, Context
 from derive.checking.equation import judge, relation
 from derive.checking.inference import Read, read_lines
 from derive.checking.number import line_answer
-from derive.checking.numeric import listed, number_of
+from derive.checking.numeric import listed
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
+from derive.checking.words import sides_unequal
 from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures
 from derive.errors import InputError
 from derive.mathtext.notation import student
@@ -137,7 +149,7 @@ class Trace(Carrying):
                 self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
-        if self.world is not None and self.holds(pairs, self.world):
+        if self.world is not None and (self.holds(pairs, self.world) or workedslips.speed_of_reversed(self, pairs)):
             self._wrote_wrong(line)
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
@@ -149,6 +161,8 @@ class Trace(Carrying):
         self._wrote_wrong(line)
         if self._with_own_values(line) or self._with_terms_put_right(line) or self._with_slips_results(line, pairs):
             return carried.again_item(self, line, pairs) or self._carried(line)  # resolved afresh: again
+        if workedslips.wrong_energy_worked(self, line, pairs):  # = 0.5(0.8)(4 - 1.2)²: the wrong formula's working
+            return self._carried(line)
         self._own_value(line)
         return self._slip(line, pairs, answer)
 
@@ -180,6 +194,7 @@ class Trace(Carrying):
         notes = ()
         if self.world is not None and not self.holds(pairs, self.world):
             notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
+            workedslips.into_world(self, line, pairs)
         if answer is not None:
             return self._item(line, "correct", answer.message, answer.method, notes=notes, expected=answer.expected)
         arithmetic = not any(p.difference.free_symbols & set(self.U) for p in pairs) and not line.own_names
@@ -216,6 +231,9 @@ class Trace(Carrying):
             lead = "The first line that is false for this problem"
         self.named[line.number] = {d.mistake for d in diags}
         self._replace(line, bad, j, slip=not again)  # the same mistake again is not a further slip
+        if again and workedslips.works_from_slip(self, line, again[0]):  # 7.2 = -0.96 + 0.4v: its number
+            del self.named[line.number]
+            return self._carried(line)
         expected = answer.expected if answer is not None else ""
         if not expected and j and bad.difference.free_symbols & set(self.U):
             nm = self.ctx.model.nm
@@ -253,7 +271,8 @@ class Trace(Carrying):
             text = " = ".join(line.sides)
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
-            return (), None, ": " + self._arithmetic(bad), ""
+            self._number_wrong(bad)
+            return (), None, ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
         label = line.tag if line.tag in ("1", "2", "3", "4") else ""
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
@@ -262,13 +281,15 @@ class Trace(Carrying):
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
         diags = fresh if fresh and len(fresh) < len(diags) else diags
+        pinned = workedslips.pinned(self, bad)  # its unknowns stated right already: no mistake's world
+        diags = () if pinned else diags
         if v.rule in ("mistaken_equation", "solves_as_mistake") and (copied := slipworld.number_copied(self, bad)):
             return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None else self._closest(bad.difference)
         if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
-        if not diags:
+        if not diags and not pinned:
             diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
@@ -276,6 +297,8 @@ class Trace(Carrying):
         if not diags:
             if self._ke_formula(bad):
                 return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
+            if workedslips.energy_masses_swapped(self, bad, lambda p: self.holds([p], self.world or self.truth)):
+                return (), KEPT, workedslips.SWAPPED, "masses_swapped"
             early = self._rounded_early(line, bad)
             if early:
                 return diags, j, early, ""
@@ -283,11 +306,16 @@ class Trace(Carrying):
             if further is not None:
                 return self.ctx.diagnosis(further[0]), further[1], f": it {further[0].phrase}.", ""
             world = self.world if self.world is not None else self.truth
-            name = slipnames.solving_slip(
-                line.sides, self.pairs(line), self.previous, (self.U, self.pts[0]), lambda p: self.holds([p], world)
-            )
+            at, held = (self.U, self.pts[0]), lambda p: self.holds([p], world)
+            name = slipnames.solving_slip(line.sides, self.pairs(line), self.previous, at, held)
+            name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held)
+            name = workedslips.sign_over_number(self, bad, name, held)
             if not name and carried.worked_wrongly(self, line, world):
-                return diags, None, *termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
+                words, name = termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
+                if name == "arithmetic":
+                    name = workedslips.sign_over_number(self, bad, name, held)  # a sign lost in letters
+                    words = WORKING if name == "arithmetic" else slipnames.FLIPPED[name]
+                return diags, None, words, name
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
@@ -365,15 +393,6 @@ class Trace(Carrying):
             self.early = line.number
             self.wrong_values |= {t for t in slipnames.early_numbers(self.ctx, line.sides) if "." in t}
         return words
-
-    def _arithmetic(self, bad: Pair) -> str:
-        left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
-        sides = bad.text.split(" = ")
-        self._number_wrong(bad)
-        if left is None or right is None or self.pts[0]:  # no sample values of symbolic givens are shown
-            return "its two sides are not equal (an arithmetic or algebra slip)."
-        left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
-        return words.unequal(words.student_text(left_text), left.real, sides[1], right.real)
 
     # the world of the slips ------------------------------------------------
     def _replace(self, line: Line, bad: Pair, j: int | None = None, slip: bool = True) -> None:

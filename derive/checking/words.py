@@ -13,6 +13,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from derive.checking.numeric import number_of
+
 #: Greek letters as a student sees them (their LaTeX and plain names are the keys).
 GREEK_SHOWN = {
     "alpha": "α",
@@ -411,3 +413,14 @@ def _last_place(number: str) -> int:
     """The power of ten of a written number's last figure (``4.75`` -> -2, ``120`` -> 0)."""
     digits = number.lstrip("+-")
     return -len(digits.split(".")[1]) if "." in digits else 0
+
+
+def sides_unequal(text: str, left: Any, right: Any, point: dict) -> str:
+    """Why a line of numbers is false, in the student's text: its two sides worked out (never
+    sample values of symbolic givens: ``point`` holds them)."""
+    lv, rv = (number_of(x.xreplace(point)) for x in (left, right))
+    sides = text.split(" = ")
+    if lv is None or rv is None or point:
+        return "its two sides are not equal (an arithmetic or algebra slip)."
+    left_text = re.sub(r"(?<=[\w).])([-+*/])", r" \1 ", sides[0]).replace(" * ", " ")
+    return unequal(student_text(left_text), lv.real, sides[1], rv.real)

@@ -73,9 +73,11 @@ def e_speeds(model: Model) -> Variant | None:
     "conserves kinetic energy instead of applying the impact rule",
 )
 def energy_conserved(model: Model) -> Variant | None:
-    """(4) replaced by T_1 = T_2, whose nontrivial root is that of e = 1."""
+    """(4) replaced by T_1 = T_2, whose nontrivial root is that of e = 1. Where e is an unknown
+    (a mass or e to find) there is no e to put in: only its forms, the energy in place of the
+    momentum (:func:`energy_for_momentum`), are written."""
     if model.e in model.unknowns:
-        return None
+        return Variant(energy=True)
     return Variant(e=sympy.Integer(1), energy=True)
 
 
