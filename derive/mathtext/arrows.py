@@ -33,3 +33,15 @@ def arrows_said(plain: str) -> str:
 def _said(m: re.Match[str]) -> str:
     """The direction an arrow after a value points, in words (``↓``: downwards)."""
     return " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"
+
+
+#: A line of a display that starts with an arrow that means "so" (``\quad\Longrightarrow\quad \tan\beta = …``,
+#: ``\implies v = 2``, ``⇒ v = 2``): a new relation, on the line it is typed on.
+_SO_FIRST = re.compile(
+    r"^\s*(?:&\s*)?(?:\\(?:q?quad|[,;:! ])\s*)*(?:⇒|⟹|\\(?:Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])|∴)"
+)
+
+
+def starts_with_so(row: str) -> bool:
+    """Whether ``row`` (a line of a display, LaTeX as typed) starts with an arrow that means "so"."""
+    return _SO_FIRST.match(row) is not None
