@@ -693,3 +693,93 @@ def test_a_reversed_frame_said_turns_both_impulses() -> None:
     # B toward A positive (the givens written -12 and -4): the impulse on A is +32, on B -32
     work = "v_A1 = -12, v_B1 = -4\nimpulse on A = 32 N s\nimpulse on B = -32 N s"
     assert set(by_line("byjus-4kg-ball-catches-8kg-ball", work).values()) == {"correct"}
+
+
+# --- the statement's letters for the bodies, and names declared by them in words ----------------
+@pytest.mark.parametrize(
+    ("problem", "expected"),
+    [
+        # "A smooth sphere P lies at rest ... a second identical sphere Q, moving on the plane, collides
+        # with P": derive's moving body A is Q, the one at rest (v_B1 = 0) is P.
+        ("edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta", {"P": "B", "Q": "A"}),
+        # "sphere P of mass 2m moves at speed u ... strikes ... sphere Q of mass m that is at rest"
+        ("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", {"P": "A", "Q": "B"}),
+    ],
+)
+def test_the_statements_letters_are_matched_to_the_bodies_by_which_is_at_rest(problem: str, expected: dict) -> None:
+    from derive.checking.context import Context
+    from derive.checking.statementbodies import statement_bodies
+
+    assert statement_bodies(Context(derive.solve(derive.load(problem)), None)) == expected
+
+
+M4_2005 = "edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta"
+
+
+def test_names_declared_by_the_statements_letters_are_those_bodies() -> None:
+    # Q (mass m, speed u at alpha to the line of centres) hits P at rest: along the line of centres
+    # p + q = u cos a, q - p = e u cos a -> p = u cos a (1 - e)/2; Q keeps u sin a across, so
+    # tan(beta) = u sin a / p = 2 tan a/(1 - e), the printed result.
+    work = (
+        "Let p = Q after, q = P after, both along the line of centres.\n"
+        "m u cos α = m p + m q\nq - p = e u cos α\np = (1/2) u cos α (1 - e)\n"
+        "tan β = u sin α / p = 2 tan α / (1 - e)\n"
+    )
+    assert by_line(M4_2005, work) == {"2": "correct", "3": "correct", "4": "correct", "5": "correct"}
+
+
+def test_nel_the_wrong_way_round_in_the_statements_letters_is_wrong() -> None:
+    # With p for Q (A) and q for P (B), separation is q - p: p - q = e u cos a reverses it.
+    work = "Let p = Q after, q = P after, both along the line of centres.\nm u cos α = m p + m q\np - q = e u cos α\n"
+    r = report(M4_2005, work)
+    (line3,) = [i for i in r.items if i.kind == "line" and i.name == "3"]
+    assert line3.status == "wrong"
+    assert "restitution_reversed" in [d.mistake for d in line3.diagnosis]
+
+
+def test_a_prime_between_the_letter_and_the_body_is_after() -> None:
+    # Beer & Johnston 13.13 (20 Mg at 0.5 m/s hits 35 Mg at rest, B leaves at 0.3 m/s): the engineers'
+    # v'A, v'B are after, so vA, vB are before: 20(0.5) = 20 v'A + 35(0.3) -> v'A = -0.025 m/s;
+    # e = (0.3 + 0.025)/0.5 = 0.65.
+    work = (
+        "vA = 0.5 m/s, vB = 0, v'B = 0.3 m/s\n20(0.5) = 20 v'A + 35(0.3)\nv'A = -0.025 m/s\n"
+        "e = (v'B - v'A)/(vA - vB) = 0.65\n"
+    )
+    assert set(by_line("beer-johnston-13-13-railroad-cars-find-e", work).values()) == {"correct"}
+
+
+def test_the_angle_of_a_moving_bodys_velocity_not_said_after_is_its_angle_before() -> None:
+    # OCR M3 2007 Q4: A at 15 m/s at alpha to the line of centres, sin alpha = 0.8, so cos alpha = 0.6
+    # and its component along is 15(0.6) = 9. Nothing says "after": theta is the angle A comes in at.
+    work = (
+        "Let θ be the angle between A's velocity and the line of centres.\n"
+        "sin θ = 0.8, so cos θ = 0.6\nalong the line of centres A has 15 cos θ = 9\n"
+    )
+    assert by_line("ocr-m3-2007-oblique-sin-alpha-0p8", work) == {"2": "correct", "3": "correct"}
+
+
+def test_m_glued_to_a_name_of_the_students_own_is_the_mass_times_it() -> None:
+    # OCR MEI 2022 Q11 (equal masses m, A at speed U at 30° to the line of centres, e = 1/2): along the
+    # line of centres a + b = (√3/2)U and b - a = (1/2)(√3/2)U -> b = 3√3U/8, a = √3U/8. "ma + mb"
+    # is m a + m b, as "mx + my" is where m is a given.
+    work = (
+        "let U = v_A1\n"
+        "Momentum along the line of centres: ma + mb = m(√3/2)U\n"
+        "NEL: b − a = ½ (√3/2)U\nb = 3√3U/8, a = √3U/8\n"
+    )
+    found = by_line("ocr-mei-fmm-2022-offset-spheres-symbolic", work)
+    assert [found.get(n) for n in ("2", "3", "4")] == ["correct"] * 3
+
+
+def test_names_declared_with_be_and_a_possessive_are_declared() -> None:
+    # "Let x be A's velocity after and y be B's velocity after": read as declared, not guessed from
+    # the relations (a slip in them cannot move what the words said). BYJU'S: 4 kg at 12 m/s catches
+    # 8 kg at 4 m/s, e = 0.5: 4(12) + 8(4) = 4x + 8y, y - x = 0.5(12 - 4) -> x = 4, y = 8.
+    work = (
+        "Let x be A's velocity after and y be B's velocity after, both in A's direction.\n"
+        "CLM: 4(12) + 8(4) = 4x + 8y\nNEL: y - x = 0.5(12 - 4)\nx = 4, y = 8\n"
+    )
+    r = report("byjus-4kg-ball-catches-8kg-ball", work)
+    assert "x: A's velocity after the impact (as you declared)." in r.names
+    assert "y: B's velocity after the impact (as you declared)." in r.names
+    assert set(by_line("byjus-4kg-ball-catches-8kg-ball", work).values()) == {"correct"}

@@ -1247,3 +1247,156 @@ def test_a_symbolic_component_labelled_by_its_axis_in_words_is_that_component(wo
     items = [i for i in report(ALONG_WALL, work).items if i.kind == "line"]
     assert [i.status for i in items] == expected
     assert all(i.slip == "sin_cos_swapped" for i in items if i.status == "wrong")
+
+
+# --- a bracket whose only words are Greek letters' or functions' names is mathematics ------
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("w - 0 = e (u - lambda u)", ("w - 0", "e (u - lambda u)")),
+        ("v = e (U sin alpha)", ("v", "e (U sin alpha)")),
+        ("x = m (u cos theta + omega t)", ("x", "m (u cos theta + omega t)")),
+        ("v = 2 (reversed)", ("v", "2")),  # a word: a remark
+        ("v = 3 (sine rule, with theta)", ("v", "3")),
+    ],
+)
+def test_a_bracket_of_greek_names_after_a_space_is_a_factor(text: str, expected: tuple) -> None:
+    assert sides(text)[0] == expected
+
+
+def test_a_factor_in_brackets_with_greek_words_is_judged() -> None:
+    # Edexcel FM1 2023 Q7: V cos(beta) = U cos(alpha) along the cushion, V sin(beta) = e_1 U sin(alpha)
+    # across it, so tan(beta) = e_1 tan(alpha) (the mark scheme's answer), LaTeX's \, read as a space.
+    work = "V cos beta = U cos alpha\nV sin beta = e_1 (U sin alpha)\n$\\tan\\beta = e_1\\,(\\tan\\alpha)$\n"
+    assert statuses("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == ["correct"] * 3
+
+
+# --- a lead-in naming its axis in brackets; a body's letter said to be after in words --------
+@pytest.mark.parametrize(
+    ("text", "label", "expected"),
+    [
+        ("CLM (i): ma + mb = 3m", "CLM (i)", ("ma + mb", "3m")),
+        ("Momentum (x): 2(6) + 4(0) = 2v + 4(2.5)", "Momentum (x)", ("2(6) + 4(0)", "2v + 4(2.5)")),
+        ("NLR(along l.o.c.): b - a = 2", "NLR(along l.o.c.)", ("b - a", "2")),
+    ],
+)
+def test_a_lead_in_with_its_axis_in_brackets_is_a_label(text: str, label: str, expected: tuple) -> None:
+    (r,) = read_relations(text)
+    assert (r.label, r.sides) == (label, expected)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("so after the impact B = (w, 2.5)", [("B_n'", "w"), ("B_t'", "2.5")]),
+        (
+            "After the collision A = (a, 12) and B = (b, 0)",
+            [("A_n'", "a"), ("A_t'", "12"), ("B_n'", "b"), ("B_t'", "0")],
+        ),
+        ("Afterwards: A = 3i + 2j", [("A_n'", "3"), ("A_t'", "2")]),
+        ("Before: A = (6, 0), B = (0, 2.5)", [("A_n", "6"), ("A_t", "0"), ("B_n", "0"), ("B_t", "2.5")]),
+        ("after the impact V = 3", [("V", "3")]),  # a speed's own letter, not a body's
+    ],
+)
+def test_a_bodys_letter_said_to_be_after_in_words_is_after(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_velocities_as_pairs_before_and_after_in_words_are_judged() -> None:
+    # OCR MEI 2021 (A 2 kg at 6 along the line of centres, B 4 kg at 2.5 across it, B leaves at 45°):
+    # B keeps 2.5 across, so its component along is 2.5/tan 45° = 2.5; 12 = 2v + 10 -> v = 1;
+    # e = (2.5 - 1)/6 = 0.25. The same letters A, B before and after, told apart by the words.
+    work = (
+        "Take x along the line of centres and y across it.\n\n"
+        "Before: A = (6, 0), B = (0, 2.5).\n\n"
+        "After the collision A = (v, 0) and B = (w, 2.5), and B moves at 45° to the line of centres, so w = 2.5.\n\n"
+        "CLM (x): 2(6) = 2v + 4w\n\nv = 1\n\nNEL (x): w - v = e(6 - 0)\n\ne = 0.25\n"
+    )
+    assert statuses("ocr-mei-fmm-2021-b-at-45deg-find-e", work) == ["correct"] * 6
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("**Ex. 3.12** the red ball $m_r = 0.2$ kg", ("m_r", "0.2")),
+        ("13.13 railroad car m = 20", ("m", "20")),
+        ("P8.96a blue puck M_b = 0.04", ("M_b", "0.04")),
+    ],
+)
+def test_an_exercises_number_and_words_before_a_name_are_not_its_name(text: str, expected: tuple) -> None:
+    assert sides(text)[0] == expected
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("alpha = 73.0° (72.98°)", ("alpha", "73.0°")),  # 72.98 rounds up to 73.0
+        ("$\\theta = 40^\\circ \\quad (39.8^\\circ)$", ("theta", "40°")),
+        ("p = 35% (34.7%)", ("p", "35%")),
+        ("v = 3.1 (2.96)", ("v", "3.1 (2.96)")),  # not the value to more figures: a product
+    ],
+)
+def test_an_angle_to_more_figures_in_brackets_is_no_factor(text: str, expected: tuple) -> None:
+    assert sides(text)[0] == expected
+
+
+@pytest.mark.parametrize(
+    ("line", "expected"),
+    [
+        ("speed after = e x 4 = 1.2 m/s", ["correct"]),  # OCR M2 2012: 0.3 x 4 = 1.2 m/s back from the wall
+        ("u_A x 2 = 8", ["correct"]),  # u_A = 4 before: a name with a subscript times 2
+    ],
+)
+def test_x_for_times_after_a_letter_is_times(line: str, expected: list) -> None:
+    assert statuses("ocr-m2-2012-particle-hits-wall", line) == expected
+
+
+def test_a_display_line_that_starts_with_an_arrow_is_read_on_its_own_line() -> None:
+    text = "\\[\nx = 2 + 3\n\\quad\\Longrightarrow\\quad y = 5\n\\]\n$$\na = 1\n\\implies b = 2\n$$"
+    assert [(r.line, r.sides) for r in read_relations(text)] == [
+        (2, ("x", "2 + 3")),
+        (3, ("y", "5")),
+        (6, ("a", "1")),
+        (7, ("b", "2")),
+    ]
+
+
+def test_the_result_after_an_arrow_on_the_next_line_of_a_display_is_judged() -> None:
+    # Edexcel M4 June 2005 Q3: Q keeps u sin(alpha) across the line of centres and has
+    # u cos(alpha)(1 - e)/2 along it after, so tan(beta) = 2 tan(alpha)/(1 - e), the printed result.
+    work = (
+        "\\[\n\\tan\\beta = \\frac{u\\sin\\alpha}{\\tfrac12 u\\cos\\alpha(1-e)}\n"
+        "\\;\\Rightarrow\\; (1-e)\\tan\\beta = 2\\tan\\alpha\n\\]\n"
+    )
+    r = report("edexcel-m4-2005-june-q3-show-1-minus-e-tan-beta", work)
+    assert [(i.name, i.status) for i in r.items if i.kind == "line"] == [("2", "correct"), ("3", "correct")]
+
+
+def test_a_subscripted_letter_glued_to_a_capital_is_a_product() -> None:
+    # Edexcel FM1 2023 Q7: V sin(beta) = e_1 U sin(alpha), LaTeX's e_1U typed without a space.
+    work = "$V\\sin\\beta = e_1U\\sin\\alpha$\n$V\\cos\\beta = U\\cos\\alpha$\n"
+    assert statuses("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work) == ["correct", "correct"]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("A has 15(0.6) i + 15(0.8) j = 9 i + 12 j, and B has -12 i", [("15(0.6)", "9"), ("15(0.8)", "12")]),
+        ("P's velocity has components (3, 4) = (3, 2 + 2)", [("3", "3"), ("4", "2 + 2")]),
+        ("A has u = 3", [("u", "3")]),
+    ],
+)
+def test_a_body_that_has_a_velocity_leads_in_and_the_other_bodys_clause_is_no_side(text: str, expected: list) -> None:
+    assert sides(text) == expected
+
+
+def test_velocities_said_with_has_are_judged() -> None:
+    # OCR M3 June 2007 Q4: sin(alpha) = 0.8, so A's 15 m/s is 15(0.6) = 9 along the line of centres
+    # and 15(0.8) = 12 across it; B has 12 toward A.
+    work = "Initially A has 15(0.6) i + 15(0.8) j = 9 i + 12 j, and B has -12 i.\n"
+    assert statuses("ocr-m3-2007-oblique-sin-alpha-0p8", work) == ["correct"]
+
+
+def test_a_velocity_with_its_number_and_time_in_the_subscript_stays_one_name() -> None:
+    # BYJU'S: 4 kg at 12 m/s and 8 kg at 4 m/s: 4(12) + 8(4) = 80. v_{1i}: ball 1's velocity initially.
+    assert statuses("byjus-4kg-ball-catches-8kg-ball", "$4 v_{1i} + 8 v_{2i} = 80$\n") == ["correct"]

@@ -94,6 +94,7 @@ def read_lines(
         **restated(ctx, relations, reserved),
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
+    known |= {"m"} if "m_A" in problem else set()  # m for the masses (m_A = m_B = m): ma + mb is m a + m b
     split, labels = body_labels(list(relations))
     relations = tuple(split)
     rewritten: list[tuple[str, ...]] = []

@@ -138,6 +138,7 @@ def rewrite(text: str, known: set[str]) -> str:
     for pattern, name in PHRASES:
         text = re.sub(pattern, name, text, flags=re.I)
     text = times_beside_words(text)  # "e x speed before": times, beside a quantity said in words
+    text = re.sub(r"(?<![A-Za-z_])([uvVw])'_?([AB12])(?![A-Za-z0-9_])", r"\1_\2'", text)  # v'A: v_A' (engineers')
     text = re.sub(  # v' -> v_p; v_2'' (after a second impact) -> v_2pp
         r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)('+)",
         lambda m: m[1] + ("" if "_" in m[1] else "_") + "p" * len(m[2]),
@@ -164,6 +165,8 @@ def rewrite(text: str, known: set[str]) -> str:
             return " ".join(letters)
         if sub and head not in GREEK and len(letters) > 1 and all(x in known for x in letters[:-1]):
             return " ".join(letters)  # mv_Q: m times the student's own v_Q
+        if re.fullmatch(r"\d[A-Z]", sub) and f"{head}_{sub[0]}" in known:  # e_1U: e_1 times U (not v_1i, v_1f)
+            return f"{head}_{sub[0]} {sub[1]}"
         if len(word) == 2 and word[0] in known and word[1].isdigit():  # e1: e_1, or the one e (not e times 1)
             return f"{word[0]}_{word[1]}" if f"{word[0]}_{word[1]}" in known else word[0]
         if len(word) == 2 and word[0] in known and not _SHORT_WORDS.fullmatch(word.lower()) and word not in GREEK:

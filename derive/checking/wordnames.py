@@ -12,6 +12,7 @@ import re
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.statementbodies import at_rest_before, said_by_letter, statement_bodies
 
 
 def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
@@ -23,7 +24,7 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
         out.setdefault(name, x)
     for name, x in [*_along(line, ctx).items(), *_letters_for(line, ctx).items(), *_speeds_after(line, ctx).items()]:
         out.setdefault(name, x)
-    for name, x in _components_said(line, ctx).items():
+    for name, x in [*_components_said(line, ctx).items(), *said_by_letter(line, ctx).items()]:
         out.setdefault(name, x)
     return out
 
@@ -268,6 +269,8 @@ def _body(words: str, ctx: Context) -> str:
     """ "A", "B" or "" for the words that name a body: its letter, P or Q, first or second, its mass."""
     w = re.sub(r"(?<=\d)(?:kg|g|lb)$", "", re.sub(r"\s+", "", _BODY_WORDS.sub(" ", words)))  # the 4 kg ball
     a, b = ctx.problem.labels
+    if w in statement_bodies(ctx):  # the statement's P at rest: derive's B
+        return statement_bodies(ctx)[w]
     if w in (a, "A", "P", "first"):
         return "A"
     if w in (b, "B", "Q", "second"):
@@ -283,11 +286,11 @@ def _body(words: str, ctx: Context) -> str:
 
 #: "x = P's velocity after, y = Q's": a name set to a body's velocity, and the next ones by ellipsis.
 _POSSESSIVE = re.compile(
-    rf"\b{_NAME_WORD}\s*(?:=|is|denotes?|for)\s*(?:the\s+)?(\w+)['’]s\s+(?:final\s+)?(?:speed|velocity|vel\.?)"
+    rf"\b{_NAME_WORD}\s*(?:=|is|be|denotes?|for)\s*(?:the\s+)?(\w+)['’]s\s+(?:final\s+)?(?:speed|velocity|vel\.?)"
     r"\s+(?:just\s+|immediately\s+)?(after|before)\b",
     re.I,
 )
-_ELLIPSIS = re.compile(rf"^\s*(?:,|;|and)\s*{_NAME_WORD}\s*(?:=|is|for)\s*(?:the\s+)?(\w+)['’]s\b(?!\s+\w)", re.I)
+_ELLIPSIS = re.compile(rf"^\s*(?:,|;|and)\s*{_NAME_WORD}\s*(?:=|is|be|for)\s*(?:the\s+)?(\w+)['’]s\b(?!\s+\w)", re.I)
 
 
 def _possessive(line: str, ctx: Context) -> dict[str, sympy.Expr]:
@@ -332,8 +335,11 @@ _DEFLECTION = re.compile(
     rf"(?<![\w\\]){_ANGLE_NAME}\s+(?:is|=|denotes?|be)\s+(?:the\s+)?(?:angle\s+of\s+)?deflection(?:\s+of\s+(\w+))?",
     re.I,
 )
+#: Words that say a velocity is the one after the impact (its new path, after, as it leaves).
+_THEN = re.compile(r"\b(?:new|final|after(?:wards)?|now|rebound\w*|leaves?|leaving|bounces?|moves?\s+off)\b", re.I)
 _DEFLECTED = re.compile(
-    rf"\b(\w+)\s+(?:is\s+)?deflected\s+(?:through|by)\s+(?:an\s+angle\s+(?:of\s+)?)?{_ANGLE_NAME}\b", re.I
+    rf"\b(\w+)\s+(?:is\s+)?(?:deflected|deviated|turn(?:s|ed)?)\s+(?:through|by)\s+(?:an\s+angle\s+(?:of\s+)?)?{_ANGLE_NAME}\b",
+    re.I,
 )
 #: "θ is the angle between A's new path and the line of centres" (either way round).
 _LINE_WORDS = r"(line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\.?|wall|cushion|(?:common\s+)?tangent|plane\s+of\s+contact)"
@@ -366,6 +372,8 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
     found += [(m[1], m[2] or m[5], m[3] or m[4]) for m in _ANGLE_BETWEEN.finditer(plain)]
+    if not _THEN.search(plain):  # "θ is the angle between A's velocity and the l.o.c.": a moving A's, as it comes in
+        found = [f for f in found if not (_body(f[1], ctx) and not at_rest_before(ctx, _body(f[1], ctx)))]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_LEAVES.finditer(plain)]
     found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
     found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
@@ -420,9 +428,11 @@ def _zero(ctx: Context, name: str) -> bool:
 
 #: A relation that only says what a name is: ``x = P's velocity after``, ``y = Q's``,
 #: ``v = velocity of A after``: a declaration, not a relation to judge.
+#: Also a body's letter and words of when or which way (``Let x = Q along the line of centres after``).
 _SAID = re.compile(
-    r"^\s*[A-Za-z](?:_?\w{1,3})?\s*=\s*(?:the\s+)?(?:\w+['’]s(?:\s+(?:final\s+|new\s+)?(?:speed|velocity|vel\b)|\s*$)"
-    r"|(?:final\s+)?(?:speed|velocity|vel\.?)\s+of\s+)[^=]*$",
+    r"^\s*(?:(?:let|where|with|set)\s+)?[A-Za-z](?:_?\w{1,3})?\s*=\s*(?:the\s+)?(?:\w+['’]s(?:\s+(?:final\s+|new\s+)?(?:speed|velocity|vel\b)|\s*$)"
+    r"|(?:final\s+)?(?:speed|velocity|vel\.?)\s+of\s+"
+    r"|(?-i:[A-Z])\s+(?:along|across|perpendicular|parallel|after|before|afterwards|initially|finally)\b)[^=]*$",
     re.I,
 )
 

@@ -36,3 +36,15 @@ def _said(m: re.Match[str]) -> str:
     after = m.string[m.end() : m.end() + 1]
     said += " " if after and (after.isalnum() or after in "*(") else ""  # "← **Ans.**": a word apart
     return said + ")" if m[0].rstrip().endswith(")") and "(" not in m[0] else said  # "(0.2 ←)": its bracket stays
+
+
+#: A line of a display that starts with an arrow that means "so" (``\quad\Longrightarrow\quad \tan\beta = …``,
+#: ``\implies v = 2``, ``⇒ v = 2``): a new relation, on the line it is typed on.
+_SO_FIRST = re.compile(
+    r"^\s*(?:&\s*)?(?:\\(?:q?quad|[,;:! ])\s*)*(?:⇒|⟹|\\(?:Rightarrow|Longrightarrow|implies|therefore)(?![A-Za-z])|∴)"
+)
+
+
+def starts_with_so(row: str) -> bool:
+    """Whether ``row`` (a line of a display, LaTeX as typed) starts with an arrow that means "so"."""
+    return _SO_FIRST.match(row) is not None

@@ -123,7 +123,7 @@ _PART_END = re.compile(
 #: A number in brackets after a value (its unrounded value, or the value to more figures).
 _UNROUNDED = re.compile(
     r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²1]+){0,4})(?P<gap>\s+)"
-    r"\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)\s*(?:[A-Za-z/^\-\s·*⁻¹]*)\)\s*$"
+    r"\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)\s*(?:[A-Za-z/^\-\s·*⁻¹°%]*)\)\s*$"
 )
 #: A remark in square brackets after a relation, with a word in it (``[w left, 2.9 right]``).
 _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
@@ -245,6 +245,7 @@ NOTE_CHARS = 200
 def without_note(text: str) -> tuple[str, str]:
     """A relation without the note after it, and its tag where the note is one ("" where none)."""
     text = re.sub(r"\s{9,}", " " * 8, text.rstrip())  # a wide gap is a gap: bounded, as the work is
+    text = _HAS_AFTER.sub("", text)  # "…, B has -12i": the other body's, said without "="
     head, tail = text[:-NOTE_CHARS], text[-NOTE_CHARS:]
     tail, tag = _note(tail, "=" in head)
     return (head + tail).rstrip(), tag
@@ -280,6 +281,15 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     return text[: m.start()].rstrip(), tag
 
 
+def _rounds_to(more: str, value: str) -> bool:
+    """Whether ``more`` (``72.98``) rounds to ``value`` (``73.0``) at the places ``value`` has."""
+    try:
+        places = len(value.split(".")[1]) if "." in value else 0
+        return len(more) > len(value) and abs(float(more) - float(value)) <= 0.5 * 10**-places + 1e-12
+    except ValueError:
+        return False
+
+
 def _after_unit(text: str) -> bool:
     """Whether ``text`` ends in a number and its unit (``35.2 m/s``; not ``2u``)."""
     m = re.search(r"\d\s*([A-Za-z°%][A-Za-z°%/^\-·*⁻¹²³ ]*)$", text)
@@ -293,7 +303,7 @@ def _is_more_figures(m: re.Match) -> bool:
     if "." not in more or (unit and not (is_unit(unit) or unit in ("%", "°"))):
         return False
     digits = value.replace(".", "").lstrip("0").rstrip("0") or "0"
-    same = more.replace(".", "").lstrip("0").startswith(digits[:-1] or digits)
+    same = more.replace(".", "").lstrip("0").startswith(digits[:-1] or digits) or _rounds_to(more, value)
     return bool(same or unit or len(m.group("gap")) >= 2)
 
 
@@ -326,16 +336,31 @@ _WORDS_BEFORE_NUMBER = re.compile(
 def name_after_words(side: str, math_words: frozenset[str]) -> str:
     """A first side that is words and then a name (``CoM velocity V``) as the name alone; a clause
     of words before a comma (``Energy lost, using ΔKE``) dropped."""
+    side = _BODY_HAS.sub("", side, count=1)  # "A has 15 cos α i + 15 sin α j = 9i + 12j": A's, as vectors
     m = _CLAUSE_HEAD.match(side)
     if m and side[m.end() :].strip() and all(w.lower() not in math_words for w in re.findall(r"\w+", m.group(0))):
         side = side[m.end() :]
     m = _WORDS_BEFORE_NUMBER.match(side)
     if m and all(w.lower() not in math_words for w in re.findall(r"[A-Za-z]+", m.group(0))):
         return side[m.end() :]  # "that's 0.3888/1.08": the words lead in
-    m = _PROSE_HEAD.match(side)
+    ref = _REFERENCE.match(side)  # "Y&F 8.96 blue puck m_b": the exercise's number, then words
+    rest = side[ref.end() :] if ref else side
+    m = _PROSE_HEAD.match(rest)
     if m is None or any(w.lower() in math_words for w in m.group(0).split()):
         return side
-    return side[m.end() :]
+    return rest[m.end() :]
+
+
+#: A body's letter and "has" before its velocity (``A has 15 cos α i + …``, ``B's velocity has``), and the
+#: same clause after a relation, with no "=" in it (``…, B has -12i``).
+_BODY_HAS = re.compile(
+    r"^\s*(?:(?:initially|before|after(?:wards)?|finally|now)\s*,?\s+)?(?-i:[A-Z])(?:['’]s\s+velocity)?\s+has\s+"
+    r"(?:(?:the\s+)?(?:components?|velocity)\s+)?(?=[-−\d(√.]|[A-Za-z](?![A-Za-z]{2}))",
+    re.I,
+)
+_HAS_AFTER = re.compile(r"\s*,\s*(?:and\s+)?[A-Z](?:['’]s\s+velocity)?\s+has\s+[^=,;]{1,60}\.?\s*$")
+#: An exercise's reference before the words that lead in to a name (``Y&F 8.96``, ``Ex. 13.13``, ``P8.96``).
+_REFERENCE = re.compile(r"^\s*(?:[A-Za-z&]{1,8}\.?\s*)?\d{1,3}(?:\.\d{1,3})+[a-z]?\s+(?=[A-Za-z]{3})")
 
 
 #: A number and its unit, then a name set equal to something (``m_p = 0.150kg v=35.0 m/s``): a
@@ -347,8 +372,12 @@ UNIT_THEN_NAME = re.compile(
 #: side by side on one line, as a plain-text sheet lines them up (``(vA)n1 = 6.928 ft/s      (vA)t1 = 4``).
 GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)\w{0,3}|[A-Za-z]\w{0,5})'*\s*=(?!=))")
 #: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
-#: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names).
-REMARK_END = re.compile(r"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])[A-Za-z]{3})[^()]*\)\s*\.?\s*)$")
+#: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names, nor ``(u - lambda u)``, whose
+#: only words are a Greek letter's or a function's names: mathematics).
+_MATH_NAME = "|".join(sorted(GREEK | FUNCTIONS | {"sqrt", "sec", "cosec", "cot"}, key=len, reverse=True))
+REMARK_END = re.compile(
+    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*\.?\s*)$"
+)
 
 
 #: Laws of motion quoted in their textbook letters before they are used (``v^2 = u^2 + 2as``,

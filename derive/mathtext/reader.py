@@ -6,7 +6,7 @@ plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around
 HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
 relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
 "and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag
-``(3)`` is taken off, a lead-in up to a colon (``CLM:``) and a unit after a number are
+``(3)`` is taken off, a lead-in up to a colon (``CLM:``, ``CLM (i):``) and a unit after a number are
 dropped. Words stay: what a name means is the caller's business.
 
 >>> [(r.line, r.sides) for r in read_relations("2x + y = 5\\nsubtract: 3x = -3  so x = -1, y = 7")]
@@ -19,6 +19,8 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
+from derive.mathtext.afterwords import after_on_line, body_after
+from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.inline import words_end_it
 from derive.mathtext.latex import REJECTED
@@ -95,7 +97,7 @@ _PART = re.compile(
     r"|(?:Q|question\s*)\d{1,2}[a-h]?)\s*[:.]?\s+(?=[^\s=+*/^)-])",  # "Q5 m = 0.2": a question's number
     re.I,
 )
-_LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:([^=:()]*):\s*)?")
+_LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:((?:[^=:()]*[A-Za-z]{2}\s?\([^=:()]{1,20}\))?[^=:()]*):\s*)?")
 _UNIT_END = re.compile(
     rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
     r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
@@ -141,7 +143,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
         main, aside = decimal_commas(main), decimal_commas(aside)  # "0,25": nought point two
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
         for part, is_aside in parts:
-            r = relation(line, column, written, part)
+            r = after_on_line(relation(line, column, written, part), main, part)  # "After …: A = (v, 0)"
             r = replace(r, aside=True) if r is not None and is_aside else r
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
@@ -192,7 +194,7 @@ def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, 
     for number, text in rows:
         text = NESTED.sub(" ", column_vectors(text))
         parts = re.split(r"\\\\", text)
-        for k, part in enumerate(parts):
+        for k, part in ((k > 0 or starts_with_so(p), p) for k, p in enumerate(parts)):  # "\\", or a line "⟹ …"
             if k and "".join(row).strip():
                 yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
             if k:
@@ -347,7 +349,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(text))
     sides = tuple(_side(s) for s in text.split("="))
-    sides = (name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), *sides[1:])
+    sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     if quoted_law(sides):
         return None  # "v^2 = u^2 + 2as": a law quoted before it is used, not marked
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words

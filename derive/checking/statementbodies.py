@@ -1,0 +1,92 @@
+"""The letters a problem's statement gives its bodies (``A smooth sphere P lies at rest … a second
+sphere Q, moving …``), matched to derive's A and B by what the statement says of each, and the
+names a student declares by such a letter in words (``Let x = Q along the line of centres after,
+y = P after``).
+
+A statement whose bodies are not derive's A and B by letter names them by other letters: the body
+it says is at rest is the one derive has at rest (``v_B1 = 0``: B), the other is the other. Where the
+statement does not settle it, nothing is read (the caller's default stays).
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+
+#: A body's letter in a statement: "sphere P", "particle Q", "ball X" (a capital alone after the noun).
+_NOUN = r"(?:sphere|particle|ball|disc|puck|body|block|trolley|car|truck)"
+_LETTER = re.compile(rf"\b{_NOUN}\s+([A-Z])\b")
+#: The letter of a body said to be at rest ("P lies at rest", "sphere P is stationary", "a stationary sphere P").
+_AT_REST = re.compile(
+    r"\b([A-Z])\s+(?:of\s+mass\s+[\w*/.]+\s+)?(?:(?:that|which)\s+)?(?:(?:lies|is|rests|sits|stands)\s+)?"
+    rf"(?:at\s+rest|stationary)|\bstationary\s+{_NOUN}\s+([A-Z])\b"
+)
+
+
+def statement_bodies(ctx: Context) -> dict[str, str]:
+    """The statement's letters for the bodies -> derive's "A" or "B" ({} where they are A and B, or
+    where the statement does not say which is which)."""
+    statement = getattr(ctx.problem, "statement", "") or ""
+    letters = list(dict.fromkeys(_LETTER.findall(statement)))
+    labels = set(getattr(ctx.problem, "labels", ("A", "B")))
+    letters = [x for x in letters if x not in labels and x not in ("A", "B")]
+    if len(letters) != 2:
+        return {}
+    rest = _AT_REST.search(statement)
+    if rest is None:
+        return {}
+    still = rest.group(1) or rest.group(2)
+    if still not in letters:
+        return {}
+    other = letters[1 - letters.index(still)]
+    at_rest = [b for b in ("A", "B") if at_rest_before(ctx, b)]
+    if len(at_rest) != 1:
+        return {}
+    moving = "B" if at_rest[0] == "A" else "A"
+    return {still: at_rest[0], other: moving}
+
+
+def at_rest_before(ctx: Context, body: str) -> bool:
+    """Whether derive has ``body`` at rest before the impact (its velocity given as 0; a fixed wall too)."""
+    if body == "B" and getattr(ctx.problem, "fixed_B", False):
+        return True
+    for g in ctx.problem.givens:
+        if g.name in (f"v_{body}1", f"v_{body}1n") and g.value is not None:
+            try:
+                return bool(sympy.sympify(g.value) == 0)
+            except (sympy.SympifyError, TypeError):
+                return False
+    return False
+
+
+_ONE = r"([A-Za-z](?:_?\w{1,2})?)"
+_LOC = r"(?:along\s+(?:the\s+)?(?:line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\b\.?))"
+#: "x = Q along the line of centres after", "let y = P after": a name, a body's letter, when.
+_NAMED = re.compile(rf"(?:\blet\s+)?\b{_ONE}\s*=\s*([A-Z])\s+(?:({_LOC})\s*,?\s*)?(after|before)\b", re.I)
+
+
+def said_by_letter(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """The names ``line`` declares by a body's letter and words of when (``x = Q along the line of
+    centres after, y = P after``): each the body's velocity then (its component along the line of
+    centres in an oblique impact, where the line says so for it or for a name before it)."""
+    bodies = statement_bodies(ctx)
+    if not bodies:
+        return {}
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    names = ctx.equation_names()
+    out: dict[str, sympy.Expr] = {}
+    along = bool(re.search(_LOC, plain, re.I))
+    for m in _NAMED.finditer(plain):
+        body = bodies.get(m.group(2))
+        if body is None:
+            continue
+        when = "2" if m.group(4).lower() == "after" else "1"
+        key = f"v_{body}{when}n" if ctx.problem.oblique else f"v_{body}{when}"
+        if ctx.problem.oblique and not along:
+            continue
+        if key in names:
+            out.setdefault(m.group(1), names[key][0])
+    return out

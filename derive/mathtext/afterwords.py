@@ -1,0 +1,36 @@
+"""A body's letter that words say is after the impact (``so after the impact B = (w, 2.5)``,
+``After the collision A = (a, 12) and B = (b, 0)``): primed, so that ``A = (6, 0)`` before and
+``A = (v, 0)`` after are two velocities, as the words make them."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from typing import Any
+
+#: Words that say what follows is after the impact (``so after the impact B = (w, 2.5)``, ``After: A = …``).
+_AFTER_WORDS = re.compile(r"\b(?:after(?:wards)?|finally|final)\b(?![^,;]*\bbefore\b)", re.I)
+
+
+def body_after(written: str, name: str, label: str) -> str:
+    """A body's letter alone (``B``) that words before it or its lead-in say is after the impact,
+    primed (``B'``): ``A = (6, 0)`` before and ``after the impact A = (v, 0)`` are two velocities."""
+    if not re.fullmatch(r"\s*[A-Z]\s*", name) or name.strip() in "UVWIJKEFGT":  # U, V, W: a speed's own name
+        return name
+    dropped = written[: len(written) - len(name.lstrip())] if written.rstrip().endswith(name.strip()) else ""
+    if _AFTER_WORDS.search(dropped) or _AFTER_WORDS.fullmatch(label.strip()):
+        return name.strip() + "'"
+    return name
+
+
+def after_on_line(r: Any, main: str, part: str) -> Any:
+    """``r`` (a :class:`~.reader.Relation`, or None) with a body's letter alone primed where words earlier on its line say after the impact
+    (``After the collision A = (a, 12) and B = (b, 0)``: both after)."""
+    at = main.find(part)
+    if r is None or at <= 0 or not re.fullmatch(r"[A-Z]", r.sides[0].strip()):
+        return r
+    before = main[:at]
+    m = list(_AFTER_WORDS.finditer(before))
+    if not m or re.search(r"\bbefore\b", before[m[-1].end() :], re.I):
+        return r
+    return replace(r, sides=(body_after(r.sides[0], r.sides[0], "after"), *r.sides[1:]))
