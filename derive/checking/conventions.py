@@ -1,11 +1,14 @@
 """A sign convention a student states in words ("taking away from the wall as positive").
 
-Holds the phrases for derive's n and its reverse; imports nothing of derive.
+Holds the phrases for derive's n and its reverse, and a value signed by its direction in words;
+imports nothing of derive.
 """
 
 from __future__ import annotations
 
 import re
+from dataclasses import replace
+from typing import TypeVar
 
 #: Fixed bodies students name in their sign conventions.
 _FIXED = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|surface|board|buffer|bank|side|goal)"
@@ -38,6 +41,9 @@ _BEFORE = re.compile(
 )
 
 
+R = TypeVar("R")  # a line read (inference.Read): its sides, exprs and direction in words
+
+
 def sign_of(words: str) -> int:
     """The sign convention a phrase states: -1 reversed (away from the wall, B's direction), +1
     derive's n (from A toward B, toward the wall, A's direction), 0 where it does not say
@@ -54,3 +60,15 @@ def sign_of(words: str) -> int:
     if _REVERSED.search(words):
         return -1
     return 1 if _FORWARD.search(words) else 0
+
+
+def signed_by_words(r: R, sign: int) -> R:
+    """``v_A = 1.04 m/s to the left``: the number signed by its direction in words, which is
+    derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
+    already signed stays as written."""
+    m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
+    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols:
+        return r
+    if r.direction * sign > 0:
+        return r
+    return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))

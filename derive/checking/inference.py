@@ -17,6 +17,7 @@ import sympy
 from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import DEG, Context
+from derive.checking.conventions import signed_by_words
 from derive.checking.frames import (
     axes_said,
     axis_names,
@@ -130,7 +131,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
-    lines = [_directed(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
+    lines = [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
         n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
@@ -157,18 +158,6 @@ def _magnitude(ctx: Context, r: Read) -> Read:
     if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
         return r
     return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
-
-
-def _directed(r: Read, sign: int) -> Read:
-    """``v_A = 1.04 m/s to the left``: the number signed by its direction in words, which is
-    derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
-    already signed stays as written."""
-    m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
-    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols:
-        return r
-    if r.direction * sign > 0:
-        return r
-    return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
 
 
 def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:

@@ -24,6 +24,7 @@ from derive.checking import (
     labelled,
     misread,
     mistakes,
+    rounding,
     slipnames,
     slipworld,
     termslips,
@@ -311,11 +312,11 @@ class Trace(Carrying):
             name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held)
             name = workedslips.sign_over_number(self, bad, name, held)
             if not name and carried.worked_wrongly(self, line, world):
-                words, name = termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
+                why, name = termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra
                 if name == "arithmetic":
                     name = workedslips.sign_over_number(self, bad, name, held)  # a sign lost in letters
-                    words = WORKING if name == "arithmetic" else slipnames.FLIPPED[name]
-                return diags, None, words, name
+                    why = WORKING if name == "arithmetic" else slipnames.FLIPPED[name]
+                return diags, None, why, name
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
@@ -388,10 +389,10 @@ class Trace(Carrying):
         """ ": rounded too early …" (once) where the line is worked from numbers rounded early."""
         if self.early is not None:
             return ""
-        words = slipnames.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
+        words = rounding.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
         if words:  # named once: the lines after, worked from the same numbers, are carried
             self.early = line.number
-            self.wrong_values |= {t for t in slipnames.early_numbers(self.ctx, line.sides) if "." in t}
+            self.wrong_values |= {t for t in rounding.early_numbers(self.ctx, line.sides) if "." in t}
         return words
 
     # the world of the slips ------------------------------------------------

@@ -12,11 +12,15 @@ answer is recognised (and accepted) as the right method with rounded working.
 from __future__ import annotations
 
 import itertools
+import re
+from decimal import Decimal
 
 import sympy
 
 from derive.checking.context import Context
-from derive.checking.figures import round_figures
+from derive.checking.figures import figures, round_figures
+from derive.checking.numeric import listed, number_of
+from derive.checking.worlds import Pair
 from derive.numbers import to_decimal
 from derive.problem import Problem
 
@@ -124,3 +128,31 @@ def _collected(eq: sympy.Expr, unknowns: tuple[sympy.Symbol, ...], ctx: Context)
         ((u, a),) = terms.items()
         return u + _rounded(const / a, ctx)
     return sum((a * u for u, a in terms.items()), sympy.Integer(0)) + _rounded(const, ctx)
+
+
+def early_numbers(ctx: Context, sides: tuple[str, ...]) -> list[str]:
+    """The numbers on a line's sides before the last that are rounded to two figures and are
+    not the problem's data (``3.5`` for 4 sin 60 = 3.464)."""
+    data = {abs(x) for x in ctx.data if x.is_Rational}
+    exact = data | {a * b for a in data for b in data}  # 0.1 = 0.5 x 0.2 (m_A times A's speed): not rounded
+    return [
+        t
+        for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
+        if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in exact
+    ]
+
+
+def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, truth: dict) -> str:
+    """ ": rounded too early …" where the line is worked from numbers the student rounded to
+    two figures (not the data: on its sides before the last, the result's own figures are
+    not working) and misses the value by more than its last figure, by at most 3 %."""
+    early = early_numbers(ctx, sides)
+    if not early:
+        return ""
+    left, right = (number_of(x.xreplace(pt).xreplace(truth)) for x in (bad.left, bad.right))
+    if left is None or right is None or not right:
+        return ""
+    drift = abs(left - right) / max(abs(left), abs(right)) * 100
+    if drift > 3:  # more than rounding explains
+        return ""
+    return f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
