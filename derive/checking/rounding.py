@@ -14,15 +14,18 @@ from __future__ import annotations
 import itertools
 import re
 from decimal import Decimal
+from typing import TYPE_CHECKING
 
 import sympy
 
 from derive.checking.context import Context
 from derive.checking.figures import figures, round_figures
 from derive.checking.numeric import listed, number_of
-from derive.checking.worlds import Pair
 from derive.numbers import to_decimal
 from derive.problem import Problem
+
+if TYPE_CHECKING:  # a type only: the answers path must not import the mistakes' model
+    from derive.checking.worlds import Pair
 
 #: Significant figures the intermediates are rounded to (the notes' rule).
 INTERMEDIATE_FIGURES = 3
