@@ -10,7 +10,7 @@ import itertools
 import re
 from dataclasses import replace
 from decimal import Decimal
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
 import sympy
 
@@ -20,36 +20,14 @@ from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of, shown
 from derive.checking.report import Item
+from derive.checking.tracing import Trace
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
 from derive.problem.expr import ParseError
 
 if TYPE_CHECKING:
-    from derive.checking.context import Context
     from derive.checking.inference import Read
-    from derive.checking.relations import Point, Values
-
-
-class Trace(Protocol):
-    """What of :class:`~.lines.Trace` (the derivation read so far) these verdicts use."""
-
-    ctx: Context
-    U: tuple[sympy.Symbol, ...]
-    pts: list[Point]
-    truth: list[Values]
-    world: list[Values] | None
-    equations: dict[int, sympy.Expr]
-    copied: dict[sympy.Symbol, sympy.Expr]
-    variant: Variant
-    replaced: list[tuple[int, int]]
-    held: list[Pair]
-    named: dict[int, set[str]]
-    stated: dict[int, set[str]]
-    worked: tuple[Pair, ...]
-
-    def _closest(self, F: sympy.Expr) -> int | None: ...
-    def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
-    def pairs(self, line: Read) -> list[Pair]: ...
+    from derive.checking.relations import Values
 
 
 #: A slip named: the equation it takes the place of, the words of the verdict, its name.

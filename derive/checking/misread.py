@@ -14,34 +14,19 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 from decimal import Decimal
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
 import sympy
 
 from derive.checking.mistakes import Variant
 from derive.checking.numeric import number_of, shown
+from derive.checking.tracing import Trace
 from derive.checking.worlds import Pair, solve_world
 
 if TYPE_CHECKING:
     from derive.checking.context import Context
     from derive.checking.inference import Read
-    from derive.checking.relations import Point, Values
     from derive.problem.records import Given
-
-
-class Trace(Protocol):
-    """What of :class:`~.lines.Trace` (the derivation read so far) these verdicts use."""
-
-    ctx: Context
-    U: tuple[sympy.Symbol, ...]
-    pts: list[Point]
-    truth: list[Values]
-    world: list[Values] | None
-    equations: dict[int, sympy.Expr]
-    copied: dict[sympy.Symbol, sympy.Expr]
-    variant: Variant
-
-    def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
 
 
 #: A slip named: the equation it takes the place of (None: the closest), its words, its name.

@@ -6,33 +6,18 @@ the student wrote, not from what derive would have had them write."""
 from __future__ import annotations
 
 import re
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
 import sympy
 
 from derive.checking.mistakes import Variant
 from derive.checking.numeric import number_of, shown
+from derive.checking.tracing import Trace
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world
 from derive.mathtext.notation import student
 
 if TYPE_CHECKING:
-    from derive.checking.context import Context
-    from derive.checking.relations import Point, Values
-
-
-class Trace(Protocol):
-    """What of :class:`~.lines.Trace` (the derivation read so far) the slip's world is made from."""
-
-    ctx: Context
-    U: tuple[sympy.Symbol, ...]
-    pts: list[Point]
-    truth: list[Values]
-    world: list[Values] | None
-    equations: dict[int, sympy.Expr]
-    copied: dict[sympy.Symbol, sympy.Expr]
-    variant: Variant
-
-    def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
+    pass
 
 
 def number_copied(trace: Trace, bad: Pair) -> str:
