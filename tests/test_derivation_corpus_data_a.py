@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from support.derivation_corpus import agree
 from test_derivation_corpus_data import CASES, _formula, _given
 
 A_CASES = {c.name: c for c in CASES if c.name.startswith("a")}
@@ -179,18 +180,13 @@ def test_every_a_case_is_worked_here() -> None:
         assert bool(case.verdict.slip_values) == has_slip, name
 
 
-def _agree(recorded: dict, truth: dict, name: str) -> None:
-    for key, value in recorded.items():
-        assert value == pytest.approx(truth[key], rel=2e-4, abs=2e-4), f"{name}: {key}"
-
-
 @pytest.mark.parametrize("name", sorted(NUMERIC))
 def test_the_a_values_and_the_values_given_the_slip(name: str) -> None:
     verdict = A_CASES[name].verdict
     true, slipped = NUMERIC[name]
-    _agree(verdict.values, true(), name)
+    agree(verdict.values, true(), name)
     if slipped is not None:
-        _agree(verdict.slip_values, slipped(), name)
+        agree(verdict.slip_values, slipped(), name)
 
 
 @pytest.mark.parametrize("name", sorted(SYMBOLIC))

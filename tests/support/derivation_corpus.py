@@ -22,6 +22,8 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import pytest
+
 CORPUS = Path(__file__).resolve().parents[1] / "data" / "derivations"
 VERDICTS = CORPUS / "verdicts.toml"
 PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
@@ -210,3 +212,9 @@ def check_corpus(cases: list[Case] | None = None) -> list[str]:
         if 3 * by_format[fmt] < len(cases) - 2:
             problems.append(f"only {by_format[fmt]} of {len(cases)} derivations are {fmt}")
     return problems
+
+
+def agree(recorded: dict, truth: dict, name: str) -> None:
+    """Each value a case records equals the one worked again by hand from the givens (to 2e-4)."""
+    for key, value in recorded.items():
+        assert value == pytest.approx(truth[key], rel=2e-4, abs=2e-4), f"{name}: {key}"
