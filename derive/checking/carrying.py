@@ -31,10 +31,9 @@ Line = Read
 
 #: A line that goes on from the one above: "=" first, after any markup that opens it (a list's
 #: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing).
-_GOES_ON = re.compile(
+GOES_ON = re.compile(
     r"\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)"
 )  # one $ a step: no backtracking
-GOES_ON = _GOES_ON  # a line that goes on from the one before ("= ...")
 
 #: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
 _TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")
@@ -147,7 +146,7 @@ class Carrying:
     def _continues(self, line: Line) -> bool:
         """Whether ``line`` goes on from a wrong or carried line (``= u(1 + kλ)/(ku(1 + λ))`` under
         ``e = w/(u(1 + λ))`` with the approach wrong): right as algebra, it carries the slip."""
-        return self.went_wrong and _GOES_ON.match(line.written) is not None
+        return self.went_wrong and GOES_ON.match(line.written) is not None
 
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a

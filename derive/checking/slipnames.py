@@ -219,12 +219,12 @@ def solving_slip(
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
     if len(line_u) == 1 and held and rearranging.kind(failing[0], held[-1], U, pt):  # a sign, a factor, a letter
         return "algebra"
-    if held and _same_but_number(failing[0].difference, held[-1].difference, U, pt):
+    if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):
         return "arithmetic"
     return ""
 
 
-def _same_but_number(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict) -> bool:
+def same_but_number(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict) -> bool:
     """Whether ``F`` is ``c G`` but for its number (the terms free of the unknowns)."""
     cf, cg = coefficients(F.xreplace(pt), U), coefficients(G.xreplace(pt), U)
     if not cf or not cg:
@@ -417,6 +417,3 @@ def _momentum_of_velocity(ctx: Context, term: sympy.Expr, text: str) -> bool:
         if v.is_number and v != 0 and abs(v) in written:
             return True
     return False
-
-
-same_but_number = _same_but_number  # for the modules that name a relation's number worked wrongly
