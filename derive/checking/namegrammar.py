@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
+from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.reader import Relation
 
 #: Base letters by kind, longest first.
@@ -243,7 +244,8 @@ def _primed_in(text: str, stem: str) -> bool:
     """Whether ``stem`` (a rewritten name) is written primed in ``text`` in another spelling
     (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``)."""
     loose = r"[_{}()]*".join(re.escape(c) for c in stem.replace("_", ""))
-    return re.search(rf"(?<![\w])\(?{loose}[_{{}})]*\s*(?:'|′|’|\\prime|\^\{{?\\prime)", text) is not None
+    pattern = rf"(?<![\w])\(?{loose}[_{{}})]*\s*(?:'|′|’|\\prime|\^\{{?\\prime)"
+    return any(re.search(pattern, t) for t in (text, bracketed_names(text)))  # (v_2')_t is v_2t primed
 
 
 #: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).

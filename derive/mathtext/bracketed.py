@@ -18,9 +18,12 @@ from __future__ import annotations
 
 import re
 
+#: Primes typed inside the brackets, after the name or before its subscript (``(v_1')_n``,
+#: ``(v'_1)_n``, ``(v_A^{\\prime})_t``): after, as a prime outside them is.
+_PRIMES_IN = r"((?:\s*(?:'|’|\^\s*\\prime|\^\s*\{\s*\\prime\s*\}))*)"
 #: The name inside: a letter and its subscript (``v_A``, ``v_{A}``, ``vA``, ``v_1``); without an
 #: underscore the subscript is a capital or a digit (``vA``, ``v1``), never a second small letter.
-_INSIDE = r"\(\s*([A-Za-z])(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))\s*\)"
+_INSIDE = r"\(\s*([A-Za-z])" + _PRIMES_IN + r"(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))" + _PRIMES_IN + r"\s*\)"
 #: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
@@ -36,14 +39,14 @@ def bracketed_names(text: str, tex: bool = False) -> str:
     (``v_{A2x}`` in LaTeX), a space before it where a factor is written against it."""
 
     def one(m: re.Match) -> str:
-        letter, sub = m[1], m[2] or m[3]
-        after = m[4] or m[5] or m[6] or m[7] or ""
-        if m[7] and m[7][0].isalpha():
+        letter, sub = m[1], m[3] or m[4]
+        after = m[6] or m[7] or m[8] or m[9] or ""
+        if m[9] and m[9][0].isalpha():
             after = after[::-1]  # "(vA)n1", Hibbeler's component then time: v_A1n
-        primes = "'" * (m[8].count("'") + m[8].count("’") + m[8].count("prime"))
+        primes = "'" * sum(_primes(m[i]) for i in (2, 5, 10))
         if not after and not primes:
             return m[0]  # "(v_A) - (v_B)": brackets around a name, nothing after them
-        if m[7] and not sub.isalpha():
+        if m[9] and not sub.isalpha():
             return m[0]  # "(v_1)2": a time glued on only after a body's letter ("(vA)1")
         marks = f"{sub}{after}"
         name = f"{letter}_{{{marks}}}" if tex else f"{letter}_{marks}"
@@ -51,3 +54,8 @@ def bracketed_names(text: str, tex: bool = False) -> str:
         return (" " if re.fullmatch(r"[\w)]", before) else "") + name + primes
 
     return _BRACKETED.sub(one, text)
+
+
+def _primes(marks: str) -> int:
+    """How many primes ``marks`` holds (``'``, ``’``, ``\\prime``)."""
+    return marks.count("'") + marks.count("’") + marks.count("prime")

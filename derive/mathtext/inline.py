@@ -48,3 +48,20 @@ def words_end_it(plain: str, after: str) -> bool:
     """Whether the words ``after`` a piece of mathematics (``plain``, made plain) end the relation
     it holds: a relation with both sides inside, followed by prose that is no unit and no direction."""
     return _whole_relation(plain) and _PROSE_AFTER.match(after) is not None and not _said_after(after)
+
+
+#: The value said again in brackets that open with "=" (``= 0.346 (= 0.2√3)``, ``≈ 5.29 (= 2√7)``,
+#: ``(≈ 0.837)``): the chain goes on, the brackets only set the exact or rounded form aside.
+_EQUALS_IN_BRACKETS = re.compile(r"(?<=[\w)}.%°\s])\(\s*([=≈])((?:[^()=≈]|\([^()=≈]*\))+)\)")
+
+
+def equals_in_brackets(plain: str) -> str:
+    """``plain`` with a value said again in brackets that open with ``=`` or ``≈`` written as one
+    more side of the chain (``v = 0.346 (= 0.2 sqrt(3))``: ``v = 0.346 = 0.2 sqrt(3)``)."""
+
+    def one(m: re.Match) -> str:
+        if not re.search("[=≈]", plain[: m.start()]):
+            return m[0]  # "(= …)" before any relation: not a value said again
+        return f" {m[1]} {m[2].strip()} "
+
+    return _EQUALS_IN_BRACKETS.sub(one, plain)

@@ -372,11 +372,12 @@ UNIT_THEN_NAME = re.compile(
 #: side by side on one line, as a plain-text sheet lines them up (``(vA)n1 = 6.928 ft/s      (vA)t1 = 4``).
 GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)\w{0,3}|[A-Za-z]\w{0,5})'*\s*=(?!=))")
 #: A remark after a relation's value: ``, i.e. 64 %``, a bracket with a word in it (``(reversed)``,
+#: ``(p, q the velocities after):`` before a colon,
 #: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names, nor ``(u - lambda u)``, whose
 #: only words are a Greek letter's or a function's names: mathematics).
 _MATH_NAME = "|".join(sorted(GREEK | FUNCTIONS | {"sqrt", "sec", "cosec", "cot"}, key=len, reverse=True))
 REMARK_END = re.compile(
-    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*\.?\s*)$"
+    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*)$"
 )
 
 

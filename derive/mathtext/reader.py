@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.afterwords import after_on_line, body_after
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.bracketed import bracketed_names
-from derive.mathtext.inline import words_end_it
+from derive.mathtext.inline import equals_in_brackets, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
@@ -132,6 +132,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     points = european_points(text)
     for line, column, written, plain in pieces(text):
         plain = said_is(points(unmarked(unbold(plain))))  # "B's speed after is 8 m/s": B's speed after = 8
+        plain = equals_in_brackets(plain)  # "= 0.346 (= 0.2 sqrt3)": one more side
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
@@ -187,14 +188,22 @@ def _unwrapped(line: str) -> str:
     return (m.group(1) or m.group(2)).strip() if m else line.strip()
 
 
+def _goes_on(part: str, row: list[str]) -> bool:
+    """Whether a line of a display that starts with ``=`` goes on from a relation above it
+    (``\\tan\\theta = \\frac{…}{…}`` then `` = \\frac{…}{…}`` on the next line, no ``\\\\``):
+    its own row, continued from the last side as a line ``= …`` is, so each line is judged."""
+    return _CONTINUED.match(part) is not None and re.search(r"=|≈|\\approx", "".join(row)) is not None
+
+
 def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
-    """The rows of a display that spans lines: its text split at ``\\\\`` only."""
+    """The rows of a display that spans lines: its text split at ``\\\\``, an arrow that means
+    "so" or an ``=`` that starts a line (an arrow or ``\\\\``: a new row; ``=``: the row goes on)."""
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
         text = NESTED.sub(" ", column_vectors(text))
         parts = re.split(r"\\\\", text)
-        for k, part in ((k > 0 or starts_with_so(p), p) for k, p in enumerate(parts)):  # "\\", or a line "⟹ …"
+        for k, part in ((k > 0 or starts_with_so(p) or _goes_on(p, row), p) for k, p in enumerate(parts)):
             if k and "".join(row).strip():
                 yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
             if k:

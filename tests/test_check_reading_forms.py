@@ -1,0 +1,143 @@
+"""Forms of writing a teacher reads and derive did not (issue #31, fourth session): a prime typed
+inside a bracketed name (``(v_1')_n``, ``(v'_B)_t``), and a display whose relation goes on over
+several lines with each new line starting ``=`` and no ``\\\\`` between them (each line is then
+judged on its own, as a line ``  = …`` in plain text is).
+
+Values worked by hand from each problem's givens (never from derive's output):
+
+- ocr-m3-2006-oblique-a-across-centres: m_A = 5, m_B = 2 kg, e = 0.75; A at 4 m/s across the line
+  of centres (n components 0), B at 4 m/s along it toward A (-4). Along n: 5(0) + 2(-4) = -8 =
+  5a + 2b, b - a = 0.75(0 + 4) = 3, so 7a = -14: a = -2, b = 1; the t components stay 4 and 0.
+- byjus-4kg-ball-catches-8kg-ball: m_A = 4, m_B = 8 kg, e = 0.5, A at 12 and B at 4 m/s. Momentum
+  48 + 32 = 80 = 4 v_A + 8 v_B; v_B = v_A + 0.5(8) = v_A + 4; so 12 v_A = 80 - 32 = 48, v_A = 4.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import pytest
+
+import derive
+from derive.mathtext.bracketed import bracketed_names
+from derive.mathtext.reader import read_relations
+
+ACROSS = "ocr-m3-2006-oblique-a-across-centres"
+DIRECT = "byjus-4kg-ball-catches-8kg-ball"
+
+
+@functools.cache
+def _solution(problem: str):
+    return derive.solve(derive.load(problem))
+
+
+def statuses(problem: str, text: str) -> dict[int, str]:
+    """line number -> derive's verdict on it."""
+    items = derive.check(_solution(problem), derivation=text).items
+    return {int(i.name): i.status for i in items if i.kind == "line" and str(i.name).isdigit()}
+
+
+@pytest.mark.parametrize(
+    ("written", "expected"),
+    [
+        ("(v_1')_n", "v_1n'"),
+        ("(v'_1)_n", "v_1n'"),
+        ("(v_{A}')_{t}", "v_At'"),
+        (r"(v_A^{\prime})_n", "v_An'"),
+        ("(vA')2", "v_A2'"),
+        ("(v_A)_n'", "v_An'"),  # the prime outside, as before
+        ("(v_A) - (v_B)", "(v_A) - (v_B)"),  # nothing after the brackets: left as written
+    ],
+)
+def test_a_prime_inside_the_brackets_marks_the_name_after(written: str, expected: str) -> None:
+    assert bracketed_names(written) == expected
+
+
+@pytest.mark.parametrize(
+    ("a", "b"),
+    [
+        ("(v_A')", "(v_B')"),
+        ("(v'_A)", "(v'_B)"),
+        ("(v_{A}^{\\prime})", "(v_{B}^{\\prime})"),
+    ],
+)
+def test_primed_names_in_brackets_with_components_are_read(a: str, b: str) -> None:
+    lines = [
+        "Axes: $n$ along the line of centres from A to B, $t$ across it.",
+        f"$5(0) + 2(-4) = 5{a}_n + 2{b}_n$",
+        f"${b}_n - {a}_n = 0.75(0 + 4) = 3$",
+        f"$7{a}_n = -8 - 6 = -14$, so ${a}_n = -2$",
+        f"${b}_n = -2 + 3 = 1$",
+        f"${a}_t = 4$, ${b}_t = 0$ (smooth: the $t$ parts do not change)",
+    ]
+    found = statuses(ACROSS, "\n".join(lines))
+    assert all(found.get(n) == "correct" for n in range(2, 7)), found
+
+
+def test_a_slip_in_primed_bracketed_names_is_still_a_slip() -> None:
+    lines = [
+        "$5(0) + 2(-4) = 5(v_A')_n + 2(v_B')_n$",
+        "$(v_A')_n - (v_B')_n = 0.75(0 + 4) = 3$",  # restitution the wrong way round
+    ]
+    found = statuses(ACROSS, "\n".join(lines))
+    assert found == {1: "correct", 2: "wrong"}, found
+
+
+@pytest.mark.parametrize(
+    "display",
+    [
+        ("\\[ v_A = \\frac{80 - 8(4)}{12}", " = \\frac{48}{12}", " = 4 \\]"),
+        ("\\begin{align*}", "v_A &= \\frac{80 - 8(4)}{12}", "&= \\frac{48}{12}", "&= 4", "\\end{align*}"),
+        ("$$v_A = \\frac{80 - 8(4)}{12}", "\\approx \\frac{48}{12}", "= 4.0$$"),
+    ],
+)
+def test_each_line_of_a_display_that_goes_on_with_equals_is_judged(display: tuple[str, ...]) -> None:
+    lines = ["$4(12) + 8(4) = 4v_A + 8v_B$, $v_B - v_A = 0.5(12 - 4)$", *display]
+    found = statuses(DIRECT, "\n".join(lines))
+    marked = [n for n, line in enumerate(lines, 1) if "=" in line or "approx" in line]
+    assert [found.get(n) for n in marked] == ["correct"] * len(marked), found
+
+
+def test_a_slip_on_a_later_line_of_such_a_display_is_marked_at_that_line() -> None:
+    lines = [
+        "$4(12) + 8(4) = 4v_A + 8v_B$, $v_B - v_A = 0.5(12 - 4)$",
+        "\\[ v_A = \\frac{80 - 8(4)}{12}",
+        " = \\frac{48}{12}",
+        " = 3 \\]",  # 48/12 is 4
+    ]
+    found = statuses(DIRECT, "\n".join(lines))
+    assert (found.get(2), found.get(3), found.get(4)) == ("correct", "correct", "wrong"), found
+
+
+def test_a_display_whose_first_line_has_no_relation_stays_one_row() -> None:
+    (r,) = read_relations("\\[ v_A\n = \\frac{48}{12} = 4 \\]")
+    assert r.sides == ("v_A", "48/12", "4")
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("v = 0.346 m/s (= 0.2 sqrt(3))", [("v", "0.346", "0.2 sqrt(3)")]),
+        (r"$\sqrt{0.3^2 + 0.4^2} = 0.5$ m/s (= $\tfrac12$)", [("sqrt(0.3^2 + 0.4^2)", "0.5", "1/2")]),
+        ("e = 0.837 (≈ sqrt(0.7))", [("e", "0.837", "sqrt(0.7)")]),
+        ("x = 2(a + b) (= 6)", [("x", "2(a + b)", "6")]),
+    ],
+)
+def test_a_value_said_again_in_brackets_opening_with_equals_is_one_more_side(text: str, expected: list) -> None:
+    assert [r.sides for r in read_relations(text)] == expected
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "Then momentum and restitution with $e = 0.5$ ($x$, $y$ velocities of $A$, $B$ after):",
+        "with e = 0.5 (x, y the velocities after):",
+        "$e = 0.5$ (given):",
+        "e = 0.5 (x, y for A, B after);",
+    ],
+)
+def test_a_bracketed_remark_before_a_colon_is_no_part_of_the_relation(line: str) -> None:
+    assert [r.sides for r in read_relations(line)] == [("e", "0.5")]
+    lines = [line, "$4(12) + 8(4) = 4x + 8y$", "$y - x = 0.5(12 - 4) = 4$", "$12x = 48$, $x = 4$, $y = 8$"]
+    found = statuses(DIRECT, "\n".join(lines))
+    assert all(found.get(n) == "correct" for n in (1, 2, 3, 4)), found
