@@ -141,3 +141,61 @@ def test_a_bracketed_remark_before_a_colon_is_no_part_of_the_relation(line: str)
     lines = [line, "$4(12) + 8(4) = 4x + 8y$", "$y - x = 0.5(12 - 4) = 4$", "$12x = 48$, $x = 4$, $y = 8$"]
     found = statuses(DIRECT, "\n".join(lines))
     assert all(found.get(n) == "correct" for n in (1, 2, 3, 4)), found
+
+
+# mcasco-two-cars-no-bounce: W_A = 4500 lb at 3 ft/s, W_B = 3000 lb at -6 ft/s, e = 0; m = W/g, so
+# W_A(3) + W_B(-6) = (W_A + W_B) v: v = (13500 - 18000)/7500 = -0.6 ft/s.
+CARS = "mcasco-two-cars-no-bounce"
+
+
+@pytest.mark.parametrize(
+    ("problem", "lines"),
+    [
+        (CARS, ["3WA - 6WB = (WA + WB)v", "v = (3WA - 6WB)/(WA + WB) = -4500/7500 = -0.6 ft/s"]),
+        (CARS, ["WA(3) + WB(-6) = (WA + WB)v", "v = 3WA/(WA + WB) - 6WB/(WA + WB) = -0.6"]),
+        (DIRECT, ["12mA + 4mB = mA v_A + mB v_B", "v_B - v_A = 0.5(12 - 4)", "v_A = (12mA + 4mB - 4mB)/(mA + mB) = 4"]),
+    ],
+)
+def test_a_number_before_a_glued_mass_or_weight_multiplies_it(problem: str, lines: list[str]) -> None:
+    found = statuses(problem, "\n".join(lines))
+    assert [found.get(n) for n in range(1, len(lines) + 1)] == ["correct"] * len(lines), found
+
+
+def test_a_slip_with_glued_weights_is_still_a_slip() -> None:
+    found = statuses(CARS, "\n".join(["3WA + 6WB = (WA + WB)v"]))  # B's velocity taken as +6
+    assert found == {1: "wrong"}, found
+
+
+@pytest.mark.parametrize(
+    "givens",
+    [
+        "Before: $v_A = 12$ m/s, $v_B = 4$ m/s",
+        "before: vA = 12 , vB = 4",
+        "Initially vA = 12 m/s, vB = 4 m/s",
+        "just before impact: v_A = 12, v_B = 4",
+        "velocities before the collision: $v_A = 12$, $v_B = 4$",
+    ],
+)
+def test_velocities_with_no_time_mark_on_a_line_that_says_before_are_before(givens: str) -> None:
+    lines = [givens, "$4(12) + 8(4) = 4v_A + 8v_B$", "$v_B - v_A = 0.5(12 - 4)$", "After: $v_A = 4$, $v_B = 8$"]
+    found = statuses(DIRECT, "\n".join(lines))
+    assert [found.get(n) for n in (1, 2, 3, 4)] == ["correct"] * 4, found
+
+
+def test_a_wrong_velocity_on_a_line_that_says_before_is_wrong() -> None:
+    lines = ["Before: $v_A = 12$ m/s, $v_B = -4$ m/s", "$4(12) - 8(4) = 4v_A + 8v_B$"]
+    found = statuses(DIRECT, "\n".join(lines))
+    assert found.get(1) == "wrong", found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("before: vA = 4j , vB = -4i", [("v_A1n", "0"), ("v_A1t", "4"), ("v_B1n", "-4"), ("v_B1t", "0")]),
+        ("After: v_A = 2, v_B = 3", [("v_A", "2"), ("v_B", "3")]),
+        ("so vA = 3 (before it was 4)", [("v_A", "3")]),
+        ("u_A = 3 before", [("u_A", "3")]),
+    ],
+)
+def test_only_a_line_that_says_before_gives_the_time_before(text: str, expected: list) -> None:
+    assert [r.sides for r in read_relations(text)] == expected

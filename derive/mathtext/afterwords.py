@@ -34,3 +34,22 @@ def after_on_line(r: Any, main: str, part: str) -> Any:
     if not m or re.search(r"\bbefore\b", before[m[-1].end() :], re.I):
         return r
     return replace(r, sides=(body_after(r.sides[0], r.sides[0], "after"), *r.sides[1:]))
+
+
+#: Words that say what follows is before the impact (``before: vA = 4j``, ``Initially v_A = 3``).
+_BEFORE_WORDS = re.compile(r"\b(?:before|initially|initial)\b(?![^,;]*\b(?:after(?:wards)?|final(?:ly)?)\b)", re.I)
+#: A body's velocity with no time mark (``v_A``, ``vB``, ``V_A``; a component: ``v_An``, ``v_Bx``):
+#: after by the habits, unless words say before.
+_TIMELESS = re.compile(r"\s*([vV])_?([A-Z])([ntxy]?)\s*")
+
+
+def before_on_line(r: Any, lead: str) -> Any:
+    """``r`` (a :class:`~.reader.Relation`) with a body's velocity that has no time mark given the
+    time before (``v_A`` as ``v_A1``, ``v_An`` as ``v_A1n``) where its label or ``lead`` (the words
+    before it on its line) say before the impact (``before: vA = 4j , vB = -4i``); else as it is."""
+    m = _TIMELESS.fullmatch(r.sides[0]) if r.sides else None
+    words = f"{r.label or ''} {lead}"
+    said = _BEFORE_WORDS.search(words)
+    if m is None or said is None or _AFTER_WORDS.search(words[said.end() :]):
+        return r
+    return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}", *r.sides[1:]))

@@ -19,7 +19,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.afterwords import after_on_line, body_after
+from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.inline import equals_in_brackets, words_end_it
@@ -150,7 +150,8 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
             for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
-                out.append(replace(r, sides=sides))
+                lead = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
+                out.append(before_on_line(replace(r, sides=sides), lead))  # "before: vA = 4j": A's before
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
     return tuple(out)

@@ -21,9 +21,10 @@ _SUBSCRIPT_MARKED = re.compile(r"_[{(]\s*([A-Za-z])\s*,?\s*([A-Za-z0-9]{0,2})\s*
 _PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z0-9]{0,2})[)}]?")
 
 
-#: A mass, velocity or momentum letter with a body's capital glued on (``mA``, ``vB``, ``mP``), alone;
-#: not a product of two names (``mM``, ``mV``: m times M, m times the common velocity).
-_GLUED_BODY = re.compile(r"(?<![\w'\\])([muvwp])([ABPQ])(?![\w'])")
+#: A mass, weight, velocity or momentum letter with a body's capital glued on (``mA``, ``WA``, ``vB``,
+#: ``mP``), alone or after a number (``2WB``: 2 W_B); not a product of two names (``mM``, ``mV``: m times M,
+#: m times the common velocity).
+_GLUED_BODY = re.compile(r"(?<![A-Za-z_'\\])([muvwpW])([ABPQ])(?![\w'])")
 #: A number with its thousands set apart by a space (``20 000``, ``1 500 000``; a thin space too).
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
