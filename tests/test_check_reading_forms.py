@@ -199,3 +199,65 @@ def test_a_wrong_velocity_on_a_line_that_says_before_is_wrong() -> None:
 )
 def test_only_a_line_that_says_before_gives_the_time_before(text: str, expected: list) -> None:
     assert [r.sides for r in read_relations(text)] == expected
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        ", into (1):",
+        " into (1)",
+        ", sub into (1)",
+        ", put this in (1)",
+        ", then into CLM",
+        ", substitute into the first",
+    ],
+)
+def test_words_saying_where_a_relation_goes_next_are_no_part_of_it(said: str) -> None:
+    (r,) = read_relations(f"v_B = v_A + 0.5u{said}")
+    assert r.sides == ("v_B", "v_A + 0.5u")
+    lines = ["$4v_A + 8v_B = 80$   (1)", "$v_B - v_A = 4$   (2)", f"(2): v_B = v_A + 4{said}", "12v_A + 32 = 80"]
+    found = statuses(DIRECT, "\n".join(lines))
+    assert [found.get(n) for n in (1, 2, 3, 4)] == ["correct"] * 4, found
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("v = 4 m/s in the direction of A", [("v", "4")]),
+        ("x = 2u/3 in the same direction", [("x", "2u/3")]),
+        ("v = 3t into 2", [("v", "3t into 2")]),  # no instruction, no equation: left as written
+    ],
+)
+def test_only_words_that_send_a_relation_somewhere_are_cut(text: str, expected: list) -> None:
+    assert [r.sides for r in read_relations(text)] == expected
+
+
+# aqa-m3-2007-spheres-approach-head-on: 0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward it, e = 0.8. The
+# centre of mass moves at (0.9 - 0.4)/0.5 = 1 m/s; in its frame each velocity reverses and is
+# multiplied by e: v_A = 1 - 0.8(3 - 1) = -0.6, v_B = 1 + 0.8(1 + 2) = 3.4 (momentum 0.5 = -0.18 + 0.68).
+HEAD_ON = "aqa-m3-2007-spheres-approach-head-on"
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Let $W$ be the velocity of the centre of mass: $W = 1$ m/s",
+        "centre of mass velocity V = 1 m/s",
+        "So the centre of mass moves at $V_0 = 1$ m/s, and in its frame each velocity is reversed and times e.",
+        "In the zero-momentum frame ($U = 1$) each velocity is reversed and times e:",
+        "the common velocity is w = 1 m/s",
+    ],
+)
+def test_a_name_said_in_words_to_be_the_centre_of_mass_velocity(said: str) -> None:
+    lines = [said, "$v_A = 1 - 0.8(3 - 1) = -0.6$", "$v_B = 1 + 0.8(1 + 2) = 3.4$"]
+    found = statuses(HEAD_ON, "\n".join(lines))
+    assert [found.get(n) for n in (1, 2, 3)] == ["correct"] * 3, found
+
+
+def test_a_wrong_centre_of_mass_velocity_is_wrong() -> None:
+    lines = [
+        "The centre of mass moves at $V = 2.6$ m/s",
+        "$v_A = 2.6 - 0.8(3 - 2.6)$",
+    ]  # (0.9 + 0.4)/0.5: B's sign lost
+    found = statuses(HEAD_ON, "\n".join(lines))
+    assert found == {1: "wrong", 2: "carried"}, found

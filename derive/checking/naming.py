@@ -27,6 +27,7 @@ from collections.abc import Iterator, Mapping
 import sympy
 
 from derive.checking.axisnames import letter_components
+from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
 from derive.checking.conventions import sign_of
@@ -394,6 +395,7 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
         out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
+        out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign

@@ -65,3 +65,22 @@ def equals_in_brackets(plain: str) -> str:
         return f" {m[1]} {m[2].strip()} "
 
     return _EQUALS_IN_BRACKETS.sub(one, plain)
+
+
+#: Where the student says a relation goes next, after it (``v1 = v2 + 4eu, into (1):``, ``… sub into
+#: eqn 2``, ``…, put this in the momentum equation``, ``… into CLM``): words, no part of its value.
+_VERB = r"(?:sub(?:stitute[ds]?|stituting)?|put(?:ting)?|plug(?:ged|ging)?|insert(?:ed|ing)?|use[ds]?|using)"
+_TARGET = (
+    r"(?:\(\s*\d{1,2}[a-z]?\s*\)|eq(?:n|uation)?s?\.?\s*\(?\d{1,2}\)?|(?:the\s+)?(?:first|second|other|last|momentum"
+    r"|restitution|energy|CLM|NEL|PCLM|NLR|COLM)(?:\s+(?:one|equation|eqn|law|relation|line))?)"
+)
+_INTO_END = re.compile(
+    rf"(?:,\s*|\s+)(?:(?:and|then|now)\s+)?(?:{_VERB}\s+(?:(?:this|it|that|them)\s+)?(?:back\s+)?(?:into|in|to)"
+    rf"|(?:(?:this|it|that)\s+)?(?:back\s+)?into|(?:in|to)(?=\s+{_TARGET}))(?:\s+{_TARGET})?\s*[.:;!]?\s*$",
+    re.I,
+)
+
+
+def without_into(side: str) -> str:
+    """``side`` without the words after it that say where it is put next (``v2 + 4eu, into (1):``)."""
+    return _INTO_END.sub("", side)

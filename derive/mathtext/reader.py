@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.bracketed import bracketed_names
-from derive.mathtext.inline import equals_in_brackets, words_end_it
+from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.notation import FUNCTIONS
@@ -252,7 +252,7 @@ def words_after(text: str) -> str:
     """A relation without the words after its last number (``= 111° anticlockwise from i``,
     ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
     last = text.rfind("=")
-    text = text[: last + 1] + REMARK_END.sub("", text[last + 1 :])  # ", i.e. 64 %", "(reversed)": a remark
+    text = text[: last + 1] + without_into(REMARK_END.sub("", text[last + 1 :]))  # ", i.e. 64 %", ", into (1)"
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
