@@ -261,3 +261,44 @@ def test_a_wrong_centre_of_mass_velocity_is_wrong() -> None:
     ]  # (0.9 + 0.4)/0.5: B's sign lost
     found = statuses(HEAD_ON, "\n".join(lines))
     assert found == {1: "wrong", 2: "carried"}, found
+
+
+# edexcel-fm1-2023-june-q7a-cushion-show-tan-beta: speed U at alpha to the cushion DC, smooth, e_1:
+# along DC U cos(alpha) is kept, across it e_1 U sin(alpha): V cos(beta) = U cos(alpha),
+# V sin(beta) = e_1 U sin(alpha). giancoli-7-18-tennis-ball-wall-45deg: 28 m/s at 45 deg to the
+# normal, e = 1: the part along the wall 28 sin 45 is kept, the speed after is 28 m/s.
+CUSHION = "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta"
+TENNIS = "giancoli-7-18-tennis-ball-wall-45deg"
+AFTER_SPEED = [
+    "After (speed $V$): along DC $V\\cos\\beta$, across it $V\\sin\\beta$.",
+    "after the impact: speed V, angle beta with the cushion",
+    "The ball rebounds with speed $V$ at $\\beta$ to DC.",
+]
+
+
+@pytest.mark.parametrize("said", AFTER_SPEED)
+def test_the_speed_after_named_beside_after_is_the_speed_after(said: str) -> None:
+    lines = [said, "$V\\cos\\beta = U\\cos\\alpha$", "$V\\sin\\beta = e_1 U\\sin\\alpha$"]
+    assert statuses(CUSHION, "\n".join(lines)) == {2: "correct", 3: "correct"}
+
+
+@pytest.mark.parametrize("said", AFTER_SPEED)
+def test_with_the_speed_after_named_beside_after_a_slip_is_wrong(said: str) -> None:
+    lines = [said, "$V\\cos\\beta = e_1 U\\cos\\alpha$"]  # e on the part along the cushion
+    assert statuses(CUSHION, "\n".join(lines)) == {2: "wrong"}
+
+
+def test_the_speed_after_named_on_a_wall_problem() -> None:
+    lines = ["After the bounce (speed $V$), at 45° on the other side of the normal:", "$V\\sin 45° = 28\\sin 45°$"]
+    assert statuses(TENNIS, "\n".join(lines) + "\n$V = 28$ m/s") == {2: "correct", 3: "correct"}
+
+
+def test_mathematics_with_a_functions_name_that_cannot_be_read_is_not_read_not_prose() -> None:
+    found = statuses(TENNIS, "$Q\\cos\\beta = 28\\cos 45°$")  # Q and beta: names never said
+    assert found == {1: "not read"}
+
+
+@pytest.mark.parametrize("after", [" … that is not 4?? I give up", " ... hmm, not what they want", "… so wrong?"])
+def test_words_after_an_ellipsis_are_no_part_of_the_relation(after: str) -> None:
+    assert [r.sides for r in read_relations(f"v_B/v_A = 22/13 = 1.69{after}")] == [("v_B/v_A", "22/13", "1.69")]
+    assert [r.sides for r in read_relations(f"x = 2u{after}")] == [("x", "2u")]

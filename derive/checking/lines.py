@@ -40,6 +40,7 @@ from derive.checking.number import line_answer
 from derive.checking.numeric import listed
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
+from derive.checking.speedwords import looks_like_prose
 from derive.checking.words import sides_unequal
 from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures
 from derive.errors import InputError
@@ -124,7 +125,7 @@ class Trace(Carrying):
 
     def _judge(self, line: Line) -> Item | None:
         if line.exprs is None:
-            if re.search(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}", " ".join(line.sides)):
+            if looks_like_prose(" ".join(line.sides)):
                 return None  # prose with an "=" in it
             return self._item(
                 line, "not read", f"Not read: {words.not_read(line.error, line.sides, line.written)}.", ""

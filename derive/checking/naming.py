@@ -33,6 +33,7 @@ from derive.checking.context import Context
 from derive.checking.conventions import sign_of
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
+from derive.checking.speedwords import one_speed_after
 from derive.checking.spellings import (
     BODY_WHEN,
     angle_sum_in_degrees,
@@ -396,6 +397,7 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             out[m.group(1)] = names[m.group(2)][0]
         out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
+        out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign

@@ -150,8 +150,8 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
             for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
-                lead = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
-                out.append(before_on_line(replace(r, sides=sides), lead))  # "before: vA = 4j": A's before
+                said = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
+                out.append(before_on_line(replace(r, sides=sides), said))  # "before: vA = 4j": A's before
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
     return tuple(out)
@@ -252,11 +252,12 @@ def words_after(text: str) -> str:
     """A relation without the words after its last number (``= 111° anticlockwise from i``,
     ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
     last = text.rfind("=")
-    text = text[: last + 1] + without_into(REMARK_END.sub("", text[last + 1 :]))  # ", i.e. 64 %", ", into (1)"
+    rest = re.split(r"\s*(?:…|\.{3})\s*(?=[A-Za-z]{2,}\b)", text[last + 1 :])[0]  # "= 2u … not what they want"
+    text = text[: last + 1] + without_into(REMARK_END.sub("", rest))  # ", i.e. 64 %", ", into (1)"
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
             continue
-        before = text[last + 1 : m.start()].rstrip(" ,;:?!")  # "= -0.91 J ?? gained": the doubt is not the value
+        before = text[last + 1 : m.start()].rstrip(" ,;:?!…")  # "= -0.91 J ?? gained", "= 1.69 … not 4"
         unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
         if re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie.")):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
@@ -271,7 +272,7 @@ _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\((
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
-    text = text.strip().rstrip(",;:.?!").rstrip()  # "= -12 J ???": the doubt is not the value
+    text = text.strip().rstrip(",;:.?!…").rstrip()  # "= -12 J ???", "= 1.69…": the doubt is not the value
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000

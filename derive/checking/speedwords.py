@@ -1,0 +1,64 @@
+"""The one moving body's speed after the impact named in words beside the word "after" (a ball
+on a cushion, a wall, the ground): "After (speed $V$): parallel $V\\cos\\beta$ …", "after the
+impact: speed V", "it rebounds with speed w"; and whether a line that could not be read is
+prose (words a teacher does not mark) or mathematics (``V cos beta = e_1 U cos alpha``, whose
+words are a function's and a Greek letter's names).
+
+>>> sorted(_after_names("Before: parallel U cos a. After (speed $V$): parallel $V\\\\cos\\\\beta$"))
+['V']
+>>> looks_like_prose("V cos beta = e_1 U cos alpha"), looks_like_prose("the ball moves off = fast")
+(False, True)
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.mathtext.reader import MATH_WORDS
+
+_NAME = r"([A-Za-z](?:_?\{?\w{1,2}\}?)?|\\[a-z]+)"
+#: "After (speed V)", "after the impact: speed V", "speed after V", "rebounds with speed V".
+_AFTER_SPEED = (
+    re.compile(rf"\bafter\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
+    re.compile(
+        rf"\bspeed\s+(?:just\s+)?after(?:\s+the\s+(?:impact|collision|bounce))?\s*(?:is\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
+        re.I,
+    ),
+    re.compile(
+        rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}(?![\w'(])", re.I
+    ),
+)
+#: Words that are never the name of a speed.
+_NOT_NAMES = frozenset({"is", "of", "at", "in", "on", "to", "and", "the", "be", "so", "it", "an", "as"})
+#: Prose: two words of three letters or more with only words between them.
+_PROSE = re.compile(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}")
+
+
+def _after_names(line: str) -> set[str]:
+    plain = re.sub(r"\$|\\[()]|[{}]", " ", line)
+    out = set()
+    for pattern in _AFTER_SPEED:
+        for m in pattern.finditer(plain):
+            name = m[1].lstrip("\\")
+            if name.lower() not in _NOT_NAMES and name not in MATH_WORDS:
+                out.add(name)
+    return out
+
+
+def one_speed_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """The name ``line`` gives in words to the one moving body's speed after the impact (a body
+    on a fixed surface) -> derive's expression for that speed; {} where there are two bodies."""
+    names = ctx.equation_names()
+    if not ctx.problem.fixed_B or "v_A2" not in names:
+        return {}
+    return {n: names["v_A2"][0] for n in _after_names(line) if n not in names}
+
+
+def looks_like_prose(text: str) -> bool:
+    """Whether ``text`` (a line's sides that could not be read) is prose with an "=" in it: words,
+    not counting the names of functions, Greek letters and angle units, which are mathematics."""
+    words = re.sub(r"[A-Za-z]+", lambda m: " " if m[0] in MATH_WORDS else m[0], text)
+    return _PROSE.search(words) is not None
