@@ -133,6 +133,8 @@ class Carrying:
     went_wrong = False
     previous: tuple[str, list[Pair]] | None = None  # the relation just before, if it held
     worked: tuple[Pair, ...] = ()  # the carried relations in the unknowns, so far
+    displaced: tuple[int, sympy.Expr] | None = None  # the equation the last slip took the place of
+    unrefined: tuple[int, list[Values]] | None = None  # the world before a carried line's rounding refined it
 
     def _note(self, line: Line, status: str) -> None:
         """What a relation judged ``status`` leaves for the lines after it."""
@@ -173,6 +175,8 @@ class Carrying:
         m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
         if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
             self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].is_number:
+            self.own[left] = line.exprs[-1]  # "ΔT = ½(2)(5 + 1)² + ½(1)(-5 - 7)²": worked on the next line
         elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
             last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
             if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
@@ -230,7 +234,7 @@ class Carrying:
             return False
         d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
         lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
-        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
+        exprs = tuple(x.xreplace(self.own).xreplace(lost).xreplace(self.own) for x in line.exprs)  # own T_lost first
         if exprs == line.exprs:
             return False
         return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
