@@ -10,9 +10,13 @@ carried, and the slip's world is the one it shows.
 
 from __future__ import annotations
 
+import sympy
+
 from derive.checking import workedslips
+from derive.checking.numeric import number_of
+from derive.checking.relations import coefficients
 from derive.checking.tracing import Trace
-from derive.checking.worlds import Pair, solve_world
+from derive.checking.worlds import Pair, alike, solve_world
 
 
 def in_world(trace: Trace, pairs: list[Pair]) -> bool:
@@ -23,7 +27,30 @@ def in_world(trace: Trace, pairs: list[Pair]) -> bool:
         return False
     if trace.holds(pairs, trace.world) or workedslips.speed_of_reversed(trace, pairs):
         return True
-    return unrounded(trace, pairs) or moved(trace, pairs)
+    return unrounded(trace, pairs) or moved(trace, pairs) or stated(trace, pairs)
+
+
+def stated(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs`` hold with the velocities as the student last stated each of them (a
+    right one from a line that held, a wrong one from their slip: ``v_B = ⅓u(1 + e)`` then
+    ``v_A = u - 2v_B = ⅓u(1 + 2e)``), where the slip's world solved again moves one they kept;
+    that is then the world."""
+    own = {u: x for u, x in trace.own.items() if u in trace.U}
+    if not own or trace.holds(pairs, trace.truth):
+        return False
+    world = []
+    for pt, truth in zip(trace.pts, trace.truth, strict=True):
+        values = dict(truth)
+        for u, x in own.items():
+            v = number_of(trace.ctx.in_unknowns(x).xreplace(pt).xreplace(truth))
+            if v is None or abs(v.imag) > 1e-12:
+                return False
+            values[u] = sympy.Float(v.real, 20)
+        world.append(values)
+    if not trace.holds(pairs, world) or not trace.holds(list(trace.worked), world):
+        return False
+    trace.world = world
+    return True
 
 
 def unrounded(trace: Trace, pairs: list[Pair]) -> bool:
@@ -49,9 +76,11 @@ def moved(trace: Trace, pairs: list[Pair]) -> bool:
     if at != j or any(k == j for _m, k in trace.replaced[:-1]):
         return False  # the equation it displaced was itself the student's: not put back here
     F = trace.equations[j]
+    cf = coefficients(F.xreplace(trace.pts[0]), trace.U)
     for k in trace.equations:
-        if k == j:
-            continue
+        cg = coefficients(trace.equations[k].xreplace(trace.pts[0]), trace.U)
+        if k == j or not cf or not cg or alike(cf, cg) < 0.5:
+            continue  # only an equation much like it in its unknowns (the momentum or the impact rule it was worked from)
         equations = {**trace.equations, j: before, k: F}
         world = solve_world(equations, trace.U, trace.pts, trace.world)
         if world is None or not trace.holds(pairs, world) or not trace.holds(list(trace.worked), world):

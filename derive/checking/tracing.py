@@ -36,6 +36,7 @@ class Trace(Protocol):
     stated: dict[int, set[str]]
     worked: tuple[Pair, ...]
     base: Outcome
+    own: dict[sympy.Symbol, sympy.Expr]
     displaced: tuple[int, sympy.Expr] | None
     unrefined: tuple[int, list[Values]] | None
 
