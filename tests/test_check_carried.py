@@ -412,3 +412,129 @@ def test_a_chain_stage_mistake_gives_the_declared_names_its_values() -> None:
     found = lines("chain-aqa-m3-2007-collide-again", work)
     assert found[2][:2] == ("wrong", "masses_swapped") and found[3][0] == "correct"
     assert [found[i][0] for i in (4, 5, 6, 7)] == ["carried"] * 4
+
+
+def test_a_sign_lost_moving_the_restitution_term_carries_into_the_other_velocity() -> None:
+    # Edexcel M2 2004 Q5: P (2m) at 5u hits Q (3m) at rest, e: 10u = 2x + 3y, y - x = 5eu.
+    # Substituting y = x + 5eu: 10u = 5x + 15eu, so 5x = 10u - 15eu, x = 2u - 3eu. With the
+    # sign of 15eu kept when it moves across, x = 2u + 3eu (the value the restitution law
+    # reversed would give, by coincidence); then y = x + 5eu = 2u + 8eu is the student's own
+    # restitution with their own x: carried, not a further slip (corpus e10, zb07).
+    work = (
+        "10mu = 2mx + 3my\n"
+        "y - x = 5eu\n"
+        "10u = 2x + 3(x + 5eu) = 5x + 15eu\n"
+        "5x = 10u + 15eu\n"
+        "x = 2u + 3eu\n"
+        "y = x + 5eu = 2u + 8eu\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][0] == "wrong"
+    assert found[5][0] == found[6][0] == "carried"
+
+
+def test_the_other_velocity_from_the_momentum_with_the_own_value_is_carried() -> None:
+    # The same slip (x = 2u + 3eu for 2u - 3eu), but y then found from the momentum, not the
+    # restitution: y = (10u - 2x)/3 = (10u - 4u - 6eu)/3 = 2u - 2eu (true y = 2u + 2eu). The
+    # slip stands for whichever equation the student did not go on with: carried.
+    work = (
+        "10mu = 2mx + 3my\n"
+        "y = x + 5eu\n"
+        "10u = 2x + 3x + 15eu\n"
+        "5x = 10u + 15eu\n"
+        "x = 2u + 3eu\n"
+        "y = (10u - 2x)/3 = (10u - 4u - 6eu)/3 = 2u - 2eu\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert found[4][0] == "wrong"
+    assert found[5][0] == found[6][0] == "carried"
+
+
+def test_a_value_found_from_the_exact_carried_value_not_its_rounding_is_carried() -> None:
+    # OCR M2 2006: 2 kg at 5 m/s meets 1 kg at 5 m/s head-on, e = 0.8: 5 = 2a + b, b - a = 8,
+    # so a = -1, b = 7. B's sign lost: 15 = 2a + b, then 15 = 3b - 16, b = 31/3 = 10.33
+    # (written 10.3) and a = b - 8 = 7/3 = 2.333 (written 2.33, from the exact 31/3; the
+    # rounded 10.3 would give 2.3): carried (corpus zb08).
+    work = (
+        "2(5) + 1(5) = 2a + b\n"
+        "b - a = 0.8(5 - (-5)) = 8\n"
+        "15 = 2(b - 8) + b = 3b - 16\n"
+        "b = 31/3 ≈ 10.3\n"
+        "a = b - 8 ≈ 2.33\n"
+    )
+    found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert [found[n][0] for n in (3, 4, 5)] == ["carried"] * 3
+
+
+def test_an_energy_worked_with_a_wrong_formula_is_carried_when_worked_on_to_a_number() -> None:
+    # OCR M2 2006 (2 kg at 5, 1 kg at -5, e = 0.8): a = -1, b = 7; T_1 = 25 + 12.5 = 37.5,
+    # T_2 = 1 + 24.5 = 25.5, lost 12 J. ½m(u - v)² for each body instead: ½(2)(6²) +
+    # ½(1)(12²) = 36 + 72 = 108; the line that works that expression to 108 carries it
+    # (corpus i10).
+    work = (
+        "2(5) + 1(-5) = 2a + b\n"
+        "b - a = 0.8(5 - (-5)) = 8\n"
+        "a = -1, b = 7\n"
+        "Delta T = 1/2(2)(5 - (-1))^2 + 1/2(1)(-5 - 7)^2\n"
+        "Delta T = (6)^2 + 0.5(12)^2 = 36 + 72 = 108 J\n"
+    )
+    found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
+    assert found[4][:2] == ("wrong", "ke_formula")
+    assert found[5][0] == "carried"
+
+
+def test_lines_after_two_slips_hold_with_the_values_as_the_student_stated_them() -> None:
+    # Edexcel M2 2004 Q5 (2m at 5u hits 3m at rest, e): 10u = 2x + 3y, y - x = 5eu, so
+    # 5y = 10u + 10eu, y = 2u + 2eu (right), x = y - 5eu = 2u - 3eu. The student writes
+    # 2u + 7eu (a sign slip) and keeps their right y. Then the kinetic energy with the masses
+    # exchanged, ½(3m)x² + ½(2m)y² (a second slip), worked with their own x and y:
+    # 1.5m(2u + 7eu)² + m(2u + 2eu)², and the loss from T_1 = ½(2m)(5u)² = 25mu²: both
+    # carried. (Solving the equations again with the slip would move y, which they kept.)
+    work = (
+        "10mu = 2mx + 3my\n"
+        "y - x = 5eu\n"
+        "5y = 10u + 10eu\n"
+        "y = 2u + 2eu\n"
+        "x = y - 5eu = 2u + 7eu\n"
+        "KE after = 1/2(3m)x^2 + 1/2(2m)y^2\n"
+        "= 1.5m(2u + 7eu)^2 + m(2u + 2eu)^2\n"
+        "KE lost = 25mu^2 - 1.5m(2u + 7eu)^2 - m(2u + 2eu)^2\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+    assert found[5][0] == "wrong"
+    assert found[6][:2] == ("wrong", "masses_swapped")
+    assert found[7][0] == found[8][0] == "carried"
+
+
+def test_a_result_said_right_then_worked_with_a_form_expanded_wrongly_is_carried() -> None:
+    # Edexcel M2 2004 Q5: x = u(2 - 3e), y = 2u(1 + e); T_2 = ½(2m)x² + ½(3m)y²
+    # = mu²[(2 - 3e)² + 6(1 + e)²] (right). Expanding, 6(1 + e)² = 6 + 12e + 6e², so the
+    # bracket is 10 + 15e²; written 10 - 12e + 15e² (the 12e of the second square lost): the
+    # slip. Then T_2 = mu²(10 - 12e + 15e²) and T_lost = 25mu² - T_2 = mu²(15 + 12e - 15e²),
+    # right given that bracket: carried (corpus u12).
+    work = (
+        "x = u(2 - 3e), y = 2u(1 + e)\n"
+        "KE after = 1/2(2m)x^2 + 1/2(3m)y^2 = mu^2[(2 - 3e)^2 + 6(1 + e)^2]\n"
+        "(2 - 3e)^2 + 6(1 + e)^2 = 4 - 12e + 9e^2 + 6 + 6e^2 = 10 - 12e + 15e^2\n"
+        "KE after = mu^2(10 - 12e + 15e^2)\n"
+        "KE lost = 25mu^2 - mu^2(10 - 12e + 15e^2) = mu^2(15 + 12e - 15e^2)\n"
+    )
+    found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][0] == "wrong"
+    assert found[4][0] == found[5][0] == "carried"
+
+
+def test_a_wrong_number_said_again_rounded_as_a_size_is_carried() -> None:
+    # OCR M2 2012: 0.8 kg at 4 m/s into a wall, e = 0.3: it rebounds at 1.2 m/s and the
+    # impulse is 0.8(-1.2 - 4) = -4.16 N s (4.16 N s away from the wall). Worked as -0.416
+    # (a decimal place lost), then "J = 0.42": the wrong number again, rounded, as a size:
+    # carried, not a further slip (corpus z07).
+    work = "v = -0.3(4) = -1.2\nI = 0.8(-1.2 - 4) = 0.8 x (-5.2)\n= -0.416\nso J = 0.42 N s, away from the wall\n"
+    found = lines("ocr-m2-2012-particle-hits-wall", work)
+    assert found[1][0] == found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"

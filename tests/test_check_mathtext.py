@@ -99,3 +99,10 @@ def test_a_name_the_student_introduces() -> None:
     report = derive.check(derive.solve(derive.load("byjus-4kg-ball-catches-8kg-ball")), derivation=work)
     assert report.all_correct, report.text()
     assert "Defines G" in report.items[1].message
+
+
+def test_divided_by_a_fraction_is_divided_by_the_whole_fraction() -> None:
+    # \div then \frac{2u}{9}: the quotient is (3u/11)/(2u/9) = 27/22 (corpus e13), not
+    # (3u/11)/(2u) then /9; 6 ÷ ½ is 12.
+    assert latex_to_plain(r"\frac{3u}{11} \div \frac{2u}{9} = \frac{27}{22}") == "(3u)/11 / ((2u)/9) = 27/22"
+    assert latex_to_plain(r"x = 6 \div \tfrac{1}{2}") == "x = 6 / (1/2)"

@@ -22,7 +22,7 @@ from derive.checking.inference import Read
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
 from derive.checking.relations import Point, Values
-from derive.checking.worlds import NUMBER_SIDE, Pair
+from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
 from derive.mathtext.notation import student
 from derive.problem.expr import ParseError
 
@@ -133,6 +133,10 @@ class Carrying:
     went_wrong = False
     previous: tuple[str, list[Pair]] | None = None  # the relation just before, if it held
     worked: tuple[Pair, ...] = ()  # the carried relations in the unknowns, so far
+    displaced: tuple[int, sympy.Expr] | None = None  # the equation the last slip took the place of
+    said: dict[sympy.Expr, sympy.Expr] = {}  # noqa: RUF012 - the results as last said (replaced, never changed)
+    wrong_forms: dict[sympy.Expr, sympy.Expr] = {}  # noqa: RUF012 - forms in letters worked wrongly, as written
+    unrefined: tuple[int, list[Values]] | None = None  # the world before a carried line's rounding refined it
 
     def _note(self, line: Line, status: str) -> None:
         """What a relation judged ``status`` leaves for the lines after it."""
@@ -142,6 +146,11 @@ class Carrying:
         self.went_wrong = status in ("wrong", "carried")
         if status == "carried":  # a student's own value (a = (5 - 3e)u/3 after a slip), kept by a later slip
             self.worked += tuple(p for p in pairs if p.difference.free_symbols & set(self.U))
+        first = line.exprs[0] if held and line.exprs and len(line.exprs) >= 2 else None
+        if first in {s for s, _x in self.ctx.derived().values()}:  # "KE after = … = ⅛mu²[(e - 1)² + (1 + e)²]"
+            self.said = {**self.said, first: line.exprs[-1]}  # type: ignore[index, misc]
+            if status == "carried":  # "KE after = ¼mu²(e² - e + 1)" from a form worked wrongly: its own value
+                self.own[first] = line.exprs[-1]  # type: ignore[index]
 
     def _continues(self, line: Line) -> bool:
         """Whether ``line`` goes on from a wrong or carried line (``= u(1 + kλ)/(ku(1 + λ))`` under
@@ -173,10 +182,14 @@ class Carrying:
         m = NUMBER_SIDE.match(student(line.sides[-1].strip())) if line.sides else None
         if isinstance(left, sympy.Symbol) and m and not m.group(3) and len(line.sides) >= 2:
             self.own[left] = sympy.Rational(m.group(1) + m.group(2))
+        elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].is_number:
+            self.own[left] = line.exprs[-1]  # "ΔT = ½(2)(5 + 1)² + ½(1)(-5 - 7)²": worked on the next line
         elif isinstance(left, sympy.Symbol) and len(line.exprs or ()) >= 2 and line.exprs[-1].free_symbols:
             last = line.exprs[-1]  # "KE before = … = 28m": a value in the symbolic givens
-            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and last.is_Mul:
+            if not self.ctx.in_unknowns(last).free_symbols & set(self.U) and (last.is_Mul or left in self.U):
                 self.own[left] = last
+            elif left in {s for s, _x in self.ctx.derived().values()} and left not in last.free_symbols:
+                self.own[left] = last  # "KE after = ½(6m)v_A² + ½(3m)v_B²": the student's own formula of it
         elif left is not None and len(line.exprs or ()) >= 2:
             self._worked_result(left, line.exprs[-1])
 
@@ -226,11 +239,13 @@ class Carrying:
 
     def _with_own_values(self, line: Line) -> bool:
         """Whether ``line`` holds with the values the student got wrong earlier put in."""
-        if not self.own or not line.exprs:
+        worked = {n: y for n, x in self.said.items() if n not in self.own and (y := x.xreplace(self.wrong_forms)) != x}
+        own = {**self.own, **worked}  # a result said right, worked on with a form the student got wrong
+        if not own or not line.exprs:
             return False
         d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
         lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
-        exprs = tuple(x.xreplace(lost).xreplace(self.own) for x in line.exprs)
+        exprs = tuple(x.xreplace(own).xreplace(lost).xreplace(own) for x in line.exprs)  # own T_lost first
         if exprs == line.exprs:
             return False
         return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
@@ -297,6 +312,8 @@ class Carrying:
         kept with its right value where that is the same at every sample point, so that the
         lines worked from it are carried (:meth:`_carries_number`)."""
         left, right = (number_of(x.xreplace(self.pts[0])) for x in (bad.left, bad.right))
+        if bad.raw is not None and (bad.left.free_symbols or bad.right.free_symbols) and not bad.raw[0].is_Symbol:
+            self.wrong_forms = {**self.wrong_forms, bad.raw[0]: bad.raw[1]}  # (1 + e)² + (e - 1)² = 2e² - 2e + 2
         if left is None or right is None or bad.left.free_symbols or bad.right.free_symbols:
             return
         sides = bad.text.split(" = ")
@@ -319,7 +336,21 @@ class Carrying:
         exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
         if exprs != line.exprs and self.holds(self.pairs(replace(line, exprs=exprs)), self.truth):
             return True
-        return self._worked_on(line, wrong.lstrip("+-"), value.real)
+        return self._worked_on(line, wrong.lstrip("+-"), value.real) or self._restates(line, written, value.real)
+
+    def _restates(self, line: Line, wrong: sympy.Rational, right: float) -> bool:
+        """``J ≈ 0.238`` after ``0.060 × (-39.6) = -0.2376`` (2.376): the wrong number said again,
+        rounded and maybe as a size, for a quantity: true once its right value is put in its place."""
+        if not line.exprs or len(line.exprs) != 2 or not line.exprs[0].free_symbols or right == 0:
+            return False
+        m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
+        if m is None or m.group(3) or not written_right(Decimal(m.group(2)), sympy.Float(abs(wrong), 20)):
+            return False
+        put = sympy.Float(abs(right) * (-1 if m.group(1) == "-" else 1), 20)
+        for fixed in (put, -put):  # the size of the right value, or the value with its sign
+            if self.holds(self.pairs(replace(line, exprs=(line.exprs[0], fixed))), self.truth):
+                return True
+        return False
 
     def _worked_on(self, line: Line, wrong: str, right: float) -> bool:
         """``v_A2 = 1.3(11.97) - 0.3(19.657) = 9.664`` after ``V = … = 11.97`` (11.79), or

@@ -24,6 +24,7 @@ from derive.checking import (
     labelled,
     misread,
     mistakes,
+    reworld,
     rounding,
     slipnames,
     slipworld,
@@ -151,7 +152,7 @@ class Trace(Carrying):
                 self._wrote_wrong(line)
                 return self._carried(line)
             return self._correct(line, pairs, answer)
-        if self.world is not None and (self.holds(pairs, self.world) or workedslips.speed_of_reversed(self, pairs)):
+        if reworld.in_world(self, pairs):
             self._wrote_wrong(line)
             own = [p for p in pairs if not self.holds([p], self.truth) and p.difference.free_symbols & set(self.U)]
             if own:  # the student's own equation, at the figures written, takes its place in the world
@@ -288,7 +289,7 @@ class Trace(Carrying):
         if v.rule in ("mistaken_equation", "solves_as_mistake") and (copied := slipworld.number_copied(self, bad)):
             return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
-        j = v.equation if v.equation is not None else self._closest(bad.difference)
+        j = v.equation if v.equation is not None and not pinned else self._closest(bad.difference)
         if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
         if not diags and not pinned:
@@ -404,7 +405,7 @@ class Trace(Carrying):
         if F.free_symbols & set(self.U) and j != KEPT:
             j = j if j is not None else self._closest(F)
             if j is not None:
-                self.equations[j] = F
+                self.displaced, self.equations[j] = (j, self.equations[j]), F
                 self.replaced.append((line.number, j))
                 world = solve_world(self.equations, self.U, self.pts, self.world or self.truth)
                 world = carried.kept_world(self, F, j, world)

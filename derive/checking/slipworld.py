@@ -65,6 +65,7 @@ def refine(trace: Trace, pair: Pair) -> None:
             for u in trace.U
         )
         if near:
+            trace.unrefined = (len(trace.replaced), trace.world)  # the student may go on from the exact value
             trace.equations[j] = F
             trace.world = trial
             return

@@ -132,4 +132,4 @@ def renamed(trace: Solving, line: Read, bad: Pair, v: Verdict) -> tuple[int | No
         return None  # the line puts numbers in a formula (the masses swapped in it): not a rearrangement
     at = (trace.U, trace.pts[0])
     name = solving_slip(line.sides, trace.pairs(line), trace.previous, at, lambda p: trace.holds([p], world))
-    return (v.equation, SOLVING[name], name) if name else None
+    return (None, SOLVING[name], name) if name else None  # in place of the closest: not the mistake's equation

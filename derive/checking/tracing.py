@@ -14,6 +14,7 @@ from derive.checking.worlds import Pair
 if TYPE_CHECKING:
     from derive.checking.context import Context
     from derive.checking.inference import Read
+    from derive.checking.mistakes import Outcome
     from derive.checking.relations import Point, Values
 
 
@@ -34,6 +35,10 @@ class Trace(Protocol):
     named: dict[int, set[str]]
     stated: dict[int, set[str]]
     worked: tuple[Pair, ...]
+    base: Outcome
+    own: dict[sympy.Symbol, sympy.Expr]
+    displaced: tuple[int, sympy.Expr] | None
+    unrefined: tuple[int, list[Values]] | None
 
     def _closest(self, F: sympy.Expr) -> int | None: ...
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...

@@ -104,6 +104,7 @@ def latex_to_plain(tex: str) -> str:
         else:
             piece = show(node, top=True)
             piece = f"({piece})" if piece and tok == "{" else piece  # a group
+            piece = f"({piece})" if start and parser.toks[start - 1] == r"\div" and "/" in piece else piece  # ÷ ⅔
         out.append(piece if parser.spans[start][0] == end else " " + piece)
         end = parser.spans[parser.i - 1][1]
     plain = " ".join("".join([*out, *tags]).split())

@@ -1,0 +1,92 @@
+"""Which of the student's equations a slip took the place of, settled by what they write next.
+
+A slip in a line worked from two equations at once (``5x = 10u + 15eu`` after substituting
+``y = x + 5eu`` into the momentum) stands for neither of them more than the other: the student
+still believes both, and finds the other velocity from whichever they like. The trace guesses
+one (:func:`~.worlds.closest`); where a later line holds only if the slip had taken the place
+of another equation (``y = (10u - 2x)/3`` with their own x, the momentum kept), that line is
+carried, and the slip's world is the one it shows.
+"""
+
+from __future__ import annotations
+
+import sympy
+
+from derive.checking import workedslips
+from derive.checking.numeric import number_of
+from derive.checking.relations import coefficients
+from derive.checking.tracing import Trace
+from derive.checking.worlds import Pair, alike, solve_world
+
+
+def in_world(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs`` hold given the slips so far: in their world (a speed of a velocity
+    reversed too), or in another the student's own earlier lines allow (the world before a
+    rounding refined it, or the last slip in place of another equation)."""
+    if trace.world is None:
+        return False
+    if trace.holds(pairs, trace.world) or workedslips.speed_of_reversed(trace, pairs):
+        return True
+    return unrounded(trace, pairs) or moved(trace, pairs) or stated(trace, pairs)
+
+
+def stated(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs`` hold with the velocities as the student last stated each of them (a
+    right one from a line that held, a wrong one from their slip: ``v_B = ⅓u(1 + e)`` then
+    ``v_A = u - 2v_B = ⅓u(1 + 2e)``), where the slip's world solved again moves one they kept;
+    that is then the world."""
+    own = {u: x for u, x in trace.own.items() if u in trace.U}
+    if not own or trace.holds(pairs, trace.truth):
+        return False
+    world = []
+    for pt, truth in zip(trace.pts, trace.truth, strict=True):
+        values = dict(truth)
+        for u, x in own.items():
+            v = number_of(trace.ctx.in_unknowns(x).xreplace(pt).xreplace(truth))
+            if v is None or abs(v.imag) > 1e-12:
+                return False
+            values[u] = sympy.Float(v.real, 20)
+        world.append(values)
+    if not trace.holds(pairs, world) or not trace.holds(list(trace.worked), world):
+        return False
+    trace.world = world
+    return True
+
+
+def unrounded(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs`` hold in the slip's world as it was before a carried line's rounded value
+    refined it (``b = a + 3 ≈ -0.714`` from a = -26/7, after ``a = -26/7 ≈ -3.71``): the student
+    goes on from their exact value, not the rounded one."""
+    if trace.unrefined is None or trace.unrefined[0] != len(trace.replaced):
+        return False  # a slip since: that world is not the student's any more
+    return trace.holds(pairs, trace.unrefined[1]) and not trace.holds(pairs, trace.truth)
+
+
+def moved(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs`` (a line false for the problem and in the slip's world) hold once the
+    last slip takes the place of another of the equations, the one it displaced put back; every
+    carried relation so far must hold there too. The trace's world is then that one."""
+    U = set(trace.U)
+    if trace.world is None or not trace.replaced or trace.displaced is None:
+        return False
+    if not any(p.difference.free_symbols & U for p in pairs) or trace.holds(pairs, trace.truth):
+        return False
+    n, j = trace.replaced[-1]
+    at, before = trace.displaced
+    if at != j or any(k == j for _m, k in trace.replaced[:-1]):
+        return False  # the equation it displaced was itself the student's: not put back here
+    F = trace.equations[j]
+    cf = coefficients(F.xreplace(trace.pts[0]), trace.U)
+    for k in trace.equations:
+        cg = coefficients(trace.equations[k].xreplace(trace.pts[0]), trace.U)
+        if k == j or not cf or not cg or alike(cf, cg) < 0.5:
+            continue  # only an equation much like it in its unknowns (the momentum or the impact rule it was worked from)
+        equations = {**trace.equations, j: before, k: F}
+        world = solve_world(equations, trace.U, trace.pts, trace.world)
+        if world is None or not trace.holds(pairs, world) or not trace.holds(list(trace.worked), world):
+            continue
+        trace.displaced = (k, trace.equations[k])
+        trace.equations, trace.world = equations, world
+        trace.replaced[-1] = (n, k)
+        return True
+    return False
