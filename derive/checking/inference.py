@@ -28,6 +28,7 @@ from derive.checking.frames import (
     uses_n_components,
 )
 from derive.checking.frames import pairs as frame_pairs
+from derive.checking.grounding import grounded, grounded_frame
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -124,10 +125,14 @@ def read_lines(
     either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
     signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
+    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded) for sg in signs}
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
+        ((*found[sg], sg) for sg in signs),
         key=lambda c: c[0] + (0 if own or c[3] == -1 else 1),  # derive's names only: two more must hold
     )
+    g = grounded_frame(ctx, ways, {sg: f[1] for sg, f in found.items()}, (pt, truth)) if own else None
+    if g:  # the frame the givens as written ground, not the one most lines hold in
+        (_, mapping, inferred), s = found[g], g
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
@@ -343,6 +348,7 @@ def _infer(
                 + _natural(group, combo)
             ),
         )
+        best = grounded(best, options, group, mapping, pairs, (ctx, pt, truth, sign))  # not a slip made right
         trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
