@@ -14,12 +14,15 @@ names stand in, on which the natural reading and it disagree, holds that way.
 from __future__ import annotations
 
 import itertools
+import re
 
 import sympy
 
 from derive.checking.context import Context
 from derive.checking.frames import Pair, pairs
+from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
+from derive.problem.units import VELOCITY
 
 Option = tuple[tuple[str, sympy.Expr], ...]  # for each name of a group: (what, its meaning)
 
@@ -145,3 +148,15 @@ def _answer(exprs: tuple[sympy.Expr, ...], mapping: dict, before: set[sympy.Symb
     if len(exprs) != 2 or not exprs[0].is_Symbol or exprs[1].free_symbols:
         return False
     return not (sympy.sympify(mapping.get(exprs[0], exprs[0])).free_symbols & before)
+
+
+def the_speed(ctx: Context, group: list[sympy.Symbol], options: list[Option]) -> Option | None:
+    """A one-letter name of the student's own that no reading makes hold (``U sin 30° = ½U`` is
+    true whatever U is): the problem's one speed given as a letter (``speed U``, derive's v_A1),
+    as a student renames it; None where the problem gives no such speed or more than one."""
+    given = [g.symbol for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
+    if len(group) != 1 or len({ctx.in_unknowns(g) for g in given}) != 1:
+        return None
+    if not re.fullmatch(re.escape(PREFIX) + "[A-Za-z]", group[0].name):
+        return None
+    return next((o for o in options if o[0][1] in given), None)
