@@ -412,3 +412,22 @@ def test_a_convention_in_the_way_a_body_was_going_with_zero_momentum(who: str) -
         "-2m(2u) + 4mu = 2mx + 4my\n0 = x + 2y\ny - x = e(-2u - u) = -3eu\n3y = -3eu\ny = -eu\nx = 2eu"
     )
     assert set(by_line(ZERO, work).values()) == {"correct"}, by_line(ZERO, work)
+
+
+@pytest.mark.parametrize(
+    ("way", "work", "seen"),
+    [
+        # CIE 2019 (above) in B's way: before -2u and u, after x = 2eu, y = -eu
+        (
+            "Q",
+            "-2m(2u) + 4mu = 2mx + 4my\n0 = x + 2y\ny - x = e(-2u - u) = -3eu\n3y = -3eu\ny = -eu\nx = 2eu",
+            "cccccc",
+        ),
+        ("P", "2m(2u) - 4mu = 2mx + 4my\n0 = x + 2y\ny - x = 3eu\n3y = 3eu\ny = eu\nx = -2eu", "cccccc"),
+        ("P", "2m(2u) - 4mu = 2mx + 4my\n0 = x + 2y\nx - y = 3eu\n-3y = 3eu\ny = -eu\nx = 2eu", "ccwkkk"),
+    ],
+)
+def test_names_declared_in_the_way_a_body_was_moving(way: str, work: str, seen: str) -> None:
+    lead = f"x and y are the velocities of P and Q after, both in the direction {way} was moving.\n"
+    status = {"c": "correct", "w": "wrong", "k": "carried"}
+    assert by_line(ZERO, lead + work) == {str(i + 2): status[s] for i, s in enumerate(seen)}

@@ -19,7 +19,7 @@ import re
 import sympy
 
 from derive.checking.context import Context
-from derive.checking.frames import Pair, pairs
+from derive.checking.frames import Pair, n_components, pairs
 from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
 from derive.problem.units import VELOCITY
@@ -113,9 +113,10 @@ def _signs_of(combo: Option, options: list[Option]) -> list[Option]:
 
 def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], at: tuple[dict, dict]) -> int | None:
     """The frame (+1 derive's n, -1 reversed) the givens as written ground, where the student's
-    own names are read both ways: the first relation the names stand in (an answer such as
+    own names are read both ways: the first relation that holds in either (an answer such as
     ``v_A = -4`` never counts) decides where it holds one way only; where it holds either way
-    (``0 = x + 2y``, an energy), derive's. None where no relation is read. ``ways`` are the
+    (``0 = x + 2y``, an energy), derive's. None where no relation holds, or the first one read
+    is false either way (a slip: the relations that hold choose, as before). ``ways`` are the
     relations read in each frame, ``found`` each frame's mapping; a later relation never turns
     the frame (a restitution law upside down would otherwise make it)."""
     pt, truth = at
@@ -124,22 +125,33 @@ def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], 
     sides = {sg: pairs(ctx, ways[sg], pt, truth) for sg in ways}
     subs = {sg: {k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in found[sg].items()} for sg in ways}
     before = {c for c in (ctx.model.nm.A1n, ctx.model.nm.B1n) if isinstance(c, sympy.Symbol)}
+    turned = {p for p in found[1] if found[-1].get(p) != found[1][p]}  # what the frame moves
     for k, r in enumerate(ways[1]):
         if r.exprs is None or _answer(r.exprs, found[1], before):
             continue
+        if r.exprs == ways[-1][k].exprs and not any(turned & x.free_symbols for x in r.exprs):
+            continue  # nothing in it the frame moves (``m = 2``, a size)
         held = {
             sg: [
                 _holds(a.xreplace(subs[sg]), b.xreplace(subs[sg]), tol) for tol, (a, b), moved in sides[sg][k] if moved
             ]
             for sg in (1, -1)
         }
-        if not held[1]:
-            continue
         for mine, other in zip(held[1], held[-1], strict=False):
             if mine != other:
                 return 1 if mine else -1
-        return 1
+        if any(held[1]):
+            if _moves(ctx, r.exprs, turned, found[1], at):
+                return 1  # it holds either way: derive's
+            continue  # ``(v_A)_1n = 0``: true in either
+        if any(_evaluated(a, b, subs) for _t, (a, b), moved in sides[1][k] if moved):
+            return None  # false either way (a slip): the relations that hold choose
     return None
+
+
+def _evaluated(left: sympy.Expr, right: sympy.Expr, subs: dict) -> bool:
+    """Whether a pair has a number on each side in both frames (no name left unread)."""
+    return all(number_of(x.xreplace(subs[sg])) is not None for sg in (1, -1) for x in (left, right))
 
 
 def _answer(exprs: tuple[sympy.Expr, ...], mapping: dict, before: set[sympy.Symbol]) -> bool:
@@ -160,3 +172,15 @@ def the_speed(ctx: Context, group: list[sympy.Symbol], options: list[Option]) ->
     if not re.fullmatch(re.escape(PREFIX) + "[A-Za-z]", group[0].name):
         return None
     return next((o for o in options if o[0][1] in given), None)
+
+
+def _moves(ctx: Context, exprs: tuple, turned: set, mapping: dict, at: tuple[dict, dict]) -> bool:
+    """Whether a relation has something the frame turns that is not zero (``(v_A)_1n = 0`` holds
+    in either frame and says nothing of it; ``0 = x + 2y`` with x, y not zero does)."""
+    pt, truth = at
+    ns = set(n_components(ctx))
+    for s in set().union(*(x.free_symbols for x in exprs)) & (turned | ns):
+        value = number_of(ctx.in_unknowns(mapping.get(s, s)).xreplace(pt).xreplace(truth))
+        if value is None or abs(value) > 1e-12:
+            return True
+    return False
