@@ -774,6 +774,16 @@ def test_a_component_labelled_in_words_in_latex_starting_with_a_letter(problem: 
     assert found[1][0] == status, found
 
 
+def test_two_components_on_one_latex_line_each_with_its_own_label() -> None:
+    # AQA M3 2007: along the line u cos 30° = (√3/2)u, across it u sin 30° = u/2: both right; the
+    # second relation's label is the one just before it, not the first one's
+    work = (
+        r"A before: $(u_A)_n = u\cos 30^\circ = \frac{\sqrt{3}}{2}u$, \quad $(u_A)_t = u\sin 30^\circ = \frac{u}{2}$."
+    )
+    found = lines("aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b", work)
+    assert found[1][0] == "correct", found
+
+
 def test_the_problems_speed_renamed_by_the_student_is_read_as_it() -> None:
     # Pre-U specimen (equal balls, A at u, line of centres at 30° to its path, B at rest): along the
     # line u cos 30° = 0.866u; p + q = 0.866u and q - p = 0.866eu (B at rest). Written with U for u.

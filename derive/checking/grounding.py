@@ -163,13 +163,13 @@ def _answer(exprs: tuple[sympy.Expr, ...], mapping: dict, before: set[sympy.Symb
 
 
 def the_speed(ctx: Context, group: list[sympy.Symbol], options: list[Option]) -> Option | None:
-    """A one-letter name of the student's own that no reading makes hold (``U sin 30° = ½U`` is
+    """A speed's letter of the student's own (U, W) that no reading makes hold (``U sin 30° = ½U`` is
     true whatever U is): the problem's one speed given as a letter (``speed U``, derive's v_A1),
     as a student renames it; None where the problem gives no such speed or more than one."""
     given = [g.symbol for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
     if len(group) != 1 or len({ctx.in_unknowns(g) for g in given}) != 1:
         return None
-    if not re.fullmatch(re.escape(PREFIX) + "[A-Za-z]", group[0].name):
+    if not re.fullmatch(re.escape(PREFIX) + "[uUwW]", group[0].name):  # a letter for a speed, not an angle's
         return None
     return next((o for o in options if o[0][1] in given), None)
 

@@ -55,9 +55,10 @@ def _label(line: Read) -> str:
         shape = re.escape(lead.group(1)) + (rf"\s*\\?{lead.group(2)}" if lead.group(2) else r"(?![\d.])")
         found = re.search(rf"(?<![\d.]){shape}", line.written)
         at = found.start() if found else -1
-    name = re.match(r"[-+(]*([A-Za-z]\w*)\s*\*?\s*(?:sin|cos)\b", first)
-    if at < 0 and name:  # ``$U\sin30° = \tfrac12 U$``: the letter it starts with
-        found = re.search(rf"(?<![A-Za-z\\]){re.escape(name.group(1))}(?![A-Za-z])", line.written)
+    name = re.match(r"[-+(]*([A-Za-z]\w*)\s*\*?\s*(sin|cos)\b", first)
+    if at < 0 and name:  # ``$U\sin30° = \tfrac12 U$``: the letter it starts with, and its function
+        shape = rf"(?<![A-Za-z\\]){re.escape(name.group(1))}\s*\*?\s*\\?{name.group(2)}"
+        found = re.search(shape, line.written)
         at = found.start() if found else -1
     if at <= 0:
         return ""
