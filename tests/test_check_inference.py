@@ -254,6 +254,12 @@ def test_axes_placed_in_words(text: str, axes: dict) -> None:
         ("positive is to A's right", 0),  # A's right: left or right, to the values
         ("left is positive (from the ground)", 0),  # a point of view, not away from the ground
         ("right is positive as seen from the bank", 0),
+        # the way a body was going, in any tense
+        ("positive in the direction A was moving", 1),
+        ("positive = direction A was heading", 1),
+        ("the direction in which B was travelling is positive", -1),
+        ("taking the way B moves as +ve", -1),
+        ("positive in the direction a ball was moving", 0),  # "a", not the body A
     ],
 )
 def test_a_convention_said_in_words(words: str, sign: int) -> None:
@@ -319,3 +325,109 @@ def test_components_named_on_axes_placed_in_words() -> None:
     assert any("u_y as -v_A1n" in n for n in report.notes), report.notes
     seen = by_line(CUSHION, lead + "v_x = U cos α, v_y = -e_1 U sin α")
     assert seen == {"2": "correct", "3": "wrong"}, seen
+
+
+# ------------------------------------------------- a slip stays a slip: the reading is grounded
+# on the givens as written and the natural order of names, never on what makes a slip vanish.
+# Worked by hand:
+# - BYJU'S (above): 4(12) + 8(4) = 80 = 4a + 8b, b - a = 0.5(12 - 4) = 4: a = 4, b = 8. With the
+#   law upside down (a - b = 4): 80 = 4(b + 4) + 8b, b = 16/3 = 5.33, a = 9.33.
+# - Edexcel M2 2004 (2m at 5u hits 3m at rest): 10u = 2p + 3q, q - p = 5eu: q = 2(1 + e)u,
+#   p = (2 - 3e)u. Upside down (p - q = 5eu): 10u = 5q + 10eu, q = 2u(1 - e), p = (2 + 3e)u.
+# - Edexcel M2 2011 (m at 4u hits 3m at rest): 4u = v_A + 3v_B, v_B - v_A = 4eu; with x the
+#   speed A rebounds at (x = -v_A): 4u = -x + 3y and y + x = 4eu.
+# - CIE 2019 (2m at 2u meets 4m at u head-on): momentum 0 = 2x + 4y, y - x = 3eu: y = eu,
+#   x = -2eu. Upside down: x - y = 3eu, -3y = 3eu, y = -eu, x = 2eu.
+
+ED04 = "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m"
+ED11 = "edexcel-m2-2011-june-q2-m-at-4u-hits-3m-show-e-gt-third"
+ZERO = "cie-9231-p2-2019-june-q3-2m-at-2u-meets-4m-at-u"
+
+
+@pytest.mark.parametrize(("a", "b"), [("x", "y"), ("p", "q"), ("a", "b"), ("V_1", "V_2"), ("v_A", "v_B"), ("v1", "v2")])
+def test_a_restitution_law_upside_down_stays_wrong_whatever_the_names(a: str, b: str) -> None:
+    work = f"4(12) + 8(4) = 4{a} + 8{b}\n{a} - {b} = 0.5(12 - 4)\n{a} = {b} + 4\n80 = 4({b} + 4) + 8{b}\n"
+    work += f"64 = 12{b}\n{b} = 5.33, {a} = 9.33"
+    seen = by_line(CATCH, work)
+    assert seen["1"] == "correct" and seen["2"] == "wrong", seen
+    assert "correct" not in {seen[k] for k in "3456"}, seen
+
+
+def test_a_restitution_law_upside_down_in_letters() -> None:
+    work = "10mu = 2mp + 3mq\np - q = 5eu\np = q + 5eu\n10u = 5q + 10eu\nq = 2u(1 - e)\np = 2u - 2eu + 5eu = (2 + 3e)u"
+    seen = by_line(ED04, work)
+    assert seen == {"1": "correct", "2": "wrong", "3": "carried", "4": "carried", "5": "carried", "6": "carried"}
+
+
+@pytest.mark.parametrize("lead", ["", "A: 2u ->, B: u <-, -> is +ve. x (A), y (B) after.\n"])
+def test_zero_momentum_does_not_turn_the_frame_for_a_slip_after_it(lead: str) -> None:
+    # 0 = 2x + 4y holds in either frame: the restitution law after it may not choose one
+    work = lead + "2m(2u) - 4mu = 2mx + 4my\n0 = x + 2y\nx - y = 3eu\n-3y = 3eu\ny = -eu\nx = 2eu"
+    seen = by_line(ZERO, work)
+    k = 1 if lead else 0
+    assert [seen[str(i + k)] for i in range(1, 7)] == ["correct", "correct", "wrong"] + ["carried"] * 3, seen
+
+
+def test_habitual_names_keep_the_frame_of_the_givens_written() -> None:
+    work = "4(12) + 8(4) = 4v_A + 8v_B\nv_A - v_B = 0.5(12 - 4)\nv_A = v_B + 4\n80 = 12v_B + 16\nv_B = 5.33\nv_A = 9.33"
+    report = derive.check(derive.solve(derive.load(CATCH)), derivation=work)
+    assert not any("opposite to derive" in n for n in report.notes), report.notes
+    seen = by_line(CATCH, work)
+    assert seen["1"] == "correct" and seen["2"] == "wrong", seen
+
+
+@pytest.mark.parametrize(
+    ("work", "seen"),
+    [
+        ("4mu = -mx + 3my\ny + x = 4eu", {"1": "correct", "2": "correct"}),  # x: the speed A rebounds at
+        ("4mu = -mx + 3my\ny - x = 4eu", {"1": "correct", "2": "wrong"}),  # then the law with x's sign lost
+    ],
+)
+def test_a_name_for_a_rebound_speed_is_read_from_its_first_relation(work: str, seen: dict) -> None:
+    assert by_line(ED11, work) == seen
+
+
+@pytest.mark.parametrize(
+    ("work", "seen"),
+    [
+        (
+            "4(-12) + 8(-4) = 4x + 8y\ny - x = 0.5(-12 - (-4))\nx = -4, y = -8",
+            {"1": "correct", "2": "correct", "3": "correct"},
+        ),
+        ("4(-12) + 8(-4) = 4x + 8y\nx - y = 0.5(-12 - (-4))", {"1": "correct", "2": "wrong"}),
+        ("4(12) + 8(4) = 8x + 4y\ny - x = 0.5(12 - 4)", {"1": "wrong", "2": "correct"}),  # masses swapped: not x for B
+    ],
+)
+def test_the_givens_written_ground_the_frame_of_names_never_seen(work: str, seen: dict) -> None:
+    # before written as -12 and -4: left is positive; after -4 and -8 in that frame
+    assert by_line(CATCH, work) == seen
+
+
+@pytest.mark.parametrize("who", ["Q", "B"])
+def test_a_convention_in_the_way_a_body_was_going_with_zero_momentum(who: str) -> None:
+    # CIE 2019 (above) with B's way positive: before -2u and +u, after x = 2eu and y = -eu; the
+    # momentum is 0 either way, so only the words can say the frame
+    work = (
+        f"Take the direction {who} was moving as positive; x and y are the velocities of A and B after.\n"
+        "-2m(2u) + 4mu = 2mx + 4my\n0 = x + 2y\ny - x = e(-2u - u) = -3eu\n3y = -3eu\ny = -eu\nx = 2eu"
+    )
+    assert set(by_line(ZERO, work).values()) == {"correct"}, by_line(ZERO, work)
+
+
+@pytest.mark.parametrize(
+    ("way", "work", "seen"),
+    [
+        # CIE 2019 (above) in B's way: before -2u and u, after x = 2eu, y = -eu
+        (
+            "Q",
+            "-2m(2u) + 4mu = 2mx + 4my\n0 = x + 2y\ny - x = e(-2u - u) = -3eu\n3y = -3eu\ny = -eu\nx = 2eu",
+            "cccccc",
+        ),
+        ("P", "2m(2u) - 4mu = 2mx + 4my\n0 = x + 2y\ny - x = 3eu\n3y = 3eu\ny = eu\nx = -2eu", "cccccc"),
+        ("P", "2m(2u) - 4mu = 2mx + 4my\n0 = x + 2y\nx - y = 3eu\n-3y = 3eu\ny = -eu\nx = 2eu", "ccwkkk"),
+    ],
+)
+def test_names_declared_in_the_way_a_body_was_moving(way: str, work: str, seen: str) -> None:
+    lead = f"x and y are the velocities of P and Q after, both in the direction {way} was moving.\n"
+    status = {"c": "correct", "w": "wrong", "k": "carried"}
+    assert by_line(ZERO, lead + work) == {str(i + 2): status[s] for i, s in enumerate(seen)}

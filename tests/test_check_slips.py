@@ -731,6 +731,67 @@ def test_a_component_before_labelled_by_its_axis_in_words_with_sin_and_cos_swapp
     assert found[1][0] == "correct"
 
 
+@pytest.mark.parametrize(
+    ("work", "status"),
+    [
+        # OCR FM 2023: A at 4 m/s at 60° to the line of centres: along it 4 cos 60° = 2, across 4 sin 60° = 3.464
+        ("A before: along the line of centres 4sin60 = 3.464, across 4cos60 = 2", "wrong"),  # glued: 4sin60
+        ("A before: along the line of centres 4cos60 = 2, across 4sin60 = 3.464", "correct"),
+        ("A: along l.o.c. 4 sin 60° = 3.46", "wrong"),
+    ],
+)
+def test_a_component_labelled_in_words_with_the_function_glued_to_its_numbers(work: str, status: str) -> None:
+    found = lines("ocr-fm-2023-oblique-discs-60deg", work)
+    assert found[1][0] == status, found
+    if status == "wrong":
+        assert found[1][1] == "sin_cos_swapped", found
+
+
+@pytest.mark.parametrize(
+    ("problem", "work", "status"),
+    [
+        # AQA M3 2007 and Pre-U specimen: A at u, its path at 30° to the line of centres (the angle
+        # given or from the geometry): along it u cos 30° = (√3/2)u, so u sin 30° = u/2 is the swap
+        (
+            "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b",
+            "* along the line of centres: $u\\sin 30° = \\tfrac12 u$",
+            "wrong",
+        ),
+        (
+            "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b",
+            "* along the line of centres: $u\\cos 30° = \\tfrac{\\sqrt3}{2} u$",
+            "correct",
+        ),
+        (
+            "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg",
+            "along the line of centres: $U\\sin30° = \\tfrac12 U$",
+            "wrong",
+        ),
+    ],
+)
+def test_a_component_labelled_in_words_in_latex_starting_with_a_letter(problem: str, work: str, status: str) -> None:
+    found = lines(problem, work)
+    assert found[1][0] == status, found
+
+
+def test_two_components_on_one_latex_line_each_with_its_own_label() -> None:
+    # AQA M3 2007: along the line u cos 30° = (√3/2)u, across it u sin 30° = u/2: both right; the
+    # second relation's label is the one just before it, not the first one's
+    work = (
+        r"A before: $(u_A)_n = u\cos 30^\circ = \frac{\sqrt{3}}{2}u$, \quad $(u_A)_t = u\sin 30^\circ = \frac{u}{2}$."
+    )
+    found = lines("aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b", work)
+    assert found[1][0] == "correct", found
+
+
+def test_the_problems_speed_renamed_by_the_student_is_read_as_it() -> None:
+    # Pre-U specimen (equal balls, A at u, line of centres at 30° to its path, B at rest): along the
+    # line u cos 30° = 0.866u; p + q = 0.866u and q - p = 0.866eu (B at rest). Written with U for u.
+    work = "along the line of centres: U cos 30 = 0.866U\nCLM: 0.866U = p + q\nNEL: q - p = 0.866eU"
+    found = lines("pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg", work)
+    assert {k: v[0] for k, v in found.items()} == {1: "correct", 2: "correct", 3: "correct"}, found
+
+
 def test_an_angle_worked_out_taken_from_the_other_axis_is_named_and_carried() -> None:
     # OCR M3 2013 (equal spheres; B at 0.6 m/s, 30° to the line of centres, toward A; B turns
     # through 90°): B keeps 0.6 sin 30° = 0.3 across the line and its path after makes 60° with

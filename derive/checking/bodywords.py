@@ -14,6 +14,11 @@ _BODY_PHRASE = (
     (r"(\b(?i:speed|velocity|direction|momentum|KE|energy)\s+of\s+)", r"\b"),
     (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction))"),
     (r"((?:^|[:*,;(]|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),
+    # a sign convention: "positive in the direction P was moving"
+    (
+        r"(\b(?i:direction|way)\s+(?:(?i:that|in\s+which)\s+)?)",
+        r"(?=\s+(?i:was|is|had|mov|travel|go|went|head|start)\w*\b)",
+    ),
 )
 
 

@@ -28,6 +28,7 @@ from derive.checking.frames import (
     uses_n_components,
 )
 from derive.checking.frames import pairs as frame_pairs
+from derive.checking.grounding import grounded, grounded_frame, the_speed
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -124,10 +125,14 @@ def read_lines(
     either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
     signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
+    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded) for sg in signs}
     _, mapping, inferred, s = max(
-        ((*_infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded), sg) for sg in signs),
+        ((*found[sg], sg) for sg in signs),
         key=lambda c: c[0] + (0 if own or c[3] == -1 else 1),  # derive's names only: two more must hold
     )
+    g = grounded_frame(ctx, ways, {sg: f[1] for sg, f in found.items()}, (pt, truth)) if own else None
+    if g:  # the frame the givens as written ground, not the one most lines hold in
+        (_, mapping, inferred), s = found[g], g
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
@@ -314,7 +319,7 @@ def _infer(
     for pairs_of_line in pairs:
         for _t, (left, right), _m in pairs_of_line:
             found = sorted(_placeholders(left) | _placeholders(right), key=str)
-            new = [p for p in found if p not in mapping]
+            new = [p for p in found if p not in mapping and p not in unknown]  # met first here
             unknown += [p for p in new if p not in unknown]
             if len(new) >= 2 and not together:
                 together = new[:JOINT]
@@ -325,6 +330,7 @@ def _infer(
     inferred: dict[str, str] = {}
     singles = [[p] for p in unknown if p not in together][: MAX_INFERRED - len(together)]
     groups = ([together] if together else []) + singles  # bounded: the rest stay unknown
+    groups.sort(key=lambda g: unknown.index(g[0]))  # in the order met: U in "U cos 30 = 0.866U" before p, q
     solved, known = _solved_for(raw), _knowns(ctx) - set(truth)  # an unknown before (find u) may be solved for
     for group in groups:
         options = [
@@ -335,20 +341,17 @@ def _infer(
         ]
         if not options:
             continue
-        best = max(
-            options,
-            key=lambda combo: (
-                score(pairs, {**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}}, ctx, pt, truth)
-                + shapes.score({**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}})
-                + _natural(group, combo)
-            ),
-        )
-        trial = {**mapping, **{p: c[1] for p, c in zip(group, best, strict=True)}}
+        tried = [{**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}} for combo in options]
+        fits = [score(pairs, t, ctx, pt, truth) + shapes.score(t) for t in tried]
+        best = max(zip(options, fits, strict=True), key=lambda cf: cf[1] + _natural(group, cf[0]))[0]
+        best = grounded(best, options, group, mapping, pairs, (ctx, pt, truth, sign))  # not a slip made right
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
-        fit = score(pairs, trial, ctx, pt, truth) + shapes.score(trial)
-        if fit < score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping) + need:
-            continue  # fewer than two relations hold that way: the name stays unknown
+        floor = max(min(fits), score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping))  # what holds anyway
+        if fits[options.index(best)] < floor + need:
+            best = the_speed(ctx, group, options)  # or "speed U": the problem's speed, renamed
+            if best is None:
+                continue  # fewer than two relations hold that way: the name stays unknown
         for p, (what, e) in zip(group, best, strict=True):
             mapping[p] = e
             inferred[p.name[1:]] = what

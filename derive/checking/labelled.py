@@ -55,6 +55,11 @@ def _label(line: Read) -> str:
         shape = re.escape(lead.group(1)) + (rf"\s*\\?{lead.group(2)}" if lead.group(2) else r"(?![\d.])")
         found = re.search(rf"(?<![\d.]){shape}", line.written)
         at = found.start() if found else -1
+    name = re.match(r"[-+(]*([A-Za-z]\w*)\s*\*?\s*(sin|cos)\b", first)
+    if at < 0 and name:  # ``$U\sin30° = \tfrac12 U$``: the letter it starts with, and its function
+        shape = rf"(?<![A-Za-z\\]){re.escape(name.group(1))}\s*\*?\s*\\?{name.group(2)}"
+        found = re.search(shape, line.written)
+        at = found.start() if found else -1
     if at <= 0:
         return ""
     return re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
@@ -110,14 +115,15 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     ):
         return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
     label = _label(line)
-    if not re.search(r"(?i)\b(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
+    if not re.search(r"(?i)(?<![a-z])(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
         return None
     across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names
     along = _ALONG.search(label) is not None and not across
     if along == across:
         return None
     names, axis = ctx.equation_names(), "n" if along else "t"
-    written = {t for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", line.sides[0])}
+    spaced = re.sub(r"(?i)(sin|cos|tan)", r" \1 ", line.sides[0])  # "2sin60": 2 and 60
+    written = {t for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", spaced)}
     bodies = []
     for b in "AB":
         speed = names.get(f"v_{b}1")

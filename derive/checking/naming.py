@@ -403,4 +403,6 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             sign = sign_of(m.group(1).split(".")[0]) or sign
         elif re.search(r"\bpositive\b|\+\s?ve\b", line, re.I) and not sign:  # "taking A's direction as +ve"
             sign = sign_of(line)
+        elif re.search(r"\b(?:both|each|all|measured|taken)\b[^.;]*?\bin\s+the\s+(?:direction|way)\b", line, re.I):
+            sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
     return out, sign

@@ -55,6 +55,9 @@ def sin_cos_swapped(model: Model) -> Variant | None:
             swap = {motion.angle: sympy.pi / 2 + 2 * phi - motion.angle}
             pre[n] = model.pre[n].xreplace(swap)
             pre[t] = model.pre[t].xreplace(swap)
+            if p.phi is not None:  # the line of impact from the geometry: each part keeps its way
+                pre[n] = sympy.sign(model.pre[n]) * sympy.Abs(model.pre[t])
+                pre[t] = sympy.sign(model.pre[t]) * sympy.Abs(model.pre[n])
     return Variant(pre=pre)
 
 

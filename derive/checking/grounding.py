@@ -1,0 +1,186 @@
+"""Names read as a teacher reads them: grounded on how they are first used, not on whatever
+makes the most lines hold.
+
+:mod:`.inference` picks what a student's names stand for by the relations that hold. A slip
+early on followed by lines worked from it makes more lines hold under a reading the student
+never meant (``x - y = eu`` for the restitution law, upside down: read with x and y "taken
+positive the other way", the slip turns right and the momentum line before it turns wrong).
+A teacher reads x and y as A's and B's velocities in the frame of the givens as written, and
+leaves that reading only for one the student's first relation bears out. So: a reading with a
+velocity's sign turned, or the two bodies swapped, is kept only where the first relation its
+names stand in, on which the natural reading and it disagree, holds that way.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.frames import Pair, n_components, pairs
+from derive.checking.naming import PREFIX
+from derive.checking.numeric import number_of
+from derive.problem.units import VELOCITY
+
+Option = tuple[tuple[str, sympy.Expr], ...]  # for each name of a group: (what, its meaning)
+
+
+def natural_of(combo: Option, options: list[Option], sign: int = 1) -> Option:
+    """The natural reading of ``combo``: the same velocities, each positive in the frame
+    (``sign``; not "taken the other way"), and two velocities at one time in the order A then B;
+    ``combo`` itself where that reading is not among ``options``."""
+    turned = [_signed(w, e, sign) for w, e in combo]
+    if len(turned) == 2:
+        first, second = (_name(e) for _w, e in turned)
+        if "B" in first and first.replace("B", "A") == second:
+            turned.reverse()  # x, y: A's then B's
+    out = tuple(turned)
+    return out if out in options else combo
+
+
+def _signed(what: str, e: sympy.Expr, sign: int) -> tuple[str, sympy.Expr]:
+    """A velocity candidate with the sign ``sign`` (others as they are)."""
+    plain = (what[1:], -e) if what.startswith("-") and isinstance(-e, sympy.Symbol) else (what, e)
+    if not plain[0].startswith("v_") or sign == 1:
+        return plain
+    return (f"-{plain[0]}", -plain[1])
+
+
+def first_holds(
+    found: list[list[Pair]], group: set[sympy.Symbol], ours: dict, theirs: dict, at: tuple[Context, dict, dict]
+) -> tuple[int, bool]:
+    """Which of two readings holds the first ``=`` the names of ``group`` stand in on which they
+    disagree (+1 ``ours``, -1 ``theirs``, 0 where none differs), and whether that ``=`` is in
+    the first relation the names stand in."""
+    ctx, pt, truth = at
+    subs = [{k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in m.items()} for m in (ours, theirs)]
+    lines = 0
+    for line in found:
+        mine = [(tol, lr) for tol, lr, _moved in line if group & (lr[0].free_symbols | lr[1].free_symbols)]
+        lines += bool(mine)
+        for tol, (left, right) in mine:
+            held = [_holds(left.xreplace(s), right.xreplace(s), tol) for s in subs]
+            if held[0] != held[1]:
+                return (1 if held[0] else -1), lines == 1
+    return 0, False
+
+
+def _holds(left: sympy.Expr, right: sympy.Expr, tol: float) -> bool:
+    a, b = number_of(left), number_of(right)
+    return a is not None and b is not None and abs(a - b) <= 2 * tol * max(abs(a), abs(b)) + 1e-12
+
+
+def _name(e: sympy.Expr) -> str:
+    e = -e if isinstance(-e, sympy.Symbol) else e
+    return e.name if isinstance(e, sympy.Symbol) else ""
+
+
+def grounded(
+    best: Option, options: list[Option], group: list[sympy.Symbol], mapping: dict, found: list[list[Pair]], at: tuple
+) -> Option:
+    """The natural reading of ``best``'s velocities (:func:`natural_of`; ``at`` is the context,
+    the point, the true values and the frame's sign), or another reading of them (``best``, or
+    their other signs: ``-mx`` written for a rebound) that holds the first relation on which the
+    two disagree. Every velocity turned at once (the after-values in another frame) is taken
+    only where the first relation the names stand in says so (never from a later relation whose
+    slip it would make right)."""
+    ctx, pt, truth, sign = at
+
+    def wins(a: Option, b: Option) -> bool:
+        ours = {**mapping, **{p: c[1] for p, c in zip(group, a, strict=True)}}
+        theirs = {**mapping, **{p: c[1] for p, c in zip(group, b, strict=True)}}
+        won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth))
+        every = all(x[1] == -y[1] for x, y in zip(a, b, strict=True))
+        return won > 0 and (first or not every)
+
+    natural = natural_of(best, options, sign)
+    current = best if best != natural and wins(best, natural) else natural
+    for other in _signs_of(current, options):
+        if wins(other, current):
+            current = other
+    return current
+
+
+def _signs_of(combo: Option, options: list[Option]) -> list[Option]:
+    """The readings of ``combo``'s velocities in its order with other signs (those among
+    ``options``), the fewest turned first."""
+    ways = [[(w, e), (w[1:], -e) if w.startswith("-") else (f"-{w}", -e)] for w, e in combo]
+    out = sorted(itertools.product(*ways), key=lambda c: sum(x != y for x, y in zip(c, combo, strict=True)))
+    return [c for c in out if c != combo and c in options]
+
+
+def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], at: tuple[dict, dict]) -> int | None:
+    """The frame (+1 derive's n, -1 reversed) the givens as written ground, where the student's
+    own names are read both ways: the first relation that holds in either (an answer such as
+    ``v_A = -4`` never counts) decides where it holds one way only; where it holds either way
+    (``0 = x + 2y``, an energy), derive's. None where no relation holds, or the first one read
+    is false either way (a slip: the relations that hold choose, as before). ``ways`` are the
+    relations read in each frame, ``found`` each frame's mapping; a later relation never turns
+    the frame (a restitution law upside down would otherwise make it)."""
+    pt, truth = at
+    if set(ways) != {1, -1}:
+        return None
+    sides = {sg: pairs(ctx, ways[sg], pt, truth) for sg in ways}
+    subs = {sg: {k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in found[sg].items()} for sg in ways}
+    before = {c for c in (ctx.model.nm.A1n, ctx.model.nm.B1n) if isinstance(c, sympy.Symbol)}
+    turned = {p for p in found[1] if found[-1].get(p) != found[1][p]}  # what the frame moves
+    for k, r in enumerate(ways[1]):
+        if r.exprs is None or _answer(r.exprs, found[1], before):
+            continue
+        if r.exprs == ways[-1][k].exprs and not any(turned & x.free_symbols for x in r.exprs):
+            continue  # nothing in it the frame moves (``m = 2``, a size)
+        held = {
+            sg: [
+                _holds(a.xreplace(subs[sg]), b.xreplace(subs[sg]), tol) for tol, (a, b), moved in sides[sg][k] if moved
+            ]
+            for sg in (1, -1)
+        }
+        for mine, other in zip(held[1], held[-1], strict=False):
+            if mine != other:
+                return 1 if mine else -1
+        if any(held[1]):
+            if _moves(ctx, r.exprs, turned, found[1], at):
+                return 1  # it holds either way: derive's
+            continue  # ``(v_A)_1n = 0``: true in either
+        if any(_evaluated(a, b, subs) for _t, (a, b), moved in sides[1][k] if moved):
+            return None  # false either way (a slip): the relations that hold choose
+    return None
+
+
+def _evaluated(left: sympy.Expr, right: sympy.Expr, subs: dict) -> bool:
+    """Whether a pair has a number on each side in both frames (no name left unread)."""
+    return all(number_of(x.xreplace(subs[sg])) is not None for sg in (1, -1) for x in (left, right))
+
+
+def _answer(exprs: tuple[sympy.Expr, ...], mapping: dict, before: set[sympy.Symbol]) -> bool:
+    """``v_A = -4``, ``x = 9.33``: one name and a number, not a velocity before (after-values
+    alone never set a frame; ``u_A = -12`` does)."""
+    if len(exprs) != 2 or not exprs[0].is_Symbol or exprs[1].free_symbols:
+        return False
+    return not (sympy.sympify(mapping.get(exprs[0], exprs[0])).free_symbols & before)
+
+
+def the_speed(ctx: Context, group: list[sympy.Symbol], options: list[Option]) -> Option | None:
+    """A speed's letter of the student's own (U, W) that no reading makes hold (``U sin 30° = ½U`` is
+    true whatever U is): the problem's one speed given as a letter (``speed U``, derive's v_A1),
+    as a student renames it; None where the problem gives no such speed or more than one."""
+    given = [g.symbol for g in ctx.problem.givens if g.value is None and not g.unknown and g.dim == VELOCITY]
+    if len(group) != 1 or len({ctx.in_unknowns(g) for g in given}) != 1:
+        return None
+    if not re.fullmatch(re.escape(PREFIX) + "[uUwW]", group[0].name):  # a letter for a speed, not an angle's
+        return None
+    return next((o for o in options if o[0][1] in given), None)
+
+
+def _moves(ctx: Context, exprs: tuple, turned: set, mapping: dict, at: tuple[dict, dict]) -> bool:
+    """Whether a relation has something the frame turns that is not zero (``(v_A)_1n = 0`` holds
+    in either frame and says nothing of it; ``0 = x + 2y`` with x, y not zero does)."""
+    pt, truth = at
+    ns = set(n_components(ctx))
+    for s in set().union(*(x.free_symbols for x in exprs)) & (turned | ns):
+        value = number_of(ctx.in_unknowns(mapping.get(s, s)).xreplace(pt).xreplace(truth))
+        if value is None or abs(value) > 1e-12:
+            return True
+    return False
