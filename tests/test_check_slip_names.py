@@ -198,3 +198,34 @@ def test_a_chains_e_is_its_one_coefficient_and_its_ratio_upside_down_is_restitut
     assert found[3][0] == "correct"
     found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.873\n")
     assert found[3][:2] == ("wrong", "arithmetic")
+
+
+def test_a_term_moved_across_and_summed_on_the_same_line_is_algebra() -> None:
+    # A line that moves a term across with its sign kept and works the sum at once
+    # (``12 v = 80 + 32 = 112``) shows the term moved: a teacher names it algebra, whatever the
+    # sum that follows, in numbers or letters, the unknown's side first or last.
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: 80 = 4 v_A2 + 8 v_B2, v_B2 = v_A2 + 4,
+    # 80 = 12 v_A2 + 32, so 12 v_A2 = 48, v_A2 = 4; 80 + 32 = 112 keeps the 32's sign (v_A2 = 28/3).
+    head = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 - 4)\n80 = 12 v_A2 + 32\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", head + "12 v_A2 = 80 + 32 = 112\nv_A2 = 112/12 = 9.33\n")
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", head + "v_A2 = (80 + 32)/12 = 9.33\n")
+    assert found[4][:2] == ("wrong", "algebra")
+    # OCR M2 2006: 2 kg at 5 hits 1 kg at rest, A after at 2: 10 = 4 + v_B2, so v_B2 = 6;
+    # v_B2 = 10 + 4 = 14 moves the 4 with its sign kept (the unknown alone on the left)
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 10 + 4 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "algebra")
+    # AQA M3 2014 (letters): 2m at 2u hits m at rest, e = 2/3: 4u = 2 v_A2 + v_B2,
+    # v_B2 = v_A2 + 4u/3, 4u = 3 v_A2 + 4u/3, so 3 v_A2 = 8u/3 (v_A2 = 8u/9);
+    # 3 v_A2 = 4u + 4u/3 = 16u/3 keeps the 4u/3's sign (then v_A2 = 16u/9, carried)
+    work = (
+        "2m(2u) = 2m v_A2 + m v_B2\nv_B2 - v_A2 = (2/3)(2u)\n4u = 3 v_A2 + \\tfrac43 u\n"
+        "3 v_A2 = 4u + \\tfrac43 u = \\tfrac{16}{3} u\nv_A2 = \\frac{16u}{9}\n"
+    )
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"

@@ -59,9 +59,32 @@ def _written(t: sympy.Expr, bad: Pair) -> bool:
     sides' terms, a number among the numbers of its text."""
     if t.free_symbols:
         terms = set().union(*(sympy.Add.make_args(sympy.expand(x)) for x in (bad.left, bad.right)))
-        return t in terms or -t in terms
-    written = {sympy.Rational(n) for n in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", bad.text)}
-    return sympy.nsimplify(abs(t), rational=True) in written
+        c, _rest = t.as_coeff_Mul()  # ``4u + \tfrac52 u``: summed at once, the 5/2 still shown
+        return (
+            t in terms
+            or -t in terms
+            or (abs(c) != 1 and sympy.nsimplify(abs(c), rational=True) in _written_numbers(bad.text))
+        )
+    return sympy.nsimplify(abs(t), rational=True) in _written_numbers(bad.text)
+
+
+#: A fraction as students type it: ``5/2``, ``5u/2``, ``\frac{5}{2}``, ``\tfrac52``, ``\dfrac{5u}{2}``.
+_FRACTIONS = (
+    re.compile(r"(?<![\w.])(\d+)\s*(?:[A-Za-z]\w*\s*)?/\s*(\d+)(?![\w.])"),
+    re.compile(r"\\[dt]?frac\s*(?:\{\s*(\d+)\s*(?:[A-Za-z]\w*\s*)?\}|(\d))\s*(?:\{\s*(\d+)\s*\}|(\d))"),
+)
+
+
+def _written_numbers(text: str) -> set[sympy.Rational]:
+    """The numbers written in ``text``: decimals and whole numbers, and fractions in the forms
+    students type them (the top and bottom of each, as one number)."""
+    out = {sympy.Rational(n) for n in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", text)}
+    for pattern in _FRACTIONS:
+        for m in pattern.finditer(text):
+            top, bottom = [g for g in m.groups() if g is not None][:2]
+            if int(bottom):
+                out.add(sympy.Rational(int(top), int(bottom)))
+    return out
 
 
 def _letter_lost(F: sympy.Expr, G: sympy.Expr, U: tuple) -> bool:

@@ -217,7 +217,8 @@ def solving_slip(
     # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
-    if len(line_u) == 1 and held and rearranging.kind(failing[0], held[-1], U, pt):  # a sign, a factor, a letter
+    shows = replace(failing[0], text=" = ".join(line_sides))  # ``v = 10 + 4 = 14``: the 4 moved, on the line
+    if len(line_u) == 1 and held and rearranging.kind(shows, held[-1], U, pt):  # a sign, a factor, a letter
         return "algebra"
     if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):
         return "arithmetic"
