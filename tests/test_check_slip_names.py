@@ -229,3 +229,28 @@ def test_a_term_moved_across_and_summed_on_the_same_line_is_algebra() -> None:
     assert found[3][0] == "correct"
     assert found[4][:2] == ("wrong", "algebra")
     assert found[5][0] == "carried"
+
+
+def test_a_number_worked_wrongly_putting_numbers_into_a_law_in_letters_is_arithmetic() -> None:
+    # A law in letters with an unknown found earlier (the line before has two unknowns), then
+    # the numbers put in and one worked wrongly: arithmetic, with the earlier value put in.
+    # Beer & Johnston 13.13 (Mg): 20(0.5) = 20 v_A2 + 35(0.3), v_A2 = -0.5/20 = -0.025;
+    # 0.3 - (-0.025) = e(0.5 - 0): 0.325 = 0.5e, e = 0.65; 0.35 = 0.5e works 0.3 + 0.025 wrongly.
+    work = (
+        "20(0.5) + 35(0) = 20 v_A2 + 35(0.3)\nv_A2 = (10 - 10.5)/20 = -0.025\n"
+        "v_B2 - v_A2 = e(v_A1 - v_B1)\n0.35 = 0.5 e\ne = 0.70\n"
+    )
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == "carried"
+    # OCR M2 2011: A (m_A) at 3 meets B, 0.2 kg at 1.5, head on; after, A at 2 on, B at 2.9 back:
+    # e = (2.9 - 2)/(3 + 1.5) = 0.2; momentum in letters, then 3 m_A - 0.3 = 2 m_A + 0.58 worked
+    # with 0.2(2.9) = 0.058: m_A = 0.88 kg (true 3 m_A - 0.3 = 2 m_A + 0.58, m_A = 0.88; slip 0.358)
+    work = (
+        "e = (2.9 - 2)/(3 + 1.5) = 0.2\nm_A v_A1 + m_B v_B1 = m_A v_A2 + m_B v_B2\n"
+        "3 m_A - 0.3 = 2 m_A + 0.058\nm_A = 0.358\n"
+    )
+    found = lines("ocr-m2-2011-spheres-find-e-and-mass", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
