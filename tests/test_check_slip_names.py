@@ -254,3 +254,41 @@ def test_a_number_worked_wrongly_putting_numbers_into_a_law_in_letters_is_arithm
     found = lines("ocr-m2-2011-spheres-find-e-and-mass", work)
     assert found[3][:2] == ("wrong", "arithmetic")
     assert found[4][0] == "carried"
+
+
+def test_a_velocity_before_taken_the_wrong_way_in_the_approach_alone_is_b_sign() -> None:
+    # The momentum right, then B's velocity before taken the other way in the restitution line
+    # only (the approach added where it is a difference, or the other way round): b_sign, and
+    # the lines worked from it carried (the momentum as it was, the approach as the student has it).
+    # AQA M3 2007: 0.3 kg at 3 meets 0.2 kg at 2 head on, e = 0.8: 0.5 = 0.3 v_A2 + 0.2 v_B2,
+    # approach 3 + 2 = 5, v_B2 - v_A2 = 4; with 3 - 2: v_B2 - v_A2 = 0.8, 0.5 = 0.5 v_A2 + 0.16,
+    # v_A2 = 0.68.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 - v_A2 = 0.8(3 - 2) = 0.8\n"
+        "0.5 = 0.3 v_A2 + 0.2(v_A2 + 0.8)\nv_A2 = 0.34/0.5 = 0.68\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    assert found[4][0] == "carried"
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: approach 12 - 4 = 8; 12 + 4 takes B's 4 the
+    # other way: v_B2 - v_A2 = 8, 80 = 12 v_A2 + 64, v_A2 = 16/12 = 1.33 (true 4)
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 + 4)\n80 = 12 v_A2 + 64\nv_A2 = 1.33\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    assert found[4][0] == "carried"
+
+
+def test_a_velocity_taken_the_wrong_way_in_an_inverse_restitution_in_numbers_is_b_sign() -> None:
+    # Find e, the velocities after in numbers: one velocity's sign lost in the separation (or the
+    # approach) of the restitution line alone is b_sign, the e it gives carried.
+    # AQA FM specimen: 0.8 kg and 0.4 kg meet head on, each at 6; A moves back at 1.2:
+    # 4.8 - 2.4 = -0.96 + 0.4 v_B2, v_B2 = 3.36/0.4 = 8.4; e = (8.4 + 1.2)/(6 + 6) = 0.8;
+    # 8.4 - 1.2 = 12e takes A's -1.2 as +1.2: e = 7.2/12 = 0.6.
+    work = "0.8(6) + 0.4(-6) = 0.8(-1.2) + 0.4 v_B2\nv_B2 = 3.36/0.4 = 8.4\n8.4 - 1.2 = e(6 + 6)\ne = 7.2/12 = 0.6\n"
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "b_sign")
+    assert found[4][0] == "carried"
