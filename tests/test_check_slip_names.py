@@ -292,3 +292,21 @@ def test_a_velocity_taken_the_wrong_way_in_an_inverse_restitution_in_numbers_is_
     assert found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "b_sign")
     assert found[4][0] == "carried"
+
+
+def test_equations_subtracted_with_the_signs_the_wrong_way_is_algebra_not_b_sign() -> None:
+    # The two laws written right, then subtracted with the signs the wrong way round: the line
+    # holds in a world with A's velocity before reversed, but the student's own laws just written
+    # do not; a teacher names the subtraction (algebra), not a velocity taken the wrong way.
+    # AQA M3 2014 (letters): 2m at 2u hits m at rest, e = 2/3: (1) 4u = 2 v_A2 + v_B2,
+    # (2) v_B2 - v_A2 = 4u/3; (1) - (2): 3 v_A2 = 4u - 4u/3 = 8u/3 (v_A2 = 8u/9); written
+    # 3 v_A2 = 4u/3 - 4u, then v_A2 = -8u/9 (carried).
+    work = (
+        "2m(2u) = 2m v_A2 + m v_B2 \\Rightarrow 4u = 2 v_A2 + v_B2 ...(1)\n"
+        "v_B2 - v_A2 = \\tfrac23 (2u) ...(2)\n"
+        "(1) - (2): 3 v_A2 = \\tfrac43 u - 4u\nv_A2 = -\\tfrac89 u\n"
+    )
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[1][0] == "correct" and found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"

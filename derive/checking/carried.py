@@ -232,7 +232,7 @@ def given_negated(trace: Trace, bad: Pair) -> bool:
         if equations == trace.equations:
             continue
         world = solve_world(equations, trace.U, trace.pts, trace.truth)
-        if world is not None and trace.holds([bad], world):
+        if world is not None and trace.holds([bad], world) and signslips.keeps_own(trace, world):
             trace.variant, trace.world, trace.equations = variant, world, equations
             return True
     return False

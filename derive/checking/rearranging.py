@@ -113,3 +113,19 @@ def _root(F: sympy.Expr, x: sympy.Symbol) -> sympy.Expr | None:
     if a == 0 or F.has(x**2) or (a.has(x) or b.has(x)):
         return None
     return -b / a
+
+
+def written_terms(text: str) -> int:
+    """How many terms the sides of ``text`` show as typed (``3v = \\tfrac43 u - 4u``: three), before
+    any like terms are summed: a sign at the top level of a side, not a leading one or an exponent's."""
+    count, depth, last = 0, 0, "="
+    for ch in text:
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif depth == 0 and (ch == "=" or (ch in "+-−" and last not in "=(*/^eE:")):
+            count += 1
+        if not ch.isspace():
+            last = ch
+    return count + 1

@@ -43,6 +43,14 @@ def negated_in_one(trace: Trace, bad: Pair) -> int | None:
             if j in own or j not in changed or j not in as_base or sympy.expand(changed[j] - as_base[j]) == 0:
                 continue
             world = solve_world({**trace.equations, j: changed[j]}, trace.U, trace.pts, trace.world or trace.truth)
-            if world is not None and trace.holds([bad], world):
-                found.add(j)
+            if world is not None and trace.holds([bad], world) and keeps_own(trace, world):
+                found.add(j)  # the student's own laws so far still right: the slip is this line's
     return next(iter(found)) if len(found) == 1 else None
+
+
+def keeps_own(trace: Trace, world: list) -> bool:
+    """Whether the student's own relations that held so far (in the unknowns) hold in ``world``
+    too: a velocity reversed in every equation that makes the student's laws just written false
+    (``u = v_A + v_B``, ``v_B - v_A = eu``, then ``2v_A = eu - u`` from their difference) is not
+    the slip; the signs lost in combining them are (algebra)."""
+    return all(trace.holds([p], world) for p in trace.held[-12:])

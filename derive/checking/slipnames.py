@@ -354,7 +354,8 @@ def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip
     if bad.raw is None:
         return "", None
     terms = [sympy.Add.make_args(x) for x in bad.raw]
-    if sum(len(t) for t in terms) < 3:
+    two = sum(len(t) for t in terms) == 2 and rearranging.written_terms(bad.text) >= 3  # 4u/3 - 4u: -8u/3
+    if sum(len(t) for t in terms) < 3 and not two:
         return "", None
     found = []
     for i, side in enumerate(bad.raw):
@@ -364,6 +365,8 @@ def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip
             left, right = (ctx.in_unknowns(x) for x in raw)
             if holds(replace(bad, left=left, right=right, raw=(raw[0], raw[1]))):
                 found.append((term, left - right))
+    if two and len(found) == 2:  # a = b with a's sign or b's: the same relation; the unknown's term
+        found = [f for f in found if ctx.in_unknowns(f[0]).free_symbols & set(unknowns)]
     if len(found) != 1:
         return "", None  # none, or more than one way: not this slip
     term, right_way = found[0]

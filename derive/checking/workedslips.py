@@ -43,7 +43,8 @@ def number_worked_wrongly(
     for p in held:
         if p.difference.free_symbols & unknowns == names and same_but_number(failing.difference, p.difference, U, pt):
             return "arithmetic"
-    for p in held if values else ():  # the numbers put into a law in letters: its other unknowns as found
+    numbers = failing.raw is not None and all(x.free_symbols <= unknowns for x in failing.raw)  # no letters given
+    for p in held if values and numbers else ():  # the numbers put into a law in letters: its other unknowns as found
         other = (p.difference.free_symbols & unknowns) - names
         if not names or not other or not all(s in values for s in other):
             continue
