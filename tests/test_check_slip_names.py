@@ -310,3 +310,21 @@ def test_equations_subtracted_with_the_signs_the_wrong_way_is_algebra_not_b_sign
     assert found[1][0] == "correct" and found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "algebra")
     assert found[4][0] == "carried"
+
+
+def test_dividing_through_with_one_term_left_undivided_is_algebra() -> None:
+    # Dividing a relation through by the unknown's coefficient and leaving one term as it was
+    # (``2v = u + eu`` -> ``v = u/2 + eu``) is algebra (a term not divided), not a number worked
+    # wrongly; the same for multiplying through.
+    # WJEC 2019: equal spheres, A at u, B at rest: u = v_A + v_B, v_B - v_A = eu; added:
+    # 2 v_B = u + eu, v_B = (1 + e)u/2; written v_B = u/2 + eu.
+    work = "u = v_A + v_B\nv_B - v_A = eu\n2v_B = u + eu\nv_B = u/2 + eu\n"
+    found = lines("wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    # CIE 2014 Nov: 2m at 4u meets m at 3u: 5u = 2 v_A2 + v_B2, v_B2 - v_A2 = 7eu, so
+    # 3 v_A2 = 5u - 7eu and v_A2 = (5 - 7e)u/3; written v_A2 = 5u/3 - 7eu (the 7eu not divided)
+    work = "8u - 3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 7eu\n3 v_A2 = 5u - 7eu\nv_A2 = 5u/3 - 7eu\n"
+    found = lines("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")

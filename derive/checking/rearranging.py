@@ -42,6 +42,7 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
     in the unknowns)."""
     sides = (held.left, held.right)
     out = []
+    through = _through(held, unknowns)
     for i, side in enumerate(sides):
         sign = 1 if i == 0 else -1
         for t in sympy.Add.make_args(sympy.expand(side)):
@@ -50,8 +51,22 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
                 c, _rest = t.as_coeff_Mul()
                 changed += [t / c] if c not in (0, 1, -1) else []
                 changed += [t * k for k in FACTORS]
+            elif through is not None and t.free_symbols and _written(t, bad):
+                changed.append(t * through)  # ``2v = u + eu`` -> ``v = u/2 + eu``: the eu not divided
             out += [held.difference + sign * (x - t) for x in changed]
     return out
+
+
+def _through(held: Pair, unknowns: set) -> sympy.Expr | None:
+    """The number the relation ``held`` is divided through by to give its one unknown alone (its
+    coefficient there: 2 in ``2v = u + eu``, ½ in ``v/2 = u``); None where that is not one number."""
+    x = held.difference.free_symbols & unknowns
+    if len(x) != 1:
+        return None
+    c = sympy.expand(held.difference).coeff(next(iter(x)))
+    if not c.is_number or c == 0 or abs(c) == 1:
+        return None
+    return abs(c)
 
 
 def _written(t: sympy.Expr, bad: Pair) -> bool:
