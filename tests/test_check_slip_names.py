@@ -328,3 +328,20 @@ def test_dividing_through_with_one_term_left_undivided_is_algebra() -> None:
     found = lines("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
     assert found[3][0] == "correct"
     assert found[4][:2] == ("wrong", "algebra")
+
+
+def test_a_given_copied_with_a_digit_changed_into_working_in_numbers_is_copied_wrong() -> None:
+    # A line of numbers (no unknown) whose working writes a given with one digit changed, and
+    # that is right with the given put back: the given is copied wrongly (not a sum worked
+    # wrongly), whatever the size of the given.
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: the approach is 12 - 4 = 8; 12 - 5 = 7
+    # copies B's 4 as 5; then v_B2 - v_A2 = 0.5(7) = 3.5 is carried.
+    work = "speed of approach = 12 - 5 = 7\nv_B2 - v_A2 = 0.5 \\times 7 = 3.5\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == "carried"
+    # KE before = ½(4)(12²) + ½(8)(4²) = 288 + 64 = 352 J; with A's 12 copied as 13:
+    # ½(4)(13²) + ½(8)(4²) = 338 + 64 = 402
+    work = "KE before = \\tfrac12(4)(13^2) + \\tfrac12(8)(4^2) = 402\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
