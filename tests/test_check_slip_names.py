@@ -345,3 +345,38 @@ def test_a_given_copied_with_a_digit_changed_into_working_in_numbers_is_copied_w
     work = "KE before = \\tfrac12(4)(13^2) + \\tfrac12(8)(4^2) = 402\n"
     found = lines("byjus-4kg-ball-catches-8kg-ball", work)
     assert found[1][:2] == ("wrong", "copied_wrong")
+
+
+def test_the_unknowns_coefficient_used_the_wrong_way_is_algebra() -> None:
+    # Solving c x = k for x the wrong way (multiplied by c, or k/c turned over) is algebra, not
+    # a number worked wrongly.
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, A then at 2: 10 = 4 + v_B2, v_B2 = 6;
+    # 6 - 2 = e(5 - 0): 4 = 5e, e = 4/5; e = 5/4 divides the wrong way.
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 6\n6 - 2 = e(5 - 0)\n4 = 5e\ne = 5/4\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+    # AQA M3 2007: 0.3 kg at 3 meets 0.2 kg at 2 head on, e = 0.8: 0.5 = 0.3 v_A2 + 0.2 v_B2,
+    # v_B2 = v_A2 + 4: 0.5 = 0.5 v_A2 + 0.8, 0.5 v_A2 = -0.3, v_A2 = -0.6; v_A2 = -0.15
+    # multiplies by 0.5 instead of dividing.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 - v_A2 = 0.8(3 + 2)\n"
+        "0.5 = 0.5 v_A2 + 0.8\n0.5 v_A2 = -0.3\nv_A2 = -0.15\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+
+
+def test_a_bracket_with_a_number_in_it_not_multiplied_out_is_algebra() -> None:
+    # Expanding k(x + n) as k x + n (the number in the bracket not multiplied) is algebra.
+    # AQA M3 2007 (as above): 0.5 = 0.3 v_A2 + 0.2(v_A2 + 4) = 0.5 v_A2 + 0.8;
+    # written 0.5 = 0.5 v_A2 + 4, then v_A2 = -7 (carried).
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 = v_A2 + 4\n"
+        "0.5 = 0.3 v_A2 + 0.2(v_A2 + 4)\n0.5 = 0.5 v_A2 + 4\nv_A2 = -7\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"

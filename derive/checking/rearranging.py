@@ -43,18 +43,51 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
     sides = (held.left, held.right)
     out = []
     through = _through(held, unknowns)
+    lone = sum(1 for x in sides for t in sympy.Add.make_args(sympy.expand(x)) if t.free_symbols & unknowns) == 1
     for i, side in enumerate(sides):
         sign = 1 if i == 0 else -1
         for t in sympy.Add.make_args(sympy.expand(side)):
             changed = [-t] if _written(t, bad) else []
             if t.free_symbols & unknowns:
                 c, _rest = t.as_coeff_Mul()
-                changed += [t / c] if c not in (0, 1, -1) else []
+                changed += [t / c] if c not in (0, 1, -1) else []  # its coefficient dropped
+                changed += [t / c**2] if c not in (0, 1, -1) and lone else []  # ``c x = k``: x = k c
                 changed += [t * k for k in FACTORS]
             elif through is not None and t.free_symbols and _written(t, bad):
                 changed.append(t * through)  # ``2v = u + eu`` -> ``v = u/2 + eu``: the eu not divided
+            elif not t.free_symbols:
+                changed += [n for n in _unexpanded(t, held.text) if _written(n, bad)]  # 8(v + 4): 8v + 4
             out += [held.difference + sign * (x - t) for x in changed]
+    return out + (_turned_over(held, unknowns) if lone else [])
+
+
+def _turned_over(held: Pair, unknowns: set) -> list[sympy.Expr]:
+    """``held`` (``k = c x``, numbers, one unknown) solved the wrong way round: ``x = c/k``."""
+    x = held.difference.free_symbols & unknowns
+    F = sympy.expand(held.difference)
+    if len(x) != 1 or F.free_symbols != x:
+        return []
+    u = next(iter(x))
+    c, k = F.coeff(u, 1), F.coeff(u, 0)
+    if not (c.is_number and k.is_number) or not c or not k or F.has(u**2):
+        return []
+    return [k * u + c]
+
+
+def _unexpanded(t: sympy.Expr, text: str) -> list[sympy.Expr]:
+    """The numbers ``n`` a number term ``t`` is ``k n`` of, for a bracket ``k(… n …)`` of ``text``
+    (``0.2(v + 4)``: 0.8 is 0.2 x 4; a term not multiplied out comes to 4), signed as ``t``."""
+    out = []
+    for m in _BRACKET.finditer(text):
+        k = sympy.Rational(m[1])
+        for n in re.findall(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.])", m[2]):
+            if k not in (0, 1) and sympy.Rational(n) and abs(t) == k * sympy.Rational(n):
+                out.append(sympy.sign(t) * sympy.Rational(n))
     return out
+
+
+#: A number times a bracket: ``0.2(v + 4)``, ``8 (x - 3)``, ``5*(w + 1.5)``.
+_BRACKET = re.compile(r"(?<![\w.^])(\d+(?:\.\d+)?)\s*\*?\s*\(([^()]*)\)")
 
 
 def _through(held: Pair, unknowns: set) -> sympy.Expr | None:
