@@ -1400,3 +1400,26 @@ def test_velocities_said_with_has_are_judged() -> None:
 def test_a_velocity_with_its_number_and_time_in_the_subscript_stays_one_name() -> None:
     # BYJU'S: 4 kg at 12 m/s and 8 kg at 4 m/s: 4(12) + 8(4) = 80. v_{1i}: ball 1's velocity initially.
     assert statuses("byjus-4kg-ball-catches-8kg-ball", "$4 v_{1i} + 8 v_{2i} = 80$\n") == ["correct"]
+
+
+# --- a direction in words after a side in letters --------------------------------------------
+@pytest.mark.parametrize(
+    "tail",
+    [
+        r"\tfrac89 m u, backwards.",
+        r"\frac{8mu}{9} (backwards)",
+        "(8/9)mu in the opposite direction",
+        "m(8u/9) backwards",
+        r"\dfrac{8}{9}mu to the left.",
+    ],
+)
+def test_a_direction_in_words_after_a_side_in_letters_is_not_part_of_it(tail: str) -> None:
+    # Edexcel M2 2003: P (2m) at u hits Q (m) at rest, e = 1/3: v_P = 5u/9, so the impulse on P
+    # is 2m(5u/9 - u) = -8mu/9: its size 8mu/9, "backwards" (the words give the sign). The
+    # working 2m(u - 5u/9) = 8mu/9 is right; the direction words are not a factor of the side.
+    work = f"Impulse on P = 2m(u - 5u/9) = {tail}\n"
+    assert statuses("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work) == ["correct"]
+    # a slip in the working is still one (4mu/9 for 8mu/9), whatever the words after it
+    work = f"Impulse on P = 2m(u - 5u/9) = {tail.replace('8', '4')}\n"
+    assert statuses("edexcel-m2-2003-january-q6-2m-hits-m-e-one-third", work) == ["wrong"]
+    assert not any(w in sides(f"J = {tail}")[0][1] for w in ("back", "opposite", "left"))  # words left off

@@ -198,3 +198,185 @@ def test_a_chains_e_is_its_one_coefficient_and_its_ratio_upside_down_is_restitut
     assert found[3][0] == "correct"
     found = lines("chain-ocr-m2-2006-drop-rebound", "v1 = 6.26\nv2 = 5.24\ne = 5.24/6.26 = 0.873\n")
     assert found[3][:2] == ("wrong", "arithmetic")
+
+
+def test_a_term_moved_across_and_summed_on_the_same_line_is_algebra() -> None:
+    # A line that moves a term across with its sign kept and works the sum at once
+    # (``12 v = 80 + 32 = 112``) shows the term moved: a teacher names it algebra, whatever the
+    # sum that follows, in numbers or letters, the unknown's side first or last.
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: 80 = 4 v_A2 + 8 v_B2, v_B2 = v_A2 + 4,
+    # 80 = 12 v_A2 + 32, so 12 v_A2 = 48, v_A2 = 4; 80 + 32 = 112 keeps the 32's sign (v_A2 = 28/3).
+    head = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 - 4)\n80 = 12 v_A2 + 32\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", head + "12 v_A2 = 80 + 32 = 112\nv_A2 = 112/12 = 9.33\n")
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", head + "v_A2 = (80 + 32)/12 = 9.33\n")
+    assert found[4][:2] == ("wrong", "algebra")
+    # OCR M2 2006: 2 kg at 5 hits 1 kg at rest, A after at 2: 10 = 4 + v_B2, so v_B2 = 6;
+    # v_B2 = 10 + 4 = 14 moves the 4 with its sign kept (the unknown alone on the left)
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 10 + 4 = 14\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "algebra")
+    # AQA M3 2014 (letters): 2m at 2u hits m at rest, e = 2/3: 4u = 2 v_A2 + v_B2,
+    # v_B2 = v_A2 + 4u/3, 4u = 3 v_A2 + 4u/3, so 3 v_A2 = 8u/3 (v_A2 = 8u/9);
+    # 3 v_A2 = 4u + 4u/3 = 16u/3 keeps the 4u/3's sign (then v_A2 = 16u/9, carried)
+    work = (
+        "2m(2u) = 2m v_A2 + m v_B2\nv_B2 - v_A2 = (2/3)(2u)\n4u = 3 v_A2 + \\tfrac43 u\n"
+        "3 v_A2 = 4u + \\tfrac43 u = \\tfrac{16}{3} u\nv_A2 = \\frac{16u}{9}\n"
+    )
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"
+
+
+def test_a_number_worked_wrongly_putting_numbers_into_a_law_in_letters_is_arithmetic() -> None:
+    # A law in letters with an unknown found earlier (the line before has two unknowns), then
+    # the numbers put in and one worked wrongly: arithmetic, with the earlier value put in.
+    # Beer & Johnston 13.13 (Mg): 20(0.5) = 20 v_A2 + 35(0.3), v_A2 = -0.5/20 = -0.025;
+    # 0.3 - (-0.025) = e(0.5 - 0): 0.325 = 0.5e, e = 0.65; 0.35 = 0.5e works 0.3 + 0.025 wrongly.
+    work = (
+        "20(0.5) + 35(0) = 20 v_A2 + 35(0.3)\nv_A2 = (10 - 10.5)/20 = -0.025\n"
+        "v_B2 - v_A2 = e(v_A1 - v_B1)\n0.35 = 0.5 e\ne = 0.70\n"
+    )
+    found = lines("beer-johnston-13-13-railroad-cars-find-e", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][:2] == ("wrong", "arithmetic")
+    assert found[5][0] == "carried"
+    # OCR M2 2011: A (m_A) at 3 meets B, 0.2 kg at 1.5, head on; after, A at 2 on, B at 2.9 back:
+    # e = (2.9 - 2)/(3 + 1.5) = 0.2; momentum in letters, then 3 m_A - 0.3 = 2 m_A + 0.58 worked
+    # with 0.2(2.9) = 0.058: m_A = 0.88 kg (true 3 m_A - 0.3 = 2 m_A + 0.58, m_A = 0.88; slip 0.358)
+    work = (
+        "e = (2.9 - 2)/(3 + 1.5) = 0.2\nm_A v_A1 + m_B v_B1 = m_A v_A2 + m_B v_B2\n"
+        "3 m_A - 0.3 = 2 m_A + 0.058\nm_A = 0.358\n"
+    )
+    found = lines("ocr-m2-2011-spheres-find-e-and-mass", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
+
+
+def test_a_velocity_before_taken_the_wrong_way_in_the_approach_alone_is_b_sign() -> None:
+    # The momentum right, then B's velocity before taken the other way in the restitution line
+    # only (the approach added where it is a difference, or the other way round): b_sign, and
+    # the lines worked from it carried (the momentum as it was, the approach as the student has it).
+    # AQA M3 2007: 0.3 kg at 3 meets 0.2 kg at 2 head on, e = 0.8: 0.5 = 0.3 v_A2 + 0.2 v_B2,
+    # approach 3 + 2 = 5, v_B2 - v_A2 = 4; with 3 - 2: v_B2 - v_A2 = 0.8, 0.5 = 0.5 v_A2 + 0.16,
+    # v_A2 = 0.68.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 - v_A2 = 0.8(3 - 2) = 0.8\n"
+        "0.5 = 0.3 v_A2 + 0.2(v_A2 + 0.8)\nv_A2 = 0.34/0.5 = 0.68\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    assert found[4][0] == "carried"
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: approach 12 - 4 = 8; 12 + 4 takes B's 4 the
+    # other way: v_B2 - v_A2 = 8, 80 = 12 v_A2 + 64, v_A2 = 16/12 = 1.33 (true 4)
+    work = "4(12) + 8(4) = 4 v_A2 + 8 v_B2\nv_B2 - v_A2 = 0.5(12 + 4)\n80 = 12 v_A2 + 64\nv_A2 = 1.33\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[2][:2] == ("wrong", "b_sign")
+    assert found[3][0] == "carried"
+    assert found[4][0] == "carried"
+
+
+def test_a_velocity_taken_the_wrong_way_in_an_inverse_restitution_in_numbers_is_b_sign() -> None:
+    # Find e, the velocities after in numbers: one velocity's sign lost in the separation (or the
+    # approach) of the restitution line alone is b_sign, the e it gives carried.
+    # AQA FM specimen: 0.8 kg and 0.4 kg meet head on, each at 6; A moves back at 1.2:
+    # 4.8 - 2.4 = -0.96 + 0.4 v_B2, v_B2 = 3.36/0.4 = 8.4; e = (8.4 + 1.2)/(6 + 6) = 0.8;
+    # 8.4 - 1.2 = 12e takes A's -1.2 as +1.2: e = 7.2/12 = 0.6.
+    work = "0.8(6) + 0.4(-6) = 0.8(-1.2) + 0.4 v_B2\nv_B2 = 3.36/0.4 = 8.4\n8.4 - 1.2 = e(6 + 6)\ne = 7.2/12 = 0.6\n"
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "b_sign")
+    assert found[4][0] == "carried"
+
+
+def test_equations_subtracted_with_the_signs_the_wrong_way_is_algebra_not_b_sign() -> None:
+    # The two laws written right, then subtracted with the signs the wrong way round: the line
+    # holds in a world with A's velocity before reversed, but the student's own laws just written
+    # do not; a teacher names the subtraction (algebra), not a velocity taken the wrong way.
+    # AQA M3 2014 (letters): 2m at 2u hits m at rest, e = 2/3: (1) 4u = 2 v_A2 + v_B2,
+    # (2) v_B2 - v_A2 = 4u/3; (1) - (2): 3 v_A2 = 4u - 4u/3 = 8u/3 (v_A2 = 8u/9); written
+    # 3 v_A2 = 4u/3 - 4u, then v_A2 = -8u/9 (carried).
+    work = (
+        "2m(2u) = 2m v_A2 + m v_B2 \\Rightarrow 4u = 2 v_A2 + v_B2 ...(1)\n"
+        "v_B2 - v_A2 = \\tfrac23 (2u) ...(2)\n"
+        "(1) - (2): 3 v_A2 = \\tfrac43 u - 4u\nv_A2 = -\\tfrac89 u\n"
+    )
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[1][0] == "correct" and found[2][0] == "correct"
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+
+
+def test_dividing_through_with_one_term_left_undivided_is_algebra() -> None:
+    # Dividing a relation through by the unknown's coefficient and leaving one term as it was
+    # (``2v = u + eu`` -> ``v = u/2 + eu``) is algebra (a term not divided), not a number worked
+    # wrongly; the same for multiplying through.
+    # WJEC 2019: equal spheres, A at u, B at rest: u = v_A + v_B, v_B - v_A = eu; added:
+    # 2 v_B = u + eu, v_B = (1 + e)u/2; written v_B = u/2 + eu.
+    work = "u = v_A + v_B\nv_B - v_A = eu\n2v_B = u + eu\nv_B = u/2 + eu\n"
+    found = lines("wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    # CIE 2014 Nov: 2m at 4u meets m at 3u: 5u = 2 v_A2 + v_B2, v_B2 - v_A2 = 7eu, so
+    # 3 v_A2 = 5u - 7eu and v_A2 = (5 - 7e)u/3; written v_A2 = 5u/3 - 7eu (the 7eu not divided)
+    work = "8u - 3u = 2 v_A2 + v_B2\nv_B2 - v_A2 = 7eu\n3 v_A2 = 5u - 7eu\nv_A2 = 5u/3 - 7eu\n"
+    found = lines("cie-9231-p2-2014-november-q1-2m-at-4u-meets-m-at-3u-a-reverses", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+
+
+def test_a_given_copied_with_a_digit_changed_into_working_in_numbers_is_copied_wrong() -> None:
+    # A line of numbers (no unknown) whose working writes a given with one digit changed, and
+    # that is right with the given put back: the given is copied wrongly (not a sum worked
+    # wrongly), whatever the size of the given.
+    # Byju's: 4 kg at 12 catches 8 kg at 4, e = 0.5: the approach is 12 - 4 = 8; 12 - 5 = 7
+    # copies B's 4 as 5; then v_B2 - v_A2 = 0.5(7) = 3.5 is carried.
+    work = "speed of approach = 12 - 5 = 7\nv_B2 - v_A2 = 0.5 \\times 7 = 3.5\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+    assert found[2][0] == "carried"
+    # KE before = ½(4)(12²) + ½(8)(4²) = 288 + 64 = 352 J; with A's 12 copied as 13:
+    # ½(4)(13²) + ½(8)(4²) = 338 + 64 = 402
+    work = "KE before = \\tfrac12(4)(13^2) + \\tfrac12(8)(4^2) = 402\n"
+    found = lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
+
+
+def test_the_unknowns_coefficient_used_the_wrong_way_is_algebra() -> None:
+    # Solving c x = k for x the wrong way (multiplied by c, or k/c turned over) is algebra, not
+    # a number worked wrongly.
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, A then at 2: 10 = 4 + v_B2, v_B2 = 6;
+    # 6 - 2 = e(5 - 0): 4 = 5e, e = 4/5; e = 5/4 divides the wrong way.
+    work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 6\n6 - 2 = e(5 - 0)\n4 = 5e\ne = 5/4\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+    # AQA M3 2007: 0.3 kg at 3 meets 0.2 kg at 2 head on, e = 0.8: 0.5 = 0.3 v_A2 + 0.2 v_B2,
+    # v_B2 = v_A2 + 4: 0.5 = 0.5 v_A2 + 0.8, 0.5 v_A2 = -0.3, v_A2 = -0.6; v_A2 = -0.15
+    # multiplies by 0.5 instead of dividing.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 - v_A2 = 0.8(3 + 2)\n"
+        "0.5 = 0.5 v_A2 + 0.8\n0.5 v_A2 = -0.3\nv_A2 = -0.15\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[4][0] == "correct"
+    assert found[5][:2] == ("wrong", "algebra")
+
+
+def test_a_bracket_with_a_number_in_it_not_multiplied_out_is_algebra() -> None:
+    # Expanding k(x + n) as k x + n (the number in the bracket not multiplied) is algebra.
+    # AQA M3 2007 (as above): 0.5 = 0.3 v_A2 + 0.2(v_A2 + 4) = 0.5 v_A2 + 0.8;
+    # written 0.5 = 0.5 v_A2 + 4, then v_A2 = -7 (carried).
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A2 + 0.2 v_B2\nv_B2 = v_A2 + 4\n"
+        "0.5 = 0.3 v_A2 + 0.2(v_A2 + 4)\n0.5 = 0.5 v_A2 + 4\nv_A2 = -7\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[3][0] == "correct"
+    assert found[4][:2] == ("wrong", "algebra")
+    assert found[5][0] == "carried"

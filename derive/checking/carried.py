@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking import misread, slipnames, slipworld, workedslips
+from derive.checking import misread, signslips, slipnames, slipworld, workedslips
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
@@ -132,6 +132,8 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
         return (0, copied, "copied_wrong") if copied else (j, f": {slipnames.COPIED}", "copied_wrong")
     if given_negated(trace, bad):
         return 0, slipnames.FLIPPED["b_sign"], "b_sign"  # 0: no equation replaced
+    if (one := signslips.negated_in_one(trace, bad)) is not None:  # in the restitution line alone
+        return one, slipnames.FLIPPED["b_sign"], "b_sign"
     flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
     if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds)) is not None:
         return trace._closest(scaled), workedslips.SCALED, "algebra"  # a factor lost in substituting
@@ -230,7 +232,7 @@ def given_negated(trace: Trace, bad: Pair) -> bool:
         if equations == trace.equations:
             continue
         world = solve_world(equations, trace.U, trace.pts, trace.truth)
-        if world is not None and trace.holds([bad], world):
+        if world is not None and trace.holds([bad], world) and signslips.keeps_own(trace, world):
             trace.variant, trace.world, trace.equations = variant, world, equations
             return True
     return False
@@ -389,5 +391,5 @@ def plain_named(trace: Trace, line: Read, bad: Pair, world: list[Values]) -> tup
     (``e_speeds``), a given copied wrongly (``copied_wrong``); None for neither."""
     if speed_for_component(trace, line, world):
         return SPEEDS, "e_speeds"
-    given = given_copied(trace, bad)
+    given = given_copied(trace, bad) or misread.in_working(trace, line, bad)  # 0.4 x 5 for 0.4 x 4
     return (given, "copied_wrong") if given else None

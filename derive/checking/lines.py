@@ -311,7 +311,7 @@ class Trace(Carrying):
             world = self.world if self.world is not None else self.truth
             at, held = (self.U, self.pts[0]), lambda p: self.holds([p], world)
             name = slipnames.solving_slip(line.sides, self.pairs(line), self.previous, at, held)
-            name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held)
+            name = name or workedslips.number_worked_wrongly(self.pairs(line), self.previous, at, held, world[0])
             name = workedslips.sign_over_number(self, bad, name, held)
             if not name and carried.worked_wrongly(self, line, world):
                 why, name = termslips.working_slip(self, line, world, WORKING)  # a sign put in: algebra

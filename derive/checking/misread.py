@@ -22,6 +22,8 @@ from derive.checking.mistakes import Variant
 from derive.checking.numeric import number_of, shown
 from derive.checking.tracing import Trace
 from derive.checking.worlds import Pair, solve_world
+from derive.mathtext.notation import student
+from derive.problem.expr import ParseError, parse
 
 if TYPE_CHECKING:
     from derive.checking.context import Context
@@ -203,3 +205,85 @@ def _needed(trace: Trace, p: Pair, d: sympy.Rational) -> float | None:
         return None
     value = number_of(-b / a)
     return None if value is None or abs(value.imag) > 1e-12 else value.real
+
+
+#: Numbers in working that are no data: a power (``^2``), the half of a kinetic energy.
+_NOT_DATA = re.compile(r"\^\s*\(?\d+\)?|(?<![\w.])1\s*/\s*2(?![\w.])|½")
+
+
+def in_working(trace: Trace, line: Read, bad: Pair) -> str:
+    """``speed after = e x speed before = 0.4 x 5`` where the ball moves at 4 m/s: a line of
+    numbers (no unknown) whose working writes one number that is none of the problem's, a given
+    with one digit misread, and that is right with the given put back; the verdict's words
+    ("" where it is not such a line). The slip's world is the problem as the student copied it,
+    where the line holds there (the lines worked from it are carried)."""
+    if bad.raw is None or bad.difference.free_symbols & set(trace.U):
+        return ""
+    ctx = trace.ctx
+    known = set(ctx.data) | _values(trace)
+    plain = [_NOT_DATA.sub(" ", side) for side in line.sides if not _bare(side)]  # no squares, no halves
+    foreign = list({sympy.Rational(t) for side in plain for t in _WRITTEN.findall(side)} - known - {0})
+    if len(foreign) != 1:
+        return ""
+    c = foreign[0]
+    world = trace.world if trace.world is not None else trace.truth
+    first = (line.exprs or (None,))[0]
+    token = re.compile(rf"(?<![\w.]){re.escape(str(line_number(c)))}(?![\w.])")
+    found = []
+    for g in ctx.problem.givens:
+        if g.unknown or g.value is None or not g.value.is_Rational or not g.value or not _one_digit(c, abs(g.value)):
+            continue
+        sides = [side for side in line.sides[1:] if token.search(side)]
+        put = [_number(token.sub(str(line_number(abs(g.value))), side)) for side in sides]  # the given put back
+        if first is None or not any(
+            x is not None and trace.holds([_against(trace, bad, first, x)], world) for x in put
+        ):
+            continue
+        copy = c if g.value > 0 else -c
+        as_copied = with_copied(ctx, first, {g.symbol: copy})  # the line as written, in the problem as copied
+        found.append(
+            (
+                not any(
+                    x is not None and trace.holds([_against(trace, bad, as_copied, x)], world)
+                    for x in map(_number, sides)
+                ),
+                g,
+                copy,
+            )
+        )
+    if not found:
+        return ""
+    _apart, g, copy = min(found, key=lambda f: f[0])
+    if trace.world is None:
+        _as_copied(trace, g, copy)
+    return f": a given is copied wrongly into it: the problem gives {g.name} = {shown(abs(g.value))}, not {shown(c)}."
+
+
+def line_number(x: sympy.Rational) -> str:
+    """``x`` as a student writes it (``5``, ``2.9``, ``0.25``)."""
+    return format(Decimal(str(sympy.Float(x, 15))).normalize(), "f")
+
+
+def _number(side: str) -> sympy.Expr | None:
+    """The number a side of numbers comes to (None where it has a name or does not read)."""
+    try:
+        x = parse(student(side), {}).expr
+    except ParseError:
+        return None
+    return x if not x.free_symbols else None
+
+
+def _against(trace: Trace, bad: Pair, first: sympy.Expr, x: sympy.Expr) -> Pair:
+    """``bad`` as the line's first side against the number ``x``."""
+    return replace(bad, left=trace.ctx.in_unknowns(first), right=x, raw=(first, x))
+
+
+def _as_copied(trace: Trace, g: Given, copy: sympy.Rational) -> None:
+    """Make the slip's world the problem solved with the given ``g`` as the student copied it."""
+    variant = Variant(values={g.symbol: copy})
+    out = trace.ctx.model.outcome(variant)
+    if out is None:
+        return
+    trace.copied[g.symbol] = copy
+    trace.variant, trace.world = variant, [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
+    trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}

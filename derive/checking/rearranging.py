@@ -42,16 +42,64 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
     in the unknowns)."""
     sides = (held.left, held.right)
     out = []
+    through = _through(held, unknowns)
+    lone = sum(1 for x in sides for t in sympy.Add.make_args(sympy.expand(x)) if t.free_symbols & unknowns) == 1
     for i, side in enumerate(sides):
         sign = 1 if i == 0 else -1
         for t in sympy.Add.make_args(sympy.expand(side)):
             changed = [-t] if _written(t, bad) else []
             if t.free_symbols & unknowns:
                 c, _rest = t.as_coeff_Mul()
-                changed += [t / c] if c not in (0, 1, -1) else []
+                changed += [t / c] if c not in (0, 1, -1) else []  # its coefficient dropped
+                changed += [t / c**2] if c not in (0, 1, -1) and lone else []  # ``c x = k``: x = k c
                 changed += [t * k for k in FACTORS]
+            elif through is not None and t.free_symbols and _written(t, bad):
+                changed.append(t * through)  # ``2v = u + eu`` -> ``v = u/2 + eu``: the eu not divided
+            elif not t.free_symbols:
+                changed += [n for n in _unexpanded(t, held.text) if _written(n, bad)]  # 8(v + 4): 8v + 4
             out += [held.difference + sign * (x - t) for x in changed]
+    return out + (_turned_over(held, unknowns) if lone else [])
+
+
+def _turned_over(held: Pair, unknowns: set) -> list[sympy.Expr]:
+    """``held`` (``k = c x``, numbers, one unknown) solved the wrong way round: ``x = c/k``."""
+    x = held.difference.free_symbols & unknowns
+    F = sympy.expand(held.difference)
+    if len(x) != 1 or F.free_symbols != x:
+        return []
+    u = next(iter(x))
+    c, k = F.coeff(u, 1), F.coeff(u, 0)
+    if not (c.is_number and k.is_number) or not c or not k or F.has(u**2):
+        return []
+    return [k * u + c]
+
+
+def _unexpanded(t: sympy.Expr, text: str) -> list[sympy.Expr]:
+    """The numbers ``n`` a number term ``t`` is ``k n`` of, for a bracket ``k(… n …)`` of ``text``
+    (``0.2(v + 4)``: 0.8 is 0.2 x 4; a term not multiplied out comes to 4), signed as ``t``."""
+    out = []
+    for m in _BRACKET.finditer(text):
+        k = sympy.Rational(m[1])
+        for n in re.findall(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.])", m[2]):
+            if k not in (0, 1) and sympy.Rational(n) and abs(t) == k * sympy.Rational(n):
+                out.append(sympy.sign(t) * sympy.Rational(n))
     return out
+
+
+#: A number times a bracket: ``0.2(v + 4)``, ``8 (x - 3)``, ``5*(w + 1.5)``.
+_BRACKET = re.compile(r"(?<![\w.^])(\d+(?:\.\d+)?)\s*\*?\s*\(([^()]*)\)")
+
+
+def _through(held: Pair, unknowns: set) -> sympy.Expr | None:
+    """The number the relation ``held`` is divided through by to give its one unknown alone (its
+    coefficient there: 2 in ``2v = u + eu``, ½ in ``v/2 = u``); None where that is not one number."""
+    x = held.difference.free_symbols & unknowns
+    if len(x) != 1:
+        return None
+    c = sympy.expand(held.difference).coeff(next(iter(x)))
+    if not c.is_number or c == 0 or abs(c) == 1:
+        return None
+    return abs(c)
 
 
 def _written(t: sympy.Expr, bad: Pair) -> bool:
@@ -59,9 +107,32 @@ def _written(t: sympy.Expr, bad: Pair) -> bool:
     sides' terms, a number among the numbers of its text."""
     if t.free_symbols:
         terms = set().union(*(sympy.Add.make_args(sympy.expand(x)) for x in (bad.left, bad.right)))
-        return t in terms or -t in terms
-    written = {sympy.Rational(n) for n in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", bad.text)}
-    return sympy.nsimplify(abs(t), rational=True) in written
+        c, _rest = t.as_coeff_Mul()  # ``4u + \tfrac52 u``: summed at once, the 5/2 still shown
+        return (
+            t in terms
+            or -t in terms
+            or (abs(c) != 1 and sympy.nsimplify(abs(c), rational=True) in _written_numbers(bad.text))
+        )
+    return sympy.nsimplify(abs(t), rational=True) in _written_numbers(bad.text)
+
+
+#: A fraction as students type it: ``5/2``, ``5u/2``, ``\frac{5}{2}``, ``\tfrac52``, ``\dfrac{5u}{2}``.
+_FRACTIONS = (
+    re.compile(r"(?<![\w.])(\d+)\s*(?:[A-Za-z]\w*\s*)?/\s*(\d+)(?![\w.])"),
+    re.compile(r"\\[dt]?frac\s*(?:\{\s*(\d+)\s*(?:[A-Za-z]\w*\s*)?\}|(\d))\s*(?:\{\s*(\d+)\s*\}|(\d))"),
+)
+
+
+def _written_numbers(text: str) -> set[sympy.Rational]:
+    """The numbers written in ``text``: decimals and whole numbers, and fractions in the forms
+    students type them (the top and bottom of each, as one number)."""
+    out = {sympy.Rational(n) for n in re.findall(r"(?<![\w.])\d+(?:\.\d+)?", text)}
+    for pattern in _FRACTIONS:
+        for m in pattern.finditer(text):
+            top, bottom = [g for g in m.groups() if g is not None][:2]
+            if int(bottom):
+                out.add(sympy.Rational(int(top), int(bottom)))
+    return out
 
 
 def _letter_lost(F: sympy.Expr, G: sympy.Expr, U: tuple) -> bool:
@@ -90,3 +161,19 @@ def _root(F: sympy.Expr, x: sympy.Symbol) -> sympy.Expr | None:
     if a == 0 or F.has(x**2) or (a.has(x) or b.has(x)):
         return None
     return -b / a
+
+
+def written_terms(text: str) -> int:
+    """How many terms the sides of ``text`` show as typed (``3v = \\tfrac43 u - 4u``: three), before
+    any like terms are summed: a sign at the top level of a side, not a leading one or an exponent's."""
+    count, depth, last = 0, 0, "="
+    for ch in text:
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif depth == 0 and (ch == "=" or (ch in "+-−" and last not in "=(*/^eE:")):
+            count += 1
+        if not ch.isspace():
+            last = ch
+    return count + 1

@@ -217,7 +217,8 @@ def solving_slip(
     # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
-    if len(line_u) == 1 and held and rearranging.kind(failing[0], held[-1], U, pt):  # a sign, a factor, a letter
+    shows = replace(failing[0], text=" = ".join(line_sides))  # ``v = 10 + 4 = 14``: the 4 moved, on the line
+    if len(line_u) == 1 and held and rearranging.kind(shows, held[-1], U, pt):  # a sign, a factor, a letter
         return "algebra"
     if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):
         return "arithmetic"
@@ -353,7 +354,8 @@ def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip
     if bad.raw is None:
         return "", None
     terms = [sympy.Add.make_args(x) for x in bad.raw]
-    if sum(len(t) for t in terms) < 3:
+    two = sum(len(t) for t in terms) == 2 and rearranging.written_terms(bad.text) >= 3  # 4u/3 - 4u: -8u/3
+    if sum(len(t) for t in terms) < 3 and not two:
         return "", None
     found = []
     for i, side in enumerate(bad.raw):
@@ -363,6 +365,8 @@ def sign_flipped(ctx: Context, bad: Pair, unknowns: tuple, holds: Holds) -> Flip
             left, right = (ctx.in_unknowns(x) for x in raw)
             if holds(replace(bad, left=left, right=right, raw=(raw[0], raw[1]))):
                 found.append((term, left - right))
+    if two and len(found) == 2:  # a = b with a's sign or b's: the same relation; the unknown's term
+        found = [f for f in found if ctx.in_unknowns(f[0]).free_symbols & set(unknowns)]
     if len(found) != 1:
         return "", None  # none, or more than one way: not this slip
     term, right_way = found[0]

@@ -21,10 +21,14 @@ from derive.checking.slipnames import Holds, Previous, same_but_number
 from derive.checking.worlds import Pair
 
 
-def number_worked_wrongly(pairs: list[Pair], previous: Previous, at: tuple[tuple, dict], holds: Holds) -> str:
+def number_worked_wrongly(
+    pairs: list[Pair], previous: Previous, at: tuple[tuple, dict], holds: Holds, values: dict | None = None
+) -> str:
     """``arithmetic`` where the first failing relation of a line is one that holds (the line
     before's, or one earlier on the line) with the same terms in the same unknowns, up to a
-    factor, and only its number changed; "" otherwise. ``at``: the unknowns and a sample point."""
+    factor, and only its number changed; "" otherwise. ``at``: the unknowns and a sample point;
+    ``values``: the student's values there (the line before's other unknowns put in: ``v_B2 -
+    v_A2 = e(0.5)``, v_A2 found before, then ``0.35 = 0.5e`` for 0.325)."""
     U, pt = at
     unknowns = set(U)
     if any(not p.difference.free_symbols & unknowns and not holds(p) for p in pairs):
@@ -38,6 +42,14 @@ def number_worked_wrongly(pairs: list[Pair], previous: Previous, at: tuple[tuple
     names = failing.difference.free_symbols & unknowns
     for p in held:
         if p.difference.free_symbols & unknowns == names and same_but_number(failing.difference, p.difference, U, pt):
+            return "arithmetic"
+    numbers = failing.raw is not None and all(x.free_symbols <= unknowns for x in failing.raw)  # no letters given
+    for p in held if values and numbers else ():  # the numbers put into a law in letters: its other unknowns as found
+        other = (p.difference.free_symbols & unknowns) - names
+        if not names or not other or not all(s in values for s in other):
+            continue
+        put = p.difference.xreplace(pt).xreplace({s: values[s] for s in other})
+        if put.free_symbols & unknowns == names and same_but_number(failing.difference, put, U, pt):
             return "arithmetic"
     return ""
 

@@ -150,11 +150,22 @@ _DIRECTION_END = re.compile(
 )
 
 
+#: A direction in words at the end of a side in letters (``= \\tfrac89 mu, backwards.``,
+#: ``= m(8u/9) to the left``): the size in letters, its sign in the words.
+_DIRECTION_AFTER_LETTERS = re.compile(
+    r"^[-+−]?\s*(?=[A-Za-z\\(])[\w\\{}()/^*+\-−·.'\s]{1,60}?\s*,?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
+    r"|in\s+the\s+opposite\s+direction|the\s+other\s+way)|(to\s+the\s+right|rightwards?|forwards?"
+    r"|in\s+the\s+same\s+direction))\s*\)?\s*[.,;]?\s*$",
+    re.I,
+)
+
+
 def direction_of(tail: str) -> int:
     """-1 where the number of ``tail`` (what follows a relation's last ``=``) is followed by a
     direction against the usual positive one ("to the left", "backwards", "in the opposite
-    direction"), +1 by the usual one ("to the right", "forwards"), else 0."""
-    m = _DIRECTION.match(tail.strip())
+    direction"), +1 by the usual one ("to the right", "forwards"), else 0; the same after a
+    side in letters that the words end."""
+    m = _DIRECTION.match(tail.strip()) or _DIRECTION_AFTER_LETTERS.match(tail.strip())
     if not m:
         return 0
     return -1 if m.group(1) else 1
