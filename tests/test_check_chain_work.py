@@ -147,3 +147,22 @@ def test_a_result_checked_in_brackets_is_correct() -> None:
     work = "v_1 = sqrt(25 + 2(9.8)(1.6)) = 7.507 \\quad (check: $(7.507)^2 = 56.36$)\n"
     found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
     assert found[1][0] == "correct"
+
+
+# --- a later stage worked from the student's wrong value -----------------------------------------
+def test_a_later_stage_in_a_name_never_worked_is_carried_from_the_students_wrong_value() -> None:
+    # MSU bullet and block (0.020 kg at 300 m/s into 4.0 kg; g = 9.81). Kinetic energy kept (the
+    # slip): ½(0.020)(300)^2 = 900 = ½(4.02)V^2, V^2 = 447.76, V = 21.16 (truly 6/4.02 = 1.4925).
+    # The swing from the student's V: h = 21.16^2/(2(9.81)) = 22.82, and 4.02(9.81)(22.82) = 900:
+    # the rise written as 900 = 4.02 × 9.81 × h is right given the slip (truly 4.478 = 39.44 h).
+    work = "energy kept: ½(0.020)(300)^2 = ½(4.02)V^2\nV^2 = 447.76, V = 21.16\nrise: 900 = 4.02 × 9.81 × h\nh = 22.8\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
+
+
+def test_ke_just_after_is_the_kinetic_energy_after() -> None:
+    # The same chain: V = 6/4.02 = 1.4925, the KE just after ½(4.02)(1.4925)^2 = 4.478 J.
+    work = "0.020(300) = 4.02 V\nV = 1.4925\nKE just after = ½(4.02)(1.4925)^2 = 4.478\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3

@@ -82,8 +82,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
-        done, defs = (items, written, slips), (values, true_defs, own_defs)
-        item = own_world(ctx, item, exprs, done, defs, partial(_holds, ctx, sides))  # a slip's own relations
+        done, defs = (items, written, slips), (values, true_defs, own_defs, stages)
+        item = own_world(ctx, item, (sides, exprs), done, defs, (partial(_holds, ctx, sides), reread))
         pending += [(len(items), sides, exprs)] if item.status == "not read" else []
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])

@@ -11,6 +11,7 @@ are kept as the student's for the lines after it.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import replace
 
@@ -19,37 +20,116 @@ import sympy
 from derive.checking.chainnames import at
 from derive.checking.numeric import number_of
 from derive.checking.report import Item
+from derive.errors import InputError
+from derive.problem.expr import ParseError
 
 #: At most this many of the student's relations are solved together (each solve is SymPy's).
 _MOST = 4
 
 
-def own_world(ctx, item: Item, exprs: list[sympy.Expr], done: tuple, defs: tuple, holds: Callable) -> Item:
+def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple[Callable, Callable]) -> Item:
     """``item`` (a further slip after the first) as carried where it holds in the student's own
-    world (see the module's words); ``done``: the items judged so far, their relations and the
-    slips' lines; ``defs``: the chain's values, the declared names' true values and the student's
-    own; ``holds(exprs, subs)``: whether the relation holds with ``subs`` (the student's values
-    first, then the chain's)."""
+    world (see the module's words), or once each number the student worked wrongly is put back
+    as its true value; ``line``: its sides and expressions; ``done``: the items judged so far,
+    their relations and the slips' lines; ``defs``: the chain's values, the declared names' true
+    values and the student's own; ``how``: ``holds(exprs, subs)``, whether the relation holds
+    with ``subs`` (the student's values first, then the chain's), and ``reread(side)``."""
+    (sides, exprs), (holds, reread) = line, how
     items, written, slips = done
-    values, true_defs, own_defs = defs
+    values, true_defs, own_defs, _stages = defs
     if item.status != "wrong" or len(slips) < 2 or slips[-1] != item.name:
         return item
     first = next((k for k, it in enumerate(items) if it.status == "wrong"), None)
     known = _known(ctx, values)
     names = {str(k) for k in values if k not in known} | {str(p) for p in true_defs}
-    if first is None or not _unknowns(exprs, known, names):
+    if first is None:
         return item
     base = _conditions(ctx, values, known) + _aliases(true_defs, values, known)
-    for world in _worlds(ctx, written[first:], base, known, names):
+    worlds = _worlds(ctx, written[first:], base, known, names) if _unknowns(exprs, known, names) else []
+    for world in worlds:
         if holds(exprs, [{**own_defs, **world}, values]):
-            slips.pop()
             own_defs.update(world)
-            return replace(
-                item,
-                status="carried",
-                message=f"Right given the slip in line {slips[0]}: a carried error, not a new mistake.",
-            )
+            return _carried(item, slips)
+    later = later_stages(ctx, own_defs, values, known)  # h_2 from the student's V: the rise worked from it
+    if later and holds(exprs, [{**later, **own_defs}, values]):
+        return _carried(item, slips)
+    fixed = _put_right(sides, own_defs, values, reread)
+    if fixed is not None and holds(fixed, [true_defs, values]):  # 900 = 4.02(9.81)h, 900 the student's KE after
+        return _carried(item, slips)
     return item
+
+
+def later_stages(ctx, own_defs: dict, values: dict, known: dict) -> dict[sympy.Symbol, sympy.Expr]:
+    """The chain's values with its stages run again, each value the student has wrong (a result,
+    not a given) put in as the student has it once its stage has found it: the later stages'
+    values worked from the student's (h_2 = V^2/(2g) with the student's V); {} where none is
+    wrong or the chain does not run so."""
+    from derive.physics.chain import STAGES
+    from derive.physics.state import ChainState
+
+    wrong = {
+        str(k): v for k, v in own_defs.items() if k in values and k not in known and v.is_number and v != values[k]
+    }
+    chain = getattr(ctx.solution, "problem", None)
+    if not wrong or chain is None or not hasattr(chain, "stages"):
+        return {}
+    state = ChainState(chain)
+    try:
+        for i, st in enumerate(chain.stages, 1):
+            STAGES[st["type"]](state, i, st)
+            for name, v in wrong.items():
+                g = state.known.get(name)
+                if g is not None and g.value is not None and g.value != v:
+                    state.known[name] = replace(g, value=v)
+        out = {g.symbol: state.value(g.symbol) for g in state.known.values()}
+    except (InputError, ValueError, TypeError, ArithmeticError, KeyError, IndexError):
+        return {}
+    by_name = {str(k): k for k in values}
+    return {by_name[str(s)]: v for s, v in out.items() if str(s) in by_name and v.is_number and str(s) not in wrong}
+
+
+def _carried(item: Item, slips: list[str]) -> Item:
+    slips.pop()
+    message = f"Right given the slip in line {slips[0]}: a carried error, not a new mistake."
+    return replace(item, status="carried", message=message)
+
+
+#: A number as written: whole or decimal.
+_NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.]|\.\d)")
+
+
+def _put_right(sides, own_defs: dict, values: dict, reread: Callable) -> list[sympy.Expr] | None:
+    """The sides with each number the student worked wrongly (a chain value the student has
+    otherwise, as written: 900 for a KE of 4.48) put back as its true value, read again; None
+    where none is in them or they do not read."""
+    wrong = {}
+    for k, v in own_defs.items():
+        true = values.get(k)
+        if (
+            true is not None
+            and v.is_number
+            and true.is_number
+            and abs(float(v) - float(true)) > 1e-9 * abs(float(true))
+        ):
+            wrong[float(v)] = true
+    found = False
+
+    def true_of(m: re.Match) -> str:
+        nonlocal found
+        x, half = float(m.group(0)), 0.5 * 10 ** -len(m.group(0).partition(".")[2])
+        hit = next((t for v, t in wrong.items() if v and abs(v - x) <= half), None)
+        if hit is None:
+            return m.group(0)
+        found = True
+        return f"({sympy.N(hit, 15)})"
+
+    texts = [_NUMBER.sub(true_of, s) for s in sides]
+    if not found:
+        return None
+    try:
+        return [reread(t) for t in texts]
+    except (ParseError, ValueError, TypeError, ArithmeticError):
+        return None
 
 
 def _known(ctx, values: dict) -> dict[sympy.Symbol, sympy.Expr]:
