@@ -159,10 +159,3 @@ def test_a_later_stage_in_a_name_never_worked_is_carried_from_the_students_wrong
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
-
-
-def test_ke_just_after_is_the_kinetic_energy_after() -> None:
-    # The same chain: V = 6/4.02 = 1.4925, the KE just after ½(4.02)(1.4925)^2 = 4.478 J.
-    work = "0.020(300) = 4.02 V\nV = 1.4925\nKE just after = ½(4.02)(1.4925)^2 = 4.478\n"
-    found = lines("chain-msu-bullet-block-swings", work)
-    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3

@@ -55,8 +55,8 @@ PHRASES = (
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
-    (r"(?:KE[\s_]*(?:(?:just|immediately)\s+)?(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE_{before}
-    (r"(?:KE[\s_]*(?:(?:just|immediately)\s+)?(?:after|final|2)|final\s+KE|T_2)", "T_2"),  # KE just after
+    (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
+    (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
     (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
     (r"(?:final\s+)?speed\s+of\s+([AB])(?![\w'])(?:\s+after)?", r"speed_\1"),  # not "speed of approach"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
