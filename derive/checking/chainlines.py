@@ -16,8 +16,10 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainnames, chainsolve, mistakes, principles, words
+from derive.checking import chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
+from derive.checking.bodylists import written_out
+from derive.checking.chainworld import own_world
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
@@ -46,7 +48,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
     names = Open({**chainnames.lone_restitution(values), **{s.name: s for s in values}})  # e for e_floor
-    read = _read(text, names)
+    read = _read(ctx, text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
@@ -65,7 +67,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     written: list[list[sympy.Expr]] = []  # the relations read so far, for the student's own values
     previous: list[sympy.Expr] = []  # the relation just before, where it held
     wrong: set[str] = set()  # the numbers the student got wrong: a line worked from them is carried
-    for r, sides, exprs in read:
+    for r, sides, exprs in substitutions.judged(read):  # not "(w = 7)", a general result's letter's value
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
         name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
@@ -80,6 +82,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
+        done, defs = (items, written, slips), (values, true_defs, own_defs, stages)
+        item = own_world(ctx, item, (sides, exprs), done, defs, (partial(_holds, ctx, sides), reread))
         pending += [(len(items), sides, exprs)] if item.status == "not read" else []
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
@@ -184,11 +188,12 @@ def _solved_wrongly(exprs: list[sympy.Expr], previous: list[sympy.Expr], sides: 
     return names == {exprs[0]}
 
 
-def _read(text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
+def _read(ctx: Context, text: str, names: Open) -> list[tuple[Relation, tuple[str, ...], list[sympy.Expr]]]:
     """Each relation read: its sides and their expressions (a first side in words, ``velocity
-    after = -5.24``, is a name of the student's own)."""
-    out = []
-    for r in read_relations(text):
+    after = -5.24``, is a name of the student's own; ``After: B w1, C w2 = 4``: w2 = 4)."""
+    out, lines = [], text.split("\n")
+    for r in read_relations(written_out(ctx, text)):
+        r = replace(r, written=lines[r.line - 1].strip()) if r.written not in lines[r.line - 1] else r
         if declaration(r.written):
             continue
         exprs = []

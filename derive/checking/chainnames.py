@@ -17,6 +17,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking.bodylists import written_out
 from derive.checking.context import Context
 from derive.checking.naming import PREFIX, Open, read_side
 from derive.checking.numeric import shown
@@ -60,10 +61,16 @@ def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
     """The names ``text`` declares in words (:func:`declared`) or by an impact's energy
     (:func:`energies`), and the relations read without those that declare them (``p = A after``
     is a name, not a relation to judge)."""
-    said, lines = declared(ctx, list(enumerate(text.splitlines(), 1)))
-    read = [x for x in read if not (x[0].line in lines and len(x[2]) == 2 and set(x[2]) & set(said))]
+    said, lines = declared(ctx, list(enumerate(written_out(ctx, text).splitlines(), 1)))  # "After: A v1, B v2" too
+    read = [x for x in read if not (x[0].line in lines and _declaring(x[2], said))]
     read = [x for x in read if not _restated(ctx, x, read)]
     return {**energies(ctx, read), **said}, read
+
+
+def _declaring(exprs: list, said: Declared) -> bool:
+    """Whether a relation on a line of declarations is one (``p = A after``), not a value said
+    for a name it declares (``After: B w1, C w2 = 4``: w2 = 4)."""
+    return len(exprs) == 2 and bool(set(exprs) & set(said)) and not any(x.is_number for x in exprs)
 
 
 #: Words of a line of givens after a speed (``u = 21 m/s down``, ``Given: …``): the given's own.

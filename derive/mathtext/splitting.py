@@ -29,12 +29,12 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(\d|\)|/s|J|kg)\s+y\s+(?=[A-Za-z][\w']*\s*=)", r"\1 ; ", plain
     )  # Spanish "and": "= 4 m/s y v_B = 8"
-    plain = re.sub(r"\(([^()]*=[^()]*)\)", r" ; \1 ; ", plain)  # "lock together (e = 0)": a remark
+    plain = _remarks_apart(plain)  # "lock together (e = 0)", "(check: sqrt(0.7) = 0.837)": a remark
     parts: list[str] = []
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
     )  # a sentence ends
-    plain = UNIT_THEN_NAME.sub(r"\1 ; ", plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
+    plain = UNIT_THEN_NAME.sub(_two_givens, plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
     plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
     plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
@@ -42,6 +42,36 @@ def split_relations(plain: str) -> list[str]:
             for part in _colon_split(piece):
                 parts += _comma_split(part)
     return [p for p in parts if _RELATION.search(p)]
+
+
+def _remarks_apart(plain: str) -> str:
+    """Each bracket (its own brackets inside it balanced) that holds a relation, as a piece of its
+    own: ``= 0.837 (check: sqrt(1.4/2) = sqrt(0.7) = 0.837)``, ``lock together (e = 0)``."""
+    out, depth, start = [], 0, None
+    for i, c in enumerate(plain):
+        if c == "(":
+            start = i if depth == 0 else start
+            depth += 1
+        elif c == ")" and depth:
+            depth -= 1
+            if depth == 0 and start is not None and "=" in plain[start:i]:
+                out.append((start, i))
+    for start, end in reversed(out):
+        plain = f"{plain[:start]} ; {plain[start + 1 : end]} ; {plain[end + 1 :]}"
+    return plain
+
+
+#: A mass's name before its "=" (``m``, ``m_A``, ``M2``, ``mass``): a number after it in grams is a given.
+_MASS_BEFORE = re.compile(r"(?:^|[\s,;:(])(?:[mM](?:_?\{?\w{1,3}\}?)?|mass(?:\s+of\s+\w+)?)\s*$")
+
+
+def _two_givens(m: re.Match) -> str:
+    """``m = 50 g v = 3`` -> two givens; but ``v^2 = 2 g h = 2(9.8)(2)``: g is gravity there,
+    the number's "g" a gram only after a mass's name."""
+    value = m.group(1)
+    if re.search(r"\dg$|\d\sg$", value) and not _MASS_BEFORE.search(m.string[: m.start()]):
+        return m.group(0)
+    return value + " ; "
 
 
 def _arrow_split(plain: str) -> list[str]:

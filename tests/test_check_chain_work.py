@@ -1,0 +1,161 @@
+"""A chain's derivation read stage by stage as a teacher reads it (issue #31, chains): suvat lines
+in the letters students use (``2 g h``), a slip in one stage carried into the next with the
+student's own relations, general results in letters applied to each stage. Every number is
+worked by hand from the problem files' givens (in the comments)."""
+
+from __future__ import annotations
+
+import pytest
+
+import derive
+from derive.mathtext.splitting import split_relations
+from derive.resources import problems_dir
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
+    """line number -> (status, slip name) of ``derive check PROBLEM --derivation``, the worst
+    status where a line has several relations."""
+    rank = ("not read", "correct", "carried", "wrong")
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    out: dict[int, tuple[str, str]] = {}
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            n = int(i.name)
+            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
+                out[n] = (i.status, i.slip)
+    return out
+
+
+# --- suvat in letters: "2 g h" is two times g times h, not 2 grams --------------------------
+@pytest.mark.parametrize(
+    "text",
+    ["v^2 = 2 g h = 2(9.81)(3) = 58.9", "u^2 = 2 g s = 19.6", "V^2 = 2g h = 2(9.8)(0.5)", "v^2 = 2 g H = 39.2"],
+)
+def test_two_g_h_in_a_suvat_line_is_one_relation(text: str) -> None:
+    assert len(split_relations(text)) == 1
+
+
+@pytest.mark.parametrize("text", ["m = 50 g v = 3 m/s", "m_A = 40 g u = 2", "mass = 20 g v = 4"])
+def test_a_mass_in_grams_before_another_given_is_still_two(text: str) -> None:
+    assert len(split_relations(text)) == 2
+
+
+def test_a_rise_written_as_two_g_h_is_read_and_correct() -> None:
+    # OCR M2 2015 chain (thrown down at 5 m/s from 1.6 m, e = 0.7, g = 9.8): v_1^2 = 25 + 31.36
+    # = 56.36, v_1 = 7.507; v_2 = 0.7(7.507) = 5.255; 5.255^2 = 27.62 = 2 g h, h = 27.62/19.6 = 1.409.
+    work = (
+        "v_1^2 = 5^2 + 2(9.8)(1.6) = 56.36\nv_1 = 7.507\nv_2 = 0.7(7.507) = 5.255\n"
+        "v_2^2 = 2 g h = 27.62\nh = 27.62/19.6 = 1.409\n"
+    )
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert [found[n][0] for n in range(1, 6)] == ["correct"] * 5
+
+
+# --- a slip carried in the student's own relations, not in numbers ---------------------------
+def test_a_slip_in_letters_carried_into_the_next_impact_and_the_solve_is_carried() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 m/s, C leaves at 4 m/s), in x, y (A, B after
+    # the first impact) and p, q (B, C after the second). 2y = 7 + 7e is right; y = 7(1 + e) is the
+    # slip (not halved: truly y = 3.5(1 + e)). Then, in the student's own relations, 2q = y(1 + e)
+    # = 7(1 + e)^2, with q = 4: 8 = 7(1 + e)^2, (1 + e)^2 = 8/7 = 1.142857, 1 + e = 1.069045, e = 0.069
+    # (the true e is 4/sqrt(7) - 1 = 0.512): every line after the slip is right given it.
+    work = (
+        "7 = x + y\ny - x = 7e\n2y = 7 + 7e\ny = 7(1 + e)\ny = p + q\nq - p = e y\n2q = y(1 + e)\n"
+        "2q = 7(1 + e)^2\n8 = 7(1 + e)^2\n(1 + e)^2 = 8/7\ne = 0.069\n"
+    )
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert [found[n][0] for n in (1, 2, 3, 5, 6, 7)] == ["correct"] * 6
+    assert found[4][0] == "wrong"
+    assert [found[n][0] for n in (8, 9, 10, 11)] == ["carried"] * 4
+
+
+def test_an_equation_for_e_from_a_slipped_expression_is_carried_where_the_given_is_put_in() -> None:
+    # The same chain in u, v (B after the first impact is u, C after the second is v = 4): u = 3.5 +
+    # 3.5e is right, written u = 3.5 + 7e (one term halved). Then v = u(1 + e)/2 (right) and v = 4
+    # give (3.5 + 7e)(1 + e) = 8: 7e^2 + 10.5e + 3.5 = 8, 7e^2 + 10.5e - 4.5 = 0,
+    # e = (-10.5 + sqrt(110.25 + 126))/14 = (-10.5 + 15.3704)/14 = 0.348: carried, not new slips.
+    work = "u = (7 + 7e)/2\nu = 3.5 + 7e\nv = u(1 + e)/2\n(3.5 + 7e)(1 + e)/2 = 4\n7e^2 + 10.5e - 4.5 = 0\ne = 0.348\n"
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert found[1][0] == "correct"
+    assert found[2][0] == "wrong"
+    assert [found[n][0] for n in (4, 5, 6)] == ["carried"] * 3
+
+
+# --- a general result in letters, applied to each stage ----------------------------------------
+def test_a_general_result_applied_with_its_letter_given_in_words_is_correct_stage_by_stage() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 m/s, C leaves at 4 m/s). Once in letters,
+    # a mass at w striking an equal one at rest: p + q = w, q - p = e w, so q = w(1 + e)/2; with
+    # w = 7, u_B = 7(1 + e)/2; with w = u_B, u_C = u_B(1 + e)/2 = 7(1 + e)^2/4 = 4, (1 + e)^2 = 16/7,
+    # 1 + e = 1.512, e = 0.512. "w = 7" and "w = u_B" put values into the letter: no slip.
+    work = (
+        "Equal masses, the second at rest, first at speed w: after, p and q.\n"
+        "m w = m p + m q, so p + q = w\nq - p = e w\nq = w(1 + e)/2\n"
+        "First impact, with w = 7: u_B = 7(1 + e)/2\n"
+        "Second impact, putting w = u_B: u_C = u_B(1 + e)/2 = 7(1 + e)^2/4\n"
+        "7(1 + e)^2/4 = 4\n1 + e = sqrt(16/7) = 1.512\ne = 0.512\n"
+    )
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert [found[n][0] for n in range(2, 10)] == ["correct"] * 8
+
+
+def test_a_letter_of_a_suvat_result_given_each_stage_height_in_brackets_is_no_slip(tmp_path) -> None:
+    # OCR M2 2006's chain with a drop of 2.5 m and a rebound to 1.6 m (g = 9.8): from rest through
+    # h, v = sqrt(2 g h); falling (h = 2.5) v_1 = sqrt(49) = 7; rising (h = 1.6) v_2 = sqrt(31.36)
+    # = 5.6; e = 5.6/7 = 0.8; the impulse 0.3(5.6 + 7) = 3.78 N s.
+    text = (problems_dir() / "chain-ocr-m2-2006-drop-rebound.toml").read_text()
+    problem = tmp_path / "drop.toml"
+    problem.write_text(text.replace('h_0 = "2 m"', 'h_0 = "2.5 m"').replace('h_r = "1.4 m"', 'h_r = "1.6 m"'))
+    work = (
+        "v = sqrt(2 g h)\nfalling (h = 2.5): v_1 = sqrt(2(9.8)(2.5)) = 7\n"
+        "rising (h = 1.6): v_2 = sqrt(2(9.8)(1.6)) = 5.6\ne = 5.6/7 = 0.8\nJ = 0.3(5.6 + 7) = 3.78\n"
+    )
+    found = lines(str(problem), work)
+    assert [found[n][0] for n in range(1, 6)] == ["correct"] * 5
+
+
+# --- names listed by body after "after:", a value said for each ---------------------------------
+@pytest.mark.parametrize(
+    "said",
+    ["After: A p, B q", "after impact: A -> p, B -> q", "After: A: p, B: q"],
+)
+def test_names_listed_by_body_after_the_impact_then_their_values_by_body(said: str) -> None:
+    # AQA M3 2007 chain (A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward it, e = 0.8): 0.9 - 0.4 = 0.5
+    # = 0.3p + 0.2q; q - p = 0.8(3 + 2) = 4; 0.5q = 0.5 + 1.2 = 1.7, q = 3.4, p = -0.6.
+    work = f"A hits B. {said}\n0.5 = 0.3p + 0.2q\nq - p = 4\nso after: A p = -0.6, B q = 3.4\n"
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert [found[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+
+
+def test_a_list_of_names_after_an_impact_with_a_given_value_for_the_last() -> None:
+    # The same chain: B then strikes the wall (e = 0.7) and leaves it at 0.7(3.4) = 2.38; in the
+    # first impact's list, "B q = 3.4" says B's velocity after is 3.4 (with A's name p before it).
+    work = "After: A p, B q = 3.4\n0.5 = 0.3p + 0.2(3.4)\np = (0.5 - 0.68)/0.3 = -0.6\n"
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+
+
+# --- a check in brackets after a result --------------------------------------------------------
+def test_a_check_in_brackets_with_its_own_brackets_is_a_relation_of_its_own() -> None:
+    assert split_relations("e = 4.2/5.6 = 0.75 (check: sqrt(0.9/1.6) = sqrt(0.5625) = 0.75)") == [
+        "e = 4.2/5.6 = 0.75  ",
+        " check: sqrt(0.9/1.6) = sqrt(0.5625) = 0.75 ",
+    ]
+
+
+def test_a_result_checked_in_brackets_is_correct() -> None:
+    # OCR M2 2015 chain (5 m/s down from 1.6 m, g = 9.8): v_1^2 = 25 + 31.36 = 56.36, v_1 = 7.507;
+    # the check 7.507^2 = 56.36 (56.355) in brackets after it.
+    work = "v_1 = sqrt(25 + 2(9.8)(1.6)) = 7.507 \\quad (check: $(7.507)^2 = 56.36$)\n"
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[1][0] == "correct"
+
+
+# --- a later stage worked from the student's wrong value -----------------------------------------
+def test_a_later_stage_in_a_name_never_worked_is_carried_from_the_students_wrong_value() -> None:
+    # MSU bullet and block (0.020 kg at 300 m/s into 4.0 kg; g = 9.81). Kinetic energy kept (the
+    # slip): ½(0.020)(300)^2 = 900 = ½(4.02)V^2, V^2 = 447.76, V = 21.16 (truly 6/4.02 = 1.4925).
+    # The swing from the student's V: h = 21.16^2/(2(9.81)) = 22.82, and 4.02(9.81)(22.82) = 900:
+    # the rise written as 900 = 4.02 × 9.81 × h is right given the slip (truly 4.478 = 39.44 h).
+    work = "energy kept: ½(0.020)(300)^2 = ½(4.02)V^2\nV^2 = 447.76, V = 21.16\nrise: 900 = 4.02 × 9.81 × h\nh = 22.8\n"
+    found = lines("chain-msu-bullet-block-swings", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
