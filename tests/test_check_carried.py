@@ -538,3 +538,20 @@ def test_a_wrong_number_said_again_rounded_as_a_size_is_carried() -> None:
     assert found[1][0] == found[2][0] == "correct"
     assert found[3][:2] == ("wrong", "arithmetic")
     assert found[4][0] == "carried"
+
+
+def test_a_sign_lost_moving_a_number_carries_into_the_other_velocity_in_numbers() -> None:
+    # OCR M2 2006 (2 kg at 5 m/s, 1 kg at -5 m/s, e = 0.8): 5 = 2a + b, b = a + 8, so
+    # 5 = 3a + 8, 3a = -3, a = -1, b = 7. The 8 moved across with its sign kept: 3a = 13,
+    # a = 4.33; then b = 4.33 + 8 = 12.33 from their own a: carried.
+    work = (
+        "2(5) + 1(-5) = 2a + b\n"
+        "b - a = 0.8(5 + 5) = 8\n"
+        "5 = 2a + a + 8\n"
+        "3a = 5 + 8 = 13\n"
+        "a = 4.33 m/s\n"
+        "b = 4.33 + 8 = 12.33 m/s\n"
+    )
+    found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
+    assert found[4][0] == "wrong"
+    assert found[5][0] == found[6][0] == "carried"

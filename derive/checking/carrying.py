@@ -147,7 +147,8 @@ class Carrying:
         if status == "carried":  # a student's own value (a = (5 - 3e)u/3 after a slip), kept by a later slip
             self.worked += tuple(p for p in pairs if p.difference.free_symbols & set(self.U))
         first = line.exprs[0] if held and line.exprs and len(line.exprs) >= 2 else None
-        if first in {s for s, _x in self.ctx.derived().values()}:  # "KE after = … = ⅛mu²[(e - 1)² + (1 + e)²]"
+        results = {s for s, _x in self.ctx.derived().values()} if isinstance(first, sympy.Symbol) else set()
+        if first in results:  # "KE after = … = ⅛mu²[(e - 1)² + (1 + e)²]"
             self.said = {**self.said, first: line.exprs[-1]}  # type: ignore[index, misc]
             if status == "carried":  # "KE after = ¼mu²(e² - e + 1)" from a form worked wrongly: its own value
                 self.own[first] = line.exprs[-1]  # type: ignore[index]

@@ -5,7 +5,9 @@ A slip in a line worked from two equations at once (``5x = 10u + 15eu`` after su
 still believes both, and finds the other velocity from whichever they like. The trace guesses
 one (:func:`~.worlds.closest`); where a later line holds only if the slip had taken the place
 of another equation (``y = (10u - 2x)/3`` with their own x, the momentum kept), that line is
-carried, and the slip's world is the one it shows.
+carried, and the slip's world is the one it shows. So is a line worked from the exact value a
+carried line rounded (:func:`unrounded`), and one that holds with the velocities as the student
+last stated each of them (:func:`stated`).
 """
 
 from __future__ import annotations
