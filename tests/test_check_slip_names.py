@@ -380,3 +380,18 @@ def test_a_bracket_with_a_number_in_it_not_multiplied_out_is_algebra() -> None:
     assert found[3][0] == "correct"
     assert found[4][:2] == ("wrong", "algebra")
     assert found[5][0] == "carried"
+
+
+def test_dividing_through_by_a_letter_with_one_term_missed_is_algebra() -> None:
+    # Dividing a relation through by a mass in letters and leaving it on one term (or taking
+    # another letter off with it) is algebra, in one unknown or two.
+    # AQA M3 2014: 2m at 2u hits m at rest: 4mu = 2m v_A2 + m v_B2, so 4u = 2 v_A2 + v_B2;
+    # 4u = 2 v_A2 + m v_B2 leaves the m on B's term.
+    work = "2m(2u) = 2m v_A2 + m v_B2\n4u = 2 v_A2 + m v_B2\n"
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    # WJEC 2019: equal spheres (m), A at u, B at rest: mu = m v_A + m v_B; u = v_A + m v_B
+    work = "mu = m v_A + m v_B\nu = v_A + m v_B\n"
+    found = lines("wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest", work)
+    assert found[2][:2] == ("wrong", "algebra")
