@@ -395,3 +395,13 @@ def test_dividing_through_by_a_letter_with_one_term_missed_is_algebra() -> None:
     work = "mu = m v_A + m v_B\nu = v_A + m v_B\n"
     found = lines("wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest", work)
     assert found[2][:2] == ("wrong", "algebra")
+
+
+def test_a_total_of_the_data_copied_with_its_digits_moved_is_copied_wrong() -> None:
+    # A sum of two masses (or a product of the data) written in working with its digits in
+    # another order: the number is copied wrongly, not worked wrongly.
+    # OpenStax 8 (train cars couple): 150000 kg at 0.300 and 110000 kg at -0.120 m/s:
+    # V = (45000 - 13200)/(150000 + 110000) = 31800/260000 = 0.122; 206000 for 260000 gives 0.154.
+    work = "V = \\frac{m_A v_A1 + m_B v_B1}{m_A + m_B} = \\frac{45000 - 13200}{206000} = 0.154\n"
+    found = lines("openstax-cp-8-train-cars-couple", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")
