@@ -380,3 +380,28 @@ def test_a_bracket_with_a_number_in_it_not_multiplied_out_is_algebra() -> None:
     assert found[3][0] == "correct"
     assert found[4][:2] == ("wrong", "algebra")
     assert found[5][0] == "carried"
+
+
+def test_dividing_through_by_a_letter_with_one_term_missed_is_algebra() -> None:
+    # Dividing a relation through by a mass in letters and leaving it on one term (or taking
+    # another letter off with it) is algebra, in one unknown or two.
+    # AQA M3 2014: 2m at 2u hits m at rest: 4mu = 2m v_A2 + m v_B2, so 4u = 2 v_A2 + v_B2;
+    # 4u = 2 v_A2 + m v_B2 leaves the m on B's term.
+    work = "2m(2u) = 2m v_A2 + m v_B2\n4u = 2 v_A2 + m v_B2\n"
+    found = lines("aqa-m3-2014-symbolic-2m-hits-m", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "algebra")
+    # WJEC 2019: equal spheres (m), A at u, B at rest: mu = m v_A + m v_B; u = v_A + m v_B
+    work = "mu = m v_A + m v_B\nu = v_A + m v_B\n"
+    found = lines("wjec-further-unit3-2019-june-q7-equal-spheres-b-at-rest", work)
+    assert found[2][:2] == ("wrong", "algebra")
+
+
+def test_a_total_of_the_data_copied_with_its_digits_moved_is_copied_wrong() -> None:
+    # A sum of two masses (or a product of the data) written in working with its digits in
+    # another order: the number is copied wrongly, not worked wrongly.
+    # OpenStax 8 (train cars couple): 150000 kg at 0.300 and 110000 kg at -0.120 m/s:
+    # V = (45000 - 13200)/(150000 + 110000) = 31800/260000 = 0.122; 206000 for 260000 gives 0.154.
+    work = "V = \\frac{m_A v_A1 + m_B v_B1}{m_A + m_B} = \\frac{45000 - 13200}{206000} = 0.154\n"
+    found = lines("openstax-cp-8-train-cars-couple", work)
+    assert found[1][:2] == ("wrong", "copied_wrong")

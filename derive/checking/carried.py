@@ -391,5 +391,5 @@ def plain_named(trace: Trace, line: Read, bad: Pair, world: list[Values]) -> tup
     (``e_speeds``), a given copied wrongly (``copied_wrong``); None for neither."""
     if speed_for_component(trace, line, world):
         return SPEEDS, "e_speeds"
-    given = given_copied(trace, bad) or misread.in_working(trace, line, bad)  # 0.4 x 5 for 0.4 x 4
+    given = given_copied(trace, bad) or misread.in_working(trace, line, bad) or misread.total_copied(trace, line, bad)
     return (given, "copied_wrong") if given else None

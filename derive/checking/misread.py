@@ -287,3 +287,32 @@ def _as_copied(trace: Trace, g: Given, copy: sympy.Rational) -> None:
     trace.copied[g.symbol] = copy
     trace.variant, trace.world = variant, [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
     trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
+
+
+def total_copied(trace: Trace, line: Read, bad: Pair) -> str:
+    """``8000/11050 (0.250)`` where the masses are 4000 and 7500 kg: a line of numbers whose
+    working writes one number that is none of the problem's nor a sum or product of two of its
+    numbers (8000 = 2 x 4000), but such a total with its digits in another order or one digit
+    misread (11500 = 4000 + 7500), and that is right with the total put back; the verdict's
+    words ("" where it is not such a line)."""
+    if bad.raw is None or bad.difference.free_symbols & set(trace.U):
+        return ""
+    data = sorted({abs(x) for x in trace.ctx.data if x and x.is_Rational})
+    totals = {a + b for a in data for b in data} | {a * b for a in data for b in data}
+    known = set(data) | totals | _values(trace)
+    plain = [_NOT_DATA.sub(" ", side) for side in line.sides if not _bare(side)]
+    foreign = list({sympy.Rational(t) for side in plain for t in _WRITTEN.findall(side)} - known - {0})
+    if len(foreign) != 1:
+        return ""
+    c = foreign[0]
+    world = trace.world if trace.world is not None else trace.truth
+    token = re.compile(rf"(?<![\w.]){re.escape(line_number(c))}(?![\w.])")
+    sides = [side for side in line.sides[1:] if token.search(side)]
+    for v in sorted(totals - set(data)):
+        digits = [re.sub(r"\D", "", line_number(x)) for x in (c, v)]
+        if not (_one_digit(c, v) or (len(digits[1]) >= 3 and sorted(digits[0]) == sorted(digits[1]))):
+            continue
+        put = [_number(token.sub(line_number(v), side)) for side in sides]
+        if any(x is not None and trace.holds([replace(bad, right=x, raw=(bad.raw[0], x))], world) for x in put):
+            return f": a number is copied wrongly into it: {shown(v)}, not {shown(c)}."
+    return ""

@@ -177,3 +177,20 @@ def written_terms(text: str) -> int:
         if not ch.isspace():
             last = ch
     return count + 1
+
+
+def letter_term(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
+    """Whether ``bad`` is ``held`` divided through (or not) with one term's letter factor of the
+    givens missed or taken off with it (``4u = 2 v_A + m v_B`` from ``4mu = 2m v_A + m v_B``;
+    ``u + λu = kv`` from ``mu + kmλu = kmv``), in one unknown or more: algebra."""
+    letters = held.difference.free_symbols - set(U)
+    terms = sympy.Add.make_args(sympy.expand(held.difference))
+    if len(terms) < 2 or not letters:
+        return False
+    tol = max(bad.tol, 1e-9)
+    for t in terms:
+        for s in letters:
+            for x in (t * s, t / s):
+                if proportional(bad.difference, held.difference - t + x, U, [pt], tol):
+                    return True
+    return False
