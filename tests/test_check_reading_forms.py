@@ -302,3 +302,18 @@ def test_mathematics_with_a_functions_name_that_cannot_be_read_is_not_read_not_p
 def test_words_after_an_ellipsis_are_no_part_of_the_relation(after: str) -> None:
     assert [r.sides for r in read_relations(f"v_B/v_A = 22/13 = 1.69{after}")] == [("v_B/v_A", "22/13", "1.69")]
     assert [r.sides for r in read_relations(f"x = 2u{after}")] == [("x", "2u")]
+
+
+@pytest.mark.parametrize(
+    "givens",
+    [
+        "Knowns: $u_A = 3$ m/s →, $u_B = 2$ m/s ←. Taking → as positive, so $u_B = -2$.",
+        "u_A = 3 m/s ->, u_B = 2 m/s <-. Right is positive.",
+        "Given: $(v_A)_1 = 3$ m/s →, $(v_B)_1 = 2$ m/s ←.",
+    ],
+)
+def test_an_arrow_after_a_speed_before_a_full_stop_is_its_direction(givens: str) -> None:
+    lines = [givens, "$0.3(3) + 0.2(-2) = 0.3a + 0.2b$"]
+    found = statuses(HEAD_ON, "\n".join(lines))
+    assert found.get(1) in ("correct", None) and found.get(2) == "correct", found
+    assert any(r.direction == -1 and r.sides[-1].strip() == "2" for r in read_relations(givens))
