@@ -19,7 +19,10 @@ from derive.mathtext.sides import direction_of
 from derive.mathtext.units import is_unit
 
 #: Words after a piece of mathematics (``$x = y - 5eu$. Put into (1)``, ``$… = 2u$ into (2)``).
-_PROSE_AFTER = re.compile(r"^[\s.,;:]*([A-Za-z]{2,})\b")
+#: (``… \quad (check: $…$)``: TeX's spacing before the words, or a bracket that opens with a word and a colon.)
+_PROSE_AFTER = re.compile(
+    r"^[\s.,;:]*(?:\\q?quad\b\s*|\\[,;: ]\s*)*(?:([A-Za-z]{2,})\b|\(\s*([A-Za-z]{2,})[A-Za-z ]*:)"
+)
 
 
 def _whole_relation(plain: str) -> bool:
