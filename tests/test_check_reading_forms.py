@@ -302,3 +302,36 @@ def test_mathematics_with_a_functions_name_that_cannot_be_read_is_not_read_not_p
 def test_words_after_an_ellipsis_are_no_part_of_the_relation(after: str) -> None:
     assert [r.sides for r in read_relations(f"v_B/v_A = 22/13 = 1.69{after}")] == [("v_B/v_A", "22/13", "1.69")]
     assert [r.sides for r in read_relations(f"x = 2u{after}")] == [("x", "2u")]
+
+
+@pytest.mark.parametrize(
+    "givens",
+    [
+        "Knowns: $u_A = 3$ m/s →, $u_B = 2$ m/s ←. Taking → as positive, so $u_B = -2$.",
+        "u_A = 3 m/s ->, u_B = 2 m/s <-. Right is positive.",
+        "Given: $(v_A)_1 = 3$ m/s →, $(v_B)_1 = 2$ m/s ←.",
+    ],
+)
+def test_an_arrow_after_a_speed_before_a_full_stop_is_its_direction(givens: str) -> None:
+    lines = [givens, "$0.3(3) + 0.2(-2) = 0.3a + 0.2b$"]
+    found = statuses(HEAD_ON, "\n".join(lines))
+    assert found.get(1) in ("correct", None) and found.get(2) == "correct", found
+    assert any(r.direction == -1 and r.sides[-1].strip() == "2" for r in read_relations(givens))
+
+
+@pytest.mark.parametrize(
+    "line",
+    [
+        "$v_A = -0.6$ \\quad (check: $0.3(-0.6) + 0.2(3.4) = 0.5$)",
+        "$v_A = -0.6$ \\qquad (as a check: $0.3(-0.6) + 0.2(3.4) = 0.9 - 0.4$)",
+        "$v_A = -0.6$ (check: $0.2(3.4) - 0.3(0.6) = 0.5$)",
+    ],
+)
+def test_a_check_in_brackets_after_a_relation_is_a_relation_of_its_own(line: str) -> None:
+    assert len(read_relations(line)) == 2
+    assert statuses(HEAD_ON, line) == {1: "correct"}
+
+
+def test_a_wrong_check_in_brackets_is_wrong() -> None:
+    found = statuses(HEAD_ON, "$v_A = -0.6$ \\quad (check: $0.3(-0.6) + 0.2(3.4) = 0.6$)")  # 0.5
+    assert found == {1: "wrong"}, found

@@ -15,7 +15,7 @@ import re
 #: direction it points, as words say it ("to the left"), not "so".
 _ARROW_DIRECTION = re.compile(
     r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|(↓|\\downarrow)|(↑|\\uparrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
-    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]|\**\s*\(?\s*[Aa]ns\b\.?\s*\)?\s*\**\s*$))"  # "← **Ans.**" (a pointer "<- answer" is no direction)
+    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]|\.\s*$|\**\s*\(?\s*[Aa]ns\b\.?\s*\)?\s*\**\s*$))"  # "← **Ans.**" (a pointer "<- answer" is no direction)
 )
 _ARROWS = r"→|⟶|-{1,2}>|←|⟵|<-{1,2}|↑|↓|\\(?:long)?(?:right|left)arrow|\\(?:up|down)arrow"
 #: A sign convention's mark before a relation, as engineering texts write it: ``(+→)``, ``(→+)``,

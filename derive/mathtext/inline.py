@@ -19,7 +19,10 @@ from derive.mathtext.sides import direction_of
 from derive.mathtext.units import is_unit
 
 #: Words after a piece of mathematics (``$x = y - 5eu$. Put into (1)``, ``$… = 2u$ into (2)``).
-_PROSE_AFTER = re.compile(r"^[\s.,;:]*([A-Za-z]{2,})\b")
+#: (``… \quad (check: $…$)``: TeX's spacing before the words, or a bracket that opens with a word and a colon.)
+_PROSE_AFTER = re.compile(
+    r"^[\s.,;:]*(?:\\q?quad\b\s*|\\[,;: ]\s*)*(?:([A-Za-z]{2,})\b|\(\s*([A-Za-z]{2,})[A-Za-z ]*:)"
+)
 
 
 def _whole_relation(plain: str) -> bool:
@@ -62,6 +65,9 @@ def equals_in_brackets(plain: str) -> str:
     def one(m: re.Match) -> str:
         if not re.search("[=≈]", plain[: m.start()]):
             return m[0]  # "(= …)" before any relation: not a value said again
+        last = m[2].split()[-1] if m[2].split() else ""
+        if re.search(r"[A-Za-z]{2}", last) and is_unit(last):
+            return m[0]  # "E = 2400 J (= 2.4 kJ)": the value in another unit, a remark
         return f" {m[1]} {m[2].strip()} "
 
     return _EQUALS_IN_BRACKETS.sub(one, plain)

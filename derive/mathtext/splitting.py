@@ -32,8 +32,10 @@ def split_relations(plain: str) -> list[str]:
     plain = _remarks_apart(plain)  # "lock together (e = 0)", "(check: sqrt(0.7) = 0.837)": a remark
     parts: list[str] = []
     plain = re.sub(
-        r"(?<=[A-Za-z)]{2})\.\s+|(?<=[\w)°²³])(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])", " ; ", plain
-    )  # a sentence ends
+        r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])",
+        " ; ",
+        plain,
+    )  # a sentence ends (after an arrow too: "= 2 m/s ←. Taking → as positive")
     plain = UNIT_THEN_NAME.sub(_two_givens, plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
     plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
     plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
