@@ -128,6 +128,19 @@ def test_a_value_said_again_in_brackets_opening_with_equals_is_one_more_side(tex
 
 
 @pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("T_lost = 500 - 320 = 180 J (≈ 36 %)", ("T_lost", "500 - 320", "180")),
+        ("loss = 900 J (= 45%)", ("loss", "900")),
+        ("E = 2400 J (= 2.4 kJ)", ("E", "2400")),
+    ],
+)
+def test_a_share_or_another_unit_in_brackets_opening_with_equals_is_a_remark(text: str, expected: tuple) -> None:
+    """A percentage of the energy before is another quantity than the energy: set aside, not a side."""
+    assert [r.sides for r in read_relations(text)] == [expected]
+
+
+@pytest.mark.parametrize(
     "line",
     [
         "Then momentum and restitution with $e = 0.5$ ($x$, $y$ velocities of $A$, $B$ after):",
