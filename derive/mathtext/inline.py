@@ -66,7 +66,7 @@ def equals_in_brackets(plain: str) -> str:
         if not re.search("[=≈]", plain[: m.start()]):
             return m[0]  # "(= …)" before any relation: not a value said again
         last = m[2].split()[-1] if m[2].split() else ""
-        if re.search(r"[A-Za-z]{2}", last) and is_unit(last) or "%" in m[2]:
+        if (re.search(r"[A-Za-z]{2}", last) and is_unit(last)) or "%" in m[2]:
             return m[0]  # "E = 2400 J (= 2.4 kJ)", "ΔT = 1385 (≈ 48 %)": another unit or a share, a remark
         return f" {m[1]} {m[2].strip()} "
 
