@@ -438,6 +438,25 @@ def test_a_component_after_named_in_words_is_judged_not_taken_as_defined(
 @pytest.mark.parametrize(
     "said",
     [
+        "Let $p$ and $q$ be the $n$ components after.",
+        "Let p, q be the components along the line of centres after the impact.",
+        "p and q are the normal components after",
+        "let p and q be the n-components after impact",
+    ],
+)
+@pytest.mark.parametrize("slip", [False, True])
+def test_two_components_after_named_in_words_without_their_bodies_are_a_then_b(said: str, slip: bool) -> None:
+    # AQA M3 2007 Q6: along the line of centres A has sqrt(3) u (1 - e)/4 after and B sqrt(3) u (1 + e)/4;
+    # two names said without bodies are A's then B's, as a teacher reads them: the values swapped are wrong
+    a, b = ("1 + e", "1 - e") if slip else ("1 - e", "1 + e")
+    work = f"{said}\np = √3 u ({a})/4\nq = √3 u ({b})/4\n"
+    verdict = "wrong" if slip else "correct"
+    assert by_line(AQA_30_SPEED, work)["2"] == verdict
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
         "Let θ be the angle between A's new path and the line of centres",
         "θ is the angle between the line of centres and A's path after the impact",
     ],

@@ -30,7 +30,9 @@ def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
 
 
 _LOC = r"(?:line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\b\.?|common\s+normal)"
-_ALONG_WORDS = re.compile(rf"\b(?:along|parallel\s+to|in\s+the\s+direction\s+of)\s+(?:the\s+)?{_LOC}", re.I)
+_ALONG_WORDS = re.compile(
+    rf"\b(?:along|parallel\s+to|in\s+the\s+direction\s+of)\s+(?:the\s+)?{_LOC}|\b(?:n|normal)[-\s]*components?\b", re.I
+)  # "the n components", "the normal components": along the line of centres
 _ACROSS_WORDS = re.compile(
     rf"\b(?:across|perpendicular\s+to|at\s+right\s+angles\s+to)\s+(?:the\s+)?(?:{_LOC}|it)\b|\btangential|\bcommon\s+tangent",
     re.I,
@@ -85,6 +87,8 @@ def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             dict.fromkeys(n for n in said if n not in labels and n not in names and n.lower() not in _NOT_NAMES)
         )
         bodies = [b for k, b in enumerate(bodies) if b and b not in bodies[:k]]
+        if not bodies and len(said) == 2:
+            bodies = ["A", "B"]  # "let p and q be the n components after": A's then B's, as listed
         if not said or len(said) != len(bodies):
             continue
         for name, b in zip(said, bodies, strict=True):
