@@ -159,3 +159,31 @@ def test_a_later_stage_in_a_name_never_worked_is_carried_from_the_students_wrong
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
+
+
+# --- a name set to the number it is written with is no quantity checked ---------------------
+# Dropped from h_0 = 2 m (g = 9.8): the speed before the floor is sqrt(2 x 9.8 x 2) = 6.26 m/s, so
+# 7.0 is no value of the chain's; a name no value fits was taken to be the number itself, and its
+# line "correct" for it.
+@pytest.mark.parametrize(
+    "text", ["speed just before impact = 7.0", "w = 3.1", "velocity before it lands = 7.0 m/s", "v = 3.1"]
+)
+def test_a_name_set_to_a_number_no_value_fits_is_never_correct(text: str) -> None:
+    found = lines("chain-ocr-m2-2006-drop-rebound", text + "\n")
+    assert found[1][0] != "correct"
+
+
+# --- the kinetic energy after the impact named in words ------------------------------------------
+# Bullet 0.020 kg at 300 m/s into a 4.0 kg block: V = 6/4.02 = 1.4925 m/s, the kinetic energy after
+# ½(4.02)(1.4925)² = 4.478 J. Kept instead (the slip): ½(0.020)(300)² = 900 = ½(4.02)V², V = 21.16,
+# and the kinetic energy after is then 900 J, carried.
+@pytest.mark.parametrize(
+    "name", ["KE immediately after", "kinetic energy after the collision", "KE right after", "KE after impact"]
+)
+def test_the_kinetic_energy_after_in_words(name: str) -> None:
+    right = lines("chain-msu-bullet-block-swings", f"0.020(300) = 4.02 V\nV = 1.4925\n{name} = 4.48\n")
+    assert right[3][0] == "correct"
+    wrong = lines("chain-msu-bullet-block-swings", f"0.020(300) = 4.02 V\nV = 1.4925\n{name} = 9.0\n")
+    assert wrong[3][0] == "wrong"
+    kept = "1/2 (0.020)(300)^2 = 1/2 (4.02) V^2\nV^2 = 447.76\nV = 21.16\n" + f"{name} = 900 J\n"
+    assert lines("chain-msu-bullet-block-swings", kept)[4][0] == "carried"

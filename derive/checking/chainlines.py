@@ -54,8 +54,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
-    def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
-        return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
+    def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names ("KE just after" too)
+        return chainnames.side_or_words(side, names).xreplace(mapping)
 
     true_defs = own.Defs({p: chainnames.at(x, values) for p, x in said.items()})
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
@@ -202,7 +202,7 @@ def _read(ctx: Context, text: str, names: Open) -> list[tuple[Relation, tuple[st
                 try:
                     exprs.append(read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1))
                 except ParseError:
-                    words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,3})\s*", s)
+                    words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,5})\s*", s)
                     if 0 < i < len(r.sides) - 1 and not words:
                         exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
                         continue
@@ -242,7 +242,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
                 found[p] = best
             elif len(letter) == 1 and "_" not in p.name and letter[0].name != p.name[1:]:
                 found[p] = letter[0]  # "d" where the chain has one d (d_B): the result the student works out
-            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p}:
+            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p} and p not in exprs:
                 roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
                 if roots is not None:
                     found[p] = roots
@@ -358,6 +358,8 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     def item(status: str, message: str) -> Item:
         return Item("line", str(r.line), r.written, status, "", message, "the chain's values")
 
+    if len(exprs) < 2 and len(sides) == 1 and NUMBER_SIDE.match(student(sides[0].strip())):  # w = 3.1: unnamed
+        return item("not read", f"Not read: {words.student_text(r.sides[0].strip())} is no quantity I can name.")
     if len(exprs) < 2 or principles.energy_balance(sides):  # T_1 + V_1 = T_2 + V_2: the stage's principle
         return item("correct", principles.energy_balance(sides) or "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])

@@ -56,9 +56,21 @@ def stage_mistakes(ctx: Context) -> StageMistakes:
                 x = q.value if q is not None and q.value is not None else post.get(inner)
                 if x is not None:
                     given[outer] = x * 180 / sympy.pi if q is not None and q.value is None else x
+            given.update(_energies_after(part, names, post, given))
             if given:
                 out.append((o.mistake.name, given))
     return out
+
+
+def _energies_after(part, names: dict, post: dict, given: dict) -> dict:
+    """The kinetic energy after an impact (the chain's name of its T_2) that a mistake's
+    velocities give where the mistake states only those (kinetic energy kept with the bodies
+    moving together: V = 21.2, so T_after = ½(m_A + m_B)V² = 900), for the lines worked from it."""
+    outer = next((k for k, v in names.items() if v == "T_2" and k not in given), None)
+    masses = {g.name: g.value for g in part.problem.givens if g.name in ("m_A", "m_B") and g.value is not None}
+    if outer is None or len(masses) != 2 or not all(f"v_{b}2" in post for b in "AB"):
+        return {}
+    return {outer: sum(masses[f"m_{b}"] * post[f"v_{b}2"] ** 2 for b in "AB") / 2}
 
 
 def stage_given(ctx: Context, exprs) -> bool:
