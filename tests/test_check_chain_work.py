@@ -187,3 +187,20 @@ def test_the_kinetic_energy_after_in_words(name: str) -> None:
     assert wrong[3][0] == "wrong"
     kept = "1/2 (0.020)(300)^2 = 1/2 (4.02) V^2\nV^2 = 447.76\nV = 21.16\n" + f"{name} = 900 J\n"
     assert lines("chain-msu-bullet-block-swings", kept)[4][0] == "carried"
+
+
+# --- a wrong whole number carried into the next stage ------------------------------------------
+# A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward it, e = 0.8, the wall's 0.7. With e left out
+# (y - x = 5): 0.5 = 0.3x + 0.2(x + 5) gives x = -1, y = 4 (truly -0.6 and 3.4), so B comes off the
+# wall at 0.7 × 4 = 2.8 (truly 2.38): worked from the student's 4, a carried line, not a correct one.
+@pytest.mark.parametrize(
+    "head", ["right +ve. after: A x, B y", "Let x and y be the velocities of A and B after the collision."]
+)
+def test_a_wrong_whole_number_used_in_the_next_stage_is_carried(head: str) -> None:
+    work = (
+        f"{head}\n0.3(3) + 0.2(-2) = 0.3x + 0.2y\ny - x = 3 + 2 = 5\n0.5 = 0.3x + 0.2(x + 5) = 0.5x + 1\n"
+        "x = -1, y = 4\nspeed off the wall = 0.7 x 4 = 2.8 m/s\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[3][0] == "wrong"
+    assert found[6][0] == "carried"

@@ -33,6 +33,7 @@ from derive.checking.stageslips import (
     own_root,
     own_sides,
     own_value,
+    result_numbers,
     rule_named,
     stage_given,
     stage_mistakes,
@@ -88,7 +89,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
-        if item.status == "correct" and slips and numbers_written(sides, set(), working=True) & wrong:
+        if item.status == "correct" and slips and numbers_written(sides, set(), working=True, small=True) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
             holds = partial(_holds, ctx, subs=[true_defs, values])
@@ -104,8 +105,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
             if flip:  # a sign lost, a ½ dropped, e's ratio upside down
                 item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
-        if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
-            wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
+        if item.status in ("wrong", "carried"):
+            wrong |= result_numbers(sides, ctx.data)  # y = 5 m/s: a number the student got wrong
         written.append(exprs)
         if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
             chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
