@@ -204,3 +204,17 @@ def test_a_wrong_whole_number_used_in_the_next_stage_is_carried(head: str) -> No
     found = lines("chain-aqa-m3-2007-collide-again", work)
     assert found[3][0] == "wrong"
     assert found[6][0] == "carried"
+
+
+# --- names no value fits stay unknown: never a yes/no answer, never the student's own numbers ---
+# The same chain and slip (x = -1, y = 4 from e left out; truly -0.6 and 3.4), the names said in a
+# way not read as a declaration: "again" (yes = 1) is no velocity, and x = -1 written by the student
+# is no truth to judge the lines before it with.
+def test_names_no_value_fits_are_not_the_answer_yes_or_the_students_numbers() -> None:
+    work = (
+        "after the collision: A has x, B has y (right positive)\n0.3(3) + 0.2(-2) = 0.3x + 0.2y\n"
+        "y - x = 3 + 2 = 5\n0.5 = 0.3x + 0.2(x + 5) = 0.5x + 1\nx = -1, y = 4\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[4][0] != "correct"
+    assert found[5][0] != "correct"

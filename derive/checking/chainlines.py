@@ -74,7 +74,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
         if name and not own.provisional(name, exprs, true_defs, later):
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
-            exprs, sides = exprs[1:], sides[1:]
+            exprs, sides = own.defined_rest(name[0], exprs, sides, true_defs, _number)
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
         if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
             items.append(
@@ -228,8 +228,9 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
     A name declared in words (``said``) is known, not inferred."""
     found: dict[sympy.Symbol, sympy.Expr] = dict(said)
     given = _givens(ctx)  # where a given and a result have one value (h_0 = h_2), the result first
+    quantities = {s: v for s, v in values.items() if s not in chainnames.yes_no(ctx)}  # "again" = 1: no velocity
     cands = [
-        c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
+        c for s, v in sorted(quantities.items(), key=lambda sv: sv[0] in given) if v.is_number and v for c in (s, -s)
     ]
     defined = _introduced(read) - _answers(read, values, given)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)

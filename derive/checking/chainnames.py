@@ -228,6 +228,13 @@ def side_or_words(side: str, names: Open) -> sympy.Expr:
         return sympy.Symbol(PREFIX + "_".join(said.group(1).split()))
 
 
+def yes_no(ctx: Context) -> set[sympy.Symbol]:
+    """The chain's answers that are a yes or a no (``again`` = 1: do they collide again?), kept as
+    1 and 0 with no unit: no quantity a student's name stands for."""
+    results = (getattr(ctx.solution, "results", {}) or {}).items()
+    return {sympy.Symbol(n) for n, r in results if r.unit == "" and r.value in (0, 1) and not n.startswith("e")}
+
+
 def _chain_energy(ctx: Context, key: str) -> sympy.Symbol | None:
     """The chain's own value of an impact's energy (``T_after`` for T_2), where it has one: the
     student's wrong value of it is then known, carried, from their wrong velocities."""

@@ -82,6 +82,15 @@ def define(
         true_defs.slack[p] = float(rounding / n)
 
 
+def defined_rest(p: sympy.Symbol, exprs: list, sides: tuple, true_defs: dict, number: Callable) -> tuple[list, tuple]:
+    """The sides after a name's definition; a name set to a number alone (``x = -1``) that no
+    value of the chain's fits is the student's value only, never its true one (the lines judged
+    with it would hold for being the student's own numbers)."""
+    if len(sides) == 2 and number(sides[1]):
+        true_defs.pop(p, None)
+    return exprs[1:], sides[1:]
+
+
 def judged_later(items: list[Item], pending: list[tuple[int, tuple, list]], defs: dict, holds: Callable) -> None:
     """The lines not read for a name of the student's own that a later line defines, judged with
     it: a line that holds is correct (one that does not stays not read: the name may have been
