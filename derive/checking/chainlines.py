@@ -74,7 +74,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
         if name and not own.provisional(name, exprs, true_defs, later):
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
-            exprs, sides = own.defined_rest(name[0], exprs, sides, true_defs, _number)
+            exprs, sides = own.defined_rest(name[0], (exprs, sides), (true_defs, slips), _number, own.from_givens(ctx))
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
         if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
             items.append(
@@ -121,7 +121,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
-    own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]))
+    own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]), (wrong, slips))
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
     notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
@@ -361,7 +361,8 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         return Item("line", str(r.line), r.written, status, "", message, "the chain's values")
 
     if len(exprs) < 2 and len(sides) == 1 and NUMBER_SIDE.match(student(sides[0].strip())):  # w = 3.1: unnamed
-        return item("not read", f"Not read: {words.student_text(r.sides[0].strip())} is no quantity I can name.")
+        said = f"Not read: {words.student_text(r.sides[0].strip())} is no quantity I can name."
+        return item("carried", _carried(slips)) if slips else item("not read", said)  # after a slip: its own
     if len(exprs) < 2 or principles.energy_balance(sides):  # T_1 + V_1 = T_2 + V_2: the stage's principle
         return item("correct", principles.energy_balance(sides) or "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])
