@@ -218,3 +218,21 @@ def test_names_no_value_fits_are_not_the_answer_yes_or_the_students_numbers() ->
     found = lines("chain-aqa-m3-2007-collide-again", work)
     assert found[4][0] != "correct"
     assert found[5][0] != "correct"
+
+
+# --- names set to numbers in a chain: a mass worked from a weight; a value after a slip --------
+# Suitcases: W_A = 15 lb, W_B = 10 lb, h = 6 ft, e = 0.3, g = 32.2. m_A = 15/32.2 = 0.4658 slug is
+# right (0.5137 is no value of the problem's). With g taken as 9.81 (the slip): v1 = sqrt(2(9.81)(6))
+# = 10.85; 15 vA + 10 vB = 15(10.85) and vB - vA = 0.3(10.85) = 3.255 give 25 vA = 130.2, vA = 5.208,
+# vB = 8.463 (truly 9.435 and 15.33): those values, and the momentum line worked from 10.85, are carried.
+def test_a_mass_from_a_weight_is_right_and_a_value_after_a_slip_carried() -> None:
+    right = lines("chain-hibbeler-15-58-suitcases", "mA = 0.4658 slug\n")
+    assert right[1][0] == "correct"
+    assert lines("chain-hibbeler-15-58-suitcases", "mA = 0.5137 slug\n")[1][0] != "correct"
+    work = (
+        "v1 = sqrt(2(9.81)(6)) = 10.85\nmA = 0.4658, mB = 0.3106\n0.4658(10.85) = 0.4658 vA + 0.3106 vB\n"
+        "vB - vA = 0.3(10.85) = 3.255\nvA = 5.208, vB = 8.463\n"
+    )
+    found = lines("chain-hibbeler-15-58-suitcases", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (3, 5)] == ["carried", "carried"]
