@@ -37,6 +37,7 @@ from derive.checking.stageslips import (
     rule_named,
     stage_given,
     stage_mistakes,
+    unnamed_number,
 )
 from derive.checking.termslips import term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
@@ -360,7 +361,7 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     def item(status: str, message: str) -> Item:
         return Item("line", str(r.line), r.written, status, "", message, "the chain's values")
 
-    if len(exprs) < 2 and len(sides) == 1 and NUMBER_SIDE.match(student(sides[0].strip())):  # w = 3.1: unnamed
+    if unnamed_number(ctx, exprs, sides):  # w = 3.1: a name no value fits, set to a number
         said = f"Not read: {words.student_text(r.sides[0].strip())} is no quantity I can name."
         return item("carried", _carried(slips)) if slips else item("not read", said)  # after a slip: its own
     if len(exprs) < 2 or principles.energy_balance(sides):  # T_1 + V_1 = T_2 + V_2: the stage's principle

@@ -170,6 +170,19 @@ def result_numbers(sides: tuple[str, ...], data: set) -> set[str]:
     return numbers_written([last], data, small=True)
 
 
+def unnamed_number(ctx: Context, exprs: list, sides: tuple) -> bool:
+    """Whether what is left of a line is a number alone that a name of the student's own was set
+    to (``w = 3.1``), not 0 and no stage's given (``e = 0``, ``e = 0.7`` restated in a name)."""
+    if len(exprs) >= 2 or len(sides) != 1 or not NUMBER_SIDE.match(student(sides[0].strip())) or exprs[0] == 0:
+        return False
+    givens = [
+        g
+        for st in getattr(ctx.solution, "stages", ())
+        for g in getattr(getattr(st, "part", None), "problem", ctx.problem).givens
+    ]
+    return all(g.value != exprs[0] for g in [*givens, *ctx.problem.givens])
+
+
 def rule_named(ctx: Context, item: Item, line: tuple, reread: Callable[[str], sympy.Expr], holds: Callable) -> Item:
     """A chain's slip named by the rule it breaks: a weight used as the mass, or a rule of motion
     with a factor 2 lost (``line``: the sides as written and as read)."""
