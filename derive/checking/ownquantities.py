@@ -93,7 +93,9 @@ def defined_rest(p: sympy.Symbol, line: tuple, state: tuple, number: Callable, w
     (exprs, sides), (true_defs, slips) = line, state
     if len(sides) == 2 and number(sides[1]):
         figures = len(sides[1].strip().lstrip("-+").replace(".", "").lstrip("0"))
-        if figures >= 3 and any(number_at_figures(sides[1], complex(w)) for w in worked):  # not 7.0 = 9.8/1.4
+        if any(float(sympy.Rational(sides[1].strip())) == x for x in worked[0]):  # e = 0: a given restated
+            return exprs[1:], sides[1:]
+        if figures >= 3 and any(number_at_figures(sides[1], complex(w)) for w in worked[1]):  # not 7.0 = 9.8/1.4
             return [exprs[1], exprs[1]], (sides[1], sides[1])
         if not slips:
             true_defs.pop(p, None)
@@ -101,9 +103,12 @@ def defined_rest(p: sympy.Symbol, line: tuple, state: tuple, number: Callable, w
 
 
 def from_givens(ctx) -> list[float]:
-    """The products and quotients of two givens' values (a mass from a weight: 15/32.2)."""
-    xs = [float(g.value) for g in getattr(ctx.problem, "givens", ()) if g.value is not None and g.value.is_number]
-    return [a * b for a in xs for b in xs] + [a / b for a in xs for b in xs if b]
+    """The givens' values (a stage's too) and 0, and the products and quotients of two of them
+    (a mass from a weight: 15/32.2)."""
+    parts = [getattr(st, "part", None) for st in getattr(ctx.solution, "stages", ())]
+    givens = [g for p in parts if p is not None for g in p.problem.givens] + list(getattr(ctx.problem, "givens", ()))
+    xs = [float(g.value) for g in givens if g.value is not None and g.value.is_number]
+    return [0.0, *xs], [a * b for a in xs for b in xs] + [a / b for a in xs for b in xs if b]
 
 
 def judged_later(
