@@ -159,3 +159,80 @@ def test_a_later_stage_in_a_name_never_worked_is_carried_from_the_students_wrong
     found = lines("chain-msu-bullet-block-swings", work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3
+
+
+# --- a name set to the number it is written with is no quantity checked ---------------------
+# Dropped from h_0 = 2 m (g = 9.8): the speed before the floor is sqrt(2 x 9.8 x 2) = 6.26 m/s, so
+# 7.0 is no value of the chain's; a name no value fits was taken to be the number itself, and its
+# line "correct" for it.
+@pytest.mark.parametrize(
+    "text", ["speed just before impact = 7.0", "w = 3.1", "velocity before it lands = 7.0 m/s", "v = 3.1"]
+)
+def test_a_name_set_to_a_number_no_value_fits_is_never_correct(text: str) -> None:
+    found = lines("chain-ocr-m2-2006-drop-rebound", text + "\n")
+    assert found[1][0] != "correct"
+
+
+# --- the kinetic energy after the impact named in words ------------------------------------------
+# Bullet 0.020 kg at 300 m/s into a 4.0 kg block: V = 6/4.02 = 1.4925 m/s, the kinetic energy after
+# ½(4.02)(1.4925)² = 4.478 J. Kept instead (the slip): ½(0.020)(300)² = 900 = ½(4.02)V², V = 21.16,
+# and the kinetic energy after is then 900 J, carried.
+@pytest.mark.parametrize(
+    "name", ["KE immediately after", "kinetic energy after the collision", "KE right after", "KE after impact"]
+)
+def test_the_kinetic_energy_after_in_words(name: str) -> None:
+    right = lines("chain-msu-bullet-block-swings", f"0.020(300) = 4.02 V\nV = 1.4925\n{name} = 4.48\n")
+    assert right[3][0] == "correct"
+    wrong = lines("chain-msu-bullet-block-swings", f"0.020(300) = 4.02 V\nV = 1.4925\n{name} = 9.0\n")
+    assert wrong[3][0] == "wrong"
+    kept = "1/2 (0.020)(300)^2 = 1/2 (4.02) V^2\nV^2 = 447.76\nV = 21.16\n" + f"{name} = 900 J\n"
+    assert lines("chain-msu-bullet-block-swings", kept)[4][0] == "carried"
+
+
+# --- a wrong whole number carried into the next stage ------------------------------------------
+# A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward it, e = 0.8, the wall's 0.7. With e left out
+# (y - x = 5): 0.5 = 0.3x + 0.2(x + 5) gives x = -1, y = 4 (truly -0.6 and 3.4), so B comes off the
+# wall at 0.7 × 4 = 2.8 (truly 2.38): worked from the student's 4, a carried line, not a correct one.
+@pytest.mark.parametrize(
+    "head", ["right +ve. after: A x, B y", "Let x and y be the velocities of A and B after the collision."]
+)
+def test_a_wrong_whole_number_used_in_the_next_stage_is_carried(head: str) -> None:
+    work = (
+        f"{head}\n0.3(3) + 0.2(-2) = 0.3x + 0.2y\ny - x = 3 + 2 = 5\n0.5 = 0.3x + 0.2(x + 5) = 0.5x + 1\n"
+        "x = -1, y = 4\nspeed off the wall = 0.7 x 4 = 2.8 m/s\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[3][0] == "wrong"
+    assert found[6][0] == "carried"
+
+
+# --- names no value fits stay unknown: never a yes/no answer, never the student's own numbers ---
+# The same chain and slip (x = -1, y = 4 from e left out; truly -0.6 and 3.4), the names said in a
+# way not read as a declaration: "again" (yes = 1) is no velocity, and x = -1 written by the student
+# is no truth to judge the lines before it with.
+def test_names_no_value_fits_are_not_the_answer_yes_or_the_students_numbers() -> None:
+    work = (
+        "after the collision: A has x, B has y (right positive)\n0.3(3) + 0.2(-2) = 0.3x + 0.2y\n"
+        "y - x = 3 + 2 = 5\n0.5 = 0.3x + 0.2(x + 5) = 0.5x + 1\nx = -1, y = 4\n"
+    )
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[4][0] != "correct"
+    assert found[5][0] != "correct"
+
+
+# --- names set to numbers in a chain: a mass worked from a weight; a value after a slip --------
+# Suitcases: W_A = 15 lb, W_B = 10 lb, h = 6 ft, e = 0.3, g = 32.2. m_A = 15/32.2 = 0.4658 slug is
+# right (0.5137 is no value of the problem's). With g taken as 9.81 (the slip): v1 = sqrt(2(9.81)(6))
+# = 10.85; 15 vA + 10 vB = 15(10.85) and vB - vA = 0.3(10.85) = 3.255 give 25 vA = 130.2, vA = 5.208,
+# vB = 8.463 (truly 9.435 and 15.33): those values, and the momentum line worked from 10.85, are carried.
+def test_a_mass_from_a_weight_is_right_and_a_value_after_a_slip_carried() -> None:
+    right = lines("chain-hibbeler-15-58-suitcases", "mA = 0.4658 slug\n")
+    assert right[1][0] == "correct"
+    assert lines("chain-hibbeler-15-58-suitcases", "mA = 0.5137 slug\n")[1][0] != "correct"
+    work = (
+        "v1 = sqrt(2(9.81)(6)) = 10.85\nmA = 0.4658, mB = 0.3106\n0.4658(10.85) = 0.4658 vA + 0.3106 vB\n"
+        "vB - vA = 0.3(10.85) = 3.255\nvA = 5.208, vB = 8.463\n"
+    )
+    found = lines("chain-hibbeler-15-58-suitcases", work)
+    assert found[1][0] == "wrong"
+    assert [found[n][0] for n in (3, 5)] == ["carried", "carried"]

@@ -33,9 +33,11 @@ from derive.checking.stageslips import (
     own_root,
     own_sides,
     own_value,
+    result_numbers,
     rule_named,
     stage_given,
     stage_mistakes,
+    unnamed_number,
 )
 from derive.checking.termslips import term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
@@ -54,8 +56,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
-    def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names
-        return read_side(rewrite(side, set(names.known)), names, False, False).xreplace(mapping)
+    def reread(side: str) -> sympy.Expr:  # a side as written, in the chain's names ("KE just after" too)
+        return chainnames.side_or_words(side, names).xreplace(mapping)
 
     true_defs = own.Defs({p: chainnames.at(x, values) for p, x in said.items()})
     own_defs: dict[sympy.Symbol, sympy.Expr] = dict(true_defs)
@@ -73,7 +75,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own
         if name and not own.provisional(name, exprs, true_defs, later):
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
-            exprs, sides = exprs[1:], sides[1:]
+            exprs, sides = own.defined_rest(name[0], (exprs, sides), (true_defs, slips), _number, own.from_givens(ctx))
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
         if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
             items.append(
@@ -88,7 +90,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
-        if item.status == "correct" and slips and numbers_written(sides, set(), working=True) & wrong:
+        if item.status == "correct" and slips and numbers_written(sides, set(), working=True, small=True) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
             holds = partial(_holds, ctx, subs=[true_defs, values])
@@ -104,8 +106,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
             if flip:  # a sign lost, a ½ dropped, e's ratio upside down
                 item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
-        if item.status in ("wrong", "carried") and NUMBER_SIDE.match(student(sides[-1].strip())):
-            wrong |= numbers_written(sides[-1:], ctx.data)  # not a given
+        if item.status in ("wrong", "carried"):
+            wrong |= result_numbers(sides, ctx.data)  # y = 5 m/s: a number the student got wrong
         written.append(exprs)
         if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
             chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
@@ -120,7 +122,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "carried":  # 9(1 + e)²/4 = 4: the student's own e, for the lines after
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
-    own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]))
+    own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]), (wrong, slips))
     said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
     notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
@@ -202,7 +204,7 @@ def _read(ctx: Context, text: str, names: Open) -> list[tuple[Relation, tuple[st
                 try:
                     exprs.append(read_side(rewrite(s, set(names.known)), names, i == 0, i == len(r.sides) - 1))
                 except ParseError:
-                    words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,3})\s*", s)
+                    words = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,5})\s*", s)
                     if 0 < i < len(r.sides) - 1 and not words:
                         exprs.append(None)  # "v^2 = u^2 + 2as = 21^2 + …": a middle side not read is left out
                         continue
@@ -227,8 +229,9 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
     A name declared in words (``said``) is known, not inferred."""
     found: dict[sympy.Symbol, sympy.Expr] = dict(said)
     given = _givens(ctx)  # where a given and a result have one value (h_0 = h_2), the result first
+    quantities = {s: v for s, v in values.items() if s not in chainnames.yes_no(ctx)}  # "again" = 1: no velocity
     cands = [
-        c for s, v in sorted(values.items(), key=lambda sv: sv[0] in given) if v.is_number and v != 0 for c in (s, -s)
+        c for s, v in sorted(quantities.items(), key=lambda sv: sv[0] in given) if v.is_number and v for c in (s, -s)
     ]
     defined = _introduced(read) - _answers(read, values, given)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
@@ -242,7 +245,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
                 found[p] = best
             elif len(letter) == 1 and "_" not in p.name and letter[0].name != p.name[1:]:
                 found[p] = letter[0]  # "d" where the chain has one d (d_B): the result the student works out
-            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p}:
+            elif len(exprs) == 2 and set().union(*(_own(x.xreplace(found)) for x in exprs)) == {p} and p not in exprs:
                 roots = _solved(exprs[0].xreplace(found) - exprs[1].xreplace(found), p)
                 if roots is not None:
                     found[p] = roots
@@ -358,6 +361,9 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
     def item(status: str, message: str) -> Item:
         return Item("line", str(r.line), r.written, status, "", message, "the chain's values")
 
+    if unnamed_number(ctx, exprs, sides):  # w = 3.1: a name no value fits, set to a number
+        said = f"Not read: {words.student_text(r.sides[0].strip())} is no quantity I can name."
+        return item("carried", _carried(slips)) if slips else item("not read", said)  # after a slip: its own
     if len(exprs) < 2 or principles.energy_balance(sides):  # T_1 + V_1 = T_2 + V_2: the stage's principle
         return item("correct", principles.energy_balance(sides) or "Defines a name for the lines after it.")
     truly = _holds(ctx, sides, exprs, [true_defs, values])

@@ -19,7 +19,7 @@ import sympy
 
 from derive.checking.bodylists import written_out
 from derive.checking.context import Context
-from derive.checking.naming import PREFIX, Open, read_side
+from derive.checking.naming import PREFIX, Open, read_side, rewrite
 from derive.checking.numeric import shown
 from derive.checking.report import Item
 from derive.checking.restated import stated, written_number
@@ -183,6 +183,22 @@ def _result(ctx: Context, stage, key: str) -> sympy.Expr | None:
 #: are read as T_1, T_2, T_lost already). ``KE_i`` and ``KE_f`` are not among them: in a chain
 #: they are as often the start and end of a later stage's energy balance (the spring's).
 _ENERGIES = {"T_1": "T_1", "T_2": "T_2", "T_lost": "T_lost"}
+#: The same energies named in words (``KE just after``, ``kinetic energy after the collision``,
+#: ``KE immediately before``, ``energy lost in the impact``), read as one name of words.
+_ENERGY_WORDS = re.compile(
+    r"(?:KE|K_?E|kinetic_energy|E_?k|energy)_(?:(?:just|immediately|right)_)?"
+    r"(?:(before|initially|initial)|(after|finally|final)|(lost|loss))(?:_(?:the_)?\w+)?",
+    re.I,
+)
+
+
+def _energy_key(name: str) -> str | None:
+    """derive's name of an impact's energy a student's name says (``T_2`` for ``KE just after``)."""
+    key = _ENERGIES.get(name)
+    m = _ENERGY_WORDS.fullmatch(name) if key is None else None
+    if m is not None:
+        key = "T_1" if m[1] else "T_2" if m[2] else "T_lost"
+    return key
 
 
 def energies(ctx: Context, read: list) -> Declared:
@@ -193,11 +209,38 @@ def energies(ctx: Context, read: list) -> Declared:
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
     out: Declared = {}
     for p in used if len(impacts) == 1 else ():
-        key = _ENERGIES.get(p.name[len(PREFIX) :])
-        x = _result(ctx, impacts[0], key) if key else None
+        key = _energy_key(p.name[len(PREFIX) :])
+        x = _chain_energy(ctx, key) or _result(ctx, impacts[0], key) if key else None
         if x is not None:
-            out[p] = x
+            out[p] = _plain(x)
     return out
+
+
+def side_or_words(side: str, names: Open) -> sympy.Expr:
+    """A side as written, in the chain's names; a name in words (``KE just after``) as one name of
+    the student's own, as :func:`.chainlines._read` reads it (a side neither raises ParseError)."""
+    try:
+        return read_side(rewrite(side, set(names.known)), names, False, False)
+    except ParseError:
+        said = re.fullmatch(r"\s*([A-Za-z]{2,}(?:\s+[A-Za-z]{2,}){0,5})\s*", side)
+        if said is None:
+            raise
+        return sympy.Symbol(PREFIX + "_".join(said.group(1).split()))
+
+
+def yes_no(ctx: Context) -> set[sympy.Symbol]:
+    """The chain's answers that are a yes or a no (``again`` = 1: do they collide again?), kept as
+    1 and 0 with no unit: no quantity a student's name stands for."""
+    results = (getattr(ctx.solution, "results", {}) or {}).items()
+    return {sympy.Symbol(n) for n, r in results if r.unit == "" and r.value in (0, 1) and not n.startswith("e")}
+
+
+def _chain_energy(ctx: Context, key: str) -> sympy.Symbol | None:
+    """The chain's own value of an impact's energy (``T_after`` for T_2), where it has one: the
+    student's wrong value of it is then known, carried, from their wrong velocities."""
+    ends = {"T_1": ("before", "1"), "T_2": ("after", "2"), "T_lost": ("lost", "loss")}[key]
+    found = [s for s in ctx.solution.values if re.fullmatch(rf"(?:T|KE)_?(?:{'|'.join(ends)})", str(s))]
+    return sympy.Symbol(str(found[0])) if len(found) == 1 else None
 
 
 #: The A-level habit (u before, v after; a prime after) in a chain's one impact.

@@ -19,6 +19,8 @@ from derive.checking import chainnames
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.report import Item
+from derive.checking.stageslips import numbers_written
+from derive.checking.worlds import number_at_figures
 from derive.problem.expr import ParseError
 
 
@@ -82,15 +84,50 @@ def define(
         true_defs.slack[p] = float(rounding / n)
 
 
-def judged_later(items: list[Item], pending: list[tuple[int, tuple, list]], defs: dict, holds: Callable) -> None:
+def defined_rest(p: sympy.Symbol, line: tuple, state: tuple, number: Callable, worked: list) -> tuple[list, tuple]:
+    """The sides after a name's definition (``line``: its expressions and sides; ``state``: the
+    true values of the student's names and the slips so far). A name set to a number alone
+    (``x = -1``) that no value of the chain's fits is the student's value only, never the truth
+    to judge other lines with, before a slip; a number that is two givens' product or quotient
+    (``m_A = 0.4658``: 15/32.2, ``worked``; three figures at least) is right, as the relation ``0.4658 = 0.4658``."""
+    (exprs, sides), (true_defs, slips) = line, state
+    if len(sides) == 2 and number(sides[1]):
+        figures = len(sides[1].strip().lstrip("-+").replace(".", "").lstrip("0"))
+        if any(float(sympy.Rational(sides[1].strip())) == x for x in worked[0]):  # e = 0: a given restated
+            return exprs[1:], sides[1:]
+        if figures >= 3 and any(number_at_figures(sides[1], complex(w)) for w in worked[1]):  # not 7.0 = 9.8/1.4
+            return [exprs[1], exprs[1]], (sides[1], sides[1])
+        if not slips:
+            true_defs.pop(p, None)
+    return exprs[1:], sides[1:]
+
+
+def from_givens(ctx) -> list[float]:
+    """The givens' values (a stage's too) and 0, and the products and quotients of two of them
+    (a mass from a weight: 15/32.2)."""
+    parts = [getattr(st, "part", None) for st in getattr(ctx.solution, "stages", ())]
+    givens = [g for p in parts if p is not None for g in p.problem.givens] + list(getattr(ctx.problem, "givens", ()))
+    xs = [float(g.value) for g in givens if g.value is not None and g.value.is_number]
+    return [0.0, *xs], [a * b for a in xs for b in xs] + [a / b for a in xs for b in xs if b]
+
+
+def judged_later(
+    items: list[Item], pending: list[tuple[int, tuple, list]], defs: dict, holds: Callable, wrong: tuple = ((), [])
+) -> None:
     """The lines not read for a name of the student's own that a later line defines, judged with
     it: a line that holds is correct (one that does not stays not read: the name may have been
-    defined from a slip). ``pending``: each such line's index in ``items``, sides, expressions."""
+    defined from a slip). ``pending``: each such line's index in ``items``, sides, expressions;
+    ``wrong``: the numbers the student got wrong, and the lines of the slips: a line that
+    holds worked from one of them (``0.4658(13.90)``, 13.90 wrong) is carried."""
     for k, sides, exprs in pending:
         own = {s for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
         if own and own <= set(defs) and holds(sides, exprs):
             names = ", ".join(sorted(s.name[len(PREFIX) :] for s in own))
             message = f"True for this problem, with {names} as the later lines find it."
+            if wrong[1] and set(wrong[0]) & numbers_written(sides, set(), working=True, small=True):
+                said = f"Right given the slip in line {wrong[1][0]}: a carried error, not a new mistake."
+                items[k] = replace(items[k], status="carried", message=said)
+                continue
             items[k] = replace(items[k], status="correct", message=message)
 
 

@@ -13,7 +13,9 @@ import sympy
 from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.report import Item
+from derive.checking.worlds import NUMBER_SIDE
 from derive.errors import InputError
+from derive.mathtext.notation import student
 from derive.problem.expr import ParseError
 from derive.problem.units import FORCE
 
@@ -56,9 +58,21 @@ def stage_mistakes(ctx: Context) -> StageMistakes:
                 x = q.value if q is not None and q.value is not None else post.get(inner)
                 if x is not None:
                     given[outer] = x * 180 / sympy.pi if q is not None and q.value is None else x
+            given.update(_energies_after(part, names, post, given))
             if given:
                 out.append((o.mistake.name, given))
     return out
+
+
+def _energies_after(part, names: dict, post: dict, given: dict) -> dict:
+    """The kinetic energy after an impact (the chain's name of its T_2) that a mistake's
+    velocities give where the mistake states only those (kinetic energy kept with the bodies
+    moving together: V = 21.2, so T_after = ½(m_A + m_B)V² = 900), for the lines worked from it."""
+    outer = next((k for k, v in names.items() if v == "T_2" and k not in given), None)
+    masses = {g.name: g.value for g in part.problem.givens if g.name in ("m_A", "m_B") and g.value is not None}
+    if outer is None or len(masses) != 2 or not all(f"v_{b}2" in post for b in "AB"):
+        return {}
+    return {outer: sum(masses[f"m_{b}"] * post[f"v_{b}2"] ** 2 for b in "AB") / 2}
 
 
 def stage_given(ctx: Context, exprs) -> bool:
@@ -128,15 +142,45 @@ def own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) 
         own_defs[x] = min(roots, key=lambda r: abs(r - values[x]))
 
 
-def numbers_written(sides: tuple[str, ...] | list[str], data: set, working: bool = False) -> set[str]:
+#: A side that is a number alone, perhaps with its unit (``5 m/s``): a line's result.
+RESULT = re.compile(r"\s*[-+]?\d+(?:\.\d+)?\s*[A-Za-z/ ]*")
+
+
+def numbers_written(
+    sides: tuple[str, ...] | list[str], data: set, working: bool = False, small: bool = False
+) -> set[str]:
     """The decimals written in ``sides`` and the whole numbers of two figures or more
     (``1125`` in ``sqrt(1125)``), as written, but the problem's ``data``: a number a wrong line
     came to, and a later line worked from it. ``working``: of the sides but a last one that is
-    a number alone (the line's result; ``3010 × 4.601`` is working)."""
-    if working and sides and re.fullmatch(r"\s*[-+]?\d+(?:\.\d+)?\s*[A-Za-z/ ]*", sides[-1]):
+    a number alone (the line's result; ``3010 × 4.601`` is working). ``small``: the whole numbers
+    2 to 9 too (``y = 5`` worked wrongly, then ``0.7 × 5``)."""
+    if working and sides and RESULT.fullmatch(sides[-1]):
         sides = sides[:-1]
     found = re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", " ".join(sides))
-    return {t for t in found if ("." in t or len(t.strip("0")) >= 2) and sympy.Rational(t) not in data}
+    short = {str(k) for k in range(2, 10)} if small else set()
+    return {t for t in found if ("." in t or len(t.strip("0")) >= 2 or t in short) and sympy.Rational(t) not in data}
+
+
+def result_numbers(sides: tuple[str, ...], data: set) -> set[str]:
+    """The number a line came to (its last side a number alone, perhaps with a unit: ``y = 5 m/s``),
+    as :func:`numbers_written` has it (small whole numbers too; none of the problem's ``data``)."""
+    last = sides[-1] if sides else ""
+    if not (RESULT.fullmatch(last) or NUMBER_SIDE.match(student(last.strip()))):
+        return set()
+    return numbers_written([last], data, small=True)
+
+
+def unnamed_number(ctx: Context, exprs: list, sides: tuple) -> bool:
+    """Whether what is left of a line is a number alone that a name of the student's own was set
+    to (``w = 3.1``), not 0 and no stage's given (``e = 0``, ``e = 0.7`` restated in a name)."""
+    if len(exprs) >= 2 or len(sides) != 1 or not NUMBER_SIDE.match(student(sides[0].strip())) or exprs[0] == 0:
+        return False
+    givens = [
+        g
+        for st in getattr(ctx.solution, "stages", ())
+        for g in getattr(getattr(st, "part", None), "problem", ctx.problem).givens
+    ]
+    return all(g.value != exprs[0] for g in [*givens, *ctx.problem.givens])
 
 
 def rule_named(ctx: Context, item: Item, line: tuple, reread: Callable[[str], sympy.Expr], holds: Callable) -> Item:
