@@ -77,16 +77,26 @@ def test_the_reversed_convention_said_with_a_bare_plus(said: str) -> None:
     assert lines(WALL, f"u = -4 m/s {said}\nv = -1.2\n")[2][0] == "wrong"
 
 
-@pytest.mark.parametrize("way", ["away from the wall", "back away from the wall", "back off the wall"])
-def test_a_speed_worked_out_with_its_way_from_the_wall_in_words(way: str) -> None:
-    # "v = eu = 0.3 x 4 = 1.2 m/s away from the wall": v is the rebound's size, its way in words
-    work = f"v = eu = 0.3 × 4 = 1.2 m/s {way}\nKE lost = ½(0.8)(4²) − ½(0.8)(1.2²) = 6.4 − 0.576 = 5.824 J\n"
-    found = lines(WALL, work)
-    assert found[1][0] == found[2][0] == "correct"
+# AQA M3 2007: 0.3 kg at 3 m/s meets 0.2 kg at 2 m/s head-on, e = 0.8 (right positive):
+# 0.9 - 0.4 = 0.3a + 0.2b, b - a = 0.8(5) = 4 -> 0.5a = -0.3, a = -0.6 (0.6 m/s to the left), b = 3.4.
+SPHERES_07 = "aqa-m3-2007-spheres-approach-head-on"
 
 
-def test_a_rebound_said_to_go_toward_the_wall_is_wrong() -> None:
-    assert lines(WALL, "v = eu = 0.3 × 4 = 1.2 m/s towards the wall\n")[1][0] == "wrong"
+@pytest.mark.parametrize(
+    "line",
+    [
+        "v_A = 0.3/0.5 = 0.6 m/s to the left",
+        "v_A = (0.8 - 0.5)/0.5 = 0.6 m/s in the opposite direction",
+        "v_A = (0.5 - 0.8)/0.5 = 0.6 m/s to the left",
+        "v_A = -0.6 m/s, so 0.6 m/s to the left",
+    ],
+)
+def test_a_size_worked_out_with_its_way_in_words_after_it(line: str) -> None:
+    assert lines(SPHERES_07, line + "\n")[1][0] == "correct"
+
+
+def test_a_size_worked_out_said_to_go_the_wrong_way_is_wrong() -> None:
+    assert lines(SPHERES_07, "v_A = 0.3/0.5 = 0.6 m/s to the right\n")[1][0] == "wrong"
 
 
 SPHERES = """title = "Spheres meet head-on: find the mass of A"
@@ -119,3 +129,43 @@ def test_a_given_copied_with_a_digit_changed_is_no_rounding(tmp_path) -> None:
     assert found[2][0] == "carried"
     right = derive.check(derive.solve(derive.load(str(path))), derivation="4m_A - 0.1(2) = 3m_A + 0.1(3.8)\n")
     assert right.items[0].status == "correct"
+
+
+WALL_30 = """title = "A ball strikes a smooth wall at 30 degrees"
+kind = "oblique"
+statement = "A ball of mass 0.5 kg hits a smooth wall at 10 m/s at 30 degrees to the wall; e = 0.5."
+question = "Find the velocity after the impact."
+
+[given]
+m_A = "0.5 kg"
+e = 0.5
+v_A1 = "10 m/s"
+alpha = "30 deg"
+
+[A]
+angle = "alpha"
+from = "+t"
+toward = "+n"
+
+[B]
+fixed = true
+name = "wall"
+"""
+
+
+@pytest.mark.parametrize(
+    ("par", "perp"), [("v_par", "v_perp"), ("v_parallel", "v_perpendicular"), ("v_along", "v_across")]
+)
+def test_components_after_named_parallel_and_perpendicular_to_a_wall(tmp_path, par: str, perp: str) -> None:
+    # along the wall 10 cos 30 = 8.660 is kept; into it 10 sin 30 = 5 becomes 0.5 x 5 = 2.5 away
+    path = tmp_path / "wall.toml"
+    path.write_text(WALL_30)
+    sol = derive.solve(derive.load(str(path)))
+
+    def judged(work: str) -> list[str]:
+        return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]
+
+    assert judged(f"after: {par} = 10 cos 30 = 8.660\nafter: {perp} = 0.5(10 sin 30) = 2.5\n") == ["correct"] * 2
+    # e on the part along the wall: wrong, not a definition of the student's own name
+    assert judged(f"after: {par} = 0.5(10 cos 30) = 4.330\n")[0] == "wrong"
+    assert judged(f"after: {perp} = 10 sin 30 = 5\n")[0] == "wrong"

@@ -77,7 +77,8 @@ def signed_by_words(r: R, sign: int) -> R:
         return r
     if r.direction * sign > 0:
         return r
-    if len(r.exprs) >= 3 and r.exprs[0].is_Symbol:  # "v = eu = 0.4 x 4 = 1.6 m/s away from the wall": v's size
+    if len(r.exprs) >= 3 and r.exprs[0].is_Symbol and not any(x.is_number and x < 0 for x in r.exprs[1:-1]):
+        # "v = eu = 0.4 x 4 = 1.6 m/s to the left": v's size is worked out, its way said after it
         return replace(r, exprs=(-r.exprs[0], *r.exprs[1:]))
     return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
 

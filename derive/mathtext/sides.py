@@ -129,10 +129,6 @@ _BACK_ABROAD = (
     r"zurück|nach\s+links|vers\s+la\s+gauche|à\s+gauche|en\s+sens\s+inverse|hacia\s+(?:la\s+)?izquierda|hacia\s+atrás"
 )
 _ON_ABROAD = r"nach\s+rechts|vers\s+la\s+droite|à\s+droite|hacia\s+(?:la\s+)?derecha"
-#: A fixed body's way in words (+n runs toward it): "1.6 m/s back away from the wall", "4 m/s towards the wall".
-_FIXED_BODY = r"(?:the\s+)?(?:wall|cushion|floor|ground|barrier|plate|buffer|board)\b"
-_BACK_ABROAD += rf"|(?:back\s+)?(?:away\s+from|off|back\s+from)\s+{_FIXED_BODY}"
-_ON_ABROAD += rf"|(?:in\s+)?to(?:wards?)?\s+{_FIXED_BODY}"
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
     r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$)|"
