@@ -86,11 +86,11 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
     flips: dict[str, int] = {}  # a subscript across -> -1 where its size is derive's negative
     for r in relations:
         name = r.sides[0].strip()
-        if len(r.sides) < 2 or name in reserved or not re.fullmatch(r"[A-Za-z]_?\w{1,3}", name):
+        if len(r.sides) < 2 or name in reserved or not re.fullmatch(r"[A-Za-z]_?\w{1,3}|[A-Za-z]_[A-Za-z]{4,13}", name):
             continue
         after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
-        axis = _axis(_words_beside(r, name), fixed)
         sub = name.split("_")[-1] if "_" in name else name[1:]
+        axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if after else "")  # v_perp: after
         if not axis and after and sub in letters:
             axis = letters[sub]
         body = "A" if fixed else _body(r.sides[1], ctx)
@@ -100,9 +100,38 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
         if x is not None:
             if axis == "t" and not after and not r.sides[1].lstrip().startswith("-") and _negative(ctx, x):
                 flips[sub] = -1  # "perp.: w = 15 sin 37.6°": a size, the student's own way across
+            if axis == "n" and after and sub_axis(sub, fixed) and not r.sides[1].lstrip().startswith("-"):
+                x = -x if _negative_after(ctx, x) else x  # "v_perp = eU sin α": the rebound's size
             out.setdefault(name, flips.get(sub, 1) * x if axis == "t" else x)
             letters.setdefault(sub, axis)
     return out
+
+
+#: A component's subscript that names its axis: parallel or perpendicular (to a wall: along it or
+#: into it; to two bodies' line of centres: along it or across it).
+_PARALLEL = re.compile(r"par|para|paral|parallel|pl|al|along|∥|\|\|", re.I)
+_PERPENDICULAR = re.compile(r"perp|pp|pe|perpendicular|across|⊥", re.I)
+
+
+def sub_axis(sub: str, fixed: bool) -> str:
+    """``n`` or ``t`` for a component's subscript that says its axis (``v_par``, ``v_perp``): for a
+    wall parallel is along it (t) and perpendicular into it (n); for two bodies parallel is along
+    the line of centres (n); "" for any other subscript."""
+    if _PARALLEL.fullmatch(sub):
+        return "t" if fixed else "n"
+    if _PERPENDICULAR.fullmatch(sub):
+        return "n" if fixed else "t"
+    return ""
+
+
+def _negative_after(ctx: Context, c: sympy.Expr) -> bool:
+    """Whether the component ``c`` after the impact is negative in the problem solved (at a few
+    admissible values of the givens where they are letters)."""
+    out = ctx.model.outcome(ctx.model.base())
+    if out is None:
+        return False
+    x = c.xreplace(out.post)
+    return x != c and _negative(ctx, x)
 
 
 def _negative(ctx: Context, c: sympy.Expr) -> bool:

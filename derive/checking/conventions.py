@@ -77,4 +77,25 @@ def signed_by_words(r: R, sign: int) -> R:
         return r
     if r.direction * sign > 0:
         return r
+    if len(r.exprs) >= 3 and r.exprs[0].is_Symbol and not any(x.is_number and x < 0 for x in r.exprs[1:-1]):
+        # "v = eu = 0.4 x 4 = 1.6 m/s to the left": v's size is worked out, its way said after it
+        return replace(r, exprs=(-r.exprs[0], *r.exprs[1:]))
     return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
+
+
+#: A way declared positive by a bare plus: "(towards wall is +)", "towards the wall = +", "(+ away from the wall)".
+_PLUS_AFTER = re.compile(r"([A-Za-z][A-Za-z'’\s]*?)\s*(?:is|as|=|:)\s*\+(?:\s*ve)?\s*(?=\)|$|[,;.])", re.I)
+_PLUS_BEFORE = re.compile(
+    r"(?:^|[(\[,;])\s*\+(?:\s*ve)?\s*(?:is|=|:|->|→)?\s*((?:to|towards|away|from|in|out)\b[A-Za-z'’\s]*)", re.I
+)
+
+
+def plus_said(line: str) -> int:
+    """The sign convention a clause of ``line`` states with a bare ``+`` (no "positive", no "+ve"
+    needed): ``(towards wall is +)`` +1, ``(+ = away from the wall)`` -1; 0 where none says a way."""
+    for pattern in (_PLUS_AFTER, _PLUS_BEFORE):
+        for m in pattern.finditer(line):
+            sign = sign_of(m.group(1))
+            if sign:
+                return sign
+    return 0

@@ -92,8 +92,23 @@ def literal_tolerance(text: str, data: set[sympy.Rational]) -> float:
         d = Decimal(tok)
         if d == 0 or figures(d) < 2 or sympy.Rational(tok) in data:
             continue  # one figure (0.5, 0.6) is data, not a rounded intermediate
+        if copied_given(d, data):
+            continue  # 2.4 for B's 2.9: a given written as another number, a slip, not a rounding
         tol += float(last_place(d) / abs(d))
     return min(tol, 0.05)
+
+
+def copied_given(d: Decimal, data: set[sympy.Rational]) -> bool:
+    """Whether ``d`` is a given of ``data`` written with one digit changed by more than one unit
+    (2.4 or 3.9 for 2.9; not 2.8, which may be a value near it rounded)."""
+    x = format(d.normalize(), "f")
+    for g in data:
+        if not g.is_Rational or g == 0 or abs(sympy.Rational(x) - g) <= sympy.Rational(str(last_place(d))):
+            continue
+        y = format(Decimal(str(sympy.Float(abs(g), 15))).normalize(), "f")
+        if len(x) == len(y) and sum(p != q for p, q in zip(x, y, strict=True)) == 1:
+            return True
+    return False
 
 
 def side_slack(side: str, data: set[sympy.Rational], read: Callable[[str], float | None]) -> float | None:

@@ -292,8 +292,8 @@ class Trace(Carrying):
         j = v.equation if v.equation is not None and not pinned else self._closest(bad.difference)
         if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
-        if not diags and not pinned:
-            diags = self._in_results(bad) or self._in_mistake_world(bad) or self._before(bad)
+        if not diags:  # a result's mistake keeps the velocities stated right: pinned or not
+            diags = self._in_results(bad) or (() if pinned else self._in_mistake_world(bad) or self._before(bad))
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""

@@ -30,7 +30,7 @@ from derive.checking.axisnames import letter_components
 from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
-from derive.checking.conventions import sign_of
+from derive.checking.conventions import plus_said, sign_of
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
 from derive.checking.speedwords import one_speed_after
@@ -405,4 +405,6 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             sign = sign_of(line)
         elif re.search(r"\b(?:both|each|all|measured|taken)\b[^.;]*?\bin\s+the\s+(?:direction|way)\b", line, re.I):
             sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
+        elif not sign and (plus := plus_said(line)):
+            sign = plus  # "(towards wall is +)", "(+ away from the wall)"
     return out, sign

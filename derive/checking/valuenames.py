@@ -177,7 +177,7 @@ def by_value(
             dim is None
             or name in out
             or len(r.sides) < 2
-            or any(re.search(r"[A-Za-z]", x) and not impulse_name(x) for x in r.sides[1:-1])
+            or (_defined_by_expression(r.sides[1:-1]) and not _the_impulse(name, r.sides[1:-1], table.get(dim, [])))
         ):
             continue  # "mu = m1 m2/(m1 + m2) = 0.1497 kg": a name defined by its expression
         solved = _met_before(name, relations[:k])  # "6M = 7200 -> M = 1200 kg": a result, not a given restated
@@ -213,6 +213,20 @@ def by_value(
             x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
             out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _defined_by_expression(middle: tuple[str, ...]) -> bool:
+    """Whether a side between the name and its number has letters in it (``m1 m2/(m1 + m2)``)."""
+    return any(re.search(r"[A-Za-z]", x) and not impulse_name(x) for x in middle)
+
+
+def _the_impulse(name: str, middle: tuple[str, ...], impulses: list[tuple[str, sympy.Expr]]) -> bool:
+    """Whether ``name`` says the impulse (``J``, ``I``, ``J_n``, ``impulse``; not a component ``J_y``)
+    where the problem has only one, defined as a change in momentum (``J = m Δv = 47(6.235) = 293``):
+    named by its letter whatever its number."""
+    plain = re.fullmatch(r"[IJ](?:_n)?|impulse\w*|dp\w*", name) is not None
+    change = any(re.search(r"Δ|\\?Delta|\bchange\b|\bd[pv]\b", x) for x in middle)
+    return plain and change and _says_impulse(name) and _only_one(impulses) is not None
 
 
 def _body_impulse(name: str, impulses: list[tuple[str, sympy.Expr]]) -> sympy.Expr | None:
