@@ -71,7 +71,9 @@ def put_in(read: list, known: tuple[float, ...] | None = None) -> set[int]:
     return out
 
 
-def judged(read: list, known: tuple[float, ...] | None = None) -> list:
-    """The relations of ``read`` to judge: not those that put a value into a letter (:func:`put_in`)."""
+def judged(read: list, values: dict | None = None) -> list:
+    """The relations of ``read`` to judge: not those that put a value into a letter (:func:`put_in`);
+    ``values``: the chain's values, a number put in must be one of them or one found before."""
+    known = None if values is None else tuple(float(v) for v in values.values() if v.is_number and v.is_real)
     put = put_in(read, known)
     return [x for k, x in enumerate(read) if k not in put]
