@@ -555,3 +555,28 @@ def test_a_sign_lost_moving_a_number_carries_into_the_other_velocity_in_numbers(
     found = lines("ocr-m2-2006-spheres-meet-at-5-ke-lost", work)
     assert found[4][0] == "wrong"
     assert found[5][0] == found[6][0] == "carried"
+
+
+def test_a_second_slip_substituting_the_first_slip_keeps_both_in_the_world() -> None:
+    # AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward it, e = 0.8), left positive: the
+    # momentum 0.3(-3) + 0.2(2) = -0.5 = 0.3a + 0.2b; the impact rule is a - b = 0.8(5) = 4
+    # (a = 0.6, b = -3.4, the mark scheme's -0.6 and 3.4 turned round). Written b - a = 4 (the
+    # wrong way round), then b = a + 4 put into the momentum with 0.2 x 4 taken as 4: a further
+    # slip, -0.5 = 0.5a + 4, a = -9; then b = a + 4 = -5 from the student's own two lines:
+    # carried, not a new mistake.
+    work = (
+        "Taking left as positive, let a and b be the velocities of A and B after.\n"
+        "Momentum: 0.3(-3) + 0.2(2) = 0.3a + 0.2b\n"
+        "-0.5 = 0.3a + 0.2b\n"
+        "Restitution: b - a = 0.8(2 + 3) = 4\n"
+        "b = a + 4\n"
+        "-0.5 = 0.3a + 0.2a + 4\n"
+        "0.5a = -4.5\n"
+        "a = -9\n"
+        "b = -5\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[2][0] == found[3][0] == "correct"
+    assert found[4][0] == found[6][0] == "wrong"
+    assert found[5][0] == found[7][0] == found[8][0] == "carried"
+    assert found[9][0] == "carried"

@@ -97,6 +97,25 @@ def test_a_general_result_applied_with_its_letter_given_in_words_is_correct_stag
     assert [found[n][0] for n in range(2, 10)] == ["correct"] * 8
 
 
+def test_a_wrong_number_put_into_a_general_results_letter_is_judged() -> None:
+    # Edexcel M2 three particles again: q = w(1 + e)/2 for a mass at w striking an equal one at
+    # rest. B strikes C at u_B = 7(1 + e)/2 = 5.29 m/s (e = 0.512), so "(w = 3)" for the second
+    # impact puts in a speed the chain never has and the student never found: the line is the
+    # slip (w should be u_B), and 4 = 3(1 + e)/2, e = 1.67 carry it. "(w = 7)" is A's 7 m/s.
+    work = (
+        "Equal mass m at speed w hits equal mass at rest: p + q = w, q - p = e w.\n"
+        "So q = w(1 + e)/2.\n"
+        "A hits B (w = 7): u_B = 7(1 + e)/2\n"
+        "B hits C (w = 3): u_C = w(1 + e)/2\n"
+        "4 = 3(1 + e)/2\n"
+        "e = 1.67\n"
+    )
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+    assert found[4][0] == "wrong"
+    assert found[5][0] == found[6][0] == "carried"
+
+
 def test_a_letter_of_a_suvat_result_given_each_stage_height_in_brackets_is_no_slip(tmp_path) -> None:
     # OCR M2 2006's chain with a drop of 2.5 m and a rebound to 1.6 m (g = 9.8): from rest through
     # h, v = sqrt(2 g h); falling (h = 2.5) v_1 = sqrt(49) = 7; rising (h = 1.6) v_2 = sqrt(31.36)

@@ -342,6 +342,7 @@ def test_components_named_on_axes_placed_in_words() -> None:
 ED04 = "edexcel-m2-2004-june-q5-2m-at-5u-hits-3m"
 ED11 = "edexcel-m2-2011-june-q2-m-at-4u-hits-3m-show-e-gt-third"
 ZERO = "cie-9231-p2-2019-june-q3-2m-at-2u-meets-4m-at-u"
+HEAD_ON = "aqa-m3-2007-spheres-approach-head-on"
 
 
 @pytest.mark.parametrize(("a", "b"), [("x", "y"), ("p", "q"), ("a", "b"), ("V_1", "V_2"), ("v_A", "v_B"), ("v1", "v2")])
@@ -351,6 +352,31 @@ def test_a_restitution_law_upside_down_stays_wrong_whatever_the_names(a: str, b:
     seen = by_line(CATCH, work)
     assert seen["1"] == "correct" and seen["2"] == "wrong", seen
     assert "correct" not in {seen[k] for k in "3456"}, seen
+
+
+@pytest.mark.parametrize(
+    ("momentum", "statuses"),
+    [
+        ("0.3(3) - 0.2(2) = 0.3x + 0.2y", ["wrong", "correct"]),  # the givens' frame: the law is the slip
+        ("0.3(-3) + 0.2(2) = 0.3x + 0.2y", ["correct", "correct"]),  # left positive throughout
+    ],
+)
+def test_a_restitution_law_written_first_grounds_no_frame_the_momentum_after_it_does(momentum, statuses) -> None:
+    # AQA M3 2007 (0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward it, e = 0.8): right positive, 0.5 =
+    # 0.3x + 0.2y and y - x = 0.8(3 + 2) = 4 give x = -0.6, y = 3.4 (the mark scheme's). The law
+    # written first as x - y = 4 is upside down in the givens' frame, which the momentum after it
+    # writes (A's +3, B's -2): then 0.5 = 0.3x + 0.2(x - 4), 0.5x = 1.3, x = 2.6, y = -1.4, carried. With left positive (A's -3, B's +2) the same law is right and x = 0.6,
+    # y = -3.4 (-0.5 = 0.5x - 0.8).
+    left = momentum.startswith("0.3(-3)")
+    rest = (
+        "-0.5 = 0.3x + 0.2(x - 4)\n0.5x = 0.3\nx = 0.6\ny = -3.4"
+        if left
+        else ("0.5 = 0.3x + 0.2(x - 4)\n0.5x = 1.3\nx = 2.6\ny = -1.4")
+    )
+    seen = by_line(HEAD_ON, f"x - y = 0.8(3 + 2) = 4\n{momentum}\n{rest}")
+    assert [seen["1"], seen["2"]] == statuses, seen
+    later = "correct" if left else "carried"
+    assert [seen[k] for k in "3456"] == [later] * 4, seen
 
 
 def test_a_restitution_law_upside_down_in_letters() -> None:

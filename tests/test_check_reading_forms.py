@@ -276,6 +276,19 @@ def test_a_wrong_centre_of_mass_velocity_is_wrong() -> None:
     assert found == {1: "wrong", 2: "carried"}, found
 
 
+def test_a_bodys_velocity_in_the_centre_of_mass_frame_is_not_the_centre_of_mass_velocity() -> None:
+    # In the centre of mass frame (moving at 1 m/s) B moves at -2 - 1 = -3 m/s; after, at
+    # -0.8(-3) = 2.4 there, so v_B = 1 + 2.4 = 3.4 (the mark scheme's 3.4). "B moves at w" names
+    # B's velocity in that frame, not the frame's own velocity (which is 1, not -3).
+    lines = [
+        "The centre of mass moves at $V = (0.3(3) - 0.2(2))/0.5 = 1$ m/s",
+        "and in the CM frame B moves at $w = -2 - 1 = -3$ m/s",
+        "$v_B = 1 - 0.8(-3) = 3.4$",
+    ]
+    found = statuses(HEAD_ON, "\n".join(lines))
+    assert [found.get(n) for n in (1, 2, 3)] == ["correct"] * 3, found
+
+
 # edexcel-fm1-2023-june-q7a-cushion-show-tan-beta: speed U at alpha to the cushion DC, smooth, e_1:
 # along DC U cos(alpha) is kept, across it e_1 U sin(alpha): V cos(beta) = U cos(alpha),
 # V sin(beta) = e_1 U sin(alpha). giancoli-7-18-tennis-ball-wall-45deg: 28 m/s at 45 deg to the

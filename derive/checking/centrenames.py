@@ -32,6 +32,9 @@ _CANDIDATE = re.compile(r"(?<![\w\\'])([VUWw]|[vVuU]_\{?(?:G|g|c|cm|CM|com|COM|C
 _SAYS = re.compile(r"(?:\b(?:let|is|be|at|by|called|say|denote|call)|[(:])\s*$", re.I)
 #: Subscripts that name a body: such a name is a body's velocity, not the centre of mass's.
 _BODY_MARKS = frozenset("ABPQ12")
+#: A body's label as the subject of the clause before a name ("in the CM frame B moves at w"):
+#: the name is that body's velocity (in the frame), not the centre of mass's.
+_BODY_SUBJECT = re.compile(r"(?<![\w\\'])[A-HJ-Z](?![\w'])")
 
 
 def _said(line: str) -> set[str]:
@@ -44,6 +47,9 @@ def _said(line: str) -> set[str]:
         name = re.sub(r"[{}]", "", m[1])
         if name.split("_")[-1] in _BODY_MARKS:
             continue
+        clause = re.split(r"[,;:(]|\band\b", plain[: m.start()])[-1]
+        if _BODY_SUBJECT.search(clause):
+            continue  # "in the CM frame B moves at w = -3": B's velocity there
         if re.match(r"\s*(?:=|≈)", plain[m.end() :]) or _SAYS.search(plain[: m.start()]):
             out.add(name)
     return out

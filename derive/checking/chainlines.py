@@ -69,7 +69,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     written: list[list[sympy.Expr]] = []  # the relations read so far, for the student's own values
     previous: list[sympy.Expr] = []  # the relation just before, where it held
     wrong: set[str] = set()  # the numbers the student got wrong: a line worked from them is carried
-    for r, sides, exprs in substitutions.judged(read):  # not "(w = 7)", a general result's letter's value
+    for r, sides, exprs in substitutions.judged(read, values):  # not "(w = 7)", a general result's letter's value
         exprs = [x.xreplace(mapping) for x in exprs]
         left = exprs[0]
         name = own.defined(left, true_defs) if len(exprs) > 1 else None  # s = …, ω² = k/m: the student's own

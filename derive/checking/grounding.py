@@ -49,16 +49,25 @@ def _signed(what: str, e: sympy.Expr, sign: int) -> tuple[str, sympy.Expr]:
 
 
 def first_holds(
-    found: list[list[Pair]], group: set[sympy.Symbol], ours: dict, theirs: dict, at: tuple[Context, dict, dict]
+    found: list[list[Pair]],
+    group: set[sympy.Symbol],
+    ours: dict,
+    theirs: dict,
+    at: tuple[Context, dict, dict],
+    turned: bool = False,
 ) -> tuple[int, bool]:
     """Which of two readings holds the first ``=`` the names of ``group`` stand in on which they
     disagree (+1 ``ours``, -1 ``theirs``, 0 where none differs), and whether that ``=`` is in
-    the first relation the names stand in."""
+    the first relation the names stand in. Where the readings differ by every sign (``turned``),
+    one name less another alone (``x - y = 0.8(3 + 2)``) tells them apart only as the impact
+    rule's own slip (the difference the wrong way round) does: it is passed over."""
     ctx, pt, truth = at
     subs = [{k: ctx.in_unknowns(v).xreplace(pt).xreplace(truth) for k, v in m.items()} for m in (ours, theirs)]
     lines = 0
     for line in found:
         mine = [(tol, lr) for tol, lr, _moved in line if group & (lr[0].free_symbols | lr[1].free_symbols)]
+        if turned and any(_relative_only(lr, group) for _tol, lr in mine):
+            continue
         lines += bool(mine)
         for tol, (left, right) in mine:
             held = [_holds(left.xreplace(s), right.xreplace(s), tol) for s in subs]
@@ -91,8 +100,8 @@ def grounded(
     def wins(a: Option, b: Option) -> bool:
         ours = {**mapping, **{p: c[1] for p, c in zip(group, a, strict=True)}}
         theirs = {**mapping, **{p: c[1] for p, c in zip(group, b, strict=True)}}
-        won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth))
         every = all(x[1] == -y[1] for x, y in zip(a, b, strict=True))
+        won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth), every)
         return won > 0 and (first or not every)
 
     natural = natural_of(best, options, sign)
@@ -147,6 +156,20 @@ def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], 
         if any(_evaluated(a, b, subs) for _t, (a, b), moved in sides[1][k] if moved):
             return None  # false either way (a slip): the relations that hold choose
     return None
+
+
+def _relative_only(exprs: tuple[sympy.Expr, ...], turned: set) -> bool:
+    """Whether a relation's first ``=`` has of the names ``turned`` only one less another
+    (``x - y = 0.8(3 + 2)``): turning both signs only turns that difference round, the impact
+    rule's own slip, so it grounds no reading (the momentum, with the givens' signs, does)."""
+    if len(exprs) < 2:
+        return False
+    d = sympy.expand(exprs[0] - exprs[1])
+    names = d.free_symbols & turned
+    if len(names) != 2 or not d.is_polynomial(*names) or sympy.Poly(d, *names).total_degree() != 1:
+        return False
+    a, b = (d.coeff(n) for n in names)
+    return a != 0 and sympy.simplify(a + b) == 0
 
 
 def _evaluated(left: sympy.Expr, right: sympy.Expr, subs: dict) -> bool:

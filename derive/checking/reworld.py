@@ -67,7 +67,9 @@ def unrounded(trace: Trace, pairs: list[Pair]) -> bool:
 def moved(trace: Trace, pairs: list[Pair]) -> bool:
     """Whether ``pairs`` (a line false for the problem and in the slip's world) hold once the
     last slip takes the place of another of the equations, the one it displaced put back; every
-    carried relation so far must hold there too. The trace's world is then that one."""
+    carried relation so far must hold there too. The trace's world is then that one. The equation
+    put back may be the student's own earlier slip (``b - a = 4`` the wrong way round, then
+    ``-0.5 = 0.5a + 4`` worked from it into the momentum: b = a + 4 is still theirs)."""
     U = set(trace.U)
     if trace.world is None or not trace.replaced or trace.displaced is None:
         return False
@@ -75,8 +77,8 @@ def moved(trace: Trace, pairs: list[Pair]) -> bool:
         return False
     n, j = trace.replaced[-1]
     at, before = trace.displaced
-    if at != j or any(k == j for _m, k in trace.replaced[:-1]):
-        return False  # the equation it displaced was itself the student's: not put back here
+    if at != j:
+        return False  # the slip's place was settled since: nothing to put back
     F = trace.equations[j]
     cf = coefficients(F.xreplace(trace.pts[0]), trace.U)
     for k in trace.equations:
