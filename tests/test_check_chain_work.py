@@ -6,24 +6,10 @@ worked by hand from the problem files' givens (in the comments)."""
 from __future__ import annotations
 
 import pytest
+from test_check_chain_names import lines  # line number -> (worst status, slip name)
 
-import derive
 from derive.mathtext.splitting import split_relations
 from derive.resources import problems_dir
-
-
-def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
-    """line number -> (status, slip name) of ``derive check PROBLEM --derivation``, the worst
-    status where a line has several relations."""
-    rank = ("not read", "correct", "carried", "wrong")
-    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
-    out: dict[int, tuple[str, str]] = {}
-    for i in report.items:
-        if i.kind == "line" and i.name.isdigit():
-            n = int(i.name)
-            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
-                out[n] = (i.status, i.slip)
-    return out
 
 
 # --- suvat in letters: "2 g h" is two times g times h, not 2 grams --------------------------
