@@ -6,13 +6,7 @@ number here is worked by hand from the problem files' givens (in the comments)."
 
 from __future__ import annotations
 
-import derive
-
-
-def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
-    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
-    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
-    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+from support.checked import lines
 
 
 def test_whole_numbers_from_wrong_lines_make_a_line_of_arithmetic_carried() -> None:

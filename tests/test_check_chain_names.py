@@ -7,22 +7,9 @@ files' givens (in the comments), never from derive's output."""
 from __future__ import annotations
 
 import pytest
+from support.checked import worst_lines as lines
 
 import derive
-
-
-def lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
-    """line number -> (status, slip name) of ``derive check PROBLEM --derivation``."""
-    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
-    out: dict[int, tuple[str, str]] = {}
-    rank = ("not read", "correct", "carried", "wrong")
-    for i in report.items:
-        if i.kind == "line" and i.name.isdigit():
-            n = int(i.name)
-            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
-                out[n] = (i.status, i.slip)
-    return out
-
 
 SAID = (
     "A and B collide. Let x and y be the velocities of A and B after the impact.",

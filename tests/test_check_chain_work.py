@@ -6,7 +6,7 @@ worked by hand from the problem files' givens (in the comments)."""
 from __future__ import annotations
 
 import pytest
-from test_check_chain_names import lines  # line number -> (worst status, slip name)
+from support.checked import worst_lines as lines
 
 from derive.mathtext.splitting import split_relations
 from derive.resources import problems_dir

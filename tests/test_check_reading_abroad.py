@@ -14,11 +14,9 @@ Values worked by hand from each problem's givens (never from derive's output):
 
 from __future__ import annotations
 
-import functools
-
 import pytest
+from support.checked import line_statuses as statuses
 
-import derive
 from derive.mathtext.reader import read_relations
 
 DIRECT = "byjus-4kg-ball-catches-8kg-ball"
@@ -27,15 +25,6 @@ WALL = "edexcel-m2-ball-rebounds-from-wall"
 
 def sides(text: str) -> list[tuple[str, ...]]:
     return [r.sides for r in read_relations(text)]
-
-
-@functools.cache
-def _solution(problem: str):
-    return derive.solve(derive.load(problem))
-
-
-def statuses(problem: str, text: str) -> list[str]:
-    return [i.status for i in derive.check(_solution(problem), derivation=text).items if i.kind == "line"]
 
 
 @pytest.mark.parametrize(

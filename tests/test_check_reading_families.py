@@ -16,9 +16,8 @@ Values worked by hand from each problem's givens (never from derive's output):
 
 from __future__ import annotations
 
-import functools
-
 import pytest
+from support.checked import line_statuses as statuses
 
 import derive
 from derive.mathtext.reader import read_relations
@@ -30,15 +29,6 @@ SYMBOLIC = "aqa-m3-2014-symbolic-2m-hits-m"
 
 def sides(text: str) -> list[tuple[str, ...]]:
     return [r.sides for r in read_relations(text)]
-
-
-@functools.cache
-def _solution(problem: str):
-    return derive.solve(derive.load(problem))
-
-
-def statuses(problem: str, text: str) -> list[str]:
-    return [i.status for i in derive.check(_solution(problem), derivation=text).items if i.kind == "line"]
 
 
 @pytest.mark.parametrize(

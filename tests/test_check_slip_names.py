@@ -5,13 +5,7 @@ from the problem files' givens (in the comments), never from derive's output."""
 
 from __future__ import annotations
 
-import derive
-
-
-def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
-    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
-    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
-    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+from support.checked import lines
 
 
 def test_restitution_with_e_on_the_separations_side_is_restitution_reversed() -> None:

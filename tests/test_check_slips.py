@@ -8,14 +8,9 @@ from __future__ import annotations
 import time
 
 import pytest
+from support.checked import lines
 
 import derive
-
-
-def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
-    """line number -> (status, slip name, again) of ``derive check PROBLEM --derivation``."""
-    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
-    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
 
 
 def test_b_sign_in_a_find_e_problem_whose_mistake_has_no_solution() -> None:

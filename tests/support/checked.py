@@ -1,0 +1,37 @@
+"""``derive check PROBLEM --derivation`` as the checker's tests read it: each line's verdict."""
+
+from __future__ import annotations
+
+import functools
+
+import derive
+
+
+@functools.cache
+def solution(problem: str) -> derive.Solution:
+    """A bundled problem solved once per test session (the checker's tests check many lines on it)."""
+    return derive.solve(derive.load(problem))
+
+
+def line_statuses(problem: str, text: str) -> list[str]:
+    """The status of every line item, in the report's order."""
+    return [i.status for i in derive.check(solution(problem), derivation=text).items if i.kind == "line"]
+
+
+def lines(problem: str, work: str) -> dict[int, tuple[str, str, bool]]:
+    """line number -> (status, slip name, again)."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    return {int(i.name): (i.status, i.slip, i.again) for i in report.items if i.kind == "line" and i.name.isdigit()}
+
+
+def worst_lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
+    """line number -> (status, slip name): the worst status where a line has several relations."""
+    report = derive.check(derive.solve(derive.load(problem)), derivation=work)
+    out: dict[int, tuple[str, str]] = {}
+    rank = ("not read", "correct", "carried", "wrong")
+    for i in report.items:
+        if i.kind == "line" and i.name.isdigit():
+            n = int(i.name)
+            if n not in out or rank.index(i.status) > rank.index(out[n][0]):
+                out[n] = (i.status, i.slip)
+    return out
