@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking import misread, signslips, slipnames, slipworld, workedslips
+from derive.checking import cofunctions, misread, signslips, slipnames, slipworld, workedslips
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
@@ -138,7 +138,7 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
     if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds)) is not None:
         return trace._closest(scaled), workedslips.SCALED, "algebra"  # a factor lost in substituting
     if not flip:
-        return None
+        return cofunctions.asked_angle(trace, line, bad, holds)  # α from the wall resolved as from the normal
     if right is not None and right.free_symbols & set(trace.U):
         j = trace._closest(right)
     return j, slipnames.FLIPPED[flip], flip

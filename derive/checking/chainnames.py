@@ -17,6 +17,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking import copiedsums
 from derive.checking.bodylists import written_out
 from derive.checking.context import Context
 from derive.checking.naming import PREFIX, Open, read_side, rewrite
@@ -316,9 +317,7 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
             if n in written or n == 0:
                 continue
             for g in givens:
-                fixed = list(sides)
-                value = str(abs(g.value))
-                fixed[i] = _NUMBER.sub(lambda m, t=token, v=value: v if m.group(0) == t else m.group(0), side)
+                fixed = copiedsums.put_back(tuple(sides), i, token, str(abs(g.value)), written)  # in a total too
                 try:
                     exprs = [reread(s) for s in fixed]
                 except (ParseError, ValueError, TypeError, ArithmeticError, InputError):

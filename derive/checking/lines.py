@@ -22,6 +22,7 @@ from derive.checking import (
     carried,
     cofunctions,
     labelled,
+    letterslips,
     misread,
     mistakes,
     reworld,
@@ -225,14 +226,15 @@ class Trace(Carrying):
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
                 self._replace(line, ends, slip=False)
-        again = [n for n, names in self.named.items() if names & {d.mistake for d in diags}]
+        made = {d.mistake for d in diags} | ({name} if name in cofunctions.NAMES else set())  # an angle's
+        again = [n for n, names in self.named.items() if names & made]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
         elif self.slips:
             lead = f"False, and not explained by {self._slips_named()}: a further slip"
         else:
             lead = "The first line that is false for this problem"
-        self.named[line.number] = {d.mistake for d in diags}
+        self.named[line.number] = made
         self._replace(line, bad, j, slip=not again)  # the same mistake again is not a further slip
         if again and workedslips.works_from_slip(self, line, again[0]):  # 7.2 = -0.96 + 0.4v: its number
             del self.named[line.number]
@@ -244,7 +246,7 @@ class Trace(Carrying):
         if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
-        named = "rounded_too_early" if "rounded too early" in detail else "arithmetic" if arithmetic else ""
+        named = "rounded_too_early" if "rounded too early" in detail else letterslips.plain(bad) if arithmetic else ""
         named = name or named
         slip = ",".join(d.mistake for d in diags) or named
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
@@ -265,7 +267,7 @@ class Trace(Carrying):
                 self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), line.exprs or ()
             )
             if named is not None:  # the kinetic energy's formula, an angle from the other axis
-                if named[1] == cofunctions.NAME:  # its number, written wrong, is carried on
+                if named[1] in cofunctions.NAMES:  # its number, written wrong, is carried on
                     self._number_wrong(bad)
                 return (), None, *named
             given = carried.plain_named(self, line, bad, self.world or self.truth)
@@ -280,13 +282,17 @@ class Trace(Carrying):
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
             return (), *named
+        if not (answer is not None and answer.diagnosis) and letterslips.ke_formula(self, bad):  # never a rule's
+            return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one
         diags = fresh if fresh and len(fresh) < len(diags) else diags
         pinned = workedslips.pinned(self, bad)  # its unknowns stated right already: no mistake's world
         diags = () if pinned else diags
-        if v.rule in ("mistaken_equation", "solves_as_mistake") and (copied := slipworld.number_copied(self, bad)):
+        if v.rule in ("mistaken_equation", "solves_as_mistake", "no_match") and (
+            copied := slipworld.number_copied(self, bad, v.rule)
+        ):
             return (), KEPT, copied, "copied_wrong"  # in one unknown: a number for a given, not a mistake's value
         together = v.together if not (answer is not None and answer.diagnosis) else "together" in answer.message
         j = v.equation if v.equation is not None and not pinned else self._closest(bad.difference)
@@ -298,8 +304,6 @@ class Trace(Carrying):
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
         if not diags:
-            if self._ke_formula(bad):
-                return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
             if workedslips.energy_masses_swapped(self, bad, lambda p: self.holds([p], self.world or self.truth)):
                 return (), KEPT, workedslips.SWAPPED, "masses_swapped"
             early = self._rounded_early(line, bad)
@@ -362,10 +366,6 @@ class Trace(Carrying):
         world = self.world if self.world is not None else self.truth
         named = set().union(*self.named.values())
         return slipnames.carried_by_results(self.ctx, pairs, named, lambda q: self.holds([q], world))
-
-    def _ke_formula(self, bad: Pair) -> bool:
-        world = self.world if self.world is not None else self.truth
-        return slipnames.ke_formula(self.ctx, bad, lambda p: self.holds([p], world))
 
     def _before(self, bad: Pair) -> tuple[Diagnosis, ...]:
         """The mistakes in the values before the impact (sin and cos swapped, B's sign, radians,

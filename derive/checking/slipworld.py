@@ -20,16 +20,24 @@ if TYPE_CHECKING:
     pass
 
 
-def number_copied(trace: Trace, bad: Pair) -> str:
+def number_copied(trace: Trace, bad: Pair, rule: str = "") -> str:
     """``2(5) + 1(0) = 2(3) + v_B`` where A goes on at 2 m/s: a relation in one unknown (which
-    a wrong velocity from any mistake would also let hold) that writes a number that is none of
-    the data and holds with the problem solved with a given copied as that number. The slip's
-    world is then the problem so; the words of the verdict ("" where it is not so)."""
-    if bad.raw is None or trace.world is not None or len(bad.difference.free_symbols & set(trace.U)) != 1:
+    a wrong velocity from any mistake would also let hold; ``rule``, the judge's, one of a
+    mistaken equation) that writes a number that is none of the data and holds with the problem
+    solved with a given copied as that number; or in any unknowns, where the number is in a
+    total with another given on the line too (``0.20(300) = 4.20 V``: a bullet's 0.020 kg
+    copied, alone and with the 4.0 kg block). The slip's world is then the problem so; the
+    words of the verdict ("" where it is not so)."""
+    unknowns = bad.difference.free_symbols & set(trace.U)
+    if bad.raw is None or trace.world is not None or not unknowns:
         return ""
     working = [t for t in bad.text.split(" = ") if not NUMBER_SIDE.match(student(t.strip()))]  # not a result
     written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.^])", " ".join(working))}
+    alone = len(unknowns) == 1 and rule != "no_match"
+    numbers = written | {abs(x) for x in set().union(*(x.atoms(sympy.Rational) for x in bad.raw))}  # (0.2 + 4)
     for c in written - set(trace.ctx.data) - {0, 1}:
+        if not alone and not any(c + abs(h) in numbers for h in trace.ctx.data if h and h.is_Rational):
+            continue  # 4.20 = 0.20 + 4.0: the copied number in a total too
         for g in (g for g in trace.ctx.problem.givens if not g.unknown and g.value is not None and g.value.is_Rational):
             model, variant = trace.ctx.model, Variant(values={g.symbol: c})
             sol = model.solve(variant) if abs(c) != abs(g.value) else None  # solved so, a find-e problem too

@@ -15,7 +15,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import slipnames
+from derive.checking import letterslips, slipnames
 from derive.checking.carrying import GOES_ON
 from derive.checking.slipnames import Holds, Previous, same_but_number
 from derive.checking.worlds import Pair
@@ -159,13 +159,13 @@ def sign_over_number(trace, bad: Pair, name: str, holds: Holds) -> str:
     """``arithmetic`` (a line's part free of the unknowns changed) where that part is in letters
     and the line holds with one of its terms' sign changed: a sign lost in the algebra
     (``u − 2v_B = ⅓u(1 + 2e)`` for ⅓u(1 − 2e)), ``algebra``; ``name`` otherwise."""
-    if name != "arithmetic" or not trace.pts[0]:
+    if name != "arithmetic":
         return name
-    if bad.raw is None:
-        return name
+    if bad.raw is None or not trace.pts[0]:  # a term of the unknowns' changed, not a number
+        return letterslips.in_letters(trace, bad, name)
     expanded = replace(bad, raw=(sympy.expand(bad.raw[0]), sympy.expand(bad.raw[1])))  # ⅓u(1 + 2e): two terms
     flip, _right = slipnames.sign_flipped(trace.ctx, expanded, trace.U, holds)
-    return "algebra" if flip == "algebra" else name
+    return "algebra" if flip == "algebra" else letterslips.in_letters(trace, bad, name)
 
 
 #: What a report says of a kinetic energy worked with the masses exchanged.
