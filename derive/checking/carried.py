@@ -107,6 +107,8 @@ def given_copied(trace: Trace, bad: Pair) -> str:
     trace.copied[g.symbol] = bad.raw[1]
     trace.variant = Variant(values={g.symbol: bad.raw[1]})
     trace.world = [{u: out.post[u].xreplace(pt) for u in trace.U} for pt in trace.pts]
+    if any(x.unknown for x in trace.ctx.problem.givens):  # its outcome keeps the true unknowns: solved so
+        trace.world = slipworld.solved_with(trace, trace.variant) or trace.world
     trace.equations = {j: F for j, F in out.equations.items() if j in trace.equations}
     written = bad.text.split(" = ")[-1].strip()
     return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {written}."

@@ -31,6 +31,7 @@ from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
 from derive.checking.conventions import plus_said, sign_of
+from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
 from derive.checking.speedwords import one_speed_after
@@ -391,11 +392,13 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
     out: dict[str, sympy.Expr] = {}
     sign = 0
     for line in text.splitlines():
-        line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
+        line = in_line_words(re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line), ctx)  # "along XY"
         m = _DECLARE.match(line)
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
         out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
+        out.update({k: v for k, v in named_last(line, ctx).items() if k not in out})  # "let B's velocity be v"
+        out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
         m = _POSITIVE.match(line)

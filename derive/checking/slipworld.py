@@ -17,7 +17,7 @@ from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world
 from derive.mathtext.notation import student
 
 if TYPE_CHECKING:
-    pass
+    from derive.checking.relations import Values
 
 
 def number_copied(trace: Trace, bad: Pair, rule: str = "") -> str:
@@ -40,18 +40,24 @@ def number_copied(trace: Trace, bad: Pair, rule: str = "") -> str:
             continue  # 4.20 = 0.20 + 4.0: the copied number in a total too
         for g in (g for g in trace.ctx.problem.givens if not g.unknown and g.value is not None and g.value.is_Rational):
             model, variant = trace.ctx.model, Variant(values={g.symbol: c})
-            sol = model.solve(variant) if abs(c) != abs(g.value) else None  # solved so, a find-e problem too
-            if not sol or any(u not in sol for u in trace.U):
-                continue
-            world = [
-                {u: model.num(sympy.sympify(sol[u]), variant.values).xreplace(pt) for u in trace.U} for pt in trace.pts
-            ]
-            if not trace.holds([bad], world):
+            world = solved_with(trace, variant) if abs(c) != abs(g.value) else None  # a find-e problem too
+            if world is None or not trace.holds([bad], world):
                 continue
             trace.copied[g.symbol], trace.variant, trace.world = c, variant, world
             trace.equations = {j: F for j, F in model.numbered(variant).items() if j in trace.equations}
             return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {shown(c)}."
     return ""
+
+
+def solved_with(trace: Trace, variant: Variant) -> list[Values] | None:
+    """The unknowns at each sample point with the problem solved with ``variant``'s values (a
+    given copied as another number), an inverse problem's unknown (e, a speed before) too: its
+    outcome keeps the true unknowns; None where it does not solve so."""
+    model = trace.ctx.model
+    sol = model.solve(variant)
+    if not sol or any(u not in sol for u in trace.U):
+        return None
+    return [{u: model.num(sympy.sympify(sol[u]), variant.values).xreplace(pt) for u in trace.U} for pt in trace.pts]
 
 
 def refine(trace: Trace, pair: Pair) -> None:

@@ -12,7 +12,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import relations
+from derive.checking import angleworld, relations
 from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
@@ -134,6 +134,8 @@ def solve_world(
     out = []
     for pt, guide in zip(pts, near, strict=True):
         roots = linear_roots([x.xreplace(pt) for x in equations.values()], U)
+        if roots is None:  # an unknown angle in a sine or cosine: in tan(α/2)
+            roots = angleworld.roots([x.xreplace(pt) for x in equations.values()], U)
         if roots is None:
             roots = relations.nonlinear_roots(
                 [sympy.N(sympy.numer(sympy.together(x.xreplace(pt))), 30) for x in equations.values()], U
@@ -153,19 +155,23 @@ def closest(
     unknowns whose place it can take (the others with it still determine the velocities),
     first keeping the most of the right relations ``held`` the student wrote."""
     cf = coefficients(F.xreplace(pt), U)
-    if not cf:
+    if not cf and not angleworld.angles_in([F], U):
         return None
-    best, score = None, (-1, False, -9, -1.0)
+    best, score = None, (-1, 0, False, -9, -1.0)
+    eliminated = len(F.free_symbols & set(U)) == 1 and all(len(G.free_symbols & set(U)) > 1 for G in equations.values())
     for j, G in equations.items():
         cg = coefficients(G.xreplace(pt), U)
-        if not cg:
+        both = angleworld.angle_coefficients(F.xreplace(pt), G.xreplace(pt), U) if not (cf and cg) else None
+        if not (cf and cg) and not both:
             continue
         trial = solve_world({**equations, j: F}, U, [pt], [truth])
         if trial is None:
             continue
-        kept = sum(1 for p in held if holds_at(p, trial, [pt], U))
-        near = alike(cf, cg)
-        s = (kept, near >= 0.5, -j, near)  # then the first of those much alike (substituted into)
+        kept = [i + 1 for i, p in enumerate(held) if holds_at(p, trial, [pt], U)]
+        near = angleworld.alike(*both) if both else alike(cf, cg)  # type: ignore[arg-type]
+        # then the first of those much alike (substituted into); a line in one unknown that the
+        # equations in two were combined into is alike none: it keeps the relations written last
+        s = (len(kept), sum(kept) if eliminated else 0, near >= 0.5, -j, near)
         if s > score:
             best, score = j, s
     return best

@@ -88,7 +88,13 @@ _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
 #: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
 _REF = r"\d*\s*[×x*]?\s*(?:\(\s*\d{1,2}[a-z]?\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
-_COMBINED = re.compile(rf"^\s*(?:{_REF}\s*[-+−]\s*)+{_REF}\s*:(?!=)\s*")
+#: ``(1) + (2) gives``, ``2(1) - (2) ⇒``, and ``(1)+(2)  13 = 3x`` with no word: bare equation numbers
+#: only, before a side (not an operator or "=").
+_JOIN = r"(?:→|->|=>|⇒|\\Rightarrow\b|\\implies\b|\bgives?\b)"
+_COMBINED = re.compile(
+    rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}\s*(?::(?!=)|{_JOIN})"
+    r"|(?:\(\s*\d\s*\)\s*[-+−]\s*)+\(\s*\d\s*\)(?=\s+[^\s=+\-−*/^()]))\s*"
+)
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 #: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
 _PART = re.compile(

@@ -1,0 +1,90 @@
+"""Names declared after what they stand for: "Let B's velocity after be v", "let the velocities
+of A and B after the impact be x and y", "Let A's speed before be u, and B's speed after be w".
+
+A teacher reads these as "let v be B's velocity after": the words are put in that order and read
+as :func:`.wordnames.in_words` reads any declaration in words (by body, time and axis), so every
+form it knows is known the other way round too.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.checking.context import Context
+from derive.checking.wordnames import in_words
+
+_NAME = r"\$?[A-Za-z](?:_\{?\w{1,3}\}?|\d)?['′]?\$?"
+#: What is named: a body's speed, velocity or component, in words (no "=" or sentence end in it).
+_WHAT = (
+    r"(?:the\s+)?(?:[A-Za-z]\w{0,6}['’]s\s+)?(?:final\s+|initial\s+|new\s+)?"
+    r"(?:speeds?|velocit(?:y|ies)|components?)\b[^=;.$]*?"
+)
+_LAST = re.compile(
+    rf"(?:\blet\s+|(?:,\s*)?\band\s+(?=[A-Za-z]\w{{0,6}}['’]s\s|the\s))({_WHAT})\s+be\s+({_NAME}(?:\s*(?:,|and)\s*{_NAME})*)"
+    r"(?![\w'(^/*+-])",
+    re.I,
+)
+
+
+#: "A's speed before = U.": a body's quantity in words set equal to a name alone, as a clause.
+_EQUALS = re.compile(
+    rf"(?:^|[.;:,]\s)\s*((?:[A-Za-z]\w{{0,6}}['’]s\s+|the\s+)(?:final\s+|initial\s+|new\s+)?"
+    rf"(?:speed|velocity|component)\b[^=;.$]*?)\s*=\s*({_NAME})\s*(?:[.;,]|$)",
+    re.I,
+)
+
+
+def named_last(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """The names ``line`` declares after the words for what they stand for, each with derive's
+    name for it (read the other way round: "let v be B's velocity after")."""
+    out: dict[str, sympy.Expr] = {}
+    for m in [*_LAST.finditer(line), *_EQUALS.finditer(line)]:
+        names = re.sub(r"[${}]", "", m.group(2)).strip()
+        said = f"Let {names} be {m.group(1).strip()}"
+        for name, x in (in_words(said, ctx) or speed_along(said, ctx)).items():
+            out.setdefault(name, x)
+    return out
+
+
+_AXIS = re.compile(r"\b(?:line\s+of\s+cent(?:re|er)s|perpendicular|across|tangent|normal|along)\b", re.I)
+
+
+def speed_along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
+    """An oblique impact's component named as a speed: "Let U be the speed of A before (along
+    XY)", "B's speed along the line of centres after be w"; and a body's speed where it moves
+    along the line of centres (its other component given as 0): "A's speed before be u"."""
+    if not ctx.problem.oblique or not re.search(r"\bspeeds?\b", line, re.I):
+        return {}
+    out: dict[str, sympy.Expr] = {}
+    zero = {g.name for g in ctx.problem.givens if g.value == 0 and g.name.endswith("t")}
+    for clause in re.split(r",?\s*\band\s+(?=let\b)|;", line, flags=re.I):  # one name's words at a time
+        text = re.sub(r"\bspeed(s?)\b", lambda m: "velocities" if m.group(1) else "velocity", clause, flags=re.I)
+        if _AXIS.search(text):
+            found = in_words(text, ctx)
+        else:  # where the body moves along the line of centres only
+            found = in_words(f"{text.rstrip(' .')} along the line of centres", ctx)
+            found = {k: x for k, x in found.items() if str(x)[:-1] + "t" in zero}
+        for k, x in found.items():
+            out.setdefault(k, x)
+    return out
+
+
+#: The statement's own letters for the line of centres: "along the line of centres XY", "XY, the
+#: line of centres", "the line of centres, AB,".
+_LOC_LETTERS = (
+    re.compile(r"\bline\s+of\s+cent(?:re|er)s\s*,?\s*([A-Z]{2})\b"),
+    re.compile(r"\b([A-Z]{2})\s*,?\s*(?:is\s+|being\s+)?the\s+line\s+of\s+cent(?:re|er)s\b"),
+)
+
+
+def in_line_words(line: str, ctx: Context) -> str:
+    """``line`` with the statement's letters for the line of centres (``along XY``) in words
+    ("along the line of centres"), so that a declaration by them is read as by the words."""
+    statement = getattr(ctx.problem, "statement", "") or ""
+    for pattern in _LOC_LETTERS:
+        m = pattern.search(statement)
+        if m and m.group(1) not in ctx.problem.labels:
+            return re.sub(rf"(?<![A-Za-z\\]){m.group(1)}(?![A-Za-z])", "the line of centres", line)
+    return line

@@ -1,0 +1,153 @@
+"""Lines carried after a slip in worlds the student's own equations make (issue #31): an
+unknown angle solved from a slip's equation, the student's own values of the quantities
+after a slip. Every number is worked by hand from the problem files' givens (in the
+comments), never taken from derive's output."""
+
+from __future__ import annotations
+
+from support.checked import lines, worst_lines
+
+#: Edexcel M4 2018: a ball at speed U, its path at α to a smooth wall (e = 3/4), keeps 60 % of
+#: its kinetic energy. α is from the wall: U cos α along it, U sin α into it, rebounding at
+#: ¾U sin α: cos²α + (9/16) sin²α = 3/5, so (7/16) sin²α = 2/5, sin²α = 32/35, tan²α = 32/3,
+#: α = 72.98°.
+WALL = "edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke"
+
+
+def test_an_angle_found_from_a_slip_in_the_energy_equation_is_carried_by_the_tangent() -> None:
+    # Resolved from the other axis (U sin α along the wall, U cos α into it): sin²α +
+    # (9/16) cos²α = 3/5; divided by cos²α: tan²α + 9/16 = (3/5)(1 + tan²α), (2/5) tan²α =
+    # 3/5 - 9/16 = 3/80, tan²α = 3/32, tan α = 0.30619, α = 17.02°: every line after the slip
+    # holds for the student's own equation, none for the problem (tan α = 3.266 there).
+    work = (
+        "1/2 m(U^2 sin^2 α + 9/16 U^2 cos^2 α) = 3/5 × 1/2 m U^2\n"
+        "tan^2 α + 9/16 = 3/5 (1 + tan^2 α)\n"
+        "2/5 tan^2 α = 3/80\n"
+        "tan^2 α = 3/32\n"
+        "tan α = 0.306\n"
+        "α = 17.0°\n"
+    )
+    found = lines(WALL, work)
+    assert found[1][0] == "wrong"
+    assert all(found[n][0] == "carried" for n in (2, 3, 4, 5, 6)), found
+
+
+def test_an_angle_worked_on_from_a_slip_solving_for_it_is_carried_and_a_further_slip_is_not() -> None:
+    # Resolved rightly, then (7/16) sin²α = 0.4 solved as sin²α = 0.4 × 7/16 = 0.175 (for
+    # 0.4 × 16/7 = 0.9143): sin α = √0.175 = 0.41833, α = asin 0.41833 = 24.73°, carried; 26.0°
+    # is right in neither world (a further slip).
+    work = (
+        "1/2 m(U^2 cos^2 α + 9/16 U^2 sin^2 α) = 0.6 × 1/2 m U^2\n"
+        "cos^2 α + 9/16 sin^2 α = 0.6\n"
+        "1 - 7/16 sin^2 α = 0.6\n"
+        "sin^2 α = 0.4 × 7/16 = 0.175\n"
+        "sin α = 0.418\n"
+        "α = 24.7°\n"
+    )
+    found = lines(WALL, work)
+    assert found[1][0] == found[2][0] == found[3][0] == "correct"
+    assert found[4][0] == "wrong"
+    assert found[5][0] == found[6][0] == "carried", found
+    found = lines(WALL, work.replace("24.7°", "26.0°"))
+    assert found[6][0] == "wrong", found
+
+
+def test_a_line_led_by_the_equations_it_adds_with_no_colon_is_read_and_carried() -> None:
+    # AQA M3 2007: 0.3 kg at 3 m/s, 0.2 kg at 2 m/s toward it, e = 0.8; right positive, a and
+    # b after: 0.3(3) + 0.2(-2) = 0.5 = 0.3a + 0.2b (1). Restitution written a - b = 4 (the
+    # wrong way round, for b - a = 4); 0.2 x (2): 0.2a - 0.2b = 0.8 (3); (1) + (3): 0.5a = 1.3,
+    # a = 2.6 (b = -1.4: 0.78 - 0.28 = 0.5). "(1)+(3)" before the sides names the equations
+    # added, it is not 1 + 3(0.5a): read without it, the line is carried.
+    work = (
+        "Taking right as positive, let a and b be the velocities of A and B after.\n"
+        "0.3(3) + 0.2(-2) = 0.3a + 0.2b    (1)\n"
+        "a - b = 0.8(3 + 2) = 4    (2)\n"
+        "0.2a - 0.2b = 0.8    (3)\n"
+        "(1)+(3)  0.5a = 1.3\n"
+        "a = 2.6\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[2][0] == "correct"
+    assert found[3][0] == "wrong"
+    assert all(found[n][0] == "carried" for n in (4, 5, 6)), found
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work.replace("0.5a = 1.3", "0.5a = 1.5"))
+    assert found[5][0] == "wrong", found  # 1.5 is right in neither world
+
+
+def test_an_inverse_problem_solved_again_with_a_given_copied_wrongly_carries_the_lines_after() -> None:
+    # OCR M2 2006: 2 kg at 5 m/s hits 1 kg at rest, A goes on at 2 m/s; find e. True: 10 = 4 +
+    # v_B2, v_B2 = 6, e = (6 - 2)/5 = 0.8. A's speed after copied as 3: 10 = 6 + v_B2, v_B2 = 4,
+    # e = (4 - 3)/5 = 0.2. The unknowns (v_B2 and e) are those of the problem solved with 3 m/s,
+    # not the true ones: the momentum with 3 written in is carried, not a further slip.
+    work = (
+        "Data: m_A = 2 kg, m_B = 1 kg, v_A1 = 5 m/s, v_B1 = 0, v_A2 = 3 m/s\n"
+        "2(5) + 1(0) = 2(3) + 1 v_B2\n"
+        "v_B2 = 10 - 6 = 4 m/s\n"
+        "e = (4 - 3)/(5 - 0) = 0.2\n"
+    )
+    found = worst_lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[1] == ("wrong", "copied_wrong")
+    assert all(found[n][0] == "carried" for n in (2, 3, 4)), found
+
+
+def test_a_slip_eliminating_one_velocity_keeps_the_restitution_the_other_is_found_from() -> None:
+    # AQA M3 2009: m at 5u catches 7m at u, e. Momentum 12u = x + 7y, restitution y = x + 4eu;
+    # 12u = 8x + 28eu, so x = u(3 - 7e)/2 and y = u(3 + e)/2. A sign lost moving 28eu across:
+    # 8x = 12u + 28eu, x = u(3 + 7e)/2; the student then finds y from the restitution as
+    # written (y = x + 4eu): u(3 + 15e)/2 is carried (the slip stands for the momentum, which
+    # the line in x alone was worked from, not the restitution); u(3 + 11e)/2 is not.
+    work = (
+        "Let x and y be the velocities of A and B after.\n"
+        "5mu + 7mu = mx + 7my\n"
+        "y - x = e(5u - u) = 4eu\n"
+        "12u = x + 7(x + 4eu)\n"
+        "12u = 8x + 28eu\n"
+        "8x = 12u + 28eu\n"
+        "x = u(3 + 7e)/2\n"
+        "y = u(3 + 7e)/2 + 4eu = u(3 + 15e)/2\n"
+    )
+    problem = "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u"
+    found = worst_lines(problem, work)
+    assert all(found[n][0] == "correct" for n in (2, 3, 4, 5)), found
+    assert found[6][0] == "wrong"
+    assert found[7][0] == found[8][0] == "carried", found
+    assert worst_lines(problem, work.replace("3 + 15e", "3 + 11e"))[8][0] == "wrong"
+
+
+def test_a_name_declared_after_the_words_for_it_is_read_as_declared() -> None:
+    # AQA FM specimen: 0.8 kg at 6 m/s meets 0.4 kg at 6 m/s head on; A comes back at 1.2 m/s.
+    # "Let B's velocity after be v" (the name after its words) is B's velocity after, not A's
+    # (u and v as habit): 4.8 - 2.4 = 2.4 = -0.96 + 0.4v, v = 3.36/0.4 = 8.4 m/s; e = (8.4 +
+    # 1.2)/12 = 0.8; KE before ½(0.8)(36) + ½(0.4)(36) = 14.4 + 7.2 = 21.6 J.
+    work = (
+        "A (0.8 kg) at 6 m/s meets B (0.4 kg) coming the other way at 6 m/s; A comes back at 1.2 m/s."
+        " Let B's velocity after be $v$.\n"
+        "CLM: 0.8(6) + 0.4(-6) = 0.8(-1.2) + 0.4v\n"
+        "v = (2.4 + 0.96)/0.4 = 8.4 m/s\n"
+        "NEL: e = (v + 1.2)/(6 + 6) = 0.8\n"
+        "KE before = 1/2 mu^2 + 1/2 (0.4)(6^2) = 14.4 + 7.2 = 21.6 J\n"
+    )
+    found = worst_lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert all(found[n][0] == "correct" for n in (2, 3, 4, 5)), found
+
+
+def test_names_declared_by_the_statements_letters_for_the_line_of_centres_and_as_speeds() -> None:
+    # OCR MEI FMM 2024: A (3 kg) along XY, the line of centres, hits B (5 kg, 2 m/s at 60° to
+    # XY), e = 0.8; A stops. B along XY before: 2 cos 60° = 1. "A's speed before" (A moves
+    # along XY only) and "B's speed along XY after" are the components along the line of
+    # centres, U and w: 3U + 5 = 5w (right); restitution written w = 0.8(U + 1) (B's sign
+    # lost, for 0.8(U - 1)): 3U + 5 = 4U + 4, U = 1, w = 0.8(2) = 1.6, all carried.
+    work = (
+        "Let U be A's speed before the collision, and let w be B's speed along XY after it.\n"
+        "CLM along XY: 3U + 5(1) = 5w\n"
+        "NEL: w = 0.8(U + 1)\n"
+        "3U + 5 = 4U + 4\n"
+        "U = 1 m/s\n"
+        "w = 0.8(2) = 1.6 m/s\n"
+    )
+    said_last = "Let A's speed before be U and B's velocity parallel to XY after be w."
+    for text in (work, work.replace(work.splitlines()[0], said_last)):
+        found = worst_lines("ocr-mei-fmm-2024-disc-a-stops", text)
+        assert found[2][0] == "correct", found
+        assert found[3][0] == "wrong"
+        assert all(found[n][0] == "carried" for n in (4, 5, 6)), found
