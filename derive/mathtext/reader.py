@@ -41,6 +41,7 @@ from derive.mathtext.sides import (
     direction_of,
     each_body,
     european_points,
+    glued_marks,
     thousands,
     typed_names,
     units_inside,
@@ -358,7 +359,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     direction = direction_of(text[text.rfind("=") + 1 :])
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
-    text = _UNIT_BRACKET.sub("", words_after(text))
+    text = _UNIT_BRACKET.sub("", words_after(glued_marks(text)))  # 2 vAx: a name, not words
     sides = tuple(_side(s) for s in text.split("="))
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     if quoted_law(sides):
