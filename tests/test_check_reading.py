@@ -360,7 +360,7 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
         ("Substituting y = x + 2: 5x + 6 = -4", [("Substituting y", "x + 2"), ("5x + 6", "-4")]),
         ("A: 3cos30 = 2.6,   B: -4", [("3cos30", "2.6")]),  # a body's lead-in after a comma
         ("v_P = -u/3 (v_P = u is before the collision)", [("v_P", "-u/3")]),  # a root turned down
-        ("x = 3 or x = -1 (rejected)", []),
+        ("x = 3 or x = -1 (rejected)", [("x", "3")]),  # two roots: the one kept is read, not the rejected one
         (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "(2/5) (7 - (-3))", "4")]),
     ],
 )
