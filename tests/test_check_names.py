@@ -12,6 +12,7 @@ v_A = V - e(u cos a - V) = 0, v_B = V + e(V + u cos a) = u cos a.
 from __future__ import annotations
 
 import pytest
+from support.checked import lines
 
 import derive
 from derive.checking.valuenames import kinds
@@ -802,3 +803,14 @@ def test_names_declared_with_be_and_a_possessive_are_declared() -> None:
     assert "x: A's velocity after the impact (as you declared)." in r.names
     assert "y: B's velocity after the impact (as you declared)." in r.names
     assert set(by_line("byjus-4kg-ball-catches-8kg-ball", work).values()) == {"correct"}
+
+
+def test_the_statements_letters_name_the_bodies_by_the_masses_it_gives_them() -> None:
+    # Edexcel M2 June 2013 Q5: "Particles P (mass 2m) and Q (mass m)", Q at rest, P at u; after,
+    # x for P and y for Q: 2mu = 2mx + my; x = u/2, y = u (KE after ¼mu² + ½mu² = ¾mu²).
+    # (v_P)_2 and (v_Q)_2 are P's and Q's velocities after, derive's A and B by their masses.
+    head = "$m_P = 2m$, $m_Q = m$\n$(v_P)_2 = x$, $(v_Q)_2 = y$\n"
+    right = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", head + "$2mu = 2mx + my$\n$x = u/2$\n")
+    assert [right[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+    swapped = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", head + "$2mu = 2my + mx$\n")
+    assert swapped[3][0] == "wrong"
