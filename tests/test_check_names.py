@@ -814,3 +814,17 @@ def test_the_statements_letters_name_the_bodies_by_the_masses_it_gives_them() ->
     assert [right[n][0] for n in (2, 3, 4)] == ["correct"] * 3
     swapped = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", head + "$2mu = 2my + mx$\n")
     assert swapped[3][0] == "wrong"
+
+
+def test_velocity_names_typed_without_underscores_and_the_unmarked_one_after() -> None:
+    # OCR M3 Jan 2006: A (5 kg) at 4 across the line of centres, B (2 kg) at 4 along it toward A,
+    # e = 0.75. Along x: 5(0) + 2(-4) = -8 = 5 vAx + 2 vBx; vBx - vAx = 0.75(0 + 4) = 3, so
+    # 7 vAx = -8 - 6 = -14, vAx = -2, vBx = 1. "vAx1" is A's before, so "vAx" (no mark) is after;
+    # "2 vBx" is 2 times a name, not the number 2 and words.
+    work = (
+        "x along the line of centres, y along the common tangent\n5 vAx1 + 2 vBx1 = 5 vAx + 2 vBx\n"
+        "-8 = 5 vAx + 2 vBx\nvBx - vAx = 0.75(vAx1 - vBx1) = 3\n7 vAx = -14\n"
+    )
+    found = lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = -2, vBx = 1\n")
+    assert [found[n][0] for n in (2, 3, 4, 5, 6)] == ["correct"] * 5
+    assert lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = 2\n")[6][0] == "wrong"
