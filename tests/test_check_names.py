@@ -828,3 +828,13 @@ def test_velocity_names_typed_without_underscores_and_the_unmarked_one_after() -
     found = lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = -2, vBx = 1\n")
     assert [found[n][0] for n in (2, 3, 4, 5, 6)] == ["correct"] * 5
     assert lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = 2\n")[6][0] == "wrong"
+
+
+def test_a_greek_name_set_equal_to_masses_alone_is_the_students_own_name() -> None:
+    # Edexcel M2 June 2013 Q5: P (2m), Q (m). The reduced mass μ = (2m)(m)/(3m) = 2m/3, typed "mu":
+    # not m times u (a momentum is never a mass alone); 3m/2 is worked wrongly. "2mu" in the
+    # momentum is still 2 m u: 2mu = 2m v_A2 + m v_B2 holds (u/2 and u).
+    problem = "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters"
+    assert lines(problem, "mu = (2m)(m)/(3m) = 2m/3\n")[1][0] == "correct"
+    assert lines(problem, "mu = (2m)(m)/(3m) = 3m/2\n")[1][0] == "wrong"
+    assert lines(problem, "2mu = 2m v_A2 + m v_B2\n")[1][0] == "correct"
