@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 import pytest
+from support.checked import lines
 
 import derive
 from derive.mathtext.latex import latex_to_plain
@@ -244,3 +245,23 @@ def test_a_long_derivation_says_what_was_not_checked() -> None:
     report = derive.check(solved(C11), derivation=work)
     assert len(report.items) == MAX_LINES + 1
     assert report.items[-1].status == "error" and "3 more relations" in report.items[-1].message
+
+
+def test_both_roots_of_a_quadratic_and_the_rejected_one_are_not_slips() -> None:
+    # CIE 9231 June 2014 Q3: A (m) at u hits B (9m) at rest, half the KE lost. x for A, y for B:
+    # u = x + 9y, x² + 9y² = u²/2 -> 180y² - 36uy + u² = 0 = (6y - u)(30y - u): y = u/6 or u/30.
+    # y = u/30 gives x = 7u/10 > y (A through B): rejected; y = u/6, x = -u/2. The root not kept
+    # is no slip, nor is the line that tries it and rejects it; two values neither of which is a
+    # root (u/30 or u/5) are still wrong.
+    problem = "cie-9231-p2-2014-june-q3-m-hits-9m-half-ke-lost"
+    head = "Let $x = v_{A2}$, $y = v_{B2}$\n$u = x + 9y$\n$x^2 + 9y^2 = u^2/2$\n"
+    work = (
+        "$(6y - u)(30y - u) = 0$ so $y = \\frac{u}{30}$ or $y = \\frac{u}{6}$\n"
+        "If $y = \\frac{u}{30}$ then $x = \\frac{7u}{10}$, faster than B: reject.\n"
+        "$y = \\frac{u}{6}$, $x = -\\frac{u}{2}$\n"
+    )
+    found = lines(problem, head + work)
+    assert found[4][0] == found[6][0] == "correct"
+    assert found.get(5, ("not read",))[0] in ("not read", "correct")
+    assert lines(problem, head + "(6y - u)(30y - u) = 0\ny = u/30 or u/6\n")[5][0] == "correct"
+    assert lines(problem, head + "(6y - u)(30y - u) = 0\ny = u/30 or y = u/5\n")[5][0] == "wrong"

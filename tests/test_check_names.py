@@ -12,6 +12,7 @@ v_A = V - e(u cos a - V) = 0, v_B = V + e(V + u cos a) = u cos a.
 from __future__ import annotations
 
 import pytest
+from support.checked import lines
 
 import derive
 from derive.checking.valuenames import kinds
@@ -802,3 +803,38 @@ def test_names_declared_with_be_and_a_possessive_are_declared() -> None:
     assert "x: A's velocity after the impact (as you declared)." in r.names
     assert "y: B's velocity after the impact (as you declared)." in r.names
     assert set(by_line("byjus-4kg-ball-catches-8kg-ball", work).values()) == {"correct"}
+
+
+def test_the_statements_letters_name_the_bodies_by_the_masses_it_gives_them() -> None:
+    # Edexcel M2 June 2013 Q5: "Particles P (mass 2m) and Q (mass m)", Q at rest, P at u; after,
+    # x for P and y for Q: 2mu = 2mx + my; x = u/2, y = u (KE after ¼mu² + ½mu² = ¾mu²).
+    # (v_P)_2 and (v_Q)_2 are P's and Q's velocities after, derive's A and B by their masses.
+    head = "$m_P = 2m$, $m_Q = m$\n$(v_P)_2 = x$, $(v_Q)_2 = y$\n"
+    right = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", head + "$2mu = 2mx + my$\n$x = u/2$\n")
+    assert [right[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+    swapped = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", head + "$2mu = 2my + mx$\n")
+    assert swapped[3][0] == "wrong"
+
+
+def test_velocity_names_typed_without_underscores_and_the_unmarked_one_after() -> None:
+    # OCR M3 Jan 2006: A (5 kg) at 4 across the line of centres, B (2 kg) at 4 along it toward A,
+    # e = 0.75. Along x: 5(0) + 2(-4) = -8 = 5 vAx + 2 vBx; vBx - vAx = 0.75(0 + 4) = 3, so
+    # 7 vAx = -8 - 6 = -14, vAx = -2, vBx = 1. "vAx1" is A's before, so "vAx" (no mark) is after;
+    # "2 vBx" is 2 times a name, not the number 2 and words.
+    work = (
+        "x along the line of centres, y along the common tangent\n5 vAx1 + 2 vBx1 = 5 vAx + 2 vBx\n"
+        "-8 = 5 vAx + 2 vBx\nvBx - vAx = 0.75(vAx1 - vBx1) = 3\n7 vAx = -14\n"
+    )
+    found = lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = -2, vBx = 1\n")
+    assert [found[n][0] for n in (2, 3, 4, 5, 6)] == ["correct"] * 5
+    assert lines("ocr-m3-2006-oblique-a-across-centres", work + "vAx = 2\n")[6][0] == "wrong"
+
+
+def test_a_greek_name_set_equal_to_masses_alone_is_the_students_own_name() -> None:
+    # Edexcel M2 June 2013 Q5: P (2m), Q (m). The reduced mass μ = (2m)(m)/(3m) = 2m/3, typed "mu":
+    # not m times u (a momentum is never a mass alone); 3m/2 is worked wrongly. "2mu" in the
+    # momentum is still 2 m u: 2mu = 2m v_A2 + m v_B2 holds (u/2 and u).
+    problem = "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters"
+    assert lines(problem, "mu = (2m)(m)/(3m) = 2m/3\n")[1][0] == "correct"
+    assert lines(problem, "mu = (2m)(m)/(3m) = 3m/2\n")[1][0] == "wrong"
+    assert lines(problem, "2mu = 2m v_A2 + m v_B2\n")[1][0] == "correct"

@@ -360,7 +360,10 @@ def test_a_bodys_velocity_before_and_after_in_words_is_read(tmp_path) -> None:
         ("Substituting y = x + 2: 5x + 6 = -4", [("Substituting y", "x + 2"), ("5x + 6", "-4")]),
         ("A: 3cos30 = 2.6,   B: -4", [("3cos30", "2.6")]),  # a body's lead-in after a comma
         ("v_P = -u/3 (v_P = u is before the collision)", [("v_P", "-u/3")]),  # a root turned down
-        ("x = 3 or x = -1 (rejected)", []),
+        ("x = 3 or x = -1 (rejected)", [("x", "3")]),  # two roots: the one kept is read, not the rejected one
+        ("v_B = 2(1 + e)u (M1 A1)", [("v_B", "2(1 + e)u")]),  # a mark scheme's marks: not a name A1
+        ("v = 0.75(4) = 3 (A1ft)(B1)", [("v", "0.75(4)", "3")]),
+        ("e^2 = 4/9  =>  e = 2/3   (e > 0)", [("e^2", "4/9"), ("e", "2/3")]),  # a condition after it: a remark
         (r"$b - a = \tfrac25\Bigl(7 - \bigl(-3\bigr)\Bigr) = 4$", [("b - a", "(2/5) (7 - (-3))", "4")]),
     ],
 )

@@ -1039,3 +1039,29 @@ def test_a_sign_lost_in_letters_working_out_a_velocity_is_algebra() -> None:
     found = lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)
     assert [found[i][0] for i in (1, 2, 3)] == ["correct"] * 3
     assert found[4][:2] == ("wrong", "algebra")
+
+
+def test_a_whole_number_against_an_equation_still_to_be_solved_is_exact() -> None:
+    # OCR MEI 2023 (A moves back at 0.2): 0.5(6) + 2(2) = 7 exactly = 0.5(-0.2) + 2v = -0.1 + 2v.
+    # "7 = -0.01 + 2v" has 0.5 x 0.2 worked as 0.01: false (2v = 7.1, v = 3.55, and -0.01 + 7.1
+    # is 7.09, which is not the 7 written, however "7" might be rounded); 7.01 and 3.505 carried.
+    slip = "0.5(6) + 2(2) = 0.5(-0.2) + 2v\n7 = -0.01 + 2v\n2v = 7.01\nv = 3.505\n"
+    found = lines("ocr-mei-fmm-2023-a-speed-0p2-backward", slip)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == found[4][0] == "carried"
+    # right: 7 = -0.1 + 2v, 2v = 7.1, v = 3.55; and a rounded answer stays right (v = 3.6)
+    right = "0.5(6) + 2(2) = 0.5(-0.2) + 2v\n7 = -0.1 + 2v\n2v = 7.1\nv = 3.6\n"
+    assert {n: s for n, (s, _, _) in lines("ocr-mei-fmm-2023-a-speed-0p2-backward", right).items()} == dict.fromkeys(
+        (1, 2, 3, 4), "correct"
+    )
+
+
+def test_two_units_off_in_a_decimal_times_a_letter_is_not_the_value() -> None:
+    # Edexcel M2 June 2013 Q5: P (2m) at u hits Q (m) at rest, KE after ¾mu²: v_A2 = u/2, v_B2 = u.
+    # "0.98u" is two units off in its last place (as 7.1 for 6.9 is): the slack is counted at the
+    # 0.98 written, not at the larger true 1.00; 0.99u and 0.51u are within one unit: right.
+    work = "2mu = 2m v_A2 + m v_B2\nv_B2 = 0.98u\n"
+    assert lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", work)[2][0] == "wrong"
+    work = "2mu = 2m v_A2 + m v_B2\nv_B2 = 0.99u\nv_A2 = 0.51u\n"
+    found = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", work)
+    assert found[2][0] == found[3][0] == "correct"

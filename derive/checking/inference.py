@@ -29,6 +29,7 @@ from derive.checking.frames import (
 )
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.grounding import grounded, grounded_frame, the_speed
+from derive.checking.massnames import mass_named
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -86,7 +87,8 @@ def read_lines(
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
-    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
+    own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
+    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
     declared, sign = declarations(text, ctx)
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}

@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
+from derive.checking.statementbodies import statement_bodies
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.reader import Relation
 
@@ -59,6 +60,8 @@ def body_marks(ctx: Context) -> dict[str, str]:
     out = {"A": "A", "B": "B"}
     for label, body in zip(getattr(p, "labels", ("A", "B")), "AB", strict=True):
         out.setdefault(label, body)
+    for letter, body in statement_bodies(ctx).items():  # "Particles P (mass 2m) and Q (mass 3m)"
+        out.setdefault(letter, body)
     statement = getattr(p, "statement", "") or ""
     words = {}
     for body in "AB":
@@ -227,10 +230,19 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
     for name, (kind, body, time, axis) in parsed.items():
         if not time and any(q[:2] == (kind, body) and q[2] == "2" and q[3] == axis for q in parsed.values()):
             time = "1"  # vAn beside vAn': before
+        elif not time and kind == "v" and body and _only_before_marked(parsed, body, axis):
+            time = "2"  # vAx beside vAx1 (and none marked after): after
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
             out[name] = e
     return out
+
+
+def _only_before_marked(parsed: dict[str, tuple[str, str, str, str]], body: str, axis: str) -> bool:
+    """Whether the velocity of ``body`` along ``axis`` is written with the time before marked
+    (``vAx1``, ``u_A1``) and never with the time after: the name without a mark is then after."""
+    times = {q[2] for q in parsed.values() if q[0] == "v" and q[1] == body and q[3] == axis}
+    return "1" in times and "2" not in times
 
 
 def _equal(ctx: Context, a: sympy.Expr, b: sympy.Expr) -> bool:

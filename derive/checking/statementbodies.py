@@ -33,6 +33,9 @@ def statement_bodies(ctx: Context) -> dict[str, str]:
     letters = list(dict.fromkeys(_LETTER.findall(statement)))
     labels = set(getattr(ctx.problem, "labels", ("A", "B")))
     letters = [x for x in letters if x not in labels and x not in ("A", "B")]
+    by_mass = _by_mass(ctx, statement, labels)
+    if by_mass:
+        return by_mass
     if len(letters) != 2:
         return {}
     rest = _AT_REST.search(statement)
@@ -47,6 +50,35 @@ def statement_bodies(ctx: Context) -> dict[str, str]:
         return {}
     moving = "B" if at_rest[0] == "A" else "A"
     return {still: at_rest[0], other: moving}
+
+
+#: A letter with the mass the statement gives it: "P (mass 2m)", "particle Q, of mass 0.5 kg", "Q has mass 3m".
+_MASS = re.compile(r"\b([A-Z])\s*(?:\(\s*|,\s*)?(?:(?:of|with|has)\s+)?(?:a\s+)?mass\s+(\d*\.?\d*\s*\*?\s*[a-z]?)\b")
+
+
+def _by_mass(ctx: Context, statement: str, labels: set[str]) -> dict[str, str]:
+    """The statement's letters matched to A and B by the mass it gives each (``Particles P (mass 2m)
+    and Q (mass 3m)`` with m_A = 2m): {} unless both letters are found and the masses tell them apart."""
+    masses = {}
+    for g in ctx.problem.givens:
+        if g.name in ("m_A", "m_B"):
+            x = g.definition if g.definition is not None else g.value
+            masses[g.name[-1]] = str(sympy.nsimplify(x)) if x is not None else None
+    if len(masses) != 2 or None in masses.values() or masses["A"] == masses["B"]:
+        return {}
+    out: dict[str, str] = {}
+    for m in _MASS.finditer(statement):
+        letter, text = m.group(1), re.sub(r"(\d)\s*\*?\s*([a-z])", r"\1*\2", m.group(2).strip())
+        if letter in labels or letter in ("A", "B") or not text:
+            continue
+        try:
+            said = str(sympy.nsimplify(sympy.sympify(text)))
+        except (sympy.SympifyError, TypeError, ValueError):
+            continue
+        body = next((b for b, x in masses.items() if x == said), None)
+        if body is not None and letter not in out and body not in out.values():
+            out[letter] = body
+    return out if len(out) == 2 else {}
 
 
 def at_rest_before(ctx: Context, body: str) -> bool:

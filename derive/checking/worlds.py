@@ -17,6 +17,7 @@ from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
 from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied
+from derive.checking.wholesides import exact_whole
 from derive.mathtext.notation import student
 from derive.numbers import to_decimal
 
@@ -53,7 +54,7 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         scale = max(abs(left), abs(right))
         tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
         far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
-        loose = not p.own_figures and at_figures(p, left, right)
+        loose = not p.own_figures and at_figures(p, left, right) and not exact_whole(p, U)
         if far and not satisfied(p.difference, vals, U, [pt], tol) and not loose:
             return identity(p)
     return True
@@ -67,7 +68,12 @@ def _written_scale(p: Pair, left: complex, right: complex, scale: float) -> floa
 
 
 def _plain(text: str) -> bool:
-    return NUMBER_SIDE.match(student(text.strip())) is not None
+    """A number as written, or a decimal times one letter (``4.3v``: its last place is 0.1v)."""
+    typed = student(text.strip())
+    return NUMBER_SIDE.match(typed) is not None or _SCALED.match(typed) is not None
+
+
+_SCALED = re.compile(r"^[-+]?\d+\.\d+\*[A-Za-z]\w*$")
 
 
 def identity(p: Pair) -> bool:

@@ -149,6 +149,10 @@ _FIGURES = re.compile(
 )
 #: The mark that ends a proof (``∎``, ``□``, ``\\qed``, ``QED``, ``Q.E.D.``, ``//``) and a bracket of
 #: only ``!`` or ``?`` (``(!!)``): no part of the relation.
+#: A mark scheme's marks after a line (``(A1)``, ``(M1 A1)``, ``(dM1)``, ``(A1ft)``): the marker's, not maths.
+_SCHEME_MARKS = re.compile(
+    r"(?<=[\w)\]}$.])\s+(?:\(\s*d?[MABE]\d(?:\s*(?:ft|cao|cso|oe))?(?:[\s,]+d?[MABE]\d(?:\s*(?:ft|cao|cso|oe))?)*\s*\)\s*)+$"
+)
 _END_MARK = re.compile(
     r"\s*(?:∎|□|■|◻|◼|▪|\\(?:qed|qedsymbol|blacksquare|square|Box)(?![A-Za-z])(?:\{\})?|\b(?:Q\.\s?E\.\s?D\.?|QED)(?!\w))"
     r"[\s.!$]*$|(?<=\s)//\s*$|\s*\(\s*[!?]+\s*\)\s*$"
@@ -258,6 +262,7 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     pointed = _POINTER.sub("", text)
     text = pointed if "=" in pointed or equals_before else text
     text = _CLAUSE.sub("", _AFTER_TICK.sub("", _END_MARK.sub("", _CODE_COMMENT.sub("", text))))
+    text = _SCHEME_MARKS.sub("", text)  # "= 2u - 3eu (A1)": the mark scheme's mark
     m = _CONVERTED.search(text) or _DASH_CONVERTED.search(text)
     if m and is_unit(m.group("unit").strip()) and _after_unit(text[: m.start("gap")]):
         text = text[: m.start("gap")]

@@ -41,6 +41,7 @@ from derive.mathtext.sides import (
     direction_of,
     each_body,
     european_points,
+    glued_marks,
     thousands,
     typed_names,
     units_inside,
@@ -356,7 +357,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
-    text = re.sub(r"\s\((?:[^()]*=[^()]*)\)\s*$", "", text)  # "(e = 1)" after it: a remark
+    text = re.sub(r"\s\((?:[^()]*(?:=|[<>≤≥])[^()]*)\)\s*$", "", text)  # "(e = 1)", "(e > 0)" after it: a remark
     text = _without_remark(text)
     text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
@@ -364,7 +365,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     direction = direction_of(text[text.rfind("=") + 1 :])
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
-    text = _UNIT_BRACKET.sub("", words_after(text))
+    text = _UNIT_BRACKET.sub("", words_after(glued_marks(text)))  # 2 vAx: a name, not words
     sides = tuple(_side(s) for s in text.split("="))
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     if quoted_law(sides):

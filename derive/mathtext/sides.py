@@ -25,6 +25,9 @@ _PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z
 #: ``mP``), alone or after a number (``2WB``: 2 W_B); not a product of two names (``mM``, ``mV``: m times M,
 #: m times the common velocity).
 _GLUED_BODY = re.compile(r"(?<![A-Za-z_'\\])([muvwpW])([ABPQ])(?![\w'])")
+#: A velocity letter with a body's capital and its component or time glued on (``vAx``, ``vBy``,
+#: ``uAx1``, ``vB2``): one name, ``v_Ax``, as ``v_Ax`` is.
+_GLUED_MARKS = re.compile(r"(?<![A-Za-z_'\\])([uvw])([ABPQ])([xynt][12]?|[12][xynt]?)(?![\w'])")
 #: A number with its thousands set apart by a space (``20 000``, ``1 500 000``; a thin space too).
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
@@ -102,10 +105,17 @@ def european_points(text: str) -> Callable[[str], str]:
     return lambda plain: _THOUSANDS_POINT.sub(lambda m: m[0].replace(".", ""), plain)
 
 
+def glued_marks(text: str) -> str:
+    """``text`` with a velocity's body and component or time glued to its letter written as one
+    name (``2 vAx + 8`` -> ``2 v_Ax + 8``): a name, not words after a number."""
+    return _GLUED_MARKS.sub(r"\1_\2\3", text)
+
+
 def typed_names(text: str) -> str:
     """``text`` with names whose subscript or prime is typed another way written as one name
     (``mA`` as ``m_A``: the body glued to the letter)."""
     text = _GLUED_BODY.sub(r"\1_\2", text)  # mA(vA)1: m_A
+    text = glued_marks(text)  # 2 vAx + 8: 2 v_Ax
     text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2}
     text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
     return _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript

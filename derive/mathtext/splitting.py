@@ -13,12 +13,18 @@ from derive.mathtext.notes import GAP_THEN_NAME, SO_ABROAD, UNIT_THEN_NAME
 from derive.mathtext.sides import LONE_VALUE, html_marks
 
 _ARROW = re.compile(
-    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|at|"
+    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|or|at|"
     + SO_ABROAD
     + r")(?![\w])",
     re.I,
 )
 _RELATION = re.compile(r"=|≈|≃|≅|∼|(?<=\s)~(?=\s)")
+
+
+#: A name set equal to two values, the roots of a quadratic (``x = 5 or 2``, ``v = u/2 or 5u/6``).
+_OR_VALUE = re.compile(
+    r"(?<![\w\\])(?P<name>[A-Za-z](?:_\w+)?)\s*=\s*(?P<a>[^=;,]+?)\s+or\s+(?P<b>[^=;,\s][^=;,]*?)\s*$", re.I
+)
 
 
 def split_relations(plain: str) -> list[str]:
@@ -30,6 +36,7 @@ def split_relations(plain: str) -> list[str]:
         r"(\d|\)|/s|J|kg)\s+y\s+(?=[A-Za-z][\w']*\s*=)", r"\1 ; ", plain
     )  # Spanish "and": "= 4 m/s y v_B = 8"
     plain = _remarks_apart(plain)  # "lock together (e = 0)", "(check: sqrt(0.7) = 0.837)": a remark
+    plain = _OR_VALUE.sub(r"\g<name> = \g<a> or \g<name> = \g<b>", plain)  # x = 5 or 2: two roots
     parts: list[str] = []
     plain = re.sub(
         r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])",

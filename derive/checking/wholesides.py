@@ -1,0 +1,42 @@
+"""A whole number written against an equation still to be solved is exact, not rounded.
+
+``7 = 0.01 + 2v`` (from ``0.5(6) + 2(2) = 0.5(0.2) + 2v``): the 7 is the known side worked
+out, exactly, and the line is an equation in ``v`` with a number term of its own. Rounding
+does not make a whole number of one or two figures (a student rounds to three figures and
+writes the decimals): the slack of ±1 in the last digit of "7" (6.5 to 7.5) would let the
+slip in the other side's number (0.01 for 0.1) pass as right.
+"""
+
+from __future__ import annotations
+
+import re
+
+import sympy
+
+from derive.mathtext.notation import student
+
+_WHOLE = re.compile(r"^[-+]?\(?(\d{1,2})\)?$")
+
+
+def exact_whole(p, unknowns: tuple[sympy.Symbol, ...]) -> bool:
+    """Whether ``p`` (a :class:`~derive.checking.worlds.Pair`) sets a whole number of one or
+    two figures, as written, against a sum of the unknowns and a number term of its own (an
+    equation still being solved, ``7 = 0.01 + 2v``): the number is then exact."""
+    texts = p.text.split(" = ", 1)
+    if len(texts) != 2:
+        return False
+    for text, other in zip(texts, (p.right, p.left), strict=True):
+        m = _WHOLE.match(student(text.strip()))
+        if m is None or int(m.group(1)) == 0:
+            continue
+        return _solving(other, unknowns)
+    return False
+
+
+def _solving(x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...]) -> bool:
+    """A sum holding an unknown and a number term of its own (``0.01 + 2v``)."""
+    x = sympy.expand(x)
+    if not isinstance(x, sympy.Add) or not (x.free_symbols & set(unknowns)):
+        return False
+    constant = x.as_independent(*unknowns, as_Add=True)[0]
+    return constant != 0 and not constant.free_symbols
