@@ -1065,3 +1065,21 @@ def test_two_units_off_in_a_decimal_times_a_letter_is_not_the_value() -> None:
     work = "2mu = 2m v_A2 + m v_B2\nv_B2 = 0.99u\nv_A2 = 0.51u\n"
     found = lines("edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters", work)
     assert found[2][0] == found[3][0] == "correct"
+
+
+def test_a_whole_number_against_the_unknowns_in_exact_algebra_is_exact() -> None:
+    # Edexcel M2 June 2013 Q5: P (2m) at u hits Q (m) at rest, KE after = 3/4 mu^2. By hand:
+    # x = u(2 - e)/3, y = 2u(1 + e)/3; x^2 + y^2/2 = 3u^2/4, times 36: 4(2 - e)^2 + 8(1 + e)^2 = 27,
+    # so 12e^2 + 24 = 27, 12e^2 = 3, e = 1/2. "= 28" is one unit off 27 in its last place: no
+    # rounding makes a whole number in exact algebra, so it is the slip, and 12e^2 = 4 is carried.
+    problem = "edexcel-m2-2013-june-q5-2m-hits-m-ke-three-quarters"
+    right = "2u = 2x + y\ny - x = eu\n4(2 - e)^2 + 8(1 + e)^2 = 27\n12e^2 = 3\ne = 1/2\n"
+    assert [s for s, _, _ in lines(problem, right).values()] == ["correct"] * 5
+    slip = "2u = 2x + y\ny - x = eu\n4(2 - e)^2 + 8(1 + e)^2 = 28\n12e^2 = 4\ne = 0.577\n"
+    found = lines(problem, slip)
+    assert found[3][0] == "wrong" and found[4][0] == found[5][0] == "carried"
+    assert lines(problem, "48e^2 = 13\n")[1][0] == "wrong"  # 48/4 = 12, not 13
+    # the report's "Expected" is never the checker's own energy equation in v_A2, v_B2 for a
+    # line the student wrote in e alone
+    report = derive.check(derive.solve(derive.load(problem)), derivation=slip)
+    assert not [i.expected for i in report.items if i.kind == "line" and i.name == "3" and i.expected]
