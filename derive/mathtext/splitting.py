@@ -32,7 +32,8 @@ def split_relations(plain: str) -> list[str]:
     plain = _remarks_apart(plain)  # "lock together (e = 0)", "(check: sqrt(0.7) = 0.837)": a remark
     parts: list[str] = []
     plain = re.sub(
-        r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])",
+        r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])"
+        r"|(?<=[\w)])\s+\.\s+(?=[A-Z][a-z])",  # "$y = u$. Speed of Q …": the stop after the mathematics
         " ; ",
         plain,
     )  # a sentence ends (after an arrow too: "= 2 m/s ←. Taking → as positive")
