@@ -42,6 +42,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
+from derive.checking.reducedmass import reduced_mass
 from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
@@ -87,6 +88,7 @@ def read_lines(
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w))}  # mu = m u where m, u are given
+    known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
     declared, sign = declarations(text, ctx)
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
@@ -112,6 +114,7 @@ def read_lines(
         **axis_names(ctx, axes, used),
         **valued,
         **grammar,
+        **reduced,  # mu in ½ mu (1 - e²) u²
         **declared,
     }  # p_i: no impulse
     names = Open({**problem, **_speeds(ctx)}, set(meanings))

@@ -25,6 +25,8 @@ _PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z
 #: ``mP``), alone or after a number (``2WB``: 2 W_B); not a product of two names (``mM``, ``mV``: m times M,
 #: m times the common velocity).
 _GLUED_BODY = re.compile(r"(?<![A-Za-z_'\\])([muvwpW])([ABPQ])(?![\w'])")
+#: A velocity letter with a body's capital and an axis glued on (``vAx``, ``vBy``, ``uAn``, ``vBt'``).
+_GLUED_COMPONENT = re.compile(r"(?<![A-Za-z_'\\])([uvwV])([ABPQ])([nxyt])(?![\w])")
 #: A number with its thousands set apart by a space (``20 000``, ``1 500 000``; a thin space too).
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 
@@ -106,6 +108,7 @@ def typed_names(text: str) -> str:
     """``text`` with names whose subscript or prime is typed another way written as one name
     (``mA`` as ``m_A``: the body glued to the letter)."""
     text = _GLUED_BODY.sub(r"\1_\2", text)  # mA(vA)1: m_A
+    text = _GLUED_COMPONENT.sub(r"\1_\2\3", text)  # vBy, vAx': v_By, v_Ax'
     text = _BRACED.sub(lambda m: f"{m[1]}{m[2]}" if m[1] == "_" else f"^({m[2]})", text)  # v_{A2}, u^{2}
     text = _SUBSCRIPT_MARKED.sub(lambda m: f"_{m[1]}{m[2]}", text)  # v_{A,2}, v_(A2): one subscript
     return _PRIME_FIRST.sub(r"\1_\3\2", text)  # v'_A: v_A', the prime after the subscript
