@@ -271,3 +271,17 @@ def test_names_let_be_quantities_in_words_are_a_declaration_not_a_relation(decla
 def test_mu_set_equal_to_a_momentum_stays_m_times_u(row: str) -> None:
     # m at u hits 9m at rest: m u = m x + 9 m y is the momentum, not the reduced mass 9m/10
     assert line_statuses(NINE, row + "\ny - x = \\tfrac23 u\n")[0] == "correct"
+
+
+@pytest.mark.parametrize(
+    ("row", "verdict"),
+    [
+        ("$v'_{Ax} + v'_{Bx} = 6.928$", "correct"),
+        ("$v'_{Bx} - v'_{Ax} = 0.8(6.928) = 5.542$", "correct"),
+        ("$v'_{Bx} = 6.235$ ft/s", "correct"),
+        ("$v'_{Bx} = 6.928$ ft/s", "wrong"),  # 6.235
+    ],
+)
+def test_a_prime_typed_before_a_braced_subscript(row: str, verdict: str) -> None:
+    # after a line that names both (a lone v'_{Bx} is not read yet: its name is known from the relations)
+    assert line_statuses(DISKS, "$v'_{Ax} + v'_{Bx} = 6.928$\n" + row)[-1] == verdict
