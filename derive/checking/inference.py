@@ -43,6 +43,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
+from derive.checking.reducedmass import reduced_mass
 from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
@@ -89,6 +90,7 @@ def read_lines(
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
+    known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
     declared, sign = declarations(text, ctx)
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
@@ -114,6 +116,7 @@ def read_lines(
         **axis_names(ctx, axes, used),
         **valued,
         **grammar,
+        **reduced,  # mu in ½ mu (1 - e²) u²
         **declared,
     }  # p_i: no impulse
     names = Open({**problem, **_speeds(ctx)}, set(meanings))

@@ -101,6 +101,22 @@ _ALONG = re.compile(
 _ACROSS = re.compile(r"(?i)\bperp|\bacross\b|\btangent|plane of contact|(?<![A-Za-z])[yt](?![A-Za-z])")
 
 
+#: A fixed body's surface, and the axes a label names by it: along it (t), into it (n).
+_FIXED = r"(?:the\s+)?(?:wall|cushion|barrier|plane|floor|ground|surface)\b"
+_ALONG_FIXED = re.compile(rf"(?i)\b(?:along|parallel\s+to)\s+{_FIXED}")
+_INTO_FIXED = re.compile(rf"(?i)\b(?:into|towards?|normal\s+to|perp(?:\.|endicular)?\s*to|away\s+from|off)\s+{_FIXED}")
+
+
+def _wall_axis(ctx: Context, label: str) -> str:
+    """The axis a label names against a fixed body (``along wall``: t, ``into the wall``: n), ""
+    where the problem has none or the label names it by no fixed surface."""
+    if not getattr(ctx.problem, "fixed_B", False):
+        return ""
+    if _INTO_FIXED.search(label):
+        return "n"
+    return "t" if _ALONG_FIXED.search(label) else ""
+
+
 def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
     """The pair "a body's component before = the line's first working" where the line, a line
     of numbers labelled by its axis in words (``along: 2 sin 60° = 1.732``, ``perp: 2 cos 60° =
@@ -119,9 +135,10 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
         return None
     across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names
     along = _ALONG.search(label) is not None and not across
-    if along == across:
+    wall = _wall_axis(ctx, label)  # "along the wall": t; "into the wall": n
+    if along == across and not wall:
         return None
-    names, axis = ctx.equation_names(), "n" if along else "t"
+    names, axis = ctx.equation_names(), wall or ("n" if along else "t")
     spaced = re.sub(r"(?i)(sin|cos|tan)", r" \1 ", line.sides[0])  # "2sin60": 2 and 60
     written = {t for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", spaced)}
     bodies = []

@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
+from derive.checking.reducedmass import is_reduced_mass
 from derive.checking.statementbodies import statement_bodies
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.reader import Relation
@@ -315,4 +316,6 @@ def _shown(e: sympy.Expr) -> str:
         return (
             f"-{(-e).name}"  # -J_n (the impulse on A), a component on an axis turned round, a speed declared backwards
         )
+    if is_reduced_mass(e):
+        return "the reduced mass m_A m_B/(m_A + m_B)"
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"

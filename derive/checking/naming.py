@@ -54,7 +54,7 @@ from derive.problem.units import DIMENSIONLESS, MASS
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:(?:\\?Delta|Δ)\s*(?:KE|T|E_?k|E|K)\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|(?-i:T|E_?k|E|K))\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
@@ -83,6 +83,12 @@ PHRASES = (
 PHRASES += SAID_PHRASES  # a wall's velocity and speed in words
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
+#: Names let be quantities said in words (``let a, b = velocities along the line of centres after (A, B)``).
+_LET_WORDS = re.compile(
+    r"^\s*(?:let|set|define)\s+[A-Za-z]\w*(?:\s*(?:,|and|&)\s*[A-Za-z]\w*)*\s*(?:=|:=|be|denote)\s*(?:the\s+)?"
+    r"(?!(?:sqrt|sin|cos|tan|exp|log|ln)\b)[A-Za-z]{3,}\b(?!\s*[=(])",
+    re.I,
+)
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 #: Names of the common velocity.
 COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G", "V_cm", "V_CM", "v_com", "V_com", "v_COM", "V_c")
@@ -383,6 +389,8 @@ def declaration(line: str) -> bool:
 def declares(r: Relation, first: bool) -> bool:
     """Whether the relation ``r`` is a declaration: its own text is one, or its line is one and it
     is the line's first relation (``Positive = away from the cushion.  u = -3.00``: only the first)."""
+    if _LET_WORDS.match(r.written):
+        return True  # "let a, b = velocities … (A, B)": every piece of it
     return declaration(" = ".join(r.sides)) or (first and declaration(r.written) and not _POSITIVE.match(r.written))
 
 

@@ -111,10 +111,22 @@ _IMPULSE_SAID = re.compile(
 _CHANGE_NAME = re.compile(r"^\s*(?:D|d|Δ|\\?Delta\s*|delta_?)\s*p(?:_?\{?(?:([AB])|[xn])\}?)?\s*$")
 
 
+#: The impulse as the integral of the force over the contact (``\\int F dt``, ``∫ F_B dt``,
+#: ``\\int_0^{t} F\\,dt``, ``∫F(t) dt``, ``\\int F \\mathrm{d}t``): on the body a letter names.
+_INTEGRAL = re.compile(
+    r"^\s*(?:\\int|∫)\s*(?:_\s*(?:\{[^{}]*\}|\([^()]*\)|[^{}()\s])\s*)?(?:\^\s*(?:\{[^{}]*\}|\([^()]*\)|[^{}()\s])\s*)?"
+    r"\(?\s*(?:\\vec\s*|\\mathbf\s*)?\(?F\)?(?:_\{?([AB])\}?|_?\{?[nx]\}?)?\s*(?:\(\s*t\s*\))?\s*\)?\s*(?:\\,|\*|·)?\s*"
+    r"(?:\\mathrm\s*\{\s*d\s*\}|\(?\s*d\s*\)?)\s*t\s*$"
+)
+
+
 def impulse_name(side: str) -> str | None:
     """A side that is an impulse in words as one name (``impulse``, ``impulse_B`` for "impulse on
-    B", ``dp`` for "change in momentum"), whose meaning its value or its relations settle (:mod:`.valuenames`);
-    None where the side is not one."""
+    B", ``dp`` for "change in momentum"), or as the integral of the force (``\\int F dt``), whose
+    meaning its value or its relations settle (:mod:`.valuenames`); None where the side is not one."""
+    m = _INTEGRAL.match(side)
+    if m is not None:
+        return f"impulse_{m[1]}" if m[1] else "impulse"
     m = _CHANGE_NAME.match(side)
     if m is not None:
         return f"dp_{m[1]}" if m[1] else "dp"

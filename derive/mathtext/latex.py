@@ -88,6 +88,7 @@ def latex_to_plain(tex: str) -> str:
     s = re.sub(
         r"\^\s*\{\s*((?:\\prime\s*)+)\}|\^\s*\\prime", lambda m: "'" * max(1, (m[1] or "").count("prime")), s
     )  # v^{\prime}
+    s = re.sub(r"(?<![A-Za-z\\])([A-Za-z])('+)\s*_\s*(\{[^{}]{1,8}\}|[A-Za-z0-9])", r"\1_\3\2", s)  # v'_{Ax}: v_{Ax}'
     s = re.sub(r"_\s*(?:\{\s*\\(max|min)\s*\}|\\(max|min)(?![A-Za-z]))", r"_{\1\2}", s)  # x_{\max}: a name
     parser, out, end, work = Parser(s, lenient=True), [], 0, 0  # leniently, any character is a token
     while not parser.at_end():

@@ -319,7 +319,17 @@ class Parser:
         return Pow(node, power) if power is not None else node
 
     def frac(self) -> object:
-        return Frac(self.group(), self.group())
+        return Frac(self.frac_group(), self.frac_group())
+
+    def frac_group(self) -> object:
+        """A fraction's argument; unbraced, one character as TeX takes it: ``\\frac u2`` is u/2,
+        ``\\tfrac ab`` a/b (a name of several letters or a letter and digits is split after its first)."""
+        tok = self.peek()
+        if self.lenient and tok is not None and len(tok) > 1 and tok[0].isalpha() and tok.isalnum():
+            begin, end = self.spans[self.i]
+            self.toks[self.i : self.i + 1] = [tok[0], tok[1:]]
+            self.spans[self.i : self.i + 1] = [(begin, begin + 1), (begin + 1, end)]
+        return self.group()
 
     def sqrt(self) -> object:
         if self.peek() == "[":

@@ -21,6 +21,7 @@ from dataclasses import dataclass, replace
 
 from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
 from derive.mathtext.arrows import starts_with_so
+from derive.mathtext.asides import without_condition
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
@@ -48,6 +49,7 @@ from derive.mathtext.sides import (
     without_direction,
 )
 from derive.mathtext.splitting import split_relations
+from derive.mathtext.tables import table_cells
 from derive.mathtext.texwords import tex_comment, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
@@ -76,7 +78,8 @@ class Relation:
 
 
 _ENV = ENV
-_OPEN = re.compile(rf"\$\$|\\\[|\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
+#: Where mathematics opens (``\\[`` after a line break, ``J \\\\[2pt]``, is the break's spacing, not a display).
+_OPEN = re.compile(rf"\$\$|(?<!\\)\\\[|(?<!\\)\\\(|\\begin\{{(?:{_ENV})\*?\}}(?:\{{\d+\}})?|(?<![\\$])\$")
 _CLOSE = {
     "$$": re.compile(r"\$\$"),
     r"\[": re.compile(r"\\\]"),
@@ -140,6 +143,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     for line, column, written, plain in pieces(text):
         plain = said_is(points(unmarked(unbold(plain))))  # "B's speed after is 8 m/s": B's speed after = 8
         plain = equals_in_brackets(plain)  # "= 0.346 (= 0.2 sqrt3)": one more side
+        plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
@@ -174,7 +178,7 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     while n < len(lines):
         raw = tex_comment(lines[n])
         if close is None:
-            plain, close, rows = _line(raw, n + 1)
+            plain, close, rows = _line(table_cells(raw), n + 1)  # "| after | $… = 3.88$ |": a table's row
             if plain.strip():
                 yield n + 1, len(raw) - len(raw.lstrip()), _unwrapped(lines[n]), plain
         else:

@@ -26,8 +26,8 @@ _PRIME_FIRST = re.compile(r"(?<![\w'])([A-Za-z])('+)\s*_\s*[({]?([A-Za-z][A-Za-z
 #: m times the common velocity).
 _GLUED_BODY = re.compile(r"(?<![A-Za-z_'\\])([muvwpW])([ABPQ])(?![\w'])")
 #: A velocity letter with a body's capital and its component or time glued on (``vAx``, ``vBy``,
-#: ``uAx1``, ``vB2``): one name, ``v_Ax``, as ``v_Ax`` is.
-_GLUED_MARKS = re.compile(r"(?<![A-Za-z_'\\])([uvw])([ABPQ])([xynt][12]?|[12][xynt]?)(?![\w'])")
+#: ``uAx1``, ``vB2``, ``vBt'``, ``VAx``): one name, ``v_Ax``, as ``v_Ax`` is.
+_GLUED_MARKS = re.compile(r"(?<![A-Za-z_'\\])([uvwV])([ABPQ])([xynt][12]?|[12][xynt]?)(?![\w])")
 #: A number with its thousands set apart by a space (``20 000``, ``1 500 000``; a thin space too).
 _THOUSANDS = re.compile(r"(?<![\d.^/_])\d{1,3}(?:[ \u00a0\u2009\u202f]\d{3})+(?![\d.])")
 

@@ -39,7 +39,8 @@ def split_relations(plain: str) -> list[str]:
     plain = _OR_VALUE.sub(r"\g<name> = \g<a> or \g<name> = \g<b>", plain)  # x = 5 or 2: two roots
     parts: list[str] = []
     plain = re.sub(
-        r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])",
+        r"(?<=[A-Za-z)]{2})\.\s+|(?:(?<=[\w)°²³←→↑↓])|(?<=<-|->))(?<!i\.e)(?<!e\.g)\.\s+(?=[^\s(=≈+\-*/^,;:<>])"
+        r"|(?<=[\w)])\s+\.\s+(?=[A-Z][a-z])",  # "$y = u$. Speed of Q …": the stop after the mathematics
         " ; ",
         plain,
     )  # a sentence ends (after an arrow too: "= 2 m/s ←. Taking → as positive")
@@ -96,6 +97,10 @@ def _arrow_split(plain: str) -> list[str]:
     return [*out, plain[start:]]
 
 
+#: A lead-in after a comma at the end of a piece, before a colon (``…, y``, ``…, B after``).
+_LEAD_END = re.compile(r",\s*([A-Za-z][\w' ]{0,30}?)\s*$")
+
+
 def _colon_split(piece: str) -> list[str]:
     """``Substituting b = a + 6: 8a + 18 = -8`` -> two: a colon between two relations ends the
     first (one after words alone, ``CLM: …``, leads in and stays)."""
@@ -103,6 +108,9 @@ def _colon_split(piece: str) -> list[str]:
     out: list[str] = [bits[0]]
     for bit in bits[1:]:
         if "=" in bit and "=" in out[-1] and out[-1].count("(") == out[-1].count(")"):
+            lead = _LEAD_END.search(out[-1])  # "x: 2cos60 = 1, y: 2sin60 = 1.73": y leads in the next
+            if lead and "=" in out[-1][: lead.start()]:
+                out[-1], bit = out[-1][: lead.start()], f"{lead.group(1)}:{bit}"
             out.append(bit)
         else:
             out[-1] += ":" + bit

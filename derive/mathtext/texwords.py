@@ -9,7 +9,11 @@ from __future__ import annotations
 import re
 
 #: TeX spacing and layout commands in the text around mathematics (``\\quad $u_B = 2$``).
-_TEX_SPACE = re.compile(r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]")
+#: A line break (``\\\\``, ``\\\\[4pt]``) in the text after the mathematics is layout too (``$T = 6.4$ J \\\\``).
+_TEX_SPACE = re.compile(
+    r"\\(?:quad|qquad|noindent|medskip|smallskip|bigskip|newline|hfill|par)(?![A-Za-z])|\\[,;:! ]"
+    r"|\\\\\*?(?:\s*\[[^\]]*\])?"
+)
 
 
 #: LaTeX's formatting of words outside mathematics (``\\textbf{Stage 3.}``, ``\\section*{…}``).
