@@ -12,9 +12,7 @@ from dataclasses import replace
 from derive.mathtext.reader import Relation
 
 #: "the component of A's velocity" before "along the line of centres" (the body is its label).
-COMPONENT_OF = re.compile(
-    r"^\s*(?:(?:the\s+)?component\s+of\s+)?([AB])['’]s\s+(?:initial\s+)?velocity\s+(?=along|across|perp)", re.I
-)  # "A's velocity along the line of centres" too
+COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
 #: A component named by its axis alone: "along the line of centres", "perpendicular to it".
 _AXIS_ONLY = re.compile(
     r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
