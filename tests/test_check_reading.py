@@ -464,7 +464,7 @@ def test_v_alone_is_the_one_velocity_after_not_given_and_words_are_not_bad_input
         tmp_path, 'm_A = "2 kg"\nm_B = "4 kg"\ne = "?"\nv_A1 = "6 m/s"\nv_B1 = 0\nv_B2 = "3.6 m/s"\n'
     )
     work = "momentum before = momentum after\n2(6) + 4(0) = 2v + 4(3.6)\n12 = 2v + 1.44\nv = 5.28 m/s\n"
-    assert statuses(problem, work) == ["correct", "wrong", "carried"]
+    assert statuses(problem, work) == ["correct", "correct", "wrong", "carried"]  # the principle in words: right
 
 
 def test_m_alone_is_the_one_unknown_mass(tmp_path) -> None:

@@ -45,6 +45,7 @@ def test_words_inside_a_power_a_fraction_or_a_root_are_kept(tex: str, plain: str
         (r"\sin^2\theta + \cos^{2}\theta = 1", "sin(theta)^2 + cos(theta)^2 = 1"),
         (r"e \geq 0", "e >= 0"),
         (r"v_{A,2}' = \tfrac12 u", "v_A2' = (1/2) u"),
+        (r"w = \frac u2 + \tfrac mM", "w = u/2 + m/M"),  # TeX takes one letter without braces
         (r"\vec v_{B} = \bigl(3\,\hat\imath\bigr)", "v_B = (3 i_hat)"),
         (r"u_A = a\mathbf{i} + 12\mathbf{j}", "u_A = a i + 12 j"),
         (r"x = 2(9.8)h \Rightarrow h = 1.41", r"x = 2(9.8)h \Rightarrow h = 1.41"),

@@ -74,9 +74,10 @@ def _declaring(exprs: list, said: Declared) -> bool:
     return len(exprs) == 2 and bool(set(exprs) & set(said)) and not any(x.is_number for x in exprs)
 
 
-#: Words of a line of givens after a speed (``u = 21 m/s down``, ``Given: …``): the given's own.
+#: Words of a line of givens after a speed (``u = 21 m/s down``, ``Given: …``): the given's own; the sign
+#: convention (``Positive: A's way, so u_B = -1.5``): a given's velocity with the convention's sign.
 _GIVEN_WORDS = re.compile(
-    r"\b(?:given|data|thrown|projected|released|initial(?:ly)?|down(?:wards?)?|up(?:wards?)?|vertically)\b", re.I
+    r"(?:\b(?:given|data|thrown|projected|released|initial\w*|(?:down|up)(?:wards?)?|vertically|positive)|\+ve)\b", re.I
 )
 
 

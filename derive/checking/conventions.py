@@ -73,7 +73,7 @@ def signed_by_words(r: R, sign: int) -> R:
     derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
     already signed stays as written."""
     m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
-    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols:
+    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols or _size_only(r.exprs[0]):
         return r
     if r.direction * sign > 0:
         return r
@@ -81,6 +81,12 @@ def signed_by_words(r: R, sign: int) -> R:
         # "v = eu = 0.4 x 4 = 1.6 m/s to the left": v's size is worked out, its way said after it
         return replace(r, exprs=(-r.exprs[0], *r.exprs[1:]))
     return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
+
+
+def _size_only(x: object) -> bool:
+    """A mass or a weight (derive's ``m_A``, ``W_B``, ``m``): a size, never signed by a way in words
+    (``W_B = 3000 lb moving left at 6 ft/s``: the way is the car's velocity's)."""
+    return bool(getattr(x, "is_Symbol", False)) and re.fullmatch(r"(?:m|W)(?:_[A-Za-z0-9]+)?|mass", x.name) is not None
 
 
 #: A way declared positive by a bare plus: "(towards wall is +)", "towards the wall = +", "(+ away from the wall)".

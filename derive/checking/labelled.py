@@ -155,6 +155,7 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     sym = names[f"v_{bodies[0]}1{axis}"][0]
     first = ctx.in_unknowns(exprs[0])  # its degrees in
     pair = Pair(f"{_bare(label)} = {line.sides[0]}", ctx.in_unknowns(sym), first, 1e-3, (sym, exprs[0]))
-    if holds(pair) or holds(Pair(pair.text, -pair.left, first, 1e-3, (-sym, exprs[0]))):
+    flipped = Pair(pair.text, -pair.left, first, 1e-3, (-sym, exprs[0]))  # a size where derive's axis points back
+    if holds(pair) or holds(flipped):
         return None
-    return pair if slipnames.before_impact(ctx, pair, holds) else None
+    return next((p for p in (pair, flipped) if slipnames.before_impact(ctx, p, holds)), None)

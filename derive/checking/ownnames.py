@@ -35,6 +35,36 @@ def own_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr]) -> None
         if False in verdicts and True not in verdicts:
             del meanings[name]
     _given_angles(ctx, raw, meanings, numeric)
+    _sums_in_degrees(raw, meanings)
+
+
+#: derive's names of angles (an angle a student declares in words stands for one of them).
+_ANGLE = re.compile(r"(?:alpha|beta|gamma|delta|theta|phi|psi)(?:_\w+)?")
+
+
+def _sums_in_degrees(raw: list, meanings: dict[str, sympy.Expr]) -> None:
+    """``theta = a - 30`` where ``a`` is declared an angle (``A now moves at angle a to the line of
+    centres``): a bare number added to angles is degrees, as the angles' are (``raw`` changed in place)."""
+    angles = {
+        sympy.Symbol(PREFIX + n)
+        for n, e in meanings.items()
+        if isinstance(e, sympy.Symbol) and _ANGLE.fullmatch(e.name)
+    }
+    for i, r in enumerate(raw):
+        if r.exprs and angles:
+            exprs = tuple(_in_degrees(e, angles) for e in r.exprs)
+            raw[i] = replace(r, exprs=exprs) if exprs != r.exprs else r
+
+
+def _in_degrees(e: sympy.Expr, angles: set[sympy.Symbol]) -> sympy.Expr:
+    """``a - 30`` -> ``a - 30°`` where each term but the one number is an angle (either sign)."""
+    if not isinstance(e, sympy.Add):
+        return e
+    numbers = [t for t in e.args if t.is_number]
+    rest = [t for t in e.args if not t.is_number]
+    if len(numbers) != 1 or not rest or not all(t in angles or -t in angles for t in rest):
+        return e
+    return e - numbers[0] + numbers[0] * DEG
 
 
 def _given_angles(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], numeric: dict) -> None:

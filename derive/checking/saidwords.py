@@ -22,6 +22,14 @@ SAID_PHRASES = (
     (rf"(?:{_ENERGY})[\s_,]*(?:after|final|nachher|apr[eè]s|despu[eé]s|dopo|finale)(?!\w)", "T_2"),
     (rf"^\s*(?:{_LOST})\s*$", "T_lost"),
     (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
+    (  # "momentum after = 0.8(-1.2) + 0.4v", "total momentum before": the two bodies' momentum, a side of its own
+        r"^\s*(?:the\s+)?(?:total\s+|system\s+)?momentum\s*_?\s*(before|after)(?:\s+(?:the\s+)?(?:collision|impact))?\s*$",
+        r"p_\1",
+    ),
+    (
+        r"^\s*(?:the\s+)?(?:total\s+)?(?:(initial)|final)\s+(?:total\s+)?momentum\s*$",
+        lambda m: "p_" + ("before" if m[1] else "after"),
+    ),
     (
         r"^\s*(?:the\s+)?velocity\s+(after|before)(?:\s+(?:the\s+)?(?:impact|rebound|bounce|collision))?\s*$",
         r"velocity_\1",

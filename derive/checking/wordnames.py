@@ -356,7 +356,8 @@ _ANGLE_MAKES = re.compile(rf"(?:the\s+)?(\w+)['’]s\s+{_PATH}{_AFTER}\s+{_WITH.
 #: "the sphere leaves the wall at an angle φ to the wall", "B moves off at angle β to the line of
 #: centres", "let it rebound making an angle φ with the cushion": a body's path after, by its verb.
 _ANGLE_LEAVES = re.compile(
-    r"(?:the\s+)?(\w+)\s+(?:leaves?|leaving|rebounds?|rebounding|bounces?\s+off|moves?\s+(?:off|away)|goes\s+off|travels?\s+off)"
+    r"(?:the\s+)?(\w+)\s+(?:leaves?|leaving|rebounds?|rebounding|bounces?\s+off|(?:moves?|goes|travels?)\s+(?:off|away)"
+    r"|(?:now|then|afterwards)\s+(?:moves?|goes|travels?))"
     r"(?:\s+(?:from\s+)?(?:the\s+)?(?:wall|cushion|surface|it))?\s+(?:at|making)\s+(?:an?\s+)?(?:acute\s+)?angle\s+(?:of\s+)?"
     rf"{_ANGLE_NAME}\s+(?:to|with)\s+(?:the\s+)?{_LINE_WORDS}",
     re.I,

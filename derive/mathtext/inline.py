@@ -77,7 +77,7 @@ def equals_in_brackets(plain: str) -> str:
 #: eqn 2``, ``…, put this in the momentum equation``, ``… into CLM``): words, no part of its value.
 _VERB = r"(?:sub(?:stitute[ds]?|stituting)?|put(?:ting)?|plug(?:ged|ging)?|insert(?:ed|ing)?|use[ds]?|using)"
 _TARGET = (
-    r"(?:\(\s*\d{1,2}[a-z]?\s*\)|eq(?:n|uation)?s?\.?\s*\(?\d{1,2}\)?|(?:the\s+)?(?:first|second|other|last|momentum"
+    r"(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|eq(?:n|uation)?s?\.?\s*\(?\d{1,2}\)?|(?:the\s+)?(?:first|second|other|last|momentum"
     r"|restitution|energy|CLM|NEL|PCLM|NLR|COLM)(?:\s+(?:one|equation|eqn|law|relation|line))?)"
 )
 _INTO_END = re.compile(

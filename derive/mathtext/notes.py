@@ -24,6 +24,7 @@ from derive.mathtext.asides import case_before
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.parser import GREEK
+from derive.mathtext.roundedagain import without_rounded_again
 from derive.mathtext.units import is_unit
 
 _MATH = GREEK | FUNCTIONS | {"pi", "deg", "rad"}
@@ -135,7 +136,8 @@ _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
 _AFTER_TICK = re.compile(r"\s*(?:✓|✔|☑|\\(?:checkmark|cmark|tick|ding\s*[{(]\s*5[12]\s*[})])(?![A-Za-z]))\s*[^=✓✔]*$")
 #: A clause after a comma that says no more of the value (``= u(2 + 3e), in its original direction``).
 _CLAUSE = re.compile(
-    r"\s*,\s*(?:in|along|which|that|as|moving|travelling|going|directed|the|unchanged|unaltered|unaffected|constant|conserved|same)\b"
+    r"\s*(?:,|[—–])\s*(?:in|along|which|that|as|moving|travelling|going|directed|the|unchanged|unaltered|unaffected|constant"
+    r"|conserved|same)\b"
     r"(?![^=\d]*\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way)\b)[^=\d()\[\]]*$",
     re.I,
 )
@@ -251,7 +253,7 @@ NOTE_CHARS = 200
 def without_note(text: str) -> tuple[str, str]:
     """A relation without the note after it, and its tag where the note is one ("" where none)."""
     text = re.sub(r"\s{9,}", " " * 8, text.rstrip())  # a wide gap is a gap: bounded, as the work is
-    text = _HAS_AFTER.sub("", text)  # "…, B has -12i": the other body's, said without "="
+    text = without_rounded_again(_HAS_AFTER.sub("", text))  # "…, B has -12i"; "27.216m J (27.2m J)"
     head, tail = text[:-NOTE_CHARS], text[-NOTE_CHARS:]
     tail, tag = _note(tail, "=" in head)
     return (head + tail).rstrip(), tag
@@ -340,6 +342,10 @@ _WORDS_BEFORE_NUMBER = re.compile(
 )
 
 
+#: A body said before a side in numbers, after a label (``impulses: on B 35000 x 0.3``, ``for A 2(3)``).
+_ON_BODY = re.compile(r"^\s*(?:on|for)\s+(?-i:[A-Z])\s+(?=[\d.(])", re.I)
+
+
 def name_after_words(side: str, math_words: frozenset[str]) -> str:
     """A first side that is words and then a name (``CoM velocity V``) as the name alone; a clause
     of words before a comma (``Energy lost, using ΔKE``) dropped."""
@@ -347,9 +353,9 @@ def name_after_words(side: str, math_words: frozenset[str]) -> str:
     m = _CLAUSE_HEAD.match(side)
     if m and side[m.end() :].strip() and all(w.lower() not in math_words for w in re.findall(r"\w+", m.group(0))):
         side = side[m.end() :]
-    m = _WORDS_BEFORE_NUMBER.match(side)
+    m = _WORDS_BEFORE_NUMBER.match(side) or _ON_BODY.match(side)
     if m and all(w.lower() not in math_words for w in re.findall(r"[A-Za-z]+", m.group(0))):
-        return side[m.end() :]  # "that's 0.3888/1.08": the words lead in
+        return side[m.end() :]  # "that's 0.3888/1.08", "on B 35000 x 0.3": the words lead in
     ref = _REFERENCE.match(side)  # "Y&F 8.96 blue puck m_b": the exercise's number, then words
     rest = side[ref.end() :] if ref else side
     m = _PROSE_HEAD.match(rest)

@@ -206,9 +206,18 @@ class Parser:
         return node
 
     def loose_group(self) -> object:
-        """A group written without braces, as students do: ``\\frac12``, ``\\sqrt3``, ``\\vec v``."""
+        """A group written without braces, as students do: ``\\frac12``, ``\\sqrt3``, ``\\vec v``, ``\\frac u2``."""
         self.first_digit()
+        self.first_letter()
         return self.atom()
+
+    def first_letter(self) -> None:
+        """A run of letters next splits after its first letter, as TeX takes it: ``\\frac u2`` is u/2."""
+        tok = self.peek()
+        if tok is not None and len(tok) > 1 and tok[0].isalpha() and tok[0] != "\\":
+            begin, end = self.spans[self.i]
+            self.toks[self.i : self.i + 1] = [tok[0], tok[1:]]
+            self.spans[self.i : self.i + 1] = [(begin, begin + 1), (begin + 1, end)]
 
     def first_digit(self) -> None:
         """A whole number next splits after its first digit: TeX's ``x^23`` is ``x^{2}3``."""
@@ -324,12 +333,7 @@ class Parser:
     def frac_group(self) -> object:
         """A fraction's argument; unbraced, one character as TeX takes it: ``\\frac u2`` is u/2,
         ``\\tfrac ab`` a/b (a name of several letters or a letter and digits is split after its first)."""
-        tok = self.peek()
-        if self.lenient and tok is not None and len(tok) > 1 and tok[0].isalpha() and tok.isalnum():
-            begin, end = self.spans[self.i]
-            self.toks[self.i : self.i + 1] = [tok[0], tok[1:]]
-            self.spans[self.i : self.i + 1] = [(begin, begin + 1), (begin + 1, end)]
-        return self.group()
+        return self.group()  # split unbraced by loose_group
 
     def sqrt(self) -> object:
         if self.peek() == "[":

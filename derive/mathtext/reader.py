@@ -23,9 +23,11 @@ from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition
 from derive.mathtext.bracketed import bracketed_names
+from derive.mathtext.doing import said_doing
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
+from derive.mathtext.momentumlaw import momentum_law
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.notes import (
     REMARK_END,
@@ -91,13 +93,20 @@ _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
 #: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
-_REF = r"\d*\s*[×x*]?\s*(?:\(\s*\d{1,2}[a-z]?\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
+_REF = r"\d*\s*[×x*]?\s*(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
 #: ``(1) + (2) gives``, ``2(1) - (2) ⇒``, and ``(1)+(2)  13 = 3x`` with no word: bare equation numbers
 #: only, before a side (not an operator or "=").
 _JOIN = r"(?:→|->|=>|⇒|\\Rightarrow\b|\\implies\b|\bgives?\b)"
 _COMBINED = re.compile(
     rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}\s*(?::(?!=)|{_JOIN})"
     r"|(?:\(\s*\d\s*\)\s*[-+−]\s*)+\(\s*\d\s*\)(?=\s+[^\s=+\-−*/^()]))\s*"
+)
+#: The equation a relation comes from, leading in (``from (2) x = y - 4``, ``using (ii),``, ``rearranging eqn 1:``):
+#: words, never a factor of its first side.
+_FROM_REF = re.compile(
+    r"^\s*(?:from|using|by|rearranging|rearrange)\s+(?:eq(?:n|uation)?\.?\s*)?"
+    r"(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|(?<=[nN.]\s)\d{1,2}|(?<=[nN.])\d{1,2})\s*[,:]?\s+(?=[^\s=+*/^)-])",
+    re.I,
 )
 _TAG_START = re.compile(r"^\s*(?:\(\s*(\d{1,2}[a-z]?)\s*\)\s*:?|(\d{1,2}[a-z]?)\s*:)\s+")
 #: A part's label before a relation (``(a)``, ``(ii)``, ``b)``, ``Q3(b)``, ``part (c):``): not maths.
@@ -141,8 +150,8 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     out: list[Relation] = []
     points = european_points(text)
     for line, column, written, plain in pieces(text):
-        plain = said_is(points(unmarked(unbold(plain))))  # "B's speed after is 8 m/s": B's speed after = 8
-        plain = equals_in_brackets(plain)  # "= 0.346 (= 0.2 sqrt3)": one more side
+        plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
+        plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
@@ -151,6 +160,8 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             lead = above.lead or above.sides[0]
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
+        if m and main.rstrip().endswith("(") and aside.rstrip().endswith(")"):  # "= 4.46 J (with V = 1.4925 it's 4.48)"
+            main, aside = main.rstrip()[:-1], aside.rstrip()[:-1]
         main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
         main, aside = decimal_commas(main), decimal_commas(aside)  # "0,25": nought point two
         parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
@@ -348,7 +359,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     tag = without_note(written_text)[1]
-    text = _outer(_PART.sub("", _COMBINED.sub("", text.lstrip(" ,;:")), count=1))
+    text = _outer(_PART.sub("", _COMBINED.sub("", _FROM_REF.sub("", text.lstrip(" ,;:"), count=1)), count=1))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
