@@ -247,6 +247,16 @@ def test_a_long_derivation_says_what_was_not_checked() -> None:
     assert report.items[-1].status == "error" and "3 more relations" in report.items[-1].message
 
 
+def test_two_values_with_or_where_the_relations_are_linear_are_a_guess() -> None:
+    # OCR M2 2014: A (2m) at 4, B (3m) at -2, e = 0.4. 2 = 2x + 3y, y - x = 0.4(6) = 2.4: x = -1.04,
+    # y = 1.36, one solution (no quadratic). "x = -1.04 or x = -1.4" hedges: the -1.4 is a slip, as is
+    # Edexcel M2 2004's "y = 2u + 2eu or y = 2u - 2eu" (10u = 2x + 3y, y - x = 5eu: y = 2(1 + e)u only).
+    head = "2m(4) + 3m(-2) = 2m v_A2 + 3m v_B2\n2 = 2v_A2 + 3v_B2\nv_B2 - v_A2 = 2.4\n"
+    assert lines("ocr-m2-2014-particles-2m-3m-ke-lost", head + "v_A2 = -1.04 or v_A2 = -1.4\n")[4][0] == "wrong"
+    work = "10mu = 2m v_A2 + 3m v_B2\nv_B2 - v_A2 = 5eu\nv_B2 = 2u + 2eu or v_B2 = 2u - 2eu\n"
+    assert lines("edexcel-m2-2004-june-q5-2m-at-5u-hits-3m", work)[3][0] == "wrong"
+
+
 def test_both_roots_of_a_quadratic_and_the_rejected_one_are_not_slips() -> None:
     # CIE 9231 June 2014 Q3: A (m) at u hits B (9m) at rest, half the KE lost. x for A, y for B:
     # u = x + 9y, x² + 9y² = u²/2 -> 180y² - 36uy + u² = 0 = (6y - u)(30y - u): y = u/6 or u/30.

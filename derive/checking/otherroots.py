@@ -12,6 +12,8 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
+import sympy
+
 from derive.mathtext.latex import REJECTED
 
 _OR = re.compile(r"(?<![\w\\])or(?![\w])", re.I)
@@ -27,9 +29,29 @@ def not_marked(trace: Any, line: Any, lines: Sequence[Any], typed: list[str]) ->
     rejected = REJECTED.search(typed[line.number - 1]) is not None and any(
         _siblings(r, lines, typed) for r in lines if r.number <= line.number
     )
-    if not (siblings or rejected) or _holds(trace, line):
+    if not (siblings or rejected) or _holds(trace, line) or not _quadratic_before(trace, line, lines):
         return False
     return rejected or any(_holds(trace, r) for r in siblings)
+
+
+def _quadratic_before(trace: Any, line: Any, lines: Sequence[Any]) -> bool:
+    """Whether a relation up to ``line`` is of degree two or more in the unknowns (``x^2 + 9y^2 =
+    u^2/2``, ``(6y - u)(30y - u) = 0``): only then are there two roots. Two values for a velocity
+    that linear relations fix (``v_A = -1.04 or v_A = -1.4``) are a guess, and the wrong one a slip."""
+    unknowns = set(trace.U)
+    for r in lines:
+        if r.number > line.number or r.exprs is None or len(r.exprs) < 2:
+            continue
+        d = sympy.numer(sympy.together(r.exprs[0] - r.exprs[-1]))
+        names = sorted(d.free_symbols & unknowns, key=str)
+        if not names:
+            continue
+        try:
+            if sympy.Poly(sympy.expand(d), *names).total_degree() >= 2:
+                return True
+        except sympy.PolynomialError:
+            return True  # a root or a sine of an unknown: not linear either
+    return False
 
 
 def _siblings(line: Any, lines: Sequence[Any], typed: list[str]) -> list[Any]:
