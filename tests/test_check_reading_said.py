@@ -167,3 +167,10 @@ def test_an_angle_after_declared_by_a_verb_of_motion_and_a_sum_in_degrees(verb: 
     )
     assert line_statuses(AQA_30, work) == ["correct"] * 4
     assert line_statuses(AQA_30, work.replace("b - tan 30)/(1 +", "b + tan 30)/(1 -"))[-1] == "wrong"
+
+
+@pytest.mark.parametrize(("worked", "verdict"), [("2m", "correct"), ("3m", "wrong")])
+def test_the_momentum_law_as_sums_with_its_value_after_is_judged(worked: str, verdict: str) -> None:
+    # OCR M2 2014: 2m at 4, 3m at -2. Σmu = 2m(4) + 3m(-2) = 2m; after, 2m(-1.04) + 3m(1.36) = 2m too.
+    work = f"8m - 6m = 2m v_A2 + 3m v_B2\nΣmu = Σmv = {worked}\n"
+    assert line_statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work)[-1] == verdict

@@ -14,10 +14,12 @@ _SUM = r"(?:\\sum|\\Sigma|Sigma|Σ|∑|sum)(?:_\{?[A-Za-z]\}?)?\s*"
 _TERM = r"(?:m\s*\*?\s*[uv]|p)"
 _BEFORE = rf"{_SUM}(?:{_TERM}\s*_?\s*\{{?\s*(?:1|i|0|before|initial|init)\s*\}}?|m\s*\*?\s*u)"
 _AFTER = rf"{_SUM}(?:{_TERM}\s*_?\s*\{{?\s*(?:2|f|after|final)\s*\}}?|m\s*\*?\s*v(?:'|_?p)?)"
-_LAW = re.compile(rf"^\s*(?:{_BEFORE}\s*=\s*{_AFTER}|{_AFTER}\s*=\s*{_BEFORE})\s*$", re.I)
+_LAW = re.compile(rf"^\s*(?:{_BEFORE}\s*=\s*{_AFTER}|{_AFTER}\s*=\s*{_BEFORE})\s*(?=$|=(?!=))", re.I)
 
 
 def momentum_law(text: str) -> str:
     """``text`` as ``p_before = p_after`` where it states the conservation of momentum as sums of
-    the bodies' momenta before and after; any other text as it is."""
-    return "p_before = p_after" if _LAW.match(text) else text
+    the bodies' momenta before and after, its worked value after them kept (``Σmu = Σmv = 2m``:
+``p_before = p_after = 2m``); any other text as it is."""
+    m = _LAW.match(text)
+    return "p_before = p_after" + (f" {text[m.end() :].strip()}" if m.end() < len(text) else "") if m else text
