@@ -20,6 +20,8 @@ _LAW = re.compile(rf"^\s*(?:{_BEFORE}\s*=\s*{_AFTER}|{_AFTER}\s*=\s*{_BEFORE})\s
 def momentum_law(text: str) -> str:
     """``text`` as ``p_before = p_after`` where it states the conservation of momentum as sums of
     the bodies' momenta before and after, its worked value after them kept (``Σmu = Σmv = 2m``:
-``p_before = p_after = 2m``); any other text as it is."""
+    ``p_before = p_after = 2m``); any other text as it is."""
     m = _LAW.match(text)
-    return "p_before = p_after" + (f" {text[m.end() :].strip()}" if m.end() < len(text) else "") if m else text
+    if m is None:
+        return text
+    return f"p_before = p_after {text[m.end() :].strip()}".rstrip()
