@@ -226,3 +226,16 @@ def test_bold_unit_vectors_after_a_lead_in_are_components_not_names() -> None:
     assert "I took q to be B's velocity after the impact, along the line of centres (from your relations)." in r.names
     assert not any(re.match(r"I took [ij] ", n) for n in r.names)
     assert [i.status for i in r.items] == ["correct"] * len(r.items) and len(r.items) >= 4
+
+
+def test_an_energy_line_is_never_shown_the_momentum_equation_as_expected() -> None:
+    # OCR M2 2014: 2m at 4, 3m at -2, e = 0.4. The reduced mass is (2m)(3m)/(5m) = 1.2m; taken as m
+    # (6m for 5m), T_lost = ½(m)(1 - 0.16)(36) = 15.12m, not 18.144m. The line is about energy and
+    # writes no velocity after: the momentum equation 2m v_A2 + 3m v_B2 = 2m is not the line it meant.
+    work = (
+        "2m(4) + 3m(-2) = 2m v_A2 + 3m v_B2\nv_B2 - v_A2 = 2.4\nmu = (2m)(3m)/(6m) = m\n"
+        "T_lost = 1/2 (m)(1 - 0.4^2)(6)^2 = 15.12m\n"
+    )
+    report = derive.check(derive.solve(derive.load("ocr-m2-2014-particles-2m-3m-ke-lost")), derivation=work)
+    item = next(i for i in report.items if i.kind == "line" and i.name == "4")
+    assert item.status != "correct" and "v_A2" not in item.expected and "v_B2" not in item.expected
