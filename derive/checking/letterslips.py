@@ -33,6 +33,13 @@ def plain(bad: Pair) -> str:
     return "arithmetic" if ratio is not None and ratio.is_number else "algebra"
 
 
+def unknowns_written(bad: Pair, U: tuple[sympy.Symbol, ...]) -> set[sympy.Symbol]:
+    """The unknowns ``bad`` holds that its sides as written name (``T_lost = ½(m)(0.84)(36)`` names
+    none, though T_lost is worked in the velocities after): the ones an expected line may be in."""
+    written = set().union(*(x.free_symbols for x in bad.raw)) if bad.raw else set(U)
+    return bad.difference.free_symbols & set(U) & written
+
+
 def _squares(x: sympy.Expr) -> bool:
     """Whether ``x`` holds a power of a bracket in letters, ``(1 + e)²``."""
     return any(p.base.is_Add and p.base.free_symbols and p.exp.is_Integer and p.exp > 1 for p in x.atoms(sympy.Pow))

@@ -240,9 +240,8 @@ class Trace(Carrying):
             del self.named[line.number]
             return self._carried(line)
         expected = answer.expected if answer is not None else ""
-        used = bad.difference.free_symbols & set(self.U)  # expected only in the unknowns the line uses
-        written = set().union(*(x.free_symbols for x in bad.raw)) if bad.raw else used  # T_lost is none
-        if not expected and j and used and used <= self.base.equations[j].free_symbols & written:
+        used = letterslips.unknowns_written(bad, self.U)  # expected only in the unknowns the line writes
+        if not expected and j and used and used <= self.base.equations[j].free_symbols:
             nm = self.ctx.model.nm
             expected = shown(self.base.equations[j], self.U, (nm.B2n, nm.A2n) if j == 4 else ())
         if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
