@@ -285,3 +285,16 @@ def test_mu_set_equal_to_a_momentum_stays_m_times_u(row: str) -> None:
 def test_a_prime_typed_before_a_braced_subscript(row: str, verdict: str) -> None:
     # after a line that names both (a lone v'_{Bx} is not read yet: its name is known from the relations)
     assert line_statuses(DISKS, "$v'_{Ax} + v'_{Bx} = 6.928$\n" + row)[-1] == verdict
+
+
+@pytest.mark.parametrize(
+    ("row", "verdict"),
+    [
+        ("v_B = 3.4. Reject v_B = -3.4.", "correct"),  # the value rejected is the one named after it
+        ("v_B = 3.8. Reject the other root.", "wrong"),  # "the other": the value before is kept, and judged
+        ("v_B = 3.4. Discard the negative value.", "correct"),
+    ],
+)
+def test_a_rejection_that_names_what_it_turns_down_leaves_the_value_kept(row: str, verdict: str) -> None:
+    # e = 0.8: v_B - v_A = 0.8(3 + 2) = 4 with 0.9 - 0.4 = 0.3 v_A + 0.2 v_B: v_A = -0.6, v_B = 3.4
+    assert line_statuses(HEAD_ON, "$0.3(3) - 0.2(2) = 0.3 v_A + 0.2 v_B$\n" + row)[-1] == verdict

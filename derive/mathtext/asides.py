@@ -10,6 +10,9 @@ import re
 #: What may stand before a rejection that is a sentence of its own (``… through Q. Reject.``,
 #: ``So impossible.``): the sentence it turns down is the one before.
 _ALONE = re.compile(r"[\s.;,:]*(?:(?:so|hence|therefore|thus|which\s+is|(?:this|it)\s+is|that's|it's|we)\s+)?", re.I)
+#: A rejection that names what it turns down, not the sentence before (``v = 1.36. Reject the other
+#: root.``, ``… Discard the negative value.``): the value before is the one kept.
+_ELSEWHERE = re.compile(r"\w+\s+(?:the\s+)?(?:other|negative|positive|second|first|smaller|larger|remaining)\b", re.I)
 #: A full stop between sentences (``$x = 3$. Reject`` is read ``x = 3 ; . Reject``).
 _FULL_STOP = re.compile(r"(?<=[\w)°²³;])\s?\.(?=\s+[A-Z(])")
 
@@ -19,9 +22,23 @@ def case_before(text: str, at: int, start: int) -> int:
     is a sentence of its own (``… P would go through Q. Reject.``), the sentence before it (to the
     full stop before that, not a ";" the reader put between the pieces of mathematics)."""
     stops = [s.end() for s in _FULL_STOP.finditer(text) if s.end() <= at]
+    if stops and _ELSEWHERE.match(text, at):
+        return max(start, stops[-1])  # "v = 1.36. Reject the other root.": its own sentence only
     if not stops or not _ALONE.fullmatch(text[stops[-1] : at]):
         return start
     return stops[-2] if len(stops) > 1 else 0
+
+
+def named_after(text: str, end: int) -> int | None:
+    """Where the relation a rejection names after it ends (``x = 3. Reject x = -1.``: the rejected
+    ``x = -1``, not the ``x = 3`` kept): the end of its sentence; None where no relation follows."""
+    if not re.search(r"(?:reject|discard)(?:ed)?$", text[:end], re.I) or not _NAMED.match(text, end):
+        return None  # "… is impossible as w < v, so v = u/2": what follows is the value kept
+    return next((s.start() for s in _FULL_STOP.finditer(text, end)), len(text))
+
+
+#: The relation a rejection names right after it (``reject x = -1``, ``discard the root e = -0.8``).
+_NAMED = re.compile(r"\s+(?:the\s+(?:root|value|solution|case)\s+)?\$?[A-Za-z][\w{}]*\$?\s*=(?!=)", re.I)
 
 
 #: An inequality: ``>``, ``<``, ``>=``, ``≥``, ``\\geq`` (LaTeX's made plain: ``>=``).

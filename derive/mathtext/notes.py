@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-from derive.mathtext.asides import case_before
+from derive.mathtext.asides import case_before, named_after
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.parser import GREEK
@@ -90,6 +90,7 @@ def unmarked(text: str) -> str:
                 (_sentence_start(text, m.start()), m.end()) if whole else (m.start(), _sentence_end(text, m.end()))
             )
             start = case_before(text, m.start(), start) if whole else start  # "… through Q. Reject."
+            start, end = (m.start(), named) if whole and (named := named_after(text, m.end())) else (start, end)
             text = text[:start] + " " * (end - start) + text[end:]
     return text
 
