@@ -174,3 +174,10 @@ def test_the_momentum_law_as_sums_with_its_value_after_is_judged(worked: str, ve
     # OCR M2 2014: 2m at 4, 3m at -2. Σmu = 2m(4) + 3m(-2) = 2m; after, 2m(-1.04) + 3m(1.36) = 2m too.
     work = f"8m - 6m = 2m v_A2 + 3m v_B2\nΣmu = Σmv = {worked}\n"
     assert line_statuses("ocr-m2-2014-particles-2m-3m-ke-lost", work)[-1] == verdict
+
+
+def test_a_given_restated_with_another_bodys_speed_is_judged() -> None:
+    # AQA M3 2007: B moves at 2 m/s (A at 3 m/s). "u_B = -3" restates no speed of B's: it is A's 3 m/s
+    # copied for B, a slip a teacher marks, not a restated given left unjudged.
+    found = line_statuses("chain-aqa-m3-2007-collide-again", "Taking right as positive: u_B = -3\n")
+    assert found == ["wrong"]

@@ -96,10 +96,12 @@ def _restated(ctx: Context, x: tuple, read: list) -> bool:
     if not ((unit is not None and unit[0] == VELOCITY) or _GIVEN_WORDS.search(r.written)):
         return False
     value, half = written_number(sides[1]) or (0.0, 0.0)
+    body = re.search(r"(?<=[a-z_{])([A-Z])\}?\d*\s*$", sides[0])  # u_B restates B's speed, never A's
     values = [  # a given speed (``e = 0.7`` for a wall's e is a stage's e, which the chain judges)
         abs(float(g.value))
         for g in ctx.problem.givens
         if g.value is not None and g.value.is_number and g.dim == VELOCITY
+        if body is None or g.name.rstrip("0123456789n").endswith(body[1])
     ]
     if not any(abs(abs(value) - v) <= half for v in values):
         return False
