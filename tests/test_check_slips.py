@@ -1083,3 +1083,6 @@ def test_a_whole_number_against_the_unknowns_in_exact_algebra_is_exact() -> None
     # line the student wrote in e alone
     report = derive.check(derive.solve(derive.load(problem)), derivation=slip)
     assert not [i.expected for i in report.items if i.kind == "line" and i.name == "3" and i.expected]
+    # a whole number rounded from a value with a cosine in it stays rounded: 4.C.11, the momentum
+    # along n is 20(5 cos 37.6°) + 5(-15 cos 37.6°) = 25 cos 37.6° = 19.81, so "= 20" is right at 2 s.f.
+    assert lines("notes-4c11-two-spheres", "20 v_A2n + 5 v_B2n = 20\n")[1][0] == "correct"

@@ -18,26 +18,31 @@ from derive.mathtext.notation import student
 _WHOLE = re.compile(r"^[-+]?\(?(\d{1,2})\)?$")
 
 
-def exact_whole(p, unknowns: tuple[sympy.Symbol, ...]) -> bool:
+def exact_whole(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, sympy.Expr] = ()) -> bool:
     """Whether ``p`` (a :class:`~derive.checking.worlds.Pair`) sets a whole number of one or
     two figures, as written, against a sum of the unknowns and a number term of its own (an
     equation still being solved, ``7 = 0.01 + 2v``) or against the unknowns with no decimal
-    written (``90e^2 = 41``): the number is then exact."""
+    written whose value ``at`` the point judged is a fraction (``90e^2 = 41`` where e = 2/3: exact
+    algebra; not ``20 v_A2n + 5 v_B2n = 20`` where the values hold cosines and 19.8 rounds to 20):
+    the number is then exact."""
     texts = p.text.split(" = ", 1)
     if len(texts) != 2:
         return False
-    for text, other, written in zip(texts, (p.right, p.left), reversed(texts), strict=True):
+    values = tuple(reversed(at)) if at else (None, None)
+    for text, other, written, value in zip(texts, (p.right, p.left), reversed(texts), values, strict=True):
         m = _WHOLE.match(student(text.strip()))
         if m is None or int(m.group(1)) == 0:
             continue
-        return _solving(other, unknowns) or _whole_letters(written, other, unknowns)
+        return _solving(other, unknowns) or _whole_letters(written, other, unknowns, value)
     return False
 
 
-def _whole_letters(written: str, x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...]) -> bool:
+def _whole_letters(written: str, x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...], value: sympy.Expr | None) -> bool:
     """An expression in the unknowns with no decimal written in it (``90e^2``, ``(1 - 9e)^2 +
-    9(1 + e)^2``): exact algebra, so the whole number against it is exact too (41 is not 40)."""
-    return "." not in written and bool(x.free_symbols & set(unknowns))
+    9(1 + e)^2``) whose value is a fraction: exact algebra, so the whole number against it is
+    exact too (41 is not 40)."""
+    exact = value is not None and isinstance(value, sympy.Rational)
+    return exact and "." not in written and bool(x.free_symbols & set(unknowns))
 
 
 def _solving(x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...]) -> bool:

@@ -47,14 +47,14 @@ class Pair:
 
 def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
     for pt, vals in zip(pts, values, strict=True):
-        left = number_of(p.left.xreplace(pt).xreplace(vals))
-        right = number_of(p.right.xreplace(pt).xreplace(vals))
+        sides = (p.left.xreplace(pt).xreplace(vals), p.right.xreplace(pt).xreplace(vals))
+        left, right = number_of(sides[0]), number_of(sides[1])
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
         tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
         far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
-        loose = not p.own_figures and at_figures(p, left, right) and not exact_whole(p, U)
+        loose = not p.own_figures and at_figures(p, left, right) and not exact_whole(p, U, sides)
         if far and not satisfied(p.difference, vals, U, [pt], tol) and not loose:
             return identity(p)
     return True
