@@ -128,12 +128,13 @@ def test_a_chain_report_has_its_stages_and_says_why() -> None:
 
 def test_a_derivation_not_read_is_not_counted_as_one_line() -> None:
     """Nothing read: no "0 of 1 correct" (the lines skipped as prose are no item)."""
-    work = "Freight cars couple\nmomentum before = momentum after\nso they move off together\n"
+    # ("momentum before = momentum after" is read now: the principle, p before = p after)
+    work = "Freight cars couple\nthe push of the coupling = the jolt felt\nso they move off together\n"
     r = derive.check(derive.solve(derive.load("openstax-cp-8-train-cars-couple")), derivation=work)
     assert r.exit_code == 2
     assert "of 1" not in r.text() and "0 of" not in r.text()
     assert "Nothing was judged" in r.summary()
-    assert "line 2: derive could not read the words “momentum before” as a quantity" in r.items[0].message
+    assert "line 2: derive could not read the words “the push of the coupling” as a quantity" in r.items[0].message
 
 
 def test_json_keeps_its_fields() -> None:
