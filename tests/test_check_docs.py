@@ -29,6 +29,7 @@ def test_every_notation_has_an_example() -> None:
     notations += (r"\mathbf{i}", r"\hat\imath", "A = (0, 4)", "A_y'", "|v_A|", "direction of A", "A after:")  # vectors
     notations += ("velocity after =", "(m/s)", "anticlockwise from")  # names in words, words after a number
     notations += ("v_{1i}", "v_{2,i}", "v'_1", "p_i", "K_i")  # names as a grammar
+    notations += ("(M1 A1)", " or x = ", "Reject.", "(0 < e < 1)", "From CLM,")  # mark-scheme habits
     for notation in notations:
         assert notation in shown, notation
     assert len(examples()) >= 10
