@@ -18,7 +18,7 @@ import math
 import sympy
 
 from derive.checking.polyroots import polynomial_roots
-from derive.checking.relations import Values, coefficients
+from derive.checking.relations import Values, coefficients, cosine
 
 _TRIG = (sympy.sin, sympy.cos, sympy.tan)
 
@@ -97,8 +97,4 @@ def alike(a: dict, b: dict) -> float:
     """|cos| of the angle between the coefficients of a line ``a`` and an equation ``b`` over the
     line's terms in the unknowns (not only the linear ones: ``sin²α`` is not, and the velocities'
     terms of an equation the line has them eliminated from do not count against it)."""
-    keys = [m for m in a if sum(m) >= 1]
-    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
-    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
-    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
-    return abs(dot) / (na * nb) if na and nb else 0.0
+    return cosine(a, b, [m for m in a if sum(m) >= 1])

@@ -290,8 +290,6 @@ def at(x: sympy.Expr, values: dict) -> sympy.Expr:
 Reread = Callable[[str], sympy.Expr]
 Holds = Callable[[tuple[str, ...], list[sympy.Expr]], bool]
 
-_NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.]|\.\d)")
-
 
 def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -> tuple[str, dict] | None:
     """A given copied wrongly into a line of working (a number that, put back as the given,
@@ -300,7 +298,7 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
     chain = ctx.solution.problem
     givens = [g for g in chain.givens if not g.unknown and g.value is not None and g.value.is_Rational and g.value]
     written = {abs(g.value) for g in givens}
-    if len(sides) == 2 and _NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
+    if len(sides) == 2 and copiedsums.NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
         left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
         g = next(
             (g for g in givens if getattr(left, "name", None) == g.name and n != g.value and n * g.value > 0), None
@@ -313,9 +311,11 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
             )
     for i, side in enumerate(sides):
         others = [t for k, t in enumerate(sides) if k != i]
-        if _NUMBER.fullmatch(side.strip()) and (len(sides) > 2 or re.fullmatch(r"\s*[A-Za-z]\w*\s*", others[0])):
+        if copiedsums.NUMBER.fullmatch(side.strip()) and (
+            len(sides) > 2 or re.fullmatch(r"\s*[A-Za-z]\w*\s*", others[0])
+        ):
             continue  # ``v = 9``, ``3 + 4 = 9``: a value worked out, not a given copied into working
-        for token in dict.fromkeys(_NUMBER.findall(side)):
+        for token in dict.fromkeys(copiedsums.NUMBER.findall(side)):
             n = sympy.Rational(token)
             if n in written or n == 0:
                 continue

@@ -29,7 +29,6 @@ from derive.checking.frames import (
 )
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.grounding import grounded, grounded_frame, the_speed
-from derive.checking.massnames import mass_named
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -43,7 +42,7 @@ from derive.checking.naming import (
     rewrite,
 )
 from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
-from derive.checking.reducedmass import reduced_mass
+from derive.checking.reducedmass import mass_named, reduced_mass
 from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes

@@ -1,16 +1,20 @@
 """The reduced mass as students name it: ``μ`` (``\\mu``, or ``mu`` set equal to an expression,
 ``mu = m1 m2/(m1 + m2)``) in the kinetic energy lost in a direct impact, ``ΔK = ½ μ (1 - e²) u²``,
 a formula students remember. It stands for m_A m_B/(m_A + m_B) where two bodies move (against a
-fixed wall there is no second mass); a name the student declares otherwise keeps its declaration."""
+fixed wall there is no second mass); a name the student declares otherwise keeps its declaration.
+A one-word name set equal to masses alone (``mu = (m)(9m)/(10m) = 9m/10``) is the student's own
+name, never m times u: a momentum is never a mass alone."""
 
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 import sympy
 
 from derive.checking.context import Context
 from derive.mathtext.reader import Relation
+from derive.problem.units import MASS
 
 #: The reduced mass's letter typed as a Greek letter (``\\mu``, ``μ``).
 _TYPED = re.compile(r"\\mu(?![A-Za-z])|μ")
@@ -49,3 +53,20 @@ def is_reduced_mass(e: object) -> bool:
         return False
     a, b = sorted(e.free_symbols, key=lambda s: s.name)
     return sympy.simplify(e - a * b / (a + b)) == 0
+
+
+_MASS_LETTER = re.compile(r"[mM](?:_?[AB12])?")
+
+
+def mass_named(ctx: Context, relations: Iterable[Relation]) -> set[str]:
+    """The one-word left sides of ``relations`` whose other sides hold masses and numbers only."""
+    masses = {g.name for g in ctx.problem.givens if g.dim == MASS}
+    out = set()
+    for r in relations:
+        left = r.sides[0].strip()
+        if not re.fullmatch(r"[A-Za-z]\w*", left) or len(r.sides) < 2:
+            continue
+        names = re.findall(r"[A-Za-z]\w*", " ".join(r.sides[1:]))
+        if names and all(n in masses or _MASS_LETTER.fullmatch(n) for n in names):
+            out.add(left)
+    return out

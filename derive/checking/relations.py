@@ -36,6 +36,14 @@ def coefficients(expr: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> dict[tuple[in
     return out
 
 
+def cosine(a: dict, b: dict, keys: list) -> float:
+    """|cos| of the angle between two coefficient vectors over the monomials ``keys``."""
+    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
+    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
+    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
+    return abs(dot) / (na * nb) if na and nb else 0.0
+
+
 def proportional(a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...], pts: list[Point], tol: float) -> bool:
     """Whether equations ``a = 0`` and ``b = 0`` are the same up to a nonzero factor."""
     for pt in pts:

@@ -126,11 +126,7 @@ def number_at_figures(text: str, value: complex) -> bool:
 
 def alike(a: dict, b: dict) -> float:
     """|cos| of the angle between two coefficient vectors (their linear parts)."""
-    keys = [m for m in set(a) | set(b) if sum(m) == 1]
-    dot = sum(a.get(m, 0) * b.get(m, 0) for m in keys)
-    na = sum(abs(a.get(m, 0)) ** 2 for m in keys) ** 0.5
-    nb = sum(abs(b.get(m, 0)) ** 2 for m in keys) ** 0.5
-    return abs(dot) / (na * nb) if na and nb else 0.0
+    return relations.cosine(a, b, [m for m in set(a) | set(b) if sum(m) == 1])
 
 
 def solve_world(
