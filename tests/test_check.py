@@ -665,3 +665,22 @@ def test_a_chains_answers_are_checked_as_numbers() -> None:
         derive.check(sol, {"u_A": "-0.6 m/s"}, equations={"3": "0.3*v_A2 + 0.2*v_B2 = 0.5"})
     formula = derive.check(sol, {"u_A": "-0.6 m/s", "w_B": "-2.38*u"})
     assert [i.status for i in formula.items] == ["correct", "error"]
+
+
+def test_a_whole_number_ending_in_zeros_is_judged_at_the_figures_it_may_stand_for() -> None:
+    # OpenStax 8 (train cars couple, e = 0) by hand: v = (150000(0.300) + 110000(-0.120))/260000
+    # = 0.12231 m/s; T_1 = ½(150000)(0.3²) + ½(110000)(0.12²) = 7542 J, T_2 = ½(260000)v² = 1944.7 J,
+    # so T_lost = 5597.3 J and J_n = 110000(v + 0.120) = 26654 N·s.
+    v = (150000 * 0.300 - 110000 * 0.120) / 260000
+    lost = 7542 - 0.5 * 260000 * v**2
+    assert lost == pytest.approx(5597.3, abs=0.1)
+    problem = "openstax-cp-8-train-cars-couple"
+    for written in ("5600 J", "5600", "5.60e3 J", "5597 J", "5597.3 J"):  # 3 (or 2) figures, 4, 5
+        assert one(problem, "T_lost", written).status == "correct", written
+    for written in ("6000 J", "5700 J", "5580 J", "56000 J"):  # 1 figure; not 5597 rounded; a power out
+        assert one(problem, "T_lost", written).status == "wrong", written
+    assert one(problem, "J_n", "26700 N*s").status == "correct"  # 3 figures
+    assert one(problem, "J_n", "27000 N*s").status == "correct"  # 2 figures
+    assert one(problem, "J_n", "30000 N*s").status == "wrong"  # 1 figure is not read as rounded
+    # a single figure before the zeros stays exact: 20 for 24 is wrong (4.C.11's v_B2n is 8.398)
+    assert one("notes-4c11-two-spheres", "v_B2n", "10").status == "wrong"

@@ -53,7 +53,23 @@ def judge(u: Decimal, x: sympy.Expr, tolerance: sympy.Rational | None) -> bool:
             r = round_figures(xd, figures(u))
         except InvalidOperation:
             return False
-        return abs(u - r) <= slack(u, xd)
+        return abs(u - r) <= slack(u, xd) or any(at_fewer(u, xd, n) for n in zeros_figures(u))
+
+
+def zeros_figures(u: Decimal) -> range:
+    """The fewer figures a whole number's trailing zeros may stand for: 5600 is 5.6e3 or 5.60e3
+    as much as 5600 exactly; a single figure before the zeros (20, 6000) is not read as rounded."""
+    t = u.as_tuple()
+    if t.exponent != 0 or not t.digits or t.digits[-1] != 0:
+        return range(0)
+    core = len(u.normalize().as_tuple().digits)
+    return range(max(core, 2), len(t.digits))
+
+
+def at_fewer(u: Decimal, x: Decimal, n: int) -> bool:
+    """Whether ``u`` is ``x`` rounded to ``n`` figures (no slack: the zeros are read as
+    rounding only where they are exactly that)."""
+    return u == round_figures(x, n)
 
 
 def slack(u: Decimal, x: Decimal) -> Decimal:
@@ -71,6 +87,9 @@ def method(u: Decimal, tolerance: sympy.Rational | None) -> str:
     n = figures(u)
     if n == 0:
         return "as written (zero, to the last place written)"
+    fewer = zeros_figures(u)
+    if fewer:
+        return f"at the {fewer.start} to {n} significant figures {u} may stand for (rounded exactly)"
     return f"at the {n} significant figure{'s' if n > 1 else ''} written (±1 in the last digit)"
 
 
