@@ -169,3 +169,55 @@ def test_components_after_named_parallel_and_perpendicular_to_a_wall(tmp_path, p
     # e on the part along the wall: wrong, not a definition of the student's own name
     assert judged(f"after: {par} = 0.5(10 cos 30) = 4.330\n")[0] == "wrong"
     assert judged(f"after: {perp} = 10 sin 30 = 5\n")[0] == "wrong"
+
+
+# BYJU'S (A 4 kg at 12 m/s catches B 8 kg at 4 m/s, e = 0.5), by hand: 80 = 4a + 8b, b - a = 4,
+# so a = 4 and b = 8 m/s. KE after = ½(4)(4²) + ½(8)(8²) = 32 + 256 = 288 J; KE before =
+# ½(4)(12²) + ½(8)(4²) = 288 + 64 = 352 J. Worked with 5 for A's velocity after the energy is
+# ½(4)(5²) + ½(8)(8²) = 50 + 256 = 306 J: its arithmetic is right, the energy is not.
+CATCH_WORK = "4(12) + 8(4) = 4a + 8b\nb - a = 0.5(12 - 4) = 4\na = 4 m/s, b = 8 m/s\n"
+
+
+@pytest.mark.parametrize(
+    "when",
+    ["just after", "immediately after", "right after", "just after the collision", "after impact", "(after)"],
+)
+def test_an_energy_named_at_a_moment_said_closely_is_judged(when: str) -> None:
+    name = "KE"
+    right = lines("byjus-4kg-ball-catches-8kg-ball", CATCH_WORK + f"{name} {when} = ½(4)(4)² + ½(8)(8)² = 288 J\n")
+    assert right[4][0] == "correct", right
+    wrong = lines("byjus-4kg-ball-catches-8kg-ball", CATCH_WORK + f"{name} {when} = ½(4)(5)² + ½(8)(8)² = 306 J\n")
+    assert wrong[4][0] == "wrong", wrong
+
+
+def test_an_energy_before_named_closely_is_judged() -> None:
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "KE immediately before = ½(4)(12)² + ½(8)(4)² = 352 J\n")
+    assert found[1][0] == "correct", found
+    found = lines("byjus-4kg-ball-catches-8kg-ball", "KE just before = ½(4)(12)² + ½(8)(5)² = 388 J\n")
+    assert found[1][0] == "wrong", found
+
+
+# The same (BYJU'S): the momentum before is 4(12) + 8(4) = 80 kg m/s, and after 4(4) + 8(8) = 80.
+# A's velocity after taken the other way: 4(-4) + 8(8) = 48, its arithmetic right, the momentum not.
+@pytest.mark.parametrize("p", ["p ", "p_", "total p "])
+def test_a_momentum_named_p_before_or_after_is_judged(p: str) -> None:
+    work = f"{p}before = 4(12) + 8(4) = 80\n{p}after = 4(4) + 8(8) = 80\n"
+    assert lines("byjus-4kg-ball-catches-8kg-ball", work) == {1: ("correct", ""), 2: ("correct", "")}
+    work = f"{p}before = 4(12) + 8(4) = 80\n{p}after = 4(-4) + 8(8) = 48\n"
+    assert lines("byjus-4kg-ball-catches-8kg-ball", work)[2][0] == "wrong"
+
+
+# OCR FM 2023 (A 5 kg at 4 m/s at 60° to the line of centres, B 3 kg at 6 m/s toward A, e = 3/4),
+# by hand: A's components 4 cos 60° = 2 along, 4 sin 60° = 3.46 across; 10 - 18 = -8 = 5a + 3b,
+# b - a = 0.75(2 + 6) = 6, so 8a = -26: a = -3.25, b = 2.75. A keeps 3.46 across: speed
+# √(3.25² + 3.46²) = 4.75. With e put on the component across too: 0.75 × 3.46 = 2.60 and
+# √(3.25² + 2.60²) = 4.16, carried.
+@pytest.mark.parametrize(("x", "y"), [("v_x", "v_y"), ("V_x", "V_y")])
+def test_the_other_component_of_a_velocity_read_along_x_is_its_component_across(x: str, y: str) -> None:
+    work = f"5(2) + 3(-6) = 5{x} + 3w\nw - {x} = 0.75(2 + 6) = 6\n-8 = 5{x} + 3({x} + 6), {x} = -3.25\n"
+    slip = lines(
+        "ocr-fm-2023-oblique-discs-60deg", work + f"{y} = 0.75 × 3.46 = 2.60\nspeed of A = √(3.25² + 2.60²) = 4.16\n"
+    )
+    assert [slip[k] for k in (4, 5)] == [("wrong", "e_on_t"), ("carried", "")], slip
+    right = lines("ocr-fm-2023-oblique-discs-60deg", work + f"{y} = 3.46\nspeed of A = √(3.25² + 3.46²) = 4.75\n")
+    assert {s for s, _ in right.values()} == {"correct"}, right

@@ -457,3 +457,59 @@ def test_names_declared_in_the_way_a_body_was_moving(way: str, work: str, seen: 
     lead = f"x and y are the velocities of P and Q after, both in the direction {way} was moving.\n"
     status = {"c": "correct", "w": "wrong", "k": "carried"}
     assert by_line(ZERO, lead + work) == {str(i + 2): status[s] for i, s in enumerate(seen)}
+
+
+# AQA M3 2007 Q6(a) (identical balls, B at rest, A at u at 30° to the line of centres), by hand:
+# along the line of centres A has u cos 30° = (√3/2)u. x + y = (√3/2)u and y - x = e(√3/2)u give
+# y = (√3/4)u(1 + e). The law upside down (x - y = e(√3/2)u): (1) - (2) gives 2y = (√3/2)u(1 - e),
+# y = (√3/4)u(1 - e). With equal masses the momentum holds whichever name is A's, and the law
+# upside down holds with the names swapped: only the order the names are met in grounds them.
+EQUAL = "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b"
+
+
+@pytest.mark.parametrize(("a", "b"), [("x", "y"), ("p", "q"), ("a", "b"), ("v_1", "v_2")])
+def test_equal_masses_a_law_upside_down_does_not_swap_the_names(a: str, b: str) -> None:
+    work = (
+        f"m u cos 30° = m{a} + m{b} ⟹ {a} + {b} = (√3/2)u  (1)\n{a} - {b} = e(√3/2)u  (2)\n"
+        f"(1) - (2): 2{b} = (√3/2)u - e(√3/2)u\n{b} = (√3/4)u(1 - e)"
+    )
+    assert by_line(EQUAL, work) == {"1": "correct", "2": "wrong", "3": "carried", "4": "carried"}
+
+
+@pytest.mark.parametrize(("a", "b"), [("x", "y"), ("a", "b")])
+def test_equal_masses_the_law_the_right_way_round_is_correct(a: str, b: str) -> None:
+    work = (
+        f"m u cos 30° = m{a} + m{b} ⟹ {a} + {b} = (√3/2)u  (1)\n{b} - {a} = e(√3/2)u  (2)\n"
+        f"(1) + (2): 2{b} = (√3/2)u + e(√3/2)u\n{b} = (√3/4)u(1 + e)"
+    )
+    assert set(by_line(EQUAL, work).values()) == {"correct"}, by_line(EQUAL, work)
+
+
+# OpenStax satellites (A 4000 kg at 0.250 m/s hits B 7500 kg at rest, e = 1), by hand:
+# v_A = (4000 - 7500)/11500 x 0.250 = -0.0761 m/s, v_B = 2(4000)/11500 x 0.250 = 0.174 m/s.
+# The masses swapped in v_A's formula, (7500 - 4000)/11500 (0.250) = +0.0761, holds only with u
+# taken as -0.250, which the student never wrote: the slip, not a frame the other way. With
+# -0.250 written for u the frame is the other way, and both lines hold in it.
+SATELLITES = "openstax-cp-8-satellites-elastic"
+V_B = "v_B = 2m_A/(m_A + m_B) u = 2(4000)/11500 ({u}) = {v} m/s"
+
+
+@pytest.mark.parametrize(
+    ("v_a", "u", "v", "seen"),
+    [
+        ("(7500 - 4000)/11500 (0.250) = 0.0761", "0.250", "0.174", {"1": "wrong", "2": "correct"}),
+        ("(4000 - 7500)/11500 (0.250) = -0.0761", "0.250", "0.174", {"1": "correct", "2": "correct"}),
+        ("(4000 - 7500)/11500 (-0.250) = 0.0761", "-0.250", "-0.174", {"1": "correct", "2": "correct"}),
+    ],
+)
+def test_a_frame_the_other_way_only_where_a_velocity_before_is_written_turned(v_a, u, v, seen) -> None:
+    work = f"v_A = (m_A - m_B)/(m_A + m_B) u = {v_a} m/s\n" + V_B.format(u=u, v=v)
+    assert by_line(SATELLITES, work) == seen
+
+
+@pytest.mark.parametrize("momentum", ["-0.3(3) + 0.2(2)", "0.2(2) - 0.3 × 3", "-(0.3)(3) + 0.2 × 2"])
+def test_a_frame_the_other_way_written_with_a_minus_before_a_product(momentum: str) -> None:
+    # AQA M3 2007 (above) with left positive: A's -3 and B's +2 before; after x = 0.6, y = -3.4
+    # (the mark scheme's -0.6 and 3.4 turned): -0.9 + 0.4 = -0.5 = 0.18 - 0.68, y - x = 0.8(-3 - 2) = -4
+    work = f"{momentum} = 0.3x + 0.2y\ny - x = 0.8(-3 - 2) = -4\nx = 0.6, y = -3.4"
+    assert set(by_line(HEAD_ON, work).values()) == {"correct"}, by_line(HEAD_ON, work)

@@ -101,8 +101,9 @@ def grounded(
         ours = {**mapping, **{p: c[1] for p, c in zip(group, a, strict=True)}}
         theirs = {**mapping, **{p: c[1] for p, c in zip(group, b, strict=True)}}
         every = all(x[1] == -y[1] for x, y in zip(a, b, strict=True))
-        won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth), every)
-        return won > 0 and (first or not every)
+        strict = every or _swapped(a, b)  # a law upside down reads as either: the first relation decides
+        won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth), strict)
+        return won > 0 and (first or not strict)
 
     natural = natural_of(best, options, sign)
     current = best if best != natural and wins(best, natural) else natural
@@ -110,6 +111,14 @@ def grounded(
         if wins(other, current):
             current = other
     return current
+
+
+def _swapped(a: Option, b: Option) -> bool:
+    """Whether two readings give the same velocities to the two names the other way round (x as
+    B's and y as A's): with one less the other in the impact rule that swap is the law written
+    upside down, and from it on the later lines hold either way; only the first relation the
+    names stand in (apart from that difference) may ground it, as a teacher reads x then y."""
+    return len(a) == 2 and a[0] == b[1] and a[1] == b[0] and a[0] != a[1]
 
 
 def _signs_of(combo: Option, options: list[Option]) -> list[Option]:
@@ -148,7 +157,7 @@ def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], 
         }
         for mine, other in zip(held[1], held[-1], strict=False):
             if mine != other:
-                return 1 if mine else -1
+                return 1 if mine or not _turned_written(ctx, ways[1], at) else -1
         if any(held[1]):
             if _moves(ctx, r.exprs, turned, found[1], at):
                 return 1  # it holds either way: derive's
@@ -156,6 +165,49 @@ def grounded_frame(ctx: Context, ways: dict[int, list], found: dict[int, dict], 
         if any(_evaluated(a, b, subs) for _t, (a, b), moved in sides[1][k] if moved):
             return None  # false either way (a slip): the relations that hold choose
     return None
+
+
+def _turned_written(ctx: Context, reads: list, at: tuple[dict, dict]) -> bool:
+    """Whether a frame the other way is written: in a direct impact of two free bodies whose
+    velocities before are given as numbers, a student taking the other way positive writes a
+    velocity before that is positive in derive's frame (A's 3.5 m/s) with a minus sign (``-3.5``,
+    ``- 0.3(3.5)``) somewhere. Where no such number is written, a relation that holds only the other way holds by a slip that turns a sign
+    (the masses swapped in ``(m_A - m_B)/(m_A + m_B) u = (27 - 22)/49 (3.5)``), not by the frame."""
+    givens = ctx.problem.givens
+    if (
+        ctx.problem.oblique
+        or ctx.problem.fixed_B
+        or any(g.value is None and not g.unknown and g.dim == VELOCITY for g in givens)
+    ):
+        return True  # components, letters, or a wall (its rebound written as a speed): numbers do not show it
+    pt, truth = at
+    before = [ctx.model.nm.A1n, ctx.model.nm.B1n]
+    values = [number_of(ctx.in_unknowns(c).xreplace(pt).xreplace(truth)) for c in before if c is not None]
+    positive = [v.real for v in values if v is not None and abs(v.imag) < 1e-12 and v.real > 1e-9]
+    if not positive:
+        return True
+    written = [float(n) for r in reads for term in _minus_terms(r.written) for n in _NUMBER.findall(term)]
+    return any(abs(w - v) <= 1e-6 + 5e-3 * v for w in written for v in positive)
+
+
+_NUMBER = re.compile(r"\d+(?:\.\d+)?")
+
+
+def _minus_terms(text: str) -> list[str]:
+    """Each term a minus sign is put before (``-3.5``, ``- 0.3(3)``, ``-(0.3 × 3)``): the text
+    after the sign up to the next sign or ``=`` outside brackets, or a bracket it is inside
+    closing (``{27-22}``: only 22)."""
+    out = []
+    for m in re.finditer(r"[-−]", text):
+        depth, k = 0, m.end()
+        while k < len(text):
+            c = text[k]
+            depth += 1 if c in "({[" else -1 if c in ")}]" else 0
+            if depth < 0 or (depth == 0 and c in "+-−=,;"):
+                break
+            k += 1
+        out.append(text[m.end() : k])
+    return out
 
 
 def _relative_only(exprs: tuple[sympy.Expr, ...], turned: set) -> bool:

@@ -391,16 +391,18 @@ def _knowns(ctx: Context) -> set[sympy.Expr]:
 
 def _by_analogy(unknown: list, mapping: dict, inferred: dict[str, str], named: dict) -> None:
     """A name still unknown whose n component was read (``v_At`` where ``v_An`` is v_A2n) is
-    the same velocity's t component (and the other way round)."""
-    swap = {"n": "t", "t": "n"}
+    the same velocity's t component (and the other way round); ``v_y`` where ``v_x`` is read, the
+    same velocity's other component, whichever of n and t x is."""
+    swap = {"n": "t", "t": "n", "x": "y", "y": "x"}
     for p in unknown:
         twin = sympy.Symbol(p.name[:-1] + swap.get(p.name[-1], "?"))
         e = mapping.get(twin)
         if p in mapping or e is None or p.name[-1] not in swap:
             continue
         sign, sym = (-1, -e) if isinstance(-e, sympy.Symbol) else (1, e)
-        if isinstance(sym, sympy.Symbol) and sym.name.endswith(swap[p.name[-1]]):
-            other = sympy.Symbol(sym.name[:-1] + p.name[-1], **sym.assumptions0)
+        component = isinstance(sym, sympy.Symbol) and sym.name[-1:] in ("n", "t")
+        if component and (p.name[-1] in "xy" or sym.name[-1] != p.name[-1]):
+            other = sympy.Symbol(sym.name[:-1] + swap[sym.name[-1]], **sym.assumptions0)
             if other in named:
                 mapping[p] = sign * other
                 inferred[p.name[1:]] = named.get(sign * other, other.name)

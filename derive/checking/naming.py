@@ -51,6 +51,10 @@ from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import DIMENSIONLESS, MASS
 
+#: "KE just after", "KE immediately before": the moment said more closely, the same energy.
+_JUST = r"(?:(?:just|immediately|right|directly)\s+)?"
+_KE = r"KE"  # not "kinetic energy": in a sentence ("kinetic energy after is 60% of ...") it is prose
+_EVENT = r"(?:\s+(?:the\s+)?(?:collision|impact|bounce|rebound|crash))?"  # "KE after the impact"
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
@@ -58,8 +62,8 @@ PHRASES = (
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),
-    (r"(?:KE[\s_]*(?:before|initial|1)|initial\s+KE|T_1)", "T_1"),  # KE before, KE_{before}
-    (r"(?:KE[\s_]*(?:after|final|2)|final\s+KE|T_2)", "T_2"),
+    (rf"(?:{_KE}[\s_]*\(?{_JUST}(?:before|initial|1)\)?{_EVENT}|initial\s+{_KE}|T_1)", "T_1"),  # KE_{before}
+    (rf"(?:{_KE}[\s_]*\(?{_JUST}(?:after|final|2)\)?{_EVENT}|final\s+{_KE}|T_2)", "T_2"),  # KE just after
     (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
     (r"(?:final\s+)?speed\s+of\s+([AB])(?![\w'])(?:\s+after)?", r"speed_\1"),  # not "speed of approach"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"

@@ -22,8 +22,8 @@ SAID_PHRASES = (
     (rf"(?:{_ENERGY})[\s_,]*(?:after|final|nachher|apr[eè]s|despu[eé]s|dopo|finale)(?!\w)", "T_2"),
     (rf"^\s*(?:{_LOST})\s*$", "T_lost"),
     (r"(?<![\w'])speed\s+before(?:\s+(?:the\s+)?(?:impact|bounce|collision))?(?![\w'])", "speed_before"),  # a wall's
-    (  # "momentum after = 0.8(-1.2) + 0.4v", "total momentum before": the two bodies' momentum, a side of its own
-        r"^\s*(?:the\s+)?(?:total\s+|system\s+)?momentum\s*_?\s*(before|after)(?:\s+(?:the\s+)?(?:collision|impact))?\s*$",
+    (  # "momentum after = 0.8(-1.2) + 0.4v", "total momentum before", "p before": the two bodies' momentum
+        r"^\s*(?:the\s+)?(?:total\s+|system\s+)?(?:momentum|(?-i:p))\s*_?\s*(before|after)(?:\s+(?:the\s+)?(?:collision|impact))?\s*$",
         r"p_\1",
     ),
     (
