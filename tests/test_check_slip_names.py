@@ -399,3 +399,39 @@ def test_a_total_of_the_data_copied_with_its_digits_moved_is_copied_wrong() -> N
     work = "V = \\frac{m_A v_A1 + m_B v_B1}{m_A + m_B} = \\frac{45000 - 13200}{206000} = 0.154\n"
     found = lines("openstax-cp-8-train-cars-couple", work)
     assert found[1][:2] == ("wrong", "copied_wrong")
+
+
+def test_a_chain_rule_of_motion_with_a_terms_2_lost_is_algebra() -> None:
+    # OCR M2 2007 chain: thrown down at 21 m/s from 40 m, g = 9.8: v1^2 = 21^2 + 2(9.8)(40) =
+    # 441 + 784 = 1225. The rule written v^2 = u^2 + gh gives 441 + 392 = 833 (the 2 of 2gh lost:
+    # a slip in the rule), and v1 = sqrt(833) = 28.86 is carried from it.
+    work = "down positive\n\nv1^2 = u^2 + gh = 21^2 + 9.8(40) = 833\nv1 = 28.86\n"
+    found = lines("chain-ocr-m2-2007-rebounds-to-start", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+
+
+def test_a_chain_speed_put_in_without_its_square_is_arithmetic() -> None:
+    # OCR M2 2015 chain: 5 m/s down from 1.6 m, e = 0.7, g = 9.8: v_1^2 = 25 + 31.36 = 56.36,
+    # v_1 = 7.507, v_2 = 0.7(7.507) = 5.255, and h_2 = 5.255^2/19.6 = 1.409. Put in as 5.255
+    # (the square left off) it is 5.255/19.6 = 0.268: a number worked wrongly.
+    work = (
+        "down positive\n\nv_1^2 = 5^2 + 2(9.8)(1.6) = 56.36\nv_1 = 7.507\nv_2 = 0.7(7.507) = 5.255\n"
+        "h_2 = v_2^2/(2g) = 5.255/(2(9.8)) = 0.268\n"
+    )
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert [found[n][0] for n in (3, 4, 5)] == ["correct"] * 3
+    assert found[6][:2] == ("wrong", "arithmetic")
+
+
+def test_a_chain_sum_of_numbers_worked_wrongly_after_its_rule_is_arithmetic() -> None:
+    # OCR M2 2015 chain: 5 m/s down from 1.6 m, g = 9.8: v_1^2 = 25 + 2(9.8)(1.6) = 25 + 31.36.
+    # Written 25 + 13.36 = 38.36 (a number worked wrongly, the rule and the numbers put in right),
+    # then v_1 = sqrt(38.36) = 6.19 carried. The u and h declared are the student's own.
+    work = (
+        "down = +ve.   u = 5 m/s, h = 1.6 m, g = 9.8\n\n"
+        "v_1^2 = u^2 + 2gh = 5^2 + 2(9.8)(1.6) = 25 + 13.36 = 38.36\nv_1 = 6.19\n"
+    )
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"

@@ -103,7 +103,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and (_solved_wrongly(exprs, previous, sides) or chainsolve.number_worked(exprs, previous)):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
+            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message, sides)
             if flip:  # a sign lost, a ½ dropped, e's ratio upside down
                 item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
         if item.status in ("wrong", "carried"):
