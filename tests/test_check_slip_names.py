@@ -435,3 +435,26 @@ def test_a_chain_sum_of_numbers_worked_wrongly_after_its_rule_is_arithmetic() ->
     found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
     assert found[3][:2] == ("wrong", "arithmetic")
     assert found[4][0] == "carried"
+
+
+def test_a_given_velocity_put_in_with_its_sign_lost_is_b_sign() -> None:
+    # AQA FM specimen: A 0.8 kg at 6, B 0.4 kg at 6 toward A, A comes back at 1.2:
+    # 4.8 - 2.4 = -0.96 + 0.4 v_B, v_B = 8.4, e = (8.4 - (-1.2))/(6 - (-6)) = 0.8. A's -1.2 put
+    # in as +1.2 in the separation, (8.4 - 1.2)/12 = 0.6: a velocity the wrong way, carried on.
+    work = (
+        "0.8(6) + 0.4(-6) = 0.8(-1.2) + 0.4 v_B\nv_B = 8.4\n"
+        "e = (v_B - v_A)/(u_A - u_B) = (8.4 - 1.2)/(6 + 6)\ne = 0.6\n"
+    )
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[3][:2] == ("wrong", "b_sign")
+    assert found[4][0] == "carried"
+
+
+def test_bs_component_before_worked_with_its_sign_lost_is_b_sign() -> None:
+    # Notes 4.C.11: B at 15 m/s, at 142.4 deg to n: its n component is 15 cos 142.4 = -11.88
+    # (B moves against n). Written +11.88 it is B's velocity the wrong way; A's 5 cos 142.4 =
+    # -3.96 written 3.96 is no velocity of the problem (A's is +3.96): an arithmetic slip.
+    found = lines("notes-4c11-two-spheres", "B before, along n: 15 cos 142.4° = 11.88\n")
+    assert found[1][:2] == ("wrong", "b_sign")
+    found = lines("notes-4c11-two-spheres", "5 cos 142.4° = 3.96\n")
+    assert found[1][:2] == ("wrong", "arithmetic")
