@@ -68,12 +68,37 @@ def test_a_letter_lost_in_taking_a_factor_out_is_algebra_a_number_is_arithmetic(
     assert found[5][:2] == ("wrong", "arithmetic")
 
 
-def test_a_sum_worked_wrongly_with_no_term_shown_moved_is_arithmetic() -> None:
-    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 shows no 4 moved across: a teacher
-    # marks the number (10 - 4 = 6, not 14), arithmetic.
+def test_a_number_moved_across_with_its_sign_kept_unshown_is_algebra() -> None:
+    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 is 10 + 4: the 4 moved across with its
+    # sign kept, though the line does not show it (most teachers of the corpus mark it algebra,
+    # a sign lost in rearranging; one marked the sum). 10 - 4 = 5 is a number worked wrongly.
     work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\nv_B2 = 14\n"
     found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("= 14", "= 5"))
     assert found[3][:2] == ("wrong", "arithmetic")
+    # AQA M3 2007: 0.3 kg at 3, 0.2 kg at 2 toward it, e = 0.8: 0.5 = 0.3 v_A + 0.2 v_B and
+    # v_B = v_A + 4, so 0.5 = 0.5 v_A + 0.8 and 0.5 v_A = -0.3. Written 0.5 v_A = 1.3 (0.5 + 0.8:
+    # the 0.8 moved with its sign kept), v_A = 2.6 carried.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A + 0.2 v_B\nv_B - v_A = 0.8(3 + 2) = 4\n0.5 = 0.3 v_A + 0.2(v_A + 4)\n"
+        "0.5 = 0.5 v_A + 0.8\n0.5 v_A = 1.3\nv_A = 2.6\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+    assert found[5][:2] == ("wrong", "algebra")
+    assert found[6][0] == "carried"
+
+
+def test_a_product_worked_wrongly_with_the_unknowns_term_kept_is_arithmetic() -> None:
+    # OCR MEI 2021 (find e): A (2 kg) at 6, B (4 kg) leaves along the line at 2.5: 12 = 2 v_A + 10,
+    # v_A = 1. Written 12 = 2 v_A + 8 (4 x 2.5 worked as 8), the 2 v_A kept as it was: a number
+    # worked wrongly, though 12 = v_A + 10 (the 2 dropped) would give the same v_A = 2.
+    work = "\\[ 2 \\times 6 + 4 \\times 0 = 2 v_{A} + 4 \\times 2.5 \\]\n\\[ 12 = 2 v_{A} + 8 \\]\n\\[ v_{A} = 2 \\]\n"
+    found = lines("ocr-mei-fmm-2021-b-at-45deg-find-e", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"
 
 
 def test_kinetic_energy_after_as_e_times_the_energy_before_is_ke_formula() -> None:
