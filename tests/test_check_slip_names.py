@@ -483,3 +483,18 @@ def test_bs_component_before_worked_with_its_sign_lost_is_b_sign() -> None:
     assert found[1][:2] == ("wrong", "b_sign")
     found = lines("notes-4c11-two-spheres", "5 cos 142.4° = 3.96\n")
     assert found[1][:2] == ("wrong", "arithmetic")
+
+
+def test_e_upside_down_after_an_earlier_slip_is_restitution_reversed_on_the_carried_values() -> None:
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, A goes on at 2: 10 = 4 + v_B2, v_B2 = 6,
+    # e = (6 - 2)/5 = 0.8. Written v_B2 = 5 (a number worked wrongly), then e as approach over
+    # separation with that 5: 5/(5 - 2) = 1.67, the ratio upside down on the student's values
+    # (right side up it would be 3/5 = 0.6, carried).
+    work = "2(5) + 1(0) = 2(2) + 1 v_B2\nv_B2 = 5\ne = 5/(5 - 2) = 1.67\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    found = lines(
+        "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("e = 5/(5 - 2) = 1.67", "e = 3/5 = 0.6")
+    )
+    assert found[3][0] == "carried"
