@@ -498,3 +498,15 @@ def test_e_upside_down_after_an_earlier_slip_is_restitution_reversed_on_the_carr
         "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("e = 5/(5 - 2) = 1.67", "e = 3/5 = 0.6")
     )
     assert found[3][0] == "carried"
+
+
+def test_weights_as_masses_in_a_result_after_an_earlier_slip_is_weight_as_mass() -> None:
+    # Two cars (M. Casco): 4500 lb at 3 ft/s, 3000 lb at 6 ft/s toward it, lock together;
+    # g = 32.2: masses 139.75 and 93.17 slug. B's sign lost in the momentum: (419.25 + 559.0)/232.92
+    # = 4.2 ft/s (carried). The energy after with the weights as masses on that 4.2:
+    # ½(7500)(4.2²) = 66150: the weights' mistake made afresh on the student's own velocity.
+    work = "139.75(3) + 93.17(6) = 232.92 V\nV = 4.2\nKE after = 1/2 (7500)(4.2)^2 = 66150\n"
+    found = lines("mcasco-two-cars-no-bounce", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert found[2][0] == "carried"
+    assert found[3][:2] == ("wrong", "weight_as_mass")
