@@ -510,3 +510,13 @@ def test_weights_as_masses_in_a_result_after_an_earlier_slip_is_weight_as_mass()
     assert found[1][:2] == ("wrong", "b_sign")
     assert found[2][0] == "carried"
     assert found[3][:2] == ("wrong", "weight_as_mass")
+
+
+def test_a_two_figure_number_that_is_not_the_value_rounded_is_arithmetic_not_rounded_too_early() -> None:
+    # OCR M2 2006 (find e): 2(5) + 1(0) = 2(2) + v_B2, so 10 = 4 + v_B2. Written 9.8 = 4 + v_B2:
+    # 9.8 has two figures, but 10 rounded to two figures is 10, not 9.8: a number worked wrongly,
+    # and v_B2 = 5.8 is carried from it.
+    work = "2(5) + 1(0) = 2(2) + v_B2\n9.8 = 4 + v_B2\nv_B2 = 5.8\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"
