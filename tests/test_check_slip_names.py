@@ -520,3 +520,22 @@ def test_a_two_figure_number_that_is_not_the_value_rounded_is_arithmetic_not_rou
     found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
     assert found[2][:2] == ("wrong", "arithmetic")
     assert found[3][0] == "carried"
+
+
+def test_a_sign_lost_inside_a_formula_is_algebra() -> None:
+    # Edexcel M4 (identical spheres, A at 30 deg to the line of centres, B at rest): along the
+    # line A keeps (sqrt3/4) u (1 - e), across it u/2, so tan(beta) = 2/(sqrt3 (1 - e)) and the
+    # deflection theta = beta - 30 has tan(theta) = (tan beta - tan 30)/(1 + tan beta tan 30).
+    # Written with 1 - tan beta tan 30 below: one sign inside the formula lost (algebra). With
+    # the denominator squared as well, no one sign puts it right: no name.
+    work = (
+        "Along the line of centres after: v_1 = (sqrt(3)/4) u (1 - e); across it A keeps u/2.\n\n"
+        "tan(beta) = (u/2)/v_1 = 2/(sqrt(3)(1 - e))\n\nA is deflected through theta = beta - 30°\n\n"
+        "tan(theta) = (tan(beta) - tan(30°))/(1 - tan(beta) tan(30°))\n"
+    )
+    problem = "edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg"
+    found = lines(problem, work)
+    assert [found[n][0] for n in (1, 3, 5)] == ["correct"] * 3
+    assert found[7][:2] == ("wrong", "algebra")
+    found = lines(problem, work.replace("(1 - tan(beta) tan(30°))", "(1 - tan(beta) tan(30°))^2"))
+    assert found[7][:2] == ("wrong", "")

@@ -17,6 +17,7 @@ from typing import Any
 
 import sympy
 
+from derive.checking import nestedsigns
 from derive.checking.carried import sides
 from derive.checking.context import DEG
 
@@ -30,7 +31,10 @@ COMPONENT = ": it has the sign of B's component lost (B moves against that direc
 
 def named(trace: Any, line: Any, item: Any) -> Any:
     """``item`` (the verdict of ``line``) named ``b_sign`` where its arithmetic slip is a given
-    velocity's sign lost (see the module); ``item`` as it is otherwise."""
+    velocity's sign lost (see the module), ``algebra`` where a slip not named is a sign lost inside
+    a formula (:mod:`.nestedsigns`); ``item`` as it is otherwise."""
+    if item is not None and item.status == "wrong" and not item.slip and line.exprs is not None:
+        return nestedsigns.sign_inside(trace, line, item)  # a sign lost inside a formula: algebra
     if item is None or item.status != "wrong" or item.slip != "arithmetic" or item.again or line.exprs is None:
         return item
     if len(line.sides) < 2 or len(line.exprs) != len(line.sides):
