@@ -539,3 +539,18 @@ def test_a_sign_lost_inside_a_formula_is_algebra() -> None:
     assert found[7][:2] == ("wrong", "algebra")
     found = lines(problem, work.replace("(1 - tan(beta) tan(30°))", "(1 - tan(beta) tan(30°))^2"))
     assert found[7][:2] == ("wrong", "")
+
+
+def test_a_chain_line_halved_but_for_one_term_is_algebra() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 hits B, B hits C, C leaves at 4): after the
+    # first impact 2 v2 = 7 + 7e, v2 = 7(1 + e)/2; after the second 2 w2 = v2 + e v2, so
+    # w2 = v2(1 + e)/2. Written w2 = v2/2 + e v2, the e v2 not halved: a slip in rearranging.
+    work = (
+        "all masses m, -> positive\nA hits B:  A 7 -> , B at rest. After: A v1, B v2\n"
+        "v1 + v2 = 7\nv2 - v1 = 7e\n2 v2 = 7 + 7e\nv2 = 7/2 + 7e/2\n"
+        "B hits C:  B at v2, C at rest. After: B w1, C w2\nw1 + w2 = v2\nw2 - w1 = e v2\n"
+        "2 w2 = v2 + e v2\nw2 = v2/2 + e v2\n"
+    )
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert all(found[n][0] == "correct" for n in (3, 4, 5, 6, 8, 9, 10))
+    assert found[11][:2] == ("wrong", "algebra")

@@ -39,7 +39,7 @@ from derive.checking.stageslips import (
     stage_mistakes,
     unnamed_number,
 )
-from derive.checking.termslips import term_slip
+from derive.checking.termslips import halved, term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -96,7 +96,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             holds = partial(_holds, ctx, subs=[true_defs, values])
             item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
         if item.status == "wrong" and not item.again and not item.slip:
-            item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+            item = halved(item, exprs, previous) or _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
             at = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = rule_named(ctx, item, (sides, exprs), reread, at)
             if not item.slip and copied_into_working(ctx, sides, exprs, at):

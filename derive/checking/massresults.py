@@ -9,17 +9,19 @@ sin and cos swapped) is the weight's mistake made afresh on the student's values
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from derive.checking import mistakes
 from derive.checking.context import Context
 from derive.checking.mistakes import Mistake
-from derive.checking.slipnames import Holds, _holds_with
 from derive.checking.worlds import Pair
 
 
-def masses_in_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
+def masses_in_results(ctx: Context, bad: Pair, holds_with: Callable[[dict], bool]) -> list[Mistake]:
     """The mistakes of the masses (the weights as masses, the masses swapped) whose masses in the
-    results on the line, worked from the velocities after as ``holds`` has them and the values
-    before as they are or as a mistake has them (an earlier slip's), make ``bad`` hold:
+    results on the line, worked from the velocities after as the judge has them and the values
+    before as they are or as a mistake has them (an earlier slip's), make ``bad`` hold
+    (``holds_with``: whether it holds with those values put in):
     ``J = (47)(3.60 - 0)`` with 47 lb a weight, 3.60 carried from sin and cos swapped."""
     model = ctx.model
     built = [(m, v) for m in mistakes.REGISTRY.values() if (v := m.build(model)) is not None]
@@ -32,7 +34,7 @@ def masses_in_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
         for pre in pres:
             given = {**subs, **pre}
             results = {sym: x.xreplace(given) for sym, x in ctx.derived().values()}
-            if _holds_with(ctx, bad, {**results, **given}, holds):
+            if holds_with({**results, **given}):
                 found.append(m)
                 break
     return found

@@ -27,6 +27,7 @@ import sympy
 
 from derive.checking import energyforms, mistakes, rearranging
 from derive.checking.context import DEG, Context
+from derive.checking.massresults import masses_in_results
 from derive.checking.mistakes import Mistake
 from derive.checking.relations import coefficients
 from derive.checking.worlds import NUMBER_SIDE, Pair
@@ -90,9 +91,7 @@ def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
         subs = {s: x for s, x in subs.items() if x is not None}
         if subs and _holds_with(ctx, bad, subs, holds):
             found.append(o.mistake)
-    from derive.checking.massresults import masses_in_results  # it builds on this module
-
-    return found or (masses_in_results(ctx, bad, holds) if names else [])
+    return found or (masses_in_results(ctx, bad, lambda subs: _holds_with(ctx, bad, subs, holds)) if names else [])
 
 
 def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: Holds) -> bool:

@@ -13,7 +13,9 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import replace
 from functools import partial
+from typing import Any
 
 import sympy
 
@@ -90,3 +92,30 @@ def _terms(s: str) -> list[tuple[int, int]]:
             start = i + 1
     spans.append((start, len(s)))
     return [(a, b) for a, b in spans if s[a:b].strip()]
+
+
+#: What a report says of a line that divides through the relation before it but for one term.
+UNDIVIDED = (
+    ": it divides the line before through by the unknown's coefficient but for one term (a slip in rearranging)."
+)
+
+
+def halved(item: Any, exprs: list[sympy.Expr], previous: list[sympy.Expr]) -> Any:
+    """``item`` (a chain's wrong line, not yet named) named ``algebra`` where it is the relation
+    just before (which held), ``c x = a + b``, halved (divided through by ``c``) but for one term
+    (``v2 = 3.5 + 7e`` from ``2 v2 = 7 + 7e``: the 7e not halved); None otherwise."""
+    if len(exprs) != 2 or len(previous) != 2 or not exprs[0].is_Symbol:
+        return None
+    x = exprs[0]
+    for lhs, rhs in (previous, previous[::-1]):
+        c = sympy.expand(lhs).coeff(x)
+        if not c.is_number or c in (0, 1, -1) or sympy.expand(lhs - c * x) != 0 or rhs.has(x):
+            continue
+        terms = sympy.Add.make_args(sympy.expand(rhs))
+        if len(terms) < 2:
+            continue
+        for t in terms:
+            if sympy.expand(exprs[1] - ((rhs - t) / c + t)) == 0:
+                lead = item.message.split(":")[0]
+                return replace(item, slip="algebra", message=f"{lead}{UNDIVIDED}")
+    return None

@@ -19,6 +19,7 @@ from derive.checking import stepslips
 from derive.checking.carried import Trace, sides
 from derive.checking.rearranging import FACTORS
 from derive.checking.slipnames import FLIPPED, Previous, sign_of_a_term, solving_slip
+from derive.checking.stepslips import halved  # noqa: F401  (chainlines' import)
 from derive.checking.worlds import Pair
 
 if TYPE_CHECKING:
