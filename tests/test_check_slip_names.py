@@ -68,12 +68,37 @@ def test_a_letter_lost_in_taking_a_factor_out_is_algebra_a_number_is_arithmetic(
     assert found[5][:2] == ("wrong", "arithmetic")
 
 
-def test_a_sum_worked_wrongly_with_no_term_shown_moved_is_arithmetic() -> None:
-    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 shows no 4 moved across: a teacher
-    # marks the number (10 - 4 = 6, not 14), arithmetic.
+def test_a_number_moved_across_with_its_sign_kept_unshown_is_algebra() -> None:
+    # OCR M2 2006 again: 10 = 4 + v_B2 then v_B2 = 14 is 10 + 4: the 4 moved across with its
+    # sign kept, though the line does not show it (most teachers of the corpus mark it algebra,
+    # a sign lost in rearranging; one marked the sum). 10 - 4 = 5 is a number worked wrongly.
     work = "2(5) + 0 = 2(2) + v_B2\n10 = 4 + v_B2\nv_B2 = 14\n"
     found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("= 14", "= 5"))
     assert found[3][:2] == ("wrong", "arithmetic")
+    # AQA M3 2007: 0.3 kg at 3, 0.2 kg at 2 toward it, e = 0.8: 0.5 = 0.3 v_A + 0.2 v_B and
+    # v_B = v_A + 4, so 0.5 = 0.5 v_A + 0.8 and 0.5 v_A = -0.3. Written 0.5 v_A = 1.3 (0.5 + 0.8:
+    # the 0.8 moved with its sign kept), v_A = 2.6 carried.
+    work = (
+        "0.3(3) + 0.2(-2) = 0.3 v_A + 0.2 v_B\nv_B - v_A = 0.8(3 + 2) = 4\n0.5 = 0.3 v_A + 0.2(v_A + 4)\n"
+        "0.5 = 0.5 v_A + 0.8\n0.5 v_A = 1.3\nv_A = 2.6\n"
+    )
+    found = lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert [found[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4
+    assert found[5][:2] == ("wrong", "algebra")
+    assert found[6][0] == "carried"
+
+
+def test_a_product_worked_wrongly_with_the_unknowns_term_kept_is_arithmetic() -> None:
+    # OCR MEI 2021 (find e): A (2 kg) at 6, B (4 kg) leaves along the line at 2.5: 12 = 2 v_A + 10,
+    # v_A = 1. Written 12 = 2 v_A + 8 (4 x 2.5 worked as 8), the 2 v_A kept as it was: a number
+    # worked wrongly, though 12 = v_A + 10 (the 2 dropped) would give the same v_A = 2.
+    work = "\\[ 2 \\times 6 + 4 \\times 0 = 2 v_{A} + 4 \\times 2.5 \\]\n\\[ 12 = 2 v_{A} + 8 \\]\n\\[ v_{A} = 2 \\]\n"
+    found = lines("ocr-mei-fmm-2021-b-at-45deg-find-e", work)
+    assert found[1][0] == "correct"
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"
 
 
 def test_kinetic_energy_after_as_e_times_the_energy_before_is_ke_formula() -> None:
@@ -399,3 +424,133 @@ def test_a_total_of_the_data_copied_with_its_digits_moved_is_copied_wrong() -> N
     work = "V = \\frac{m_A v_A1 + m_B v_B1}{m_A + m_B} = \\frac{45000 - 13200}{206000} = 0.154\n"
     found = lines("openstax-cp-8-train-cars-couple", work)
     assert found[1][:2] == ("wrong", "copied_wrong")
+
+
+def test_a_chain_rule_of_motion_with_a_terms_2_lost_is_algebra() -> None:
+    # OCR M2 2007 chain: thrown down at 21 m/s from 40 m, g = 9.8: v1^2 = 21^2 + 2(9.8)(40) =
+    # 441 + 784 = 1225. The rule written v^2 = u^2 + gh gives 441 + 392 = 833 (the 2 of 2gh lost:
+    # a slip in the rule), and v1 = sqrt(833) = 28.86 is carried from it.
+    work = "down positive\n\nv1^2 = u^2 + gh = 21^2 + 9.8(40) = 833\nv1 = 28.86\n"
+    found = lines("chain-ocr-m2-2007-rebounds-to-start", work)
+    assert found[3][:2] == ("wrong", "algebra")
+    assert found[4][0] == "carried"
+
+
+def test_a_chain_speed_put_in_without_its_square_is_arithmetic() -> None:
+    # OCR M2 2015 chain: 5 m/s down from 1.6 m, e = 0.7, g = 9.8: v_1^2 = 25 + 31.36 = 56.36,
+    # v_1 = 7.507, v_2 = 0.7(7.507) = 5.255, and h_2 = 5.255^2/19.6 = 1.409. Put in as 5.255
+    # (the square left off) it is 5.255/19.6 = 0.268: a number worked wrongly.
+    work = (
+        "down positive\n\nv_1^2 = 5^2 + 2(9.8)(1.6) = 56.36\nv_1 = 7.507\nv_2 = 0.7(7.507) = 5.255\n"
+        "h_2 = v_2^2/(2g) = 5.255/(2(9.8)) = 0.268\n"
+    )
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert [found[n][0] for n in (3, 4, 5)] == ["correct"] * 3
+    assert found[6][:2] == ("wrong", "arithmetic")
+
+
+def test_a_chain_sum_of_numbers_worked_wrongly_after_its_rule_is_arithmetic() -> None:
+    # OCR M2 2015 chain: 5 m/s down from 1.6 m, g = 9.8: v_1^2 = 25 + 2(9.8)(1.6) = 25 + 31.36.
+    # Written 25 + 13.36 = 38.36 (a number worked wrongly, the rule and the numbers put in right),
+    # then v_1 = sqrt(38.36) = 6.19 carried. The u and h declared are the student's own.
+    work = (
+        "down = +ve.   u = 5 m/s, h = 1.6 m, g = 9.8\n\n"
+        "v_1^2 = u^2 + 2gh = 5^2 + 2(9.8)(1.6) = 25 + 13.36 = 38.36\nv_1 = 6.19\n"
+    )
+    found = lines("chain-ocr-m2-2015-thrown-down-bounce", work)
+    assert found[3][:2] == ("wrong", "arithmetic")
+    assert found[4][0] == "carried"
+
+
+def test_a_given_velocity_put_in_with_its_sign_lost_is_b_sign() -> None:
+    # AQA FM specimen: A 0.8 kg at 6, B 0.4 kg at 6 toward A, A comes back at 1.2:
+    # 4.8 - 2.4 = -0.96 + 0.4 v_B, v_B = 8.4, e = (8.4 - (-1.2))/(6 - (-6)) = 0.8. A's -1.2 put
+    # in as +1.2 in the separation, (8.4 - 1.2)/12 = 0.6: a velocity the wrong way, carried on.
+    work = (
+        "0.8(6) + 0.4(-6) = 0.8(-1.2) + 0.4 v_B\nv_B = 8.4\n"
+        "e = (v_B - v_A)/(u_A - u_B) = (8.4 - 1.2)/(6 + 6)\ne = 0.6\n"
+    )
+    found = lines("aqa-fm-specimen-discs-show-e-0p8", work)
+    assert found[3][:2] == ("wrong", "b_sign")
+    assert found[4][0] == "carried"
+
+
+def test_bs_component_before_worked_with_its_sign_lost_is_b_sign() -> None:
+    # Notes 4.C.11: B at 15 m/s, at 142.4 deg to n: its n component is 15 cos 142.4 = -11.88
+    # (B moves against n). Written +11.88 it is B's velocity the wrong way; A's 5 cos 142.4 =
+    # -3.96 written 3.96 is no velocity of the problem (A's is +3.96): an arithmetic slip.
+    found = lines("notes-4c11-two-spheres", "B before, along n: 15 cos 142.4° = 11.88\n")
+    assert found[1][:2] == ("wrong", "b_sign")
+    found = lines("notes-4c11-two-spheres", "5 cos 142.4° = 3.96\n")
+    assert found[1][:2] == ("wrong", "arithmetic")
+
+
+def test_e_upside_down_after_an_earlier_slip_is_restitution_reversed_on_the_carried_values() -> None:
+    # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, A goes on at 2: 10 = 4 + v_B2, v_B2 = 6,
+    # e = (6 - 2)/5 = 0.8. Written v_B2 = 5 (a number worked wrongly), then e as approach over
+    # separation with that 5: 5/(5 - 2) = 1.67, the ratio upside down on the student's values
+    # (right side up it would be 3/5 = 0.6, carried).
+    work = "2(5) + 1(0) = 2(2) + 1 v_B2\nv_B2 = 5\ne = 5/(5 - 2) = 1.67\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][:2] == ("wrong", "restitution_reversed")
+    found = lines(
+        "ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work.replace("e = 5/(5 - 2) = 1.67", "e = 3/5 = 0.6")
+    )
+    assert found[3][0] == "carried"
+
+
+def test_weights_as_masses_in_a_result_after_an_earlier_slip_is_weight_as_mass() -> None:
+    # Two cars (M. Casco): 4500 lb at 3 ft/s, 3000 lb at 6 ft/s toward it, lock together;
+    # g = 32.2: masses 139.75 and 93.17 slug. B's sign lost in the momentum: (419.25 + 559.0)/232.92
+    # = 4.2 ft/s (carried). The energy after with the weights as masses on that 4.2:
+    # ½(7500)(4.2²) = 66150: the weights' mistake made afresh on the student's own velocity.
+    work = "139.75(3) + 93.17(6) = 232.92 V\nV = 4.2\nKE after = 1/2 (7500)(4.2)^2 = 66150\n"
+    found = lines("mcasco-two-cars-no-bounce", work)
+    assert found[1][:2] == ("wrong", "b_sign")
+    assert found[2][0] == "carried"
+    assert found[3][:2] == ("wrong", "weight_as_mass")
+
+
+def test_a_two_figure_number_that_is_not_the_value_rounded_is_arithmetic_not_rounded_too_early() -> None:
+    # OCR M2 2006 (find e): 2(5) + 1(0) = 2(2) + v_B2, so 10 = 4 + v_B2. Written 9.8 = 4 + v_B2:
+    # 9.8 has two figures, but 10 rounded to two figures is 10, not 9.8: a number worked wrongly,
+    # and v_B2 = 5.8 is carried from it.
+    work = "2(5) + 1(0) = 2(2) + v_B2\n9.8 = 4 + v_B2\nv_B2 = 5.8\n"
+    found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
+    assert found[2][:2] == ("wrong", "arithmetic")
+    assert found[3][0] == "carried"
+
+
+def test_a_sign_lost_inside_a_formula_is_algebra() -> None:
+    # Edexcel M4 (identical spheres, A at 30 deg to the line of centres, B at rest): along the
+    # line A keeps (sqrt3/4) u (1 - e), across it u/2, so tan(beta) = 2/(sqrt3 (1 - e)) and the
+    # deflection theta = beta - 30 has tan(theta) = (tan beta - tan 30)/(1 + tan beta tan 30).
+    # Written with 1 - tan beta tan 30 below: one sign inside the formula lost (algebra). With
+    # the denominator squared as well, no one sign puts it right: no name.
+    work = (
+        "Along the line of centres after: v_1 = (sqrt(3)/4) u (1 - e); across it A keeps u/2.\n\n"
+        "tan(beta) = (u/2)/v_1 = 2/(sqrt(3)(1 - e))\n\nA is deflected through theta = beta - 30°\n\n"
+        "tan(theta) = (tan(beta) - tan(30°))/(1 - tan(beta) tan(30°))\n"
+    )
+    problem = "edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg"
+    found = lines(problem, work)
+    assert [found[n][0] for n in (1, 3, 5)] == ["correct"] * 3
+    assert found[7][:2] == ("wrong", "algebra")
+    found = lines(problem, work.replace("(1 - tan(beta) tan(30°))", "(1 - tan(beta) tan(30°))^2"))
+    assert found[7][:2] == ("wrong", "")
+
+
+def test_a_chain_line_halved_but_for_one_term_is_algebra() -> None:
+    # Edexcel M2 three particles (equal masses, A at 7 hits B, B hits C, C leaves at 4): after the
+    # first impact 2 v2 = 7 + 7e, v2 = 7(1 + e)/2; after the second 2 w2 = v2 + e v2, so
+    # w2 = v2(1 + e)/2. Written w2 = v2/2 + e v2, the e v2 not halved: a slip in rearranging.
+    work = (
+        "all masses m, -> positive\nA hits B:  A 7 -> , B at rest. After: A v1, B v2\n"
+        "v1 + v2 = 7\nv2 - v1 = 7e\n2 v2 = 7 + 7e\nv2 = 7/2 + 7e/2\n"
+        "B hits C:  B at v2, C at rest. After: B w1, C w2\nw1 + w2 = v2\nw2 - w1 = e v2\n"
+        "2 w2 = v2 + e v2\nw2 = v2/2 + e v2\n"
+    )
+    found = lines("chain-edexcel-m2-three-particles", work)
+    assert all(found[n][0] == "correct" for n in (3, 4, 5, 6, 8, 9, 10))
+    assert found[11][:2] == ("wrong", "algebra")

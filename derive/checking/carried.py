@@ -296,6 +296,26 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
         world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
         if world is not None and trace.holds([bad], world):
             return m, min(changed)
+    return _in_forms(trace, bad, own)
+
+
+def _in_forms(trace: Trace, bad: Pair, own: set[int]) -> tuple[Mistake, int] | None:
+    """A further slip that is one of a mistake's other forms (:data:`~.mistakes.registry.FORMS`:
+    e as approach over separation) made on the student's equations so far, the values before the
+    impact as the student has them (a given copied wrongly kept) or as they are."""
+    from derive.checking.mistakes.registry import FORMS
+
+    model = trace.ctx.model
+    for name, form in FORMS.items():
+        m = REGISTRY.get(name)
+        for under in (model.under(trace.variant), model) if m is not None else ():
+            for eqs in form(under, trace.variant):
+                changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
+                if not changed or all(trace.equations[j] == F for j, F in changed.items()):
+                    continue
+                world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
+                if world is not None and trace.holds([bad], world):
+                    return m, min(changed)
     return None
 
 

@@ -39,7 +39,7 @@ from derive.checking.stageslips import (
     stage_mistakes,
     unnamed_number,
 )
-from derive.checking.termslips import term_slip
+from derive.checking.termslips import halved, term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -96,14 +96,14 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             holds = partial(_holds, ctx, subs=[true_defs, values])
             item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
         if item.status == "wrong" and not item.again and not item.slip:
-            item = _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+            item = halved(item, exprs, previous) or _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
             at = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = rule_named(ctx, item, (sides, exprs), reread, at)
             if not item.slip and copied_into_working(ctx, sides, exprs, at):
                 item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
             if not item.slip and (_solved_wrongly(exprs, previous, sides) or chainsolve.number_worked(exprs, previous)):
                 item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message)
+            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message, sides)
             if flip:  # a sign lost, a ½ dropped, e's ratio upside down
                 item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
         if item.status in ("wrong", "carried"):

@@ -37,9 +37,11 @@ def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
 
 def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
     """``held`` (left − right) with one term changed as a slip in rearranging changes it: its
-    sign (a term written on ``bad``: ``2v = 7.1`` from ``7 = 0.1 + 2v`` shows no 0.1 moved, and
-    a teacher marks it as the sum worked wrongly), its numeric coefficient dropped or the term halved or doubled (a term
-    in the unknowns)."""
+    sign (a term in letters written on ``bad``; a number whether shown or not: ``2v = 7.1`` from
+    ``7 = 0.1 + 2v`` moves the 0.1 across with its sign kept, as most teachers of the corpus
+    mark it), its numeric coefficient dropped or the term halved or doubled (a term in the
+    unknowns that ``bad`` does not show as it was: ``12 = 2v + 8`` from ``12 = 2v + 10`` keeps
+    2v, and only its number is worked wrongly)."""
     sides = (held.left, held.right)
     out = []
     through = _through(held, unknowns)
@@ -47,8 +49,8 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
     for i, side in enumerate(sides):
         sign = 1 if i == 0 else -1
         for t in sympy.Add.make_args(sympy.expand(side)):
-            changed = [-t] if _written(t, bad) else []
-            if t.free_symbols & unknowns:
+            changed = [-t] if not t.free_symbols or _written(t, bad) else []
+            if t.free_symbols & unknowns and not _kept(t, bad):
                 c, _rest = t.as_coeff_Mul()
                 changed += [t / c] if c not in (0, 1, -1) else []  # its coefficient dropped
                 changed += [t / c**2] if c not in (0, 1, -1) and lone else []  # ``c x = k``: x = k c
@@ -59,6 +61,12 @@ def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:
                 changed += [n for n in _unexpanded(t, held.text) if _written(n, bad)]  # 8(v + 4): 8v + 4
             out += [held.difference + sign * (x - t) for x in changed]
     return out + (_turned_over(held, unknowns) if lone else [])
+
+
+def _kept(t: sympy.Expr, bad: Pair) -> bool:
+    """Whether the term ``t`` in the unknowns is on ``bad`` as it was (or negated: moved across)."""
+    terms = set().union(*(sympy.Add.make_args(sympy.expand(x)) for x in (bad.left, bad.right)))
+    return t in terms or -t in terms
 
 
 def _turned_over(held: Pair, unknowns: set) -> list[sympy.Expr]:

@@ -156,6 +156,24 @@ def rounded_early(ctx: Context, sides: tuple[str, ...], bad: Pair, pt: dict, tru
     if left is None or right is None or not right:
         return ""
     drift = abs(left - right) / max(abs(left), abs(right)) * 100
-    if drift > 3:  # more than rounding explains
+    if drift > 3 or not _rounding_of(bad.text, early, (left, right)):  # more than rounding explains
         return ""
     return f": rounded too early: worked from {listed(early[:3])}, rounded to 2 figures, it drifts by {drift:.1f} %."
+
+
+def _rounding_of(text: str, early: list[str], values: tuple) -> bool:
+    """Whether each side of ``text`` that is one of the ``early`` numbers alone is the other side's
+    true value (``values``: left, right) rounded to its figures: ``78 = 4a + 8b`` where
+    4a + 8b is 80 is a number worked wrongly, not 80 rounded (``3.1`` for 3.0505 is)."""
+    parts = [t.strip() for t in text.split("=")]
+    if len(parts) != 2:
+        return True
+    for i, t in enumerate(parts):
+        other = values[1 - i]
+        other = other.real if isinstance(other, complex) and not other.imag else other
+        if t in early and isinstance(other, float | int):
+            d = Decimal(t)
+            unit = Decimal(1).scaleb(d.adjusted() - figures(d) + 1)
+            if abs(round_figures(Decimal(str(other)), figures(d)) - d) > unit:
+                return False
+    return True

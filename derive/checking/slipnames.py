@@ -27,6 +27,7 @@ import sympy
 
 from derive.checking import energyforms, mistakes, rearranging
 from derive.checking.context import DEG, Context
+from derive.checking.massresults import masses_in_results
 from derive.checking.mistakes import Mistake
 from derive.checking.relations import coefficients
 from derive.checking.worlds import NUMBER_SIDE, Pair
@@ -76,7 +77,8 @@ def as_named(ctx: Context, m: Mistake) -> Mistake:
 
 
 def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
-    """The mistakes whose value of a result named on the line makes ``bad`` hold."""
+    """The mistakes whose value of a result named on the line makes ``bad`` hold; else those of the
+    masses (the weights, swapped) in a result worked from the velocities ``holds`` has."""
     if bad.raw is None:
         return []
     syms = set().union(*(x.free_symbols for x in bad.raw))
@@ -89,7 +91,7 @@ def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
         subs = {s: x for s, x in subs.items() if x is not None}
         if subs and _holds_with(ctx, bad, subs, holds):
             found.append(o.mistake)
-    return found
+    return found or (masses_in_results(ctx, bad, lambda subs: _holds_with(ctx, bad, subs, holds)) if names else [])
 
 
 def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: Holds) -> bool:

@@ -15,9 +15,11 @@ from typing import TYPE_CHECKING, Protocol
 
 import sympy
 
+from derive.checking import stepslips
 from derive.checking.carried import Trace, sides
 from derive.checking.rearranging import FACTORS
 from derive.checking.slipnames import FLIPPED, Previous, sign_of_a_term, solving_slip
+from derive.checking.stepslips import halved  # noqa: F401  (chainlines' import)
 from derive.checking.worlds import Pair
 
 if TYPE_CHECKING:
@@ -48,15 +50,19 @@ HALVED = {
 }
 
 
-def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None], said: str = "") -> tuple[str, str]:
+def term_slip(
+    exprs: list[sympy.Expr], holds: Callable[[list], bool | None], said: str = "", written: tuple[str, ...] = ()
+) -> tuple[str, str]:
     """A chain's line named by the one term that is wrong, with the words for it: a sign lost
     (:func:`~.slipnames.sign_of_a_term`), else a squared term's factor of 2 lost or doubled:
     ``ke_formula`` where the square has a mass with it (``0.3(9.8)(2) = 0.3 v1²``: the ½ of
     ½ m v² dropped), ``algebra`` where it stands alone (``v1² = 9.8(2)`` from ½(0.3) v1² =
     0.3(9.8)(2): the masses cancelled and the ½ lost); ``restitution_reversed`` where a
     coefficient of restitution is worked as the ratio upside down (``e = 6.26/5.24``: approach
-    over separation); ("", "") otherwise. ``said``: the verdict's words (a line they call an
-    arithmetic slip is one, but for e's ratio upside down)."""
+    over separation); else the one step of its working that does not follow
+    (:func:`~.stepslips.working_step`, ``written``: its sides as written); ("", "") otherwise.
+    ``said``: the verdict's words (a line they call an arithmetic slip is one, but for e's
+    ratio upside down)."""
     e = exprs[0] if exprs and isinstance(exprs[0], sympy.Symbol) else None
     if e is not None and (e.name == "e" or e.name.startswith("e_")) and holds([1 / e, *exprs[1:]]):
         return "restitution_reversed", UPSIDE_DOWN
@@ -75,7 +81,7 @@ def term_slip(exprs: list[sympy.Expr], holds: Callable[[list], bool | None], sai
                 if holds([*exprs[:i], side + (k - 1) * t, *exprs[i + 1 :]]):
                     found.add("algebra" if abs(t / squares[0]) == 1 else "ke_formula")
     if len(found) != 1:
-        return "", ""
+        return stepslips.working_step(exprs, written, holds) if written else ("", "")
     name = found.pop()
     return name, HALVED[name]
 
