@@ -241,3 +241,11 @@ def test_a_mass_from_a_weight_is_right_and_a_value_after_a_slip_carried() -> Non
     found = lines("chain-hibbeler-15-58-suitcases", work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (3, 5)] == ["carried", "carried"]
+
+
+def test_a_line_of_givens_with_a_word_before_them_is_a_report_not_an_internal_error() -> None:
+    # OCR M2 Jan 2007 Q3 (mark scheme: x = 35): v² = 21² + 2(9.8)(40) = 441 + 784 = 1225, v = 35.
+    # "down +ve" before the givens once raised ParseError (unknown name 'down') out of the checker.
+    work = "down +ve, u = 21, h = 40, g = 9.8\nv^2 = 21^2 + 2(9.8)(40) = 1225\nv = 35\n"
+    found = lines("chain-ocr-m2-2007-rebounds-to-start", work)
+    assert found[2][0] == "correct" and found[3][0] == "correct"

@@ -299,11 +299,14 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
     givens = [g for g in chain.givens if not g.unknown and g.value is not None and g.value.is_Rational and g.value]
     written = {abs(g.value) for g in givens}
     if len(sides) == 2 and copiedsums.NUMBER.fullmatch(sides[1].strip()):  # ``e = 0.6`` where the problem gives e = 0.4
-        left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
+        try:
+            left, n = reread(sides[0]), sympy.Rational(sides[1].strip())
+        except (ParseError, ValueError, TypeError, ArithmeticError, InputError):
+            return None  # "down +ve, u = 21": a side that is not a quantity
         g = next(
             (g for g in givens if getattr(left, "name", None) == g.name and n != g.value and n * g.value > 0), None
         )
-        world = _solved_with(chain, g.name, n) if g is not None else None
+        world = copiedsums.solved_with(chain, g.name, n) if g is not None else None
         if world is not None:
             return (
                 f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {sides[1].strip()}.",
@@ -327,24 +330,13 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
                     continue
                 if not holds(tuple(fixed), exprs):
                     continue
-                world = _solved_with(chain, g.name, n if g.value > 0 else -n)
+                world = copiedsums.solved_with(chain, g.name, n if g.value > 0 else -n)
                 if world is not None:
                     return (
                         f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {token}.",
                         world,
                     )
     return None
-
-
-def _solved_with(chain, name: str, value: sympy.Expr) -> dict | None:
-    """The chain's values with the given ``name`` as ``value`` (None where it does not solve)."""
-    from derive.physics.chain import run_chain
-
-    givens = tuple(replace(g, value=value) if g.name == name else g for g in chain.givens)
-    try:
-        return dict(run_chain(replace(chain, givens=givens)).values)
-    except (InputError, ValueError, TypeError, ArithmeticError, KeyError, IndexError):
-        return None
 
 
 def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, own: dict, said: Declared) -> Item:

@@ -6,8 +6,11 @@ copied; the line holds once it is put back in both places."""
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import sympy
+
+from derive.errors import InputError
 
 #: A number as a student writes it in working.
 NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.]|\.\d)")
@@ -30,3 +33,14 @@ def put_back(sides: tuple[str, ...], i: int, token: str, value: str, givens: set
         if k != i:
             fixed[k] = NUMBER.sub(total, side)
     return fixed
+
+
+def solved_with(chain, name: str, value: sympy.Expr) -> dict | None:
+    """The chain's values with the given ``name`` as ``value`` (None where it does not solve)."""
+    from derive.physics.chain import run_chain
+
+    givens = tuple(replace(g, value=value) if g.name == name else g for g in chain.givens)
+    try:
+        return dict(run_chain(replace(chain, givens=givens)).values)
+    except (InputError, ValueError, TypeError, ArithmeticError, KeyError, IndexError):
+        return None
