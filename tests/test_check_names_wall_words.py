@@ -1,6 +1,7 @@
 """A ball's components at a wall named by their axis alone (issue #31): ``par = u cos θ``,
 ``perp = u sin θ`` (parallel to the wall: derive's t; perpendicular, or normal, to it: n), before
-the impact, or after where primed (``perp' = e u sin θ``).
+the impact, or after where primed (``perp' = e u sin θ``). The words in full stay prose ("the angle
+with the normal = 90 - 1.27" is no component).
 
 Worked by hand (pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles): the path makes θ with
 the wall, tan θ = 3, speed u; along the wall u cos θ (kept), into it u sin θ before and e u sin θ
@@ -19,8 +20,8 @@ WALL = "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles"
     "work",
     [
         "par = u cos(theta)\nperp = u sin(theta)",
-        "parallel = u cos(theta)\nperpendicular = u sin(theta)",
-        "par = u cos(theta)\nnormal = u sin(theta)\npar' = u cos(theta)",
+        "para = u cos(theta)\nperp = u sin(theta)",
+        "par = u cos(theta)\nnorm = u sin(theta)\npar' = u cos(theta)",
         "par = u cos(theta)\nperp = u sin(theta)\nperp' = e u sin(theta)",  # a size, out of the wall
     ],
 )

@@ -242,8 +242,9 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
 
 
 #: A component named by its axis alone at a wall (``par = U cos α``, ``perp' = eU sin α``): parallel
-#: to the wall is derive's t, perpendicular (normal) to it n.
-_WALL_WORDS = {"par": "t", "para": "t", "parallel": "t", "perp": "n", "perpendicular": "n", "normal": "n", "norm": "n"}
+#: to the wall is derive's t, perpendicular (normal) to it n. Abbreviations only: the words in full
+#: are prose as often ("the angle with the normal = 90 - 1.27").
+_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n"}
 
 
 def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, sympy.Expr]:
