@@ -16,7 +16,7 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainnames, chainsolve, mistakes, principles, substitutions, words
+from derive.checking import chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
 from derive.checking.chainworld import own_world
@@ -49,7 +49,7 @@ from derive.problem.expr import ParseError
 def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
-    names = Open({**chainnames.lone_restitution(values), **{s.name: s for s in values}})  # e for e_floor
+    names = chainletters.chain_names(ctx, values)  # e for e_floor; m beside a letter (ma + mb)
     read = _read(ctx, text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's

@@ -130,8 +130,8 @@ _LINE = r"(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact
 _PLACES = (
     (rf"(?:along|parallel\s+to)\s+{_WALL}|{_WALL}\s+(?:is\s+)?(?:along|parallel\s+to)", "t", 1),
     (rf"(?:away\s+from|out\s+of|out\s+from)\s+{_WALL}", "n", -1),
+    (rf"(?:perpendicular|normal|at\s+right\s+angles)\s+to\s+{_WALL}", "n", 0),  # before "to the wall"
     (rf"(?:into|towards?|to)\s+{_WALL}", "n", 1),
-    (rf"(?:perpendicular|normal|at\s+right\s+angles)\s+to\s+{_WALL}", "n", 0),
     (rf"(?:along|parallel\s+to)\s+{_LINE}(?:\s+from\s+B\s+to(?:wards)?\s+A\b)", "n", -1),
     (rf"(?:along|parallel\s+to)\s+{_LINE}", "n", 1),
     (rf"(?:perpendicular|at\s+right\s+angles)\s+to\s+{_LINE}|along\s+the\s+(?:common\s+)?tangent", "t", 0),
@@ -145,7 +145,9 @@ def declared_axes(text: str) -> dict[str, tuple[str, int]]:
     plain = _STYLED.sub(r"\1", text).replace("$", " ").replace("î", "i").replace("ĵ", "j")
     found: dict[str, tuple[str, int]] = {}
     last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")
+    wall = re.search(rf"\b{_WALL}", plain, re.I) and not re.search(rf"\b{_LINE}(?![a-z])", plain, re.I)  # "j … it"
     for clause in re.split(r"[.;,\n]|\band\b", plain):
+        clause = re.sub(r"\bit\b", "the wall", clause) if wall else clause
         units = {"n" if m.group(m.lastindex).lower() in "ix" else "t" for m in _UNIT_WORD.finditer(clause)}
         last = units.pop() if len(units) == 1 else "" if units else last
         place = next(((a, sg) for pattern, a, sg in _PLACES if re.search(pattern, clause, re.I)), None)

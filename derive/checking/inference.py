@@ -29,6 +29,7 @@ from derive.checking.frames import (
 )
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.grounding import grounded, grounded_frame, the_speed
+from derive.checking.massletters import masses_put_in
 from derive.checking.namegrammar import energy_change, grammar_names, said_read
 from derive.checking.naming import (
     GREEK,
@@ -106,7 +107,7 @@ def read_lines(
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
-        rewritten.append(sides)
+        rewritten.append(masses_put_in(ctx, sides))  # ½ m v² = ½(0.020)(300)²: m is the bullet's
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {

@@ -138,6 +138,8 @@ def parse(
             kind, marks = "p", name[1:]
         elif name[0] in "mM":
             kind, marks = "m", name[1:]
+        elif re.fullmatch(r"[ab]_?[ntxy]", name):  # a_n, b_t: a body's own letter and a component
+            kind, marks = "v", name[0].upper() + name[-1]
         else:
             return None
     if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed):
@@ -224,7 +226,7 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
         got = parse(stem, bodies, digits, primed=True) if stem in primed else parse(name, bodies, digits)
         if got is not None:
             parsed[name] = got
-    out: dict[str, sympy.Expr] = {}
+    out: dict[str, sympy.Expr] = wall_words(ctx, used - skip, primed)  # par, perp: a wall's components
     m = ctx.model
     if "m" in used and "m" not in skip and not ctx.problem.fixed_B and _equal(ctx, m.m_A, m.m_B):
         out["m"] = m.m_A  # two equal masses: m is each one's
@@ -236,6 +238,27 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
             out[name] = e
+    return out
+
+
+#: A component named by its axis alone at a wall (``par = U cos α``, ``perp' = eU sin α``): parallel
+#: to the wall is derive's t, perpendicular (normal) to it n. Abbreviations only: the words in full
+#: are prose as often ("the angle with the normal = 90 - 1.27").
+_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n"}
+
+
+def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, sympy.Expr]:
+    """The ball's components at a wall named by their axis alone: before, or after where primed;
+    sizes, as words name them (the normal one after is out of the wall: -v_A2n)."""
+    if not (ctx.problem.fixed_B and ctx.problem.oblique):
+        return {}
+    out = {}
+    for name in used:
+        stem = name[:-2] if name.endswith("_p") and name[:-2] in primed else name
+        axis = _WALL_WORDS.get(stem.lower())
+        x = getattr(ctx.model.nm, f"A{'2' if stem != name else '1'}{axis}", None) if axis else None
+        if x is not None:
+            out[name] = -x if stem != name and axis == "n" else x
     return out
 
 

@@ -162,6 +162,7 @@ def rewrite(text: str, known: set[str]) -> str:
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
+    text = re.sub(r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: f"{m[1]}_{m[2].upper()}{m[3]}", text)  # vb: v_B
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
     text = angle_sum_in_degrees(text)  # θ = α − 30, 90 − θ
     text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)

@@ -90,6 +90,11 @@ def _vector(side: str) -> dict[str, str] | None:
     out: dict[str, list[str]] = {}
     for sign, term in terms:
         m = _TERM.match(term.strip())
+        scaled = _scaled(term.strip()) if m is None else None
+        if scaled is not None:  # "15(cos a i + sin a j)": the number times each component
+            for axis, c in scaled.items():
+                out.setdefault(axis, []).append(sign + c)
+            continue
         if m is None:
             return None
         coef = m.group(1)
@@ -98,6 +103,26 @@ def _vector(side: str) -> dict[str, str] | None:
         coef = coef.strip().rstrip("*").strip() or "1"
         out.setdefault(UNITS[m.group(2)], []).append(sign + coef)
     return {axis: _joined(bits) for axis, bits in out.items()}
+
+
+def _scaled(term: str) -> dict[str, str] | None:
+    """``15(cos a i + sin a j)``, ``(u/sqrt(10))(i - 3j)``: a coefficient times a bracketed vector,
+    by axis (each component times the coefficient); None where the term is not that."""
+    if not term.endswith(")"):
+        return None
+    depth = 0
+    for k in range(len(term) - 1, -1, -1):
+        depth += {")": 1, "(": -1}.get(term[k], 0)
+        if depth == 0:
+            break
+    coef, inner = term[:k].strip().rstrip("*").strip(), term[k + 1 : -1]
+    if depth or (coef and not _coefficient(coef + " ")) or re.search(r"[A-Za-z]{2,}\d*$", coef):
+        return None  # "sqrt(…)", "cos(…)": a function of the bracket, not a product
+    pair = _pair(f"({inner.strip()})")
+    part = dict(zip(AXES, pair, strict=True)) if pair is not None else _vector(inner)
+    if part is None:
+        return None
+    return {axis: f"({coef})*({c})" if coef else f"({c})" for axis, c in part.items()}
 
 
 def _coefficient(text: str) -> bool:
