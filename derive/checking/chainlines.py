@@ -314,14 +314,14 @@ def _known_sides(sides, exprs: list[sympy.Expr], defined: set) -> tuple[tuple[st
 
 
 def _of_the_stage(ctx: Context, sides, exprs: list[sympy.Expr], values: dict) -> list[sympy.Expr]:
-    """``e = 0.7`` where the chain's e is 0.8 and its e_wall 0.7: the student's e is the stage's
-    (a given's name with a stage's suffix)."""
+    """``e = 0.7`` (``e = 0.5/2.9 = 0.172``) where the chain's e is 0.8 and its e_wall 0.7: the
+    student's e is the stage's (a given's name with a stage's suffix)."""
     left = exprs[0]
-    if len(exprs) != 2 or left not in values or _holds(ctx, sides, exprs, [{}, values]) is not False:
+    if len(exprs) < 2 or left not in values or _holds(ctx, sides, exprs, [{}, values]) is not False:
         return exprs
     for sym in values:
-        if sym.name.startswith(left.name + "_") and _holds(ctx, sides, [sym, exprs[1]], [{}, values]):
-            return [sym, exprs[1]]
+        if sym.name.startswith(left.name + "_") and _holds(ctx, sides, [sym, *exprs[1:]], [{}, values]):
+            return [sym, *exprs[1:]]
     return exprs
 
 

@@ -332,7 +332,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
         out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
-    out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
+    bare_u = used is None or bool({"u", "u_n", "u_t", "un", "ut"} & used) or bool(fixed)  # u_A, u_B: v is not A's
+    out.update(_lone(ctx, after, bare_u, used is not None and {"v", "V"} <= used))
     rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0} | set("B" * fixed)
     moving = [b for b, x in before.items() if x is not None and b not in rest]
     if used is not None and {"v", "v_p"} <= used and len(moving) == 1:  # v' = m v/(m + M): v before, v' after
