@@ -63,3 +63,88 @@ def test_a_slip_in_one_of_two_relations_side_by_side_is_wrong() -> None:
     # the components resolved with sin and cos swapped: 4 sin 60° along the line
     work = "\\begin{align*}\nu_{An} &= 4\\sin 60^\\circ = 3.464 & u_{At} &= 4\\cos 60^\\circ = 2\n\\end{align*}\n"
     assert worst_lines(DISCS, work)[2] == ("wrong", "sin_cos_swapped")
+
+
+# Edexcel M2: a 2 kg ball at 4 m/s hits a wall (e = 0.4) and comes back at 1.6 m/s: KE 16 J
+# before, ½(2)(1.6²) = 2.56 J after, 13.44 J lost. OCR M2 2012: 0.8 kg at 4 m/s, e = 0.3, back
+# at 1.2 m/s: ½(0.8)(16 - 1.44) = 5.824 J lost (½(0.8)(4 - 1.2)² = 3.136 squares the difference).
+ONE_BODY = [
+    (
+        "edexcel-m2-ball-rebounds-from-wall",
+        "(v)_1 = 4 m/s, (v)_2 = -1.6 m/s\nT_1 = 1/2 (2)(4)^2 = 16 J\nT_2 = 1/2 (2)(1.6)^2 = 2.56 J\n"
+        "lost = 16 - 2.56 = 13.44 J\n",
+        {1: "correct", 2: "correct", 3: "correct", 4: "correct"},
+    ),
+    (
+        "edexcel-m2-ball-rebounds-from-wall",
+        "$(v)_{1} = 4$ m/s and $(v)_{2} = -1.6$ m/s\n$T_2 = \\tfrac12 (2)(1.6)^2 = 2.56$ J\n",
+        {1: "correct", 2: "correct"},
+    ),
+    (
+        "ocr-m2-2012-particle-hits-wall",
+        "v1 = 4 m/s, v2 = -1.2 m/s\nKE lost = 1/2 (0.8)(v1^2 - v2^2) = 0.4(16 - 1.44) = 5.824 J\n",
+        {1: "correct", 2: "correct"},
+    ),
+    (
+        "ocr-m2-2012-particle-hits-wall",
+        "(v)1 = 4, (v)2 = -1.2\nKE lost = 1/2 (0.8)(4 - 1.2)^2 = 3.136 J\n",
+        {1: "correct", 2: "wrong"},
+    ),
+]
+
+
+@pytest.mark.parametrize(("problem", "work", "verdicts"), ONE_BODY)
+def test_one_bodys_velocities_named_by_the_instant_before_and_after(problem: str, work: str, verdicts: dict) -> None:
+    # One body against a wall: (v)_1, (v)_2 (engineering brackets) and v1, v2 (typed) are its
+    # velocity before and after the impact, as v_1, v_2 are.
+    found = worst_lines(problem, work)
+    assert {n: s for n, (s, _) in found.items()} == verdicts
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Before: (v_A)_1 = 3 m/s, (v_B)_1 = -2 m/s. After: (v_A)_2 = -0.6 m/s, (v_B)_2 = 3.4 m/s.",
+        "$(v_A)_1 = 3$, $(v_B)_1 = -2$ (B toward A), $(v_A)_2 = -0.6$, $(v_B)_2 = 3.4$",
+    ],
+)
+def test_a_whole_number_names_the_value_it_is_not_one_it_rounds_to(said: str) -> None:
+    # AQA M3 2007 as a chain: A at 3 m/s, B at 2 m/s toward it; after the impact A at -0.6 and
+    # B at 3.4 (0.5 = 0.3a + 0.2b, b - a = 0.8(5) = 4); B leaves the wall at -0.7(3.4) = -2.38.
+    # "3" is 3 (A before), not 3.4 rounded; "-2" is B before, not the -2.38 after the wall:
+    # e = (3.4 + 0.6)/(3 + 2) = 0.8, and 0.3(3) + 0.2(-2) = 0.5 = 0.3(-0.6) + 0.2(3.4).
+    work = (
+        f"{said}\n"
+        "e = ((v_B)_2 - (v_A)_2)/((v_A)_1 - (v_B)_1) = (3.4 + 0.6)/(3 + 2) = 0.8\n"
+        "0.3(v_A)_1 + 0.2(v_B)_1 = 0.3(v_A)_2 + 0.2(v_B)_2 = 0.5\n"
+    )
+    found = worst_lines("chain-aqa-m3-2007-collide-again", work)
+    assert found[2][0] == found[3][0] == "correct"
+
+
+@pytest.mark.parametrize(
+    ("problem", "work"),
+    [
+        # MSU bullet: 0.020 kg at 300 m/s into a 4.0 kg block at rest; 6 = 4.02 v' -> v' = 1.49 m/s.
+        (
+            "msu-lectureonline-bullet-lodges-in-block",
+            "Bullet: $m_1 = 2.0\\times10^{-2}$ kg, $v_1 = 300$ m/s\n"
+            "Block: $m_2 = 4.0$ kg, at rest\n$m_1 v_1 = (m_1 + m_2) v'$\n$v' = 6/4.02 = 1.49$ m/s\n",
+        ),
+        # Byjus: 4 kg at 12 m/s behind 8 kg at 4 m/s, masses from weights (g = 9.8): 48 + 32 = 80.
+        (
+            "byjus-4kg-ball-catches-8kg-ball",
+            "m_A = 39.2/9.8 = 4 kg, v_A = 12 m/s\nm_B = 78.4/9.8 = 8 kg, v_B = 4 m/s\n"
+            "p = m_A v_A + m_B v_B = 48 + 32 = 80 kg m/s\n",
+        ),
+    ],
+)
+def test_velocities_stated_beside_masses_worked_out_are_the_givens(problem: str, work: str) -> None:
+    # A line of givens whose masses are written in powers of ten or worked from weights still
+    # states the velocities before the impact (v_1 = 300 is the bullet's speed, not a result).
+    found = worst_lines(problem, work)
+    assert {n: s for n, (s, _) in found.items() if s != "not read"} == dict.fromkeys(
+        [n for n, (s, _) in found.items() if s != "not read"], "correct"
+    )
+    assert found[1][0] == "correct"
+

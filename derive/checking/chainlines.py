@@ -16,7 +16,7 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainnames, chainsolve, mistakes, principles, substitutions, words
+from derive.checking import chainfit, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
 from derive.checking.chainworld import own_world
@@ -239,7 +239,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
             alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
             alone = [a for a in alone if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
-            best = max(cands, key=lambda c: score[c], default=None)
+            best = chainfit.nearest(cands, score, alone, (found, p), (values, ctx.unit_subs()))
             letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
             if best is not None and score[best]:
                 found[p] = best

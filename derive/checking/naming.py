@@ -31,6 +31,7 @@ from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
 from derive.checking.conventions import plus_said, sign_of
+from derive.checking.instants import one_body_instants
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
@@ -314,6 +315,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is used)
                 else:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}1{c}")  # v_An beside v_A', v_At': before
+    out.update(one_body_instants(ctx, used))  # v_1, v_2 against a wall: before, after
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
