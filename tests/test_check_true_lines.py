@@ -148,3 +148,21 @@ def test_velocities_stated_beside_masses_worked_out_are_the_givens(problem: str,
     )
     assert found[1][0] == "correct"
 
+
+@pytest.mark.parametrize(
+    ("work", "verdict"),
+    [
+        ("Newton's law: v = eu = 0.3 × 4 = 1.2 m/s back away from the wall\n", "correct"),
+        ("NEL: $v = eu = 0.3 \\times 4 = 1.2$ m/s (away from the wall)\n", "correct"),
+        ("v = e u = 0.3(4) = 1.2 m/s off the wall\n", "correct"),
+        ("v = eu = 0.3 × 4 = 1.2 m/s (away from the wall)\n", "correct"),
+        ("Rebound speed: $v = eu = 0.3 \\times 4 = 1.2$ m/s (away from the wall)\n", "correct"),
+        ("Newton's law: v = eu = 0.4 × 4 = 1.6 m/s away from the wall\n", "wrong"),
+    ],
+)
+def test_a_rebound_speed_said_away_from_the_wall(work: str, verdict: str) -> None:
+    # OCR M2 2012: 0.8 kg at 4 m/s into a wall, e = 0.3: it comes back at 0.3 x 4 = 1.2 m/s.
+    # "v = eu" is the size of the velocity after; "away from the wall" says its way (against the
+    # way in), as "to the left" does (a name said to be the speed stays a size); 0.4 x 4 = 1.6
+    # takes another e.
+    assert worst_lines("ocr-m2-2012-particle-hits-wall", work)[1][0] == verdict
