@@ -228,3 +228,20 @@ def test_a_line_right_with_a_name_of_the_students_own_but_worked_from_a_wrong_nu
     # working is the wrong 2.08 (truly 3010 × 6.507): carried, not correct.
     work = "V^2 = 2 mu_k d = 2(0.80)(2.7) = 4.32\nV = 2.08 m/s\n910u = 3010 x 2.08\n"
     assert lines("chain-car-rear-ends-suv-skid", work)[3][0] == "carried"
+
+
+@pytest.mark.parametrize(
+    ("work", "verdict"),
+    [
+        ("B then hits the wall and comes back at 2.38 m/s.\ne = 2.38/3.4 = 0.7\n", "correct"),
+        ("For the wall: e = v/u = 2.38/3.4 = 0.70\n", "correct"),
+        ("B then hits the wall and comes back at 2.38 m/s.\ne = 2.38/3.4 = 0.8\n", "wrong"),
+    ],
+)
+def test_e_for_a_later_stages_coefficient_with_working_and_an_answer(work: str, verdict: str) -> None:
+    # AQA M3 2007 as a chain: e = 0.8 between the spheres, 0.7 for B and the wall. B leaves
+    # the first impact at 3.4 m/s (0.5 = 0.3x + 0.2y, y - x = 4) and the wall sends it back at
+    # 0.7(3.4) = 2.38, so e = 2.38/3.4 = 0.7 is the wall's e (a line of three sides, as the
+    # student writes it), and 2.38/3.4 = 0.8 is false for either coefficient.
+    found = lines("chain-aqa-m3-2007-collide-again", work)
+    assert max(found.items())[1][0] == verdict

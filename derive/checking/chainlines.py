@@ -16,7 +16,7 @@ from functools import partial
 
 import sympy
 
-from derive.checking import chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
+from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
 from derive.checking.chainworld import own_world
@@ -239,7 +239,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
             alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
             alone = [a for a in alone if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
-            best = max(cands, key=lambda c: score[c], default=None)
+            best = chainfit.nearest(cands, score, alone, (found, p), (values, ctx.unit_subs()))
             letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
             if best is not None and score[best]:
                 found[p] = best
@@ -314,14 +314,14 @@ def _known_sides(sides, exprs: list[sympy.Expr], defined: set) -> tuple[tuple[st
 
 
 def _of_the_stage(ctx: Context, sides, exprs: list[sympy.Expr], values: dict) -> list[sympy.Expr]:
-    """``e = 0.7`` where the chain's e is 0.8 and its e_wall 0.7: the student's e is the stage's
-    (a given's name with a stage's suffix)."""
+    """``e = 0.7`` (``e = 0.5/2.9 = 0.172``) where the chain's e is 0.8 and its e_wall 0.7: the
+    student's e is the stage's (a given's name with a stage's suffix)."""
     left = exprs[0]
-    if len(exprs) != 2 or left not in values or _holds(ctx, sides, exprs, [{}, values]) is not False:
+    if len(exprs) < 2 or left not in values or _holds(ctx, sides, exprs, [{}, values]) is not False:
         return exprs
     for sym in values:
-        if sym.name.startswith(left.name + "_") and _holds(ctx, sides, [sym, exprs[1]], [{}, values]):
-            return [sym, exprs[1]]
+        if sym.name.startswith(left.name + "_") and _holds(ctx, sides, [sym, *exprs[1:]], [{}, values]):
+            return [sym, *exprs[1:]]
     return exprs
 
 

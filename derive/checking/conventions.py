@@ -73,14 +73,26 @@ def signed_by_words(r: R, sign: int) -> R:
     derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
     already signed stays as written."""
     m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
-    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols or _size_only(r.exprs[0]):
+    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols or _size_only(r.exprs[0]) or _impulse(r.exprs[0]):
         return r
-    if r.direction * sign > 0:
-        return r
+    if r.direction * sign > 0 or _OFF_A_SURFACE_AS_SPEED.search(getattr(r, "written", "")):
+        return r  # "Rebound speed: v = eu = 1.6 m/s (away from the wall)": a size, its way said
     if len(r.exprs) >= 3 and r.exprs[0].is_Symbol and not any(x.is_number and x < 0 for x in r.exprs[1:-1]):
         # "v = eu = 0.4 x 4 = 1.6 m/s to the left": v's size is worked out, its way said after it
         return replace(r, exprs=(-r.exprs[0], *r.exprs[1:]))
     return replace(r, sides=(*r.sides[:-1], f"-{m.group(2)}"), exprs=(*r.exprs[:-1], -r.exprs[-1]))
+
+
+#: A speed named so before its number whose way is said as off a fixed surface: the size stays a size.
+_OFF_A_SURFACE_AS_SPEED = re.compile(
+    r"\bspeed\b[^=]*=.*\b(?:away\s+from|off)\s+the\s+(?:wall|cushion|barrier|ground|floor)", re.I
+)
+
+
+def _impulse(x: object) -> bool:
+    """An impulse read by its value (``impulse = 11.2 N s away from the wall``): on which body it
+    acts was read from the number, so the way in words is not a sign to put on it again."""
+    return any(s.name.startswith("J") for s in getattr(x, "free_symbols", ()))
 
 
 def _size_only(x: object) -> bool:

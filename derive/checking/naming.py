@@ -31,6 +31,7 @@ from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE
 from derive.checking.context import Context
 from derive.checking.conventions import plus_said, sign_of
+from derive.checking.instants import one_body_instants
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
@@ -319,6 +320,7 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}2{c}")  # v as v_A: after (unless v_A' is used)
                 else:
                     out[f"v_{body}{c}"] = getattr(nm, f"{body}1{c}")  # v_An beside v_A', v_At': before
+    out.update(one_body_instants(ctx, used))  # v_1, v_2 against a wall: before, after
     names = ctx.equation_names()
     for alias, name in (("theta_1", "theta"), ("theta", "theta_1"), ("theta_2", "theta_A2"), ("theta", "theta_A1")):
         if name in names:
@@ -337,7 +339,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
         out["v"] = after["A"]
     if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
         out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
-    out.update(_lone(ctx, after, u_used, used is not None and {"v", "V"} <= used))
+    bare_u = used is None or bool({"u", "u_n", "u_t", "un", "ut"} & used) or bool(fixed)  # u_A, u_B: v is not A's
+    out.update(_lone(ctx, after, bare_u, used is not None and {"v", "V"} <= used))
     rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0} | set("B" * fixed)
     moving = [b for b, x in before.items() if x is not None and b not in rest]
     if used is not None and {"v", "v_p"} <= used and len(moving) == 1:  # v' = m v/(m + M): v before, v' after

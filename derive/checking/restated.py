@@ -49,6 +49,14 @@ def _stated(r: Relation) -> bool:
     return stated(r.sides)
 
 
+def _mass_or_weight(r: Relation) -> bool:
+    """A mass or a weight (or g) given in a line of givens as it is worked out or written
+    (``m_A = 4500/32.2 = 139.8``, ``m_1 = 1.50 × 10^5``, ``masses from the weights, m = W/g``):
+    not the working that a velocity stated after it would be a result of."""
+    words = r.sides[0].split()
+    return bool(words) and re.fullmatch(r"[mMWg](?:_?\{?\w{1,3}\}?)?", words[-1]) is not None
+
+
 def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) -> dict[str, sympy.Expr]:
     """The names set to a given velocity's value on a line of givens -> that given."""
     givens = [
@@ -61,7 +69,7 @@ def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) 
         lines.setdefault(r.line, []).append(r)
     out: dict[str, sympy.Expr] = {}
     seen: set[str] = set()
-    worked = [n for n, rs in lines.items() if not all(_stated(x) for x in rs)]
+    worked = [n for n, rs in lines.items() if not all(_stated(x) or _mass_or_weight(x) for x in rs)]
     for r in relations:
         if worked and r.line >= min(worked):
             break  # the givens come before the working ("v = 5 m/s" after it is a result)
@@ -85,14 +93,15 @@ def restated(ctx: Context, relations: tuple[Relation, ...], reserved: set[str]) 
 
 def _spellings(name: str, taken: set[str], typed: str) -> list[str]:
     """``name`` and its other spelling, with or without the underscore (``v1``, ``v_1``), where
-    the student types both (``v1`` in a line of givens, ``$m_1 v_1$`` later) and that one is not
-    a name of its own already."""
+    the student types both (``v1`` in a line of givens, ``$m_1 v_1$`` later) or the reading
+    writes ``v1`` as ``v_1``, and that one is not a name of its own already."""
     m = re.fullmatch(r"([A-Za-z])_?(\w+)", name)
     if m is None:
         return [name]
     other = f"{m[1]}{m[2]}" if "_" in name else f"{m[1]}_{m[2]}"
     spelled = rf"(?<![\w\\]){m[1]}_\{{?{m[2]}\}}?(?!\w)" if "_" not in name else rf"(?<![\w\\]){m[1]}{m[2]}(?!\w)"
-    return [name, other] if other not in taken and re.search(spelled, typed) else [name]
+    rewritten = re.fullmatch(r"[uvVw][AB12]\d?[nt]?", name)  # v1 is read as v_1 (naming.rewrite)
+    return [name, other] if other not in taken and (rewritten or re.search(spelled, typed)) else [name]
 
 
 def is_size(ctx: Context, e: sympy.Expr) -> bool:

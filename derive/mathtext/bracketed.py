@@ -1,6 +1,7 @@
 """A name in brackets with its marks after them, as the engineering textbooks write it
 (Hibbeler, Beer & Johnston): ``(v_A)_1``, ``(v_A)_2``, ``(v_A)'``, ``(v_B)_{2x}``, ``(v_A)_n'``,
-and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``). The brackets only hold the name together: what
+and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``);
+one body's ``(v)_1``, ``(v)2`` (its velocity before and after) the same way (``v_1``, ``v_2``). The brackets only hold the name together: what
 follows them (a time, a component, a prime) is the name's own mark, so the whole is one name
 (``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``), and a factor written before it stays a factor
 (``20 (v_A)'`` is 20 times ``v_A'``, ``mA(vA)1`` is ``mA`` times ``v_A1``).
@@ -23,7 +24,9 @@ import re
 _PRIMES_IN = r"((?:\s*(?:'|’|\^\s*\\prime|\^\s*\{\s*\\prime\s*\}))*)"
 #: The name inside: a letter and its subscript (``v_A``, ``v_{A}``, ``vA``, ``v_1``); without an
 #: underscore the subscript is a capital or a digit (``vA``, ``v1``), never a second small letter.
-_INSIDE = r"\(\s*([A-Za-z])" + _PRIMES_IN + r"(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))" + _PRIMES_IN + r"\s*\)"
+_INSIDE = (
+    r"\(\s*([A-Za-z])" + _PRIMES_IN + r"(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))?" + _PRIMES_IN + r"\s*\)"
+)
 #: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
@@ -39,14 +42,16 @@ def bracketed_names(text: str, tex: bool = False) -> str:
     (``v_{A2x}`` in LaTeX), a space before it where a factor is written against it."""
 
     def one(m: re.Match) -> str:
-        letter, sub = m[1], m[3] or m[4]
+        letter, sub = m[1], m[3] or m[4] or ""
         after = m[6] or m[7] or m[8] or m[9] or ""
+        if not sub and (letter not in "uvVw" or not re.fullmatch(r"[12][nt]?|[nt][12]?", after)):
+            return m[0]  # "(v)_1", "(v)2": one body's velocity at an instant; "(x)_1", "(v)'" left as they are
         if m[9] and m[9][0].isalpha():
             after = after[::-1]  # "(vA)n1", Hibbeler's component then time: v_A1n
         primes = "'" * sum(_primes(m[i]) for i in (2, 5, 10))
         if not after and not primes:
             return m[0]  # "(v_A) - (v_B)": brackets around a name, nothing after them
-        if m[9] and not sub.isalpha():
+        if m[9] and sub and not sub.isalpha():
             return m[0]  # "(v_1)2": a time glued on only after a body's letter ("(vA)1")
         marks = f"{sub}{after}"
         name = f"{letter}_{{{marks}}}" if tex else f"{letter}_{marks}"

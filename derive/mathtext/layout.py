@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.columns import side_by_side
 from derive.mathtext.latex import latex_to_plain
 
 #: The display environments students use.
@@ -57,5 +58,5 @@ def row_plain(row: str) -> str:
     for pattern, plain in _SIUNITX:
         row = pattern.sub(plain, row)
     first, *rest = re.split(r"&\s*&", row)
-    kept = [first, *(c for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
+    kept = [side_by_side(first), *(c for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
     return latex_to_plain(" ; ".join(kept))

@@ -178,7 +178,7 @@ _DASH_CONVERTED = re.compile(
     re.I,
 )
 #: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
-_DIRECTION_WORDS = re.compile(r"\b(?:left|right|backwards?|forwards?|opposite|same|other\s+way|up|down)", re.I)
+_WAYS = re.compile(r"\b(?:left|right|backward|forward|opposite|same|other\s+way|up|down|away\s+from|off\s+the)", re.I)
 
 
 def _remark_in_brackets(text: str) -> str:
@@ -198,7 +198,7 @@ def _remark_in_brackets(text: str) -> str:
                 and head
                 and head.group(1).lower() not in _MATH
                 and "=" not in inner
-                and not _DIRECTION_WORDS.search(inner)
+                and not _WAYS.search(inner)
                 and not REJECTED.search(inner)
                 and not _REJECTS.search(inner)
             ):

@@ -138,10 +138,14 @@ def units_inside(text: str) -> str:
 _BACK_ABROAD = (
     r"zurück|nach\s+links|vers\s+la\s+gauche|à\s+gauche|en\s+sens\s+inverse|hacia\s+(?:la\s+)?izquierda|hacia\s+atrás"
 )
+#: Away from a fixed body (derive's +n points into it): "1.6 m/s (back) away from the wall", "off the cushion".
+_OFF_THE_WALL = r"(?:back\s+)?(?:away\s+from|off)\s+the\s+(?:wall|cushion|barrier|ground|floor|plane|surface)"
 _ON_ABROAD = r"nach\s+rechts|vers\s+la\s+droite|à\s+droite|hacia\s+(?:la\s+)?derecha"
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
     r"|in\s+the\s+opposite\s+direction|the\s+other\s+way|left(?=\s*\)?\s*[.,;]?\s*$)|"
+    + _OFF_THE_WALL
+    + "|"
     + _BACK_ABROAD
     + r")|(to\s+the\s+right|rightwards?"
     r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)|" + _ON_ABROAD + r"))(?!\w)",

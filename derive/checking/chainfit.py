@@ -1,0 +1,49 @@
+"""Which of a chain's values a student's name stands for, where several fit the same relations.
+
+A number written without decimals is read to its figures (``3`` is 2.5 to 3.5), so ``(v_A)_1 = 3``
+holds for A's 3 m/s and for B's 2.9 m/s after the impact alike, and ``2`` for 2 and for 1.5. A
+teacher reads the name as the value the number is, not one it rounds to: among the values that
+make the most relations hold, the nearest to what the relations say is taken."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+import sympy
+
+from derive.checking.numeric import number_of
+
+
+def nearest(
+    cands: Sequence[sympy.Expr],
+    score: dict[sympy.Expr, int],
+    alone: Sequence[tuple[tuple[str, ...], list[sympy.Expr]]],
+    name: tuple[dict, sympy.Symbol],
+    values: tuple[dict, dict],
+) -> sympy.Expr | None:
+    """The candidate of the highest score (the first, as ``max``), and among those of that score
+    the one whose relations (``alone``: the name the only unknown) are nearest to holding;
+    ``name`` is (the names found so far, the name), ``values`` the chain's values and the units'."""
+    best = max(cands, key=lambda c: score[c], default=None)
+    if best is None or not score[best]:
+        return best
+    tied = [c for c in cands if score[c] == score[best]]
+    found, p = name
+
+    def at(x: sympy.Expr, c: sympy.Expr) -> sympy.Expr:
+        return x.xreplace({**found, p: c}).xreplace(values[0]).xreplace(values[1])
+
+    return min(tied, key=lambda c: _gap(alone, at, c)) if len(tied) > 1 else best
+
+
+def _gap(alone, at: Callable[[sympy.Expr, sympy.Expr], sympy.Expr], c: sympy.Expr) -> float:
+    """How far the relations are from holding with the name as ``c``: the spread of each one's
+    sides, relative to their size, summed."""
+    total = 0.0
+    for _sides, exprs in alone:
+        xs = [number_of(at(x, c)) for x in exprs]
+        if any(x is None for x in xs):
+            continue
+        xs = [abs(x) if abs(x.imag) > 1e-12 else x.real for x in xs]
+        total += (max(xs) - min(xs)) / max(max(abs(x) for x in xs), 1e-12)
+    return total
