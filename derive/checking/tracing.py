@@ -34,6 +34,7 @@ class Trace(Protocol):
     held: list[Pair]
     named: dict[int, set[str]]
     stated: dict[int, set[str]]
+    wrong_values: set[str]
     worked: tuple[Pair, ...]
     base: Outcome
     own: dict[sympy.Symbol, sympy.Expr]
