@@ -294,3 +294,17 @@ def test_two_rounded_values_per_unit_of_a_letter_subtracted_keep_both_last_digit
     )
     found = worst_lines("notes-4c12-cue-ball", work)
     assert all(found[n][0] == "correct" for n in range(1, 7)), found
+
+
+def test_a_velocity_between_bars_worked_from_its_components_is_the_speed() -> None:
+    # Notes 4.C.11 (as above): after the impact A has -1.109 along n and 5 sin 37.6° = 3.051
+    # along t, B 8.398 along n and -15 sin 37.6° = -9.152 along t. |v_A'| (US texts' bars for
+    # the size) worked from the components is A's speed, sqrt(1.230 + 9.308) = 3.246, and
+    # |v_B'| = sqrt(70.53 + 83.76) = 12.42: not the size of the n component.
+    work = (
+        "v_Ax' = -1.109 m/s, v_Ay' = 3.051 m/s\n"
+        "|v_A'| = sqrt((-1.109)^2 + 3.051^2) = 3.246 m/s\n"
+        "|v_B'| = sqrt(8.398^2 + (-9.152)^2) = 12.42 m/s\n"
+    )
+    found = worst_lines("notes-4c11-two-spheres", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3, found
