@@ -46,7 +46,8 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
     U = set(trace.U)
     if trace.world is None or any(p.difference.free_symbols & U for p in pairs):
         wrote = bool(decimals(line.sides[:-1]) & trace.wrong_values) and trace.world is not None
-        return nearer_the_slip(trace, line, pairs) or (wrote and reworld.moved(trace, pairs, written_wrong=True))
+        moved = wrote and reworld.moved(trace, pairs, written_wrong=True) and trace._moved(pairs)  # values it moves
+        return nearer_the_slip(trace, line, pairs) or moved
     m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
     if not m or m.group(3):
         return False
