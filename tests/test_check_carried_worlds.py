@@ -151,3 +151,160 @@ def test_names_declared_by_the_statements_letters_for_the_line_of_centres_and_as
         assert found[2][0] == "correct", found
         assert found[3][0] == "wrong"
         assert all(found[n][0] == "carried" for n in (4, 5, 6)), found
+
+
+def test_a_students_own_equation_numbers_are_not_taken_for_the_notes_numbers() -> None:
+    # Notes 4.C.11: A 20 kg at 5 m/s, B 5 kg at 15 m/s, both at 37.6° to n, e = 0.6. Along n:
+    # A 5 cos 37.6° = 3.962, B -15 cos 37.6° = -11.884; momentum 79.24 - 59.42 = 19.82 =
+    # 20a + 5b (right). Restitution with B's sign lost: b - a = 0.6(3.962 - 11.884) = -4.753.
+    # The student's own numbers (1), (2) are not the notes' (1), (2) (the t momenta): with
+    # their momentum kept, (1) - 5x(2): 25a = 19.82 + 23.765 = 43.585, a = 1.743, b = -3.010.
+    work = (
+        "20(3.962) + 5(-11.884) = 20 v_A2n + 5 v_B2n\n"
+        "19.82 = 20 v_A2n + 5 v_B2n        (1)\n"
+        "v_B2n - v_A2n = 0.6(3.962 - 11.884) = -4.753        (2)\n"
+        "(1) - 5x(2):   25 v_A2n = 19.82 + 23.765 = 43.585\n"
+        "v_A2n = 1.743 m/s\n"
+        "v_B2n = 1.743 - 4.753 = -3.010 m/s\n"
+    )
+    for tags in (("(1)", "(2)"), ("(3)", "(1)"), ("(i)", "(ii)")):
+        text = work.replace("(1)", "#1", 1).replace("(2)", "#2", 1).replace("#1", tags[0]).replace("#2", tags[1])
+        found = worst_lines("notes-4c11-two-spheres", text)
+        assert found[2][0] == "correct", (tags, found)
+        assert found[3][:2] == ("wrong", "b_sign"), (tags, found)
+        assert all(found[n][0] == "carried" for n in (4, 5, 6)), (tags, found)
+
+
+def test_a_restitution_numbered_as_the_notes_momentum_is_judged_as_the_restitution() -> None:
+    # AQA M3 2007: A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward it (-2), e = 0.8. The student
+    # numbers their steps, the restitution first: (3) with B's sign lost, v_B - v_A = 0.8(3 - 2)
+    # = 0.8 (for 0.8(3 + 2) = 4); (4) the momentum, right: 0.9 - 0.4 = 0.5 = 0.3v_A + 0.2v_B.
+    # Then 0.5 = 0.3v_A + 0.2(v_A + 0.8) = 0.5v_A + 0.16: v_A = 0.68, v_B = 1.48, carried.
+    work = (
+        "v_B - v_A = 0.8(3 - 2) = 0.8     (3)\n"
+        "0.3(3) + 0.2(-2) = 0.3 v_A + 0.2 v_B     (4)\n"
+        "0.5 = 0.3 v_A + 0.2(v_A + 0.8)\n"
+        "0.5 v_A = 0.34\n"
+        "v_A = 0.68 m/s\n"
+        "v_B = 0.68 + 0.8 = 1.48 m/s\n"
+    )
+    found = worst_lines("aqa-m3-2007-spheres-approach-head-on", work)
+    assert found[1][:2] == ("wrong", "b_sign"), found
+    assert found[2][0] == "correct", found
+    assert all(found[n][0] == "carried" for n in (3, 4, 5, 6)), found
+
+
+def test_bracketed_names_with_marks_parted_by_a_comma_are_read_and_carried() -> None:
+    # Notes 4.C.11 (as above): momentum along n 19.82 = 20a + 5b. The engineering names with
+    # their marks parted by a comma, (v_A)_{n,2}, in LaTeX and typed (vA)_(n,2), are a and b:
+    # the restitution with B's sign lost, b - a = -4.753, then 25a = 43.585 carried.
+    tex = (
+        "\\begin{align*}\n"
+        "20(3.962) + 5(-11.884) &= 20(v_A)_{n,2} + 5(v_B)_{n,2}\\\\\n"
+        "(v_B)_{n,2} - (v_A)_{n,2} &= 0.6(3.962 - 11.884) = -4.753\\\\\n"
+        "25(v_A)_{n,2} &= 19.82 + 23.765 = 43.585\\\\\n"
+        "(v_A)_{n,2} &= 1.743\n"
+        "\\end{align*}\n"
+    )
+    plain = (
+        "20(3.962) + 5(-11.884) = 20(vA)_(n,2) + 5(vB)_(n,2)\n"
+        "(vB)_(n,2) - (vA)_(n,2) = 0.6(3.962 - 11.884) = -4.753\n"
+        "25(vA)_(n,2) = 19.82 + 23.765 = 43.585\n"
+        "(vA)_(n,2) = 1.743\n"
+    )
+    for text, first in ((tex, 2), (plain, 1)):
+        found = worst_lines("notes-4c11-two-spheres", text)
+        assert found[first][0] == "correct", found
+        assert found[first + 1][:2] == ("wrong", "b_sign"), found
+        assert found[first + 2][0] == found[first + 3][0] == "carried", found
+
+
+def test_e_moved_to_the_component_along_the_cushion_is_one_mistake_made_twice() -> None:
+    # Edexcel FM1 2023 (cushion DC, t along it, n out of it): truly v_A2t = U cos(alpha),
+    # v_A2n = -e_1 U sin(alpha), tan(beta) = e_1 tan(alpha). With e_1 on the t component and
+    # left off the n one: tan(beta) = U sin(alpha)/(e_1 U cos(alpha)) = tan(alpha)/e_1. One
+    # misunderstanding (e on the wrong component) in two lines, in either order: the second is
+    # the same mistake again, and the tangent is carried.
+    t_first = (
+        "v_A2t = e_1 U cos(alpha)\n"
+        "v_A2n = -U sin(alpha)\n"
+        "tan(beta) = U sin(alpha)/(e_1 U cos(alpha)) = tan(alpha)/e_1\n"
+    )
+    n_first = "v_A2n = -U sin(alpha)\nv_A2t = e_1 U cos(alpha)\ntan(beta) = tan(alpha)/e_1\n"
+    for work in (t_first, n_first):
+        found = lines("edexcel-fm1-2023-june-q7a-cushion-show-tan-beta", work)
+        assert found[1][0] == "wrong" and not found[1][2], found
+        assert found[2][0] == "wrong" and found[2][2], found  # again
+        assert found[3][0] == "carried", found
+
+
+def test_a_velocity_worked_from_a_wrong_number_is_carried_where_it_is_near_the_true_one_too() -> None:
+    # OpenStax 8-30: puck 0.150 kg at 35.0 m/s, goalie 70.0 kg at rest, elastic: v_B2 - v_A2 = 35.0,
+    # 5.25 = 0.150 v_A2 + 70.0 v_B2 -> 10.5 = 70.15 v_B2, v_B2 = 0.14968, v_A2 = -34.8503. The
+    # division worked as 0.160 (a slip); v_A2 = 0.160 - 35.0 = -34.84 is within a unit of the
+    # true -34.85 at its figures, but it is worked from the wrong 0.160 with the restitution the
+    # student kept (the slip stands for the momentum it was found from): carried.
+    work = (
+        "m_A = 0.150 kg, v_A1 = 35.0 m/s\n"
+        "m_B = 70.0 kg, v_B1 = 0\n"
+        "elastic, so the relative velocity reverses: v_B2 - v_A2 = v_A1 - v_B1 = 35.0\n"
+        "m_A v_A1 = m_A v_A2 + m_B v_B2\n"
+        "0.150(35.0) = 0.150 v_A2 + 70.0 v_B2\n"
+        "5.25 = 0.150 v_A2 + 70.0 v_B2\n"
+        "put v_A2 = v_B2 - 35.0 in:\n"
+        "5.25 = 0.150 v_B2 - 5.25 + 70.0 v_B2\n"
+        "10.5 = 70.15 v_B2\n"
+        "v_B2 = 10.5/70.15 = 0.160 m/s\n"
+        "v_A2 = 0.160 - 35.0 = -34.84 m/s\n"
+    )
+    found = worst_lines("openstax-cp-8-30-puck-bounces-off-goalie", work)
+    assert found[10][:2] == ("wrong", "arithmetic"), found
+    assert found[11][0] == "carried", found
+
+
+def test_a_velocity_the_slip_gives_at_its_figures_is_carried_though_a_unit_from_the_true_one() -> None:
+    # OpenStax 8-30 (as above): 5.25 = 0.150(v_B2 - 35.0) + 70.0 v_B2 -> 70.15 v_B2 = 10.5,
+    # v_B2 = 0.14968, v_A2 = -34.8503. The 5.25 moved across with its sign kept: 70.15 v_B2 = 0,
+    # so v_A2 = 0 - 35.0 = -35.0: exactly the slip's value; the true -34.85 is -34.9 (or
+    # -34.8) at those figures, within a unit of -35.0 only: carried, not correct.
+    work = (
+        "0.150(35.0) = 0.150 v_A2 + 70.0 v_B2\n"
+        "v_B2 - v_A2 = 35.0\n"
+        "5.25 = 0.150(v_B2 - 35.0) + 70.0 v_B2\n"
+        "70.15 v_B2 = 5.25 - 5.25 = 0\n"
+        "v_A2 = v_B2 - 35.0 = -35.0 m/s\n"
+    )
+    found = worst_lines("openstax-cp-8-30-puck-bounces-off-goalie", work)
+    assert found[4][0] == "wrong", found
+    assert found[5][0] == "carried", found
+
+
+def test_two_rounded_values_per_unit_of_a_letter_subtracted_keep_both_last_digits() -> None:
+    # Notes 4.C.12 (cue ball, e = 0.9, A at 45° to n, per unit of A's speed v): along n
+    # 0.70711v; v_Bn2 = 0.70711v(1.9)/2 = 0.67175v, v_An2 = 0.70711v(0.1)/2 = 0.035355v.
+    # Worked from the rounded 0.7071v and 0.6718v, 0.7071v - 0.6718v = 0.0353v: each may be out
+    # by 0.00005v, so the difference by 0.0001v, not by the 0.00005v of its own last digit: right.
+    work = (
+        "v_An1 = v cos 45 = 0.7071v, v_At1 = v sin 45 = 0.7071v\n"
+        "v_An2 + v_Bn2 = 0.7071v\n"
+        "v_Bn2 - v_An2 = 0.9(0.7071v) = 0.6364v\n"
+        "2 v_Bn2 = 1.3435v\n"
+        "v_Bn2 = 0.6718v\n"
+        "v_An2 = 0.7071v - 0.6718v = 0.0353v\n"
+    )
+    found = worst_lines("notes-4c12-cue-ball", work)
+    assert all(found[n][0] == "correct" for n in range(1, 7)), found
+
+
+def test_a_velocity_between_bars_worked_from_its_components_is_the_speed() -> None:
+    # Notes 4.C.11 (as above): after the impact A has -1.109 along n and 5 sin 37.6° = 3.051
+    # along t, B 8.398 along n and -15 sin 37.6° = -9.152 along t. |v_A'| (US texts' bars for
+    # the size) worked from the components is A's speed, sqrt(1.230 + 9.308) = 3.246, and
+    # |v_B'| = sqrt(70.53 + 83.76) = 12.42: not the size of the n component.
+    work = (
+        "v_Ax' = -1.109 m/s, v_Ay' = 3.051 m/s\n"
+        "|v_A'| = sqrt((-1.109)^2 + 3.051^2) = 3.246 m/s\n"
+        "|v_B'| = sqrt(8.398^2 + (-9.152)^2) = 12.42 m/s\n"
+    )
+    found = worst_lines("notes-4c11-two-spheres", work)
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3, found

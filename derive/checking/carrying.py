@@ -86,6 +86,22 @@ def _slack(side: str) -> float:
     return float(figures.last_place(d) / abs(d)) + 1e-9 if d else 1e-9
 
 
+#: A side of decimals each times the same one letter (``0.7071v - 0.6718v``): its numbers, and the letter.
+_PER_LETTER = re.compile(r"^\s*[-+]?\s*\d+\.\d+\s*([A-Za-z])(?:\s*[-+]\s*\d+\.\d+\s*\1)+\s*$")
+
+
+def _per_letter_slack(side: str, data: set) -> float:
+    """The relative slack of a side of rounded decimals each times the same letter, worked as one
+    number (``0.7071v - 0.6718v = 0.0353v``: ±0.0001v on 0.0353v, the last digits of both carried
+    through the subtraction, not the last digit of either); 0 for any other side."""
+    m = _PER_LETTER.match(side)
+    if m is None:
+        return 0.0
+    numbers = re.sub(rf"(?<=\d)\s*{m.group(1)}", "", side)
+    value, slack = side_value(numbers), figures.side_slack(numbers, data, side_value)
+    return slack / abs(value) if value and slack else 0.0
+
+
 class Carrying:
     """The numbers and values the student got wrong so far, and the tests that use them."""
 
@@ -121,7 +137,7 @@ class Carrying:
         plain = [j for j in ik if not raw[j].free_symbols and number_of(raw[j]) is not None]
         values = [abs(complex(number_of(raw[j]))) for j in plain]  # type: ignore[arg-type]
         if not plain or max(values) == 0:
-            return whole
+            return max([whole, *(_per_letter_slack(sides[j], self.ctx.data) for j in ik)])
         slack = [figures.side_slack(sides[j], self.ctx.data, side_value) for j in plain]
         if any(x is None for x in slack):
             return whole

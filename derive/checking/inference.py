@@ -160,11 +160,11 @@ _MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){
 def _magnitude(ctx: Context, r: Read) -> Read:
     """``v_B = sqrt(0.3^2 + 0.173^2)`` in an oblique impact: the student's ``v_B``, read
     elsewhere as B's n component after (``m u_A + m u_B = m v_A + m v_B``), is here the
-    magnitude of its components, B's speed."""
+    magnitude of its components, B's speed; so is ``|v_B'|`` (its size: US texts' bars)."""
     if not ctx.problem.oblique or not r.own_names or not r.exprs or len(r.sides) < 2:
         return r
     nm, speeds = ctx.model.nm, _speeds(ctx)
-    body = next((b for b in "AB" if r.exprs[0] in (getattr(nm, f"{b}2n"), -getattr(nm, f"{b}2n"))), None)
+    body = next((b for b in "AB" if r.exprs[0] in (n := getattr(nm, f"{b}2n"), -n, sympy.Abs(n))), None)
     if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
         return r
     return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))

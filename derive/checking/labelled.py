@@ -19,7 +19,8 @@ import sympy
 from derive.checking import slipnames
 from derive.checking.context import DEG, Context
 from derive.checking.inference import Read
-from derive.checking.worlds import Pair
+from derive.checking.relations import coefficients
+from derive.checking.worlds import Pair, alike
 
 #: A label that says the momentum, or p, before the impact (``p before``, ``p_i``, ``P_1``,
 #: ``initial momentum``, ``total momentum``, ``Σp``, ``momentum before``).
@@ -159,3 +160,19 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     if holds(pair) or holds(flipped):
         return None
     return next((p for p in (pair, flipped) if slipnames.before_impact(ctx, p, holds)), None)
+
+
+def notes_number(tag: str, F: sympy.Expr, equations: dict[int, sympy.Expr], unknowns: tuple, pt: dict) -> str:
+    """A student's tag ``(2)`` as the notes' equation (2) only where the relation ``F = 0`` is in
+    that equation's unknowns and more like it than like any other (at the sample point ``pt``): a
+    student numbers their own equations, (1) the momentum and (2) the restitution, which in an
+    oblique impact are the notes' (3) and (4) (their (1) and (2) are the t momenta), and steps
+    (3), (4) in any order, so a tag that names an equation of other unknowns is their own ("")."""
+    if tag not in ("1", "2", "3", "4") or int(tag) not in equations:
+        return ""
+    own = F.free_symbols & set(unknowns)
+    if not own or not own <= equations[int(tag)].free_symbols:
+        return ""
+    cf = coefficients(F.xreplace(pt), unknowns)
+    near = {j: alike(cf, c) for j, G in equations.items() if cf and (c := coefficients(G.xreplace(pt), unknowns))}
+    return tag if not near or near.get(int(tag), 0.0) >= max(near.values()) - 1e-9 else ""

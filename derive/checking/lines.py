@@ -227,7 +227,7 @@ class Trace(Carrying):
             if ends.difference.free_symbols & set(self.U):
                 self._replace(line, ends, slip=False)
         made = {d.mistake for d in diags} | ({name} if name in cofunctions.NAMES else set())  # an angle's
-        again = [n for n, names in self.named.items() if names & made]
+        again = [n for n, names in self.named.items() if carried.same_mistake(names, made)]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
         elif self.slips:
@@ -279,7 +279,7 @@ class Trace(Carrying):
                 return (), None, f": {COPIED}", "copied_wrong"
             self._number_wrong(bad)
             return (), None, ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
-        label = line.tag if line.tag in ("1", "2", "3", "4") else ""
+        label = labelled.notes_number(line.tag, bad.difference, self.base.equations, self.U, self.pts[0])
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
             return (), *named

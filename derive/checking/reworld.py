@@ -64,16 +64,18 @@ def unrounded(trace: Trace, pairs: list[Pair]) -> bool:
     return trace.holds(pairs, trace.unrefined[1]) and not trace.holds(pairs, trace.truth)
 
 
-def moved(trace: Trace, pairs: list[Pair]) -> bool:
+def moved(trace: Trace, pairs: list[Pair], written_wrong: bool = False) -> bool:
     """Whether ``pairs`` (a line false for the problem and in the slip's world) hold once the
     last slip takes the place of another of the equations, the one it displaced put back; every
     carried relation so far must hold there too. The trace's world is then that one. The equation
     put back may be the student's own earlier slip (``b - a = 4`` the wrong way round, then
-    ``-0.5 = 0.5a + 4`` worked from it into the momentum: b = a + 4 is still theirs)."""
+    ``-0.5 = 0.5a + 4`` worked from it into the momentum: b = a + 4 is still theirs). A line that
+    writes a number the student got wrong (``written_wrong``: ``v1f = 0.160 - 35.0`` after ``v2f =
+    10.5/70.15 = 0.160``) may hold for the problem too, at its figures: it is the student's all the same."""
     U = set(trace.U)
     if trace.world is None or not trace.replaced or trace.displaced is None:
         return False
-    if not any(p.difference.free_symbols & U for p in pairs) or trace.holds(pairs, trace.truth):
+    if not any(p.difference.free_symbols & U for p in pairs) or (trace.holds(pairs, trace.truth) and not written_wrong):
         return False
     n, j = trace.replaced[-1]
     at, before = trace.displaced

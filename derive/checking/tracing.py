@@ -34,6 +34,7 @@ class Trace(Protocol):
     held: list[Pair]
     named: dict[int, set[str]]
     stated: dict[int, set[str]]
+    wrong_values: set[str]
     worked: tuple[Pair, ...]
     base: Outcome
     own: dict[sympy.Symbol, sympy.Expr]
@@ -41,5 +42,6 @@ class Trace(Protocol):
     unrefined: tuple[int, list[Values]] | None
 
     def _closest(self, F: sympy.Expr) -> int | None: ...
+    def _moved(self, pairs: list[Pair]) -> bool: ...
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool: ...
     def pairs(self, line: Read) -> list[Pair]: ...

@@ -3,8 +3,9 @@
 and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``);
 one body's ``(v)_1``, ``(v)2`` (its velocity before and after) the same way (``v_1``, ``v_2``). The brackets only hold the name together: what
 follows them (a time, a component, a prime) is the name's own mark, so the whole is one name
-(``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``), and a factor written before it stays a factor
-(``20 (v_A)'`` is 20 times ``v_A'``, ``mA(vA)1`` is ``mA`` times ``v_A1``).
+(``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``; marks parted by a comma too, ``(v_A)_{n,2}``: ``v_An2``),
+and a factor written before it stays a factor (``20 (v_A)'`` is 20 times ``v_A'``, ``mA(vA)1``
+is ``mA`` times ``v_A1``).
 
 A bracket around a name with no mark after it (``(v_A) - (v_B)``) is left as it is; so is one
 around more than a name (``(v_A - v_B)_2`` is not a name).
@@ -30,7 +31,8 @@ _INSIDE = (
 #: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
-    r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3})\s*\}|\(\s*([A-Za-z0-9]{1,3})\s*\)|([A-Za-z0-9]{1,3})(?![\w(]))"
+    r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\}|\(\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\)"
+    r"|([A-Za-z0-9]{1,3})(?![\w(]))"
     r"|([012][xyntXYNT]?|[xyntXYNT][012])(?![\w.(]))?"
     r"((?:'|’|\s*\^\s*\\prime|\s*\^\s*\{\s*\\prime\s*\})*)"
 )
@@ -43,7 +45,7 @@ def bracketed_names(text: str, tex: bool = False) -> str:
 
     def one(m: re.Match) -> str:
         letter, sub = m[1], m[3] or m[4] or ""
-        after = m[6] or m[7] or m[8] or m[9] or ""
+        after = re.sub(r"\s*,\s*", "", m[6] or m[7] or m[8] or m[9] or "")  # (v_A)_{n,2}: the marks n and 2
         if not sub and (letter not in "uvVw" or not re.fullmatch(r"[12][nt]?|[nt][12]?", after)):
             return m[0]  # "(v)_1", "(v)2": one body's velocity at an instant; "(x)_1", "(v)'" left as they are
         if m[9] and m[9][0].isalpha():
