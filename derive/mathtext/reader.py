@@ -20,6 +20,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
 from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
+from derive.mathtext.anglevectors import angle_vectors
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition
 from derive.mathtext.bracketed import bracketed_names
@@ -150,6 +151,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     out: list[Relation] = []
     points = european_points(text)
     for line, column, written, plain in pieces(text):
+        plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
