@@ -53,7 +53,7 @@ from derive.mathtext.sides import (
 )
 from derive.mathtext.splitting import split_relations
 from derive.mathtext.tables import table_cells
-from derive.mathtext.texwords import tex_comment, tex_text
+from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -189,7 +189,7 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     lines = text.split("\n")
     n, close, rows = 0, None, []
     while n < len(lines):
-        raw = tex_comment(lines[n])
+        raw = tex_row_ends(tex_comment(lines[n]))  # "\\[4pt]": the row ends there
         if close is None:
             plain, close, rows = _line(table_cells(raw), n + 1)  # "| after | $… = 3.88$ |": a table's row
             if plain.strip():
