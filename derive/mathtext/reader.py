@@ -53,6 +53,7 @@ from derive.mathtext.sides import (
     without_direction,
 )
 from derive.mathtext.splitting import split_relations
+from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
@@ -153,6 +154,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     points = european_points(text)
     for line, column, written, plain in pieces(text):
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
+        plain = ascii_subscripts(plain)  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1
         plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given
         plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
