@@ -64,3 +64,13 @@ def test_a_bare_bracketed_letter_with_component_and_instant_is_read() -> None:
 def test_a_slip_in_bare_bracketed_names_is_wrong() -> None:
     found = worst_lines(WALL, WALL_WORK.replace("-e (v)n1 = -19.80", "-e (v)n1 = -9.90"))
     assert found[5][0] == "wrong"
+
+
+@pytest.mark.parametrize(("name", "spelled"), [("θ2", "θ_2"), ("θ₂", "θ_2"), ("theta2", "theta_2"), ("φ1", "φ_1")])
+def test_an_angles_letter_with_its_instant_glued_on_is_read(name: str, spelled: str) -> None:
+    # Giancoli 7-18: the ball leaves at 45° to the normal, on the other side of it (e = 1).
+    for angle in ("45°", "30°"):  # read as the name with its underscore is, whatever the value
+        found = worst_lines(WALL, f"{name} = {angle}\n")
+        assert found == worst_lines(WALL, f"{spelled} = {angle}\n")
+        assert found[1][0] != "not read"
+    assert worst_lines(WALL, "θ2 = 45°\n")[1][0] == "correct"
