@@ -77,3 +77,14 @@ def test_the_figures_a_value_is_given_to_are_no_part_of_it() -> None:
 def test_a_way_in_words_after_a_value_is_kept() -> None:
     (r,) = read_relations("v_B = 1.04 m/s (in the opposite direction to A now)")
     assert r.direction == -1
+
+
+@pytest.mark.parametrize(
+    "taken_back", ["? No -- it goes the other way:", "?? no, it moves on:", "? Nope. It moves on,"]
+)
+def test_a_value_taken_back_with_a_question_and_no_is_not_the_students(taken_back: str) -> None:
+    # momentum after with the value kept: 3m(2u/3) + m(3u) = 5mu = 3m(2u) + m(-u) before
+    work = IMPULSE.format(remark="") + f"so v_2 = -3u{taken_back} v_2 = 3u\n3m(2u/3) + m v_2 = 5mu\n"
+    found = worst_lines(PROBLEM, work)
+    assert found[6][0] == "correct"
+    assert found[7][0] == "correct"
