@@ -155,8 +155,8 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     for line, column, written, plain in pieces(text):
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = ascii_subscripts(plain)  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1
-        plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given
         plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
+        plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given (after what is withdrawn)
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
         lead = ""
