@@ -43,10 +43,16 @@ _WAY = re.compile(
 _SQUARE_LINE = re.compile(r"^\s*\[([^\[\]]*=[^\[\]]*)\]\s*$")
 
 
+def without_doubt(text: str) -> str:
+    """``text`` without a doubt after its value (``e = 2.5 ??? e can't be more than 1``): read
+    before a rejection in words is, as the doubt is the student's about the value, no rejection."""
+    return _DOUBT.sub("", text)
+
+
 def without_given_mark(text: str) -> str:
     """``text`` without the marks and remarks around its result (no part of its value)."""
     text = _SQUARE_LINE.sub(r"\1", _FIGURES.sub("", text))
-    text = _DASH.sub("", _DOUBT.sub("", _WORDY.sub(_unless_a_way, text)))
+    text = _DASH.sub("", without_doubt(_WORDY.sub(_unless_a_way, text)))
     text = _TRAILING.sub(lambda m: m.group(0) if _WAY.search(m.group(0)[len(m.group(1)) :]) else m.group(1), text)
     return _BARE.sub("", _BRACKETED.sub("", text))
 

@@ -25,7 +25,7 @@ from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.doing import said_doing
-from derive.mathtext.givenmarks import without_given_mark
+from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
@@ -155,7 +155,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     for line, column, written, plain in pieces(text):
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = ascii_subscripts(plain)  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1
-        plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
+        plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
         plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given (after what is withdrawn)
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
