@@ -25,7 +25,7 @@ _FIGURES = re.compile(
     re.I,
 )
 #: A doubt after a value: two question marks or more, then words (``= 2.5 ??? supposed to be 0.8``).
-_DOUBT = re.compile(r"(?<=[\w)°%.])\s*\?{2,}\s*(?:[A-Za-z][^=]*)?$")
+_DOUBT = re.compile(r"(?<=[\w)°%.])\s*\?{2,}\s*(?:[A-Za-z][^=()]*)?$")
 #: A remark after a dash, words to the end with no relation in them.
 _DASH = re.compile(r"\s+(?:-{2,3}|—|–)\s+(?=[A-Za-z']{2,}\s+[A-Za-z']{2,})[^=()]*$")
 #: A remark in brackets at the end: five words or more, no relation (``(B only gets … but ok)``).
