@@ -12,24 +12,24 @@ import re
 
 #: The mark in brackets (round or square) at the end of a line.
 _BRACKETED = re.compile(
-    r"\s*[(\[]\s*(?:A\.?\s?G\.?|answer\s+given|given\s+answer|as\s+(?:req(?:uired|'?d|\.)?|expected|given)"
+    r"(?<!\s)\s*[(\[]\s*(?:A\.?\s?G\.?|answer\s+given|given\s+answer|as\s+(?:req(?:uired|'?d|\.)?|expected|given)"
     r"|(?:hence\s+)?(?:shown|proved|proven)|Q\.?E\.?D\.?)\s*[)\]]\s*\.?\s*$",
     re.I,
 )
 #: The mark with no brackets, after a value (``= mu^2(1 - e^2)  A.G.``, ``… ∎``).
-_BARE = re.compile(r"(?<=[\w)°.²³])\s+(?:A\.G\.?|AG|Q\.E\.D\.?|QED)\s*$|\s*[∎□■]\s*$")
+_BARE = re.compile(r"(?<=[\w)°.²³])\s+(?:A\.G\.?|AG|Q\.E\.D\.?|QED)\s*$|(?<!\s)\s*[∎□■]\s*$")
 #: The figures a value is given to, in brackets (``(to 3 s.f.)``, ``(3sf)``, ``(2 d.p.)``).
 _FIGURES = re.compile(
-    r"\s*\(\s*(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?|significant\s+figures"
+    r"(?<!\s)\s*\(\s*(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?|significant\s+figures"
     r"|decimal\s+places)\s*\)",
     re.I,
 )
 #: A doubt after a value: two question marks or more, then words (``= 2.5 ??? supposed to be 0.8``).
 _DOUBT = re.compile(r"(?<=[\w)°%.])\s*\?{2,}\s*(?:[A-Za-z][^=()]*)?$")
 #: A remark after a dash, words to the end with no relation in them.
-_DASH = re.compile(r"\s+(?:-{2,3}|—|–)\s+(?=[A-Za-z']{2,}\s+[A-Za-z']{2,})[^=()]*$")
+_DASH = re.compile(r"(?<!\s)\s+(?:-{2,3}|—|–)\s+(?=[A-Za-z']{2,}\s+[A-Za-z']{2,})[^=()]*$")
 #: A remark in brackets at the end: five words or more, no relation (``(B only gets … but ok)``).
-_WORDY = re.compile(r"\s+\((?=(?:[^()=]*?[A-Za-z']{2,}\b){5})[^()=]*\)\s*[.!?]*\s*$")
+_WORDY = re.compile(r"(?<!\s)\s+\((?=(?:[^()=]*?[A-Za-z']{2,}\b){5})[^()=]*\)\s*[.!?]*\s*$")
 #: Words after a comma that ends a relation's value, none of them a relation nor in brackets.
 _TRAILING = re.compile(r"(=[^=,()]*\d[^=,()]*?)\s*,\s+(?=[^=()]*\b[A-Za-z]{2,}\s+[A-Za-z]{2,}\b)[^=()]*$")
 #: Words that say which way a value points (``, to the left``, ``(in the opposite direction)``):
