@@ -36,8 +36,30 @@ def greek_letters(text: str, known: set[str]) -> str:
         return (m.group(1) if name == _UNICODE_GREEK[m.group(1)] else f" {name}") + (" " if m.group(2) else "")
 
     text = re.sub(rf"([{''.join(_UNICODE_GREEK)}])(?=([A-Za-z(])?)", letter, text)
-    return re.sub(r"(?<![A-Za-z\\])(" + "|".join(sorted(set(_UNICODE_GREEK.values()))) + r")(?![A-Za-z])",
+    text = re.sub(r"(?<![A-Za-z\\])(" + "|".join(sorted(set(_UNICODE_GREEK.values()))) + r")(?![A-Za-z])",
                   lambda m: alias(m.group(1)), text)  # fmt: skip
+    return angle_initials(text, known)
+
+
+#: A Latin letter as a trigonometric function's argument (``u cos a``, ``sin(b)``, ``cos^2 a``).
+_TRIG_LETTER = re.compile(r"(?<![A-Za-z])(a?(?:sin|cos|tan)(?:\^\s*\(?\d\)?)?\s*(?:\(\s*)?)([a-z])(?![\w(])")
+#: The problem's angles by their Greek names (``alpha``, ``theta_1``).
+_GREEK_ANGLE = re.compile(r"(?:alpha|beta|gamma|delta|theta|phi|psi)(?:_\w+)?")
+
+
+def angle_initials(text: str, known: set[str]) -> str:
+    """``u cos a`` -> ``u cos alpha`` where the problem has one angle whose Greek name starts
+    with the letter (a for alpha, b for beta, t for theta, p for phi): typed without Greek, a
+    student writes the angle's initial, and a sine's or cosine's argument is an angle. A letter
+    the problem or the student already uses (``a`` for a velocity) stays itself."""
+
+    def letter(m: re.Match) -> str:
+        if m.group(2) in known:
+            return m.group(0)
+        angles = [k for k in known if _GREEK_ANGLE.fullmatch(k) and k.startswith(m.group(2))]
+        return m.group(1) + angles[0] if len(angles) == 1 else m.group(0)
+
+    return _TRIG_LETTER.sub(letter, text)
 
 
 def subscript(m: re.Match) -> str:

@@ -36,7 +36,7 @@ _STRUCK = re.compile(r"~~[^~\n]*~~|\\(?:sout|st|xout)\{[^{}]*\}")
 _NO = r"(?:no\b|nope|wrong|mistake|oops|error|ignore|scrap|scratch|cross(?:ed)?|not\s+this|redo|x\b|✗)"
 #: A withdrawal of what comes before it on the line.
 _WITHDRAWN = re.compile(
-    rf"(?:<-+|←|⟵|<=+(?=\s*[A-Za-z]))\s*{_NO}"
+    rf"(?:<-+|←|⟵|<=+(?=\s*[A-Za-z]))\s*{_NO}|\?+\s*(?:no|nope)\b(?=\s*[-—–,.;:!])"  # "= -2.9? No -- …"
     rf"|[(\[]\s*(?:wrong|crossed\s+out|ignore(?:\s+this)?|scrap(?:\s+that)?|mistake|oops|withdrawn|redone\s+below)\s*[)\]]"
     r"|\b(?:no\s+wait|wait\s+no|oops|scratch\s+that|scrap\s+that|ignore\s+(?:this|that)(?:\s+line)?|crossed\s+out)\b",
     re.I,

@@ -20,10 +20,12 @@ from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
 from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
+from derive.mathtext.anglevectors import angle_vectors
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.doing import said_doing
+from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
@@ -51,8 +53,9 @@ from derive.mathtext.sides import (
     without_direction,
 )
 from derive.mathtext.splitting import split_relations
+from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import table_cells
-from derive.mathtext.texwords import tex_comment, tex_text
+from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
 
@@ -150,7 +153,10 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     out: list[Relation] = []
     points = european_points(text)
     for line, column, written, plain in pieces(text):
-        plain = said_doing(said_is(points(unmarked(unbold(plain)))))  # "B's speed after is 8 m/s": B's … = 8
+        plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
+        plain = ascii_subscripts(plain)  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1
+        plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
+        plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given (after what is withdrawn)
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
         lead = ""
@@ -187,7 +193,7 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     lines = text.split("\n")
     n, close, rows = 0, None, []
     while n < len(lines):
-        raw = tex_comment(lines[n])
+        raw = tex_row_ends(tex_comment(lines[n]))  # "\\[4pt]": the row ends there
         if close is None:
             plain, close, rows = _line(table_cells(raw), n + 1)  # "| after | $… = 3.88$ |": a table's row
             if plain.strip():

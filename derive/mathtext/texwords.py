@@ -59,3 +59,13 @@ def tex_comment(line: str) -> str:
     """A line without its TeX comment (``%`` not after a backslash)."""
     m = re.search(r"(?<!\\)%", line)
     return line[: m.start()] if m and not re.search(r"\d\s*$", line[: m.start()]) else line
+
+
+#: A row's end with LaTeX's extra space or its no-break star (``\\[4pt]``, ``\\*``, ``\\ [2mm]``).
+_ROW_END = re.compile(r"\\\\\*?(?:\s*\[\s*-?[\d.]*\s*(?:pt|mm|cm|em|ex|in|bp|pc|sp|\\[A-Za-z]+)\s*\])?")
+
+
+def tex_row_ends(line: str) -> str:
+    """``line`` with each row's end ``\\\\[4pt]`` or ``\\\\*`` as a plain ``\\\\``: the space asked for
+    is layout, never the start of the next row's mathematics."""
+    return _ROW_END.sub(lambda m: "\\\\", line)

@@ -1,0 +1,30 @@
+"""Marks after a name as engineering students type them: Unicode's subscripts (``(v_A)ₓ₁``,
+``vₙ₂``, ``(v_B)ᵧ₁``) and a velocity's letter alone in brackets with its component and instant
+glued after (``(v)t1``, ``(v)n2``, ``(v)_t2``: one body's), an angle's Greek letter with its instant
+glued on (``θ2``, ``theta1``). Each is written with ASCII marks,
+as :mod:`.bracketed` and the names' readers read them (``(v_A)_x1``, ``v_n2``, ``v_t1``)."""
+
+from __future__ import annotations
+
+import re
+
+#: Unicode's subscript letters and digits (``ᵧ``, a subscript gamma, is typed for y).
+_SUB = dict(zip("₀₁₂₃₄₅₆₇₈₉ₓᵧₙₜₐₑₒₕₖₗₘₚₛᵢⱼᵣᵤᵥ", "0123456789xyntaeohklmpsijruv", strict=True))
+_RUN = re.compile(r"([\w)'])([" + "".join(_SUB) + r"]+)")
+#: A velocity's letter alone in brackets, its component and instant after (``(v)t1``, ``(v)_n2``).
+_BARE = re.compile(r"\(\s*([uvwUVW])\s*\)\s*_?\s*([ntxy][12]|[12][ntxy])(?![\w(])")
+#: An angle's Greek letter (or its name) with its instant glued on (``θ2``, ``theta1``, ``φ2``).
+_GREEK_DIGIT = re.compile(r"(?<![A-Za-z_\\])(alpha|beta|gamma|theta|phi|psi|[αβγθφϕψ])([12])(?![\w.])")
+
+
+def ascii_subscripts(text: str) -> str:
+    """``text`` with Unicode's subscripts as ``_`` and ASCII (after a bracket or a name with no
+    subscript yet) or as more of the subscript (after ``v_A``), ``(v)t1`` as ``v_t1``, ``θ2`` as ``θ_2``."""
+
+    def run(m: re.Match) -> str:
+        marks = "".join(_SUB[c] for c in m.group(2))
+        word = re.search(r"[A-Za-z_][\w]*$", text[: m.end(1)])
+        glued = m.group(1) != ")" and word is not None and "_" in word.group(0)
+        return m.group(1) + ("" if glued else "_") + marks
+
+    return _GREEK_DIGIT.sub(r"\1_\2", _BARE.sub(r"\1_\2", _RUN.sub(run, text)))
