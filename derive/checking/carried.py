@@ -40,14 +40,14 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
     """A line of numbers only, right as arithmetic, that comes to what the slip makes of a
     result and to no result of the problem (``½(2)(7²) + ½(1)(1²) = 49.5``: T_2 with the
     velocities the swapped masses gave): carried, not correct; so is a velocity stated so
-    (:func:`nearer_the_slip`), or one worked from a number the student got wrong with the slip in
+    (:func:`~.reworld.nearer_the_slip`), or one worked from a number the student got wrong with the slip in
     place of the other equation (:func:`~.reworld.moved`: ``v1f = 0.160 - 35.0 = -34.84`` after
     ``v2f = 10.5/70.15 = 0.160``, near the true -34.85 too: the restitution kept)."""
     U = set(trace.U)
     if trace.world is None or any(p.difference.free_symbols & U for p in pairs):
         wrote = bool(decimals(line.sides[:-1]) & trace.wrong_values) and trace.world is not None
         moved = wrote and reworld.moved(trace, pairs, written_wrong=True) and trace._moved(pairs)  # values it moves
-        return nearer_the_slip(trace, line, pairs) or moved
+        return reworld.nearer_the_slip(trace, line, pairs) or moved
     m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
     if not m or m.group(3):
         return False
@@ -432,25 +432,3 @@ def plain_named(trace: Trace, line: Read, bad: Pair, world: list[Values]) -> tup
         return SPEEDS, "e_speeds"
     given = given_copied(trace, bad) or misread.in_working(trace, line, bad) or misread.total_copied(trace, line, bad)
     return (given, "copied_wrong") if given else None
-
-
-def nearer_the_slip(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
-    """Whether a velocity stated as a number (``v_1 = -35.0`` after ``70.15 v_1 = -2455.25``) is
-    the slip's value rounded to its figures (-35.000) and the problem's only within the unit the
-    figures allow (-34.85 is not -35.0 rounded, half a unit in its last place): the student's
-    number, carried."""
-    if trace.world is None or not line.exprs or len(line.sides) < 2:
-        return False
-    m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
-    first = trace.ctx.in_unknowns(line.exprs[0])
-    if m is None or m.group(3) or not first.free_symbols or not first.free_symbols <= set(trace.U):
-        return False
-    written = Decimal(m.group(1) + m.group(2))
-    half = Decimal(5).scaleb(int(written.as_tuple().exponent) - 1)  # rounded, not ±1 in the last digit
-    near = []
-    for values in (trace.world, trace.truth):
-        v = number_of(first.xreplace(values[0]))
-        if v is None or abs(v.imag) > 1e-12:
-            return False
-        near.append(abs(Decimal(repr(v.real)) - written) <= half)
-    return near[0] and not near[1] and trace.holds(pairs, trace.world)

@@ -22,6 +22,7 @@ from derive.checking.context import Context
 from derive.checking.frames import Pair, n_components, pairs
 from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
+from derive.checking.statementbodies import statement_bodies
 from derive.problem.units import VELOCITY
 
 Option = tuple[tuple[str, sympy.Expr], ...]  # for each name of a group: (what, its meaning)
@@ -101,7 +102,7 @@ def grounded(
         ours = {**mapping, **{p: c[1] for p, c in zip(group, a, strict=True)}}
         theirs = {**mapping, **{p: c[1] for p, c in zip(group, b, strict=True)}}
         every = all(x[1] == -y[1] for x, y in zip(a, b, strict=True))
-        strict = every or _swapped(a, b)  # a law upside down reads as either: the first relation decides
+        strict = every or (_swapped(a, b) and not _lettered(ctx, group, a))  # a law upside down reads as either
         won, first = first_holds(found, set(group), ours, theirs, (ctx, pt, truth), strict)
         return won > 0 and (first or not strict)
 
@@ -119,6 +120,18 @@ def _swapped(a: Option, b: Option) -> bool:
     upside down, and from it on the later lines hold either way; only the first relation the
     names stand in (apart from that difference) may ground it, as a teacher reads x then y."""
     return len(a) == 2 and a[0] == b[1] and a[1] == b[0] and a[0] != a[1]
+
+
+def _lettered(ctx: Context, group: list[sympy.Symbol], reading: Option) -> bool:
+    """Whether each name of ``group`` carries a body's letter (``v_Q``, ``v_P``: the statement's Q
+    is derive's A) and ``reading`` gives it that body's velocity: the letters decide, not the order."""
+    marks = {"A": "A", "B": "B", **statement_bodies(ctx)}
+    for p, (what, _e) in zip(group, reading, strict=True):
+        letters = re.findall(r"[A-Z]", p.name.removeprefix(PREFIX))
+        body = what.lstrip("-")[2:3] if what.lstrip("-").startswith("v_") else ""
+        if len(letters) != 1 or marks.get(letters[0]) != body:
+            return False
+    return True
 
 
 def _signs_of(combo: Option, options: list[Option]) -> list[Option]:

@@ -17,7 +17,7 @@ from derive.checking.context import Context
 
 #: A lone m (not m_A, not a unit after a number: 3 m/s).
 _M = re.compile(r"(?<![\w.'])m(?![\w']|\s*/\s*s\b|\s*s\^)")
-_NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?")
+_NUMBER = re.compile(r"(?<![\w.^])(?<!\^\s)\d+(?:\.\d+)?")  # not a power: the 2 of 200^2
 #: A side of numbers: digits and operators, and the functions a side may use.
 _NUMBERS_ONLY = re.compile(r"(?:[\d\s.+\-*/^()×·]|sqrt|sin|cos|tan|°)+")
 

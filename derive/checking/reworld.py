@@ -12,13 +12,20 @@ last stated each of them (:func:`stated`).
 
 from __future__ import annotations
 
+from decimal import Decimal
+from typing import TYPE_CHECKING
+
 import sympy
 
 from derive.checking import workedslips
 from derive.checking.numeric import number_of
 from derive.checking.relations import coefficients
 from derive.checking.tracing import Trace
-from derive.checking.worlds import Pair, alike, solve_world
+from derive.checking.worlds import NUMBER_SIDE, Pair, alike, solve_world
+from derive.mathtext.notation import student
+
+if TYPE_CHECKING:
+    from derive.checking.inference import Read
 
 
 def in_world(trace: Trace, pairs: list[Pair]) -> bool:
@@ -96,3 +103,25 @@ def moved(trace: Trace, pairs: list[Pair], written_wrong: bool = False) -> bool:
         trace.replaced[-1] = (n, k)
         return True
     return False
+
+
+def nearer_the_slip(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
+    """Whether a velocity stated as a number (``v_1 = -35.0`` after ``70.15 v_1 = -2455.25``) is
+    the slip's value rounded to its figures (-35.000) and the problem's only within the unit the
+    figures allow (-34.85 is not -35.0 rounded, half a unit in its last place): the student's
+    number, carried."""
+    if trace.world is None or not line.exprs or len(line.sides) < 2:
+        return False
+    m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
+    first = trace.ctx.in_unknowns(line.exprs[0])
+    if m is None or m.group(3) or not first.free_symbols or not first.free_symbols <= set(trace.U):
+        return False
+    written = Decimal(m.group(1) + m.group(2))
+    half = Decimal(5).scaleb(int(written.as_tuple().exponent) - 1)  # rounded, not ±1 in the last digit
+    near = []
+    for values in (trace.world, trace.truth):
+        v = number_of(first.xreplace(values[0]))
+        if v is None or abs(v.imag) > 1e-12:
+            return False
+        near.append(abs(Decimal(repr(v.real)) - written) <= half)
+    return near[0] and not near[1] and trace.holds(pairs, trace.world)
