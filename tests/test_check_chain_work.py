@@ -249,3 +249,13 @@ def test_a_line_of_givens_with_a_word_before_them_is_a_report_not_an_internal_er
     work = "down +ve, u = 21, h = 40, g = 9.8\nv^2 = 21^2 + 2(9.8)(40) = 1225\nv = 35\n"
     found = lines("chain-ocr-m2-2007-rebounds-to-start", work)
     assert found[2][0] == "correct" and found[3][0] == "correct"
+
+
+@pytest.mark.parametrize("end", ["\r", "\r\n", "\u2028", "\x0c"])
+def test_lines_ended_otherwise_than_by_a_newline_are_numbered_as_typed(end: str) -> None:
+    # OCR M2 June 2006 Q2 (mark scheme: 6.26 and 5.24): v1² = 2(9.8)(2) = 39.2, v1 = 6.261;
+    # v2² = 2(9.8)(1.4) = 27.44, v2 = 5.238. A file saved with old Mac line ends ("\r") once
+    # raised IndexError out of the chain's reading (lines counted two ways).
+    work = end.join(["v_1^2 = 2(9.8)(2) = 39.2", "v_1 = 6.26", "v_2^2 = 2(9.8)(1.4) = 27.44", "v_2 = 5.24"])
+    found = lines("chain-ocr-m2-2006-drop-rebound", work)
+    assert [found.get(n, ("",))[0] for n in (1, 2, 3, 4)] == ["correct"] * 4

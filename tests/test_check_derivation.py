@@ -275,3 +275,14 @@ def test_both_roots_of_a_quadratic_and_the_rejected_one_are_not_slips() -> None:
     assert found.get(5, ("not read",))[0] in ("not read", "correct")
     assert lines(problem, head + "(6y - u)(30y - u) = 0\ny = u/30 or u/6\n")[5][0] == "correct"
     assert lines(problem, head + "(6y - u)(30y - u) = 0\ny = u/30 or y = u/5\n")[5][0] == "wrong"
+
+
+@pytest.mark.parametrize("end", ["\r", "\u2028", "\x0c"])
+def test_lines_ended_by_other_line_ends_are_each_judged(end: str) -> None:
+    # Notes 4.C.11: normal components before 5 cos 37.6° = 3.962 and -15 cos 37.6° = -11.885;
+    # momentum 20(3.962) + 5(-11.885) = 19.8, restitution 0.6(3.962 + 11.885) = 9.5, so
+    # 25 v_A2n = 19.8 - 5(9.5) and v_A2n = -1.11 (the notes' value). A line separator (U+2028)
+    # or a form feed once ran the three lines into one, judged wrong.
+    work = end.join(["20 v_A2n + 5 v_B2n = 19.8", "v_B2n - v_A2n = 9.5", "v_A2n = -1.11"])
+    found = lines("notes-4c11-two-spheres", work)
+    assert {n: found[n][0] for n in found} == {1: "correct", 2: "correct", 3: "correct"}

@@ -78,7 +78,9 @@ def check(
         else:
             from derive.checking.lines import derivation_items
 
-        lines, notes = derivation_items(ctx, derivation)
+        # every line end Python knows ("\r", "\r\n", U+2028, form feed) as "\n": the reader and
+        # each module that counts lines then count the same lines, as the student's editor shows them
+        lines, notes = derivation_items(ctx, "\n".join(derivation.splitlines()))
         items += lines
         known = words.glossary(solution, () if ctx.chain else ctx.equation_names())
     if errors and len(errors) == len(items):
