@@ -88,3 +88,22 @@ def test_a_value_taken_back_with_a_question_and_no_is_not_the_students(taken_bac
     found = worst_lines(PROBLEM, work)
     assert found[6][0] == "correct"
     assert found[7][0] == "correct"
+
+
+# BYJU'S 4 kg at 12 m/s catches 8 kg at 4 m/s, e = 0.5 (both +x): 4(12) + 8(4) = 80 = 4v_A + 8v_B and
+# v_B - v_A = 0.5(12 - 4) = 4, so v_A = (80 - 32)/12 = 4 m/s and v_B = 8 m/s, both still +x.
+CATCHES = "byjus-4kg-ball-catches-8kg-ball"
+
+
+@pytest.mark.parametrize("taken_back", [" -- this is wrong, redo below", " ?? no"])
+def test_a_value_taken_back_after_a_dash_or_a_doubt_is_never_wrong(taken_back: str) -> None:
+    # the student takes 5 m/s back in words: a teacher does not mark it, and marks the 4 after it
+    found = worst_lines(CATCHES, f"v_A = 5 m/s{taken_back}\nv_A = 4 m/s\n")
+    assert found.get(1, ("not read", ""))[0] == "not read"
+    assert found[2][0] == "correct"
+
+
+def test_a_way_after_a_dash_is_not_taken_off() -> None:
+    # B moves on at 8 m/s the way A came: "in the opposite direction to A" says -8, never right
+    found = worst_lines(CATCHES, "v_B = 8 m/s -- in the opposite direction to A\n")
+    assert found.get(1, ("not read", ""))[0] != "correct"

@@ -36,3 +36,21 @@ def test_a_component_named_by_its_axis_with_sine_for_cosine_is_wrong() -> None:
 @pytest.mark.parametrize("after", ["perp' = u sin(theta)/e", "par' = e u cos(theta)"])
 def test_a_component_after_named_by_its_axis_worked_wrongly_is_wrong(after: str) -> None:
     assert statuses(WALL, f"par = u cos(theta)\nperp = u sin(theta)\n{after}")[-1] == "wrong"
+
+
+# OCR M2 June 2012 Q1: 0.8 kg at 4 m/s straight at a wall, e = 0.3: it rebounds at 0.3(4) = 1.2 m/s
+# away from the wall. "towards the wall" after the rebound's number says the way it does not go.
+PARTICLE = "ocr-m2-2012-particle-hits-wall"
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("v_1 = 4 m/s (towards the wall)\nv_2 = 1.2 m/s (away from the wall)", ["correct", "correct"]),
+        ("v_2 = 1.2 m/s (towards the wall)", ["wrong"]),
+        ("v_2 = 1.2 m/s towards the wall", ["wrong"]),
+        ("v_2 = 0.3(4) = 1.2 (towards the wall)", ["wrong"]),
+    ],
+)
+def test_a_rebound_said_to_go_towards_the_wall_is_wrong(work: str, expected: list) -> None:
+    assert statuses(PARTICLE, work) == expected

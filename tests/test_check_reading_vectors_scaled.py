@@ -68,3 +68,19 @@ def test_wall_vectors_with_a_factor_and_axes_placed_with_a_pronoun() -> None:
     assert statuses(WALL, work) == ["correct", "correct"]
     wrong = AXES + "u = 28(sin 45° i - cos 45° j)\nv = 28(sin 45° i - cos 45° j)\n"  # still into the wall
     assert statuses(WALL, wrong) == ["correct", "wrong"]
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        # After: A's n velocity -3.25 and its t velocity 2√3 = 3.464 (speed 4.75 at 46.8° to the line
+        # of centres, reversed along it). cos 46.8° = 0.6845, sin 46.8° = 0.7290: 3.251 and 3.463.
+        ("v_A' = 4.75(-cos46.8 i + sin46.8 j)", ["correct"]),  # a function glued to a decimal angle
+        ("v_At' = 4.75sin46.8", ["correct"]),
+        ("v_An' = -4.75cos46.8°", ["correct"]),
+        ("v_At' = 4.75sin56.8", ["wrong"]),  # 3.97: another angle
+    ],
+)
+def test_a_function_glued_to_a_rounded_angle_keeps_the_angle_s_figures(text: str, expected: list) -> None:
+    # 46.8 is an angle rounded to 3 figures: sin46.8 is read with its figures as sin 46.8 is.
+    assert statuses(DISCS, text) == expected

@@ -151,18 +151,6 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
     return j, slipnames.FLIPPED[flip], flip
 
 
-#: Two mistakes that are one misunderstanding written in two lines: e put on the component along
-#: the surface and left off the normal one (its restitution as if e = 1): e moved to the wrong
-#: component, whichever line comes first.
-ONE_MISTAKE = (frozenset({"e_on_t", "energy_conserved"}),)
-
-
-def same_mistake(named: set[str], made: set[str]) -> bool:
-    """Whether the mistakes ``made`` in a line are those ``named`` at an earlier slip, made again
-    (the same mistake, or the other half of one misunderstanding of :data:`ONE_MISTAKE`)."""
-    return bool(named & made) or any(named & pair and made & pair and not named & made for pair in ONE_MISTAKE)
-
-
 def again_item(trace: Trace, line: Read, pairs: list[Pair]) -> Item | None:
     """The verdict on a line that makes a slip of the values before the impact again
     (:func:`made_again`); None where it does not."""

@@ -227,7 +227,7 @@ class Trace(Carrying):
             if ends.difference.free_symbols & set(self.U):
                 self._replace(line, ends, slip=False)
         made = {d.mistake for d in diags} | ({name} if name in cofunctions.NAMES else set())  # an angle's
-        again = [n for n, names in self.named.items() if carried.same_mistake(names, made)]
+        again = [n for n, names in self.named.items() if slipnames.same_mistake(names, made)]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
         elif self.slips:

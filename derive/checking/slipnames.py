@@ -425,3 +425,15 @@ def _momentum_of_velocity(ctx: Context, term: sympy.Expr, text: str) -> bool:
         if v.is_number and v != 0 and abs(v) in written:
             return True
     return False
+
+
+#: Two mistakes that are one misunderstanding written in two lines: e put on the component along
+#: the surface and left off the normal one (its restitution as if e = 1): e moved to the wrong
+#: component, whichever line comes first.
+ONE_MISTAKE = (frozenset({"e_on_t", "energy_conserved"}),)
+
+
+def same_mistake(named: set[str], made: set[str]) -> bool:
+    """Whether the mistakes ``made`` in a line are those ``named`` at an earlier slip, made again
+    (the same mistake, or the other half of one misunderstanding of :data:`ONE_MISTAKE`)."""
+    return bool(named & made) or any(named & pair and made & pair and not named & made for pair in ONE_MISTAKE)

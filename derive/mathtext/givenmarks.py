@@ -39,6 +39,18 @@ _WAY = re.compile(
     r"|direction|same\s+way|other\s+way|rebounds?|bounces?)\b",
     re.I,
 )
+#: Words by which a student takes the value before them back (``-- wrong, redo below``, ``?? no``):
+#: the line withdrawn, not a remark to take off (``?? can't find my mistake`` is a doubt, kept).
+_TAKEN_BACK = re.compile(
+    r"^[\W_]*(?:nope|no)\b(?!\s+(?:idea|clue))|\b(?:redo(?:ne)?|ignore|scrap|scratch|crossed\s+out|start(?:ing)?\s+again)\b",
+    re.I,
+)
+#: A way after a dash (``-- in the opposite direction to A``), said as a way, not ``the t part is right``.
+_DASH_WAY = re.compile(
+    r"\b(?:to\s+the\s+(?:left|right)|leftwards?|rightwards?|upwards?|downwards?|away\s+from|towards?|backwards?"
+    r"|forwards?|opposite|reverse[ds]?|(?:same|other)\s+(?:way|direction)|rebounds?|bounces?\s+back)\b",
+    re.I,
+)
 #: Square brackets around a whole line of relations.
 _SQUARE_LINE = re.compile(r"^\s*\[([^\[\]]*=[^\[\]]*)\]\s*$")
 
@@ -46,13 +58,13 @@ _SQUARE_LINE = re.compile(r"^\s*\[([^\[\]]*=[^\[\]]*)\]\s*$")
 def without_doubt(text: str) -> str:
     """``text`` without a doubt after its value (``e = 2.5 ??? e can't be more than 1``): read
     before a rejection in words is, as the doubt is the student's about the value, no rejection."""
-    return _DOUBT.sub("", text)
+    return _DOUBT.sub(lambda m: m.group(0) if _TAKEN_BACK.search(m.group(0).lstrip(" ?")) else "", text)
 
 
 def without_given_mark(text: str) -> str:
     """``text`` without the marks and remarks around its result (no part of its value)."""
     text = _SQUARE_LINE.sub(r"\1", _FIGURES.sub("", text))
-    text = _DASH.sub("", without_doubt(_WORDY.sub(_unless_a_way, text)))
+    text = _DASH.sub(_unless_taken_back, without_doubt(_WORDY.sub(_unless_a_way, text)))
     text = _TRAILING.sub(lambda m: m.group(0) if _WAY.search(m.group(0)[len(m.group(1)) :]) else m.group(1), text)
     return _BARE.sub("", _BRACKETED.sub("", text))
 
@@ -62,3 +74,10 @@ def _unless_a_way(m: re.Match) -> str:
     musing: ``…`` or ``...`` in it)."""
     remark = m.group(0)
     return remark if _WAY.search(remark) and not re.search(r"\.{3}|…", remark) else ""
+
+
+def _unless_taken_back(m: re.Match) -> str:
+    """A remark after a dash taken off, unless it takes the value back (``-- wrong, redo``) or
+    says which way it points (``-- in the opposite direction to A``)."""
+    remark = re.sub(r"^\s*(?:-+|—|–)", "", m.group(0))
+    return m.group(0) if _TAKEN_BACK.search(remark) or _DASH_WAY.search(remark) else ""

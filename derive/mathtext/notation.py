@@ -210,3 +210,13 @@ def _is_number(tok: str) -> bool:
 
 def _is_name(tok: str) -> bool:
     return re.fullmatch(r"[A-Za-z][A-Za-z0-9_]*", tok) is not None
+
+
+#: A trigonometric function glued to a decimal angle (``sin46.8``, ``4.75cos46.8°``).
+_GLUED_ANGLE = re.compile(r"(?<![A-Za-z_\\])(a?(?:sin|cos|tan))(?=\d+\.\d)")
+
+
+def glued_angles(text: str) -> str:
+    """``text`` with a function glued to a decimal angle spaced from it (``sin46.8``: ``sin 46.8``),
+    so that the angle is a number written, with its figures, wherever the checker looks for one."""
+    return _GLUED_ANGLE.sub(r"\1 ", text)

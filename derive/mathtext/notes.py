@@ -178,7 +178,7 @@ _DASH_CONVERTED = re.compile(
     re.I,
 )
 #: Words that say a direction (kept for the reader: ``= 1.04 m/s (to the left)``).
-_WAYS = re.compile(r"\b(?:left|right|backward|forward|opposite|same|other\s+way|up|down|away\s+from|off\s+the)", re.I)
+_WAYS = re.compile(r"\b(?:left|right|(?:back|for)ward|opposite|same|other way|up|down|away from|off the|toward)", re.I)
 
 
 def _remark_in_brackets(text: str) -> str:

@@ -30,7 +30,7 @@ from derive.mathtext.inline import equals_in_brackets, without_into, words_end_i
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.momentumlaw import momentum_law
-from derive.mathtext.notation import FUNCTIONS
+from derive.mathtext.notation import FUNCTIONS, glued_angles
 from derive.mathtext.notes import (
     REMARK_END,
     name_after_words,
@@ -154,7 +154,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     points = european_points(text)
     for line, column, written, plain in pieces(text):
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
-        plain = ascii_subscripts(plain)  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1
+        plain = glued_angles(ascii_subscripts(plain))  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1; sin46.8: sin 46.8
         plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
         plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given (after what is withdrawn)
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv

@@ -140,6 +140,8 @@ _BACK_ABROAD = (
 )
 #: Away from a fixed body (derive's +n points into it): "1.6 m/s (back) away from the wall", "off the cushion".
 _OFF_THE_WALL = r"(?:back\s+)?(?:away\s+from|off)\s+the\s+(?:wall|cushion|barrier|ground|floor|plane|surface)"
+#: Toward a fixed body, derive's +n: "1.2 m/s (towards the wall)", "towards the cushion".
+_INTO_THE_WALL = r"towards?\s+the\s+(?:wall|cushion|barrier|ground|floor|plane|surface)"
 _ON_ABROAD = r"nach\s+rechts|vers\s+la\s+droite|à\s+droite|hacia\s+(?:la\s+)?derecha"
 _DIRECTION = re.compile(
     r"^[-+]?\s*\d[\d.]*\s*(?:[A-Za-z/^\-\s·*1]*?)?\s*\(?\s*(?:(to\s+the\s+left|leftwards?|backwards?"
@@ -148,7 +150,11 @@ _DIRECTION = re.compile(
     + "|"
     + _BACK_ABROAD
     + r")|(to\s+the\s+right|rightwards?"
-    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)|" + _ON_ABROAD + r"))(?!\w)",
+    r"|forwards?|in\s+the\s+same\s+direction|right(?=\s*\)?\s*[.,;]?\s*$)|"
+    + _INTO_THE_WALL
+    + "|"
+    + _ON_ABROAD
+    + r"))(?!\w)",
     re.I,
 )
 
