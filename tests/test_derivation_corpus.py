@@ -84,6 +84,7 @@ def test_judged_as_a_teacher_judges(cli, case: Case) -> None:
         0 if problems and not lines_wrong else marked - len(lines_wrong & set(case.verdict.lines)),
         marked,
     )
+    assert not any("internal error" in p for p in problems), problems[0]  # a report, never a traceback
     if problems:
         pytest.xfail("; ".join(problems[:4]))
 

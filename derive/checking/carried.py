@@ -266,8 +266,11 @@ def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) 
         kept = h.difference.free_symbols & set(trace.U)
         if len(kept) != 1 or not others - kept or h.difference.has(sympy.Float) or same(world, kept):
             continue  # a value found (w = u(1 + e)), not rounded decimals, that the slip's world changes
-        if sympy.degree(sympy.expand(h.difference), next(iter(kept))) != 1:
-            continue
+        try:
+            if sympy.degree(sympy.expand(h.difference), next(iter(kept))) != 1:
+                continue
+        except sympy.PolynomialError:
+            continue  # |v_B2| written: not a polynomial in it, no value found by it
         nm = trace.ctx.model.nm
         found_first = not kept & {nm.A2n, nm.B2n, nm.A2t, nm.B2t}  # e or a mass: from the problem's condition
         for k in sorted(trace.equations, key=lambda k: (k <= 4, k)) if found_first else trace.equations:
