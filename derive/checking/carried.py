@@ -297,14 +297,20 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
         both = merge(trace.variant, v) if v is not None else None
         if both is None:
             continue
-        eqs = model.numbered(both)
-        changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
-        if not changed or all(trace.equations[j] == F for j, F in changed.items()):
-            continue
-        world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
-        if world is not None and trace.holds([bad], world):
-            return m, min(changed)
+        at = _made(trace, m, model.numbered(both), own, bad)
+        if at is not None:
+            return m, at
     return _in_forms(trace, bad, own)
+
+
+def _made(trace: Trace, m: Mistake, eqs: dict, own: set[int], bad: Pair) -> int | None:
+    """The first equation ``m`` changes (to ``eqs``'s) where the student's equations so far with
+    that change make ``bad`` hold (None where none is changed or it does not hold)."""
+    changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
+    if not changed or all(trace.equations[j] == F for j, F in changed.items()):
+        return None
+    world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
+    return min(changed) if world is not None and trace.holds([bad], world) else None
 
 
 def _in_forms(trace: Trace, bad: Pair, own: set[int]) -> tuple[Mistake, int] | None:
@@ -318,12 +324,9 @@ def _in_forms(trace: Trace, bad: Pair, own: set[int]) -> tuple[Mistake, int] | N
         m = REGISTRY.get(name)
         for under in (model.under(trace.variant), model) if m is not None else ():
             for eqs in form(under, trace.variant):
-                changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
-                if not changed or all(trace.equations[j] == F for j, F in changed.items()):
-                    continue
-                world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
-                if world is not None and trace.holds([bad], world):
-                    return m, min(changed)
+                at = _made(trace, m, eqs, own, bad)
+                if at is not None:
+                    return m, at
     return None
 
 
