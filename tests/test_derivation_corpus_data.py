@@ -79,6 +79,12 @@ def _number(value: object) -> float | None:
         return None
 
 
+def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
+    """Two bodies' velocities after, v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
+    v_a = (p - m_b * gap) / (m_a + m_b)
+    return v_a, v_a + gap
+
+
 def _given(problem: str) -> dict[str, float]:
     with (PROBLEMS / f"{problem}.toml").open("rb") as handle:
         table = tomllib.load(handle)["given"]
@@ -534,13 +540,16 @@ _OPERATORS = {
 
 # Letters other than u and e a problem keeps (v, alpha, k, lam), at the point u: filled by a batch below.
 LETTERS: dict = {}
-_FUNCTIONS = {"sqrt": math.sqrt, "cos": math.cos, "sin": math.sin}
+_FUNCTIONS = {"sqrt": math.sqrt, "cos": math.cos, "sin": math.sin, "tan": math.tan, "atan": math.atan}
 
 
 def _formula(text: str, u: float, e: float, letters: dict[str, float] | None = None) -> float:
-    """A verdict's closed form ("u*(1 - 6*e)/7") at one point: u, e, the problem's other letters,
-    numbers, + - * / and sqrt, cos, sin only."""
-    names = {"u": u, "e": e} | (letters or {})
+    """A verdict's closed form ("u*(1 - 6*e)/7") at one point: u, e, the problem's other letters."""
+    return closed_form(text, {"u": u, "e": e} | (letters or {}))
+
+
+def closed_form(text: str, names: dict[str, float]) -> float:
+    """A closed form at one point: ``names``' values, numbers, + - * / and sqrt, cos, sin, tan, atan only."""
 
     def value(node: ast.AST) -> float:
         if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
@@ -558,7 +567,7 @@ def _formula(text: str, u: float, e: float, letters: dict[str, float] | None = N
             and len(node.args) == 1
         ):
             return _FUNCTIONS[node.func.id](value(node.args[0]))
-        raise AssertionError(f"not a formula in u and e: {text!r}")
+        raise AssertionError(f"not a closed form here: {text!r}")
 
     return value(ast.parse(text, mode="eval").body)
 

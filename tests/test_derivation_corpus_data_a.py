@@ -13,18 +13,12 @@ import math
 
 import pytest
 from support.derivation_corpus import agree
-from test_derivation_corpus_data import CASES, _formula, _given
+from test_derivation_corpus_data import CASES, _formula, _given, _solve
 
 A_CASES = {c.name: c for c in CASES if c.name.startswith("a")}
 POINTS = ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9))  # (u, e) where e is a letter
 K, LAM, ALPHA = 2.5, 0.3, 0.7  # letters of the symbolic problems (alpha in radians)
 G_FT = 32.2
-
-
-def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
-    """v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
-    v_a = (p - m_b * gap) / (m_a + m_b)
-    return v_a, v_a + gap
 
 
 # ---- symbolic problems: (u, e) -> values, and the slipped values ----

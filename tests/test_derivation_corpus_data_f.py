@@ -12,7 +12,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _given
+from test_derivation_corpus_data import CASES, _given, _solve
 
 F_CASES = [c for c in CASES if c.name.startswith("f")]
 G_FT = 32.2  # ft/s^2, the engineering students' g
@@ -20,12 +20,6 @@ G_FT = 32.2  # ft/s^2, the engineering students' g
 
 def _case(prefix: str):
     return next(c for c in F_CASES if c.name.startswith(prefix))
-
-
-def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
-    """v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
-    v_a = (p - m_b * gap) / (m_a + m_b)
-    return v_a, v_a + gap
 
 
 def _plastic(m_a: float, m_b: float, u_a: float, u_b: float) -> dict:

@@ -15,7 +15,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _formula, _given
+from test_derivation_corpus_data import CASES, _formula, _given, _solve
 
 MD_CASES = [c for c in CASES if c.name.startswith("md")]
 POINTS = ((1.0, 0.5, 3.0, 0.2), (2.0, 0.3, 1.5, 0.4), (1.5, 0.9, 4.0, 0.1))  # (u, e, k, lam)
@@ -23,12 +23,6 @@ POINTS = ((1.0, 0.5, 3.0, 0.2), (2.0, 0.3, 1.5, 0.4), (1.5, 0.9, 4.0, 0.1))  # (
 
 def _case(prefix: str):
     return next(c for c in MD_CASES if c.name.startswith(prefix))
-
-
-def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
-    """v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
-    v_a = (p - m_b * gap) / (m_a + m_b)
-    return v_a, v_a + gap
 
 
 def _ke(m: float, *speeds: float) -> float:

@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _formula, _given
+from test_derivation_corpus_data import CASES, _formula, _given, _solve
 
 U_CASES = [c for c in CASES if c.name.startswith("u")]
 POINTS = ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9))  # (u, e) for the letters
@@ -22,12 +22,6 @@ K, LAM = 3.0, 0.25  # the letters k and lambda of u07, at one point
 
 def _case(prefix: str):
     return next(c for c in U_CASES if c.name.startswith(prefix))
-
-
-def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
-    """v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
-    v_a = (p - m_b * gap) / (m_a + m_b)
-    return v_a, v_a + gap
 
 
 # ---- numeric problems: prefix -> (true values, slip values or None) from the givens ----

@@ -10,59 +10,20 @@ closed form there (a small arithmetic reader, no eval). Nothing here runs derive
 
 from __future__ import annotations
 
-import ast
 import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _given
+from test_derivation_corpus_data import CASES, _given, _solve
+from test_derivation_corpus_data import closed_form as _closed_form
 
 ZF_CASES = [c for c in CASES if c.name.startswith("zf")]
 # (u, e, alpha in radians, k, lam) for the letters
 POINTS = ((1.0, 0.5, 0.4, 2.0, 0.2), (2.0, 0.3, 0.7, 3.0, 0.3), (1.5, 0.9, 1.1, 1.5, 0.1))
 
-_OPERATORS: dict[type, Callable[[float, float], float]] = {
-    ast.Add: lambda a, b: a + b,
-    ast.Sub: lambda a, b: a - b,
-    ast.Mult: lambda a, b: a * b,
-    ast.Div: lambda a, b: a / b,
-}
-_FUNCTIONS: dict[str, Callable[[float], float]] = {
-    "sqrt": math.sqrt,
-    "sin": math.sin,
-    "cos": math.cos,
-    "tan": math.tan,
-    "atan": math.atan,
-}
-
-
-def _closed_form(text: str, names: dict[str, float]) -> float:
-    """A verdict's closed form ("u*(1 + e)/4") at one point: names, numbers, + - * / and a few functions."""
-
-    def value(node: ast.AST) -> float:
-        if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
-            return _OPERATORS[type(node.op)](value(node.left), value(node.right))
-        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
-            return -value(node.operand)
-        if isinstance(node, ast.Constant) and isinstance(node.value, int | float):
-            return float(node.value)
-        if isinstance(node, ast.Name) and node.id in names:
-            return names[node.id]
-        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in _FUNCTIONS:
-            return _FUNCTIONS[node.func.id](value(node.args[0]))
-        raise AssertionError(f"not a closed form here: {text!r}")
-
-    return value(ast.parse(text, mode="eval").body)
-
 
 def _case(prefix: str):
     return next(c for c in ZF_CASES if c.name.startswith(prefix))
-
-
-def _solve(m_a: float, m_b: float, p: float, gap: float) -> tuple[float, float]:
-    """v_A, v_B from m_A v_A + m_B v_B = p and v_B - v_A = gap."""
-    v_a = (p - m_b * gap) / (m_a + m_b)
-    return v_a, v_a + gap
 
 
 # ---- numeric problems: prefix -> (true values, slip values or None) from the givens ----
