@@ -210,7 +210,12 @@ def _collide_again(g: dict) -> dict:
 
 
 def _thrown_down(g: dict) -> dict:
-    v_1 = math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"])
+    return _bounce(g, math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"]))
+
+
+def _bounce(g: dict, v_1: float) -> dict:
+    """A sphere's bounce on the floor (e_floor) at the speed v_1 it lands with: the rebound, the rise,
+    the impulse and the energy lost."""
     v_2 = g["e_floor"] * v_1
     return {
         "v_1": v_1,

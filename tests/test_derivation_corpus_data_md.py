@@ -15,7 +15,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _formula, _given, _solve
+from test_derivation_corpus_data import CASES, _bounce, _formula, _given, _solve
 
 MD_CASES = [c for c in CASES if c.name.startswith("md")]
 POINTS = ((1.0, 0.5, 3.0, 0.2), (2.0, 0.3, 1.5, 0.4), (1.5, 0.9, 4.0, 0.1))  # (u, e, k, lam)
@@ -115,15 +115,7 @@ def _md14(g: dict) -> tuple[dict, None]:
 
 def _md15(g: dict) -> tuple[dict, dict]:
     def worked(v_1_squared: float) -> dict:
-        v_1 = math.sqrt(v_1_squared)
-        v_2 = g["e_floor"] * v_1
-        return {
-            "v_1": v_1,
-            "v_2": v_2,
-            "h_2": v_2**2 / (2 * g["g"]),
-            "J": g["m"] * (v_1 + v_2),
-            "E_lost": _ke(g["m"], v_1) - _ke(g["m"], v_2),
-        }
+        return _bounce(g, math.sqrt(v_1_squared))
 
     fall = 2 * g["g"] * g["h_0"]
     return worked(g["v_0"] ** 2 + fall), worked(g["v_0"] + fall)  # 5^2 written as 5

@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import _ALPHA, _K, _LAM, CASES, _formula, _given, _solve
+from test_derivation_corpus_data import _ALPHA, _K, _LAM, CASES, _bounce, _formula, _given, _solve
 
 XC_CASES = [c for c in CASES if c.name.startswith("xc")]
 POINTS = ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9))  # (u, e) for the letters
@@ -90,18 +90,8 @@ def _xc14(g: dict) -> tuple[dict, None]:
 
 
 def _xc15(g: dict) -> tuple[dict, dict]:
-    def worked(v_1: float) -> dict:
-        v_2 = g["e_floor"] * v_1
-        return {
-            "v_1": v_1,
-            "v_2": v_2,
-            "h_2": v_2**2 / (2 * g["g"]),
-            "J": g["m"] * (v_1 + v_2),
-            "E_lost": 0.5 * g["m"] * (v_1**2 - v_2**2),
-        }
-
-    true = worked(math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"]))
-    return true, worked(math.sqrt(g["v_0"] ** 2 + g["g"] * g["h_0"]))  # the 2 of 2gh lost
+    true = _bounce(g, math.sqrt(g["v_0"] ** 2 + 2 * g["g"] * g["h_0"]))
+    return true, _bounce(g, math.sqrt(g["v_0"] ** 2 + g["g"] * g["h_0"]))  # the 2 of 2gh lost
 
 
 NUMERIC_XC: dict[str, Callable[[dict], tuple[dict, dict | None]]] = {

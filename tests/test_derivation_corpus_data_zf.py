@@ -14,7 +14,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _given, _solve
+from test_derivation_corpus_data import CASES, _bounce, _given, _solve
 from test_derivation_corpus_data import closed_form as _closed_form
 
 ZF_CASES = [c for c in CASES if c.name.startswith("zf")]
@@ -67,15 +67,7 @@ def _zf07(g: dict) -> tuple[dict, dict]:
 
 def _zf12(g: dict) -> tuple[dict, dict]:
     def worked(v_1_squared: float) -> dict:
-        v_1 = math.sqrt(v_1_squared)
-        v_2 = g["e_floor"] * v_1
-        return {
-            "v_1": v_1,
-            "v_2": v_2,
-            "h_2": v_2**2 / (2 * g["g"]),
-            "J": g["m"] * (v_1 + v_2),
-            "E_lost": 0.5 * g["m"] * (v_1**2 - v_2**2),
-        }
+        return _bounce(g, math.sqrt(v_1_squared))
 
     fall = 2 * g["g"] * g["h_0"]
     return worked(g["v_0"] ** 2 + fall), worked(g["v_0"] + fall)  # 5 not squared
