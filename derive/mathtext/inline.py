@@ -20,19 +20,20 @@ from derive.mathtext.units import is_unit
 
 #: Words after a piece of mathematics (``$x = y - 5eu$. Put into (1)``, ``$… = 2u$ into (2)``).
 #: (``… \quad (check: $…$)``: TeX's spacing before the words, or a bracket that opens with a word and a colon.)
+#: (``…$, A's part along the line of centres.``: a body's possessive opens words too.)
 _PROSE_AFTER = re.compile(
-    r"^[\s.,;:]*(?:\\q?quad\b\s*|\\[,;: ]\s*)*(?:([A-Za-z]{2,})\b|\(\s*([A-Za-z]{2,})[A-Za-z ]*:)"
+    r"^[\s.,;:]*(?:\\q?quad\b\s*|\\[,;: ]\s*)*(?:([A-Za-z]{2,})\b|[A-Z]['’]s\s+[A-Za-z]{2,}|\(\s*([A-Za-z]{2,})[A-Za-z ]*:)"
 )
 
 
 def _whole_relation(plain: str) -> bool:
-    """Whether a piece of mathematics is a relation with both sides in it (``x = y - 5eu``; not
+    """Whether a piece of mathematics is a relation with both sides in it (``x = y - 5eu``, ``μ = 2m/3``; not
     ``= 6.5v``, whose name is in the words before it, nor rows joined by ";")."""
     s = plain.strip()
     signs = [k for k, c in enumerate(s) if c in "=≈"]
     if ";" in plain or not signs:
         return False  # plain code, not one pattern: a long line must not backtrack (hostile input)
-    return bool(re.search(r"[A-Za-z0-9]", s[: signs[0]])) and bool(re.search(r"[A-Za-z0-9)]", s[signs[-1] + 1 :]))
+    return bool(re.search(r"[^\W_]", s[: signs[0]])) and bool(re.search(r"[A-Za-z0-9)]", s[signs[-1] + 1 :]))
 
 
 def _said_after(text: str) -> bool:
@@ -47,10 +48,28 @@ def _said_after(text: str) -> bool:
 _UNITISH = re.compile(r"^\s*(?:kg|k?N|k?J|m|s|ft|lb|slugs?|g|km|mph|Ns|rad|deg|degrees)(?![A-Za-z])")
 
 
-def words_end_it(plain: str, after: str) -> bool:
+def words_end_it(plain: str, after: str, before: str = "") -> bool:
     """Whether the words ``after`` a piece of mathematics (``plain``, made plain) end the relation
-    it holds: a relation with both sides inside, followed by prose that is no unit and no direction."""
-    return _whole_relation(plain) and _PROSE_AFTER.match(after) is not None and not _said_after(after)
+    it holds: a relation with both sides inside, followed by prose that is no unit and no direction,
+    or by the bracket that closes one the words ``before`` it opened (``(should lose … with $\\mu =
+    \\frac{2m}{3}$):``, ``(And $x = …$)``)."""
+    if not _whole_relation(plain):
+        return False
+    if _CLOSES_PROSE.match(after) and _open_brackets(before) > 0 and _open_brackets(plain) == 0:
+        return True
+    return _PROSE_AFTER.match(after) is not None and not _said_after(after)
+
+
+#: A bracket closed right after a piece of mathematics, then the end of the sentence or more words.
+_CLOSES_PROSE = re.compile(r"^\s*\)(?:[\s.,;:!?]*$|[\s.,;:]+[A-Za-z])")
+
+
+def _open_brackets(text: str) -> int:
+    """How many round brackets ``text`` leaves open."""
+    depth = 0
+    for ch in text:
+        depth = max(depth + {"(": 1, ")": -1}.get(ch, 0), 0)
+    return depth
 
 
 #: The value said again in brackets that open with "=" (``= 0.346 (= 0.2√3)``, ``≈ 5.29 (= 2√7)``,

@@ -267,7 +267,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
-        if words_end_it(out[-1], raw[i:]):
+        if words_end_it(out[-1], raw[i:], " ".join(out[:-1])):
             out.append(";")  # "Sub $v_Q = v_P + 5ue$ into (1):": the words after are not the relation's
 
 
