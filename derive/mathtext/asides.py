@@ -71,3 +71,19 @@ def without_condition(plain: str) -> str:
     if m is None or "=" not in head.replace("<=", "").replace(">=", "") or head.endswith("="):
         return plain
     return plain[: m.start()]
+
+
+#: A sign convention in brackets among a quantity's words (``impulse from ground (up +ve) = …``,
+#: ``momentum (taking left as positive) = …``, ``J (+ve upwards) = …``): said for the line, no part
+#: of the name.
+_CONVENTION = re.compile(r"\s*\(\s*(?=[^()=]*(?:\+\s?ve\b|\bpositive\b))[^()=]{1,60}\)(?=\s*$)", re.I)
+
+
+def without_convention(plain: str) -> str:
+    """``plain`` without a sign convention in brackets at the end of its first side (before its
+    first ``=``); the words of the convention stay on the line as written, for the reader of
+    conventions."""
+    at = plain.find("=")
+    if at < 0:
+        return plain
+    return _CONVENTION.sub("", plain[:at]).rstrip() + " " + plain[at:]

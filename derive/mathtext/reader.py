@@ -22,7 +22,7 @@ from dataclasses import dataclass, replace
 from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
 from derive.mathtext.anglevectors import angle_vectors
 from derive.mathtext.arrows import starts_with_so
-from derive.mathtext.asides import without_condition
+from derive.mathtext.asides import without_condition, without_convention
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.doing import said_doing
 from derive.mathtext.givenmarks import without_doubt, without_given_mark
@@ -386,7 +386,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     direction = direction_of(text[text.rfind("=") + 1 :])
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
-    text = _UNIT_BRACKET.sub("", words_after(glued_marks(text)))  # 2 vAx: a name, not words
+    text = _UNIT_BRACKET.sub("", words_after(glued_marks(without_convention(text))))  # 2 vAx: a name, not words
     sides = tuple(_side(s) for s in text.split("="))
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     if quoted_law(sides):
