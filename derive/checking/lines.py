@@ -220,7 +220,7 @@ class Trace(Carrying):
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
         diags, j, detail, name = self._explain(line, bad, answer)
-        if detail in (WORKING, termslips.SIGN_PUT_IN):  # what the student carries on: its rule's left = last
+        if detail in (WORKING, termslips.SIGN_PUT_IN) or workedslips.worked_on(self, pairs, name, world):  # carried on
             bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last

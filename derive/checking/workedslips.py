@@ -201,3 +201,12 @@ def energy_masses_swapped(trace, bad: Pair, holds: Holds) -> bool:
         if holds(replace(bad, left=sides[0], right=sides[1])):
             return True
     return False
+
+
+def worked_on(trace, pairs: list[Pair], name: str, world: list) -> bool:
+    """Whether a line that states a rule and works it through (``x = y + 4eu = (3u - eu + 4eu)/2 =
+    u(3 + 3e)/2``) has its slip in the working: its first relation holds in the slips' ``world`` and
+    the slip ``name`` is one of solving (arithmetic or algebra). What the student carries on is then
+    its first side = its last (``x = u(3 + 3e)/2``), the other unknowns as they had them, as a
+    teacher marks the lines after it."""
+    return name in ("arithmetic", "algebra") and len(pairs) > 1 and trace.holds([pairs[0]], world)
