@@ -41,6 +41,7 @@ from derive.mathtext.notes import (
     without_note,
 )
 from derive.mathtext.parser import GREEK
+from derive.mathtext.resultlists import listed_speeds
 from derive.mathtext.sides import (
     decimal_commas,
     direction_of,
@@ -156,6 +157,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = glued_angles(ascii_subscripts(plain))  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1; sin46.8: sin 46.8
         plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
+        plain = listed_speeds(plain)  # "A: 6.94 ft/s, B: 3.60 ft/s": the speeds after, listed by body
         plain = without_given_mark(plain)  # "= mu^2(1 - e^2)  (A.G.)": the answer given (after what is withdrawn)
         plain = momentum_law(equals_in_brackets(plain))  # "= 0.346 (= 0.2 sqrt3)": one more side; Σmu = Σmv
         plain = without_condition(plain)  # "e = 2/3 (e > 0)": why the root was taken
