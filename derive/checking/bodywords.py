@@ -7,12 +7,14 @@ from __future__ import annotations
 import re
 from dataclasses import replace
 
+from derive.checking.context import Context
 from derive.checking.inference import Read
+from derive.checking.statementbodies import statement_bodies
 
 #: A body's quantity in words (``speed of Q after``, ``P's velocity``, ``Q after``), the label between.
 _BODY_PHRASE = (
     (r"(\b(?i:speed|velocity|direction|momentum|KE|energy)\s+of\s+)", r"\b"),
-    (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction))"),
+    (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction|component))"),
     (r"((?:^|[:*,;(]|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),
     # a sign convention: "positive in the direction P was moving"
     (
@@ -22,12 +24,15 @@ _BODY_PHRASE = (
 )
 
 
-def body_words(text: str, labels: tuple[str, str]) -> str:
-    """``text`` with the problem's own labels of the bodies (or the exam's P and Q) written A and B
-    where words say a body's quantity (``speed of Q after``), as the names in words are read; one
-    letter for one, so that every line keeps its length."""
-    if tuple(labels) == ("A", "B"):
-        labels = ("P", "Q")  # the exam's letters, as the names in words read them (wordnames)
+def body_words(text: str, ctx: Context) -> str:
+    """``text`` with the problem's own labels of the bodies (or the exam's P and Q, matched to A and B
+    as the statement says: ``P lies at rest``, Q moving, is derive's A) written A and B where words
+    say a body's quantity (``speed of Q after``), as the names in words are read; one letter for
+    one, so that every line keeps its length."""
+    labels = tuple(getattr(ctx.problem, "labels", ("A", "B")))
+    if labels == ("A", "B"):
+        said = statement_bodies(ctx)  # {"P": "B", "Q": "A"}: the statement's letters, where it says
+        labels = tuple(sorted(said, key=said.get)) if sorted(said.values()) == ["A", "B"] else ("P", "Q")
     if any(len(x) != 1 for x in labels) or set(labels) & {"A", "B"}:
         return text
     for label, body in zip(labels, "AB", strict=True):

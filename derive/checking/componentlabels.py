@@ -12,7 +12,12 @@ from dataclasses import replace
 from derive.mathtext.reader import Relation
 
 #: "the component of A's velocity" before "along the line of centres" (the body is its label).
-COMPONENT_OF = re.compile(r"^\s*(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+", re.I)
+#: Or "A's velocity" itself before the axis words ("A's velocity along line of centres = u cos(alpha)").
+COMPONENT_OF = re.compile(
+    r"^\s*(?:(?:the\s+)?component\s+of\s+([AB])['’]s\s+(?:initial\s+)?velocity\s+"
+    r"|([AB])['’]s\s+(?:initial\s+)?velocity\s+(?=along\b|across\b|perp|parallel\b))",
+    re.I,
+)
 #: A component named by its axis alone: "along the line of centres", "perpendicular to it".
 _AXIS_ONLY = re.compile(
     r"^\s*(?:along|across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+(?:centres|impact))?))?\s*$", re.I
@@ -39,7 +44,7 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
         m = COMPONENT_OF.match(r.sides[0])
         h = _HAS.match(r.sides[0]) if not r.label else None
         if m:
-            body = m.group(1).upper()
+            body = (m.group(1) or m.group(2)).upper()
             labels.append(r.label or body)
         elif h and (h.group(2) or body):
             body = (h.group(2) or body).upper()

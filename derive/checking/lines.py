@@ -69,7 +69,7 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
-    said = body_words(text, getattr(ctx.problem, "labels", ("A", "B")))
+    said = body_words(text, ctx)
     lines, notes = read_lines(ctx, said, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     lines = [as_typed(line, text, said) for line in lines]
     if not any(line.exprs is not None or line.error.startswith("unknown name") for line in lines):

@@ -221,10 +221,10 @@ def of_the_body(
         text = re.sub(r"\b([uv])\b(?!_)", lambda k: own(k, f"{k.group(1)}_{body}"), text)
     prime = "'" if after else ""
     text = COMPONENT_OF.sub("", text)
-    if re.fullmatch(r"\s*along(?:\s+the\s+line(?:\s+of\s+centres)?)?\s*", text, re.I):  # the side alone
+    if re.fullmatch(r"\s*along(?:\s+(?:the\s+)?line(?:\s+of\s+cent(?:re|er)s)?)?\s*", text, re.I):  # alone
         return f"{body}_n{prime}"
     across = re.fullmatch(
-        rf"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|the\s+line(?:\s+of\s+centres)?))?\s*({SIZE})?\s*",
+        rf"\s*(?:across|perpendicular(?:\s+to)?)(?:\s+(?:it|(?:the\s+)?line(?:\s+of\s+cent(?:re|er)s)?))?\s*({SIZE})?\s*",
         text,
         re.I,
     )
