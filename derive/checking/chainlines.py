@@ -57,7 +57,9 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     read = _read(ctx, text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
-    said |= impulse_said(ctx, read, said)  # "impulse = m(v - u) = …": the impact's J, not a name it defines
+    said |= (
+        impulse := impulse_said(ctx, read, said)
+    )  # "impulse = m(v - u) = …": the impact's J, not a name it defines
     read, notes = fall_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))  # u, v, s
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
@@ -125,7 +127,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
     own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]), (wrong, slips))
-    said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
+    said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in (mapping | impulse).items()]
     notes += ["Inferred from the values: " + ", ".join(said) + "."] if said else []
     return merged(in_stages(ctx, items, (mapping, true_defs, values), read)), notes
 
