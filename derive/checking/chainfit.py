@@ -47,3 +47,19 @@ def _gap(alone, at: Callable[[sympy.Expr, sympy.Expr], sympy.Expr], c: sympy.Exp
         xs = [abs(x) if abs(x.imag) > 1e-12 else x.real for x in xs]
         total += (max(xs) - min(xs)) / max(max(abs(x) for x in xs), 1e-12)
     return total
+
+
+def of_letter(p: sympy.Symbol, cands: Sequence[sympy.Expr], letter: Sequence[sympy.Symbol]) -> list[sympy.Expr]:
+    """The candidates (either sign) among the chain's values of the letter a name of the
+    student's own is (``h``: h_0 and h_2): a teacher reads ``h`` as a height, never as another
+    value (e = 0.7) that a slipped height happens to round to."""
+    if "_" in p.name:
+        return []
+    return [c for c in cands if (c if c.is_Symbol else -c) in letter]
+
+
+def one_result(letter: Sequence[sympy.Symbol], given: set[sympy.Symbol]) -> sympy.Symbol | None:
+    """The one value of that letter the chain works out (h_2 beside the given h_0), where no
+    value of it makes a relation hold: the result the student is working out, wrongly."""
+    results = [v for v in letter if v not in given]
+    return results[0] if len(results) == 1 else None

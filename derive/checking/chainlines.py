@@ -19,9 +19,12 @@ import sympy
 from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
+from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
+from derive.checking.copiedagain import copied_again
 from derive.checking.figures import literal_tolerance
+from derive.checking.impulseword import impulse_said, impulse_sign
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
@@ -39,6 +42,7 @@ from derive.checking.stageslips import (
     stage_mistakes,
     unnamed_number,
 )
+from derive.checking.suvat import fall_letters
 from derive.checking.termslips import halved, term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
@@ -53,6 +57,10 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     read = _read(ctx, text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
+    said |= (
+        impulse := impulse_said(ctx, read, said)
+    )  # "impulse = m(v - u) = …": the impact's J, not a name it defines
+    read, notes = fall_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))  # u, v, s
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
@@ -83,6 +91,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             )
             continue
         exprs = _of_the_stage(ctx, sides, exprs, values)
+        chainsolve.said_in_own(said, true_defs, own_defs, values)  # KE lost from the student's wrong v_1
         item = _verdict(ctx, r, sides, exprs, values, true_defs, own_defs, slips)
         done, defs = (items, written, slips), (values, true_defs, own_defs, stages)
         item = own_world(ctx, item, (sides, exprs), done, defs, (partial(_holds, ctx, sides), reread))
@@ -92,20 +101,15 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
         if item.status == "correct" and slips and numbers_written(sides, set(), working=True, small=True) & wrong:
             item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
+        if item.status == "carried":  # 0 = v2^2 - 2(9.8)(30): the given copied wrongly again
+            at, names_in = partial(_holds, ctx, subs=[true_defs, values]), partial(_names_in, read)
+            item = copied_again(ctx, item, sides, items, reread, at, names_in)
         if item.status == "wrong" and slips == [str(r.line)]:  # the first slip: a given copied wrongly?
             holds = partial(_holds, ctx, subs=[true_defs, values])
             item = chainnames.named_copied(ctx, item, sides, reread, holds, own_defs, said)
         if item.status == "wrong" and not item.again and not item.slip:
-            item = halved(item, exprs, previous) or _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
-            at = partial(_holds, ctx, sides, subs=[true_defs, values])
-            item = rule_named(ctx, item, (sides, exprs), reread, at)
-            if not item.slip and copied_into_working(ctx, sides, exprs, at):
-                item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
-            if not item.slip and (_solved_wrongly(exprs, previous, sides) or chainsolve.number_worked(exprs, previous)):
-                item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
-            flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message, sides)
-            if flip:  # a sign lost, a ½ dropped, e's ratio upside down
-                item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
+            defs = (values, true_defs, own_defs, stages)
+            item = _slip_named(ctx, item, (sides, exprs, previous), defs, reread)
         if item.status in ("wrong", "carried"):
             wrong |= result_numbers(sides, ctx.data)  # y = 5 m/s: a number the student got wrong
         written.append(exprs)
@@ -123,54 +127,41 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             _keep_root(ctx, exprs, values, true_defs, own_defs)
         own_value(own_defs, left, (sides, exprs), item.status, _number)  # the student's value, carried on
     own.judged_later(items, pending, true_defs, partial(_holds, ctx, subs=[true_defs, values]), (wrong, slips))
-    said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in mapping.items()]
-    notes = ["Inferred from the values: " + ", ".join(said) + "."] if said else []
-    return merged(_in_stages(ctx, items, (mapping, true_defs, values), read)), notes
-
-
-def _stages(ctx: Context) -> list[tuple[str, set[sympy.Symbol]]]:
-    """Each stage's heading ("Stage 1: The bullet lodges in the block") and the names of the
-    values it finds (the chain's values known after it, not before)."""
-    stages = list(getattr(ctx.solution, "stages", ()))
-    out = []
-    for k, st in enumerate(stages):
-        before = {sympy.Symbol(str(n)) for n in getattr(st, "values", None) or {}}
-        after = (stages[k + 1].values if k + 1 < len(stages) else ctx.solution.values) or {}
-        found = {sympy.Symbol(str(n)) for n in after} - before
-        out.append((f"Stage {k + 1}: {getattr(st, 'title', '') or getattr(st, 'kind', '')}", found))
-    return out
-
-
-def _in_stages(ctx: Context, items: list[Item], known: tuple[dict, dict, dict], read: list) -> list[Item]:
-    """Each line with the heading of its stage: the last stage whose values it names, or whose
-    value a name of the student's own truly is (a line that names none is in the stage of the
-    line before it). ``known``: the names inferred, the student's names' true values, the chain's."""
-    stages = _stages(ctx)
-    if len(stages) < 2:
-        return items
-    mapping, true_defs, values = known
-    same = {}
-    for p, x in true_defs.items():  # h = 1.49²/(2 g): h is the chain's h_2
-        v = number_of(x.xreplace(values).xreplace(ctx.unit_subs()))
-        for sym, y in values.items():
-            w = number_of(y) if v is not None else None
-            if w is not None and abs(v - w) <= 1e-6 * max(abs(w), 1e-12):
-                same[p] = sym
-    named = {str(r.line): set().union(*(x.xreplace(same).free_symbols for x in ex)) for r, _s, ex in read}
-    inferred = {str(r.line): set().union(*(x.xreplace(mapping).free_symbols for x in ex)) for r, _s, ex in read}
-    out, k = [], 0
-    for item in items:
-        used = named.get(item.name, set()) | {sympy.Symbol(w) for w in re.findall(r"\w+", item.written)}
-        ks = [j for j, (_h, found) in enumerate(stages) if found & used]
-        if not ks:  # a name inferred moves the line on by one stage at most (an inference can be wrong)
-            ks = [j for j, (_h, found) in enumerate(stages) if found & inferred.get(item.name, set()) and j <= k + 1]
-        k = max(ks) if ks else k
-        out.append(replace(item, stage=stages[k][0]))
-    return out
+    said = [f"{p.name[1:].replace('_', ' ')} is {_name(v, values)}" for p, v in (mapping | impulse).items()]
+    notes += ["Inferred from the values: " + ", ".join(said) + "."] if said else []
+    return merged(in_stages(ctx, items, (mapping, true_defs, values), read)), notes
 
 
 def _name(v: sympy.Expr, values: dict) -> str:
     return f"-{(-v).name}" if isinstance(-v, sympy.Symbol) else str(v)
+
+
+def _slip_named(ctx: Context, item: Item, line: tuple, defs: tuple, reread) -> Item:
+    """A wrong line not yet named, named by what a teacher sees in it: the impulse's rebound with
+    its sign lost, a line before halved but for one term, a stage's mistake, a rule written wrongly, a given copied into the working, a value worked wrongly from the line before, or its
+    one wrong term (a sign lost, a ½ dropped, e's ratio upside down). ``line``: its sides, its
+    expressions and the relation before it; ``defs``: the chain's values, the student's names'
+    true and own values, the stages' mistakes."""
+    sides, exprs, previous = line
+    values, true_defs, own_defs, stages = defs
+    at = partial(_holds, ctx, sides, subs=[true_defs, values])
+    item = impulse_sign(ctx, item, sides, exprs, at)  # 0.2(35 - 28): the rebound's sign lost
+    if not item.slip:
+        item = halved(item, exprs, previous) or _named(ctx, item, sides, exprs, values, true_defs, own_defs, stages)
+    item = rule_named(ctx, item, (sides, exprs), reread, at)
+    if not item.slip and copied_into_working(ctx, sides, exprs, at):
+        item = replace(item, slip="copied_wrong", message=f"{item.message.split(': ')[0]}: {COPIED}")
+    if not item.slip and (_solved_wrongly(exprs, previous, sides) or chainsolve.number_worked(exprs, previous)):
+        item = replace(item, slip="arithmetic", message=f"{item.message[:-1]}{ARITHMETIC}")
+    flip, why = ("", "") if item.slip else term_slip(exprs, at, item.message, sides)
+    if flip:
+        item = replace(item, slip=flip, message=f"{item.message.split(': ')[0]}{why}")
+    return item
+
+
+def _names_in(read: list, line: str) -> set[sympy.Symbol]:
+    """The names (the chain's and the student's own) in the relations of line ``line``."""
+    return {p for r, _sides, exprs in read if str(r.line) == line for x in exprs for p in x.free_symbols}
 
 
 #: The slip named where a value is worked wrongly from the relation just before it.
@@ -241,7 +232,13 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
             best = chainfit.nearest(cands, score, alone, (found, p), (values, ctx.unit_subs()))
             letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
-            if best is not None and score[best]:
+            mine = chainfit.of_letter(p, cands, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
+            near = chainfit.nearest(mine, score, alone, (found, p), (values, ctx.unit_subs())) if mine else None
+            if near is not None and score[near]:
+                found[p] = near
+            elif mine and (result := chainfit.one_result(letter, given)) is not None:
+                found[p] = result
+            elif best is not None and score[best]:
                 found[p] = best
             elif len(letter) == 1 and "_" not in p.name and letter[0].name != p.name[1:]:
                 found[p] = letter[0]  # "d" where the chain has one d (d_B): the result the student works out
@@ -295,9 +292,7 @@ def _holds_with(ctx: Context, sides, exprs, subs: dict, values: dict) -> bool | 
 def _solved(difference: sympy.Expr, p: sympy.Symbol) -> sympy.Expr | None:
     """The one root of a relation linear in ``p`` (None where it is not)."""
     a, b = difference.diff(p), difference.subs(p, 0)
-    if a.has(p) or a == 0:
-        return None
-    return -b / a
+    return None if a.has(p) or a == 0 else -b / a
 
 
 def _own(x: sympy.Expr) -> set[sympy.Symbol]:

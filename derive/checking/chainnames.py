@@ -342,8 +342,10 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
 def named_copied(ctx: Context, item: Item, sides, reread: Reread, holds: Holds, own: dict, said: Declared) -> Item:
     """The first slip, where it is a given copied wrongly into the working: named so, and the
     chain solved again with the given as copied kept in ``own`` as the student's own values
-    (the names declared in words too), for the lines and stages after it."""
+    (the names declared in words too), for the lines and stages after it. A line that works on
+    from the copied number (``v^2 = 21^2 + 2(9.8)(30) = 1029``) is named by its first two sides."""
     found = copied(ctx, tuple(sides), reread, holds)
+    found = copied(ctx, tuple(sides[:2]), reread, holds) if found is None and len(sides) > 2 else found
     if found is None:
         return item
     words, world = found

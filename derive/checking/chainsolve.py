@@ -126,3 +126,13 @@ def number_worked(exprs: list[sympy.Expr], previous: list[sympy.Expr]) -> bool:
     F, G = exprs[0] - exprs[-1], previous[0] - previous[-1]
     names = tuple(sorted(F.free_symbols, key=str))
     return bool(names) and F.free_symbols == G.free_symbols and same_but_number(F, G, names, {})
+
+
+def said_in_own(said: dict, true: dict, own: dict, values: dict) -> None:
+    """The names declared in words (``KE lost``: ½ m v_1² (1 − e²)) as the student has them,
+    worked from the chain's values the student has wrong (their v_1 after a slip in the fall),
+    kept in ``own`` where the student has not worked them out otherwise."""
+    wrong = {k: v for k, v in own.items() if k in values and v != values[k] and not v.free_symbols}
+    for p, x in said.items():
+        if wrong and x.free_symbols & set(wrong) and own.get(p, true.get(p)) == true.get(p):
+            own[p] = at(x, {**values, **wrong})

@@ -28,6 +28,8 @@ WORDS = {
     "a number worked wrongly).",
     "squared": ": a number is put in without its square (an arithmetic slip: a number worked wrongly).",
     "algebra": ": its numbers hold with a term's factor of 2 put right (a slip in the rule: a factor lost).",
+    "decimal": ": a number in its working is ten times too large or too small (an arithmetic slip: a decimal "
+    "point moved).",
 }
 _NUMBER = re.compile(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.(]|\s*\^)")
 
@@ -60,7 +62,7 @@ def _one_step(exprs: list[sympy.Expr], sides: tuple[str, ...], holds: partial) -
     if len(found) != 1:
         return "", ""
     name = found.pop()
-    return ("arithmetic" if name == "squared" else name), WORDS[name]
+    return ("arithmetic" if name in ("squared", "decimal") else name), WORDS[name]
 
 
 def _holds_as(step: Callable, k: int, text: str) -> bool:
@@ -72,10 +74,13 @@ def _holds_as(step: Callable, k: int, text: str) -> bool:
 
 
 def _variants(text: str) -> list[tuple[str, str]]:
-    """The side of numbers ``text`` with one of its numbers squared (``squared``), or one of
-    its terms doubled or halved (``algebra``), each as text in the parser's grammar."""
+    """The side of numbers ``text`` with one of its numbers squared (``squared``) or with its
+    decimal point moved one place (``decimal``: 3.136 for 31.36), or one of its terms doubled or
+    halved (``algebra``), each as text in the parser's grammar."""
     s = student(text.strip())
     out = [("squared", f"{s[: m.start()]}({m.group()})^2{s[m.end() :]}") for m in _NUMBER.finditer(s)]
+    for m in _NUMBER.finditer(s):
+        out += [("decimal", f"{s[: m.start()]}({m.group()}{k}){s[m.end() :]}") for k in ("*10", "/10")]
     for a, b in _terms(s):
         for k in ("2*", "(1/2)*"):
             out.append(("algebra", f"{s[:a]}{k}({s[a:b]}){s[b:]}"))

@@ -55,7 +55,7 @@ from derive.mathtext.sides import (
 )
 from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
-from derive.mathtext.tables import table_cells
+from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
@@ -197,7 +197,9 @@ def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     while n < len(lines):
         raw = tex_row_ends(tex_comment(lines[n]))  # "\\[4pt]": the row ends there
         if close is None:
-            plain, close, rows = _line(table_cells(raw), n + 1)  # "| after | $… = 3.88$ |": a table's row
+            plain, close, rows = _line(
+                table_cells(headed(lines, n) if raw == lines[n] else raw), n + 1
+            )  # "| after | $… = 3.88$ |": a table's row
             if plain.strip():
                 yield n + 1, len(raw) - len(raw.lstrip()), _unwrapped(lines[n]), plain
         else:

@@ -1,0 +1,68 @@
+"""suvat's letters in the fall a chain starts with, read as a teacher reads them.
+
+A student works a fall with the constant-acceleration equations in their own letters:
+``v^2 = u^2 + 2as = 5^2 + 2(9.8)(1.6)``, ``v = 7.51`` "when it hits the ground", ``u = 5, a = 9.8,
+s = 1.6``. In those lines ``u`` is the speed the body starts with (the chain's own ``u``, a result
+of its impact, is another quantity), ``v`` the speed it lands with (the fall's result), ``s`` the
+height and ``a`` the acceleration g. A teacher reads them so whatever the numbers put in for
+them: ``v^2 = 5 + 2(9.8)(1.6) = 36.36`` is the landing speed worked wrongly (5 for 5²), a slip,
+not a name of the student's own that the line defines and so makes true.
+
+The letters are read so in the relations the derivation opens with, up to the first that names
+anything else than suvat's letters, numbers and the givens (a later ``I = mv - mu`` is an
+impulse, in the same letters meaning other velocities), and only where a ``v`` of the student's
+own is among them. The sign (down positive, or up) is the one that makes more of those relations
+hold; down where neither does.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import sympy
+
+from derive.checking.naming import PREFIX, Open
+
+#: suvat's letters as the reader keeps a name of the student's own.
+LETTERS = {k: sympy.Symbol(PREFIX + k) for k in "uvsa"}
+
+
+def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> tuple[list, list[str]]:
+    """``read`` with suvat's letters in the opening fall put as the fall's quantities, and the
+    notes that say so (``read`` as it is where the chain does not start with a fall). A letter
+    met in no later relation is the fall's in ``names`` too, for a side read again (a given
+    put back as the problem states it)."""
+    stages = getattr(ctx.problem, "stages", ())
+    fall = stages[0] if stages and stages[0].get("type") == "fall" else None
+    if fall is None or LETTERS["v"] in said:
+        return read, []
+    given = {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
+    start = sympy.Symbol(fall["speed"]) if fall.get("speed") else sympy.Integer(0)
+    g = sympy.Symbol("g") if sympy.Symbol("g") in given else None
+    meaning = {"u": start, "v": sympy.Symbol(fall["result"]), "s": sympy.Symbol(fall["height"]), "a": g}
+    letters = {LETTERS[k]: x for k, x in meaning.items() if x is not None}
+    chain_u = sympy.Symbol("u")
+    if chain_u not in given and "u" in meaning:
+        letters[chain_u] = start  # the chain's u is its impact's result: the student's is suvat's
+    allowed = set(letters) | given
+    n = 0
+    for _r, _sides, exprs in read:
+        if not set().union(*(x.free_symbols for x in exprs)) <= allowed:
+            break
+        n += 1
+    opening = read[:n]
+    if not any(LETTERS["v"] in x.free_symbols for _r, _s, ex in opening for x in ex):
+        return read, []
+
+    def put(sign: int) -> list:
+        subs = {p: sign * x for p, x in letters.items()}
+        return [(r, sides, [x.xreplace(subs) for x in exprs]) for r, sides, exprs in opening]
+
+    down, up = put(1), put(-1)
+    score = [sum(bool(holds(sides, exprs)) for _r, sides, exprs in w) for w in (down, up)]
+    sign = -1 if score[1] > score[0] else 1
+    later = set().union(*(x.free_symbols for _r, _s, ex in read[n:] for x in ex))
+    names.known.update({p.name.lstrip(PREFIX): sign * x for p, x in letters.items() if p not in later})
+    used = sorted({p.name.lstrip(PREFIX) for _r, _s, ex in opening for x in ex for p in x.free_symbols} & set(meaning))
+    note = "Read " + ", ".join(f"{k} as {sign * meaning[k]}" for k in used if meaning.get(k) is not None) + "."
+    return (up if sign < 0 else down) + read[n:], [note]
