@@ -13,20 +13,23 @@ from __future__ import annotations
 
 import sympy
 
-from derive.checking import slipnames
+from derive.checking import slipnames, termsigns
 from derive.checking.worlds import Pair
 
 #: The largest denominator of a factor a whole relation is multiplied or divided by.
 SIMPLE_DENOMINATOR = 12
 
 
-def plain(bad: Pair) -> str:
+def plain(bad: Pair, ctx=None) -> str:
     """The slip of ``bad``, a false pair free of the unknowns: ``algebra`` where one side is a
     square of a bracket in letters multiplied out on the other and the two are not a number
-    times each other (a term of the square changed), else ``arithmetic``."""
+    times each other (a term of the square changed), or where a term in letters was collected
+    with its sign lost (:func:`.termsigns.sign_lost`), else ``arithmetic``."""
     left, right = bad.left, bad.right
     if not (left.free_symbols | right.free_symbols) or left == 0 or right == 0 or bad.raw is None:
         return "arithmetic"
+    if ctx is not None and termsigns.sign_lost(ctx, bad):
+        return "algebra"
     if not (_squares(bad.raw[0]) ^ _squares(bad.raw[1])):  # one side the square, the other multiplied out
         return "arithmetic"
     ratio = _ratio(left, right)
