@@ -220,8 +220,8 @@ def solving_slip(
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
     shows = replace(failing[0], text=" = ".join(line_sides))  # ``v = 10 + 4 = 14``: the 4 moved, on the line
-    if len(line_u) == 1 and held and rearranging.kind(shows, held[-1], U, pt):  # a sign, a factor, a letter
-        return "algebra"
+    if len(line_u) == 1 and held and (how := rearranging.kind(shows, held[-1], U, pt)):  # a sign, a factor, a letter
+        return how
     if held and rearranging.letter_term(failing[0], held[-1], U, pt):  # a mass divided out of all but one term
         return "algebra"
     if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):
