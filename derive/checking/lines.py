@@ -246,13 +246,8 @@ class Trace(Carrying):
         if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
-        named = (
-            "rounded_too_early"
-            if "rounded too early" in detail
-            else letterslips.plain(bad, self.ctx)
-            if arithmetic
-            else ""
-        )
+        early = "rounded too early" in detail
+        named = "rounded_too_early" if early else letterslips.plain(bad, self.ctx) if arithmetic else ""
         named = name or named
         slip = ",".join(d.mistake for d in diags) or named
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)
