@@ -28,8 +28,9 @@ def test_a_squared_bracket_in_letters_multiplied_out_with_a_term_wrong_is_algebr
 
 
 def test_like_terms_in_letters_collected_with_a_number_wrong_are_arithmetic() -> None:
-    # 2u + 2ue - 5ue is u(2 - 3e); u(2 - 7e) is 2 - 5 worked as -7: arithmetic, as teachers mark it
-    found = worst_lines(HITS, START + "v_A2 = 2u + 2ue - 5ue = u(2 - 7e)\n")
+    # 2u + 2ue - 5ue is u(2 - 3e); u(2 - 4e) is 2 - 5 worked as -4: arithmetic, as teachers mark it
+    # (u(2 - 7e), the +2ue taken as -2ue, is a sign lost: algebra, tests/test_check_term_signs.py)
+    found = worst_lines(HITS, START + "v_A2 = 2u + 2ue - 5ue = u(2 - 4e)\n")
     assert found[3][0] == "correct"
     assert found[4] == ("wrong", "arithmetic")
 

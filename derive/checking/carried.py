@@ -239,10 +239,23 @@ def given_negated(trace: Trace, bad: Pair) -> bool:
         if equations == trace.equations:
             continue
         world = solve_world(equations, trace.U, trace.pts, trace.truth)
-        if world is not None and trace.holds([bad], world) and signslips.keeps_own(trace, world):
+        held = world is not None and (trace.holds([bad], world) or _named_negated(trace, bad, g.symbol, -value, world))
+        if held and signslips.keeps_own(trace, world):
             trace.variant, trace.world, trace.equations = variant, world, equations
             return True
     return False
+
+
+def _named_negated(trace: Trace, bad: Pair, symbol: sympy.Symbol, value: sympy.Expr, world: list[Values]) -> bool:
+    """Whether ``bad``, free of the unknowns, holds with a given velocity taken the other way in
+    a quantity it names (``p after = 0.8(1.2) + 0.4v`` for an A that moves back at 1.2 m/s)."""
+    if bad.raw is None or bad.difference.free_symbols & set(trace.U):
+        return False
+    raw = tuple(misread.with_copied(trace.ctx, x, {symbol: value}) for x in bad.raw)
+    if raw == bad.raw:
+        return False
+    left, right = (trace.ctx.in_unknowns(x) for x in raw)
+    return trace.holds([replace(bad, left=left, right=right, raw=raw)], world)
 
 
 def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) -> list[Values] | None:
@@ -369,10 +382,12 @@ def combined(trace: Trace, bad: Pair, diags: tuple) -> Found:
         if not changed or world is None or all(trace.holds([p], world) for p in trace.held):
             return None
     current = trace.world if trace.world is not None else trace.truth
-    flip, _right = slipnames.sign_flipped(trace.ctx, bad, trace.U, lambda p: trace.holds([p], current))
-    if flip != "algebra":
-        return None
-    return changed[0], slipnames.FLIPPED[flip], flip  # in place of the equation the mistake seemed to change
+    expanded = replace(bad, raw=tuple(sympy.expand(x) for x in bad.raw)) if bad.raw is not None else bad
+    for pair in (bad, expanded):  # 2v_1 = u cos 30°(1 + e): its bracket's terms, for (1 − e)
+        flip, _right = slipnames.sign_flipped(trace.ctx, pair, trace.U, lambda p: trace.holds([p], current))
+        if flip == "algebra":
+            return changed[0], slipnames.FLIPPED[flip], flip  # in place of the equation the mistake seemed to change
+    return None
 
 
 #: The words of a body's speed put in the impact rule for its component along the line of centres.
@@ -424,5 +439,7 @@ def plain_named(trace: Trace, line: Read, bad: Pair, world: list[Values]) -> tup
     (``e_speeds``), a given copied wrongly (``copied_wrong``); None for neither."""
     if speed_for_component(trace, line, world):
         return SPEEDS, "e_speeds"
+    if given_negated(trace, bad):  # p after = 0.8(1.2) + 0.4v, A moving back: a velocity's sign lost
+        return slipnames.FLIPPED["b_sign"], "b_sign"
     given = given_copied(trace, bad) or misread.in_working(trace, line, bad) or misread.total_copied(trace, line, bad)
     return (given, "copied_wrong") if given else None

@@ -11,22 +11,30 @@ multiplied by a number with a number wrong (``2eu − 5eu = 3eu``; ``81e² + 9e�
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
-from derive.checking import slipnames
+from derive.checking import misread, slipnames, termsigns
 from derive.checking.worlds import Pair
+
+#: The kinetic energies a line may name.
+ENERGIES = ("T_1", "T_2", "T_lost")
 
 #: The largest denominator of a factor a whole relation is multiplied or divided by.
 SIMPLE_DENOMINATOR = 12
 
 
-def plain(bad: Pair) -> str:
+def plain(bad: Pair, ctx=None) -> str:
     """The slip of ``bad``, a false pair free of the unknowns: ``algebra`` where one side is a
     square of a bracket in letters multiplied out on the other and the two are not a number
-    times each other (a term of the square changed), else ``arithmetic``."""
+    times each other (a term of the square changed), or where a term in letters was collected
+    with its sign lost (:func:`.termsigns.sign_lost`), else ``arithmetic``."""
     left, right = bad.left, bad.right
     if not (left.free_symbols | right.free_symbols) or left == 0 or right == 0 or bad.raw is None:
         return "arithmetic"
+    if ctx is not None and termsigns.sign_lost(ctx, bad):
+        return "algebra"
     if not (_squares(bad.raw[0]) ^ _squares(bad.raw[1])):  # one side the square, the other multiplied out
         return "arithmetic"
     ratio = _ratio(left, right)
@@ -116,4 +124,27 @@ def ke_formula(trace, bad: Pair) -> bool:
     them) with a kinetic energy it names worked by a wrong formula: tried before the impact
     rules' mistakes, which a line about an energy is never."""
     world = trace.world if trace.world is not None else trace.truth
-    return slipnames.ke_formula(trace.ctx, bad, lambda p: trace.holds([p], world))
+    holds = lambda p: trace.holds([p], world)  # noqa: E731
+    return slipnames.ke_formula(trace.ctx, bad, holds) or _copied_energy(trace, bad, holds)
+
+
+def _copied_energy(trace, bad: Pair, holds) -> bool:
+    """Whether ``bad`` names a kinetic energy worked out from a given the student copied wrongly
+    (``KE lost = ½m(u − v)²`` after 5 m/s for 4: the energy's side is in that given, no longer
+    its name) and holds with that energy by a wrong formula, the given as copied."""
+    ctx, copied = trace.ctx, trace.copied
+    if not copied or bad.raw is None:
+        return False
+    derived = ctx.derived()
+    sides = {sympy.expand(misread.with_copied(ctx, derived[n][0], copied)): n for n in ENERGIES if n in derived}
+    for i, x in enumerate(bad.raw):
+        n = sides.get(sympy.expand(x))
+        for form in slipnames.wrong_energies(ctx) if n else ():
+            if n not in form:
+                continue
+            put = misread.with_copied(ctx, form[n], copied)
+            raw = (put, bad.raw[1]) if i == 0 else (bad.raw[0], put)
+            left, right = (ctx.in_unknowns(y) for y in raw)
+            if holds(replace(bad, left=left, right=right, raw=raw)):
+                return True
+    return False

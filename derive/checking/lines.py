@@ -21,6 +21,7 @@ import sympy
 from derive.checking import (
     carried,
     cofunctions,
+    freshslips,
     labelled,
     letterslips,
     misread,
@@ -51,9 +52,7 @@ from derive.mathtext.notation import student
 TRUE = "substituting the correct values"
 SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from the one before
 #: A line whose rule holds but whose working does not come to what it claims.
-WORKING = (
-    ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
-)
+WORKING = termslips.WORKING
 COPIED = slipnames.COPIED
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
@@ -219,7 +218,7 @@ class Trace(Carrying):
         bad = bad or next(iter(plain), None)
         bad = bad or next(iter(failing), None)
         bad = bad or next((p for p in pairs if not self.holds([p], self.truth)), pairs[0])
-        diags, j, detail, name = self._explain(line, bad, answer)
+        bad, (diags, j, detail, name) = freshslips.explained(self, line, bad, pairs, answer)  # e_on_t, not again
         if detail in (WORKING, termslips.SIGN_PUT_IN) or workedslips.worked_on(self, pairs, name, world):  # carried on
             bad = next((p for p in carried.carried_on(self, line) if not self.holds([p], world)), bad)
         if not bad.difference.free_symbols & set(self.U) and len(pairs) > 1:
@@ -247,7 +246,8 @@ class Trace(Carrying):
         if line.own_names or name in SOLVING:  # not the student's names, or not the line they meant
             expected = ""
         arithmetic = not bad.difference.free_symbols & set(self.U)
-        named = "rounded_too_early" if "rounded too early" in detail else letterslips.plain(bad) if arithmetic else ""
+        early = "rounded too early" in detail
+        named = "rounded_too_early" if early else letterslips.plain(bad, self.ctx) if arithmetic else ""
         named = name or named
         slip = ",".join(d.mistake for d in diags) or named
         item = self._item(line, "wrong", f"{lead}{detail}", TRUE, diagnosis=diags, expected=expected)

@@ -25,14 +25,33 @@ FACTORS = (sympy.Integer(2), sympy.Rational(1, 2))
 def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     """``algebra`` where ``bad`` (false) is ``held`` (true, the relation just before it) with
     one term's sign lost, its unknown's coefficient lost (or ½ dropped or doubled), or a
-    letter lost or gained in one term of what the unknown comes to; "" otherwise."""
+    letter lost or gained in one term of what the unknown comes to; ``arithmetic`` where a
+    whole number's division was not done (:func:`undivided`); "" otherwise."""
     tol = max(bad.tol, 1e-9)
+    if undivided(bad, held, U, pt):
+        return "arithmetic"
     for variant in _variants(held, bad, set(U)):
         if proportional(bad.difference, variant, U, [pt], tol):
             return "algebra"
     if _letter_lost(bad.difference, held.difference, U):
         return "algebra"
     return ""
+
+
+def undivided(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
+    """Whether ``bad`` is ``held`` (``k x = E``, the unknown's term alone on its side, k a whole
+    number) with the division by k not done: ``x = E`` (``2q = 7 + 7e`` then ``q = 7(1 + e)``).
+    A teacher calls this arithmetic; a ½ dropped (``v² = gh`` from ``½v² = gh``) stays algebra."""
+    unknowns = set(U)
+    for side, other in ((held.left, held.right), (held.right, held.left)):
+        terms = sympy.Add.make_args(sympy.expand(side))
+        if len(terms) != 1 or not terms[0].free_symbols & unknowns or other.free_symbols & unknowns:
+            continue
+        c, rest = terms[0].as_coeff_Mul()
+        if not (c.is_Integer and abs(c) >= 2) or rest.free_symbols - unknowns:
+            continue
+        return proportional(bad.difference, rest - other, U, [pt], max(bad.tol, 1e-9))
+    return False
 
 
 def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:

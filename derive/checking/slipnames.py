@@ -78,7 +78,8 @@ def as_named(ctx: Context, m: Mistake) -> Mistake:
 
 def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
     """The mistakes whose value of a result named on the line makes ``bad`` hold; else those of the
-    masses (the weights, swapped) in a result worked from the velocities ``holds`` has."""
+    masses (the weights, swapped) in a result worked from the velocities ``holds`` has, or in a
+    mass the line names (``m(v_B)_2 = 10(10.22)`` with 10 lb B's weight)."""
     if bad.raw is None:
         return []
     syms = set().union(*(x.free_symbols for x in bad.raw))
@@ -91,7 +92,10 @@ def under_results(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
         subs = {s: x for s, x in subs.items() if x is not None}
         if subs and _holds_with(ctx, bad, subs, holds):
             found.append(o.mistake)
-    return found or (masses_in_results(ctx, bad, lambda subs: _holds_with(ctx, bad, subs, holds)) if names else [])
+    masses = syms & {ctx.model.m_A, ctx.model.m_B}  # m(vB)2 = 10(10.22): a mass by its name, as a weight
+    return found or (
+        masses_in_results(ctx, bad, lambda subs: _holds_with(ctx, bad, subs, holds)) if names or masses else []
+    )
 
 
 def carried_by_results(ctx: Context, pairs: list[Pair], named: set[str], holds: Holds) -> bool:
@@ -220,8 +224,8 @@ def solving_slip(
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
     held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
     shows = replace(failing[0], text=" = ".join(line_sides))  # ``v = 10 + 4 = 14``: the 4 moved, on the line
-    if len(line_u) == 1 and held and rearranging.kind(shows, held[-1], U, pt):  # a sign, a factor, a letter
-        return "algebra"
+    if len(line_u) == 1 and held and (how := rearranging.kind(shows, held[-1], U, pt)):  # a sign, a factor, a letter
+        return how
     if held and rearranging.letter_term(failing[0], held[-1], U, pt):  # a mass divided out of all but one term
         return "algebra"
     if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):

@@ -105,10 +105,17 @@ UNDIVIDED = (
 )
 
 
+#: What a report says of a line that leaves the other side undivided by the unknown's coefficient.
+NOT_DIVIDED = (
+    ": it leaves the other side of the line before undivided by the unknown's coefficient (a slip in arithmetic)."
+)
+
+
 def halved(item: Any, exprs: list[sympy.Expr], previous: list[sympy.Expr]) -> Any:
     """``item`` (a chain's wrong line, not yet named) named ``algebra`` where it is the relation
     just before (which held), ``c x = a + b``, halved (divided through by ``c``) but for one term
-    (``v2 = 3.5 + 7e`` from ``2 v2 = 7 + 7e``: the 7e not halved); None otherwise."""
+    (``v2 = 3.5 + 7e`` from ``2 v2 = 7 + 7e``: the 7e not halved); ``arithmetic`` where the
+    other side is not divided at all by a whole number ``c`` (``v2 = 7 + 7e``); None otherwise."""
     if len(exprs) != 2 or len(previous) != 2 or not exprs[0].is_Symbol:
         return None
     x = exprs[0]
@@ -116,6 +123,9 @@ def halved(item: Any, exprs: list[sympy.Expr], previous: list[sympy.Expr]) -> An
         c = sympy.expand(lhs).coeff(x)
         if not c.is_number or c in (0, 1, -1) or sympy.expand(lhs - c * x) != 0 or rhs.has(x):
             continue
+        if c.is_Integer and sympy.expand(exprs[1] - rhs) == 0:  # q = 7 + 7e from 2q = 7 + 7e: not divided
+            lead = item.message.split(":")[0]
+            return replace(item, slip="arithmetic", message=f"{lead}{NOT_DIVIDED}")
         terms = sympy.Add.make_args(sympy.expand(rhs))
         if len(terms) < 2:
             continue

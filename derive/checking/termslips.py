@@ -28,6 +28,11 @@ if TYPE_CHECKING:
     from derive.checking.inference import Read
     from derive.checking.relations import Values
 
+#: A line whose rule holds but whose working does not come to what it claims.
+WORKING = (
+    ": a step of its working does not follow from the one before it (an arithmetic slip: an expression worked wrongly)."
+)
+
 
 class Solving(Trace, Protocol):
     """A :class:`~.carried.Trace` that keeps the relation just before the line, if it held."""

@@ -15,7 +15,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import letterslips, slipnames
+from derive.checking import letterslips, misread, slipnames
 from derive.checking.carrying import GOES_ON
 from derive.checking.slipnames import Holds, Previous, same_but_number
 from derive.checking.worlds import Pair
@@ -65,7 +65,7 @@ def wrong_energy_worked(trace, line, pairs: list[Pair]) -> bool:
     world = trace.world if trace.world is not None else trace.truth
     for form in [*slipnames.wrong_energies(trace.ctx), *swapped_energies(trace.ctx)]:
         for value in form.values():
-            energy = trace.ctx.in_unknowns(value)
+            energy = trace.ctx.in_unknowns(misread.with_copied(trace.ctx, value, trace.copied))  # 5 for 4 m/s
             if any(trace.holds([replace(p, left=energy, right=x, raw=None)], world) for p, x in numbers):
                 return True
     return False

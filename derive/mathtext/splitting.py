@@ -45,6 +45,7 @@ def split_relations(plain: str) -> list[str]:
         plain,
     )  # a sentence ends (after an arrow too: "= 2 m/s ←. Taking → as positive")
     plain = UNIT_THEN_NAME.sub(_two_givens, plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
+    plain = _VERB_THEN_NAME.sub(" ; ", plain)  # "m_2 = 7500 kg has v_2i = 0": two givens, the verb dropped
     plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
     plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
@@ -52,6 +53,19 @@ def split_relations(plain: str) -> list[str]:
             for part in _colon_split(piece):
                 parts += _comma_split(part)
     return [p for p in parts if _RELATION.search(p)]
+
+
+#: A value (its unit after it, if any) then a verb of what a body has or does, and a name set
+#: equal to a value: two relations, the verb no part of either (``m_2 = 7500 kg has v_2i = 0``,
+#: ``m_B = 2 kg is moving with velocity u_B = 3``). Words of a direction or a condition (``to the
+#: left``, ``when e = 1``) are not such verbs: they say what the value is, or when.
+_VERB_THEN_NAME = re.compile(
+    r"(?<=[\d)])(?:\s*(?:kg|g|m/s|ft/s|km/h|mph|N|J|lb|slugs?|N\s?s))?\s+"
+    r"(?:has|had|have|gets|got|goes|went|moves|moved|travels|travell?ed|is|was|are|were|starts|started|comes|came)"
+    r"(?:\s+(?:a|an|the|velocity|speed|initially|now|still|initial|final|moving|travell?ing|going|with|of)){0,3}"
+    r"\s+(?=[A-Za-z]\w{0,5}\s*=(?!=))",
+    re.I,
+)
 
 
 def _remarks_apart(plain: str) -> str:
