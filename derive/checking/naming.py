@@ -47,6 +47,7 @@ from derive.checking.spellings import (
     subscript,
 )
 from derive.checking.wordnames import in_words, says_what
+from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
@@ -426,4 +427,6 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
         elif not sign and (plus := plus_said(line)):
             sign = plus  # "(towards wall is +)", "(+ away from the wall)"
+    for said in wrapped_sentences(text):  # "let x and y be … along the" / "line of centres after"
+        out.update({k: v for k, v in in_words(in_line_words(said, ctx), ctx).items() if k not in out})
     return out, sign
