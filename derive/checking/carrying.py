@@ -153,11 +153,14 @@ class Carrying:
     said: dict[sympy.Expr, sympy.Expr] = {}  # noqa: RUF012 - the results as last said (replaced, never changed)
     wrong_forms: dict[sympy.Expr, sympy.Expr] = {}  # noqa: RUF012 - forms in letters worked wrongly, as written
     unrefined: tuple[int, list[Values]] | None = None  # the world before a carried line's rounding refined it
+    right_values: frozenset[str] = frozenset()  # the decimals written on lines judged correct
 
     def _note(self, line: Line, status: str) -> None:
         """What a relation judged ``status`` leaves for the lines after it."""
         held = status in ("correct", "carried")
         pairs = self.pairs(line) if held else []
+        if status == "correct":  # "(0.150 - 70.0)/(70.15) * 35.0": numbers the student has right
+            self.right_values = self.right_values | decimals(line.sides)
         self.previous = (" = ".join(line.sides), pairs) if held else None
         self.went_wrong = status in ("wrong", "carried")
         if status == "carried":  # a student's own value (a = (5 - 3e)u/3 after a slip), kept by a later slip
@@ -176,9 +179,13 @@ class Carrying:
 
     def _wrote_wrong(self, line: Line) -> None:
         """The numbers a wrong or carried line states: its last side, and any side that is a
-        number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``)."""
+        number as written (``v_t = (61.0 - 45.75)/25 = 0.61 = v_A2t``); a last side that is working
+        (``= 2(70.0)/(70.15) * 35.0``) states none of the numbers the student had right before."""
         stated = [s for s in line.sides[:-1] if NUMBER_SIDE.match(student(s.strip()))]
-        self.wrong_values |= decimals([*stated, *line.sides[-1:]])
+        last = set(decimals(line.sides[-1:]))
+        if line.sides and not NUMBER_SIDE.match(student(line.sides[-1].strip())):
+            last -= self.right_values
+        self.wrong_values |= decimals(stated) | last
         self.wrong_values |= _other_forms(line.sides[-1]) if line.sides else set()
         self.wrong_numbers |= set(re.findall(r"\d+\.?\d*", line.sides[-1]))
         self.stated.setdefault(line.number, set()).update(re.findall(r"\d+\.?\d*", line.sides[-1]))

@@ -46,7 +46,9 @@ from derive.checking.spellings import (
     notes_names,
     subscript,
 )
+from derive.checking.tersenames import terse_names
 from derive.checking.wordnames import in_words, says_what
+from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
 from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
@@ -413,6 +415,7 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
         out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
+        out.update({k: v for k, v in terse_names(line, ctx).items() if k not in out})  # "x = A after (along l.o.c.)"
         out.update({k: v for k, v in named_last(line, ctx).items() if k not in out})  # "let B's velocity be v"
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
@@ -426,4 +429,6 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
             sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
         elif not sign and (plus := plus_said(line)):
             sign = plus  # "(towards wall is +)", "(+ away from the wall)"
+    for said in wrapped_sentences(text):  # "let x and y be … along the" / "line of centres after"
+        out.update({k: v for k, v in in_words(in_line_words(said, ctx), ctx).items() if k not in out})
     return out, sign

@@ -58,6 +58,10 @@ def before_impact(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
             subs.update({model.m_A: v.masses[0], model.m_B: v.masses[1]})
         if _holds_with(ctx, bad, subs, holds):
             found.append(m)
+    swapped = mistakes.REGISTRY.get("sin_cos_swapped")
+    written = mistakes.sin_cos_swapped_as_written(model) if swapped is not None and not found else None
+    if written is not None and written.pre is not None and _holds_with(ctx, bad, dict(written.pre), holds):
+        found.append(replace(swapped, build=mistakes.sin_cos_swapped_as_written))  # B at 100° from n: 110 sin 100°
     if not found and "degrees_as_radians" in mistakes.REGISTRY:  # a calculator in radian mode
         trig = any(x.has(DEG) for x in bad.raw)
         if trig and _holds_with(ctx, bad, {DEG: sympy.Integer(1)}, holds):

@@ -41,6 +41,7 @@ from derive.mathtext.notes import (
     without_note,
 )
 from derive.mathtext.parser import GREEK
+from derive.mathtext.percents import per_cent_sides
 from derive.mathtext.resultlists import listed_speeds
 from derive.mathtext.sides import (
     decimal_commas,
@@ -393,6 +394,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     text = _UNIT_BRACKET.sub("", words_after(glued_marks(without_convention(text))))  # 2 vAx: a name, not words
     sides = tuple(_side(s) for s in text.split("="))
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
+    sides = per_cent_sides(sides)  # "64/352 × 100 = 18.2 %": the % a label of the number
     if quoted_law(sides):
         return None  # "v^2 = u^2 + 2as": a law quoted before it is used, not marked
     if any(not re.search(_SIDE, s) or _POINTS.match(s) for s in sides):  # "\text{angle with …} = …": words

@@ -26,7 +26,7 @@ from derive.checking.mistakes.outcomes import changes, correct, forms, model, ou
 from derive.checking.mistakes.pairs import MAX_PAIRS, combine
 from derive.checking.mistakes.records import Mistake, Outcome, Quantity, Variant, mistake
 from derive.checking.mistakes.registry import EQUATION_TITLES, KINDS, REGISTRY, phrase, register
-from derive.checking.mistakes.velocities import of_one_body
+from derive.checking.mistakes.velocities import of_one_body, sin_cos_swapped_as_written
 
 __all__ = [
     "EQUATION_TITLES",
@@ -49,4 +49,5 @@ __all__ = [
     "pair_outcomes",
     "phrase",
     "register",
+    "sin_cos_swapped_as_written",
 ]

@@ -43,6 +43,20 @@ def sin_cos_swapped(model: Model) -> Variant | None:
     """Each velocity given by a speed and an angle resolved with the complement of its angle
     to the line of impact (80 sin 25° along n for a velocity at 25° to it; where n is at φ to
     x, the angle θ from x becomes π/2 + 2φ − θ, so that θ − φ becomes π/2 − (θ − φ))."""
+    return _resolved_swapped(model, keep_way=True)
+
+
+def sin_cos_swapped_as_written(model: Model) -> Variant | None:
+    """:func:`sin_cos_swapped` where the line of impact is the geometry's, each part not keeping
+    its way but as the swap writes it: B at 100° from n resolved ``110 sin 100° = 108.3`` along n
+    and ``110 cos 100° = -19.10`` across (the student's own angle from n, obtuse); None where
+    that is the same as :func:`sin_cos_swapped`."""
+    if model.problem.phi is None:
+        return None
+    return _resolved_swapped(model, keep_way=False)
+
+
+def _resolved_swapped(model: Model, keep_way: bool) -> Variant | None:
     p = model.problem
     motions = [m for m in (p.motion_A, p.motion_B) if m.angle is not None and m.speed is not None]
     if not p.oblique or not motions:
@@ -55,7 +69,7 @@ def sin_cos_swapped(model: Model) -> Variant | None:
             swap = {motion.angle: sympy.pi / 2 + 2 * phi - motion.angle}
             pre[n] = model.pre[n].xreplace(swap)
             pre[t] = model.pre[t].xreplace(swap)
-            if p.phi is not None:  # the line of impact from the geometry: each part keeps its way
+            if p.phi is not None and keep_way:  # the line of impact from the geometry: each part keeps its way
                 pre[n] = sympy.sign(model.pre[n]) * sympy.Abs(model.pre[t])
                 pre[t] = sympy.sign(model.pre[t]) * sympy.Abs(model.pre[n])
     return Variant(pre=pre)
