@@ -41,6 +41,7 @@ from derive.mathtext.notes import (
     without_note,
 )
 from derive.mathtext.parser import GREEK
+from derive.mathtext.percentsides import percent_labels
 from derive.mathtext.sides import (
     decimal_commas,
     direction_of,
@@ -387,7 +388,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(glued_marks(text)))  # 2 vAx: a name, not words
-    sides = tuple(_side(s) for s in text.split("="))
+    sides = percent_labels(tuple(_side(s) for s in text.split("=")))  # 64/352 x 100 = 18.2%
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     if quoted_law(sides):
         return None  # "v^2 = u^2 + 2as": a law quoted before it is used, not marked
