@@ -1,10 +1,9 @@
 """A derivation's relations read in the student's names (:mod:`.naming`): each side in the
 problem's symbols, with what was declared, habitual, introduced and inferred said in words.
 
-Every student name that is not derive's is read first as a placeholder; the placeholders
-are then given their meaning all at once. The sign convention and the meaning of the names
-no declaration or habit settles are chosen to make the most relations hold with the
-problem's true values (a slip later on does not move them: the lines before it hold).
+Every student name that is not derive's is read first as a placeholder; the placeholders are then given their meaning
+all at once. The sign convention and the meaning of the names no declaration or habit settles are chosen to make the
+most relations hold with the problem's true values (a slip later on does not move them: the lines before it hold).
 """
 
 from __future__ import annotations
@@ -23,6 +22,7 @@ from derive.checking.frames import (
     axis_names,
     declared_axes,
     flipped,
+    in_said_way,
     reversal_said,
     score,
     uses_n_components,
@@ -141,7 +141,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
-    lines = [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
+    lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
         n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
