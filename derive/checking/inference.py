@@ -49,6 +49,7 @@ from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
+from derive.checking.velocitywords import along_the_line
 from derive.checking.wordlabels import word_label
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -107,7 +108,7 @@ def read_lines(
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
-        rewritten.append(masses_put_in(ctx, sides))  # ½ m v² = ½(0.020)(300)²: m is the bullet's
+        rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {
@@ -440,8 +441,7 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         if not set().union(*(_placeholders(e) for e in exprs[1:])):
             r = replace(r, sides=r.sides[1:], exprs=r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
             exprs, left = exprs[1:], set()
-        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:
-            # "p = 0.150 x 35.0 = 5.25": a name of the student's own that nothing places, and its working
+        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:  # "p = 0.150 x 35.0 = 5.25": unplaced
             return _resolved(replace(r, sides=r.sides[1:], exprs=r.exprs[1:]), mapping)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
