@@ -77,7 +77,9 @@ def check(
             from derive.checking.chainlines import chain_items as derivation_items
         else:
             from derive.checking.lines import derivation_items
+            from derive.checking.putvalues import put_values
 
+            ctx.fixed = put_values(ctx, derivation)  # "putting m = 1": that given drawn as 1
         # every line end Python knows ("\r", "\r\n", U+2028, form feed) as "\n": the reader and
         # each module that counts lines then count the same lines, as the student's editor shows them
         lines, notes = derivation_items(ctx, "\n".join(derivation.splitlines()))

@@ -49,6 +49,7 @@ class Context:
         self._model: mistakes.Model | None = None
         self.data = _data(self.problem)
         self.memo: dict[tuple, object] = {}  # what the judges work out once per check (rounded values)
+        self.fixed: dict[sympy.Symbol, sympy.Rational] = {}  # givens a derivation puts a number for ("m = 1")
 
     @property
     def model(self) -> mistakes.Model:
@@ -66,7 +67,7 @@ class Context:
 
     def sampler(self) -> Sampler:
         """Random admissible values of the givens."""
-        return Sampler(self.problem, self.ind)
+        return Sampler(self.problem, self.ind, self.fixed)
 
     def definitions(self) -> dict[sympy.Symbol, sympy.Expr]:
         """Every given defined from others -> its definition in the base givens."""

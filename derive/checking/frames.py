@@ -192,3 +192,42 @@ def axis_names(ctx: Context, axes: dict[str, tuple[str, int]], used: set[str]) -
                     spelled |= {f"{base}_{letter}", f"{base}{letter}"}
                 out.update({n: sign * c for n in spelled & used})
     return out
+
+
+#: The way a line says its values are measured in (``v_A = -2eu in its original direction``, after
+#: working with B's direction positive): a body's original direction (its own, A's, B's; P and Q
+#: the exam's letters for A and B); a teacher reads the line's values with that way positive.
+_ORIGINAL = re.compile(
+    r"\bin\s+(?:(its|[ABPQ](?=['’]s))(?:['’]s)?\s+(?:original|initial|first)\s+direction"
+    r"|the\s+(?:original|initial)\s+direction\s+of\s+(?:motion\s+of\s+)?([ABPQ])\b"
+    r"|the\s+direction\s+of\s+([ABPQ])['’]s\s+(?:original|initial)\s+motion)",
+    re.I,
+)
+_BODY = {"A": 1, "P": 1, "B": -1, "Q": -1}
+
+
+def _said(r) -> int:
+    """+1 where the line says derive's n is positive (A's original direction), -1 the reversed
+    way (B's), 0 where it says none (or "its" with no body named before it)."""
+    m = _ORIGINAL.search(r.written)
+    if m is None or r.exprs is None:
+        return 0
+    letter = m.group(1) or m.group(2) or m.group(3)
+    if letter.lower() == "its":  # the body named last before the words: "v_A = -2eu in its …"
+        letters = re.findall(r"(?<![A-Za-z])([ABPQ])(?![A-Za-z])", r.written[: m.start()])
+        letter = letters[-1] if letters else ""
+    return _BODY.get(letter.upper(), 0)
+
+
+def in_said_way(ctx: Context, lines: list, frame: int) -> list:
+    """``lines`` (each a :class:`~.inference.Read`, in derive's symbols, read in the student's
+    ``frame``) with a line whose words name the other way positive read in that way: derive's n
+    components turned round on it."""
+    flip = n_components(ctx)
+    out = []
+    for r in lines:
+        said = _said(r)
+        if said and said != frame and r.exprs is not None:
+            r = replace(r, exprs=tuple(sympy.sympify(e).xreplace(flip) for e in r.exprs))
+        out.append(r)
+    return out

@@ -1,10 +1,9 @@
 """A derivation's relations read in the student's names (:mod:`.naming`): each side in the
 problem's symbols, with what was declared, habitual, introduced and inferred said in words.
 
-Every student name that is not derive's is read first as a placeholder; the placeholders
-are then given their meaning all at once. The sign convention and the meaning of the names
-no declaration or habit settles are chosen to make the most relations hold with the
-problem's true values (a slip later on does not move them: the lines before it hold).
+Every student name that is not derive's is read first as a placeholder; the placeholders are then given their meaning
+all at once. The sign convention and the meaning of the names no declaration or habit settles are chosen to make the
+most relations hold with the problem's true values (a slip later on does not move them: the lines before it hold).
 """
 
 from __future__ import annotations
@@ -23,6 +22,7 @@ from derive.checking.frames import (
     axis_names,
     declared_axes,
     flipped,
+    in_said_way,
     reversal_said,
     score,
     uses_n_components,
@@ -49,6 +49,7 @@ from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
+from derive.checking.velocitywords import along_the_line
 from derive.checking.wordlabels import word_label
 from derive.mathtext.notation import student
 from derive.mathtext.reader import Relation, read_relations
@@ -107,7 +108,7 @@ def read_lines(
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
-        rewritten.append(masses_put_in(ctx, sides))  # ½ m v² = ½(0.020)(300)²: m is the bullet's
+        rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {
@@ -141,7 +142,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
-    lines = [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw]
+    lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
         n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
@@ -440,8 +441,7 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
         if not set().union(*(_placeholders(e) for e in exprs[1:])):
             r = replace(r, sides=r.sides[1:], exprs=r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
             exprs, left = exprs[1:], set()
-        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:
-            # "p = 0.150 x 35.0 = 5.25": a name of the student's own that nothing places, and its working
+        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:  # "p = 0.150 x 35.0 = 5.25": unplaced
             return _resolved(replace(r, sides=r.sides[1:], exprs=r.exprs[1:]), mapping)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))

@@ -301,6 +301,8 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     before = {"A": nm.A1n, "B": nm.B1n}
     after = {"A": _post(ctx, "A"), "B": _post(ctx, "B")}
     out: dict[str, sympy.Expr] = {}
+    given = {g.name for g in ctx.problem.givens if not g.unknown}
+    theirs = used if used is None or "u" not in given else used - {"u"}  # u a given (speed u): not the habit
     u_used = used is None or any(re.fullmatch(r"u(?:_?[AB12ab]?[nt]?)?", n) for n in used)
     for body, one in (("A", "1"), ("B", "2")):
         for spelled in (f"u_{body}", f"u_{body.lower()}", f"u_{one}", f"u{one}"):
@@ -337,11 +339,11 @@ def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
     if fixed := ctx.problem.fixed_B:  # one body: its mass is m, v its velocity after
         out["m"] = ctx.model.m_A
         out["v"] = after["A"]
-    if u_used:
+    if u_used and not ({"v_A2", "v_A2n"} & given):  # A's after given (S brought to rest): v is not A's
         out["v"] = after["A"]
     if moving_off_together(ctx.problem):  # they move off together: V after (v' too)
         out["V"] = out["v_f"] = out["v_2"] = out["v_p"] = out["V_p"] = moving_together(ctx, after["A"], after["B"])
-    bare_u = used is None or bool({"u", "u_n", "u_t", "un", "ut"} & used) or bool(fixed)  # u_A, u_B: v is not A's
+    bare_u = theirs is None or bool({"u", "u_n", "u_t", "un", "ut"} & theirs) or bool(fixed)  # u_A, u_B: v not A's
     out.update(_lone(ctx, after, bare_u, used is not None and {"v", "V"} <= used))
     rest = {g.name[2] for g in ctx.problem.givens if g.name in ("v_A1", "v_B1") and g.value == 0} | set("B" * fixed)
     moving = [b for b, x in before.items() if x is not None and b not in rest]

@@ -162,7 +162,8 @@ _DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
 #: An arrow after a value that points each way (``0.025 m/s $\leftarrow$``, ``0.6 ft/s ←``).
 _ARROW = {
     "left": r"←|⟵|<-{1,2}(?!>)|\\(?:long)?leftarrow\b",
-    "right": r"→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b",
+    # a right arrow with more working after it (``0.6 ft/s -> +ve so …``) is "so", not a way
+    "right": r"(?:→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b)(?!\s*[-+−]?\s*[\w(])",
     "up": r"↑|\\uparrow\b",
     "down": r"↓|\\downarrow\b",
 }

@@ -22,7 +22,8 @@ class Sampler:
     angles between 6° and 83°, bodies that approach along n, and the file's conditions on its
     givens met."""
 
-    def __init__(self, problem: Problem, ind: Mapping[sympy.Symbol, sympy.Expr]) -> None:
+    def __init__(self, problem: Problem, ind: Mapping[sympy.Symbol, sympy.Expr], fixed: Mapping | None = None) -> None:
+        self.fixed = dict(fixed or {})  # givens the student put a number for ("putting m = 1")
         self.by_symbol = {g.symbol: g for g in problem.givens}
         self.approach = (problem.motion_A.n - problem.motion_B.n).xreplace(dict(ind))
         self.numeric = problem.numeric()
@@ -51,6 +52,7 @@ class Sampler:
             for s in syms:
                 lo, hi = self.range(s)
                 pt[s] = sympy.Rational(rng.randint(int(lo * 1000), int(hi * 1000)), 1000)
+                pt[s] = self.fixed.get(s, pt[s])
             if self._approaching(pt) and all(self._meets(c, pt) for c in self.conditions):
                 out.append(pt)
         return out

@@ -13,6 +13,7 @@ import sympy
 
 from derive.checking.context import Context
 from derive.checking.statementbodies import at_rest_before, said_by_letter, statement_bodies
+from derive.checking.towardwords import toward
 
 
 def in_words(line: str, ctx: Context) -> dict[str, sympy.Expr]:
@@ -246,7 +247,7 @@ def _direct(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             b = _body(body, ctx)
             key = f"v_{b}{'2' if when.lower() == 'after' else '1'}"
             if b and key in names:
-                out.setdefault(name.replace("{", "").replace("}", ""), sign * names[key][0])
+                out.setdefault(name.replace("{", "").replace("}", ""), sign * toward(plain, when, b) * names[key][0])
     return out
 
 

@@ -48,8 +48,9 @@ def before_on_line(r: Any, lead: str) -> Any:
     time before (``v_A`` as ``v_A1``, ``v_An`` as ``v_A1n``) where its label or ``lead`` (the words
     before it on its line) say before the impact (``before: vA = 4j , vB = -4i``); else as it is."""
     m = _TIMELESS.fullmatch(r.sides[0]) if r.sides else None
+    alone = re.fullmatch(r"\s*v\s*", r.sides[0]) if r.sides else None  # "before: v = -4": the one body's
     words = f"{r.label or ''} {lead}"
     said = _BEFORE_WORDS.search(words)
-    if m is None or said is None or _AFTER_WORDS.search(words[said.end() :]):
+    if (m is None and alone is None) or said is None or _AFTER_WORDS.search(words[said.end() :]):
         return r
-    return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}", *r.sides[1:]))
+    return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}" if m else "v_i", *r.sides[1:]))

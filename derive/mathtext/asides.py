@@ -21,6 +21,11 @@ def case_before(text: str, at: int, start: int) -> int:
     """Where what a rejection at ``at`` turns down starts: its sentence from ``start``, or, where it
     is a sentence of its own (``… P would go through Q. Reject.``), the sentence before it (to the
     full stop before that, not a ";" the reader put between the pieces of mathematics)."""
+    if start > 0 and text[start - 1] == ";" and "=" not in text[start:at]:
+        # "If $x = 5u/6$ then $y = u/3$, so P goes through Q -- impossible": the words after the
+        # last piece of mathematics go on its sentence (the ";" between them is the reader's)
+        stops = [s.end() for s in _FULL_STOP.finditer(text) if s.end() <= start]
+        return stops[-1] if stops else 0
     stops = [s.end() for s in _FULL_STOP.finditer(text) if s.end() <= at]
     if stops and _ELSEWHERE.match(text, at):
         return max(start, stops[-1])  # "v = 1.36. Reject the other root.": its own sentence only
