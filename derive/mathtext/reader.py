@@ -29,6 +29,7 @@ from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
+from derive.mathtext.matrices import matrices
 from derive.mathtext.momentumlaw import momentum_law
 from derive.mathtext.notation import FUNCTIONS, glued_angles
 from derive.mathtext.notes import (
@@ -224,15 +225,25 @@ def _goes_on(part: str, row: list[str]) -> bool:
     return _CONTINUED.match(part) is not None and re.search(r"=|≈|\\approx", "".join(row)) is not None
 
 
+def _after_comma(part: str, row: list[str]) -> bool:
+    """Whether a line of a display starts a relation of its own after a relation above it that
+    ends with a comma (a matrix equation ending ``…,`` then ``\\qquad \\Delta = 5.`` below it, no
+    row break): its own row, at its own line."""
+    above = "".join(row).rstrip()
+    return above.endswith(",") and "=" in above and "=" in part and not _CONTINUED.match(part)
+
+
 def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
     """The rows of a display that spans lines: its text split at ``\\\\``, an arrow that means
     "so" or an ``=`` that starts a line (an arrow or ``\\\\``: a new row; ``=``: the row goes on)."""
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
-        text = NESTED.sub(" ", column_vectors(text))
+        text = NESTED.sub(" ", column_vectors(matrices(text)))
         parts = re.split(r"\\\\", text)
-        for k, part in ((k > 0 or starts_with_so(p) or _goes_on(p, row), p) for k, p in enumerate(parts)):
+        for k, part in (
+            (k > 0 or starts_with_so(p) or _goes_on(p, row) or _after_comma(p, row), p) for k, p in enumerate(parts)
+        ):
             if k and "".join(row).strip():
                 yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
             if k:
@@ -264,7 +275,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         end = close.search(raw, m.end())
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
-        body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
+        body = column_vectors(matrices(raw[m.end() : end.start()]))  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
         if words_end_it(out[-1], raw[i:]):
