@@ -242,9 +242,10 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
 
 
 #: A component named by its axis alone at a wall (``par = U cos α``, ``perp' = eU sin α``): parallel
-#: to the wall is derive's t, perpendicular (normal) to it n. Abbreviations only: the words in full
-#: are prose as often ("the angle with the normal = 90 - 1.27").
-_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n"}
+#: to the wall is derive's t, perpendicular (normal) to it n. "parallel" and "perpendicular" in full
+#: as a whole name too ("Velocity before: parallel = U cos α, perpendicular = U sin α"); "normal" in
+#: full is prose as often ("the angle with the normal = 90 - 1.27").
+_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n", "parallel": "t", "perpendicular": "n"}
 
 
 def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, sympy.Expr]:
