@@ -30,6 +30,7 @@ from derive.mathtext.inline import equals_in_brackets, without_into, words_end_i
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.matrices import matrices
+from derive.mathtext.memories import recalled, stored
 from derive.mathtext.momentumlaw import momentum_law
 from derive.mathtext.notation import FUNCTIONS, glued_angles
 from derive.mathtext.notes import (
@@ -153,7 +154,9 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
     points = european_points(text)
+    memory: dict[str, str] = {}
     for line, column, written, plain in pieces(text):
+        plain, letter = stored(plain)  # "= 1.08 J  [STO -> A]": the value kept in memory A
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = glued_angles(ascii_subscripts(plain))  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1; sin46.8: sin 46.8
         plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
@@ -180,9 +183,11 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
             for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
                 said = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
-                out.append(before_on_line(replace(r, sides=sides), said))  # "before: vA = 4j": A's before
+                out.append(before_on_line(replace(r, sides=recalled(sides, memory)), said))  # "before: vA = 4j"
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
+        if letter and out and out[-1].line == line:
+            memory[letter] = out[-1].sides[-1]
     return tuple(out)
 
 
