@@ -123,6 +123,8 @@ _LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
 
 #: An answer by its label, a value in words after it (``B: 3.05 m/s to the right``): no part of the
 #: relation after its comma (``…, e = 0.7125``).
+#: A sign convention before a comma (``up +ve, impulse = …``, ``taking left as positive, v = …``).
+_SIGN_SAID = re.compile(r"(?:\+\s?ve|\bpositive|\(\+\))\s*(?:now|here|again|this\s+time)?\s*$", re.I)
 _ANSWER = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)\s*[-+]?\d[\d.]*\s*(?:[A-Za-z/ ]*)$")
 
 
@@ -133,7 +135,15 @@ def _comma_split(piece: str) -> list[str]:
     out: list[str] = []
     for bit in bits:
         if out and (
-            ("=" in bit and ("=" in out[-1] or _ANSWER.match(out[-1]) or LONE_VALUE.fullmatch(out[-1])))
+            (
+                "=" in bit
+                and (
+                    "=" in out[-1]
+                    or _ANSWER.match(out[-1])
+                    or _SIGN_SAID.search(out[-1])
+                    or LONE_VALUE.fullmatch(out[-1])
+                )
+            )
             or _LABEL.match(bit)
         ):
             out.append(bit)  # "(at) 35.0 m/s, goalie M = 70.0 kg": the speed is no part of M's side
