@@ -313,10 +313,15 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
 
 
+#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
+_INTEGRAL = re.compile(r"(?:\\int|∫)(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b")
+
+
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!…").rstrip()  # "= -12 J ???", "= 1.69…": the doubt is not the value
+    text = _INTEGRAL.sub("impulse", text)  # ∫F dt = m(v - u): the impulse
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
