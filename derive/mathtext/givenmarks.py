@@ -63,7 +63,7 @@ def without_doubt(text: str) -> str:
 
 #: The figures of a value rounded in brackets after the value (``= 0.7125 (0.713 3sf)``, ``(0.71, 2 d.p.)``).
 _FIGURES_INSIDE = re.compile(
-    r"(?<=\d)\s*,?\s+(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?)\s*(?=\)\s*\.?\s*$)",
+    r"(?<=\d)(?:\s*,\s*|\s+)(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?)\s*(?=\)\s*\.?\s*$)",
     re.I,
 )
 

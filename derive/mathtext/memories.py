@@ -16,7 +16,7 @@ import re
 #: The note that stores a line's value: STO and an arrow, "store(d) in/as", "saved in memory"; a
 #: calculator's memory letter (A-F, M, X, Y).
 _STORED = re.compile(
-    r"\s*[\[(]?\s*(?:(?i:sto|stored?|saved?)\s*(?:(?i:in|as|to|into)\s+)?(?:(?i:memory)\s+)?(?:->|→|▶|⇒|=>)?"
+    r"(?<!\s)\s*(?:[\[(]\s*)?(?:(?i:sto|stored?|saved?)\s*(?:(?i:in|as|to|into)\s+)?(?:(?i:memory)\s+)?(?:->|→|▶|⇒|=>)?"
     r"|(?:->|→|▶)\s*(?i:sto|memory))\s*([A-FMXY])\s*[\])]?\s*\.?\s*$"
 )
 
