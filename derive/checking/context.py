@@ -17,6 +17,7 @@ from derive.checking.entries import Entry
 from derive.checking.numeric import plain, with_unit
 from derive.checking.report import Diagnosis
 from derive.checking.sampler import Sampler
+from derive.checking.statementangles import statement_angles
 from derive.numbers import format_number
 from derive.physics.energy import impulse_n, kinetic_energy
 from derive.physics.results import Result
@@ -216,6 +217,9 @@ class Context:
         for d in p.asks.defined:  # the file's own quantities (beta = -theta_A2: the statement's β)
             by_name = {s: out[s.name][1] for s in d.expr.free_symbols if s.name in out}
             out.setdefault(d.name, (d.symbol, d.expr.xreplace(by_name)))
+        for letter, name in statement_angles(p).items():  # "just after, it makes an angle β with it"
+            if name in out:
+                out.setdefault(letter, (symbol(letter), out[name][1]))
         return out
 
     def in_unknowns(self, expr: sympy.Expr) -> sympy.Expr:

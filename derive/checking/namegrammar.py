@@ -29,7 +29,7 @@ import sympy
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
 from derive.checking.reducedmass import is_reduced_mass
-from derive.checking.statementbodies import statement_bodies
+from derive.checking.statementbodies import statement_bodies, told_apart
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.reader import Relation
 
@@ -82,6 +82,8 @@ def body_marks(ctx: Context) -> dict[str, str]:
         for body, word in words.items():
             if word[0] not in "intfxy" and initials.count(word[0]) == 1:
                 out.setdefault(word[0], body)
+    for word, body in told_apart(statement).items():
+        out.setdefault(word, body)
     return out
 
 
@@ -235,6 +237,8 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
             time = "1"  # vAn beside vAn': before
         elif not time and kind == "v" and body and _only_before_marked(parsed, body, axis):
             time = "2"  # vAx beside vAx1 (and none marked after): after
+        elif not time and kind == "v" and body and _by_word(name, bodies):
+            time = "1" if name[0] == "u" else "2"  # v_red, u_car: the habit's u before, v after
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
             out[name] = e
@@ -242,9 +246,10 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
 
 
 #: A component named by its axis alone at a wall (``par = U cos α``, ``perp' = eU sin α``): parallel
-#: to the wall is derive's t, perpendicular (normal) to it n. Abbreviations only: the words in full
-#: are prose as often ("the angle with the normal = 90 - 1.27").
-_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n"}
+#: to the wall is derive's t, perpendicular (normal) to it n. "parallel" and "perpendicular" in full
+#: as a whole name too ("Velocity before: parallel = U cos α, perpendicular = U sin α"); "normal" in
+#: full is prose as often ("the angle with the normal = 90 - 1.27").
+_WALL_WORDS = {"par": "t", "para": "t", "perp": "n", "norm": "n", "parallel": "t", "perpendicular": "n"}
 
 
 def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, sympy.Expr]:
@@ -260,6 +265,13 @@ def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, symp
         if x is not None:
             out[name] = -x if stem != name and axis == "n" else x
     return out
+
+
+def _by_word(name: str, bodies: dict[str, str]) -> bool:
+    """Whether ``name`` is ``u`` or ``v`` with a body's word from the statement after it and nothing
+    else (``v_red``, ``u_car``): the habit's letters, u before and v after, for that body."""
+    m = re.fullmatch(r"([uv])_?([a-z]{3,})", name)
+    return m is not None and m.group(2) in bodies
 
 
 def _only_before_marked(parsed: dict[str, tuple[str, str, str, str]], body: str, axis: str) -> bool:

@@ -1,6 +1,7 @@
 """The one moving body's speed after the impact named in words beside the word "after" (a ball
 on a cushion, a wall, the ground): "After (speed $V$): parallel $V\\cos\\beta$ …", "after the
-impact: speed V", "it rebounds with speed w"; and whether a line that could not be read is
+impact: speed V", "it rebounds with speed w", "let V be the speed after the impact", "let the
+speed after the impact with DC be V"; and whether a line that could not be read is
 prose (words a teacher does not mark) or mathematics (``V cos beta = e_1 U cos alpha``, whose
 words are a function's and a Greek letter's names).
 
@@ -24,7 +25,13 @@ _NAME = r"([A-Za-z](?:_?\{?\w{1,2}\}?)?|\\[a-z]+)"
 _AFTER_SPEED = (
     re.compile(rf"\bafter\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
     re.compile(
-        rf"\bspeed\s+(?:just\s+)?after(?:\s+the\s+(?:impact|collision|bounce))?\s*(?:is\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
+        rf"\bspeed\s+(?:just\s+)?after(?:\s+the\s+(?:impact|collision|bounce)(?:\s+(?:with|off|on|against)\s+(?:the\s+)?\w+(?!\w))?)?"
+        rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
+        re.I,
+    ),
+    re.compile(  # "let V be the speed after", "V is its speed after the impact", "V = the speed after"
+        rf"(?<![\w\\]){_NAME}\s+(?:is|be|=|denotes?|represents?|for)\s+(?:the\s+|its\s+)?(?:new\s+|final\s+)?"
+        r"speed\s+(?:just\s+|immediately\s+)?after",
         re.I,
     ),
     re.compile(

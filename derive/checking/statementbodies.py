@@ -122,3 +122,28 @@ def said_by_letter(line: str, ctx: Context) -> dict[str, sympy.Expr]:
         if key in names:
             out.setdefault(m.group(1), names[key][0])
     return out
+
+
+#: A body named by a word before its noun in a statement: "a blue puck", "the red puck", "a cue ball".
+_NOUN_WORD = re.compile(rf"\b(?i:a|an|the)\s+([a-z]{{3,}})\s+{_NOUN}\b")
+#: Words before a noun that never tell two bodies apart.
+_ALIKE = frozenset({"small", "smooth", "uniform", "identical", "large", "heavy", "light", "second", "other", "same"})
+
+
+def told_apart(statement: str) -> dict[str, str]:
+    """The words that tell the statement's two bodies of one noun apart (``A blue puck of mass {m_A}
+    … a red puck``) -> "A" or "B": the one said with A's mass (``{m_A}``) is A, or with B's is B, and
+    the other is the other; {} unless exactly two such words are found and the masses say which."""
+    words = list(dict.fromkeys(w for w in _NOUN_WORD.findall(statement) if w not in _ALIKE))
+    if len(words) != 2:
+        return {}
+    for body in "AB":
+        with_mass = [
+            w
+            for w in words
+            if re.search(rf"\b{w}\s+{_NOUN}\s+(?:\([A-Z]\)\s+)?(?:\(|(?:of|with)\s+mass\s+)\{{m_{body}\}}", statement)
+        ]
+        if len(with_mass) == 1:
+            other = "B" if body == "A" else "A"
+            return {with_mass[0]: body, words[1 - words.index(with_mass[0])]: other}
+    return {}

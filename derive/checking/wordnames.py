@@ -66,7 +66,7 @@ def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     if len(cut) > 1 and "=" in cut[0]:
         return {}
     valued, line = len(cut) > 1, cut[0]  # "A's component along the l.o.c. is a = 4 cos 60°": the words before
-    labels = set(ctx.problem.labels) | {"A", "B"}
+    labels = set(ctx.problem.labels) | {"A", "B"} | set(statement_bodies(ctx))  # "the velocity of P after"
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
     for clause in re.split(r"[;.](?:\s|$)", re.sub(r"\$|\\[()]|[{}]", " ", line)):

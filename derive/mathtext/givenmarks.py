@@ -62,9 +62,16 @@ def without_doubt(text: str) -> str:
     return _DOUBT.sub(lambda m: m.group(0) if _TAKEN_BACK.search(m.group(0).lstrip(" ?")) else "", text)
 
 
+#: The figures of a value rounded in brackets after the value (``= 0.7125 (0.713 3sf)``, ``(0.71, 2 d.p.)``).
+_FIGURES_INSIDE = re.compile(
+    r"(?<=\d)(?:\s*,\s*|\s+)(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?)\s*(?=\)\s*\.?\s*$)",
+    re.I,
+)
+
+
 def without_given_mark(text: str) -> str:
     """``text`` without the marks and remarks around its result (no part of its value)."""
-    text = _SQUARE_LINE.sub(r"\1", _FIGURES.sub("", text))
+    text = _SQUARE_LINE.sub(r"\1", _FIGURES.sub("", _FIGURES_INSIDE.sub("", text)))
     text = _DASH.sub(_unless_taken_back, without_doubt(_WORDY.sub(_unless_a_way, text)))
     text = _TRAILING.sub(lambda m: m.group(0) if _WAY.search(m.group(0)[len(m.group(1)) :]) else m.group(1), text)
     return _BARE.sub("", _BRACKETED.sub("", text))

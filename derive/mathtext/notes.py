@@ -314,7 +314,7 @@ def _is_more_figures(m: re.Match) -> bool:
         return False
     digits = value.replace(".", "").lstrip("0").rstrip("0") or "0"
     same = more.replace(".", "").lstrip("0").startswith(digits[:-1] or digits) or _rounds_to(more, value)
-    return bool(same or unit or len(m.group("gap")) >= 2)
+    return bool(same or _rounds_to(value, more) or unit or len(m.group("gap")) >= 2)  # or rounded: 0.7125 (0.713)
 
 
 #: Words that lead into a relation's first side (``CoM velocity V``, ``so θ``, ``speed V``): prose

@@ -29,6 +29,8 @@ from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
+from derive.mathtext.matrices import matrices
+from derive.mathtext.memories import recalled, stored
 from derive.mathtext.momentumlaw import momentum_law
 from derive.mathtext.notation import FUNCTIONS, glued_angles
 from derive.mathtext.notes import (
@@ -154,7 +156,9 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
     points = european_points(text)
+    memory: dict[str, str] = {}
     for line, column, written, plain in pieces(text):
+        plain, letter = stored(plain)  # "= 1.08 J  [STO -> A]": the value kept in memory A
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
         plain = glued_angles(ascii_subscripts(plain))  # (v_A)ₓ₁, (v)t1: (v_A)_x1, v_t1; sin46.8: sin 46.8
         plain = said_doing(said_is(points(unmarked(unbold(without_doubt(plain))))))  # "B's speed after is 8": B's … = 8
@@ -182,9 +186,11 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
             for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
                 said = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
-                out.append(before_on_line(replace(r, sides=sides), said))  # "before: vA = 4j": A's before
+                out.append(before_on_line(replace(r, sides=recalled(sides, memory)), said))  # "before: vA = 4j"
                 if len(out) >= MAX_RELATIONS:
                     return tuple(out)
+        if letter and out and out[-1].line == line:
+            memory[letter] = out[-1].sides[-1]
     return tuple(out)
 
 
@@ -229,15 +235,25 @@ def _goes_on(part: str, row: list[str]) -> bool:
     return _CONTINUED.match(part) is not None and re.search(r"=|≈|\\approx", "".join(row)) is not None
 
 
+def _after_comma(part: str, row: list[str]) -> bool:
+    """Whether a line of a display starts a relation of its own after a relation above it that
+    ends with a comma (a matrix equation ending ``…,`` then ``\\qquad \\Delta = 5.`` below it, no
+    row break): its own row, at its own line."""
+    above = "".join(row).rstrip()
+    return above.endswith(",") and "=" in above and "=" in part and not _CONTINUED.match(part)
+
+
 def _rows(rows: list[tuple[int, str]], lines: list[str]) -> Iterator[tuple[int, int, str, str]]:
     """The rows of a display that spans lines: its text split at ``\\\\``, an arrow that means
     "so" or an ``=`` that starts a line (an arrow or ``\\\\``: a new row; ``=``: the row goes on)."""
     row: list[str] = []
     first = rows[0][0]
     for number, text in rows:
-        text = NESTED.sub(" ", column_vectors(text))
+        text = NESTED.sub(" ", column_vectors(matrices(text)))
         parts = re.split(r"\\\\", text)
-        for k, part in ((k > 0 or starts_with_so(p) or _goes_on(p, row), p) for k, p in enumerate(parts)):
+        for k, part in (
+            (k > 0 or starts_with_so(p) or _goes_on(p, row) or _after_comma(p, row), p) for k, p in enumerate(parts)
+        ):
             if k and "".join(row).strip():
                 yield first, 0, lines[first - 1].strip(), row_plain(" ".join(row))
             if k:
@@ -269,7 +285,7 @@ def _line(raw: str, number: int) -> tuple[str, re.Pattern | None, list[tuple[int
         end = close.search(raw, m.end())
         if end is None:
             return " ".join(out), close, [(number, raw[m.end() :])]
-        body = column_vectors(raw[m.end() : end.start()])  # a column vector's "\\" is no new row
+        body = column_vectors(matrices(raw[m.end() : end.start()]))  # a column vector's "\\" is no new row
         out.append(" ; ".join(row_plain(row) for row in re.split(r"\\\\", NESTED.sub(" ", body))))
         i = end.end()
         if words_end_it(out[-1], raw[i:], " ".join(out[:-1])):
@@ -302,10 +318,15 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
 
 
+#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
+_INTEGRAL = re.compile(r"(?:\\int|∫)(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b")
+
+
 def _side(text: str) -> str:
     """A side without the unit after its number; a number in a multiple of an SI unit (``22 g``,
     ``20 Mg``, ``45 km/h``) in that unit (``22/1000``)."""
     text = text.strip().rstrip(",;:.?!…").rstrip()  # "= -12 J ???", "= 1.69…": the doubt is not the value
+    text = _INTEGRAL.sub("impulse", text)  # ∫F dt = m(v - u): the impulse
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000

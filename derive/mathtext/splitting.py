@@ -135,13 +135,31 @@ def _colon_split(piece: str) -> list[str]:
 _LABEL = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)")
 
 
+#: An answer by its label, a value in words after it (``B: 3.05 m/s to the right``): no part of the
+#: relation after its comma (``…, e = 0.7125``).
+#: A sign convention before a comma (``up +ve, impulse = …``, ``taking left as positive, v = …``).
+_SIGN_SAID = re.compile(r"(?:\+\s?ve|\bpositive|\(\+\))\s*(?:now|here|again|this\s+time)?\s*$", re.I)
+_ANSWER = re.compile(r"^\s*[A-Za-z][\w' ]{0,30}:(?!=)\s*[-+]?\d[\d.]*\s*(?:[A-Za-z/ ]*)$")
+
+
 def _comma_split(piece: str) -> list[str]:
     """``a = 1, b = 2`` -> two; ``atan2(a, b) = 3`` and ``x = 1, 2`` stay one; ``A: 2, B: -6``
     two."""
     bits = _top_level_split(piece, ",")
     out: list[str] = []
     for bit in bits:
-        if out and (("=" in bit and ("=" in out[-1] or LONE_VALUE.fullmatch(out[-1]))) or _LABEL.match(bit)):
+        if out and (
+            (
+                "=" in bit
+                and (
+                    "=" in out[-1]
+                    or _ANSWER.match(out[-1])
+                    or _SIGN_SAID.search(out[-1])
+                    or LONE_VALUE.fullmatch(out[-1])
+                )
+            )
+            or _LABEL.match(bit)
+        ):
             out.append(bit)  # "(at) 35.0 m/s, goalie M = 70.0 kg": the speed is no part of M's side
         elif out:
             out[-1] += "," + bit
