@@ -206,17 +206,34 @@ _ORIGINAL = re.compile(
 _BODY = {"A": 1, "P": 1, "B": -1, "Q": -1}
 
 
-def _said(r) -> int:
-    """+1 where the line says derive's n is positive (A's original direction), -1 the reversed
-    way (B's), 0 where it says none (or "its" with no body named before it)."""
+def _said(ctx: Context, r) -> int:
+    """+1 where the line says derive's n is positive (A's original direction, or B's where B moved
+    the same way, catching up or caught), -1 the reversed way (B's, toward A), 0 where it says
+    none (or "its" with no body named before it, or the body was at rest)."""
     m = _ORIGINAL.search(r.written)
     if m is None or r.exprs is None:
         return 0
     letter = m.group(1) or m.group(2) or m.group(3)
-    if letter.lower() == "its":  # the body named last before the words: "v_A = -2eu in its …"
+    if letter.lower() == "its":  # the body the relation is of: "v_A = v_B - 4eu = … in its …" (A's)
         letters = re.findall(r"(?<![A-Za-z])([ABPQ])(?![A-Za-z])", r.written[: m.start()])
-        letter = letters[-1] if letters else ""
-    return _BODY.get(letter.upper(), 0)
+        letter = letters[0] if letters else ""
+    body = _BODY.get(letter.upper(), 0)
+    return body and _original(ctx, body)
+
+
+def _original(ctx: Context, body: int) -> int:
+    """The way along derive's n the body moved before the impact (``body`` 1 for A, -1 for B):
+    +1, -1, or 0 where it was at rest; the usual way (A toward B, B toward A) where the problem
+    does not say (its velocity before an unknown)."""
+    nm = ctx.model.nm
+    try:
+        x = sympy.sympify(ctx.in_unknowns(nm.A1n if body == 1 else nm.B1n))
+    except (TypeError, ValueError, AttributeError):
+        return body
+    x = x.xreplace({s: sympy.Dummy(positive=True) for s in x.free_symbols})
+    if x == 0:
+        return 0
+    return 1 if x.is_positive else -1 if x.is_negative else body
 
 
 def in_said_way(ctx: Context, lines: list, frame: int) -> list:
@@ -226,7 +243,7 @@ def in_said_way(ctx: Context, lines: list, frame: int) -> list:
     flip = n_components(ctx)
     out = []
     for r in lines:
-        said = _said(r)
+        said = _said(ctx, r)
         if said and said != frame and r.exprs is not None:
             r = replace(r, exprs=tuple(sympy.sympify(e).xreplace(flip) for e in r.exprs))
         out.append(r)

@@ -1,0 +1,71 @@
+"""Review of the evening's checker rules (merge7): lines a rule made wrong that main marked right.
+Every expected value is worked by hand from the problem files' givens (in the comments).
+"""
+
+from __future__ import annotations
+
+from support.checked import lines, worst_lines
+
+#: OCR M2 2006: dropped from rest 2 m, rebounds to 1.4 m, m = 0.3 kg, g = 9.8.
+#: v_1^2 = 2(9.8)(2) = 39.2, v_1 = 6.261; v_2^2 = 2(9.8)(1.4) = 27.44, v_2 = 5.238.
+DROP = "chain-ocr-m2-2006-drop-rebound"
+#: OCR M2 2006 Q8: A 2 kg, B 1 kg, each at 5 m/s towards each other, e = 0.8:
+#: 2(5) - 5 = 5 = 2x + y, y - x = 8: x = -1, y = 7 (A's way positive).
+MEET = "ocr-m2-2006-spheres-meet-at-5-ke-lost"
+WORK = (
+    "Let x = velocity of A after, y = velocity of B after (A's original direction positive)\n"
+    "2(5) + 1(-5) = 2x + y\n"
+    "y - x = 0.8(5 + 5)\n"
+    "x = -1, y = 7\n"
+)
+
+
+def test_a_u_for_the_landing_speed_leaves_the_rise_in_v_alone() -> None:
+    # u is the student's landing speed (u^2 = 39.2 is no start speed: the drop is from rest), so
+    # suvat's letters are not the fall's; v^2 = 2(9.8)(1.4) = 27.44, v = 5.24 is the rebound, right.
+    work = "u^2 = 2(9.8)(2) = 39.2\nu = 6.26 m/s\nv^2 = 2(9.8)(1.4) = 27.44\nv = 5.24 m/s\n"
+    found = worst_lines(DROP, work)
+    assert found[3][0] == "correct"
+    assert found[4][0] == "correct"
+
+
+def test_the_fall_in_suvat_letters_is_still_read_so() -> None:
+    # u = 0 from rest, s = 2: v^2 = 0 + 39.2 = 39.2, v = 6.26 (down positive).
+    found = worst_lines(DROP, "u = 0, a = 9.8, s = 2\nv^2 = u^2 + 2as = 39.2\nv = 6.26\n")
+    assert [found[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+
+
+def test_the_speeds_before_listed_towards_each_other_are_no_results() -> None:
+    # 5 m/s each before: not the speeds after (1 and 7), so no slip is made of them.
+    found = lines(MEET, "Speeds: A: 5 m/s, B: 5 m/s (moving towards each other)\n" + WORK)
+    assert found.get(1, ("not read",))[0] != "wrong"
+    assert [found[n][0] for n in (3, 4, 5)] == ["correct"] * 3
+
+
+def test_velocities_listed_with_their_signs_are_not_speeds() -> None:
+    # A: -1 m/s is A's velocity after (its speed 1): not a wrong speed.
+    found = lines(MEET, WORK + "Final velocities: A: -1 m/s, B: 7 m/s\n")
+    assert found.get(5, ("not read",))[0] != "wrong"
+    # unsigned, the speeds after: 1 and 7, right.
+    assert lines(MEET, WORK + "Final speeds: A: 1 m/s, B: 7 m/s\n")[5][0] == "correct"
+
+
+#: AQA M3 2009: A (m) at 5u catches B (7m) at u, both moving the same way (+n). 5mu + 7mu =
+#: m v_A + 7m v_B, v_B - v_A = 4eu: 8 v_B = 12u + 4eu, v_B = u(3 + e)/2, v_A = u(3 - 7e)/2.
+CATCH = "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u"
+CATCH_WORK = "CLM: $m(5u) + 7m(u) = mv_A + 7mv_B$\nNEL: $v_B - v_A = e(5u - u)$\nAdding: $8v_B = 12u + 4eu$\n"
+
+
+def test_b_caught_up_has_the_same_original_direction_as_a() -> None:
+    # B moved the way A did (+n), so u(3 + e)/2 in B's original direction is right.
+    found = lines(CATCH, CATCH_WORK + "$v_B = \\frac{u(3 + e)}{2}$ in B's original direction\n")
+    assert found[4][0] == "correct"
+    found = lines(CATCH, CATCH_WORK + "$v_B = -\\frac{u(3 + e)}{2}$ in B's original direction\n")
+    assert found[4][0] == "wrong"
+
+
+def test_its_original_direction_is_the_subjects() -> None:
+    # v_A = v_B - 4eu = u(3 - 7e)/2 is A's velocity in A's original direction (+n), though v_B is
+    # the last body named before the words.
+    work = CATCH_WORK + "$v_B = u(3 + e)/2$\n$v_A = v_B - 4eu = \\frac{u(3 - 7e)}{2}$ in its original direction\n"
+    assert worst_lines(CATCH, work)[5][0] == "correct"
