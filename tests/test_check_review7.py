@@ -69,3 +69,25 @@ def test_its_original_direction_is_the_subjects() -> None:
     # the last body named before the words.
     work = CATCH_WORK + "$v_B = u(3 + e)/2$\n$v_A = v_B - 4eu = \\frac{u(3 - 7e)}{2}$ in its original direction\n"
     assert worst_lines(CATCH, work)[5][0] == "correct"
+
+
+def test_a_right_arrow_before_and_is_the_way() -> None:
+    # left positive: a = 1 (A moves left at 1), b = -7 (B moves right at 7). "v_B = 7 m/s →" is
+    # B's 7 m/s to the right, -7 with left positive: right, as main read it.
+    work = (
+        "Taking left as positive.\nLet a, b = velocities of A and B after\n2(-5) + 1(5) = 2a + b\n"
+        "b - a = -0.8(5 - (-5))\na = 1, b = -7\nv_B = 7 m/s → and v_A = 1 m/s ←\n"
+    )
+    assert worst_lines(MEET, work)[6][0] == "correct"
+
+
+def test_speeds_before_in_a_head_on_catch_up_keep_their_signs() -> None:
+    # "head-on" is a direct impact; B moves A's way at u, so q = u is B's velocity: 5mu + 7mu and
+    # e(p - q) = 4eu are right.
+    work = (
+        "Head-on collision. Let p = speed of A before, q = speed of B before, so p = 5u and q = u\n"
+        "Let x = velocity of A after, y = velocity of B after\n"
+        "m p + 7m q = m x + 7m y\ny - x = e(p - q) = 4eu\n"
+    )
+    found = worst_lines(CATCH, work)
+    assert [found[n][0] for n in (1, 3, 4)] == ["correct"] * 3

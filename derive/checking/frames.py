@@ -19,6 +19,7 @@ from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
+from derive.checking.towardwords import original_way
 
 
 def n_components(ctx: Context) -> dict[sympy.Symbol, sympy.Expr]:
@@ -218,22 +219,7 @@ def _said(ctx: Context, r) -> int:
         letters = re.findall(r"(?<![A-Za-z])([ABPQ])(?![A-Za-z])", r.written[: m.start()])
         letter = letters[0] if letters else ""
     body = _BODY.get(letter.upper(), 0)
-    return body and _original(ctx, body)
-
-
-def _original(ctx: Context, body: int) -> int:
-    """The way along derive's n the body moved before the impact (``body`` 1 for A, -1 for B):
-    +1, -1, or 0 where it was at rest; the usual way (A toward B, B toward A) where the problem
-    does not say (its velocity before an unknown)."""
-    nm = ctx.model.nm
-    try:
-        x = sympy.sympify(ctx.in_unknowns(nm.A1n if body == 1 else nm.B1n))
-    except (TypeError, ValueError, AttributeError):
-        return body
-    x = x.xreplace({s: sympy.Dummy(positive=True) for s in x.free_symbols})
-    if x == 0:
-        return 0
-    return 1 if x.is_positive else -1 if x.is_negative else body
+    return body and original_way(ctx, body)
 
 
 def in_said_way(ctx: Context, lines: list, frame: int) -> list:
