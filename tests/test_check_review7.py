@@ -91,3 +91,21 @@ def test_speeds_before_in_a_head_on_catch_up_keep_their_signs() -> None:
     )
     found = worst_lines(CATCH, work)
     assert [found[n][0] for n in (1, 3, 4)] == ["correct"] * 3
+
+
+#: OCR M3 2006: A (5 kg) at 4 m/s across the line of centres, B (2 kg) at 4 m/s along it toward A,
+#: e = 0.75. Along n: -8 = 5a + 2b, b - a = 3: a = -2, b = 1. A after: (-2, 4), speed sqrt(20) = 4.472.
+ACROSS = "ocr-m3-2006-oblique-a-across-centres"
+
+
+def test_a_velocity_from_both_components_is_the_speed() -> None:
+    work = (
+        "Along the line of centres: 5(0) + 2(-4) = 5a + 2b, and b - a = 0.75(4)\n"
+        "so a = -2, b = 1\n"
+        "A's velocity after = sqrt(2^2 + 4^2) = 4.47 m/s (along the line of centres 2 m/s back, across 4 m/s)\n"
+        "Parallel to the line of centres A moves back at 2 m/s and keeps 4 m/s perpendicular to it, "
+        "so A's velocity after $= \\sqrt{20} = 4.47$ m/s.\n"
+    )
+    found = worst_lines(ACROSS, work)
+    assert found[3][0] == "correct"
+    assert found[4][0] == "correct"
