@@ -109,3 +109,16 @@ def test_a_velocity_from_both_components_is_the_speed() -> None:
     found = worst_lines(ACROSS, work)
     assert found[3][0] == "correct"
     assert found[4][0] == "correct"
+
+
+#: OCR M2 2012: 0.8 kg at 4 m/s into a wall, e = 0.3: rebounds at 1.2 m/s. derive's n points
+#: toward the wall, so the velocity after is -1.2 with the wall's way positive, +1.2 away from it.
+WALL = "ocr-m2-2012-particle-hits-wall"
+
+
+def test_a_convention_in_a_name_against_the_working_frame_measures_the_line() -> None:
+    work = "Away from the wall is positive.\nspeed after = 0.3 x 4 = 1.2 m/s\n"
+    right = work + "velocity after (towards the wall as positive) = -1.2 m/s\n"
+    assert worst_lines(WALL, right)[3][0] == "correct"
+    wrong = work + "velocity after (towards the wall as positive) = 1.2 m/s\n"
+    assert worst_lines(WALL, wrong)[3][0] == "wrong"
