@@ -122,3 +122,19 @@ def test_a_convention_in_a_name_against_the_working_frame_measures_the_line() ->
     assert worst_lines(WALL, right)[3][0] == "correct"
     wrong = work + "velocity after (towards the wall as positive) = 1.2 m/s\n"
     assert worst_lines(WALL, wrong)[3][0] == "wrong"
+
+
+def test_the_one_bodys_v_after_words_of_before_earlier_on_the_line_is_after() -> None:
+    # away from the wall positive: before -4, after 0.3 x 4 = 1.2. The v after "u = -4 m/s before
+    # the impact," (or a sentence about before) is the rebound's, right.
+    work = (
+        "Away from the wall positive.\nu = -4 m/s before the impact, v = 0.3(4) = 1.2 m/s\n"
+        "Speed 4 m/s before hitting the wall, so v = 0.3 x 4 = 1.2 m/s\n"
+        "Before: 4 m/s towards the wall. v = 1.2 m/s\n"
+    )
+    found = worst_lines(WALL, work)
+    assert [found[n][0] for n in (2, 3, 4)] == ["correct"] * 3
+    # right after "before:" it is the velocity before: -4 with away positive
+    assert worst_lines(WALL, "taking away from the wall as +ve (so before: v = -4, after: v = +0.3*4)\n")[1][0] == (
+        "correct"
+    )

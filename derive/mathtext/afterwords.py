@@ -53,4 +53,7 @@ def before_on_line(r: Any, lead: str) -> Any:
     said = _BEFORE_WORDS.search(words)
     if (m is None and alone is None) or said is None or _AFTER_WORDS.search(words[said.end() :]):
         return r
+    head = re.sub(r"\bv\s*$", "", words.rstrip())  # the words before the v itself
+    if m is None and not re.search(r"\b(?:before|initially|initial)\s*[:=(\-–]*\s*$", head, re.I):
+        return r  # the one body's v only right after "before:" (not "u = -4 before the impact, v = 0.3(4)")
     return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}" if m else "v_i", *r.sides[1:]))
