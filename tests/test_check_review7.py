@@ -138,3 +138,9 @@ def test_the_one_bodys_v_after_words_of_before_earlier_on_the_line_is_after() ->
     assert worst_lines(WALL, "taking away from the wall as +ve (so before: v = -4, after: v = +0.3*4)\n")[1][0] == (
         "correct"
     )
+
+
+def test_the_one_bodys_v_after_before_the_impact_words_is_before() -> None:
+    # away positive: "Before the impact, v = -4 m/s" is the velocity before, right.
+    work = "Away from the wall positive.\nBefore the impact, v = -4 m/s\n"
+    assert worst_lines(WALL, work)[2][0] == "correct"
