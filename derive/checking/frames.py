@@ -16,9 +16,11 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.conventions import sign_of
 from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
+from derive.checking.towardwords import original_way
 
 
 def n_components(ctx: Context) -> dict[sympy.Symbol, sympy.Expr]:
@@ -204,19 +206,29 @@ _ORIGINAL = re.compile(
     re.I,
 )
 _BODY = {"A": 1, "P": 1, "B": -1, "Q": -1}
+#: A sign convention in brackets in a quantity's name (``velocity after (towards the wall as
+#: positive) = -1.2``): the line's values are measured with that way positive.
+_NAMED_CONVENTION = re.compile(r"\(\s*([^()=]*(?:\+\s?ve\b|\bpositive\b)[^()=]*)\)", re.I)
 
 
-def _said(r) -> int:
-    """+1 where the line says derive's n is positive (A's original direction), -1 the reversed
-    way (B's), 0 where it says none (or "its" with no body named before it)."""
+def _said(ctx: Context, r) -> int:
+    """+1 where the line says derive's n is positive (A's original direction, or B's where B moved
+    the same way, catching up or caught), -1 the reversed way (B's, toward A), 0 where it says
+    none (or "its" with no body named before it, or the body was at rest)."""
+    if r.exprs is None:
+        return 0
+    named = _NAMED_CONVENTION.search(r.written.split("=")[0])
+    if named is not None and sign_of(named[1]):  # "velocity after (towards the wall as positive) = -1.2"
+        return sign_of(named[1])
     m = _ORIGINAL.search(r.written)
-    if m is None or r.exprs is None:
+    if m is None:
         return 0
     letter = m.group(1) or m.group(2) or m.group(3)
-    if letter.lower() == "its":  # the body named last before the words: "v_A = -2eu in its …"
+    if letter.lower() == "its":  # the body the relation is of: "v_A = v_B - 4eu = … in its …" (A's)
         letters = re.findall(r"(?<![A-Za-z])([ABPQ])(?![A-Za-z])", r.written[: m.start()])
-        letter = letters[-1] if letters else ""
-    return _BODY.get(letter.upper(), 0)
+        letter = letters[0] if letters else ""
+    body = _BODY.get(letter.upper(), 0)
+    return body and original_way(ctx, body)
 
 
 def in_said_way(ctx: Context, lines: list, frame: int) -> list:
@@ -226,7 +238,7 @@ def in_said_way(ctx: Context, lines: list, frame: int) -> list:
     flip = n_components(ctx)
     out = []
     for r in lines:
-        said = _said(r)
+        said = _said(ctx, r)
         if said and said != frame and r.exprs is not None:
             r = replace(r, exprs=tuple(sympy.sympify(e).xreplace(flip) for e in r.exprs))
         out.append(r)

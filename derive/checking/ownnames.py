@@ -162,8 +162,10 @@ _DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
 #: An arrow after a value that points each way (``0.025 m/s $\leftarrow$``, ``0.6 ft/s ←``).
 _ARROW = {
     "left": r"←|⟵|<-{1,2}(?!>)|\\(?:long)?leftarrow\b",
-    # a right arrow with more working after it (``0.6 ft/s -> +ve so …``) is "so", not a way
-    "right": r"(?:→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b)(?!\s*[-+−]?\s*[\w(])",
+    # a right arrow with more working after it (``0.6 ft/s -> +ve so …``, ``-> v = …``) is "so", not
+    # a way; one before words (``7 m/s → and …``, ``→ (to the right)``) is still the way
+    "right": r"(?:→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b)"
+    r"(?!\s*(?:[-+−]\s*[\w(]|\d|[A-Za-z_]\w*\s*=|(?:so|hence|thus|therefore|positive|negative|[+-]?ve)\b))",
     "up": r"↑|\\uparrow\b",
     "down": r"↓|\\downarrow\b",
 }

@@ -12,7 +12,10 @@ The letters are read so in the relations the derivation opens with, up to the fi
 anything else than suvat's letters, numbers and the givens (a later ``I = mv - mu`` is an
 impulse, in the same letters meaning other velocities), and only where a ``v`` of the student's
 own is among them. The sign (down positive, or up) is the one that makes more of those relations
-hold; down where neither does.
+hold; down where neither does. A ``u`` the opening works out with no ``v`` beside it, false as the
+start speed either way (``u^2 = 2(9.8)(2) = 39.2``, ``u = 6.26``: the student's name for the
+landing speed), says the letters are the student's own: then none is read so (the ``v`` after it
+is then the rebound's, ``v^2 = 2(9.8)(1.4)``).
 """
 
 from __future__ import annotations
@@ -59,6 +62,8 @@ def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> t
         return [(r, sides, [x.xreplace(subs) for x in exprs]) for r, sides, exprs in opening]
 
     down, up = put(1), put(-1)
+    if _u_own(opening, down, up, holds, {p for p in letters if p.name.lstrip(PREFIX) == "u"}):
+        return read, []
     score = [sum(bool(holds(sides, exprs)) for _r, sides, exprs in w) for w in (down, up)]
     sign = -1 if score[1] > score[0] else 1
     later = set().union(*(x.free_symbols for _r, _s, ex in read[n:] for x in ex))
@@ -66,3 +71,13 @@ def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> t
     used = sorted({p.name.lstrip(PREFIX) for _r, _s, ex in opening for x in ex for p in x.free_symbols} & set(meaning))
     note = "Read " + ", ".join(f"{k} as {sign * meaning[k]}" for k in used if meaning.get(k) is not None) + "."
     return (up if sign < 0 else down) + read[n:], [note]
+
+
+def _u_own(opening: list, down: list, up: list, holds: Callable, u: set) -> bool:
+    """Whether a relation of ``opening`` in suvat's ``u`` (``u``: its symbols) and no ``v`` holds
+    neither way round."""
+    for k, (_r, sides, exprs) in enumerate(opening):
+        free = set().union(*(x.free_symbols for x in exprs))
+        if free & u and LETTERS["v"] not in free and not holds(sides, down[k][2]) and not holds(sides, up[k][2]):
+            return True
+    return False

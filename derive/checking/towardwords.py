@@ -1,19 +1,43 @@
 """Speeds before named in words for bodies that move towards each other (``let p = speed of P
 before, q = speed of Q before (towards each other)``): B's speed is minus its velocity along
-derive's n (from A toward B), A's is its velocity, as the words make them.
+derive's n (from A toward B), A's is its velocity, as the words make them. Only where B does move
+toward A in the problem: "head-on" says a direct impact, also of a body catching up with another.
 """
 
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
+
+import sympy
+
+if TYPE_CHECKING:
+    from derive.checking.context import Context
 
 #: Words that say the bodies approach head-on.
 _TOWARD = re.compile(r"\b(?:towards?|approaching)\s+each\s+other\b|\bhead[\s-]on\b", re.I)
 
 
-def toward(plain: str, when: str, body: str) -> int:
+def toward(plain: str, when: str, body: str, ctx: Context | None = None) -> int:
     """-1 where ``plain`` names B's speed before (``body`` "B", ``when`` "before") and says the
-    bodies move towards each other; else 1."""
+    bodies move towards each other, as B does in the problem (``ctx``'s, where given); else 1."""
     if body != "B" or when.lower() != "before" or not re.search(r"\bspeeds?\b", plain, re.I):
         return 1
+    if ctx is not None and original_way(ctx, -1) >= 0:  # B at rest, or moving A's way (caught up): not towards A
+        return 1
     return -1 if _TOWARD.search(plain) else 1
+
+
+def original_way(ctx: Context, body: int) -> int:
+    """The way along derive's n the body moved before the impact (``body`` 1 for A, -1 for B):
+    +1, -1, or 0 where it was at rest; the usual way (A toward B, B toward A) where the problem
+    does not say (its velocity before an unknown)."""
+    nm = ctx.model.nm
+    try:
+        x = sympy.sympify(ctx.in_unknowns(nm.A1n if body == 1 else nm.B1n))
+    except (TypeError, ValueError, AttributeError):
+        return body
+    x = x.xreplace({s: sympy.Dummy(positive=True) for s in x.free_symbols})
+    if x == 0:
+        return 0
+    return 1 if x.is_positive else -1 if x.is_negative else body

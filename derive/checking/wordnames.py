@@ -247,7 +247,9 @@ def _direct(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             b = _body(body, ctx)
             key = f"v_{b}{'2' if when.lower() == 'after' else '1'}"
             if b and key in names:
-                out.setdefault(name.replace("{", "").replace("}", ""), sign * toward(plain, when, b) * names[key][0])
+                out.setdefault(
+                    name.replace("{", "").replace("}", ""), sign * toward(plain, when, b, ctx) * names[key][0]
+                )
     return out
 
 

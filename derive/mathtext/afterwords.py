@@ -38,6 +38,10 @@ def after_on_line(r: Any, main: str, part: str) -> Any:
 
 #: Words that say what follows is before the impact (``before: vA = 4j``, ``Initially v_A = 3``).
 _BEFORE_WORDS = re.compile(r"\b(?:before|initially|initial)\b(?![^,;]*\b(?:after(?:wards)?|final(?:ly)?)\b)", re.I)
+#: Words of before that end the lead-in to the one body's ``v`` (``before:``, ``Before the impact,``).
+_BEFORE_END = re.compile(
+    r"\b(?:before|initially|initial)(?:\s+(?:the\s+)?(?:impact|collision|bounce|rebound))?\s*[:,=(\-–]*\s*$", re.I
+)
 #: A body's velocity with no time mark (``v_A``, ``vB``, ``V_A``; a component: ``v_An``, ``v_Bx``):
 #: after by the habits, unless words say before.
 _TIMELESS = re.compile(r"\s*([vV])_?([A-Z])([ntxy]?)\s*")
@@ -52,5 +56,10 @@ def before_on_line(r: Any, lead: str) -> Any:
     words = f"{r.label or ''} {lead}"
     said = _BEFORE_WORDS.search(words)
     if (m is None and alone is None) or said is None or _AFTER_WORDS.search(words[said.end() :]):
+        return r
+    head = re.sub(r"\bv\s*$", "", words.rstrip())  # the words before the v itself
+    if m is None and ("=" in head or not _BEFORE_END.search(head)):
+        # the one body's v only right after "before:" / "Before the impact," with no relation before
+        # it on the line (not "u = -4 m/s before the impact, v = 0.3(4)": that v is the rebound's)
         return r
     return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}" if m else "v_i", *r.sides[1:]))
