@@ -1,0 +1,39 @@
+"""Hostile and odd derivations (attack 7): each is judged in a few seconds, with no internal error."""
+
+from __future__ import annotations
+
+import time
+
+import derive
+from derive.mathtext.notes import without_note
+
+SPHERES = "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u"
+
+
+def _check(problem: str, text: str) -> object:
+    return derive.check(derive.load(problem), derivation=text)
+
+
+def test_a_long_run_of_digits_is_read_at_once() -> None:
+    # the unrounded value's pattern split a run of digits between the value and four unit words:
+    # 60 digits took half a second, 3000 digits over five minutes
+    start = time.process_time()
+    assert without_note("x = " + "1" * 3000 + " y")[0].endswith("y")
+    report = _check(SPHERES, "x = " + "1" * 20000 + " y")
+    assert time.process_time() - start < 5
+    assert report.items
+
+
+def test_the_unrounded_value_after_a_unit_is_still_a_note() -> None:
+    assert without_note("V = 1.49 m/s   (1.4925)") == ("V = 1.49 m/s", "")
+    assert without_note("p = 3.0 kg m s^-1 (3.01)") == ("p = 3.0 kg m s^-1", "")
+    assert without_note("x = 2u (1.5)")[0] == "x = 2u (1.5)"
+
+
+def test_a_number_of_more_digits_than_a_student_writes_is_not_read() -> None:
+    # the reader's other patterns (directions, degrees, units) took minutes over a run of 20000 digits
+    start = time.process_time()
+    report = _check(SPHERES, "Let x = speed of A after\nx = 0." + "3" * 100 + "u\n12u = x + 7y")
+    assert time.process_time() - start < 5
+    line = next(i for i in report.items if i.name == "2")
+    assert line.status == "not read" and "100 digits" in line.message
