@@ -37,3 +37,23 @@ def test_a_number_of_more_digits_than_a_student_writes_is_not_read() -> None:
     assert time.process_time() - start < 5
     line = next(i for i in report.items if i.name == "2")
     assert line.status == "not read" and "100 digits" in line.message
+
+
+def test_a_value_in_500_brackets_is_judged() -> None:
+    # each bracket was a call of the vector reader's: a RecursionError
+    report = _check(SPHERES, "Let x = speed of A after\nx = " + "(" * 500 + "u" + ")" * 500)
+    assert report.items
+
+
+def test_a_relation_of_2000_sides_is_judged() -> None:
+    # "x = x = … = x": each side dropped in turn was a call: a RecursionError
+    report = _check(SPHERES, "x" + " = x" * 2000)
+    assert report.items
+
+
+def test_a_table_of_20000_rows_is_read_in_seconds() -> None:
+    # each row looked back to its header through all the rows before it: over two minutes
+    start = time.process_time()
+    report = _check("notes-4c11-two-spheres", "| a | b |\n" * 20000 + "v_A2n = -1.11")
+    assert time.process_time() - start < 10
+    assert report.items[-1].status == "correct"
