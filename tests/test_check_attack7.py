@@ -57,3 +57,17 @@ def test_a_table_of_20000_rows_is_read_in_seconds() -> None:
     report = _check("notes-4c11-two-spheres", "| a | b |\n" * 20000 + "v_A2n = -1.11")
     assert time.process_time() - start < 10
     assert report.items[-1].status == "correct"
+
+
+def test_a_number_put_for_a_given_with_thousands_of_digits_is_not_put() -> None:
+    # sympy.Rational of 4400 digits raised (Python's limit on an integer's digits)
+    text = "putting m = " + "9" * 4400 + "\nLet x = speed of A after, y = speed of B after.\n12u = x + 7y"
+    report = _check(SPHERES, text)
+    assert [i.status for i in report.items] == ["not read", "correct"]  # the 4400 digits: not read
+
+
+def test_a_speed_of_ten_to_the_22_in_a_numeric_problem_is_judged() -> None:
+    # sympy's numeric roots did not converge: NoConvergence from the world's equations
+    text = "putting m = 0, putting u = 99999999999999999999999\nv1 = -34.9 m/s\nv2 = 0.150 m/s"
+    report = _check("openstax-cp-8-30-puck-bounces-off-goalie", text)
+    assert report.items
