@@ -49,6 +49,7 @@ class Context:
         self.numeric = dict(solution.values) if self.chain else self.problem.numeric()
         self._model: mistakes.Model | None = None
         self.data = _data(self.problem)
+        self._derived: dict[str, tuple[sympy.Symbol, sympy.Expr]] | None = None
         self.memo: dict[tuple, object] = {}  # what the judges work out once per check (rounded values)
         self.fixed: dict[sympy.Symbol, sympy.Rational] = {}  # givens a derivation puts a number for ("m = 1")
 
@@ -194,7 +195,13 @@ class Context:
         return names
 
     def derived(self) -> dict[str, tuple[sympy.Symbol, sympy.Expr]]:
-        """Result names that stand for expressions in the components (speeds, angles, energies)."""
+        """Result names that stand for expressions in the components (speeds, angles, energies);
+        built once (the reader asks for them at each line: 20000 lines took half a minute)."""
+        if self._derived is None:
+            self._derived = self._derive()
+        return dict(self._derived)
+
+    def _derive(self) -> dict[str, tuple[sympy.Symbol, sympy.Expr]]:
         model, p = self.model, self.problem
         nm = model.nm
         out: dict[str, tuple[sympy.Symbol, sympy.Expr]] = {}

@@ -436,13 +436,12 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
     if r.exprs is None:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
-    left = set().union(*(_placeholders(e) for e in exprs))
-    if left and len(exprs) >= 3 and not r.defines:
-        if not set().union(*(_placeholders(e) for e in exprs[1:])):
-            r = replace(r, sides=r.sides[1:], exprs=r.exprs[1:])  # "tan φ = e tan θ = 3e": the rest
-            exprs, left = exprs[1:], set()
-        elif left == _placeholders(exprs[0]) and exprs[0].is_Symbol:  # "p = 0.150 x 35.0 = 5.25": unplaced
-            return _resolved(replace(r, sides=r.sides[1:], exprs=r.exprs[1:]), mapping)
+    marks, k = [_placeholders(e) for e in exprs], 0
+    while (left := set().union(*marks[k:])) and len(exprs) - k >= 3 and not r.defines:  # a loop: x = x = … = x
+        if set().union(*marks[k + 1 :]) and (left != marks[k] or not exprs[k].is_Symbol):
+            break
+        k += 1  # "tan φ = e tan θ = 3e": the rest; "p = 0.150 x 35.0 = 5.25": its first side unplaced
+    r, exprs = (replace(r, sides=r.sides[k:], exprs=r.exprs[k:]), exprs[k:]) if k else (r, exprs)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")

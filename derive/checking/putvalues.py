@@ -16,8 +16,8 @@ if TYPE_CHECKING:
 
 #: A given put equal to a positive number in words (``put u = 1``, ``putting $m = 1$``, ``set m = 1``).
 _PUT = re.compile(r"\b(?:put|putting|set|setting|sub(?:stitut(?:e|ing))?)\s+(?=\$?\s*[A-Za-z]\s*\$?\s*=)", re.I)
-#: One given and its number (``m = 1``, ``$u = 1$``), and the next after "and" or a comma.
-_VALUE = re.compile(r"\$?\s*([A-Za-z])\s*\$?\s*=\s*\$?\s*(\d+(?:\.\d+)?)(?!\w|\.\d)\$?")
+#: One given and its number (``m = 1``, ``$u = 1$``; no more digits than a calculator's), and the next after "and" or a comma.
+_VALUE = re.compile(r"\$?\s*([A-Za-z])\s*\$?\s*=\s*\$?\s*(\d{1,15}(?:\.\d{1,15})?)(?!\w|\.\d)\$?")
 _AND = re.compile(r"\s*(?:,|and|&)\s*", re.I)
 
 

@@ -124,10 +124,10 @@ _PART_END = re.compile(
     r"(?:(?:ans(?:wer)?\.?|part)\s*)?[(\[]\s*[a-h]\s*[)\]](?:\s*[(\[]\s*[ivx]{1,4}\s*[)\]])?\s*\.?\s*$",
     re.I,
 )
-#: A number in brackets after a value (its unrounded value, or the value to more figures).
+#: A number in brackets after a value (its unrounded value, or more figures); a unit's words part at spaces only.
 _UNROUNDED = re.compile(
-    r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²1]+){0,4})(?P<gap>\s+)"
-    r"\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)\s*(?:[A-Za-z/^\-\s·*⁻¹°%]*)\)\s*$"
+    r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²](?:[A-Za-z/^\-·*°%⁻¹²1]|\s(?=[A-Za-z/^\-·*°%⁻¹²]))*)?)"
+    r"(?P<gap>\s+)\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)[A-Za-z/^\-\s·*⁻¹°%]*\)\s*$"
 )
 #: A remark in square brackets after a relation, with a word in it (``[w left, 2.9 right]``).
 _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")

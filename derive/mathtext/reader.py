@@ -194,10 +194,16 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
     return tuple(out)
 
 
+#: A run of more digits than any number a student writes: the reader's patterns would take minutes
+#: to try it (a run of 20000 digits took two), so it is shown shortened and the line is not read.
+_LONG_NUMBER = re.compile(r"\d{40,}")
+
+
 def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     """(line, column, as written, plain text) of each line, and of each row of a display
     (a display that spans lines is one row until ``\\\\``, at the line where the row starts)."""
     text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = _LONG_NUMBER.sub(lambda m: f"{m.group(0)[:12]}…(a number of {len(m.group(0))} digits)", text)
     text = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
     lines = text.split("\n")
     n, close, rows = 0, None, []

@@ -33,6 +33,8 @@ def _cells(text: str, last: bool = False) -> str:
     return re.sub(r"\|\s*$", " ; ", text) if last else text
 
 
+#: The rows of a table looked up for its header (each row looks: a longer walk, for every row, is quadratic).
+MAX_ROWS = 100
 #: A table's separator row (``|---|:--:|``).
 _SEPARATOR = re.compile(r"^\s*\|(?:\s*:?-{2,}:?\s*\|)+\s*$")
 #: A header cell that is a component (``n``, ``t before``, ``x after``).
@@ -72,7 +74,7 @@ def _header(lines: list[str], n: int) -> list[str] | None:
     """The cells of the header of the table line ``n`` is a body row of (None where it is not
     one, or the header has mathematics in it)."""
     k = n - 1
-    while k >= 0 and _ROW.match(lines[k]) and not _SEPARATOR.match(lines[k]):
+    while k >= max(n - MAX_ROWS, 0) and _ROW.match(lines[k]) and not _SEPARATOR.match(lines[k]):
         k -= 1
     if k < 1 or k == n or not _SEPARATOR.match(lines[k]) or not _ROW.match(lines[k - 1]) or "$" in lines[k - 1]:
         return None

@@ -77,8 +77,11 @@ def component_name(m: re.Match, axis: str) -> str:
     return base + primes
 
 
-def _vector(side: str) -> dict[str, str] | None:
-    """A side's components by axis, where it is a vector (a pair or a sum of unit vectors)."""
+def _vector(side: str, depth: int = 0) -> dict[str, str] | None:
+    """A side's components by axis, where it is a vector (a pair or a sum of unit vectors); a
+    vector in more than 20 brackets, one in another, is none (each bracket is a call)."""
+    if depth > 20:
+        return None
     side = re.sub(r"^(?:[A-Za-z]+\s+)+(?=\()", "", side.strip())  # "A has components (2, 3)": the pair
     side = side.replace("−", "-").replace("–", "-")  # a minus typed as Unicode's
     pair = _pair(side)
@@ -90,7 +93,7 @@ def _vector(side: str) -> dict[str, str] | None:
     out: dict[str, list[str]] = {}
     for sign, term in terms:
         m = _TERM.match(term.strip())
-        scaled = _scaled(term.strip()) if m is None else None
+        scaled = _scaled(term.strip(), depth) if m is None else None
         if scaled is not None:  # "15(cos a i + sin a j)": the number times each component
             for axis, c in scaled.items():
                 out.setdefault(axis, []).append(sign + c)
@@ -105,7 +108,7 @@ def _vector(side: str) -> dict[str, str] | None:
     return {axis: _joined(bits) for axis, bits in out.items()}
 
 
-def _scaled(term: str) -> dict[str, str] | None:
+def _scaled(term: str, nested: int = 0) -> dict[str, str] | None:
     """``15(cos a i + sin a j)``, ``(u/sqrt(10))(i - 3j)``: a coefficient times a bracketed vector,
     by axis (each component times the coefficient); None where the term is not that."""
     if not term.endswith(")"):
@@ -119,7 +122,7 @@ def _scaled(term: str) -> dict[str, str] | None:
     if depth or (coef and not _coefficient(coef + " ")) or re.search(r"[A-Za-z]{2,}\d*$", coef):
         return None  # "sqrt(…)", "cos(…)": a function of the bracket, not a product
     pair = _pair(f"({inner.strip()})")
-    part = dict(zip(AXES, pair, strict=True)) if pair is not None else _vector(inner)
+    part = dict(zip(AXES, pair, strict=True)) if pair is not None else _vector(inner, nested + 1)
     if part is None:
         return None
     return {axis: f"({coef})*({c})" if coef else f"({c})" for axis, c in part.items()}
