@@ -9,9 +9,8 @@ momentum 0.2(5) = 1 = 0.2 v_white + 0.3 v_black; restitution v_black - v_white =
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
+from support.checked import solved_text, statuses_of
 
 import derive
 from derive.checking.statementbodies import told_apart
@@ -34,14 +33,7 @@ v_B1 = 0
 
 @pytest.fixture(scope="module")
 def solution(tmp_path_factory: pytest.TempPathFactory) -> derive.Solution:
-    path = Path(tmp_path_factory.mktemp("bodywords")) / "white-black.toml"
-    path.write_text(PROBLEM, encoding="utf-8")
-    return derive.solve(derive.load(path))
-
-
-def _statuses(solution: derive.Solution, work: str) -> dict[int, str]:
-    report = derive.check(solution, derivation=work)
-    return {int(i.name): i.status for i in report.items if i.kind == "line" and i.name.isdigit()}
+    return solved_text(tmp_path_factory.mktemp("bodywords"), "white-black.toml", PROBLEM)
 
 
 def test_the_words_that_tell_the_bodies_apart() -> None:
@@ -56,10 +48,10 @@ def test_the_words_that_tell_the_bodies_apart() -> None:
 
 def test_names_by_the_bodies_words_are_read(solution: derive.Solution) -> None:
     work = "0.2 u_white = 0.2 v_white + 0.3 v_black\nv_black - v_white = 0.5(5)\nv_white = 0.5\nv_black = 3.0\n"
-    assert _statuses(solution, work) == dict.fromkeys((1, 2, 3, 4), "correct")
+    assert statuses_of(solution, work) == dict.fromkeys((1, 2, 3, 4), "correct")
 
 
 def test_a_wrong_value_by_a_bodys_word_is_wrong(solution: derive.Solution) -> None:
-    statuses = _statuses(solution, "v_black - v_white = 0.5(5)\nv_black = 2.5\n")
+    statuses = statuses_of(solution, "v_black - v_white = 0.5(5)\nv_black = 2.5\n")
     assert statuses[1] == "correct"
     assert statuses[2] == "wrong"

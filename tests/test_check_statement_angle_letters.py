@@ -10,9 +10,8 @@ tan β = (u/2) / ((1/3) u cos 30°) = 3/(2 cos 30°) = sqrt(3), β = 60°.
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
+from support.checked import solved_text, statuses_of
 
 import derive
 
@@ -45,23 +44,16 @@ toward = "+t"
 
 @pytest.fixture(scope="module")
 def solution(tmp_path_factory: pytest.TempPathFactory) -> derive.Solution:
-    path = Path(tmp_path_factory.mktemp("letters")) / "q-strikes-p.toml"
-    path.write_text(PROBLEM, encoding="utf-8")
-    return derive.solve(derive.load(path))
-
-
-def _statuses(solution: derive.Solution, work: str) -> dict[int, str]:
-    report = derive.check(solution, derivation=work)
-    return {int(i.name): i.status for i in report.items if i.kind == "line" and i.name.isdigit()}
+    return solved_text(tmp_path_factory.mktemp("letters"), "q-strikes-p.toml", PROBLEM)
 
 
 def test_the_statements_greek_letter_is_the_angle_asked(solution: derive.Solution) -> None:
-    assert _statuses(solution, "tan(beta) = sqrt(3)\n") == {1: "correct"}
-    assert _statuses(solution, "(1/3) tan(β) = 1/sqrt(3)\n") == {1: "correct"}
-    assert _statuses(solution, "tan(beta) = 1/sqrt(3)\n") == {1: "wrong"}
+    assert statuses_of(solution, "tan(beta) = sqrt(3)\n") == {1: "correct"}
+    assert statuses_of(solution, "(1/3) tan(β) = 1/sqrt(3)\n") == {1: "correct"}
+    assert statuses_of(solution, "tan(beta) = 1/sqrt(3)\n") == {1: "wrong"}
 
 
 def test_a_body_by_the_statements_letter_in_an_oblique_impact(solution: derive.Solution) -> None:
     said = "Let $v$ be the velocity of $P$ after the impact, along the line of centres.\n"
-    assert _statuses(solution, said + "v = 2u cos(30°)/3\n") == {2: "correct"}
-    assert _statuses(solution, said + "v = u cos(30°)/3\n")[2] == "wrong"
+    assert statuses_of(solution, said + "v = 2u cos(30°)/3\n") == {2: "correct"}
+    assert statuses_of(solution, said + "v = u cos(30°)/3\n")[2] == "wrong"

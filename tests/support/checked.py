@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+from pathlib import Path
 
 import derive
 
@@ -35,3 +36,16 @@ def worst_lines(problem: str, work: str) -> dict[int, tuple[str, str]]:
             if n not in out or rank.index(i.status) > rank.index(out[n][0]):
                 out[n] = (i.status, i.slip)
     return out
+
+
+def solved_text(folder: Path, name: str, toml: str) -> derive.Solution:
+    """A problem file written from ``toml`` into ``folder`` (a test's own problem), solved."""
+    path = folder / name
+    path.write_text(toml, encoding="utf-8")
+    return derive.solve(derive.load(path))
+
+
+def statuses_of(solution: derive.Solution, work: str) -> dict[int, str]:
+    """line number -> status, on a solution already made (a test's own problem)."""
+    report = derive.check(solution, derivation=work)
+    return {int(i.name): i.status for i in report.items if i.kind == "line" and i.name.isdigit()}
