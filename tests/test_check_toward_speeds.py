@@ -35,3 +35,14 @@ def test_speeds_before_towards_each_other_are_read_as_sizes() -> None:
     work = "2p - q = 2(-1) + 1(7)\np = 5\nq = 5\n"
     assert statuses(SPHERES, said + work) == ["correct"] * 3
     assert statuses(SPHERES, said + work.replace("q = 5", "q = -5"))[-1] == "wrong"
+
+
+def test_speeds_before_that_are_asked_are_sizes_towards_each_other() -> None:
+    """Edexcel M2 January 2017 Q5: P (2m) and Q (3m) move towards each other and both reverse, P at
+    v and Q at 3v/2 after, e = 1/5; the speeds before are asked. By hand: 2m a - 3m b = 2m(-v) +
+    3m(3v/2) = 5mv/2 and 3v/2 + v = (a + b)/5, so a + b = 25v/2, b = 9v/2, a = 8v."""
+    said = "Let a and b be the speeds of P and Q before (towards each other).\n"
+    work = "2a - 3b = -2v + 9v/2\n3v/2 + v = (a + b)/5\nb = 9v/2\na = 8v\n"
+    problem = "edexcel-m2-2017-january-q5-both-reverse-find-speeds-before"
+    assert statuses(problem, said + work) == ["correct"] * 4
+    assert statuses(problem, said + work.replace("b = 9v/2", "b = -9v/2"))[2] == "wrong"

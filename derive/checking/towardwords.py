@@ -33,9 +33,12 @@ def original_way(ctx: Context, body: int) -> int:
     +1, -1, or 0 where it was at rest; the usual way (A toward B, B toward A) where the problem
     does not say (its velocity before an unknown)."""
     nm = ctx.model.nm
+    name = nm.A1n if body == 1 else nm.B1n
     try:
-        x = sympy.sympify(ctx.in_unknowns(nm.A1n if body == 1 else nm.B1n))
+        x = sympy.sympify(ctx.in_unknowns(name))
     except (TypeError, ValueError, AttributeError):
+        return body
+    if x == sympy.sympify(name):  # the velocity before is itself what is asked: the usual way
         return body
     x = x.xreplace({s: sympy.Dummy(positive=True) for s in x.free_symbols})
     if x == 0:
