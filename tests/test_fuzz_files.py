@@ -6,7 +6,7 @@ For every file: no internal error (no traceback, no "internal error"), no run ov
 budget, valid strict JSON wherever JSON is written, no raw control character on standard
 output or error, and an error is one line. The same seed gives the same files.
 
-    .venv/bin/python -m pytest -m slow tests/test_fuzz_files.py          # the CI run: 10,000 files, seed 18
+    .venv/bin/python -m pytest -m slow tests/test_fuzz_files.py          # the full run: 10,000 files, seed 18 (.ci/run: 6,000)
     DERIVE_FUZZ_FILES=200000 DERIVE_FUZZ_SEED=random \\
         .venv/bin/python -m pytest -m slow tests/test_fuzz_files.py      # a longer random campaign
 
