@@ -91,6 +91,38 @@ def _given(problem: str) -> dict[str, float]:
     return {k: n for k, v in table.items() if (n := _number(v)) is not None}
 
 
+def batch_shape(cases: list[Case], worked: set[str]) -> None:
+    """A batch of 15 as the writers' brief asks: every case worked (``worked``: the prefixes), 5
+    correct, 6 one slip, 2 two slips, 2 chains, 5 of each format, 15 problems, slip values exactly
+    where the teacher finds a slip."""
+    assert len(cases) == 15
+    assert {c.name[:4] for c in cases} == worked
+    by_category = sorted(c.verdict.category for c in cases)
+    assert by_category.count("correct") == 5 and by_category.count("one_slip") == 6
+    assert by_category.count("two_slips") == 2 and by_category.count("chain") == 2
+    assert sorted(c.verdict.format for c in cases) == ["md"] * 5 + ["tex"] * 5 + ["txt"] * 5
+    assert len({c.verdict.problem for c in cases}) == 15
+    for case in cases:
+        assert bool(case.verdict.slip_values) == (case.verdict.summary != "0 wrong"), case.name
+
+
+def numbers_agree(case: Case, true: dict, slipped: dict | None) -> None:
+    """The case's values and slip values against those worked here (a value in words exactly,
+    a number to 2e-4)."""
+
+    def agree(value: object, worked: object, what: str) -> None:
+        if isinstance(value, str):
+            assert value == worked, what
+        else:
+            assert value == pytest.approx(worked, rel=2e-4, abs=2e-4), what
+
+    for name, value in case.verdict.values.items():
+        agree(value, true[name], f"{case.name}: {name}")
+    assert bool(case.verdict.slip_values) == (slipped is not None), case.name
+    for name, value in (case.verdict.slip_values or {}).items():
+        agree(value, slipped[name], f"{case.name}: slip {name}")
+
+
 def _direct(m_a: float, m_b: float, e: float, u_a: float, u_b: float) -> tuple[float, float]:
     """Velocities after a direct impact: momentum and v_B - v_A = e (u_A - u_B)."""
     approach = u_a - u_b

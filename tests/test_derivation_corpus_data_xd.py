@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _bounce, _given, _solve, closed_form
+from test_derivation_corpus_data import CASES, _bounce, _given, _solve, batch_shape, closed_form, numbers_agree
 
 XD_CASES = [c for c in CASES if c.name.startswith("xd")]
 # (u, e, alpha in radians) for the letters
@@ -182,29 +182,14 @@ SYMBOLIC_XD: dict[str, Callable[[dict], tuple[dict, dict | None]]] = {
 
 
 def test_every_xd_case_is_worked_here() -> None:
-    assert len(XD_CASES) == 15
-    assert {c.name[:4] for c in XD_CASES} == set(NUMERIC_XD) | set(SYMBOLIC_XD)
-    by_category = sorted(c.verdict.category for c in XD_CASES)
-    assert by_category.count("correct") == 5 and by_category.count("one_slip") == 6
-    assert by_category.count("two_slips") == 2 and by_category.count("chain") == 2
-    assert sorted(c.verdict.format for c in XD_CASES) == ["md"] * 5 + ["tex"] * 5 + ["txt"] * 5
-    assert len({c.verdict.problem for c in XD_CASES}) == 15
-    for case in XD_CASES:
-        assert bool(case.verdict.slip_values) == (case.verdict.summary != "0 wrong"), case.name
+    batch_shape(XD_CASES, set(NUMERIC_XD) | set(SYMBOLIC_XD))
 
 
 @pytest.mark.parametrize("prefix", sorted(NUMERIC_XD))
 def test_the_xd_numeric_values(prefix: str) -> None:
     case = _case(prefix)
     true, slipped = NUMERIC_XD[prefix](_given(case.verdict.problem))
-    for name, value in case.verdict.values.items():
-        if isinstance(value, str):
-            assert value == true[name], f"{case.name}: {name}"
-        else:
-            assert value == pytest.approx(true[name], rel=2e-4, abs=2e-4), f"{case.name}: {name}"
-    assert bool(case.verdict.slip_values) == (slipped is not None), case.name
-    for name, value in (case.verdict.slip_values or {}).items():
-        assert value == pytest.approx(slipped[name], rel=2e-4, abs=2e-4), f"{case.name}: slip {name}"
+    numbers_agree(case, true, slipped)
 
 
 @pytest.mark.parametrize("prefix", sorted(SYMBOLIC_XD))

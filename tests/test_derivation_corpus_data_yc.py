@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _formula, _given, _solve
+from test_derivation_corpus_data import CASES, _formula, _given, _solve, numbers_agree
 
 YC_CASES = [c for c in CASES if c.name.startswith("yc")]
 POINTS = ((1.0, 0.5), (2.0, 0.3), (1.5, 0.9))  # (u, e) for the letters
@@ -180,17 +180,7 @@ def test_every_yc_case_is_worked_here() -> None:
 def test_the_yc_numeric_values(prefix: str) -> None:
     case = _case(prefix)
     true, slipped = NUMERIC_YC[prefix](_given(case.verdict.problem))
-    for name, value in case.verdict.values.items():
-        if isinstance(value, str):
-            assert value == true[name], f"{case.name}: {name}"
-        else:
-            assert value == pytest.approx(true[name], rel=2e-4, abs=2e-4), f"{case.name}: {name}"
-    assert bool(case.verdict.slip_values) == (slipped is not None), case.name
-    for name, value in (case.verdict.slip_values or {}).items():
-        if isinstance(value, str):
-            assert value == slipped[name], f"{case.name}: slip {name}"
-        else:
-            assert value == pytest.approx(slipped[name], rel=2e-4, abs=2e-4), f"{case.name}: slip {name}"
+    numbers_agree(case, true, slipped)
 
 
 @pytest.mark.parametrize("prefix", sorted(SYMBOLIC_YC))
