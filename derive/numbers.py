@@ -157,11 +157,11 @@ def decimals_of(text: str) -> int:
 
 
 def places_that_add_up(
-    sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int, *, each: bool = False, more: int = 1
+    sums: list[tuple[list[Decimal], Decimal]], digits: int | None, extra: int, *, each: bool = False
 ) -> int | None:
     """Places after the point for a line of sums shown term by term (79.23 - 59.42 =
     19.81): the largest number's figures to start with (with ``each``, the figures of
-    every number), up to ``more`` more while the rounded terms do not add up to the
+    every number), or one more while the rounded terms do not add up to the
     rounded total. None when no such places exist: the numbers
     are too far apart in size for fixed places, or need more figures than the rule."""
     numbers = [x for terms, total in sums for x in (*terms, total)]
@@ -179,7 +179,7 @@ def places_that_add_up(
     most = min(ruled, default=start)
     least = max((at_rule for _, at_rule in shown), default=start)
     start = max(start, least)
-    for places in range(start, start + more + 1):
+    for places in range(start, start + 2):
         if places > most:
             break
         # the rounded numbers as the text :func:`format_fixed` writes them reads back

@@ -17,6 +17,17 @@ from derive.checking import mistakes
 from derive.homework import lms, variants
 from derive.problem import loads
 
+
+def _sign_convention(compiled: variants.Compiled) -> str:
+    """The sign convention in words (where +n and +t point), as the student's sheet says it in Markdown."""
+    from derive import escape
+    from derive.steps import solve
+    from derive.writers.view import problem_view
+
+    data = problem_view(solve(compiled.problem), figures=False)  # the file's own numbers
+    return "".join(f"${s}$" if kind == "math" else escape.markdown(s) for kind, s in data["convention"])
+
+
 NAME = "notes-4c11-two-spheres"
 SEED = 7
 COUNT = 4
@@ -147,9 +158,8 @@ def test_moodle_xml_is_reproducible(compiled: variants.Compiled, moodle: str) ->
         compiled, variants.draw(compiled, COUNT, seed=SEED), result=RESULT, category=f"$course$/derive/{NAME}"
     )
     assert again == moodle
-    other = lms.moodle_xml(compiled, variants.draw(compiled, 2, seed=SEED + 1), result=RESULT, with_mistakes=False)
+    other = lms.moodle_xml(compiled, variants.draw(compiled, 2, seed=SEED + 1), result=RESULT)
     assert other != moodle and len(_numerical(other)) == 2
-    assert all(a.get("fraction") == "100" for q in _numerical(other) for a in q.findall("answer"))
 
 
 def test_default_result_and_a_bad_one(compiled: variants.Compiled, chosen: list[variants.Variant]) -> None:
@@ -232,7 +242,7 @@ def test_lms_feedback_has_the_numbers_of_the_variant_page(
         assert _numbers(feedback) == _numbers(solution)
         question = re.sub(r"<[^>]+>", " ", _text(q, "questiontext/text")).rsplit("Enter", 1)[0]
         head = re.sub(r"^# .*\n|^\*Source: .*\n", "", head, flags=re.M)
-        assert _numbers(question) == _numbers(head + variants.sign_convention(compiled))  # as the sheet
+        assert _numbers(question) == _numbers(head + _sign_convention(compiled))  # as the sheet
 
 
 # ---------------------------------------------------------------- PrairieLearn
@@ -412,7 +422,7 @@ def test_an_lms_question_reads_as_the_students_sheet(name: str, cli, tmp_path: P
     r = cli("variants", name, "-n", "2", "-o", str(tmp_path / "hw"), "--moodle", str(xml), "--prairielearn", str(pl))
     assert r.code == 0, r.err
     compiled = variants.compile_problem(derive.load(name))
-    words = variants.sign_convention(compiled)
+    words = _sign_convention(compiled)
     assert words.startswith("Take $n$ along the line of impact")
     texts = [_text(q, "questiontext/text") for q in _numerical(xml.read_text())]
     data: dict = {"variant_seed": 0}

@@ -143,14 +143,13 @@ def _cell(text: str) -> str:
     return text.replace("|", "\\|").replace("\n", " ")
 
 
-def fields_table(table: Table, *, required: bool = True) -> str:
-    """A Markdown table of ``table``'s fields: field, type, (required,) meaning."""
-    head = "| field | type | required | meaning |" if required else "| field | type | meaning |"
-    rows = [head, "|" + " --- |" * (4 if required else 3)]
+def fields_table(table: Table) -> str:
+    """A Markdown table of ``table``'s fields: field, type, required, meaning."""
+    rows = ["| field | type | required | meaning |", "|" + " --- |" * 4]
     for f in table.fields:
         kind = _type_words(f)
         meaning = f.meaning + (f" (default: {f.default})" if f.default else "")
-        cells = [f"`{f.name}`", kind, *(["yes" if f.required else "no"] if required else []), meaning]
+        cells = [f"`{f.name}`", kind, "yes" if f.required else "no", meaning]
         rows.append("| " + " | ".join(_cell(c) for c in cells) + " |")
     return "\n".join(rows) + "\n"
 

@@ -97,22 +97,19 @@ def moodle_xml(
     result: str | None = None,
     digits: int | None = None,
     category: str | None = None,
-    with_mistakes: bool = True,
     model: MistakeModel | None = None,
 ) -> str:
     """The variants as Moodle XML: a category, then one numerical question per variant.
 
     ``category`` defaults to ``$course$/derive/<problem name>``; ``result`` to
-    :func:`default_result`. With ``with_mistakes`` each question also has the values
+    :func:`default_result`. Each question also has the values
     common mistakes give, as wrong answers whose feedback is the mistake's hint, in
     the ranges of :func:`mistake_ranges` (``model``: a :class:`MistakeModel` to share).
     """
     result = resolve_result(compiled, variants, result, digits)
     p = compiled.problem
     d = digits if digits is not None else p.digits
-    if not with_mistakes:
-        model = None
-    elif model is None:
+    if model is None:
         model = MistakeModel(compiled)
     quiz = quiz_element(compiled, category, f"{len(variants)} variants drawn by derive.")
     width = max(2, len(str(len(variants))))
@@ -132,7 +129,7 @@ def moodle_xml(
         ET.SubElement(a, "text").text = _plain(right.value)
         text_element(a, "feedback", f"<p>Right: \\({symbol} = {esc(right.shown)}\\){esc(unit)}.</p>", format="html")
         ET.SubElement(a, "tolerance").text = _plain(right.tolerance)
-        for r in mistake_ranges(right, model.wrong(v, right, digits)) if model is not None else []:
+        for r in mistake_ranges(right, model.wrong(v, right, digits)):
             a = ET.SubElement(q, "answer", {"fraction": "0", "format": "moodle_auto_format"})
             ET.SubElement(a, "text").text = _plain(r.center)
             lead = (

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from derive.homework.variants.compile import Compiled, compile_problem
 from derive.homework.variants.draw import MAX_COUNT, draw
-from derive.homework.variants.fill import answers, fill, fill_view, given_values, setup_figure, sheet, sign_convention
+from derive.homework.variants.fill import answers, fill, fill_view, given_values, setup_figure, sheet
 from derive.homework.variants.record import Variant
 from derive.homework.variants.write import write_variants
 
@@ -31,6 +31,5 @@ __all__ = [
     "given_values",
     "setup_figure",
     "sheet",
-    "sign_convention",
     "write_variants",
 ]

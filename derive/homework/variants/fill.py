@@ -84,18 +84,6 @@ def setup_figure(compiled: Compiled, variant: Variant, fmt: str = "md") -> str:
     return figure.to_tikz(drawn) if fmt in ("tex", "pdf") else figure.to_svg(drawn)
 
 
-def sign_convention(compiled: Compiled, fmt: str = "md") -> str:
-    """The sign convention in words (where +n and +t point; a chain's of every impact stage),
-    as its sheet says it: Markdown or (tex, pdf) LaTeX text."""
-    from derive import escape
-    from derive.steps import solve
-    from derive.writers.view import problem_view
-
-    data = problem_view(solve(compiled.problem), figures=False)  # the file's own numbers
-    text = escape.tex if fmt in ("tex", "pdf") else escape.markdown
-    return "".join(f"${s}$" if kind == "math" else text(s) for kind, s in data["convention"])
-
-
 def variant_html(compiled: Compiled, v: Variant, stem: str, digits: int | None = None) -> tuple[str, str]:
     """One variant as HTML, typeset together: a student's sheet (Given, Find, the set-up before
     the impact, the sign convention in words; no Source line, no answers) and the worked

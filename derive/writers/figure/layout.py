@@ -153,14 +153,10 @@ class Board:
         self.labels.append(label)
         self.boxes.append(label.box)
 
-    def hits(self, box: tuple[float, float, float, float], home: Body | None) -> bool:
-        """True when a label's box (clearance included) touches anything drawn: ``any(clashes)``."""
-        return self._hit(box[0] - GAP, box[1] - GAP, box[2] + GAP, box[3] + GAP, home)
-
     def _hit(self, x0: float, y0: float, x1: float, y1: float, home: Body | None) -> bool:
-        """:meth:`hits` for the grown box (x0, y0, x1, y1): the likeliest and cheapest tests
-        first (a figure tries thousands of boxes): the stroke that met the box tried last,
-        labels, bodies, strokes."""
+        """True when a label's box, grown by the clearance to (x0, y0, x1, y1), touches anything
+        drawn (``any(clashes)``): the likeliest and cheapest tests first (a figure tries thousands
+        of boxes): the stroke that met the box tried last, labels, bodies, strokes."""
         last = self.last
         if last is not None:
             sx0, sy0, sx1, sy1, seg = last
@@ -198,7 +194,7 @@ class Board:
         hw, hh = w / 2, h / 2
         hit = self._hit
         for cx, cy in points:
-            # the box (cx - w / 2, ...) grown by the clearance, as :meth:`hits` grows it
+            # the box (cx - w / 2, ...) grown by the clearance, as :meth:`clashes` grows it
             if not hit(cx - hw - GAP, cy - hh - GAP, cx + hw + GAP, cy + hh + GAP, home):
                 return cx, cy
         return None

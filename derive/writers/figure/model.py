@@ -173,7 +173,7 @@ class Figure:
                 xs += [s.x - s.r, s.x + s.r]
                 ys += [s.y - s.r, s.y + s.r]
             elif isinstance(s, Arc):  # its points: each inner one ends two of its strokes
-                for px, py in _arc_points(s, 24):
+                for px, py in _arc_points(s):
                     xs.append(px)
                     ys.append(py)
             else:
@@ -213,27 +213,27 @@ def head(x1: float, y1: float, x2: float, y2: float) -> list[Segment]:
     return [((x2, y2), (bx - w * uy, by + w * ux)), ((x2, y2), (bx + w * uy, by - w * ux))]
 
 
-def arc_points(a: Arc, steps: int = 24) -> list[Point]:
-    """Points along an arc, for drawing checks."""
-    return list(_arc_points(a, steps))
+def arc_points(a: Arc) -> list[Point]:
+    """Points along an arc (25, 24 steps apart), for drawing checks."""
+    return list(_arc_points(a))
 
 
 @functools.lru_cache(maxsize=64)  # a figure's arcs are met by its layout, its bounds and its drawing
-def _arc_points(a: Arc, steps: int) -> tuple[Point, ...]:
+def _arc_points(a: Arc) -> tuple[Point, ...]:
     out = []
-    for i in range(steps + 1):
-        ang = math.radians(a.start + (a.end - a.start) * i / steps)
+    for i in range(25):
+        ang = math.radians(a.start + (a.end - a.start) * i / 24)
         out.append((a.x + a.r * math.cos(ang), a.y + a.r * math.sin(ang)))
     return tuple(out)
 
 
-def hatch_ticks(s: Surface, count: int = 12) -> list[Segment]:
-    """The short slanted strokes behind a wall's face."""
+def hatch_ticks(s: Surface) -> list[Segment]:
+    """The short slanted strokes behind a wall's face (13, at 12 equal steps along it)."""
     length = math.hypot(s.x2 - s.x1, s.y2 - s.y1)
     ux, uy = (s.x2 - s.x1) / length, (s.y2 - s.y1) / length
     out = []
-    for i in range(count + 1):
-        px, py = s.x1 + (s.x2 - s.x1) * i / count, s.y1 + (s.y2 - s.y1) * i / count
+    for i in range(13):
+        px, py = s.x1 + (s.x2 - s.x1) * i / 12, s.y1 + (s.y2 - s.y1) * i / 12
         out.append(((px, py), (px + HATCH * (s.nx - ux), py + HATCH * (s.ny - uy))))
     return out
 

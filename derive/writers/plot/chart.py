@@ -52,11 +52,11 @@ class Chart:
     title: str
 
 
-def ticks(lo: float, hi: float, count: int = 5) -> list[float]:
-    """Round tick values covering [lo, hi] (steps of 1, 2, 2.5 or 5 times a power of ten)."""
+def ticks(lo: float, hi: float) -> list[float]:
+    """Round tick values covering [lo, hi] in about five steps (of 1, 2, 2.5 or 5 times a power of ten)."""
     if hi - lo < 1e-12:
         lo, hi = lo - 1, hi + 1
-    raw = (hi - lo) / count
+    raw = (hi - lo) / 5
     power = 10 ** math.floor(math.log10(raw))
     step = next(m * power for m in (1, 2, 2.5, 5, 10) if m * power >= raw)
     first = math.floor(lo / step + 1e-9) * step

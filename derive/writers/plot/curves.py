@@ -83,7 +83,7 @@ def _function(expr: sympy.Expr, e: sympy.Symbol, per: sympy.Symbol | None, what:
     return sympy.lambdify(e, expr, "math")
 
 
-def curves(problem: Problem, samples: int = SAMPLES) -> Curves:
+def curves(problem: Problem) -> Curves:
     """The velocities along n after the impact and the fraction of kinetic energy lost, for e in [0, 1]."""
     outcome = solve_impact(problem)
     problem = forward(problem, outcome)
@@ -106,7 +106,7 @@ def curves(problem: Problem, samples: int = SAMPLES) -> Curves:
     names = ["v_A2n", "v_B2n"] if problem.oblique else ["v_A2", "v_B2"]
     if problem.fixed_B:
         names = names[:1]
-    grid = tuple(k / (samples - 1) for k in range(samples))
+    grid = tuple(k / (SAMPLES - 1) for k in range(SAMPLES))
     series = []
     for name in names:
         f = _function(closed(name), e, per, name)

@@ -103,8 +103,8 @@ def to_pdf(chart: Chart) -> bytes:
     return build_pdf(tex)
 
 
-def to_png(chart: Chart, dpi: int = 150) -> bytes:
-    """The plot as PNG: the PDF rasterised by poppler's pdftoppm."""
+def to_png(chart: Chart) -> bytes:
+    """The plot as PNG: the PDF rasterised by poppler's pdftoppm at 150 dots an inch."""
     tool = shutil.which("pdftoppm")
     if tool is None:
         raise RenderError(
@@ -115,7 +115,7 @@ def to_png(chart: Chart, dpi: int = 150) -> bytes:
         src = Path(tmp) / "plot.pdf"
         src.write_bytes(pdf)
         subprocess.run(
-            [tool, "-png", "-r", str(dpi), "-singlefile", str(src), str(Path(tmp) / "plot")],
+            [tool, "-png", "-r", "150", "-singlefile", str(src), str(Path(tmp) / "plot")],
             check=True,
             capture_output=True,
             timeout=60,

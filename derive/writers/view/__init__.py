@@ -121,9 +121,9 @@ def render(
     return writer.write(solution, data, options)
 
 
-def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = None, title: str | None = None) -> str:
-    """A student's sheet of ``solution`` in ``fmt`` ('md', or 'tex': a document): the title
-    (``title`` in its place), Given and Find, the set-up before the impact (a chain's first)
+def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = None) -> str:
+    """A student's sheet of ``solution`` in ``fmt`` ('md', or 'tex': a document): the title,
+    Given and Find, the set-up before the impact (a chain's first)
     and the sign convention in words; no Source line, no working (a homework variant's sheet)."""
     from derive.writers import figure
 
@@ -134,8 +134,6 @@ def student_page(solution: Solution, fmt: str = "md", *, digits: int | None = No
     if impacts and any(st.figure == "before" for st in impacts[0].stages):
         drawn = figure.describe(solution, after=False)
         sheet.update(setup_svg=figure.to_svg(drawn), setup_tikz=figure.to_tikz(drawn))
-    if title is not None:
-        sheet["title"] = title
     if fmt == "tex":
         return environment("tex").get_template("solution.tex.j2").render(**sheet, **_tex_vars(1, True))
     return environment("md").get_template("solution.md.j2").render(**sheet).rstrip("\n") + "\n"
