@@ -28,6 +28,7 @@ import argparse
 import json
 import os
 import sys
+import tempfile
 import tomllib
 from pathlib import Path
 
@@ -68,6 +69,10 @@ def before_after(cases: list[dict], tree: Path, old: Path, runs: int) -> int:
                 cpus[key].append(time_one(case["problem"], path, src, reports[key])[1])
         same = len(set(reports["before"] + reports["after"])) == 1
         differ += not same
+        if not same:  # kept to compare (a time budget run out under load differs too)
+            for key, outs in reports.items():
+                for k, out in enumerate(outs):
+                    Path(tempfile.gettempdir(), f"{case['file']}.{key}{k}.json").write_bytes(out)
         for key in sums:
             sums[key] += min(cpus[key])
         b, a = cpus["before"], cpus["after"]
