@@ -231,14 +231,23 @@ def nonlinear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[
     """The roots of ``eqs = 0`` (numbers in, 30 digits) that fix every unknown: by elimination in
     floating point (:mod:`.polyroots`), or where that cannot take the system apart, SymPy's ``solve``
     (a Gröbner basis over floats: seconds, where elimination takes milliseconds)."""
-    found = polynomial_roots(eqs, U)
+    return [dict(root) for root in _nonlinear_roots(tuple(eqs), tuple(U))]
+
+
+@functools.lru_cache(maxsize=256)
+def _nonlinear_roots(
+    eqs: tuple[sympy.Expr, ...], U: tuple[sympy.Symbol, ...]
+) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr], ...], ...]:
+    """:func:`nonlinear_roots`, kept for the process (a world of the same equations at the same
+    point is solved again for each line, rule and mistake that asks; SymPy's solve is seconds)."""
+    found = polynomial_roots(list(eqs), U)
     if found is not None:
-        return [{u: _real(z) for u, z in r.items()} for r in found]
+        return tuple(tuple((u, _real(z)) for u, z in r.items()) for r in found)
     try:
-        roots = sympy.solve(eqs, list(U), dict=True, rational=False)
-    except (NotImplementedError, ValueError, TypeError, mpmath.libmp.NoConvergence):  # 10^22 as a speed: no root found
-        return []
-    return [r for r in roots if set(r) == set(U)]
+        roots = sympy.solve(list(eqs), list(U), dict=True, rational=False)
+    except (NotImplementedError, ValueError, TypeError, mpmath.libmp.NoConvergence):  # 10^22 as a speed: none
+        return ()
+    return tuple(tuple(r.items()) for r in roots if set(r) == set(U))
 
 
 def _taken_apart(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | None:

@@ -104,7 +104,26 @@ def equation_numbers(problem: Problem) -> tuple[int, ...]:
     return tuple(nums)
 
 
+#: The impacts set up lately, by the problem object they were set up for (a check sets up its
+#: problem twice: for the worked solution and for the mistakes' model); bounded, each entry
+#: keeps its problem alive, so an id is not reused while its entry stands.
+_SET_UP: dict[int, Impact] = {}
+
+
 def setup(problem: Problem) -> Impact:
+    """Equations (1)-(4) for ``problem`` solved in closed form (:func:`_setup`), once per problem
+    object: the Impact is frozen and nothing changes its dictionaries."""
+    hit = _SET_UP.get(id(problem))
+    if hit is not None and hit.problem is problem:
+        return hit
+    imp = _setup(problem)
+    if len(_SET_UP) >= 8:
+        _SET_UP.pop(next(iter(_SET_UP)))
+    _SET_UP[id(problem)] = imp
+    return imp
+
+
+def _setup(problem: Problem) -> Impact:
     """Set up equations (1)-(4) for ``problem`` and solve them in closed form.
 
     The unknowns are the velocities after the impact that the file does not give,

@@ -8,6 +8,7 @@ and derives every result of the problem from it (:mod:`.quantities`).
 from __future__ import annotations
 
 import copy
+import functools
 import random
 from collections.abc import Mapping
 
@@ -152,26 +153,7 @@ class Model:
     ) -> dict[sympy.Symbol, sympy.Expr] | None:
         """The most plausible real root of ``eqs`` (numbers in) in the unknowns (then the one
         nearest ``near``, the true values), or None."""
-        # plain real unknowns: a mistaken e may come out negative, a mistaken mass too
-        plain = {u: sympy.Dummy(u.name, real=True) for u in self.unknowns}
-        back = {d: u for u, d in plain.items()}
-        try:
-            system = [sympy.expand(x.xreplace(plain)) for x in eqs]
-            # a mistake's value is a number to show: with surds among the numbers (cos 30° of a
-            # drawn variant), solving exactly factors over their number field (a minute for
-            # ocr-m3-2013's STACK export), so such a system is solved in 30-digit decimals
-            exact = not any(_surd(a) for x in system for a in x.atoms(sympy.Pow, sympy.Function))
-            system = system if exact else [x.evalf(30) for x in system]
-            # SymPy's check of each root simplifies every equation (seconds for an angle among
-            # letters, issue #19); satisfies() decides the same, mostly by numbers
-            found = sympy.solve(
-                system, list(plain.values()), dict=True, check=False, simplify=False, rational=None if exact else False
-            )
-            found = [r for r in found if satisfies(system, r)]
-        except (NotImplementedError, BasePolynomialError):  # NotInvertible: SymPy's algebraic domain gave up
-            return None  # this mistake gives no value here (as with no root)
-        roots = [{back[d]: val for d, val in r.items()} for r in found]
-        roots = [r for r in roots if set(r) == set(self.unknowns) and all(is_real(r[u]) for u in self.unknowns)]
+        roots = [dict(root) for root in real_roots(tuple(eqs), tuple(self.unknowns)) or ()]
         if not roots:
             return None
         roots.sort(key=lambda r: (-self._plausible(r), _distance(r, near)))
@@ -224,6 +206,36 @@ class Model:
         if r.unit == "deg":
             return r.value * sympy.pi / 180 if r.value is not None else r.partial * sympy.pi / 180
         return r.value if r.value is not None else r.partial
+
+
+@functools.lru_cache(maxsize=512)
+def real_roots(
+    eqs: tuple[sympy.Expr, ...], unknowns: tuple[sympy.Symbol, ...]
+) -> tuple[tuple[tuple[sympy.Symbol, sympy.Expr], ...], ...] | None:
+    """The real roots of ``eqs`` (numbers in) in ``unknowns`` that fix every one of them (None
+    where SymPy cannot solve the system); kept for the process: a problem's mistakes are solved
+    again by every check of a derivation of it (a second each, with an unknown angle)."""
+    # plain real unknowns: a mistaken e may come out negative, a mistaken mass too
+    plain = {u: sympy.Dummy(u.name, real=True) for u in unknowns}
+    back = {d: u for u, d in plain.items()}
+    try:
+        system = [sympy.expand(x.xreplace(plain)) for x in eqs]
+        # a mistake's value is a number to show: with surds among the numbers (cos 30° of a
+        # drawn variant), solving exactly factors over their number field (a minute for
+        # ocr-m3-2013's STACK export), so such a system is solved in 30-digit decimals
+        exact = not any(_surd(a) for x in system for a in x.atoms(sympy.Pow, sympy.Function))
+        system = system if exact else [x.evalf(30) for x in system]
+        # SymPy's check of each root simplifies every equation (seconds for an angle among
+        # letters, issue #19); satisfies() decides the same, mostly by numbers
+        found = sympy.solve(
+            system, list(plain.values()), dict=True, check=False, simplify=False, rational=None if exact else False
+        )
+        found = [r for r in found if satisfies(system, r)]
+    except (NotImplementedError, BasePolynomialError):  # NotInvertible: SymPy's algebraic domain gave up
+        return None  # this mistake gives no value here (as with no root)
+    roots = [{back[d]: val for d, val in r.items()} for r in found]
+    roots = [r for r in roots if set(r) == set(unknowns) and all(is_real(r[u]) for u in unknowns)]
+    return tuple(tuple(r.items()) for r in roots)
 
 
 def _distance(root: Mapping[sympy.Symbol, sympy.Expr], near: Mapping[sympy.Symbol, sympy.Expr] | None) -> float:

@@ -7,6 +7,7 @@ direction may be computed wrongly, as a mistake says.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 
 import sympy
@@ -135,8 +136,11 @@ def directions(n: sympy.Expr, t: sympy.Expr, rule: str) -> tuple[Quantity, Quant
     return _direction(n, t, False), _direction(t, n, False)
 
 
+@functools.lru_cache(maxsize=1024)
 def _direction(y: sympy.Expr, x: sympy.Expr, quadrant: bool) -> Quantity:
-    """atan2(y, x) (or, without ``quadrant``, tan⁻¹(y/x)) in radians and degrees."""
+    """atan2(y, x) (or, without ``quadrant``, tan⁻¹(y/x)) in radians and degrees (kept for the
+    process: the mistakes and their pairs ask for the same direction again and again, and with a
+    letter in it each is a simplification)."""
     if x == 0 and not quadrant:
         return Quantity(None, None)
     if x == 0 and (y.is_positive or y.is_negative):
