@@ -81,10 +81,28 @@ _LOC_LETTERS = (
 
 def in_line_words(line: str, ctx: Context) -> str:
     """``line`` with the statement's letters for the line of centres (``along XY``) in words
-    ("along the line of centres"), so that a declaration by them is read as by the words."""
+    ("along the line of centres"), and a pronoun for the line of centres the line has named before
+    it ("Line of centres: positive from A to B. a, b = components along it after") said in full,
+    so that a declaration by them is read as by the words."""
+    line = _pronoun_said(line)
     statement = getattr(ctx.problem, "statement", "") or ""
     for pattern in _LOC_LETTERS:
         m = pattern.search(statement)
         if m and m.group(1) not in ctx.problem.labels:
             return re.sub(rf"(?<![A-Za-z\\]){m.group(1)}(?![A-Za-z])", "the line of centres", line)
     return line
+
+
+#: The line of centres in words, and "along it" / "along this line" after it.
+_LOC_SAID = re.compile(r"\bline\s+of\s+(?:centres|centers|impact)\b|\bl\.\s?o\.\s?c\b\.?", re.I)
+_ALONG_IT = re.compile(r"\b(along|parallel\s+to)\s+(?:it|this(?:\s+line)?|that\s+line)\b(?![\w'’])", re.I)
+
+
+def _pronoun_said(line: str) -> str:
+    """``line`` with "along it" after the line of centres is named in it written "along the line
+    of centres" (the pronoun's one referent on the line); the line as it is where none is named."""
+    first = _LOC_SAID.search(line)
+    if first is None:
+        return line
+    head, tail = line[: first.end()], line[first.end() :]
+    return head + _ALONG_IT.sub(lambda m: f"{m[1]} the line of centres", tail)

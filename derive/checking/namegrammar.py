@@ -173,6 +173,8 @@ def _velocity(ctx: Context, body: str, time: str, axis: str) -> sympy.Expr | Non
     p, nm = ctx.problem, ctx.model.nm
     if p.fixed_B and body == "B":
         return None
+    if p.oblique and not axis and time == "1":  # a body at rest before: 0 in every reading (v_{Pi} = 0)
+        return next((g.symbol for g in p.givens if g.name == f"v_{body}1" and g.value == 0), None)
     if p.oblique:  # without a component: a speed, or the n component where the t one is dropped
         return getattr(nm, f"{body}{time}{axis}", None) if axis else None  # (habits, inference)
     return None if axis == "t" else getattr(nm, f"{body}{time}n", None)

@@ -21,11 +21,12 @@ from derive.checking.context import Context
 from derive.mathtext.reader import MATH_WORDS
 
 _NAME = r"([A-Za-z](?:_?\{?\w{1,2}\}?)?|\\[a-z]+)"
-#: "After (speed V)", "after the impact: speed V", "speed after V", "rebounds with speed V".
+#: "After (speed V)", "afterwards speed V", "after the impact: speed V", "speed after V", "speed V
+#: afterwards", "rebounds with speed V".
 _AFTER_SPEED = (
-    re.compile(rf"\bafter\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
+    re.compile(rf"\bafter(?:wards?)?\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
     re.compile(
-        rf"\bspeed\s+(?:just\s+)?after(?:\s+the\s+(?:impact|collision|bounce)(?:\s+(?:with|off|on|against)\s+(?:the\s+)?\w+(?!\w))?)?"
+        rf"\bspeed\s+(?:just\s+)?after(?:wards?\b)?(?:\s+the\s+(?:impact|collision|bounce)(?:\s+(?:with|off|on|against)\s+(?:the\s+)?\w+(?!\w))?)?"
         rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
         re.I,
     ),
@@ -34,6 +35,9 @@ _AFTER_SPEED = (
         r"speed\s+(?:just\s+|immediately\s+)?after",
         re.I,
     ),
+    re.compile(
+        rf"\bspeed\s+(?:is\s+|of\s+)?{_NAME}\s+(?:just\s+|immediately\s+)?after(?:wards?)?\b", re.I
+    ),  # "speed V afterwards"
     re.compile(
         rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}(?![\w'(])", re.I
     ),

@@ -11,6 +11,7 @@ velocities are inferred anyway), so only masses, impulses and energies are kinds
 
 from __future__ import annotations
 
+import math
 import re
 
 import sympy
@@ -209,10 +210,39 @@ def by_value(
                 hits.append(e)
         if hits:
             out[name] = hits[0]  # equal masses: either, and the first is A's
+        elif not solved and (copied := _copied_mass(ctx, table.get(dim, []), written, values, asked)) is not None:
+            out[name] = copied  # "m = 20 g = 0.2 kg": the bullet's mass copied wrongly (its line's slip)
         elif _says_impulse(name) and (only := _only_one(table.get(dim, []))) is not None:  # "J = 0.238", worked wrongly
             x = number_of(ctx.in_unknowns(only).xreplace(values[0]).xreplace(values[1]))
             out[name] = -only if x is not None and abs(x.imag) < 1e-12 and x.real * written < 0 else only
     return out
+
+
+def _copied_mass(
+    ctx: Context, table: list[tuple[str, sympy.Expr]], written: float, values: tuple[dict, dict], asked: set[str]
+) -> sympy.Expr | None:
+    """The one given mass ``written`` is a copy of, wrongly made: the same digits with the point
+    moved (a unit turned wrongly, 20 g as 0.2 kg) or in another order (0.51 for 0.15); None where
+    no given mass, or more than one, is so like it. The name is that mass's: the line that sets it
+    is the slip, and the lines after it carried, as a teacher reads "m = 0.2 kg" for the bullet."""
+    found = []
+    for what, e in table:
+        x = number_of(ctx.in_unknowns(e).xreplace(values[0]).xreplace(values[1])) if what in ("m_A", "m_B") else None
+        if x is not None and what not in asked and abs(x.imag) < 1e-12 and x.real and _a_copy(written, x.real):
+            found.append(e)
+    return found[0] if len(found) == 1 else None
+
+
+def _a_copy(written: float, true: float) -> bool:
+    """Whether ``written`` is ``true`` with its point moved (by one to three places) or its digits
+    in another order (two digits or more), and not ``true`` itself."""
+    if written <= 0 or true <= 0 or abs(written - true) <= 1e-9 * true:
+        return False
+    k = round(math.log10(written / true))
+    if 1 <= abs(k) <= 3 and abs(written / true / 10**k - 1) < 1e-9:
+        return True
+    digits = [re.sub(r"[^0-9]", "", f"{x:.6f}").strip("0") for x in (written, true)]
+    return len(digits[1]) >= 2 and sorted(digits[0]) == sorted(digits[1])
 
 
 def _defined_by_expression(middle: tuple[str, ...]) -> bool:

@@ -62,14 +62,14 @@ def _components_said(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     after); its names pair with the bodies it names, in order."""
     if not ctx.problem.oblique:
         return {}
-    cut = re.split(r"(?<=[\w'’}])\s*=(?!\s*(?:the\s+)?components?\b)", line, maxsplit=1)
+    cut = re.split(r"(?<=[\w'’}])\s*=(?!\s*(?:the\s+)?(?:components?|velocit(?:y|ies))\b)", line, maxsplit=1)
     if len(cut) > 1 and "=" in cut[0]:
         return {}
     valued, line = len(cut) > 1, cut[0]  # "A's component along the l.o.c. is a = 4 cos 60°": the words before
     labels = set(ctx.problem.labels) | {"A", "B"} | set(statement_bodies(ctx))  # "the velocity of P after"
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
-    for clause in re.split(r"[;.](?:\s|$)", re.sub(r"\$|\\[()]|[{}]", " ", line)):
+    for clause in re.split(r"(?<!\bl\.o\.c)[;.](?:\s|$)", re.sub(r"\$|\\[()]|[{}]", " ", line)):
         a, c = _ALONG_WORDS.search(clause), _ACROSS_WORDS.search(clause)
         if a and c and a.start() < c.start():  # "A has p along the line of centres and u/2 across it"
             clause = clause[: c.start()]

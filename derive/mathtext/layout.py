@@ -58,5 +58,21 @@ def row_plain(row: str) -> str:
     for pattern, plain in _SIUNITX:
         row = pattern.sub(plain, row)
     first, *rest = re.split(r"&\s*&", row)
-    kept = [side_by_side(first), *(c for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
+    kept = [side_by_side(first), *(_worded(c) for c in rest if re.search(r"=|\\approx|\\simeq|≈", c))]
     return latex_to_plain(" ; ".join(kept))
+
+
+#: A comma in a note's column, then words and no relation to its end (``, \ \mathbf{j}\text{-part
+#: unchanged})``, ``\text{, as given)}``): the reason the note gives, not part of its relation.
+_REASON = re.compile(r"(?:\\text\{)?,(?=[^=]*\\text\{[^}]*[A-Za-z]{2})[^=]*$")
+
+
+def _worded(column: str) -> str:
+    """A note's column after ``&&`` without the words after its relation (``(e = 1, j-part
+    unchanged)`` is ``e = 1``): the relation is read, the reason is prose; its bracket opened
+    before the relation goes with the words that close it."""
+    m = _REASON.search(column)
+    if m is None:
+        return column
+    kept = column[: m.start()]
+    return kept.replace("(", " ", 1) if kept.count("(") > kept.count(")") else kept
