@@ -142,7 +142,8 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
     if (one := signslips.negated_in_one(trace, bad)) is not None:  # in the restitution line alone
         return one, slipnames.FLIPPED["b_sign"], "b_sign"
     flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
-    if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds)) is not None:
+    prefer = workedslips.substituted_factors(trace.held, bad, trace.U)
+    if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds, prefer)) is not None:
         return trace._closest(scaled), workedslips.SCALED, "algebra"  # a factor lost in substituting
     if not flip:
         return cofunctions.asked_angle(trace, line, bad, holds)  # α from the wall resolved as from the normal

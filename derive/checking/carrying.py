@@ -15,7 +15,7 @@ from decimal import Decimal
 
 import sympy
 
-from derive.checking import figures
+from derive.checking import figures, wholesides
 from derive.checking.context import Context
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read
@@ -281,9 +281,13 @@ class Carrying:
         = 129.5``, near the true 128.9 only because the t component is the larger)."""
         if self.world is not None and self._writes_copied(line) and self.holds(pairs, self.world):
             return True  # 0.3 = (v_B2 - v_A2)/(19.567 - 0): the given as copied, put in
+        if wholesides.slip_exact(self, pairs):
+            return True  # v = 3 where the slip gives 3 exactly and the truth is 3.45
         working = " ".join(line.sides[:-1]).replace(" ", "").replace("*", "")
         terms = any(re.search(rf"(?<![\w.]){re.escape(t)}(?!\w)", working) for t in self.wrong_terms)
-        if not decimals(line.sides[:-1]) & self.wrong_values and not terms and not self._wrong_integers(line):
+        # a decimal the problem types (0.0400 kg) is the data, though a wrong value came to it; not written -35.0
+        typed = {g.typed for g in self.ctx.problem.givens if g.typed} - set(re.findall(r"-\s*(\d+\.\d+)", working))
+        if not (decimals(line.sides[:-1]) & self.wrong_values) - typed and not terms and not self._wrong_integers(line):
             return self._goes_on(line, pairs)
         if any(p.difference.free_symbols & set(self.U) for p in pairs):
             if self.world is not None and self.holds(pairs, self.world) and self._moved(pairs):

@@ -75,8 +75,8 @@ def plain(
 ) -> tuple[str, str] | None:
     """The words (": …") and name of a slip in a line of a known value that a model of its own
     names: the kinetic energy worked with the wrong formula, an angle from the other axis."""
-    if slipnames.ke_formula(ctx, bad, holds):
-        return f": {slipnames.KE_FORMULA}", "ke_formula"
+    if name := slipnames.ke_formula(ctx, bad, holds):
+        return f": {slipnames.ENERGY_WORDS[name]}", name
     other = other_axis(ctx, bad, holds, exprs)
     return (f": {other[0]}", other[1]) if other is not None else None
 

@@ -10,7 +10,7 @@ the line's slip.
 
 from __future__ import annotations
 
-from derive.checking import slipnames
+from derive.checking import slipnames, stepnames
 from derive.checking.worlds import Pair
 
 #: What :meth:`~.lines.Trace._explain` returns: the mistakes, the equation, the words, the name.
@@ -19,7 +19,7 @@ Explained = tuple
 
 def explained(trace, line, bad: Pair, pairs: list[Pair], answer) -> tuple[Pair, Explained]:
     """The relation of ``line`` its slip is named by, and its explanation (``trace._explain``)."""
-    found = trace._explain(line, bad, answer)
+    found = stepnames.step_first(trace, line, bad, trace._explain(line, bad, answer))
     if not _again(trace, {d.mistake for d in found[0]}):
         return bad, found
     world = trace.world if trace.world is not None else trace.truth

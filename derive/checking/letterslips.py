@@ -119,13 +119,13 @@ def _simple(c: sympy.Expr) -> bool:
     return bool(c.is_Rational and c != 0 and c.q <= SIMPLE_DENOMINATOR and abs(c.p) <= 100)
 
 
-def ke_formula(trace, bad: Pair) -> bool:
-    """Whether ``bad`` holds in the student's world (the velocities as the slips so far left
-    them) with a kinetic energy it names worked by a wrong formula: tried before the impact
-    rules' mistakes, which a line about an energy is never."""
+def ke_formula(trace, bad: Pair) -> str:
+    """The name (:func:`.slipnames.ke_formula`) where ``bad`` holds in the student's world (the
+    velocities as the slips so far left them) with a kinetic energy it names worked by a wrong
+    formula: tried before the impact rules' mistakes, which a line about an energy is never."""
     world = trace.world if trace.world is not None else trace.truth
     holds = lambda p: trace.holds([p], world)  # noqa: E731
-    return slipnames.ke_formula(trace.ctx, bad, holds) or _copied_energy(trace, bad, holds)
+    return slipnames.ke_formula(trace.ctx, bad, holds) or ("ke_formula" if _copied_energy(trace, bad, holds) else "")
 
 
 def _copied_energy(trace, bad: Pair, holds) -> bool:

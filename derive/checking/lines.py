@@ -283,8 +283,8 @@ class Trace(Carrying):
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
             return (), *named
-        if not (answer is not None and answer.diagnosis) and letterslips.ke_formula(self, bad):  # never a rule's
-            return (), KEPT, f": {slipnames.KE_FORMULA}", "ke_formula"
+        if not (answer is not None and answer.diagnosis) and (kf := letterslips.ke_formula(self, bad)):  # not a rule
+            return (), KEPT, f": {slipnames.ENERGY_WORDS[kf]}", kf
         diags = answer.diagnosis if answer is not None and answer.diagnosis else v.mistakes
         before = set().union(*self.named.values()) if self.named else set()
         fresh = tuple(d for d in diags if d.mistake not in before)  # one made again with a new one: the new one

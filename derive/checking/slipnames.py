@@ -41,6 +41,7 @@ KE_FORMULA = (
     "the kinetic energy is worked with the wrong formula (T = ½ m v² for each body; "
     "the energy lost is ½ m (u² − v²), not ½ m (u − v)²)."
 )
+ENERGY_WORDS = {"ke_formula": KE_FORMULA, "arithmetic": "a speed is put in without its square (T = ½ m v²)."}
 
 
 def before_impact(ctx: Context, bad: Pair, holds: Holds) -> list[Mistake]:
@@ -133,23 +134,22 @@ def with_mistakes_values(ctx: Context, bad: Pair, named: set[str], holds: Holds)
     return False
 
 
-def ke_formula(ctx: Context, bad: Pair, holds: Holds) -> bool:
-    """Whether ``bad`` holds with a kinetic energy (``T_1``, ``T_2``, ``T_lost``) worked by a
-    wrong formula, the velocities right."""
+def ke_formula(ctx: Context, bad: Pair, holds: Holds) -> str:
+    """The name of ``bad``'s slip where it holds with a kinetic energy (``T_1``, ``T_2``,
+    ``T_lost``) worked by a wrong formula, the velocities right: ``ke_formula``; ``arithmetic``
+    where only the speeds put in unsquared explain it (as a teacher marks them anywhere); "" else."""
     if bad.raw is None:
-        return False
+        return ""
     derived = ctx.derived()
     syms = set().union(*(x.free_symbols for x in bad.raw))
     named = {n: derived[n][0] for n in ("T_1", "T_2", "T_lost") if n in derived and derived[n][0] in syms}
     if not named:
-        return False
-    for form in wrong_energies(ctx):
-        if not set(named) <= set(form):
-            continue
-        subs = {s: form[n] for n, s in named.items()}
-        if _holds_with(ctx, bad, subs, holds):
-            return True
-    return False
+        return ""
+    forms = wrong_energies(ctx)
+    for form in [*forms[1:], forms[0]]:  # the speeds unsquared last: a number worked wrongly
+        if set(named) <= set(form) and _holds_with(ctx, bad, {s: form[n] for n, s in named.items()}, holds):
+            return "arithmetic" if form is forms[0] else "ke_formula"
+    return ""
 
 
 def wrong_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:

@@ -24,7 +24,8 @@ def number_copied(trace: Trace, bad: Pair, rule: str = "") -> str:
     """``2(5) + 1(0) = 2(3) + v_B`` where A goes on at 2 m/s: a relation in one unknown (which
     a wrong velocity from any mistake would also let hold; ``rule``, the judge's, one of a
     mistaken equation) that writes a number that is none of the data and holds with the problem
-    solved with a given copied as that number; or in any unknowns, where the number is in a
+    solved with a given copied as that number (or a datum that is a given with its decimal
+    point moved: 2 for A's 0.2 m/s where B's mass is 2 kg); or in any unknowns, where the number is in a
     total with another given on the line too (``0.20(300) = 4.20 V``: a bullet's 0.020 kg
     copied, alone and with the 4.0 kg block). The slip's world is then the problem so; the
     words of the verdict ("" where it is not so)."""
@@ -35,18 +36,25 @@ def number_copied(trace: Trace, bad: Pair, rule: str = "") -> str:
     written = {sympy.Rational(t) for t in re.findall(r"(?<![\w.^])\d+(?:\.\d+)?(?![\w.^])", " ".join(working))}
     alone = len(unknowns) == 1 and rule != "no_match"
     numbers = written | {abs(x) for x in set().union(*(x.atoms(sympy.Rational) for x in bad.raw))}  # (0.2 + 4)
-    for c in written - set(trace.ctx.data) - {0, 1}:
+    givens = [g for g in trace.ctx.problem.givens if not g.unknown and g.value is not None and g.value.is_Rational]
+    moved = {c for c in written for g in givens if g.value and abs(c / g.value) in _TENS}  # 2 for 0.2, 2 a datum too
+    for c in (written - set(trace.ctx.data) | moved) - {0, 1}:
         if not alone and not any(c + abs(h) in numbers for h in trace.ctx.data if h and h.is_Rational):
             continue  # 4.20 = 0.20 + 4.0: the copied number in a total too
-        for g in (g for g in trace.ctx.problem.givens if not g.unknown and g.value is not None and g.value.is_Rational):
-            model, variant = trace.ctx.model, Variant(values={g.symbol: c})
+        for g in givens if c not in trace.ctx.data else [g for g in givens if abs(c / g.value) in _TENS]:
+            copy = -c if c in moved and g.value < 0 else c  # -0.2 written -2: its sign kept
+            model, variant = trace.ctx.model, Variant(values={g.symbol: copy})
             world = solved_with(trace, variant) if abs(c) != abs(g.value) else None  # a find-e problem too
             if world is None or not trace.holds([bad], world):
                 continue
-            trace.copied[g.symbol], trace.variant, trace.world = c, variant, world
+            trace.copied[g.symbol], trace.variant, trace.world = copy, variant, world
             trace.equations = {j: F for j, F in model.numbered(variant).items() if j in trace.equations}
-            return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {shown(c)}."
+            return f": a given is copied wrongly: the problem gives {g.name} = {shown(g.value)}, not {shown(copy)}."
     return ""
+
+
+#: A number's decimal point moved one or two places: what it is times.
+_TENS = {sympy.Integer(10), sympy.Integer(100), sympy.Rational(1, 10), sympy.Rational(1, 100)}
 
 
 def solved_with(trace: Trace, variant: Variant) -> list[Values] | None:

@@ -10,6 +10,7 @@ slip in the other side's number (0.01 for 0.1) pass as right.
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import sympy
 
@@ -52,3 +53,14 @@ def _solving(x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...]) -> bool:
         return False
     constant = x.as_independent(*unknowns, as_Add=True)[0]
     return constant != 0 and not constant.free_symbols
+
+
+def slip_exact(trace, pairs: list) -> bool:
+    """Whether ``pairs`` (a line that holds for the problem) sets a whole number of one or two
+    figures as written (``v = 3``) that holds for the problem only at that number's figures
+    (3.45 is 3 at one figure) and exactly in the student's world after a slip (v = 3 there):
+    the number is the slip's, worked exactly, not the true value rounded; the line is carried."""
+    if trace.world is None or not any(_WHOLE.match(student(t.strip())) for p in pairs for t in p.text.split(" = ")):
+        return False
+    exact = [replace(p, tol=1e-6, own_figures=True) for p in pairs]
+    return trace.holds(exact, trace.world) and not trace.holds(exact, trace.truth)

@@ -101,11 +101,14 @@ SCALED = ": it holds with one term's factor changed (a slip in substituting or r
 _FACTORS = (sympy.Integer(0), *(f for k in range(2, 13) for f in (sympy.Integer(k), sympy.Rational(1, k))))
 
 
-def term_scaled(ctx, bad: Pair, holds: Holds) -> sympy.Expr | None:
+def term_scaled(ctx, bad: Pair, holds: Holds, prefer: frozenset = frozenset()) -> sympy.Expr | None:
     """The relation ``bad`` stands for where it holds with exactly one of its terms in letters
     dropped or scaled by a whole number or its inverse (``u = x + 2x + eu`` from ``u = x + 2y``,
     ``y = x + eu``: the eu not doubled); None otherwise. Lines of three terms or more, as a
-    sign lost (:func:`.slipnames.sign_flipped`); a term of numbers only is arithmetic."""
+    sign lost (:func:`.slipnames.sign_flipped`); a term of numbers only is arithmetic. Where
+    several such changes make it hold (``4u = 4x + 5x + u/2`` holds with the u/2 taken five
+    times, the 4u halved or the 4x taken four times), the one change by a factor in ``prefer``
+    (:func:`substituted_factors`: the coefficient of a name put in for) is what was done."""
     if bad.raw is None:
         return None
     terms = [sympy.Add.make_args(x) for x in bad.raw]
@@ -121,8 +124,26 @@ def term_scaled(ctx, bad: Pair, holds: Holds) -> sympy.Expr | None:
                 raw[i] = side + (k - 1) * term
                 left, right = (ctx.in_unknowns(x) for x in raw)
                 if holds(replace(bad, left=left, right=right, raw=(raw[0], raw[1]))):
-                    found.append(left - right)
-    return found[0] if len(found) == 1 else None
+                    found.append((k, left - right))
+    if len(found) > 1:
+        found = [f for f in found if f[0] in prefer]
+    return found[0][1] if len(found) == 1 else None
+
+
+def substituted_factors(held: list[Pair], bad: Pair, U: tuple) -> frozenset:
+    """The factors a slip in putting a name in for another takes one term by: the coefficient
+    (and its inverse) of each unknown of the last relations held that ``bad`` no longer has,
+    the name substituted away (5 for ``y`` in ``4u = 4x + 5y``, ``y = x + u/2``)."""
+    gone = set().union(*(p.difference.free_symbols for p in held[-4:])) & set(U)
+    gone -= bad.difference.free_symbols
+    out = set()
+    for p in held[-4:]:
+        F = sympy.expand(p.difference)
+        for y in gone:
+            c = abs(F.coeff(y, 1))
+            if c.is_Rational and c not in (0, 1):
+                out |= {c, 1 / c}
+    return frozenset(out)
 
 
 def speed_of_reversed(trace, pairs: list[Pair]) -> bool:
