@@ -236,7 +236,7 @@ def nonlinear_roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[
         return [{u: _real(z) for u, z in r.items()} for r in found]
     try:
         roots = sympy.solve(eqs, list(U), dict=True, rational=False)
-    except (NotImplementedError, ValueError, TypeError, mpmath.NoConvergence):  # 10^22 as a speed: no root found
+    except (NotImplementedError, ValueError, TypeError, mpmath.libmp.NoConvergence):  # 10^22 as a speed: no root found
         return []
     return [r for r in roots if set(r) == set(U)]
 
