@@ -92,7 +92,6 @@ def note(trace: Trace, stated: Stated, line: Read, status: str | None) -> None:
     head = stated.head if goes_on else exprs[0]
     if head is None or not _quantity(trace, head):
         stated.head = None
-        _solved(trace, stated, exprs[0] - exprs[-1], status)  # 14 - 2 = 5e: the student's e
         return
     stated.head = head
     last = exprs[-1]
@@ -109,21 +108,6 @@ def note(trace: Trace, stated: Stated, line: Read, status: str | None) -> None:
         stated.written.pop(head, None)
 
 
-def _solved(trace: Trace, stated: Stated, F: sympy.Expr, status: str) -> None:
-    """A relation in one unknown and numbers (``14 - 2 = 5e``) states that unknown's value."""
-    x = trace.ctx.in_unknowns(F)
-    if not x.free_symbols or not x.free_symbols <= set(trace.U) or len(x.free_symbols) != 1:
-        return
-    (u,) = x.free_symbols
-    if u in stated.values or len(stated.values) < MAX_KEPT:
-        slope = sympy.diff(x, u)
-        if slope.free_symbols or slope == 0:
-            return  # not of the first degree in it
-        stated.values[u] = sympy.nsimplify(-x.subs(u, 0) / slope)
-        stated.written.pop(u, None)
-        stated.moved = stated.moved or status != "correct"
-
-
 def holds_with_own(trace: Trace, stated: Stated, line: Read) -> bool:
     """Whether ``line`` holds once the student's own values stand for the quantities they
     stated, in the slip's world or for the problem (see the module's words)."""
@@ -136,7 +120,7 @@ def holds_with_own(trace: Trace, stated: Stated, line: Read) -> bool:
     worlds = [w for w in (trace.world, trace.truth) if w is not None]
     if not finds:
         pairs = trace.pairs(replace(line, exprs=put))
-        return (put != exprs and any(trace.holds(pairs, w) for w in worlds)) or _put_back(trace, stated, line)
+        return put != exprs and any(trace.holds(pairs, w) for w in worlds)
     rest = replace(line, sides=line.sides[1:], exprs=put[1:])  # each step after the first side
     if not any(trace.holds(trace.pairs(rest), w) for w in worlds):
         return False
@@ -146,55 +130,17 @@ def holds_with_own(trace: Trace, stated: Stated, line: Read) -> bool:
     return _law(trace, stated, line)
 
 
-def _true_numbers(trace: Trace, stated: Stated) -> dict[str, str]:
-    """Each number the student stated for a quantity, as written, and that quantity's value for
-    the problem (where the two differ)."""
-    out = {}
-    pt, truth = trace.pts[0], trace.truth[0]
-    for q, written in stated.written.items():
-        v = number_of(trace.ctx.in_unknowns(q).xreplace(pt).xreplace(truth))
-        if v is not None and abs(v.imag) <= 1e-12 and abs(v.real - float(written)) > 1e-9 * max(abs(v.real), 1):
-            out[written] = f"({v.real!r})"
-    return out
-
-
-def _with_numbers(text: str, numbers: dict[str, str]) -> str:
-    for written, true in numbers.items():
-        text = re.sub(rf"(?<![\w.]){re.escape(written)}(?![\w.]|\d)", true, text)
-    return text
-
-
-def _put_back(trace: Trace, stated: Stated, line: Read) -> bool:
-    """Whether ``line`` (``14 - 2 = e(5 - 0)`` after ``v_B = 14``) is true for the problem once
-    each number the student stated for a quantity is put back as that quantity's value
-    (``6 - 2 = e(5 - 0)``): a law worked with the student's own numbers."""
-    numbers = _true_numbers(trace, stated)
-    if not numbers or not line.exprs:
-        return False
-    sides = [_with_numbers(side, numbers) for side in line.sides]
-    if sides == list(line.sides):
-        return False
-    names = Open({n: s for n, (s, _d) in trace.ctx.equation_names().items()})
-    exprs = list(line.exprs)
-    for i, (text, was) in enumerate(zip(sides, line.sides, strict=True)):
-        if text == was:
-            continue
-        try:
-            exprs[i] = read_side(rewrite(text, set(names.known)), names, i == 0, i == len(sides) - 1)
-        except (ParseError, ValueError, TypeError, RecursionError):
-            return False
-    if names.placeholders:
-        return False
-    fixed = replace(line, sides=tuple(sides), exprs=tuple(exprs))
-    return trace.holds(trace.pairs(fixed), trace.truth)
-
-
 def _law(trace: Trace, stated: Stated, line: Read) -> bool:
     """Whether the first step of ``line`` (the quantity found = its working in numbers) is a
     law: true for the problem once each number the student stated for a quantity is put back
     as that quantity's value for the problem."""
     exprs, sides = line.exprs or (), line.sides
-    text = _with_numbers(sides[1], _true_numbers(trace, stated))
+    text, pt, truth = sides[1], trace.pts[0], trace.truth[0]
+    for q, written in stated.written.items():
+        v = number_of(trace.ctx.in_unknowns(q).xreplace(pt).xreplace(truth))
+        if v is None or abs(v.imag) > 1e-12:
+            continue
+        text = re.sub(rf"(?<![\w.]){re.escape(written)}(?![\w.]|\d)", f"({v.real!r})", text)
     if text == sides[1]:
         return False
     value = side_value(text)
