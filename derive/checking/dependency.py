@@ -190,5 +190,10 @@ class Depending:
         note(trace, self._stated(), line, status)
 
     def _holds_with_stated(self, line: Read) -> bool:
+        """Whether ``line``, false for the problem, holds with the student's values put in (a
+        line true for the problem that the slip does not move, ``v_A = sqrt(4.5^2 + 12^2)``
+        after the restitution reversed made -4.5 into 4.5, is correct)."""
         trace: Any = self
+        if not line.exprs or trace.holds(trace.pairs(line), trace.truth):
+            return False
         return holds_with_own(trace, self._stated(), line)
