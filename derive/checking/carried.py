@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 import sympy
 
 from derive.checking import cofunctions, misread, reworld, signslips, slipnames, slipworld, workedslips
+from derive.checking.dependency import exact_in_world
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
@@ -47,7 +48,7 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
     if trace.world is None or any(p.difference.free_symbols & U for p in pairs):
         wrote = bool(decimals(line.sides[:-1]) & trace.wrong_values) and trace.world is not None
         moved = wrote and reworld.moved(trace, pairs, written_wrong=True) and trace._moved(pairs)  # values it moves
-        return reworld.nearer_the_slip(trace, line, pairs) or moved
+        return reworld.nearer_the_slip(trace, line, pairs) or moved or exact_in_world(trace, pairs)
     m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
     if not m or m.group(3):
         return False

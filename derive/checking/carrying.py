@@ -8,7 +8,6 @@ number carried on.
 
 from __future__ import annotations
 
-import functools
 import re
 from dataclasses import replace
 from decimal import Decimal
@@ -17,6 +16,7 @@ import sympy
 
 from derive.checking import figures, wholesides
 from derive.checking.context import Context
+from derive.checking.dependency import GOES_ON, Depending, side_value
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read
 from derive.checking.naming import Open, read_side, rewrite
@@ -29,12 +29,6 @@ from derive.problem.expr import ParseError
 Line = Read
 
 
-#: A line that goes on from the one above: "=" first, after any markup that opens it (a list's
-#: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing).
-GOES_ON = re.compile(
-    r"\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)"
-)  # one $ a step: no backtracking
-
 #: A value in the symbolic givens as written: ``5u``, ``-4u/3``, ``0.5mu``.
 _TERM = re.compile(r"^[-+]?((?:\d+\.?\d*)[A-Za-z]{1,2}(?:/\d+)?)$")
 
@@ -44,18 +38,6 @@ def together(G: sympy.Expr, U: tuple[sympy.Symbol, ...]) -> bool:
     x = sympy.expand(G)
     pair = [u for u in U if x.has(u)]
     return len(pair) == 2 and sympy.expand(x - (pair[0] - pair[1])) in (0, -2 * (pair[0] - pair[1]))
-
-
-@functools.lru_cache(maxsize=4096)
-def side_value(text: str) -> float | None:
-    """The value of a side of numbers only, read again (None where it does not read); kept,
-    as a line's pairs are made again at each verdict."""
-    try:
-        x = read_side(rewrite(text, set()), Open({}), True, True)
-    except (ParseError, ValueError, TypeError, RecursionError):
-        return None
-    v = number_of(x) if not x.free_symbols else None
-    return v.real if v is not None and abs(v.imag) < 1e-12 else None
 
 
 #: A number in powers of ten as written: ``4.20 * 10^(-4)``, ``4.20e-4``.
@@ -102,7 +84,7 @@ def _per_letter_slack(side: str, data: set) -> float:
     return slack / abs(value) if value and slack else 0.0
 
 
-class Carrying:
+class Carrying(Depending):
     """The numbers and values the student got wrong so far, and the tests that use them."""
 
     ctx: Context
@@ -157,6 +139,7 @@ class Carrying:
 
     def _note(self, line: Line, status: str) -> None:
         """What a relation judged ``status`` leaves for the lines after it."""
+        self._note_stated(line, status)  # the value its head comes to (:mod:`.dependency`)
         held = status in ("correct", "carried")
         pairs = self.pairs(line) if held else []
         if status == "correct":  # "(0.150 - 70.0)/(70.15) * 35.0": numbers the student has right
@@ -262,7 +245,10 @@ class Carrying:
                 return
 
     def _with_own_values(self, line: Line) -> bool:
-        """Whether ``line`` holds with the values the student got wrong earlier put in."""
+        """Whether ``line`` holds with the values the student got wrong earlier put in (as
+        their lines stated them, :mod:`.dependency`, or as :meth:`_own_value` kept them)."""
+        if self._holds_with_stated(line):
+            return True
         worked = {n: y for n, x in self.said.items() if n not in self.own and (y := x.xreplace(self.wrong_forms)) != x}
         own = {**self.own, **worked}  # a result said right, worked on with a form the student got wrong
         if not own or not line.exprs:

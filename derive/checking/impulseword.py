@@ -29,26 +29,26 @@ _IMPULSE = re.compile(
 )
 
 
-def _impulse(ctx) -> sympy.Symbol | None:
-    """The chain's one impact impulse (None where it has none, or several)."""
-    found = [
-        st["results"]["J_n"]
-        for st in getattr(ctx.problem, "stages", ())
-        if st.get("type") == "impact" and "J_n" in st.get("results", {})
-    ]
-    return sympy.Symbol(found[0]) if len(found) == 1 else None
+def _impulse(ctx, words: str = "") -> sympy.Symbol | None:
+    """The chain's impact impulse the words say: its one impact's (None where it has none); in
+    a chain of several impacts, each has an impulse, named in its results or not, so the word
+    alone says none of them, but "from the wall" (the ground, the floor) says the one impact
+    with a fixed body, where there is one."""
+    impacts = [st for st in getattr(ctx.problem, "stages", ()) if st.get("type") == "impact"]
+    if len(impacts) > 1 and re.search(r"\b(?:wall|ground|floor)\b", words, re.I):
+        impacts = [st for st in impacts if (st.get("B") or {}).get("fixed")]
+    found = [st["results"]["J_n"] for st in impacts if "J_n" in st.get("results", {})]
+    return sympy.Symbol(found[0]) if len(found) == 1 and len(impacts) == 1 else None
 
 
 def impulse_said(ctx, read: list, said: dict) -> dict[sympy.Symbol, sympy.Expr]:
     """The student's name for the impulse in words, as the chain's one impact impulse (signed
     as the first line it is worked out on ends); empty where the chain has no one impulse."""
-    J = _impulse(ctx)
-    if J is None:
-        return {}
     for _r, sides, exprs in read:
         p = exprs[0]
         if p.is_Symbol and p.name.startswith(PREFIX) and p not in said and _IMPULSE.fullmatch(sides[0]):
-            return {p: -J if sides[-1].strip()[:1] in "-−" else J}
+            J = _impulse(ctx, sides[0])
+            return {p: -J if sides[-1].strip()[:1] in "-−" else J} if J is not None else {}
     return {}
 
 
@@ -60,7 +60,7 @@ def impulse_sign(ctx, item: Item, sides, exprs: list, holds: Callable[[list], bo
     """``item`` (a wrong line of the impulse, not yet named) named ``b_sign`` where a side of
     numbers holds with the sign before one of its numbers changed (``0.2(35 - 28)`` for
     ``0.2(35 + 28)``: the rebound put in as a speed, its direction lost, with down positive)."""
-    J = _impulse(ctx)
+    J = _impulse(ctx, sides[0])
     said = _IMPULSE.fullmatch(sides[0]) is not None or (J is not None and exprs[0] == J)
     if item.status != "wrong" or item.slip or item.again or not said or len(exprs) != len(sides):
         return item

@@ -161,7 +161,8 @@ def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
 _DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
 #: An arrow after a value that points each way (``0.025 m/s $\leftarrow$``, ``0.6 ft/s ←``).
 _ARROW = {
-    "left": r"←|⟵|<-{1,2}(?!>)|\\(?:long)?leftarrow\b",
+    # a left arrow before words that say no way (``3 m/s <- speed of B after``, ``← A's``) points at a note
+    "left": r"(?:←|⟵|<-{1,2}(?![->])|\\(?:long)?leftarrow\b)(?!\s*(?!(?:to\s+the\s+)?(?:left|west|back)\w*)[A-Za-z])",
     # a right arrow with more working after it (``0.6 ft/s -> +ve so …``, ``-> v = …``) is "so", not
     # a way; one before words (``7 m/s → and …``, ``→ (to the right)``) is still the way
     "right": r"(?:→|⟶|(?<![<-])-{1,2}>|\\(?:long)?rightarrow\b)"

@@ -16,7 +16,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking import letterslips, misread, slipnames
-from derive.checking.carrying import GOES_ON
+from derive.checking.dependency import GOES_ON
 from derive.checking.slipnames import Holds, Previous, same_but_number
 from derive.checking.worlds import Pair
 
