@@ -21,11 +21,6 @@ def test_the_integral_of_the_force_is_the_impulse(typed: str) -> None:
     assert [r.sides for r in read_relations(typed)] == [("impulse", "0.2(4.4)")]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="found at the merge of 2026-11-28 (seventh session): in this chain of two impulses (the "
-    "impact's and the wall's) the word 'impulse' in stage 1 is matched to the wall's J_w; not fixed",
-)
 def test_the_impulse_as_an_integral_is_judged() -> None:
     work = "e = (2.9 - 2)/(3 + 1.5) = 0.2\nimpulse on B: ∫F dt = 0.2(2.9 + 1.5) = 0.88 N s\n"
     assert worst_lines(PROBLEM, work)[2][0] == "correct"
