@@ -27,7 +27,7 @@ import sympy
 from derive.checking.naming import PREFIX, Open
 
 #: suvat's letters as the reader keeps a name of the student's own.
-LETTERS = {k: sympy.Symbol(PREFIX + k) for k in "uvsa"}
+LETTERS = {k: sympy.Symbol(PREFIX + k) for k in "uvsah"}
 
 
 def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> tuple[list, list[str]]:
@@ -37,24 +37,27 @@ def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> t
     put back as the problem states it)."""
     stages = getattr(ctx.problem, "stages", ())
     fall = stages[0] if stages and stages[0].get("type") == "fall" else None
-    if fall is None or LETTERS["v"] in said:
+    landing = sympy.Symbol(fall["result"]) if fall is not None else None
+    if fall is None or said.get(LETTERS["v"], landing) != landing:  # v said to be another quantity
         return read, []
     given = {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
     start = sympy.Symbol(fall["speed"]) if fall.get("speed") else sympy.Integer(0)
     g = sympy.Symbol("g") if sympy.Symbol("g") in given else None
-    meaning = {"u": start, "v": sympy.Symbol(fall["result"]), "s": sympy.Symbol(fall["height"]), "a": g}
+    height = sympy.Symbol(fall["height"])
+    meaning = {"u": start, "v": landing, "s": height, "h": height, "a": g}
     letters = {LETTERS[k]: x for k, x in meaning.items() if x is not None}
     chain_u = sympy.Symbol("u")
     if chain_u not in given and "u" in meaning:
         letters[chain_u] = start  # the chain's u is its impact's result: the student's is suvat's
-    allowed = set(letters) | given
+    allowed = set(letters) | given | {landing}  # v_1 = … in the chain's own name for the landing speed
     n = 0
     for _r, _sides, exprs in read:
-        if not set().union(*(x.free_symbols for x in exprs)) <= allowed:
+        restated = len(exprs) == 2 and exprs[0].is_Symbol and not exprs[1].free_symbols  # "e = 0.7" beside g
+        if not set().union(*(x.free_symbols for x in exprs)) <= allowed and not restated:
             break
         n += 1
     opening = read[:n]
-    if not any(LETTERS["v"] in x.free_symbols for _r, _s, ex in opening for x in ex):
+    if not any({LETTERS["v"], landing} & x.free_symbols for _r, _s, ex in opening for x in ex):
         return read, []
 
     def put(sign: int) -> list:

@@ -391,7 +391,8 @@ GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)
 #: only words are a Greek letter's or a function's names: mathematics).
 _MATH_NAME = "|".join(sorted(GREEK | FUNCTIONS | {"sqrt", "sec", "cosec", "cot"}, key=len, reverse=True))
 REMARK_END = re.compile(
-    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*)$"
+    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*"
+    r"|\(\s*up\s*\)\s*[.:;]?\s*)$"  # "28 m/s (up)": a way in words of two letters, as "(down)" is
 )
 
 
@@ -426,9 +427,11 @@ _LAWS = frozenset(
 
 def quoted_law(sides: tuple[str, ...]) -> bool:
     """Whether a relation of two sides is a law of motion quoted in its textbook letters (either
-    side first): a formula stated before it is used."""
+    side first), after words that lead to it or not (``using v^2 = u^2 + 2as``): a formula stated
+    before it is used."""
     if len(sides) != 2:
         return False
+    sides = (re.sub(r"^\s*(?:[A-Za-z]{2,}[,:]?\s+)+", "", sides[0]), sides[1])  # "using v^2 = …": words before it
     plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
     return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
 
