@@ -86,9 +86,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
             exprs, sides = own.defined_rest(name[0], (exprs, sides), (true_defs, slips), _number, own.from_givens(ctx))
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
-        if stage_given(ctx, exprs) or given_turned(
-            ctx, r.written, exprs, (true_defs, values)
-        ):  # the wall's e; a = -9.8, up +
+        if stage_given(ctx, exprs) or given_turned(ctx, r.written, exprs, (true_defs, values)):  # e; a = -9.8, up +
             items.append(
                 Item("line", str(r.line), r.written, "correct", "", "A given of a stage.", "the chain's values")
             )
