@@ -26,6 +26,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking.cancelledmass import cancelled_mass
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
 from derive.checking.reducedmass import is_reduced_mass
@@ -241,7 +242,7 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
             time = "1" if name[0] == "u" else "2"  # v_red, u_car: the habit's u before, v after
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
-            out[name] = e
+            out[name] = e / per if kind == "p" and (per := cancelled_mass(ctx, text)) is not None else e
     return out
 
 
@@ -326,11 +327,12 @@ def words_for(e: sympy.Expr) -> str | None:
     bodies = sorted({n[2] for n in speeds})
     when = "before" if speeds[0][3] == "1" else "after"
     powers = [a for a in sympy.preorder_traversal(e) if isinstance(a, sympy.Pow)]
-    if any(a.exp == -1 for a in powers):
+    per = [a.base for a in powers if a.exp == -1]
+    if per and [getattr(p, "name", "") for p in per] != ["m"]:
         return None  # (m_A v_A2 + m_B v_B2)/(m_A + m_B): the common velocity, said as such
     kind = "kinetic energy" if any(a.exp == 2 and a.base.is_Symbol for a in powers) else "momentum"
     whose = "of A and B" if len(bodies) == 2 else f"of {bodies[0]}"
-    return f"the {kind} {whose} {when} the impact"
+    return f"the {kind} {whose} {when} the impact" + (" over m (the m cancelled)" if per else "")
 
 
 def said_read(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:
