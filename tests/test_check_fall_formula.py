@@ -34,3 +34,12 @@ def test_the_law_in_the_chains_name_and_h() -> None:
 def test_a_speed_with_up_in_brackets() -> None:
     got = lines(PROBLEM, "v_2 = sqrt(2(9.8)(1.4)) = sqrt(27.44) = 5.24 m/s (up)\n")
     assert got[1][0] == "correct"
+
+
+def test_a_later_height_h_is_not_the_falls() -> None:
+    # the rise after the bounce in h: 5.24^2 = 27.46, h = 27.46/19.6 = 1.40 m (the rebound height)
+    work = (
+        "v^2 = u^2 + 2as = 0 + 2(9.8)(2) = 39.2\nv = 6.26 m/s\nup +ve: 0 = 5.24^2 - 2(9.8)h\nh = 27.46/19.6 = 1.40 m\n"
+    )
+    got = lines(PROBLEM, work)
+    assert got[3][0] == "correct" and got[4][0] == "correct"
