@@ -31,6 +31,7 @@ from derive.checking.report import Item, merged
 from derive.checking.slipnames import COPIED, copied_into_working
 from derive.checking.stageslips import (
     StageMistakes,
+    given_turned,
     named_arithmetic,
     numbers_written,
     own_root,
@@ -85,7 +86,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
             exprs, sides = own.defined_rest(name[0], (exprs, sides), (true_defs, slips), _number, own.from_givens(ctx))
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
-        if stage_given(ctx, exprs):  # "e = 0.7" for the wall's e: a stage's own given
+        if stage_given(ctx, exprs) or given_turned(ctx, r.written, exprs, (true_defs, values)):  # e; a = -9.8, up +
             items.append(
                 Item("line", str(r.line), r.written, "correct", "", "A given of a stage.", "the chain's values")
             )

@@ -41,15 +41,88 @@ def _impulse(ctx, words: str = "") -> sympy.Symbol | None:
     return sympy.Symbol(found[0]) if len(found) == 1 and len(impacts) == 1 else None
 
 
+def _chain_expr(text: str, values: dict) -> sympy.Expr | None:
+    """A stage's given (``"-v_B"``, ``"s_B"``) in the chain's names, None where it is not one."""
+    words = set(re.findall(r"[A-Za-z_]\w*", text))
+    names = {str(k) for k in values}
+    if not words or not words <= names:
+        return None
+    try:
+        return sympy.sympify(text, locals={w: sympy.Symbol(w) for w in words})
+    except (sympy.SympifyError, SyntaxError, TypeError):
+        return None
+
+
+def _stage_impulse(st: dict, values: dict) -> sympy.Expr | None:
+    """An impact stage's impulse along n on B (derive's J_n) in the chain's names: its result
+    where the stage names it, else worked from a body's mass and its velocities before and after."""
+    results = st.get("results", {})
+    if "J_n" in results:
+        return sympy.Symbol(results["J_n"])
+    given = st.get("given", {})
+    for body, sign in (("B", 1), ("A", -1)):
+        parts = []
+        for name in (f"m_{body}", f"v_{body}1", f"v_{body}2"):
+            if name in results:
+                parts.append(sympy.Symbol(results[name]))
+            elif isinstance(given.get(name), str):
+                parts.append(_chain_expr(given[name], values))
+            else:
+                parts.append(None)
+        if None not in parts:
+            m, before, after = parts
+            return sign * m * (after - before)
+    return None
+
+
+def _by_value(ctx, exprs: tuple) -> sympy.Expr | None:
+    """In a chain of several impacts, the one impulse whose size is the number the line ends with."""
+    stages = [st for st in getattr(ctx.problem, "stages", ()) if st.get("type") == "impact"]
+    values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
+    last = exprs[-1]
+    if len(stages) < 2 or last.free_symbols:
+        return None
+    matched = []
+    for st in stages:
+        J = _stage_impulse(st, values)
+        size = J.xreplace(values) if J is not None else None
+        if size is not None and not size.free_symbols and abs(abs(last) - abs(size)) <= 1e-2 * abs(size):
+            matched.append(J)
+    return matched[0] if len(matched) == 1 else None
+
+
 def impulse_said(ctx, read: list, said: dict) -> dict[sympy.Symbol, sympy.Expr]:
     """The student's name for the impulse in words, as the chain's one impact impulse (signed
-    as the first line it is worked out on ends); empty where the chain has no one impulse."""
+    as the first line it is worked out on ends); empty where the chain has no one impulse. In a
+    chain of several impacts, the impulse is the one whose size the line's number is (the impact's
+    on B, worked from its velocities, where only the wall's is a result; the one with a fixed body
+    where the words say "from the wall"), or none."""
+    several = sum(st.get("type") == "impact" for st in getattr(ctx.problem, "stages", ())) > 1
+    J = None if several else _impulse(ctx)
+    named: set[str] = set()  # the chain's names the lines before have used
     for _r, sides, exprs in read:
         p = exprs[0]
         if p.is_Symbol and p.name.startswith(PREFIX) and p not in said and _IMPULSE.fullmatch(sides[0]):
-            J = _impulse(ctx, sides[0])
-            return {p: -J if sides[-1].strip()[:1] in "-−" else J} if J is not None else {}
+            J = (_impulse(ctx, sides[0]) or _by_value(ctx, exprs) or _by_place(ctx, named)) if several else J
+            if J is None:
+                return {}
+            return {p: -J if sides[-1].strip()[:1] in "-−" else J}
+        named |= {str(s) for x in exprs for s in x.free_symbols}
     return {}
+
+
+def _by_place(ctx, named: set[str]) -> sympy.Expr | None:
+    """The impulse of the impact a line stands in, where its number is no impulse's (a slip): the
+    first impact stage from the last stage whose found values the lines before it name."""
+    stages, specs = list(getattr(ctx.solution, "stages", ())), list(getattr(ctx.problem, "stages", ()))
+    values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
+    k = 0
+    for j, st in enumerate(stages):
+        after = (stages[j + 1].values if j + 1 < len(stages) else ctx.solution.values) or {}
+        if ({str(n) for n in after} - {str(n) for n in st.values or {}}) & named:
+            k = j
+    impacts = [spec for spec in specs[k:] if spec.get("type") == "impact"]
+    return _stage_impulse(impacts[0], values) if impacts and len(specs) == len(stages) else None
 
 
 #: A number in a side of numbers with the sign before it (``- 28`` in ``0.2(35 - 28)``).

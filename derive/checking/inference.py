@@ -18,7 +18,6 @@ from derive.checking.componentlabels import body_labels
 from derive.checking.context import DEG, Context
 from derive.checking.conventions import signed_by_words
 from derive.checking.frames import (
-    axes_said,
     axis_names,
     declared_axes,
     flipped,
@@ -48,6 +47,7 @@ from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
+from derive.checking.tangentsense import in_student_sense
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.checking.velocitywords import along_the_line
 from derive.checking.wordlabels import word_label
@@ -143,13 +143,14 @@ def read_lines(
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
     lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
+    lines, axes_words = in_student_sense(ctx, lines, pt, truth, axes)  # t the other way round: a frame
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
         n for r in relations for n, c in _GREEK_LETTERS.items() if c in r.written
     }
     split = sorted(greek & GREEK - known)
     split = [w for w in split if all(c in problem for c in w)]  # \mu as m u, where m and u are given
-    return lines, said_read(meanings, declared, inferred, s, sign) + axes_said(axes) + (
+    return lines, said_read(meanings, declared, inferred, s, sign) + axes_words + (
         [f"Read from the relations: {', '.join(said)}."] if said else []
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 

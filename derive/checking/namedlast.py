@@ -54,7 +54,9 @@ _AXIS = re.compile(r"\b(?:line\s+of\s+cent(?:re|er)s|perpendicular|across|tangen
 def speed_along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     """An oblique impact's component named as a speed: "Let U be the speed of A before (along
     XY)", "B's speed along the line of centres after be w"; and a body's speed where it moves
-    along the line of centres (its other component given as 0): "A's speed before be u"."""
+    along the line of centres (its other component given as 0): "A's speed before be u"; and
+    elsewhere a body's speed before with no line said, the given speed it is resolved from ("let
+    A's speed before the impact be v": v cos 30 along n, whatever the habits make of v)."""
     if not ctx.problem.oblique or not re.search(r"\bspeeds?\b", line, re.I):
         return {}
     out: dict[str, sympy.Expr] = {}
@@ -63,9 +65,10 @@ def speed_along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
         text = re.sub(r"\bspeed(s?)\b", lambda m: "velocities" if m.group(1) else "velocity", clause, flags=re.I)
         if _AXIS.search(text):
             found = in_words(text, ctx)
-        else:  # where the body moves along the line of centres only
+        else:  # where the body moves along the line of centres only; else its speed, the given's size
             found = in_words(f"{text.rstrip(' .')} along the line of centres", ctx)
-            found = {k: x for k, x in found.items() if str(x)[:-1] + "t" in zero}
+            found = {k: x if str(x)[:-1] + "t" in zero else given_speed(ctx, x) for k, x in found.items()}
+            found = {k: x for k, x in found.items() if x is not None}
         for k, x in found.items():
             out.setdefault(k, x)
     return out
@@ -106,3 +109,13 @@ def _pronoun_said(line: str) -> str:
         return line
     head, tail = line[: first.end()], line[first.end() :]
     return head + _ALONG_IT.sub(lambda m: f"{m[1]} the line of centres", tail)
+
+
+def given_speed(ctx: Context, component: sympy.Expr) -> sympy.Expr | None:
+    """The given speed of the body whose component before along n is ``component`` (``v_A1n`` ->
+    ``v_A1``, where the problem gives A's speed before), else None."""
+    name = str(component)
+    if not name.endswith("1n"):
+        return None
+    speed = ctx.equation_names().get(name[:-1])
+    return None if speed is None else speed[0]

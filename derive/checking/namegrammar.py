@@ -26,6 +26,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking.cancelledmass import cancelled_mass
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
 from derive.checking.reducedmass import is_reduced_mass
@@ -243,7 +244,7 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
             time = "1" if name[0] == "u" else "2"  # v_red, u_car: the habit's u before, v after
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
-            out[name] = e
+            out[name] = e / per if kind == "p" and (per := cancelled_mass(ctx, text)) is not None else e
     return out
 
 
@@ -292,10 +293,14 @@ def _equal(ctx: Context, a: sympy.Expr, b: sympy.Expr) -> bool:
 
 def _primed_in(text: str, stem: str) -> bool:
     """Whether ``stem`` (a rewritten name) is written primed in ``text`` in another spelling
-    (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``)."""
-    loose = r"[_{}()]*".join(re.escape(c) for c in stem.replace("_", ""))
-    pattern = rf"(?<![\w])\(?{loose}[_{{}})]*\s*(?:'|′|’|\\prime|\^\{{?\\prime)"
-    return any(re.search(pattern, t) for t in (text, bracketed_names(text)))  # (v_2')_t is v_2t primed
+    (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``), or with the prime on its base letter (``v'_{Ax}``)."""
+    chars = stem.replace("_", "")
+    loose = r"[_{}()]*".join(re.escape(c) for c in chars)
+    prime = r"(?:'|′|’|\\prime|\^\{?\\prime\}?)"
+    pattern = rf"(?<![\w])\(?{loose}[_{{}})]*\s*{prime}"
+    rest = r"[_{}()]*".join(re.escape(c) for c in chars[1:])  # v'_{Ax}: the prime on the base letter
+    on_letter = rf"(?<![\w\\]){re.escape(chars[:1])}\s*{prime}\s*[_{{(]+\s*{rest}[}})]*(?![\w'′’])"
+    return any(re.search(p, t) for t in (text, bracketed_names(text)) for p in (pattern, on_letter))  # (v_2')_t
 
 
 #: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).
@@ -324,11 +329,12 @@ def words_for(e: sympy.Expr) -> str | None:
     bodies = sorted({n[2] for n in speeds})
     when = "before" if speeds[0][3] == "1" else "after"
     powers = [a for a in sympy.preorder_traversal(e) if isinstance(a, sympy.Pow)]
-    if any(a.exp == -1 for a in powers):
+    per = [a.base for a in powers if a.exp == -1]
+    if per and [getattr(p, "name", "") for p in per] != ["m"]:
         return None  # (m_A v_A2 + m_B v_B2)/(m_A + m_B): the common velocity, said as such
     kind = "kinetic energy" if any(a.exp == 2 and a.base.is_Symbol for a in powers) else "momentum"
     whose = "of A and B" if len(bodies) == 2 else f"of {bodies[0]}"
-    return f"the {kind} {whose} {when} the impact"
+    return f"the {kind} {whose} {when} the impact" + (" over m (the m cancelled)" if per else "")
 
 
 def said_read(meanings: dict, declared: dict, inferred: dict[str, str], sign: int, declared_sign: int) -> list[str]:

@@ -12,6 +12,7 @@ import sympy
 
 from derive.checking import mistakes
 from derive.checking.context import Context
+from derive.checking.numeric import number_of
 from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE
 from derive.errors import InputError
@@ -85,6 +86,27 @@ def stage_given(ctx: Context, exprs) -> bool:
         if g is not None and g.value is not None and not g.value.free_symbols and g.value == exprs[1]:
             return True
     return False
+
+
+#: A line that says which way is positive ("going up, with up positive", "take up as +ve").
+_CONVENTION = re.compile(r"\bpositive\b|\+\s?ve\b|\bas\s+\+|\+\s*(?:is\s+)?(?:up|down)", re.I)
+
+
+def given_turned(ctx: Context, written: str, exprs, subs: tuple[dict, dict]) -> bool:
+    """``a = -9.8`` on a line that takes another way as positive ("going up, with up positive"):
+    a name standing for a given (g, as suvat's a or the student's own ``a = g``) restated in the
+    convention that line takes, its sign turned; a teacher reads it as the next leg's given, not
+    as a slip in the earlier one. ``subs``: the student's names' true values, the chain's."""
+    if len(exprs) != 2 or not isinstance(exprs[0], sympy.Symbol) or exprs[1].free_symbols:
+        return False
+    if not _CONVENTION.search(written):
+        return False
+    defs, values = subs
+    x, y = (number_of(e.xreplace(defs).xreplace(values).xreplace(ctx.unit_subs())) for e in exprs)
+    given = {number_of(values[sympy.Symbol(g.name)]) for g in ctx.problem.givens if sympy.Symbol(g.name) in values}
+    if x is None or y is None or abs(x) < 1e-12 or abs(x + y) > 1e-3 * abs(x):
+        return False
+    return any(v is not None and abs(abs(v) - abs(x)) <= 1e-9 * abs(x) for v in given)
 
 
 def named_arithmetic(item: Item) -> Item:

@@ -37,24 +37,33 @@ def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> t
     put back as the problem states it)."""
     stages = getattr(ctx.problem, "stages", ())
     fall = stages[0] if stages and stages[0].get("type") == "fall" else None
-    if fall is None or LETTERS["v"] in said:
+    landing = sympy.Symbol(fall["result"]) if fall is not None else None
+    if fall is None or said.get(LETTERS["v"], landing) != landing:  # v said to be another quantity
         return read, []
     given = {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ())}
     start = sympy.Symbol(fall["speed"]) if fall.get("speed") else sympy.Integer(0)
     g = sympy.Symbol("g") if sympy.Symbol("g") in given else None
-    meaning = {"u": start, "v": sympy.Symbol(fall["result"]), "s": sympy.Symbol(fall["height"]), "a": g}
+    meaning = {"u": start, "v": landing, "s": sympy.Symbol(fall["height"]), "a": g}
     letters = {LETTERS[k]: x for k, x in meaning.items() if x is not None}
     chain_u = sympy.Symbol("u")
     if chain_u not in given and "u" in meaning:
         letters[chain_u] = start  # the chain's u is its impact's result: the student's is suvat's
-    allowed = set(letters) | given
+    h = sympy.Symbol(PREFIX + "h")  # the height as h, in the law written in the chain's v_1 only (v_1² = u² + 2gh)
+    if any(landing in f and h in f for f in (set().union(*(x.free_symbols for x in ex)) for _r, _s, ex in read[:5])):
+        letters[h] = sympy.Symbol(fall["height"])
+    allowed = set(letters) | given | {landing}  # v_1 = … in the chain's own name for the landing speed
+    others = set(letters) - {LETTERS["v"]}  # the law in v_1: suvat's only beside u, s, a (v_1² = u² + 2as)
     n = 0
-    for _r, _sides, exprs in read:
-        if not set().union(*(x.free_symbols for x in exprs)) <= allowed:
+    for _r, _sides, exprs in read:  # "e = 0.7" beside g on the opening line goes on with it
+        restated = len(exprs) == 2 and exprs[0].is_Symbol and exprs[0] not in letters and not exprs[1].free_symbols
+        free = set().union(*(x.free_symbols for x in exprs))
+        if (not free <= allowed and not restated) or (landing in free and not free & others):
+            break
+        if h in free and landing not in free:  # h beside no v_1: a later height, not the fall's
             break
         n += 1
     opening = read[:n]
-    if not any(LETTERS["v"] in x.free_symbols for _r, _s, ex in opening for x in ex):
+    if not any({LETTERS["v"], landing} & x.free_symbols for _r, _s, ex in opening for x in ex):
         return read, []
 
     def put(sign: int) -> list:
@@ -67,7 +76,7 @@ def fall_letters(ctx, read: list, names: Open, said: dict, holds: Callable) -> t
     score = [sum(bool(holds(sides, exprs)) for _r, sides, exprs in w) for w in (down, up)]
     sign = -1 if score[1] > score[0] else 1
     later = set().union(*(x.free_symbols for _r, _s, ex in read[n:] for x in ex))
-    names.known.update({p.name.lstrip(PREFIX): sign * x for p, x in letters.items() if p not in later})
+    names.known.update({p.name.lstrip(PREFIX): sign * x for p, x in letters.items() if p not in later | {h}})
     used = sorted({p.name.lstrip(PREFIX) for _r, _s, ex in opening for x in ex for p in x.free_symbols} & set(meaning))
     note = "Read " + ", ".join(f"{k} as {sign * meaning[k]}" for k in used if meaning.get(k) is not None) + "."
     return (up if sign < 0 else down) + read[n:], [note]

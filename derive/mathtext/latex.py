@@ -234,7 +234,7 @@ def _product(node: Mul, top: bool) -> str:
     for k, factor in enumerate(node.factors):
         text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
         if k and text and out:
-            gap = {"*": " * ", "·": " * "}.get(gaps[k - 1], gaps[k - 1])
+            gap = {"*": " * ", "·": " * ", "×": " * "}.get(gaps[k - 1], gaps[k - 1])
             if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
                 gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
             elif not gap and out[-1].isalnum() and text[0].isalnum():
@@ -248,14 +248,19 @@ def _dot_product(node: Mul) -> str:
     """Two vectors with a dot between them (``(-\\mathbf{v}_{in})\\cdot\\mathbf{v}_{out}``,
     ``\\vec a \\cdot \\vec b``) as the sum of the products of their components, each named as a
     vector's component is (:func:`.vectors.component_name`): ``-(v_inn v_outn + v_int v_outt)``;
-    "" where it is not that (a unit vector, a number, a product written with ``\\times``)."""
-    if node.gaps != ("·",):
+    with ``\\times`` between them, their cross product in the plane, ``a_n b_t - a_t b_n``; ""
+    where it is not that (a unit vector, a number)."""
+    if node.gaps not in (("·",), ("×",)):
         return ""
     operands = [_vector_operand(f) for f in node.factors]
     if None in operands:
         return ""
     (sa, a), (sb, b) = operands
-    terms = " + ".join(f"{component(a, axis)} {component(b, axis)}" for axis in AXES)
+    if node.gaps == ("×",):  # two plane vectors' cross product: its one component, across the plane
+        n, t = AXES
+        terms = f"{component(a, n)} {component(b, t)} - {component(a, t)} {component(b, n)}"
+    else:
+        terms = " + ".join(f"{component(a, axis)} {component(b, axis)}" for axis in AXES)
     return f"({terms})" if sa * sb > 0 else f"-({terms})"
 
 

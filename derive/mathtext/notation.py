@@ -115,8 +115,9 @@ _STANDARD_FORM = re.compile(
 #: number, a bracket or a name with a subscript (``4 x 12``, ``2 x (3 + 1)``, ``4 x v_A2``, ``e x 4``,
 #: ``v_A x 2``): a student's own x is not written so.
 _X_TIMES = re.compile(r"(?:(?<=[\d)])|(?<=\b[A-Za-z])|(?<=_\w))\s+[xX]\s+(?=[\d(.]|[A-Za-z]\w*_)")
-#: x for times between two numbers typed without spaces, the first a number of its own (not v2x3).
-_X_GLUED = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[xX](?=\.?\d)")
+#: x for times between two numbers typed without spaces, the first a number of its own (not v2x3),
+#: the second bare or alone in brackets (``0.2x(-2)``: not ``3x(v + 1)``, a name's product).
+_X_GLUED = re.compile(r"(?<![\w.])(\d+(?:\.\d+)?)[xX](?=\.?\d|\(\s*[-+−]?\s*\.?\d[\d.]*\s*\))")
 
 
 def glued_times(text: str) -> str:

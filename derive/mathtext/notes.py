@@ -391,46 +391,9 @@ GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)
 #: only words are a Greek letter's or a function's names: mathematics).
 _MATH_NAME = "|".join(sorted(GREEK | FUNCTIONS | {"sqrt", "sec", "cosec", "cot"}, key=len, reverse=True))
 REMARK_END = re.compile(
-    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*)$"
+    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*"
+    r"|\(\s*up\s*\)\s*[.:;]?\s*)$"  # "28 m/s (up)": a way in words of two letters, as "(down)" is
 )
-
-
-#: Laws of motion quoted in their textbook letters before they are used (``v^2 = u^2 + 2as``,
-#: ``v = u + at``, ``s = ut + ½at²``, ``F = ma``): a formula stated, not a claim about the problem,
-#: which a teacher does not mark. Written without spaces or times signs, ``²`` as ``^2``.
-_LAWS = frozenset(
-    {
-        "v^2=u^2+2as",
-        "v^2=u^2-2as",
-        "v^2-u^2=2as",
-        "v=u+at",
-        "v=u-at",
-        "s=ut+1/2at^2",
-        "s=ut-1/2at^2",
-        "s=ut+at^2/2",
-        "s=1/2(u+v)t",
-        "s=(u+v)t/2",
-        "s=(u+v)/2t",
-        "s=((u+v)/2)t",
-        "s=vt-1/2at^2",
-        "F=ma",
-        "v^2=u^2+2gs",
-        "v^2=u^2-2gs",
-        "v=u+gt",
-        "v=u-gt",
-        "s=ut+1/2gt^2",
-        "s=ut-1/2gt^2",
-    }
-)
-
-
-def quoted_law(sides: tuple[str, ...]) -> bool:
-    """Whether a relation of two sides is a law of motion quoted in its textbook letters (either
-    side first): a formula stated before it is used."""
-    if len(sides) != 2:
-        return False
-    plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
-    return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
 
 
 #: A quantity said equal to a number in words, with no ``=`` on the line: "The speed of B after the

@@ -140,7 +140,7 @@ class Parser:
             if tok in (r"\cdot", r"\times", "*", "·"):
                 self.take()
                 factors.append(self.factor())
-                gaps.append("·" if tok in (r"\cdot", "·") else "*")  # a dot: between vectors, their dot product
+                gaps.append({r"\cdot": "·", "·": "·", r"\times": "×"}.get(tok, "*"))  # between vectors: · and ×
             elif tok == "/":
                 self.take()
                 den = self.factor()

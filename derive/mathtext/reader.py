@@ -28,6 +28,7 @@ from derive.mathtext.doing import said_doing
 from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
+from derive.mathtext.laws import quoted_law
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.matrices import matrices
 from derive.mathtext.memories import recalled, stored
@@ -36,7 +37,6 @@ from derive.mathtext.notation import FUNCTIONS, glued_angles
 from derive.mathtext.notes import (
     REMARK_END,
     name_after_words,
-    quoted_law,
     said_is,
     unbold,
     unmarked,
