@@ -1,0 +1,49 @@
+"""A kinetic energy labelled in words before its working: ``KE before: ½(2m)(4)² + ½(3m)(2) =
+19m``, ``Kinetic energy after: …``, ``KE lost: …``. The reader leaves the label out (words before
+a colon), so the line alone is arithmetic and holds; a teacher marks it against the energy the
+label names. :func:`energy_labelled` gives the relation "that energy = the line's first side"
+where it does not hold, so the trace judges the line as the slip it is (a speed not squared, a
+mass left out: ``ke_formula``) and carries the lines worked from it.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+
+from derive.checking.context import Context
+from derive.checking.inference import Read
+from derive.checking.labelled import label_of
+from derive.checking.numeric import decimals
+from derive.checking.worlds import Pair
+
+#: The words of a kinetic energy, and of each instant: before, after, lost.
+_ENERGY = re.compile(r"(?i)(?<![A-Za-z])(?:K\.?\s?E\.?|E_?\{?k\}?|kinetic\s+energy)(?![A-Za-z])")
+_TIMES = (
+    ("T_lost", re.compile(r"(?i)\b(?:lost|loss|lose|decrease|dissipated)\b")),
+    ("T_1", re.compile(r"(?i)\b(?:before|initial(?:ly)?)\b")),
+    ("T_2", re.compile(r"(?i)\b(?:after|final(?:ly)?|afterwards)\b")),
+)
+
+
+def energy_labelled(
+    ctx: Context, line: Read, holds: Callable[[Pair], bool], wrong: frozenset[str] = frozenset()
+) -> Pair | None:
+    """The pair "the energy the label names = the line's first side" where the line is labelled
+    a kinetic energy before, after or lost and that pair does not hold for the problem; None
+    where the line works from a number the student got wrong (``wrong``: it is carried)."""
+    exprs = line.exprs or ()
+    if decimals(line.sides) & wrong:
+        return None
+    label = label_of(line)
+    if len(exprs) < 2 or not label or ":" not in line.written.split(line.sides[0].strip())[0]:
+        return None
+    if not _ENERGY.search(label):
+        return None
+    times = [name for name, word in _TIMES if word.search(label)]
+    derived = ctx.derived()
+    if len(times) != 1 or times[0] not in derived:
+        return None
+    sym = derived[times[0]][0]
+    pair = Pair(f"{label} = {line.sides[0]}", ctx.in_unknowns(sym), ctx.in_unknowns(exprs[0]), 1e-3, (sym, exprs[0]))
+    return None if holds(pair) else pair
