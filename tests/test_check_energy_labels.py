@@ -53,3 +53,22 @@ def test_a_labelled_energy_before_not_squared_is_wrong(said: str) -> None:
 )
 def test_a_labelled_energy_worked_rightly_is_correct(said: str) -> None:
     assert lines(WALL, said + "\n")[1][0] == "correct"
+
+
+def test_an_instant_alone_under_a_kinetic_energy_heading_is_that_energy() -> None:
+    # "## Kinetic energy" then "* before: ½ × 0.150 × 35.0 = 2.63": KE before is 91.875, so the slip;
+    # "* after: ½ × 70.15 × 0.0748² = 0.196" is right.
+    work = (
+        "0.150 x 35.0 = 70.15 V\nV = 0.0748 m/s\n\n## Kinetic energy\n\n"
+        "* before: ½ × 0.150 × 35.0 = 2.63 J\n* after: ½ × 70.15 × 0.0748² = 0.196 J\n"
+    )
+    found = lines(GOALIE, work)
+    assert found[6][0] == "wrong"
+    assert found[7][0] == "correct"
+
+
+def test_an_instant_alone_under_a_momentum_heading_is_not_an_energy() -> None:
+    # "**Momentum**" then "- before: 0.150 × 35.0 = 5.25": arithmetic, right (0.150 x 35.0 = 5.25).
+    work = "**Momentum**\n\n- before: 0.150 × 35.0 = 5.25\n- after: 70.15 × 0.0748 = 5.25\n"
+    found = lines(GOALIE, work)
+    assert found[3][0] == found[4][0] == "correct"

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import replace
 
 from derive.checking.context import Context
 from derive.checking.inference import Read
@@ -24,6 +25,29 @@ _TIMES = (
     ("T_1", re.compile(r"(?i)\b(?:before|initial(?:ly)?)\b")),
     ("T_2", re.compile(r"(?i)\b(?:after|final(?:ly)?|afterwards)\b")),
 )
+
+
+#: A label that is an instant alone (``- before:``, ``* after:``, ``**lost:**``): its quantity is the heading's.
+_INSTANT = re.compile(
+    r"^[-*•+>\s]*(?:\*\*|__)?\s*(?:before|after|lost|loss|initial(?:ly)?|final(?:ly)?)\s*(?:\*\*|__)?$", re.I
+)
+
+
+def under_heading(line: Read, typed: list[str]) -> Read:
+    """``line`` as written under its heading where its label is an instant alone and the heading
+    above the list it is in names a kinetic energy (``**KE**``, then ``- before: ½(2m)(4)² …``):
+    the heading's words put before the label, so the label says the energy."""
+    label = label_of(line)
+    if not label or not _INSTANT.match(label) or not 0 < line.number <= len(typed):
+        return line
+    for row in reversed(typed[: line.number - 1]):
+        row = row.strip()
+        if not row or (re.match(r"[-*•+]\s", row) and "=" in row):
+            continue  # a blank line, or the list's other items
+        if "=" in row or not _ENERGY.search(row):
+            return line
+        return replace(line, written=f"{re.sub(r'[^A-Za-z ]', ' ', row).strip()} {line.written.lstrip(' -*•+>')}")
+    return line
 
 
 def energy_labelled(

@@ -50,7 +50,10 @@ def labelled(
 def of_trace(trace, line: Read) -> Pair | None:
     """:func:`labelled` for the derivation read so far (:class:`.lines.Trace`): against the
     problem's true values, the numbers it wrote wrong known."""
-    return labelled(trace.ctx, line, lambda p: trace.holds([p], trace.truth), frozenset(trace.wrong_values))
+    from derive.checking.energylabels import under_heading
+
+    holds, wrong = (lambda p: trace.holds([p], trace.truth)), frozenset(trace.wrong_values)
+    return labelled(trace.ctx, under_heading(line, getattr(trace, "typed", [])), holds, wrong)
 
 
 def _bare(label: str) -> str:

@@ -69,6 +69,7 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
+    trace.typed = text.splitlines()  # the lines as typed: a label's heading (KE, then "- before: …")
     said = body_words(text, ctx)
     lines, notes = read_lines(ctx, said, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     lines = [as_typed(line, text, said) for line in lines]

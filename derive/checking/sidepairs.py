@@ -5,10 +5,11 @@ formula, the formula is that working, and the working comes to 91.5. Each side i
 last number at that number's figures (:meth:`.lines.Trace.pairs`), but a number's figures are
 too coarse to tell two formulas apart whose values are near (the energy lost, 91.68 J, and
 ½ m (u − v')², 91.48 J, are both 91.5 at the slack of a line of three-figure numbers). So two
-sides next to each other, at least one of them in letters, are compared at their own slack:
-none between letters (they are exact), the last digits of the decimals written in a side of
-numbers. A line may be right only where its sides are equal for the problem in the student's
-own names, not merely each near the number it ends in.
+sides next to each other, both in letters, are compared with each other at their own slack
+(none: letters are exact). A line may be right only where its sides are equal for the problem
+in the student's own names, not merely each near the number it ends in. A side of numbers is
+still put to the number the line ends in only: its decimals may be the student's own rounded
+values (4.0 for 5 cos 37.6° at two figures), judged where they are made.
 """
 
 from __future__ import annotations
@@ -20,11 +21,11 @@ from derive.checking.worlds import Pair
 
 def adjacent(trace, sides: tuple[str, ...], exprs: list[sympy.Expr], raw: list[sympy.Expr]) -> list[Pair]:
     """Each side next to the one after it, but the last (the number the line ends in), where
-    either is in letters: judged at the slack of the two sides' own decimals."""
+    both are in letters: judged at the slack of the two sides' own decimals (none, mostly)."""
     out = []
     for i in range(len(sides) - 2):
-        if not (raw[i].free_symbols or raw[i + 1].free_symbols):
-            continue  # two sides of numbers: the arithmetic, judged against the number it ends in
+        if not (raw[i].free_symbols and raw[i + 1].free_symbols):
+            continue  # a side of numbers: its rounded decimals judged against the number it ends in
         tol = max(trace._tolerance(sides, raw, (i, i + 1), ""), 1e-9)
         out.append(Pair(f"{sides[i]} = {sides[i + 1]}", exprs[i], exprs[i + 1], tol, (raw[i], raw[i + 1]), True))
     return out
