@@ -13,6 +13,14 @@ import sympy
 
 from derive.checking.naming import PREFIX
 from derive.checking.report import Item
+from derive.checking.stageslips import numbers_written
+
+
+def worked_wrong(sides: tuple[str, ...], wrong: set[str], where: tuple[int, list, dict, list[Item]]) -> bool:
+    """Whether a chain's line right for the problem is worked from a number the student got wrong
+    (``wrong``, written in its ``sides``) or uses a name solved from a wrong or carried relation
+    (:func:`solved_from_wrong`, ``where`` = its line, the relations read, the names, the items)."""
+    return bool(numbers_written(sides, set(), working=True, small=True) & wrong) or solved_from_wrong(*where)
 
 
 def solved_from_wrong(line: int, read: list, mapping: dict, items: list[Item]) -> bool:

@@ -14,7 +14,6 @@ from dataclasses import replace
 
 from derive.checking.context import Context
 from derive.checking.inference import Read
-from derive.checking.labelled import label_of
 from derive.checking.numeric import decimals
 from derive.checking.worlds import Pair
 
@@ -33,7 +32,7 @@ _INSTANT = re.compile(
 )
 
 
-def under_heading(line: Read, typed: list[str]) -> Read:
+def under_heading(line: Read, typed: list[str], label_of: Callable[[Read], str]) -> Read:
     """``line`` as written under its heading where its label is an instant alone and the heading
     above the list it is in names a kinetic energy (``**KE**``, then ``- before: ½(2m)(4)² …``):
     the heading's words put before the label, so the label says the energy."""
@@ -51,7 +50,7 @@ def under_heading(line: Read, typed: list[str]) -> Read:
 
 
 def energy_labelled(
-    ctx: Context, line: Read, holds: Callable[[Pair], bool], wrong: frozenset[str] = frozenset()
+    ctx: Context, line: Read, holds: Callable[[Pair], bool], wrong: frozenset[str], label_of: Callable[[Read], str]
 ) -> Pair | None:
     """The pair "the energy the label names = the line's first side" where the line is labelled
     a kinetic energy before, after or lost and that pair does not hold for the problem; None

@@ -43,7 +43,7 @@ def labelled(
     return (
         momentum_before(ctx, line, holds)
         or component_before(ctx, line, holds)
-        or energy_labelled(ctx, line, holds, wrong)
+        or energy_labelled(ctx, line, holds, wrong, label_of)
     )
 
 
@@ -53,7 +53,7 @@ def of_trace(trace, line: Read) -> Pair | None:
     from derive.checking.energylabels import under_heading
 
     holds, wrong = (lambda p: trace.holds([p], trace.truth)), frozenset(trace.wrong_values)
-    return labelled(trace.ctx, under_heading(line, getattr(trace, "typed", [])), holds, wrong)
+    return labelled(trace.ctx, under_heading(line, getattr(trace, "typed", []), label_of), holds, wrong)
 
 
 def _bare(label: str) -> str:
