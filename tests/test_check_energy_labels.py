@@ -72,3 +72,10 @@ def test_an_instant_alone_under_a_momentum_heading_is_not_an_energy() -> None:
     work = "**Momentum**\n\n- before: 0.150 × 35.0 = 5.25\n- after: 70.15 × 0.0748 = 5.25\n"
     found = lines(GOALIE, work)
     assert found[3][0] == found[4][0] == "correct"
+
+
+def test_a_name_of_its_own_after_an_energy_label_is_not_that_energy() -> None:
+    # "KE lost by the reduced mass: M = (0.150)(70.0)/(70.15)": M is the reduced mass,
+    # 10.5/70.15 = 0.14968 (0.150), not the energy lost.
+    work = "KE lost by the reduced mass: M = (0.150)(70.0)/(70.15) = 0.150 kg\n"
+    assert lines(GOALIE, work)[1][0] == "correct"

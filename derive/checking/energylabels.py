@@ -56,10 +56,13 @@ def energy_labelled(
     a kinetic energy before, after or lost and that pair does not hold for the problem; None
     where the line works from a number the student got wrong (``wrong``: it is carried)."""
     exprs = line.exprs or ()
-    if decimals(line.sides) & wrong:
-        return None
+    numbers = re.findall(r"(?<![\d.])\d+(?:\.\d+)?", " ".join(line.sides))
+    written = {n for n in numbers if "." in n or len(n) >= 3} | decimals(line.sides)  # 7452, not the 2 of 2m
+    if written & wrong or re.fullmatch(r"\s*[A-Za-z][\w{}]*'?\s*", line.sides[0]):
+        return None  # worked from a number got wrong (carried), or a name of its own first (mu = …)
     label = label_of(line)
-    if len(exprs) < 2 or not label or ":" not in line.written.split(line.sides[0].strip())[0]:
+    before = line.written.split(line.sides[0].strip())[0]
+    if len(exprs) < 2 or not label or not re.search(r":\s*[$*_]*\s*$", before):  # the working just after
         return None
     if not _ENERGY.search(label):
         return None

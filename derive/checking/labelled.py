@@ -52,7 +52,7 @@ def of_trace(trace, line: Read) -> Pair | None:
     problem's true values, the numbers it wrote wrong known."""
     from derive.checking.energylabels import under_heading
 
-    holds, wrong = (lambda p: trace.holds([p], trace.truth)), frozenset(trace.wrong_values)
+    holds, wrong = (lambda p: trace.holds([p], trace.truth)), frozenset(trace.wrong_values | trace.wrong_numbers)
     return labelled(trace.ctx, under_heading(line, getattr(trace, "typed", []), label_of), holds, wrong)
 
 
