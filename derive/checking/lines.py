@@ -184,7 +184,7 @@ class Trace(Carrying):
             text = f"{sides[i]} = {sides[k]}"
             tol = max(self._tolerance(sides, raw, (i, k), worked), 1e-9)
             out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
-        return out + sidepairs.adjacent(self, sides, exprs, raw) if ends else out
+        return out[:-1] + sidepairs.adjacent(self, sides, exprs, raw) + out[-1:] if ends else out  # last stays last
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
         """Whether every pair holds for ``values`` (at each sample point), within the

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import sympy
 
+from derive.checking.context import DEG
 from derive.checking.worlds import Pair
 
 
@@ -23,8 +24,8 @@ def adjacent(trace, sides: tuple[str, ...], exprs: list[sympy.Expr], raw: list[s
     """Each side next to the one after it, but the last (the number the line ends in), where
     both are in letters: judged at the slack of the two sides' own decimals (none, mostly)."""
     out = []
-    for i in range(len(sides) - 2):
-        if not (raw[i].free_symbols and raw[i + 1].free_symbols):
+    for i in range(min(len(sides) - 2, 1 if raw and raw[0].is_Symbol else 0)):  # the name and its formula
+        if not (raw[i].free_symbols - {DEG} and raw[i + 1].free_symbols - {DEG}):
             continue  # a side of numbers: its rounded decimals judged against the number it ends in
         tol = max(trace._tolerance(sides, raw, (i, i + 1), ""), 1e-9)
         out.append(Pair(f"{sides[i]} = {sides[i + 1]}", exprs[i], exprs[i + 1], tol, (raw[i], raw[i + 1]), True))
