@@ -21,6 +21,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
+from derive.checking.ownresults import worked_from_own
 from derive.checking.relations import Point, Values
 from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
 from derive.mathtext.notation import student
@@ -258,7 +259,8 @@ class Carrying(Depending):
         exprs = tuple(x.xreplace(own).xreplace(lost).xreplace(own) for x in line.exprs)  # own T_lost first
         if exprs == line.exprs:
             return False
-        return self.holds(self.pairs(replace(line, exprs=exprs)), self.world or self.truth)
+        world = self.world or self.truth  # else the result worked from them (T_2 = T_1 - own T_lost)
+        return self.holds(self.pairs(replace(line, exprs=exprs)), world) or worked_from_own(self, line, exprs)
 
     def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
         """A line of numbers only, right as arithmetic, worked from numbers the student got wrong

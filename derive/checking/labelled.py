@@ -32,11 +32,28 @@ _BEFORE = re.compile(
 _AFTER = re.compile(r"(?i)\b(?:after|final|afterwards)\b|(?<![A-Za-z])p\s*_?\{?\s*(?:f|2|final|after)\b|'")
 
 
-def labelled(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
+def labelled(
+    ctx: Context, line: Read, holds: Callable[[Pair], bool], wrong: frozenset[str] = frozenset()
+) -> Pair | None:
     """A line of numbers labelled as a total momentum before or a component before, worked
     with a common mistake: the pair it stands for (:func:`momentum_before`,
     :func:`component_before`); None otherwise."""
-    return momentum_before(ctx, line, holds) or component_before(ctx, line, holds)
+    from derive.checking.energylabels import energy_labelled  # KE before: ½(2m)(4)² + ½(3m)(2)
+
+    return (
+        momentum_before(ctx, line, holds)
+        or component_before(ctx, line, holds)
+        or energy_labelled(ctx, line, holds, wrong, label_of)
+    )
+
+
+def of_trace(trace, line: Read) -> Pair | None:
+    """:func:`labelled` for the derivation read so far (:class:`.lines.Trace`): against the
+    problem's true values, the numbers it wrote wrong known."""
+    from derive.checking.energylabels import under_heading
+
+    holds, wrong = (lambda p: trace.holds([p], trace.truth)), frozenset(trace.wrong_values | trace.wrong_numbers)
+    return labelled(trace.ctx, under_heading(line, getattr(trace, "typed", []), label_of), holds, wrong)
 
 
 def _bare(label: str) -> str:
@@ -44,7 +61,7 @@ def _bare(label: str) -> str:
     return re.sub(r"[\s=:&]+$", "", label) or "it"
 
 
-def _label(line: Read) -> str:
+def label_of(line: Read) -> str:
     r"""What the line writes just before its first side as read (the words or name the reader
     left out), from the last ``,`` ``;`` ``=`` ``&`` or ``$`` before it: of two relations on a
     line (``along XY $2\cos 60^\circ = 1$, perpendicular $2\sin 60^\circ = \sqrt3$``) each
@@ -74,7 +91,7 @@ def momentum_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> 
     exprs = line.exprs or ()
     if getattr(p, "oblique", False) or len(exprs) < 2 or any(x.free_symbols for x in exprs):
         return None
-    label = _label(line)
+    label = label_of(line)
     if not label or not _BEFORE.search(label) or _AFTER.search(label):
         return None
     if not re.search(r"[\d)]\s*[-+−]\s*[\d(]", line.sides[0]):  # a sum of the two bodies' momenta
@@ -131,7 +148,7 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
         or any(x.free_symbols - {DEG} - givens for x in exprs)
     ):
         return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
-    label = _label(line)
+    label = label_of(line)
     if not re.search(r"(?i)(?<![a-z])(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
         return None
     across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names

@@ -28,6 +28,7 @@ from derive.checking import (
     mistakes,
     reworld,
     rounding,
+    sidepairs,
     slipnames,
     slipworld,
     termslips,
@@ -68,6 +69,7 @@ Line = Read
 def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of the derivation ``text``, and what was inferred of its names."""
     trace = Trace(ctx)
+    trace.typed = text.splitlines()  # the lines as typed: a label's heading (KE, then "- before: …")
     said = body_words(text, ctx)
     lines, notes = read_lines(ctx, said, trace.pts[0], trace.truth[0], tuple(trace.base.equations.values()))
     lines = [as_typed(line, text, said) for line in lines]
@@ -140,7 +142,7 @@ class Trace(Carrying):
         pairs = carried.pairs_of(self, line)
         answer = self._answer(line)
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
-            total = labelled.labelled(self.ctx, line, lambda p: self.holds([p], self.truth))
+            total = labelled.of_trace(self, line)  # a total, a component or an energy labelled in words
             if total is not None:  # "p before = 150000 x 0.300 + 110000 x 0.120 = 58200": B's sign
                 self._wrote_wrong(line)
                 return self._slip(line, [total, *pairs], answer)
@@ -176,15 +178,13 @@ class Trace(Carrying):
         out = []
         # a chain that ends in a number as written: each side is compared with that number
         ends = len(sides) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
-        worked = (
-            three_figures(sides, self.ctx.data) if ends else ""
-        )  # the student's own rounded numbers, at 3 figures or more
+        worked = three_figures(sides, self.ctx.data) if ends else ""  # the student's own, at 3 figures
         for i in range(len(sides) - 1):
             k = len(sides) - 1 if ends else i + 1
             text = f"{sides[i]} = {sides[k]}"
             tol = max(self._tolerance(sides, raw, (i, k), worked), 1e-9)
             out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
-        return out
+        return out[:-1] + sidepairs.adjacent(self, sides, exprs, raw) + out[-1:] if ends else out  # last stays last
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:
         """Whether every pair holds for ``values`` (at each sample point), within the

@@ -314,7 +314,8 @@ def words_after(text: str) -> str:
             continue
         before = text[last + 1 : m.start()].rstrip(" ,;:?!…")  # "= -0.91 J ?? gained", "= 1.69 … not 4"
         unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
-        if re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie.")):
+        after_comma = re.search(r"[\w²³)'′]\s*,\s*$", text[last + 1 : m.start()])  # "(3010)V², cancel 3010"
+        if after_comma or (re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie."))):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)
         return text
     return text
