@@ -71,7 +71,13 @@ def _zh06(g: dict) -> tuple[dict, dict]:
 def _zh07(g: dict) -> tuple[dict, dict]:
     def worked(n: float, t: float) -> dict:
         a, b = _solve(g["m_A"], g["m_B"], g["m_A"] * n + g["m_B"] * g["v_B1n"], g["e"] * (n - g["v_B1n"]))
-        return {"v_A2n": a, "v_B2n": b, "v_A2t": t, "v_A2": math.hypot(a, t), "angle_loc": math.degrees(math.atan2(t, abs(a)))}
+        return {
+            "v_A2n": a,
+            "v_B2n": b,
+            "v_A2t": t,
+            "v_A2": math.hypot(a, t),
+            "angle_loc": math.degrees(math.atan2(t, abs(a))),
+        }
 
     c, s = g["v_A1"] * math.cos(math.radians(60)), g["v_A1"] * math.sin(math.radians(60))  # [A] angle 60 deg
     return worked(c, s), worked(s, c)  # sin for the component along the line of centres
