@@ -123,6 +123,16 @@ def numbers_agree(case: Case, true: dict, slipped: dict | None) -> None:
         agree(value, slipped[name], f"{case.name}: slip {name}")
 
 
+def letters_agree(case: Case, names: dict[str, float], true: dict, slipped: dict | None) -> None:
+    """The case's values and slip values in letters, at the point ``names``, against those worked
+    here at that point."""
+    for name, formula in case.verdict.values.items():
+        assert closed_form(str(formula), names) == pytest.approx(true[name], rel=1e-9, abs=1e-12), name
+    assert bool(case.verdict.slip_values) == (slipped is not None), case.name
+    for name, formula in (case.verdict.slip_values or {}).items():
+        assert closed_form(str(formula), names) == pytest.approx(slipped[name], rel=1e-9, abs=1e-12), name
+
+
 def _direct(m_a: float, m_b: float, e: float, u_a: float, u_b: float) -> tuple[float, float]:
     """Velocities after a direct impact: momentum and v_B - v_A = e (u_A - u_B)."""
     approach = u_a - u_b

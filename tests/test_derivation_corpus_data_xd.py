@@ -13,7 +13,15 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _bounce, _given, _solve, batch_shape, closed_form, numbers_agree
+from test_derivation_corpus_data import (
+    CASES,
+    _bounce,
+    _given,
+    _solve,
+    batch_shape,
+    letters_agree,
+    numbers_agree,
+)
 
 XD_CASES = [c for c in CASES if c.name.startswith("xd")]
 # (u, e, alpha in radians) for the letters
@@ -198,8 +206,4 @@ def test_the_xd_values_in_letters(prefix: str) -> None:
     for u, e, alpha in POINTS:
         names = {"u": u, "e": e, "alpha": alpha}
         true, slipped = SYMBOLIC_XD[prefix](names)
-        for name, formula in case.verdict.values.items():
-            assert closed_form(str(formula), names) == pytest.approx(true[name], rel=1e-9, abs=1e-12), name
-        assert bool(case.verdict.slip_values) == (slipped is not None), case.name
-        for name, formula in (case.verdict.slip_values or {}).items():
-            assert closed_form(str(formula), names) == pytest.approx(slipped[name], rel=1e-9, abs=1e-12), name
+        letters_agree(case, names, true, slipped)

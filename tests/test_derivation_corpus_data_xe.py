@@ -14,8 +14,7 @@ import math
 from collections.abc import Callable
 
 import pytest
-from test_derivation_corpus_data import CASES, _given, _solve, batch_shape, numbers_agree
-from test_derivation_corpus_data import closed_form as _value
+from test_derivation_corpus_data import CASES, _given, _solve, batch_shape, letters_agree, numbers_agree
 
 XE_CASES = [c for c in CASES if c.name.startswith("xe")]
 # (u, e, alpha in radians) for the letters
@@ -218,8 +217,4 @@ def test_the_xe_values_in_letters(prefix: str) -> None:
     for u, e, alpha in POINTS:
         names = {"u": u, "e": e, "alpha": alpha}
         true, slipped = SYMBOLIC_XE[prefix](names)
-        for name, formula in case.verdict.values.items():
-            assert _value(str(formula), names) == pytest.approx(true[name], rel=1e-9, abs=1e-12), name
-        assert bool(case.verdict.slip_values) == (slipped is not None), case.name
-        for name, formula in (case.verdict.slip_values or {}).items():
-            assert _value(str(formula), names) == pytest.approx(slipped[name], rel=1e-9, abs=1e-12), name
+        letters_agree(case, names, true, slipped)
