@@ -151,9 +151,12 @@ _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 _SIDE = re.compile(r"[A-Za-z0-9\u0391-\u03c9\u03d5]")
 
 
-def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) -> tuple[Relation, ...]:
+def read_relations(
+    text: str, axes: dict[str, tuple[str, int]] | None = None, head_on: bool = False
+) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`); ``axes``: the unit
-    vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
+    vectors' axes where the student placed them in words; ``head_on``: the impact has one axis
+    (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
     points = european_points(text)
     memory: dict[str, str] = {}
@@ -184,7 +187,9 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
+            for sides in (
+                (e for v in split_vectors(r.sides, axes, head_on) for e in each_body(v, text)) if r is not None else ()
+            ):
                 said = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
                 out.append(before_on_line(replace(r, sides=recalled(sides, memory)), said))  # "before: vA = 4j"
                 if len(out) >= MAX_RELATIONS:

@@ -33,10 +33,14 @@ _NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)('*)(?:\s+(before|after))?$")
 AXES = ("n", "t")
 
 
-def split_vectors(sides: tuple[str, ...], axes: dict[str, tuple[str, int]] | None = None) -> list[tuple[str, ...]]:
+def split_vectors(
+    sides: tuple[str, ...], axes: dict[str, tuple[str, int]] | None = None, head_on: bool = False
+) -> list[tuple[str, ...]]:
     """The relations of ``sides``: one per component where it is a relation between vectors
     (and ``[sides]`` where it is not); ``axes``, where the student placed them in words, takes
-    each unit vector's axis to the one it stands for, with its sign (``j`` away from a wall: -n)."""
+    each unit vector's axis to the one it stands for, with its sign (``j`` away from a wall: -n).
+    On a ``head_on`` impact a vector on one axis only (``u_A = 3 i``) is the velocity along the
+    line of motion, the problem's one axis: one relation with the names as written (``u_A = 3``)."""
     parts = [_placed(_vector(s), axes) for s in sides]
     if not any(p is not None for p in parts):
         return [sides]
@@ -46,6 +50,10 @@ def split_vectors(sides: tuple[str, ...], axes: dict[str, tuple[str, int]] | Non
     names = [None if p is not None else _NAME.match(s.strip()) for s, p in zip(sides, parts, strict=True)]
     if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
         return [sides]
+    used = {a for p in parts if p is not None for a in p}
+    if head_on and len(used) == 1:
+        (axis,) = used
+        return [tuple(p[axis] if p is not None else _plain(n) for p, n in zip(parts, names, strict=True))]
     out = []
     for axis in AXES:
         row = []
@@ -60,6 +68,12 @@ def _placed(part: dict[str, str] | None, axes: dict[str, tuple[str, int]] | None
     if part is None or not axes:
         return part
     return {axes[a][0]: c if axes[a][1] > 0 else f"-({c})" for a, c in part.items()}
+
+
+def _plain(m: re.Match) -> str:
+    """A vector's name as a velocity's (``u_A``, ``A after`` -> ``A'``)."""
+    primes = m.group(2) or ("'" if m.group(3) == "after" else "")
+    return m.group(1) + primes
 
 
 def component(name: str, axis: str) -> str:
