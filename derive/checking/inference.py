@@ -92,7 +92,7 @@ def read_lines(
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
     known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
-    declared, sign = declarations(text, ctx)
+    declared, sign = declarations(text, ctx, declared_axes if ctx.problem.oblique else None)
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {
