@@ -84,7 +84,7 @@ def read_lines(
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
     axes = declared_axes(text) if ctx.problem.oblique else {}
-    every = energy_change(directed(read_relations(text, axes), text))
+    every = energy_change(directed(read_relations(text, axes, not ctx.problem.oblique), text))
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
@@ -92,7 +92,7 @@ def read_lines(
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
     known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
     known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
-    declared, sign = declarations(text, ctx)
+    declared, sign = declarations(text, ctx, declared_axes if ctx.problem.oblique else None)
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {

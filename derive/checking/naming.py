@@ -22,7 +22,7 @@ A derivation is written in the student's names, not derive's. They are read, in 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 
 import sympy
 
@@ -406,8 +406,11 @@ def declares(r: Relation, first: bool) -> bool:
     return declaration(" = ".join(r.sides)) or (first and declaration(r.written) and not _POSITIVE.match(r.written))
 
 
-def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
-    """``let x = v_A2`` lines -> {x: v_A2}, and the sign of a ``positive:`` line (+1 where none)."""
+def declarations(
+    text: str, ctx: Context, placed: Callable[[str], dict] | None = None
+) -> tuple[dict[str, sympy.Expr], int]:
+    """``let x = v_A2`` lines -> {x: v_A2}, and the sign of a ``positive:`` line (+1 where none);
+    ``placed``: the unit vectors a line places (:func:`.frames.declared_axes`), whose sign it says."""
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
     sign = 0
@@ -422,6 +425,8 @@ def declarations(text: str, ctx: Context) -> tuple[dict[str, sympy.Expr], int]:
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
+        if placed is not None and placed(line):
+            continue  # "ĵ out of the wall (positive away from it)": a unit vector's way, the reader placed it
         m = _POSITIVE.match(line)
         if m:
             sign = sign_of(m.group(1).split(".")[0]) or sign

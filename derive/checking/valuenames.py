@@ -255,7 +255,7 @@ def _the_impulse(name: str, middle: tuple[str, ...], impulses: list[tuple[str, s
     where the problem has only one, defined as a change in momentum (``J = m Δv = 47(6.235) = 293``):
     named by its letter whatever its number."""
     plain = re.fullmatch(r"[IJ](?:_n)?|impulse\w*|dp\w*", name) is not None
-    change = any(re.search(r"Δ|\\?Delta|\bchange\b|\bd[pv]\b", x) for x in middle)
+    change = any(re.search(r"Δ|\\?Delta|\bchange\b|\bd[pv]\b", x) or _after_less_before(x) for x in middle)
     return plain and change and _says_impulse(name) and _only_one(impulses) is not None
 
 
@@ -324,3 +324,9 @@ def candidates(ctx: Context, truth: dict, dims: set[Dim] = frozenset()) -> list[
     table = quantities(ctx)
     out += [c for d in dims & {MASS, ENERGY} for c in table[d] if c not in out]
     return out
+
+
+def _after_less_before(side: str) -> bool:
+    """Whether ``side`` is a mass times a velocity after less one before (``m(v - u)``,
+    ``m(v_n - u_n)``, ``m_A(v_2 - v_1)``): a change in momentum written out."""
+    return bool(re.search(r"\(\s*(?:v[\w']*\s*-\s*u[\w']*|[A-Za-z]\w*2\s*-\s*[A-Za-z]\w*1)\s*\)", side))

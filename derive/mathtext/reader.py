@@ -151,12 +151,17 @@ _POINTS = re.compile(r"^\s*(?:∠|\\angle\s*|angle\s+)?[A-Z]{3}\s*$")
 _SIDE = re.compile(r"[A-Za-z0-9\u0391-\u03c9\u03d5]")
 
 
-def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) -> tuple[Relation, ...]:
+def read_relations(
+    text: str, axes: dict[str, tuple[str, int]] | None = None, head_on: bool = False
+) -> tuple[Relation, ...]:
     """Every relation of ``text``, in order (at most :data:`MAX_RELATIONS`); ``axes``: the unit
-    vectors' axes where the student placed them in words (:func:`.vectors.split_vectors`)."""
+    vectors' axes where the student placed them in words; ``head_on``: the impact has one axis
+    (:func:`.vectors.split_vectors`)."""
     out: list[Relation] = []
     points = european_points(text)
     memory: dict[str, str] = {}
+    vectors: set[str] = set()  # the names split into components so far: u in "J = m(v - u)"
+    whole: dict[int, tuple[str, ...]] = {}  # a line's last relation before it was split by component
     for line, column, written, plain in pieces(text):
         plain, letter = stored(plain)  # "= 1.08 J  [STO -> A]": the value kept in memory A
         plain = angle_vectors(plain)  # <9, 12>, ⟨9, 12⟩, \langle 9, 12\rangle: the pair (9, 12)
@@ -169,8 +174,9 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
-            plain = f"{above.sides[-1]} {plain}"
-            lead = above.lead or above.sides[0]
+            sides = whole.get(above.line, above.sides)  # "J = 0.06(39.6 i)  = 2.376 i": the vector
+            plain = f"{sides[-1]} {plain}"
+            lead = above.lead or sides[0]
         m = _ASIDE.search(plain)
         main, aside = (plain[: m.start()], plain[m.end() :]) if m else (plain, "")
         if m and main.rstrip().endswith("(") and aside.rstrip().endswith(")"):  # "= 4.46 J (with V = 1.4925 it's 4.48)"
@@ -184,7 +190,10 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            for sides in (e for v in split_vectors(r.sides, axes) for e in each_body(v, text)) if r is not None else ():
+            split = split_vectors(r.sides, axes, head_on, vectors) if r is not None else []
+            if r is not None and not r.aside and split != [r.sides]:
+                whole[line] = r.sides
+            for sides in (e for v in split for e in each_body(v, text)):
                 said = main[: max(main.find(part), 0)] + part.split("=", 1)[0]
                 out.append(before_on_line(replace(r, sides=recalled(sides, memory)), said))  # "before: vA = 4j"
                 if len(out) >= MAX_RELATIONS:

@@ -33,33 +33,74 @@ _NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)('*)(?:\s+(before|after))?$")
 AXES = ("n", "t")
 
 
-def split_vectors(sides: tuple[str, ...], axes: dict[str, tuple[str, int]] | None = None) -> list[tuple[str, ...]]:
+def split_vectors(
+    sides: tuple[str, ...],
+    axes: dict[str, tuple[str, int]] | None = None,
+    head_on: bool = False,
+    vectors: set[str] | None = None,
+) -> list[tuple[str, ...]]:
     """The relations of ``sides``: one per component where it is a relation between vectors
     (and ``[sides]`` where it is not); ``axes``, where the student placed them in words, takes
-    each unit vector's axis to the one it stands for, with its sign (``j`` away from a wall: -n)."""
+    each unit vector's axis to the one it stands for, with its sign (``j`` away from a wall: -n).
+    On a ``head_on`` impact a vector on one axis only (``u_A = 3 i``) is the velocity along the
+    line of motion, the problem's one axis: one relation with the names as written (``u_A = 3``).
+    ``vectors``: the names split into components so far (this call adds its own); a side written
+    in them (``J = m(v - u) = 0.06(39.6 i)``) has on each axis their components (``m(v_n - u_n)``)."""
     parts = [_placed(_vector(s), axes) for s in sides]
     if not any(p is not None for p in parts):
         return [sides]
     # a lead-in in words before the first name ("After impact write v_A = a i + …"): the name
     first = re.sub(r"^(?:[A-Za-z]{2,}\s+)+(?=\S+$)", "", sides[0].strip()) if parts[0] is None else sides[0]
     sides = (first, *sides[1:]) if _NAME.match(first.strip()) else sides
-    names = [None if p is not None else _NAME.match(s.strip()) for s, p in zip(sides, parts, strict=True)]
+    vectors = set() if vectors is None else vectors
+    names = [
+        None if p is not None else _NAME.match(s.strip()) or _in_vectors(s, vectors)
+        for s, p in zip(sides, parts, strict=True)
+    ]
     if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
         return [sides]
+    vectors |= {n.group(1) for n in names if isinstance(n, re.Match)}
+    used = {a for p in parts if p is not None for a in p}
+    if head_on and len(used) == 1:
+        (axis,) = used
+        return [tuple(p[axis] if p is not None else _on_axis(n, "") for p, n in zip(parts, names, strict=True))]
     out = []
     for axis in AXES:
         row = []
         for p, n in zip(parts, names, strict=True):
-            row.append(p.get(axis, "0") if p is not None else component_name(n, axis))
+            row.append(p.get(axis, "0") if p is not None else _on_axis(n, axis, vectors))
         if any(r != "0" for r in row):
             out.append(tuple(row))
     return out or [sides]
+
+
+_WORD = re.compile(r"(?<![\\\w])([A-Za-z][A-Za-z0-9_]*)('*)(?![\w(])")
+
+
+def _in_vectors(side: str, vectors: set[str]) -> str | None:
+    """``side`` where it is written in vectors named before (``m(v - u)``), else None."""
+    return side.strip() if any(m.group(1) in vectors for m in _WORD.finditer(side)) else None
+
+
+def _on_axis(n: re.Match | str, axis: str, vectors: set[str] = frozenset()) -> str:
+    """A vector's name (or a side written in vectors) on ``axis``; ``""``: the velocity itself."""
+    if isinstance(n, str):
+        if not axis:
+            return n
+        return _WORD.sub(lambda w: component_name(w, axis) if w.group(1) in vectors else w.group(0), n)
+    return component_name(n, axis) if axis else _plain(n)
 
 
 def _placed(part: dict[str, str] | None, axes: dict[str, tuple[str, int]] | None) -> dict[str, str] | None:
     if part is None or not axes:
         return part
     return {axes[a][0]: c if axes[a][1] > 0 else f"-({c})" for a, c in part.items()}
+
+
+def _plain(m: re.Match) -> str:
+    """A vector's name as a velocity's (``u_A``, ``A after`` -> ``A'``)."""
+    primes = m.group(2) or ("'" if m.group(3) == "after" else "")
+    return m.group(1) + primes
 
 
 def component(name: str, axis: str) -> str:
@@ -70,7 +111,7 @@ def component(name: str, axis: str) -> str:
 
 def component_name(m: re.Match, axis: str) -> str:
     """The name of a vector's component: ``u_A`` -> ``u_An``, ``A`` -> ``A_n``, ``A'`` -> ``A_n'``."""
-    name, primes, when = m.group(1), m.group(2), m.group(3)
+    name, primes, when = m.group(1), m.group(2), m.group(3) if m.re.groups > 2 else None
     if when == "after":
         primes = primes or "'"
     base = f"{name}{axis}" if "_" in name else f"{name}_{axis}"
