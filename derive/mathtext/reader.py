@@ -62,6 +62,7 @@ from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
+from derive.mathtext.whereclause import went_on_from
 
 #: A row that continues the relation above it: ``&= 6.4``, ``&\\approx 91.7``, ``  ≈ 0.389``.
 _CONTINUED = re.compile(r"^[\s&$\\\[]*(?:=|≈|\\approx|\\simeq)")
@@ -169,6 +170,7 @@ def read_relations(text: str, axes: dict[str, tuple[str, int]] | None = None) ->
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
+            above = went_on_from(above, [r for r in out if r.line == above.line and not r.aside])  # "…, μ = ⅔"
             plain = f"{above.sides[-1]} {plain}"
             lead = above.lead or above.sides[0]
         m = _ASIDE.search(plain)
