@@ -100,13 +100,17 @@ _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
-#: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
-_REF = r"\d*\s*[×x*]?\s*(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
+#: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``(1) - (2)×(−1):``, ``eq 1 + eq 2 ->``;
+#: abandoned after an ellipsis for another way: ``(1) - (2)×3… easier:``).
+_REF = (  # a multiplier after it too: "(2)×(−1)", "(1) x 3"
+    r"\d*\s*[×x*]?\s*(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
+    r"(?:\s*[×x*]\s*(?:\(\s*[-−]?\d{1,2}\s*\)|\d{1,2}(?![\d.])))?"
+)
 #: ``(1) + (2) gives``, ``2(1) - (2) ⇒``, and ``(1)+(2)  13 = 3x`` with no word: bare equation numbers
 #: only, before a side (not an operator or "=").
 _JOIN = r"(?:→|->|=>|⇒|\\Rightarrow\b|\\implies\b|\bgives?\b)"
 _COMBINED = re.compile(
-    rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}\s*(?::(?!=)|{_JOIN})"
+    rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}(?:\s*(?:…|\.{{3}})\s*[A-Za-z]+(?:\s+[A-Za-z]+){{0,2}})?\s*(?::(?!=)|{_JOIN})"
     r"|(?:\(\s*\d\s*\)\s*[-+−]\s*)+\(\s*\d\s*\)(?=\s+[^\s=+\-−*/^()]))\s*"
 )
 #: The equation a relation comes from, leading in (``from (2) x = y - 4``, ``using (ii),``, ``rearranging eqn 1:``):
@@ -400,7 +404,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     tag = without_note(written_text)[1]
-    text = _outer(_PART.sub("", _COMBINED.sub("", _FROM_REF.sub("", text.lstrip(" ,;:"), count=1)), count=1))
+    text = _outer(_PART.sub("", _FROM_REF.sub("", _COMBINED.sub("", text.lstrip(" ,;:")), count=1), count=1))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
