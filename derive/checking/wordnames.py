@@ -316,9 +316,8 @@ def _possessive(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             found.append((more[1], more[2]))
         for name, body in found:
             b = _body(body, ctx)
-            sign = toward(m[0], m[3], b, ctx)  # "Q's speed before", Q moving toward P: minus its velocity
-            if b and f"v_{b}{when}" in names:
-                out.setdefault(name.replace("{", "").replace("}", ""), sign * names[f"v_{b}{when}"][0])
+            if b and f"v_{b}{when}" in names:  # "Q's speed before", Q moving toward P: minus its velocity
+                out.setdefault(re.sub(r"[{}]", "", name), toward(m[0], m[3], b, ctx) * names[f"v_{b}{when}"][0])
     return out
 
 
