@@ -15,7 +15,7 @@ import sympy
 from derive.checking.context import Context
 from derive.checking.wordnames import in_words
 
-_NAME = r"\$?[A-Za-z](?:_\{?\w{1,3}\}?|\d)?['′]?\$?"
+_NAME = r"(?:\*\*|__)?\$?[A-Za-z](?:_\{?\w{1,3}\}?|\d)?['′]?\$?(?:\*\*|__)?"  # **p**: bold
 #: What is named: a body's speed, velocity or component, in words (no "=" or sentence end in it).
 _WHAT = (
     r"(?:the\s+)?(?:[A-Za-z]\w{0,6}['’]s\s+)?(?:final\s+|initial\s+|new\s+)?"
@@ -41,7 +41,7 @@ def named_last(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     name for it (read the other way round: "let v be B's velocity after")."""
     out: dict[str, sympy.Expr] = {}
     for m in [*_LAST.finditer(line), *_EQUALS.finditer(line)]:
-        names = re.sub(r"[${}]", "", m.group(2)).strip()
+        names = re.sub(r"[${}*]|__", "", m.group(2)).strip()
         said = f"Let {names} be {m.group(1).strip()}"
         for name, x in (in_words(said, ctx) or speed_along(said, ctx)).items():
             out.setdefault(name, x)

@@ -46,6 +46,10 @@ _AFTER_SPEED = (
 _NOT_NAMES = frozenset({"is", "of", "at", "in", "on", "to", "and", "the", "be", "so", "it", "an", "as"})
 #: Prose: two words of three letters or more with only words between them.
 _PROSE = re.compile(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}")
+#: The signs a student writes for a word (``∥ cpt``, ``⊥ mom.``), standing alone as a word does, not a
+#: name's mark (``v_⊥``, ``v∥``): read as the words they stand for.
+_SAID = {"∥": "parallel", "⊥": "perpendicular"}
+_SYMBOL_WORD = re.compile(r"(?<![\w_{^])[∥⊥](?![\w_}])")
 
 
 def _after_names(line: str) -> set[str]:
@@ -72,4 +76,5 @@ def looks_like_prose(text: str) -> bool:
     """Whether ``text`` (a line's sides that could not be read) is prose with an "=" in it: words,
     not counting the names of functions, Greek letters and angle units, which are mathematics."""
     words = re.sub(r"[A-Za-z]+", lambda m: " " if m[0] in MATH_WORDS else m[0], text)
+    words = _SYMBOL_WORD.sub(lambda m: f" {_SAID[m[0]]} ", words)  # "∥ cpt = ⊥ cpt": parallel, perpendicular
     return _PROSE.search(words) is not None

@@ -15,17 +15,21 @@ if TYPE_CHECKING:
     from derive.checking.context import Context
 
 #: Words that say the bodies approach head-on.
-_TOWARD = re.compile(r"\b(?:towards?|approaching)\s+each\s+other\b|\bhead[\s-]on\b", re.I)
+_TOWARD = re.compile(
+    r"\b(?:towards?|approaching)\s+each\s+other\b|\bhead[\s-]on\b|\bin\s+opposite\s+directions\b", re.I
+)
 
 
 def toward(plain: str, when: str, body: str, ctx: Context | None = None) -> int:
-    """-1 where ``plain`` names B's speed before (``body`` "B", ``when`` "before") and says the
-    bodies move towards each other, as B does in the problem (``ctx``'s, where given); else 1."""
+    """-1 where ``plain`` names B's speed before (``body`` "B", ``when`` "before") and it or the
+    problem's statement says the bodies move towards each other (or in opposite directions), as B
+    does in the problem (``ctx``'s, where given); else 1."""
     if body != "B" or when.lower() != "before" or not re.search(r"\bspeeds?\b", plain, re.I):
         return 1
     if ctx is not None and original_way(ctx, -1) >= 0:  # B at rest, or moving A's way (caught up): not towards A
         return 1
-    return -1 if _TOWARD.search(plain) else 1
+    statement = (getattr(ctx.problem, "statement", "") or "") if ctx is not None else ""
+    return -1 if _TOWARD.search(plain) or _TOWARD.search(statement) else 1  # the line's words, or the problem's
 
 
 def original_way(ctx: Context, body: int) -> int:

@@ -305,7 +305,7 @@ def _possessive(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     named by whose they are, a second name by ellipsis (the same quantity, the other body)."""
     if ctx.problem.oblique:
         return {}
-    plain = re.sub(r"\\[A-Za-z]+\{[^{}]*\}|\$|\\[()]|[{}]", " ", line)
+    plain = re.sub(r"\\[A-Za-z]+\{[^{}]*\}|\$|\\[()]|[{}]|\*\*|__", " ", line)  # **p**: bold, p
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
     for m in _POSSESSIVE.finditer(plain):
@@ -316,8 +316,8 @@ def _possessive(line: str, ctx: Context) -> dict[str, sympy.Expr]:
             found.append((more[1], more[2]))
         for name, body in found:
             b = _body(body, ctx)
-            if b and f"v_{b}{when}" in names:
-                out.setdefault(name.replace("{", "").replace("}", ""), names[f"v_{b}{when}"][0])
+            if b and f"v_{b}{when}" in names:  # "Q's speed before", Q moving toward P: minus its velocity
+                out.setdefault(re.sub(r"[{}]", "", name), toward(m[0], m[3], b, ctx) * names[f"v_{b}{when}"][0])
     return out
 
 

@@ -1,6 +1,8 @@
 """A name in brackets with its marks after them, as the engineering textbooks write it
 (Hibbeler, Beer & Johnston): ``(v_A)_1``, ``(v_A)_2``, ``(v_A)'``, ``(v_B)_{2x}``, ``(v_A)_n'``,
-and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``);
+and typed in plain text ``(vA)1``, ``(vB)2``, ``(vA)n1`` (the component before the time: ``v_A1n``),
+``(vA1)n``, ``(v_B2)t`` (body and instant inside, the component glued after: ``v_A1n``, ``v_B2t``;
+a bare ``(v)t``, with no body inside, stays a product);
 one body's ``(v)_1``, ``(v)2`` (its velocity before and after) the same way (``v_1``, ``v_2``). The brackets only hold the name together: what
 follows them (a time, a component, a prime) is the name's own mark, so the whole is one name
 (``v_A1``, ``v_A'``, ``v_B2x``, ``v_An'``; marks parted by a comma too, ``(v_A)_{n,2}``: ``v_An2``),
@@ -26,14 +28,18 @@ _PRIMES_IN = r"((?:\s*(?:'|’|\^\s*\\prime|\^\s*\{\s*\\prime\s*\}))*)"
 #: The name inside: a letter and its subscript (``v_A``, ``v_{A}``, ``vA``, ``v_1``); without an
 #: underscore the subscript is a capital or a digit (``vA``, ``v1``), never a second small letter.
 _INSIDE = (
-    r"\(\s*([A-Za-z])" + _PRIMES_IN + r"(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z0-9]))?" + _PRIMES_IN + r"\s*\)"
+    r"\(\s*([A-Za-z])"
+    + _PRIMES_IN
+    + r"(?:_\s*\{?\s*([A-Za-z0-9]{1,2})\s*\}?|([A-Z][0-9]?|[0-9]))?"
+    + _PRIMES_IN
+    + r"\s*\)"
 )
 #: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
     r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\}|\(\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\)"
     r"|([A-Za-z0-9]{1,3})(?![\w(]))"
-    r"|([012][xyntXYNT]?|[xyntXYNT][012])(?![\w.(]))?"
+    r"|([012][xyntXYNT]?|[xyntXYNT][012]?)(?![\w.(]))?"
     r"((?:'|’|\s*\^\s*\\prime|\s*\^\s*\{\s*\\prime\s*\})*)"
 )
 _BRACKETED = re.compile(_INSIDE + _MARKS)
@@ -53,8 +59,10 @@ def bracketed_names(text: str, tex: bool = False) -> str:
         primes = "'" * sum(_primes(m[i]) for i in (2, 5, 10))
         if not after and not primes:
             return m[0]  # "(v_A) - (v_B)": brackets around a name, nothing after them
-        if m[9] and sub and not sub.isalpha():
+        if m[9] and sub and not sub.isalpha() and not (m[9].isalpha() and sub[-1].isdigit()):
             return m[0]  # "(v_1)2": a time glued on only after a body's letter ("(vA)1")
+        if m[9] and m[9].isalpha() and not sub:
+            return m[0]  # "(v)t": a component glued on only after a body's name ("(vA1)n")
         marks = f"{sub}{after}"
         name = f"{letter}_{{{marks}}}" if tex else f"{letter}_{marks}"
         before = m.string[m.start() - 1] if m.start() else ""

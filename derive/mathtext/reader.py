@@ -62,6 +62,7 @@ from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
 from derive.mathtext.vectors import split_vectors
+from derive.mathtext.whereclause import went_on_from
 
 #: A row that continues the relation above it: ``&= 6.4``, ``&\\approx 91.7``, ``  ≈ 0.389``.
 _CONTINUED = re.compile(r"^[\s&$\\\[]*(?:=|≈|\\approx|\\simeq)")
@@ -99,13 +100,14 @@ _ENV_CLOSE = re.compile(rf"\\end\{{(?:{_ENV})\*?\}}")
 #: "with", "where": what follows defines the names of the relation before it.
 _ASIDE = re.compile(r"(?<![\w.])(?:with|where)(?![\w])(?=[^=]*=)", re.I)
 _TAG_END = re.compile(r"\s\(\s*([ijk])\s*\)\s*$")  # the rest: notes.without_note
-#: Equations combined, leading in (``(1) - (2):``, ``2(1) + (2):``, ``eq 1 + eq 2 ->``).
+#: Equations combined, leading in (``2(1) + (2):``, ``(1) - (2)×(−1):``, ``eq 1 + eq 2 ->``, ``(1) - (2)… easier:``).
 _REF = r"\d*\s*[×x*]?\s*(?:\(\s*(?:\d{1,2}[a-z]?|[ivx]{1,4})\s*\)|eqn?\.?\s*\(?\d{1,2}\)?)"
+_REF += r"(?:\s*[×x*]\s*(?:\(\s*[-−]?\d{1,2}\s*\)|\d{1,2}(?![\d.])))?"  # a multiplier after: "(2)×(−1)"
 #: ``(1) + (2) gives``, ``2(1) - (2) ⇒``, and ``(1)+(2)  13 = 3x`` with no word: bare equation numbers
 #: only, before a side (not an operator or "=").
 _JOIN = r"(?:→|->|=>|⇒|\\Rightarrow\b|\\implies\b|\bgives?\b)"
 _COMBINED = re.compile(
-    rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}\s*(?::(?!=)|{_JOIN})"
+    rf"^\s*(?:(?:{_REF}\s*[-+−]\s*)+{_REF}(?:\s*(?:…|\.{{3}})\s*[A-Za-z]+(?:\s+[A-Za-z]+){{0,2}})?\s*(?::(?!=)|{_JOIN})"
     r"|(?:\(\s*\d\s*\)\s*[-+−]\s*)+\(\s*\d\s*\)(?=\s+[^\s=+\-−*/^()]))\s*"
 )
 #: The equation a relation comes from, leading in (``from (2) x = y - 4``, ``using (ii),``, ``rearranging eqn 1:``):
@@ -174,6 +176,7 @@ def read_relations(
         lead = ""
         if plain.lstrip().startswith(("=", "≈")) and _CONTINUED.match(written) and out:  # "  = 6.4": continued
             above = next((r for r in reversed(out) if not r.aside or r.line != out[-1].line), out[-1])
+            above = went_on_from(above, [r for r in out if r.line == above.line and not r.aside])  # "…, μ = ⅔"
             sides = whole.get(above.line, above.sides)  # "J = 0.06(39.6 i)  = 2.376 i": the vector
             plain = f"{sides[-1]} {plain}"
             lead = above.lead or sides[0]
@@ -407,7 +410,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         flags=re.I,
     )
     tag = without_note(written_text)[1]
-    text = _outer(_PART.sub("", _COMBINED.sub("", _FROM_REF.sub("", text.lstrip(" ,;:"), count=1)), count=1))
+    text = _outer(_PART.sub("", _FROM_REF.sub("", _COMBINED.sub("", text.lstrip(" ,;:")), count=1), count=1))
     m = _TAG_START.match(text)
     if m:
         tag, text = m.group(1) or m.group(2), text[m.end() :]
