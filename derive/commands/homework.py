@@ -13,14 +13,16 @@ from derive.errors import InputError
 def run_variants(args: argparse.Namespace) -> int:
     """derive variants: the variants, their answer key, and the Moodle and PrairieLearn exports asked for."""
     import derive
-    from derive.homework.variants import MAX_COUNT, write_variants
+    from derive.homework.variants import MAX_COUNT, compile_problem, write_variants
 
     _resolve_count(args, MAX_COUNT)
     problem = derive.load(args.problem)
     exports = None
+    compiled = None
     if args.moodle or args.prairielearn or args.stack:  # built first: a bad --result writes nothing
         from derive.homework.lms import build_exports
 
+        compiled = compile_problem(problem)  # once, for the exports and the pages
         exports = build_exports(
             problem,
             count=args.count,
@@ -30,13 +32,14 @@ def run_variants(args: argparse.Namespace) -> int:
             moodle=args.moodle,
             prairielearn=args.prairielearn,
             stack=args.stack,
+            compiled=compiled,
         )
     elif args.result:
         raise InputError("--result is for --moodle, --prairielearn or --stack", where="usage")
     if exports is not None:  # every path checked before anything is written
         exports.check(inputs=(Path(problem.path),), output=args.output)
     failures = write_variants(
-        problem, args.output, count=args.count, seed=args.seed, fmt=args.format, digits=args.digits
+        problem, args.output, count=args.count, seed=args.seed, fmt=args.format, digits=args.digits, compiled=compiled
     )
     if exports is not None:
         exports.write(inputs=(Path(problem.path),))

@@ -357,7 +357,7 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
                 if not (ys.has(s) or xs.has(s)):
                     y, x = ys, xs
                     break
-    ratio = sympy.simplify(y / x) if x != 0 else None
+    ratio = sympy.simplify(y / x) if x != 0 and _may_be_constant(y / x) else None
     if ratio is not None and ratio.is_number:
         if x.is_positive:
             return sympy.atan(ratio)
@@ -368,6 +368,23 @@ def _atan2_number(y: sympy.Expr, x: sympy.Expr) -> sympy.Expr:
     if x == 0 and y.is_negative:
         return -sympy.pi / 2
     return sympy.atan2(y, x)
+
+
+def _may_be_constant(expr: sympy.Expr) -> bool:
+    """False when ``expr`` takes two different values at two points (it is then no number,
+    however simplified): a variant's angle keeps its varied givens, and simplifying their
+    ratio only to learn that cost seconds for each angle of an oblique problem."""
+    free = sorted(expr.free_symbols, key=str)
+    if not free:
+        return True
+    values = []
+    for k in (0, 1):
+        point = {s: sympy.Rational(3 + 2 * k + i, 2 + k + 2 * i) for i, s in enumerate(free)}  # positive
+        value = sympy.N(expr.xreplace(point), 30)
+        if not value.is_Number or not value.is_finite:
+            return True
+        values.append(value)
+    return abs(values[0] - values[1]) <= 1e-20 * (1 + abs(values[0]))
 
 
 def convert(r: Result, unit_text: str) -> sympy.Expr:

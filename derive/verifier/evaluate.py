@@ -247,18 +247,25 @@ def measure(node: object, env: Env, halfwidth: Callable[[Num], object]) -> tuple
 
 def substitute(node: object, mapping: dict[str, object]) -> object:
     """``node`` with each name in ``mapping`` replaced by the tree it maps to."""
-    if isinstance(node, Sym):
-        return mapping.get(node.name, node)
+    return rebuild(node, lambda n: mapping.get(n.name) if isinstance(n, Sym) else None)
+
+
+def rebuild(node: object, replace: Callable[[object], object | None]) -> object:
+    """``node`` with every sub-tree for which ``replace`` gives a tree put in its place,
+    at any depth (inside powers, functions and degrees too)."""
+    new = replace(node)
+    if new is not None:
+        return new
     if isinstance(node, Add):
-        return Add(tuple((s, substitute(t, mapping)) for s, t in node.terms))
+        return Add(tuple((s, rebuild(t, replace)) for s, t in node.terms))
     if isinstance(node, Mul):
-        return Mul(tuple(substitute(f, mapping) for f in node.factors))
+        return Mul(tuple(rebuild(f, replace) for f in node.factors))
     if isinstance(node, Frac):
-        return Frac(substitute(node.num, mapping), substitute(node.den, mapping))
+        return Frac(rebuild(node.num, replace), rebuild(node.den, replace))
     if isinstance(node, Pow):
-        return Pow(substitute(node.base, mapping), substitute(node.exp, mapping))
+        return Pow(rebuild(node.base, replace), rebuild(node.exp, replace))
     if isinstance(node, Func):
-        return Func(node.name, tuple(substitute(a, mapping) for a in node.args))
+        return Func(node.name, tuple(rebuild(a, replace) for a in node.args))
     if isinstance(node, Deg):
-        return Deg(substitute(node.inner, mapping))
+        return Deg(rebuild(node.inner, replace))
     return node

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from derive.errors import InputError
 from derive.homework.lms.files import Exports, folder_exports
@@ -12,6 +13,9 @@ from derive.homework.lms.moodle import moodle_xml
 from derive.homework.lms.pl import prairielearn_files
 from derive.homework.lms.stack import stack_xml
 from derive.problem import Problem
+
+if TYPE_CHECKING:
+    from derive.homework.variants import Compiled
 
 
 def build_exports(
@@ -24,10 +28,12 @@ def build_exports(
     moodle: str | None = None,
     prairielearn: str | None = None,
     stack: str | None = None,
+    compiled: Compiled | None = None,
 ) -> Exports:
     """What ``derive variants --moodle/--prairielearn/--stack`` writes, built in memory first
     so that a bad ``--result`` writes nothing. The variants are those ``write_variants``
-    draws for the same file and seed."""
+    draws for the same file and seed (``compiled``: the problem compiled already, as
+    ``derive variants`` does once for both)."""
     from derive.homework.variants import compile_problem, draw
 
     for option, path in (("--moodle", moodle), ("--stack", stack)):
@@ -35,7 +41,7 @@ def build_exports(
             _check_file(path, option)
     if prairielearn and Path(prairielearn).exists() and not Path(prairielearn).is_dir():
         raise InputError("exists and is not a folder", where=prairielearn, field="--prairielearn")
-    compiled = compile_problem(problem)
+    compiled = compiled or compile_problem(problem)
     chosen = draw(compiled, count, seed)
     asked = result
     result = resolve_result(compiled, chosen, result, digits)

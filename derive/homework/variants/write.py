@@ -36,7 +36,14 @@ def _progress(done: int, total: int) -> None:
 
 
 def write_variants(
-    problem: Problem | ChainProblem, out_dir: str, *, count: int, seed: int, fmt: str = "md", digits: int | None = None
+    problem: Problem | ChainProblem,
+    out_dir: str,
+    *,
+    count: int,
+    seed: int,
+    fmt: str = "md",
+    digits: int | None = None,
+    compiled: Compiled | None = None,
 ) -> list[str]:
     """Draw ``count`` variants and write each (statement and worked solution) and the
     answer key (key.csv, key.json) into ``out_dir``.
@@ -44,11 +51,12 @@ def write_variants(
     The folder is written whole: into a temporary folder that then takes ``out_dir``'s
     place, so a run stopped at any point leaves the old folder or the new one. Returns
     the one-line errors of the variants that could not be written (a PDF that did not
-    compile); the others are written all the same.
+    compile); the others are written all the same. ``compiled``: the problem compiled
+    already (by the caller that also exports it).
     """
     from derive.fileio import folder_atomic
 
-    compiled = compile_problem(problem)
+    compiled = compiled or compile_problem(problem)
     chosen = draw(compiled, count, seed)
     width = max(2, len(str(count)))
     failures: list[str] = []

@@ -22,8 +22,8 @@ from decimal import Decimal
 
 from derive.mathtext.display import parse_display
 from derive.mathtext.tokens import LatexError
-from derive.mathtext.tree import Add, Frac, Mul, Num, Side, Sym
-from derive.verifier.evaluate import CTX, Undefined, Unresolved, substitute, walk
+from derive.mathtext.tree import Add, Mul, Num, Side, Sym
+from derive.verifier.evaluate import CTX, Undefined, Unresolved, rebuild, substitute, walk
 from derive.verifier.judge import Claim, Judge, Value, lone_number, tolerance
 from derive.verifier.report import Failure
 
@@ -218,7 +218,8 @@ class _Operation:
             return line
         choices = [[(n, shown[v]) for n in nodes] for v, nodes in matches.items()]
         for picked in itertools.islice(itertools.product(*choices), 4):
-            self.alternatives.append(replace_nodes(line, {id(n): tree for n, tree in picked}))
+            by_id = {id(n): tree for n, tree in picked}
+            self.alternatives.append(rebuild(line, lambda n, by_id=by_id: by_id.get(id(n))))
         self.free |= {n for alt in self.alternatives for n in self.judge.names(alt) if n in unknowns}
         return self.alternatives[0]
 
@@ -295,19 +296,6 @@ class _Operation:
             if abs(s.center - c * r.center) > slack or not c:
                 yield f"the line is not {what} {named}".replace("  ", " ")
                 return
-
-
-def replace_nodes(node: object, by_id: dict[int, object]) -> object:
-    """``node`` with the nodes named (by identity) replaced."""
-    if id(node) in by_id:
-        return by_id[id(node)]
-    if isinstance(node, Add):
-        return Add(tuple((s, replace_nodes(t, by_id)) for s, t in node.terms))
-    if isinstance(node, Mul):
-        return Mul(tuple(replace_nodes(f, by_id) for f in node.factors))
-    if isinstance(node, Frac):
-        return Frac(replace_nodes(node.num, by_id), replace_nodes(node.den, by_id))
-    return node
 
 
 def check(judge: Judge) -> Iterator[Failure]:
