@@ -21,3 +21,20 @@ def test_an_energy_labelled_in_words_worked_from_a_carried_velocity_is_carried()
     assert found[1][0] == found[2][0] == "correct"
     assert found[3][0] == "wrong"
     assert found[4][0] == "carried"
+
+
+def test_a_mass_restated_wrongly_after_a_slip_is_carried_into_the_energy_worked_from_it() -> None:
+    # OpenStax 8-5: a 0.150 kg puck at 35.0 m/s caught by a 70.0 kg goalie at rest. True:
+    # 0.150(35.0) = 5.25 = 70.15 v, v = 0.07484 m/s. Slip 1: the puck left out after, 5.25 = 70.0 v,
+    # v = 0.075. Slip 2: the puck's 150 g restated as 1.50 kg; the energy before worked with it,
+    # ½(1.50)(35.0)² = 918.75 J (true ½(0.150)(35.0)² = 91.875 J): right with their own mass, carried.
+    work = (
+        "0.150(35.0) = 70.0 v\n"
+        "v = 5.25/70.0 = 0.075 m/s\n"
+        "m_p = 150 g = 1.50 kg\n"
+        "KE before = 1/2 (1.50)(35.0)^2 = 918.75 J\n"
+    )
+    found = worst_lines("openstax-cp-8-5-goalie-catches-puck", work)
+    assert found[1][0] == "wrong"
+    assert found[3][0] == "wrong"
+    assert found[4][0] == "carried"
