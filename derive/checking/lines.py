@@ -225,7 +225,7 @@ class Trace(Carrying):
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
                 self._replace(line, ends, slip=False)
-        made = {d.mistake for d in diags} | ({name} if name in cofunctions.NAMES else set())  # an angle's
+        made = {d.mistake for d in diags} | ({name} if name in (*cofunctions.NAMES, "ke_formula") else set())
         again = [n for n, names in self.named.items() if slipnames.same_mistake(names, made)]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
@@ -418,7 +418,7 @@ class Trace(Carrying):
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one unknown
         (``v' = 0.0784``) never for "they move off together" (e = 0: one name for both velocities)."""
-        j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
+        j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], [*self.held[-12:], *self.worked[-8:]])
         if j is None or len(F.free_symbols & set(self.U)) != 1 or not together(self.equations[j], self.U):
             return j
         for k in self.equations:  # the first other equation whose place it can take
