@@ -23,6 +23,7 @@ from derive.checking.misread import with_copied
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
 from derive.checking.ownresults import worked_from_own
+from derive.checking.putback import independent
 from derive.checking.relations import Point, Values
 from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
 from derive.mathtext.notation import student
@@ -284,7 +285,7 @@ class Carrying(Depending):
             if self.world is not None and self.holds(pairs, self.world) and self._moved(pairs):
                 return True
             return self._with_own_values(line)  # ΔKE = KE_f - KE_i = 0.000420 - 91.875 after KE_f wrong
-        return True
+        return not independent(self, line)  # 0.7776/2.16 = 36 % after both energies without the ½
 
     def _writes_copied(self, line: Line) -> bool:
         """Whether ``line`` writes, on any side, a decimal given as the student copied it wrongly."""
