@@ -19,9 +19,11 @@ from derive.checking.context import Context
 from derive.checking.dependency import GOES_ON, Depending, side_value
 from derive.checking.figures import literal_tolerance
 from derive.checking.inference import Read
+from derive.checking.misread import with_copied
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of
 from derive.checking.ownresults import worked_from_own
+from derive.checking.putback import independent
 from derive.checking.relations import Point, Values
 from derive.checking.worlds import NUMBER_SIDE, Pair, written_right
 from derive.mathtext.notation import student
@@ -257,10 +259,12 @@ class Carrying(Depending):
         d = self.ctx.derived()  # the energy lost is T_1 - T_2, whichever of them the student got wrong
         lost = {d["T_lost"][0]: d["T_1"][0] - d["T_2"][0]} if "T_lost" in d else {}
         exprs = tuple(x.xreplace(own).xreplace(lost).xreplace(own) for x in line.exprs)  # own T_lost first
-        if exprs == line.exprs:
+        givens = {g.symbol: x for g in self.ctx.problem.givens if (x := own.get(g.symbol)) is not None}
+        put = tuple(with_copied(self.ctx, x, givens) for x in exprs)  # a given written wrongly (0.22 kg for
+        if put == line.exprs:  # 22 g), in a result worked from it (KE_i = ½(0.22)(3.5)²)
             return False
         world = self.world or self.truth  # else the result worked from them (T_2 = T_1 - own T_lost)
-        return self.holds(self.pairs(replace(line, exprs=exprs)), world) or worked_from_own(self, line, exprs)
+        return self.holds(self.pairs(replace(line, exprs=put)), world) or worked_from_own(self, line, exprs)
 
     def _uses_wrong_numbers(self, line: Line, pairs: list[Pair]) -> bool:
         """A line of numbers only, right as arithmetic, worked from numbers the student got wrong
@@ -281,7 +285,7 @@ class Carrying(Depending):
             if self.world is not None and self.holds(pairs, self.world) and self._moved(pairs):
                 return True
             return self._with_own_values(line)  # ΔKE = KE_f - KE_i = 0.000420 - 91.875 after KE_f wrong
-        return True
+        return not independent(self, line)  # 0.7776/2.16 = 36 % after both energies without the ½
 
     def _writes_copied(self, line: Line) -> bool:
         """Whether ``line`` writes, on any side, a decimal given as the student copied it wrongly."""

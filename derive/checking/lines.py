@@ -5,10 +5,9 @@ given, and the velocities after the impact): true lines are correct. The first
 false line is the slip; the mistake that explains it is named (the rules of
 :mod:`.equation`, or the number judge for ``v_A2n = -1.11``), and the equations
 are solved again with that line in place of the one it stands for (the closest of
-(1)-(4)). A later line that is false for the problem but true in that world is a
-carried error, not a new mistake; one false in both is a further slip, which joins
-the first in the world. A slip with no unknowns (``79.2 - 59.5 = 29.7``) carries
-its wrong number instead.
+(1)-(4)). A later line that is false for the problem but true in that world is a carried
+error, not a new mistake; one false in both is a further slip, which joins the first in the
+world. A slip with no unknowns (``79.2 - 59.5 = 29.7``) carries its wrong number instead.
 """
 
 from __future__ import annotations
@@ -144,8 +143,9 @@ class Trace(Carrying):
         if (answer is not None and answer.correct) or (answer is None and self.holds(pairs, self.truth)):
             total = labelled.of_trace(self, line)  # a total, a component or an energy labelled in words
             if total is not None:  # "p before = 150000 x 0.300 + 110000 x 0.120 = 58200": B's sign
-                self._wrote_wrong(line)
-                return self._slip(line, [total, *pairs], answer)
+                self._wrote_wrong(line)  # right with the student's own values (their v_B): carried
+                own = reworld.in_world(self, [total])
+                return self._carried(line) if own else self._slip(line, [total, *pairs], answer)
             if self.slips and (
                 self._continues(line)
                 or self._uses_wrong_numbers(line, pairs)
@@ -225,7 +225,7 @@ class Trace(Carrying):
             ends = replace(pairs[0], right=pairs[-1].right, raw=None)  # what the student carries on: first = last
             if ends.difference.free_symbols & set(self.U):
                 self._replace(line, ends, slip=False)
-        made = {d.mistake for d in diags} | ({name} if name in cofunctions.NAMES else set())  # an angle's
+        made = {d.mistake for d in diags} | ({name} if name in (*cofunctions.NAMES, "ke_formula") else set())
         again = [n for n, names in self.named.items() if slipnames.same_mistake(names, made)]
         if again:
             lead = f"False: the same mistake as in line {again[0]}, made again"
@@ -418,7 +418,7 @@ class Trace(Carrying):
     def _closest(self, F: sympy.Expr) -> int | None:
         """The equation ``F`` most likely stands for (:func:`~.worlds.closest`); a value of one unknown
         (``v' = 0.0784``) never for "they move off together" (e = 0: one name for both velocities)."""
-        j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], self.held[-12:])
+        j = closest(F, self.equations, self.U, self.pts[0], self.truth[0], [*self.held[-12:], *self.worked[-8:]])
         if j is None or len(F.free_symbols & set(self.U)) != 1 or not together(self.equations[j], self.U):
             return j
         for k in self.equations:  # the first other equation whose place it can take

@@ -145,9 +145,16 @@ def solve_world(
         if not roots:
             return None
         target = {u: number_of(sympy.sympify(guide[u])) or 0 for u in U}
-        roots.sort(key=lambda r: sum(abs((number_of(r[u]) or 0) - target[u]) for u in U))
+        roots.sort(key=lambda r: (_against_sign(r, U), sum(abs((number_of(r[u]) or 0) - target[u]) for u in U)))
         out.append(roots[0])
     return out
+
+
+def _against_sign(root: Values, U: tuple[sympy.Symbol, ...]) -> int:
+    """How many unknowns that cannot be negative (e, a mass: the symbol says so) ``root`` makes
+    negative: the student's own e after a slip is the positive root (``e^2 = 1/2``: 0.707), though
+    the negative one gives velocities nearer the true ones."""
+    return sum(1 for u in U if u.is_nonnegative and ((number_of(root[u]) or 0).real < -1e-12))
 
 
 def closest(
