@@ -94,3 +94,38 @@ def test_unicode_hats_are_unit_vectors() -> None:
     )
     assert statuses(SPHERES, work) == ["correct", "correct"]
     assert statuses(SPHERES, work.replace("= −11.9î", "= 11.9î"))[-1] == "wrong"
+
+
+CARRIED = """i along x, j along y. n̂ = cos 20° i + sin 20° j, t̂ = −sin 20° i + cos 20° j.
+u_A = 80(cos 45° i + sin 45° j) = 56.57 i + 56.57 j
+u_B = 110(cos 120° i + sin 120° j) = 55.00 i + 95.26 j
+u_A · n̂ = 56.57 cos 20° + 56.57 sin 20° = 72.50
+u_B · n̂ = 55.00 cos 20° + 95.26 sin 20° = 84.26
+4a + 3b = 4(72.50) + 3(84.26) = 542.8
+"""
+
+
+def test_a_dot_product_of_a_vector_written_wrong_is_carried() -> None:
+    # B's x component is -55.00 (110 cos 120°); written +55.00, u_B · n̂ = 55.00(0.9397) + 95.26(0.3420)
+    # = 51.68 + 32.58 = 84.26 follows from it (the right one is -19.10): carried, as the momentum after it
+    assert statuses(FISICALAB, CARRIED) == ["correct", "wrong", "correct", "carried", "carried"]
+    said_again = CARRIED.replace("u_B · n̂ = 55.00 cos 20° + 95.26 sin 20° = 84.26", "u_B · n̂ = 84.26")
+    assert statuses(FISICALAB, said_again) == ["correct", "wrong", "correct", "carried", "carried"]
+
+
+BOLD = """Take **i** along the line of centres from A to B and **j** perpendicular.
+
+**u**_A = 15(0.6**i** + 0.8**j**) = 9**i** + 12**j**, **u**_B = −12**i**
+
+After: **v**_A = a**i** + 12**j**, **v**_B = b**i**
+
+4(9**i** + 12**j**) + 3(−12**i**) = 4(a**i** + 12**j**) + 3b**i**
+
+b − a = 0.5(9 + 12) = 10.5
+"""
+
+
+def test_markdown_bold_vectors_glued_and_a_number_times_a_letter_before_i() -> None:
+    # OCR M3 2007: 4(9) + 3(-12) = 0 = 4a + 3b along i, 4(12) = 4(12) across; b - a = 0.5(9 + 12)
+    assert statuses(OCR, BOLD) == ["correct"] * 4
+    assert statuses(OCR, BOLD.replace("3(−12**i**) =", "3(12**i**) ="))[2] == "wrong"

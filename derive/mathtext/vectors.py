@@ -187,12 +187,13 @@ def _scaled(term: str, nested: int = 0) -> dict[str, str] | None:
 def _coefficient(text: str) -> bool:
     """Whether ``text`` (what stands before a unit vector) is its coefficient: nothing, or it
     ends in a digit (not a name's: ``v_1i`` is a name), a bracket, a space or ``*``, or it is
-    one letter (``ai``: a times i)."""
+    one letter (``ai``: a times i) or a number times one (``3bi``)."""
     if re.search(r"(?<![\d.])[A-Za-z]\w*\d$", text):
         return False  # "v_1i", "v1i": the name's own mark (A's initial), not v_1 times i
     if not text.strip() or re.search(r"[\d)*\s]$", text):
         return True
-    return re.fullmatch(r"\s*[A-Za-z]", text) is not None
+    # one letter, or a number times one (3b i: not 2pi)
+    return re.fullmatch(r"\s*[A-Za-z]|\s*\d*\.?\d+\s*[A-Za-hj-oq-z]", text) is not None
 
 
 def _joined(bits: list[str]) -> str:
