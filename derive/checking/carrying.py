@@ -345,15 +345,17 @@ class Carrying(Depending):
             self.wrong_number = (f"{right.real:.12g}", bad.left)  # the student's axes): the later side's value
 
     def _carries_number(self, line: Line) -> bool:
-        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right (the
-        last one, or one before it: ``u_B = 55.00 i + 95.26 j`` has two)."""
+        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right, or
+        says again one a slip before it wrote (``u_B = 55.00 i + 95.26 j`` has two)."""
         assert self.wrong_number is not None
-        if not any(self._carries_one(line, *n) for n in (self.wrong_number, *self.earlier_numbers)):
+        if not self._carries_one(line, *self.wrong_number) and not any(
+            self._carries_one(line, *n, only_said=True) for n in self.earlier_numbers
+        ):
             return False
         self._wrote_wrong(line)  # its numbers are the student's wrong ones, as a carried line's are
         return True
 
-    def _carries_one(self, line: Line, wrong: str, right: sympy.Expr) -> bool:
+    def _carries_one(self, line: Line, wrong: str, right: sympy.Expr, only_said: bool = False) -> bool:
         value = number_of(right.xreplace(self.pts[0]))
         if value is None:
             return False
@@ -361,6 +363,8 @@ class Carrying(Depending):
             written = sympy.Rational(wrong.lstrip("+-"))
         except (TypeError, ValueError):
             return False
+        if only_said:
+            return self._restates(line, written, value.real)
         exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
         if exprs != line.exprs and self.holds(self.pairs(replace(line, exprs=exprs)), self.truth):
             return True
