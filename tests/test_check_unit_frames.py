@@ -129,3 +129,12 @@ def test_markdown_bold_vectors_glued_and_a_number_times_a_letter_before_i() -> N
     # OCR M3 2007: 4(9) + 3(-12) = 0 = 4a + 3b along i, 4(12) = 4(12) across; b - a = 0.5(9 + 12)
     assert statuses(OCR, BOLD) == ["correct"] * 4
     assert statuses(OCR, BOLD.replace("3(−12**i**) =", "3(12**i**) ="))[2] == "wrong"
+
+
+HEAD_ON = "aqa-m3-2007-spheres-approach-head-on"
+
+
+def test_a_side_in_names_beside_vectors_on_the_one_axis_of_a_head_on_impact() -> None:
+    # m_B = 0.2 kg, u_B = -2, v_B = 3.4 (m/s along i): the impulse on B is 0.2(3.4 - (-2)) = 1.08 along i
+    assert statuses(HEAD_ON, "J = m_B(v_B - u_B) = 0.2(3.4 i - (-2 i)) = 1.08 i") == ["correct"]
+    assert statuses(HEAD_ON, "J = m_B(v_B - u_B) = 0.2(3.4 i - (-2 i)) = 0.28 i") == ["wrong"]

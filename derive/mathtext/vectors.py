@@ -68,10 +68,14 @@ def split_vectors(
         None if p is not None else _NAME.match(s.strip()) or _in_vectors(s, vectors)
         for s, p in zip(sides, parts, strict=True)
     ]
+    used = {a for p in parts if p is not None for a in p}
+    if head_on and len(used) == 1:  # one axis: a side in numbers or names (m(v_after - v_before)) is along it
+        names = [
+            n if n is not None or p is not None else s.strip() for s, p, n in zip(sides, parts, names, strict=True)
+        ]
     if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
         return [sides]
     vectors |= {n.group(1) for n in names if isinstance(n, re.Match)}
-    used = {a for p in parts if p is not None for a in p}
     if head_on and len(used) == 1:
         (axis,) = used
         return [tuple(p[axis] if p is not None else _on_axis(n, "") for p, n in zip(parts, names, strict=True))]
