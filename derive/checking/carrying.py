@@ -101,6 +101,8 @@ class Carrying(Depending):
     wrong_terms: set[str]
     own: dict[sympy.Symbol, sympy.Expr]
     wrong_number: tuple[str, sympy.Expr] | None
+    #: The wrong numbers before the last (a vector's two components, both worked wrong), the latest first.
+    earlier_numbers: tuple[tuple[str, sympy.Expr], ...] = ()
     wrong_amounts: list[float]
     right_terms: dict[str, sympy.Expr]
 
@@ -337,15 +339,27 @@ class Carrying(Depending):
         if left is None or right is None or bad.left.free_symbols or bad.right.free_symbols:
             return
         sides = bad.text.split(" = ")
+        if self.wrong_number is not None:
+            self.earlier_numbers = (self.wrong_number, *self.earlier_numbers[:2])
         if NUMBER_SIDE.match(sides[1]):
             self.wrong_number = (sides[1], bad.left)
         elif NUMBER_SIDE.match(sides[0]):
             self.wrong_number = (sides[0], bad.right)
+        elif abs(right.imag) < 1e-12 and right.real != 0:  # working on both sides (a vector's component in
+            self.wrong_number = (f"{right.real:.12g}", bad.left)  # the student's axes): the later side's value
 
     def _carries_number(self, line: Line) -> bool:
-        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right."""
+        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right, or
+        says again one a slip before it wrote (``u_B = 55.00 i + 95.26 j`` has two)."""
         assert self.wrong_number is not None
-        wrong, right = self.wrong_number
+        if not self._carries_one(line, *self.wrong_number) and not any(
+            self._carries_one(line, *n, only_said=True) for n in self.earlier_numbers
+        ):
+            return False
+        self._wrote_wrong(line)  # its numbers are the student's wrong ones, as a carried line's are
+        return True
+
+    def _carries_one(self, line: Line, wrong: str, right: sympy.Expr, only_said: bool = False) -> bool:
         value = number_of(right.xreplace(self.pts[0]))
         if value is None:
             return False
@@ -353,6 +367,8 @@ class Carrying(Depending):
             written = sympy.Rational(wrong.lstrip("+-"))
         except (TypeError, ValueError):
             return False
+        if only_said:
+            return self._restates(line, written, value.real)
         exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
         if exprs != line.exprs and self.holds(self.pairs(replace(line, exprs=exprs)), self.truth):
             return True
@@ -360,9 +376,17 @@ class Carrying(Depending):
 
     def _restates(self, line: Line, wrong: sympy.Rational, right: float) -> bool:
         """``J ≈ 0.238`` after ``0.060 × (-39.6) = -0.2376`` (2.376): the wrong number said again,
-        rounded and maybe as a size, for a quantity: true once its right value is put in its place."""
-        if not line.exprs or len(line.exprs) != 2 or not line.exprs[0].free_symbols or right == 0:
+        rounded and maybe as a size, for a quantity: true once its right value is put in its place;
+        worked again in numbers first, right as arithmetic (``u_B · n̂ = 55.00 cos 20° + 95.26 sin 20°
+        = 84.26`` after the vector ``u_B = 55.00 i + 95.26 j`` written wrong)."""
+        if not line.exprs or len(line.exprs) < 2 or not line.exprs[0].free_symbols or right == 0:
             return False
+        numbers = replace(line, sides=line.sides[1:], exprs=line.exprs[1:])  # "u_B · n = 55 cos 20 + … = 84.26"
+        if len(line.exprs) > 2 and (
+            self._in_unknowns(numbers.exprs) or not self.holds(self.pairs(numbers), self.truth)
+        ):
+            return False
+        line = replace(line, sides=(line.sides[0], line.sides[-1]), exprs=(line.exprs[0], line.exprs[-1]))
         m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
         if m is None or m.group(3) or not written_right(Decimal(m.group(2)), sympy.Float(abs(wrong), 20)):
             return False

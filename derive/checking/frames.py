@@ -21,6 +21,7 @@ from derive.checking.figures import literal_tolerance
 from derive.checking.naming import PREFIX
 from derive.checking.numeric import number_of
 from derive.checking.towardwords import original_way
+from derive.mathtext.unitframe import declares_frame
 
 
 def n_components(ctx: Context) -> dict[sympy.Symbol, sympy.Expr]:
@@ -144,6 +145,8 @@ def declared_axes(text: str) -> dict[str, tuple[str, int]]:
     """The axes a student places in words (``wall along i, j pointing away from the wall``): the
     vector reader's axis of each unit vector (i, x: n; j, y: t) -> derive's axis and its sign
     (0 where the words give none). Empty where no axis is placed, or where it is derive's own."""
+    if declares_frame(text):  # "n̂ = cos 20° i + sin 20° j": i and j are the student's x and y
+        return {}
     plain = _STYLED.sub(r"\1", text).replace("$", " ").replace("î", "i").replace("ĵ", "j")
     found: dict[str, tuple[str, int]] = {}
     last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")

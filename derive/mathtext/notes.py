@@ -32,6 +32,8 @@ _MATH = GREEK | FUNCTIONS | {"pi", "deg", "rad"}
 #: Markdown bold or italics around words (``**CLM:**``, ``__Answer__``); not ``u**2``.
 _BOLD = re.compile(r"(?<![\w*])(\*\*|__)(?=\S)([^*\n]*?\S)\1(?![\w*])")
 #: Struck-out text (Markdown ``~~…~~``, LaTeX ``\sout{…}``, ``\st{…}``, ``\xout{…}``).
+#: A bold letter glued to what is around it, a vector in Markdown (``9**i**``, ``**u**_A``).
+_BOLD_LETTER = re.compile(r"\*\*([A-Za-z])\*\*")
 _STRUCK = re.compile(r"~~[^~\n]*~~|\\(?:sout|st|xout)\{[^{}]*\}")
 _NO = r"(?:no\b|nope|wrong|mistake|oops|error|ignore|scrap|scratch|cross(?:ed)?|not\s+this|redo|x\b|✗)"
 #: A withdrawal of what comes before it on the line.
@@ -69,7 +71,7 @@ _ITALIC = re.compile(r"(?:^|(?<=[\s(]))\*(?=[^\s*])([^*\n]*?\s[^*\n]*?[^\s*])\*(
 def unbold(text: str) -> str:
     """``text`` without Markdown's layout: bold and italics around words (``**momentum:**``,
     ``*v = 3 m/s*``), inline code marks (```v_B = 2.4```), a blockquote's ``>``."""
-    return _CODE_QUOTE.sub(" ", _ITALIC.sub(r"\1", _BOLD.sub(r"\2", text)))
+    return _CODE_QUOTE.sub(" ", _ITALIC.sub(r"\1", _BOLD.sub(r"\2", _BOLD_LETTER.sub(r"\1", text))))
 
 
 def unmarked(text: str) -> str:

@@ -61,7 +61,7 @@ from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
 from derive.mathtext.units import UNIT, in_si
-from derive.mathtext.vectors import split_vectors
+from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
 #: A row that continues the relation above it: ``&= 6.4``, ``&\\approx 91.7``, ``  ≈ 0.389``.
@@ -162,7 +162,7 @@ def read_relations(
     out: list[Relation] = []
     points = european_points(text)
     memory: dict[str, str] = {}
-    vectors: set[str] = set()  # the names split into components so far: u in "J = m(v - u)"
+    vectors = VectorNames()  # the names split into components so far: u in "J = m(v - u)"; the frame
     whole: dict[int, tuple[str, ...]] = {}  # a line's last relation before it was split by component
     for line, column, written, plain in pieces(text):
         plain, letter = stored(plain)  # "= 1.08 J  [STO -> A]": the value kept in memory A

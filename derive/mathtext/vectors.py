@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.unitframe import Frame, VectorNames, add_to_frame, declared, dotted, hats, turned
+
 #: Unit vectors, by the component they pick: n (the first axis) or t.
 UNITS = {
     "i": "n",
@@ -46,21 +48,34 @@ def split_vectors(
     line of motion, the problem's one axis: one relation with the names as written (``u_A = 3``).
     ``vectors``: the names split into components so far (this call adds its own); a side written
     in them (``J = m(v - u) = 0.06(39.6 i)``) has on each axis their components (``m(v_n - u_n)``)."""
-    parts = [_placed(_vector(s), axes) for s in sides]
+    vectors = VectorNames() if vectors is None else vectors
+    hatted = tuple(hats(s) for s in sides)  # 3î + 4ĵ, u_A • n̂
+    unit = declared(hatted, _vector)  # "n̂ = cos 20° i + sin 20° j": the student's frame, no relation
+    if unit is not None and isinstance(vectors, VectorNames):
+        add_to_frame(vectors, *unit)
+        return []
+    frame = getattr(vectors, "frame", None)
+    dots = tuple(dotted(h, _vector, component, frame) for h in hatted)  # u_A · n̂: u_An
+    sides = tuple(d if d != h else s for s, h, d in zip(sides, hatted, dots, strict=True))
+    parts = [_placed(_vector(d), d, axes, frame) for d in dots]
     if not any(p is not None for p in parts):
         return [sides]
+    sides = dots
     # a lead-in in words before the first name ("After impact write v_A = a i + …"): the name
     first = re.sub(r"^(?:[A-Za-z]{2,}\s+)+(?=\S+$)", "", sides[0].strip()) if parts[0] is None else sides[0]
     sides = (first, *sides[1:]) if _NAME.match(first.strip()) else sides
-    vectors = set() if vectors is None else vectors
     names = [
         None if p is not None else _NAME.match(s.strip()) or _in_vectors(s, vectors)
         for s, p in zip(sides, parts, strict=True)
     ]
+    used = {a for p in parts if p is not None for a in p}
+    if head_on and len(used) == 1:  # one axis: a side in numbers or names (m(v_after - v_before)) is along it
+        names = [
+            n if n is not None or p is not None else s.strip() for s, p, n in zip(sides, parts, names, strict=True)
+        ]
     if any(p is None and n is None for p, n in zip(parts, names, strict=True)):
         return [sides]
     vectors |= {n.group(1) for n in names if isinstance(n, re.Match)}
-    used = {a for p in parts if p is not None for a in p}
     if head_on and len(used) == 1:
         (axis,) = used
         return [tuple(p[axis] if p is not None else _on_axis(n, "") for p, n in zip(parts, names, strict=True))]
@@ -91,8 +106,12 @@ def _on_axis(n: re.Match | str, axis: str, vectors: set[str] = frozenset()) -> s
     return component_name(n, axis) if axis else _plain(n)
 
 
-def _placed(part: dict[str, str] | None, axes: dict[str, tuple[str, int]] | None) -> dict[str, str] | None:
-    if part is None or not axes:
+def _placed(
+    part: dict[str, str] | None, side: str, axes: dict[str, tuple[str, int]] | None, frame: Frame | None
+) -> dict[str, str] | None:
+    if part is None or frame:
+        return part and turned(part, side, frame)  # n̂ = cos 20° i + sin 20° j: i and j turned
+    if not axes:
         return part
     return {axes[a][0]: c if axes[a][1] > 0 else f"-({c})" for a, c in part.items()}
 
@@ -172,12 +191,13 @@ def _scaled(term: str, nested: int = 0) -> dict[str, str] | None:
 def _coefficient(text: str) -> bool:
     """Whether ``text`` (what stands before a unit vector) is its coefficient: nothing, or it
     ends in a digit (not a name's: ``v_1i`` is a name), a bracket, a space or ``*``, or it is
-    one letter (``ai``: a times i)."""
+    one letter (``ai``: a times i) or a number times one (``3bi``)."""
     if re.search(r"(?<![\d.])[A-Za-z]\w*\d$", text):
         return False  # "v_1i", "v1i": the name's own mark (A's initial), not v_1 times i
     if not text.strip() or re.search(r"[\d)*\s]$", text):
         return True
-    return re.fullmatch(r"\s*[A-Za-z]", text) is not None
+    # one letter, or a number times one (3b i: not 2pi)
+    return re.fullmatch(r"\s*[A-Za-z]|\s*\d*\.?\d+\s*[A-Za-hj-oq-z]", text) is not None
 
 
 def _joined(bits: list[str]) -> str:
