@@ -10,7 +10,7 @@ B's after, (1 + e)(rt3/4)u (momentum x + y = (rt3/2)u, restitution y - x = e(rt3
 from __future__ import annotations
 
 import pytest
-from support.checked import worst_lines
+from support.checked import solved_text, statuses_of, worst_lines
 
 from derive.mathtext.notation import student
 
@@ -39,3 +39,64 @@ def test_a_name_beginning_rt_is_not_a_root() -> None:
 )
 def test_rt3_lines_are_read_and_judged(line: str, status: str) -> None:
     assert worst_lines(AQA, line + "\n")[1][0] == status
+
+
+# A letter the statement names an angle by ("the ball's path turns through an angle φ") where the
+# file defines the asked quantity by its own name (deflection = beta_A2 - psi): the student's φ is
+# that quantity, as the statement says. Worked by hand: u = 4 m/s at 30 deg to the line of
+# centres, e = 0.5, B identical and at rest. Along n A has 4 cos 30 = 3.4641, across 2; after,
+# v_A2n = 3.4641(1 - 0.5)/2 = 0.8660, so A moves at atan(2/0.8660) = 66.59 deg to the line of
+# centres and turns through 66.59 - 30 = 36.59 deg (tan = sqrt3(1.5)/(5 - 1.5) = 0.7423).
+TURNS = """\
+title = "Equal discs, line of centres at 30 deg: the angle A turns through"
+kind = "oblique"
+statement = "A disc moving at 4 m/s strikes an identical disc at rest; the line of centres makes 30 deg with its path, e = 0.5. The impact turns the first disc's path through an angle φ."
+question = "Find φ."
+find = ["deflection"]
+
+[given]
+m_A = "1 kg"
+m_B = "1 kg"
+v_A1 = "4 m/s"
+v_B1 = 0
+e = 0.5
+psi = "30 deg"
+
+[define]
+deflection = "beta_A2 - psi"
+
+[A]
+angle = "psi"
+from = "+n"
+toward = "+t"
+"""
+
+
+@pytest.mark.parametrize(
+    ("work", "status"),
+    [
+        ("phi = 36.6°\n", "correct"),
+        ("φ ≈ 36.6 deg\n", "correct"),
+        ("tan phi = 0.742\n", "correct"),
+        ("phi = 66.6°\n", "wrong"),
+    ],
+)
+def test_the_statements_letter_names_a_defined_angle(tmp_path, work: str, status: str) -> None:
+    solution = solved_text(tmp_path, "turns.toml", TURNS)
+    assert statuses_of(solution, work)[1] == status
+
+
+@pytest.mark.parametrize(
+    ("last", "status"),
+    [
+        ("so the deflection phi = a - 30", "correct"),
+        ("angle phi = a - 30", "correct"),
+        ("deflection phi = a + 30", "wrong"),
+    ],
+)
+def test_words_before_a_greek_name_lead_in(tmp_path, last: str, status: str) -> None:
+    """``deflection θ = a − 30``: prose before a Greek letter typed as a word, as before ``V``; the
+    bare 30 beside the angles is degrees."""
+    solution = solved_text(tmp_path, "turns.toml", TURNS)
+    work = f"A now moves at angle a to the line of centres\ntan a = 2/0.866\n{last}\n"
+    assert statuses_of(solution, work)[3] == status
