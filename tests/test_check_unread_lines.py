@@ -100,3 +100,23 @@ def test_words_before_a_greek_name_lead_in(tmp_path, last: str, status: str) -> 
     solution = solved_text(tmp_path, "turns.toml", TURNS)
     work = f"A now moves at angle a to the line of centres\ntan a = 2/0.866\n{last}\n"
     assert statuses_of(solution, work)[3] == status
+
+
+# A body's component said in words with its time, under a lead-in that names the axis ("Perp: Q's
+# component after = ..."): derive's component of that body at that time on that axis. AQA M3 2007
+# Q6(a) again (A at u, 30 deg to the line of centres; B identical, at rest): along the line of
+# centres A has u cos 30 before, across it u sin 30 before and after (smooth: no impulse across);
+# B has nothing across after; along it B has (1 + e)(sqrt3/4)u after.
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        ("Along l.o.c.: A's component before = u cos 30", "correct"),
+        ("Perp: A's component after = u sin 30", "correct"),
+        ("Across: B's final component = 0", "correct"),
+        ("Along the line of centres: B's component after = (1 + e)(sqrt3/4)u", "correct"),
+        ("perpendicular to l.o.c.: A's component after = e u sin 30", "wrong"),
+        ("Along l.o.c.: A's component before = u sin 30", "wrong"),
+    ],
+)
+def test_a_component_in_words_under_its_axis(line: str, status: str) -> None:
+    assert worst_lines(AQA, line + "\n")[1][0] == status
