@@ -10,7 +10,7 @@ B's after, (1 + e)(rt3/4)u (momentum x + y = (rt3/2)u, restitution y - x = e(rt3
 from __future__ import annotations
 
 import pytest
-from support.checked import solved_text, statuses_of, worst_lines
+from support.checked import lines, solved_text, statuses_of, worst_lines
 
 from derive.mathtext.notation import student
 
@@ -120,3 +120,31 @@ def test_words_before_a_greek_name_lead_in(tmp_path, last: str, status: str) -> 
 )
 def test_a_component_in_words_under_its_axis(line: str, status: str) -> None:
     assert worst_lines(AQA, line + "\n")[1][0] == status
+
+
+# A law quoted in its textbook letters with the values of its letters stated with it ("v^2 = u^2 +
+# 2as with u = 0, s = 2 m"): the formula and what its letters stand for, which a teacher leaves
+# alone, not claims about the problem's own u or s. OCR M2 Jan 2007 Q3: thrown down at 21 m/s from
+# 40 m: v^2 = 21^2 + 2(9.8)(40) = 441 + 784 = 1225, v = 35 m/s (the chain's u is the rebound's).
+THROWN = "chain-ocr-m2-2007-rebounds-to-start"
+
+
+@pytest.mark.parametrize(
+    "first",
+    [
+        "Down: v^2 = u^2 + 2as, u = 21, a = 9.8, s = 40",
+        "using v^2 = u^2 + 2as where u = 21 m/s, s = 40 m, a = 9.8",
+        "v^2 = u^2 + 2gh with u = 21, h = 40",
+        "fall: v^2 = u^2 + 2gh, where u = 21 m/s and h = 40 m",
+    ],
+)
+def test_a_laws_letters_stated_with_it_are_not_marked(tmp_path, first: str) -> None:
+    work = f"{first}\nv^2 = 441 + 784 = 1225\nv = 35 m/s\n"
+    got = lines(THROWN, work)
+    assert 1 not in got or got[1][0] not in ("wrong", "carried")
+    assert got[2][0] == got[3][0] == "correct"
+
+
+def test_a_result_after_the_laws_letters_is_marked() -> None:
+    got = lines(THROWN, "v^2 = u^2 + 2as, u = 21, s = 40 so v^2 = 1255\n")
+    assert got[1][0] == "wrong"

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.arrows import arrows_said
+from derive.mathtext.laws import with_its_letters
 from derive.mathtext.notes import GAP_THEN_NAME, SO_ABROAD, UNIT_THEN_NAME
 from derive.mathtext.sides import LONE_VALUE, html_marks
 
@@ -51,7 +52,7 @@ def split_relations(plain: str) -> list[str]:
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
-                parts += _comma_split(part)
+                parts += with_its_letters(_comma_split(part))  # "v^2 = u^2 + 2as with u = 0, s = 2 m"
     return [p for p in parts if _RELATION.search(p)]
 
 
