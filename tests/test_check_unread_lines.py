@@ -148,3 +148,39 @@ def test_a_laws_letters_stated_with_it_are_not_marked(tmp_path, first: str) -> N
 def test_a_result_after_the_laws_letters_is_marked() -> None:
     got = lines(THROWN, "v^2 = u^2 + 2as, u = 21, s = 40 so v^2 = 1255\n")
     assert got[1][0] == "wrong"
+
+
+# A component named by its axis's sign alone (``∥ = U cos α``, ``⊥ = U sin α``, ``\perp = …``): at a
+# wall the component along it (t) and across it (n). Pre-U 2013 Q12(i): the path makes θ with the
+# wall, so along the wall the sphere has u cos θ and across it u sin θ before the impact.
+PRE_U_WALL = "pre-u-9795-2-2013-june-q12i-wall-rebound-at-right-angles"
+
+
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        ("∥ = u cos θ", "correct"),
+        ("before: ∥ = u cos θ, ⊥ = u sin θ", "correct"),
+        ("$\\perp = u\\sin\\theta$", "correct"),
+        ("∥ = u sin θ", "wrong"),
+    ],
+)
+def test_an_axis_sign_alone_names_the_component(line: str, status: str) -> None:
+    assert worst_lines(PRE_U_WALL, line + "\n")[1][0] == status
+
+
+# A quantity after said to be a percentage of itself before (``KE after = 60% of before``): that
+# fraction times it. Edexcel M4 2018 Q2: the ball keeps 60% of its kinetic energy, so T_2 = 0.6 T_1.
+SIXTY = "edexcel-m4-2018-june-q2-wall-keeps-60-percent-of-ke"
+
+
+@pytest.mark.parametrize(
+    ("line", "status"),
+    [
+        ("KE after = 60% of before", "correct"),
+        ("KE after = 60 % of the original, find alpha", "correct"),
+        ("KE_f = 60% of KE_i", "correct"),
+    ],
+)
+def test_a_percentage_of_the_quantity_before(line: str, status: str) -> None:
+    assert worst_lines(SIXTY, line + "\n")[1][0] == status
