@@ -56,6 +56,10 @@ _LETTER_VALUE = re.compile(
 )
 
 
+#: A law and its letters fit in a line of this many characters (a longer piece is not searched).
+_SHORT = 160
+
+
 def with_its_letters(parts: list[str]) -> list[str]:
     """``parts`` (a line's relations, split at commas) without a law quoted in its textbook letters
     and the values of its letters stated with it (``v^2 = u^2 + 2as with u = 0, s = 2 m``): the
@@ -64,7 +68,7 @@ def with_its_letters(parts: list[str]) -> list[str]:
     out: list[str] = []
     law = False
     for part in parts:
-        head, *clause = _CLAUSE.split(part, maxsplit=1)
+        head, *clause = _CLAUSE.split(part, maxsplit=1) if len(part) <= _SHORT else [part]
         if "=" in head and quoted_law(tuple(head.split("="))):
             law = True
             out += [] if clause and _LETTER_VALUE.match(clause[0]) else [part]
