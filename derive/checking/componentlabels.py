@@ -72,3 +72,31 @@ def _unsigned(words: str, value: str) -> str:
 
 #: The mark :func:`_unsigned` puts on the words naming an axis across, read as ``A_T`` (:func:`.axisnames.letter_components`).
 SIZE = "unsigned"
+
+
+#: A body's component said in words with its time (``A's component after``, ``B's final component``),
+#: its axis said by the lead-in before it (``Perp: Q's component after = u sin α``, the statement's Q
+#: already written as its body by :mod:`.bodywords`).
+_COMPONENT_WORDS = re.compile(
+    r"(?<![\w'])([AB])['’]s\s+(?:(initial|final)\s+)?component(?:\s+(before|after|initially|finally))?(?![\w'])",
+    re.I,
+)
+_LOC = r"(?:\s+(?:to\s+)?(?:it|(?:the\s+)?(?:l\.?\s?o\.?\s?c\.?|line\s+of\s+(?:centres|centers|impact))))?"
+_LEAD_N = re.compile(rf"(?:along|parallel(?:\s+to)?|par\.?|∥){_LOC}|(?:common\s+)?normal", re.I)
+_LEAD_T = re.compile(rf"(?:perp(?:\.|endicular)?|⊥|across){_LOC}|(?:common\s+)?tangent(?:ial)?", re.I)
+
+
+def component_words(text: str, label: str) -> str:
+    """``A's component after`` under a lead-in naming the axis (``Perp:``, ``Along l.o.c.:``) as
+    derive's name of that component (``v_A2t``): along the line of centres n, across it t."""
+    lead = label.strip().rstrip(":").strip()
+    axis = "n" if _LEAD_N.fullmatch(lead) else "t" if _LEAD_T.fullmatch(lead) else ""
+    if not axis:
+        return text
+
+    def named(m: re.Match) -> str:
+        when = (m[2] or m[3] or "").lower()
+        time = "2" if when in ("final", "after", "finally") else "1" if when else ""
+        return f"v_{m[1].upper()}{time}{axis}" if time else m[0]
+
+    return _COMPONENT_WORDS.sub(named, text)

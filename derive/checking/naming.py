@@ -28,7 +28,7 @@ import sympy
 
 from derive.checking.axisnames import letter_components
 from derive.checking.centrenames import centre_names
-from derive.checking.componentlabels import COMPONENT_OF, SIZE
+from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
 from derive.checking.conventions import plus_said, sign_of
 from derive.checking.instants import one_body_instants
@@ -211,8 +211,8 @@ def of_the_body(
     (``A_n'`` after), ``across`` and ``perpendicular`` -> ``A_t``. The problem's own names
     (``keep``: a given speed u) stay as they are."""
     m = _BODY.match(label.strip())
-    if not m:
-        return _after_label(text, label, seen - set(keep))
+    if not m:  # "Perp: A's component after": a component said in words under its axis
+        return _after_label(component_words(text, label), label, seen - set(keep))
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
 
     def own(k: re.Match, name: str) -> str:

@@ -44,15 +44,17 @@ _ANGLE = re.compile(r"(?:alpha|beta|gamma|delta|theta|phi|psi)(?:_\w+)?")
 
 def _sums_in_degrees(raw: list, meanings: dict[str, sympy.Expr]) -> None:
     """``theta = a - 30`` where ``a`` is declared an angle (``A now moves at angle a to the line of
-    centres``): a bare number added to angles is degrees, as the angles' are (``raw`` changed in place)."""
+    centres``) and ``theta`` is one (declared, derive's, or the statement's letter): a bare number
+    added to angles is degrees, as the angles' are (``raw`` changed in place)."""
     angles = {
         sympy.Symbol(PREFIX + n)
         for n, e in meanings.items()
         if isinstance(e, sympy.Symbol) and _ANGLE.fullmatch(e.name)
     }
-    for i, r in enumerate(raw):
+    for i, r in enumerate(raw):  # derive's own angles too (``theta``, the statement's letter; ``beta_A2``)
+        known = {s for e in r.exprs or () for s in e.free_symbols if _ANGLE.fullmatch(s.name)}
         if r.exprs and angles:
-            exprs = tuple(_in_degrees(e, angles) for e in r.exprs)
+            exprs = tuple(_in_degrees(e, angles | known) for e in r.exprs)
             raw[i] = replace(r, exprs=exprs) if exprs != r.exprs else r
 
 

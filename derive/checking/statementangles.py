@@ -31,4 +31,29 @@ def statement_angles(problem: Problem) -> dict[str, str]:
             continue
         if _GREEK[m.group(1)] in statement or re.search(rf"\b{m.group(1)}\b", statement):
             found.setdefault(m.group(1), []).append(name)
-    return {letter: names[0] for letter, names in found.items() if len(names) == 1}
+    out = {letter: names[0] for letter, names in found.items() if len(names) == 1}
+    out.update(_defined_angle(problem, asked, taken | set(found), statement))
+    return out
+
+
+#: "turns A's direction of motion through an angle θ", "makes an angle of φ with": a letter named
+#: as an angle in the statement or the question.
+_NAMED_ANGLE = re.compile(r"\bangle\s+(?:of\s+)?(" + "|".join(_GREEK.values()) + r")")
+_LETTERS = {g: name for name, g in _GREEK.items()}
+
+
+def _defined_angle(problem: Problem, asked: set[str], taken: set[str], statement: str) -> dict[str, str]:
+    """The statement's one angle letter of its own (``θ`` in "turns A's direction through an angle
+    θ") -> the one asked quantity the file defines from the angles (``deflection = beta_A2 - psi``):
+    the file's name for what the statement calls θ. None where either is not alone."""
+    text = f"{statement} {getattr(problem, 'question', '') or ''}"
+    letters = {_LETTERS[g] for g in _NAMED_ANGLE.findall(text)} - taken
+    defined = [
+        d.name
+        for d in problem.asks.defined
+        if d.name in asked
+        and any(_ANGLE_RESULT.fullmatch(s.name) or s.name.startswith("delta_") for s in d.expr.free_symbols)
+    ]
+    if len(letters) != 1 or len(defined) != 1:
+        return {}
+    return {letters.pop(): defined[0]}

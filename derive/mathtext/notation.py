@@ -71,8 +71,9 @@ _INVERSE = re.compile(r"\b(sin|cos|tan)\s*(?:\^\s*(?:\(\s*-\s*1\s*\)|\{\s*-\s*1\
 _BARS = re.compile(r"\|([^|]+)\|")
 _NUM = r"(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
 _ANGLE_MARK = re.compile(rf"(?<![\w.])({_NUM})\s*(?:°|deg(?:rees?)?\b|(rad(?:ians?)?\b))")
-#: ``sqrt3``, ``2sqrt3``, ``root3``: a root glued to the number after it (not a name ``sqrtx``).
-_GLUED_ROOT = re.compile(r"(?<![A-Za-z_])(?:sqrt|root)(?=\d)")
+#: ``sqrt3``, ``2sqrt3``, ``root3``, ``rt3`` (typed on a phone), ``2rt(3)``: a root glued to the
+#: number after it, or to a number alone in brackets (not a name ``sqrtx`` or ``rt``).
+_GLUED_ROOT = re.compile(r"(?<![A-Za-z_])(?:sqrt|root|rt)(?=\d|\(\d+\))")
 _BARE_CALL = re.compile(rf"\b({'|'.join(sorted(FUNCTIONS))})\s+([A-Za-z][A-Za-z0-9_]*|{_NUM})")
 _TOKEN = re.compile(rf"\s*({_NUM}|[A-Za-z][A-Za-z0-9_]*|\*\*|[-+*/^(),=]|\S)")
 

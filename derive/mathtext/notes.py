@@ -324,7 +324,8 @@ def _is_more_figures(m: re.Match) -> bool:
 _PROSE_HEAD = re.compile(
     r"^\s*(?:(?!(?:let|where|with|if|when|suppose|of|for|on|by|at|in|to|is|and|or|sub\w*|us\w+|put\w*|from|since"
     r"|given|because|as|assum\w+|tak\w+|call\w*)\s)[A-Za-z][A-Za-z']{2,}\s+)+"
-    r"(?=(?:[A-Za-z]|[α-ωΑ-Ω])(?:_\{?\w{1,4}\}?|'{1,2}|\d)?\s*$)",
+    r"(?=(?:[A-Za-z]|[α-ωΑ-Ω]|(?:alpha|beta|gamma|theta|phi|psi|omega|lambda|mu)(?![A-Za-z]))"
+    r"(?:_\{?\w{1,4}\}?|'{1,2}|\d)?\s*$)",
     re.I,
 )
 

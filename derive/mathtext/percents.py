@@ -50,3 +50,30 @@ def per_cent_sides(sides: tuple[str, ...]) -> tuple[str, ...]:
         elif _STARTS.match(before):
             out[k - 1] = _STARTS.sub("100% * ", before, count=1)
     return tuple(out)
+
+
+#: A quantity after said to be a percentage of itself before (``KE after = 60% of before``, ``speed
+#: after = 80 % of the original``, ``T_2 = 36% of T_1``): the name, the percentage, what it is of.
+_PER_CENT_OF = re.compile(
+    r"(?P<name>\b[A-Za-z][\w ]{0,30}?\s*(?:after|final|2|_2|f)\s*)=\s*(?P<p>\d+\.?\d*\s*%)\s+of\s+(?:the\s+|its\s+)?"
+    r"(?P<of>(?:value\s+)?(?:before|initial(?:ly)?|original(?:\s+value)?|it)\b|[A-Za-z][\w ]{0,30}?\s*(?:before|initial|1|_1|i)\b)(?P<rest>\s*,[^=\d,;]*$)?",
+    re.I,
+)
+_TIME = re.compile(r"(?:after|final)(?=\s*$)|(?<=_)2(?=\s*$)|(?<=[A-Za-z])2(?=\s*$)|(?<=_)f(?=\s*$)", re.I)
+
+
+def per_cent_of(text: str) -> str:
+    """``KE after = 60% of before`` as ``KE after = 60% * KE before``: a percentage of a quantity
+    is that fraction times it; "of before" (the original, it) is of the same quantity before. Words
+    after it (``, find α``) are dropped: the quantity is no number they could follow."""
+
+    def times(m: re.Match) -> str:
+        of = m["of"]
+        if re.fullmatch(r"(?:value\s+)?(?:before|initial(?:ly)?|original(?:\s+value)?|it)", of.strip(), re.I):
+            before = {"after": "before", "final": "initial", "2": "1", "f": "i"}
+            of = _TIME.sub(lambda t: before[t.group(0).lower()], m["name"].strip())
+            if of == m["name"].strip():
+                return m.group(0)
+        return f"{m['name']}= {m['p']} * {of}"
+
+    return _PER_CENT_OF.sub(times, text)

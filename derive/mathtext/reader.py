@@ -28,7 +28,7 @@ from derive.mathtext.doing import said_doing
 from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
-from derive.mathtext.laws import quoted_law
+from derive.mathtext.laws import law_and_letters, quoted_law
 from derive.mathtext.layout import ENV, NESTED, column_vectors, row_plain
 from derive.mathtext.matrices import matrices
 from derive.mathtext.memories import recalled, stored
@@ -186,7 +186,7 @@ def read_relations(
             main, aside = main.rstrip()[:-1], aside.rstrip()[:-1]
         main, aside = thousands(main), thousands(aside)  # "3,000(6)": one number, not two relations
         main, aside = decimal_commas(main), decimal_commas(aside)  # "0,25": nought point two
-        parts = [(p, True) for p in split_relations(aside)] + [(p, False) for p in split_relations(main)]
+        parts = law_and_letters(split_relations(aside), split_relations(main))  # "v^2 = u^2 + 2as with u = 0"
         for part, is_aside in parts:
             r = after_on_line(relation(line, column, written, part), main, part)  # "After …: A = (v, 0)"
             r = replace(r, aside=True) if r is not None and is_aside else r

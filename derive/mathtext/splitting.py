@@ -9,7 +9,9 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.arrows import arrows_said
+from derive.mathtext.laws import with_its_letters
 from derive.mathtext.notes import GAP_THEN_NAME, SO_ABROAD, UNIT_THEN_NAME
+from derive.mathtext.percents import per_cent_of
 from derive.mathtext.sides import LONE_VALUE, html_marks
 
 _ARROW = re.compile(
@@ -35,7 +37,7 @@ def split_relations(plain: str) -> list[str]:
     plain = re.sub(
         r"(\d|\)|/s|J|kg)\s+y\s+(?=[A-Za-z][\w']*\s*=)", r"\1 ; ", plain
     )  # Spanish "and": "= 4 m/s y v_B = 8"
-    plain = _remarks_apart(plain)  # "lock together (e = 0)", "(check: sqrt(0.7) = 0.837)": a remark
+    plain = per_cent_of(_remarks_apart(plain))  # "(e = 0)": a remark; "KE after = 60% of before": of T_1
     plain = _OR_VALUE.sub(r"\g<name> = \g<a> or \g<name> = \g<b>", plain)  # x = 5 or 2: two roots
     parts: list[str] = []
     plain = re.sub(
@@ -51,7 +53,7 @@ def split_relations(plain: str) -> list[str]:
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
             for part in _colon_split(piece):
-                parts += _comma_split(part)
+                parts += with_its_letters(_comma_split(part))  # "v^2 = u^2 + 2as with u = 0, s = 2 m"
     return [p for p in parts if _RELATION.search(p)]
 
 

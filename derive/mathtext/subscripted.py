@@ -27,4 +27,11 @@ def ascii_subscripts(text: str) -> str:
         glued = m.group(1) != ")" and word is not None and "_" in word.group(0)
         return m.group(1) + ("" if glued else "_") + marks
 
+    text = _AXIS_SIGN.sub(lambda m: _AXIS_WORD[m.group(1).lstrip("\\")], text)  # "∥ = U cos α": parallel
     return _GREEK_DIGIT.sub(r"\1_\2", _BARE.sub(r"\1_\2", _RUN.sub(run, text)))
+
+
+#: A component named by the sign of its axis alone (``∥ = U cos α, ⊥ = U sin α``, ``\perp = …``):
+#: the words parallel and perpendicular, which the names' readers place (at a wall: t and n).
+_AXIS_SIGN = re.compile(r"(?<![\w_{^\\])(∥|⊥|\\parallel|\\perp)(?![A-Za-z0-9_}])(?=\s*=)")
+_AXIS_WORD = {"∥": "parallel", "⊥": "perpendicular", "parallel": "parallel", "perp": "perpendicular"}
