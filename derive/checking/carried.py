@@ -308,8 +308,8 @@ def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
     if not bad.difference.free_symbols & set(trace.U):
         return None
     model, own = trace.ctx.model, {j for _n, j in trace.replaced}
-    if trace.world is None:  # a first slip: a form no outcome solves (e = approach/separation, find e)
-        return _in_forms(trace, bad, own)
+    if trace.world is None:  # a first slip: a form no outcome solves (e = approach/separation), not a step
+        return None if workedslips.works_on_previous(trace, bad) else _in_forms(trace, bad, own)
     for m in REGISTRY.values():
         v = m.build(model.under(trace.variant))
         both = merge(trace.variant, v) if v is not None else None
