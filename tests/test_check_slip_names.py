@@ -366,15 +366,16 @@ def test_a_given_copied_with_a_digit_changed_into_working_in_numbers_is_copied_w
     assert found[1][:2] == ("wrong", "copied_wrong")
 
 
-def test_the_unknowns_coefficient_used_the_wrong_way_is_algebra() -> None:
-    # Solving c x = k for x the wrong way (multiplied by c, or k/c turned over) is algebra, not
-    # a number worked wrongly.
+def test_the_unknowns_coefficient_used_the_wrong_way_is_arithmetic() -> None:
+    # Solving c x = k for x the wrong way (multiplied by c, or k/c turned over) is a division of
+    # numbers worked wrongly, nothing moved across: arithmetic, as the corpus's teachers mark
+    # ``sin²α = 0.4 × 7/16`` from ``(7/16) sin²α = 0.4`` and ``v_A = 0.025`` from ``20 v_A = −0.5``.
     # OCR M2 2006 (find e): 2 kg at 5 hits 1 kg at rest, A then at 2: 10 = 4 + v_B2, v_B2 = 6;
     # 6 - 2 = e(5 - 0): 4 = 5e, e = 4/5; e = 5/4 divides the wrong way.
     work = "2(5) + 0 = 2(2) + v_B2\nv_B2 = 6\n6 - 2 = e(5 - 0)\n4 = 5e\ne = 5/4\n"
     found = lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
     assert found[4][0] == "correct"
-    assert found[5][:2] == ("wrong", "algebra")
+    assert found[5][:2] == ("wrong", "arithmetic")
     # AQA M3 2007: 0.3 kg at 3 meets 0.2 kg at 2 head on, e = 0.8: 0.5 = 0.3 v_A2 + 0.2 v_B2,
     # v_B2 = v_A2 + 4: 0.5 = 0.5 v_A2 + 0.8, 0.5 v_A2 = -0.3, v_A2 = -0.6; v_A2 = -0.15
     # multiplies by 0.5 instead of dividing.
@@ -384,7 +385,7 @@ def test_the_unknowns_coefficient_used_the_wrong_way_is_algebra() -> None:
     )
     found = lines("aqa-m3-2007-spheres-approach-head-on", work)
     assert found[4][0] == "correct"
-    assert found[5][:2] == ("wrong", "algebra")
+    assert found[5][:2] == ("wrong", "arithmetic")
 
 
 def test_a_bracket_with_a_number_in_it_not_multiplied_out_is_algebra() -> None:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking import cofunctions, misread, reworld, signslips, slipnames, slipworld, workedslips
+from derive.checking import cofunctions, energyforms, misread, reworld, signslips, slipnames, slipworld, workedslips
 from derive.checking.dependency import exact_in_world
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
@@ -144,6 +144,8 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
         return one, slipnames.FLIPPED["b_sign"], "b_sign"
     flip, right = slipnames.sign_flipped(trace.ctx, bad, trace.U, holds)
     prefer = workedslips.substituted_factors(trace.held, bad, trace.U)
+    if not flip and (energy := energyforms.masses_put_right(trace.ctx, bad, holds)) is not None:
+        return trace._closest(energy), f": {slipnames.KE_FORMULA}", "ke_formula"  # ½ m v_B² for ½(9m) v_B²
     if not flip and (scaled := workedslips.term_scaled(trace.ctx, bad, holds, prefer)) is not None:
         return trace._closest(scaled), workedslips.SCALED, "algebra"  # a factor lost in substituting
     if not flip:
@@ -300,13 +302,14 @@ def kept_world(trace: Trace, F: sympy.Expr, j: int, world: list[Values] | None) 
 
 
 def world_mistake(trace: Trace, bad: Pair) -> tuple[Mistake, int] | None:
-    """A further slip that is a common mistake made on the student's own equations so far
-    (``e = (0.4475 - 0.3)/0.5`` after a slip gave v_A2 = 0.4475: restitution reversed): the
-    first whose equations, in place of those the student has not written for themselves,
-    give velocities that make ``bad`` hold; with the first equation it changes."""
-    if trace.world is None or not bad.difference.free_symbols & set(trace.U):
+    """A further slip that is a common mistake made on the student's own equations so far (``e = (0.4475
+    - 0.3)/0.5`` after v_A2 = 0.4475: restitution reversed), the first whose equations, in place of those
+    the student has not written, make ``bad`` hold; with the first equation it changes."""
+    if not bad.difference.free_symbols & set(trace.U):
         return None
     model, own = trace.ctx.model, {j for _n, j in trace.replaced}
+    if trace.world is None:  # a first slip: a form no outcome solves (e = approach/separation), not a step
+        return None if workedslips.works_on_previous(trace, bad) else _in_forms(trace, bad, own)
     for m in REGISTRY.values():
         v = m.build(model.under(trace.variant))
         both = merge(trace.variant, v) if v is not None else None
@@ -324,7 +327,7 @@ def _made(trace: Trace, m: Mistake, eqs: dict, own: set[int], bad: Pair) -> int 
     changed = {j: eqs[j] for j in m.enters if j in eqs and j in trace.equations and j not in own}
     if not changed or all(trace.equations[j] == F for j, F in changed.items()):
         return None
-    world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world)
+    world = solve_world({**trace.equations, **changed}, trace.U, trace.pts, trace.world or trace.truth)
     return min(changed) if world is not None and trace.holds([bad], world) else None
 
 

@@ -9,6 +9,8 @@ before (e scales a rebound speed, so a wall's energy scales by e²; two bodies' 
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import sympy
 
 from derive.checking.context import Context
@@ -37,3 +39,31 @@ def more_energies(ctx: Context) -> list[dict[str, sympy.Expr]]:
         forms += [{"T_2": energy(b, m, "2"), "T_lost": before - energy(b, m, "2")}]
         forms += [{"T_lost": energy(b, m, "1") - energy(b, m, "2")}]
     return forms
+
+
+def masses_put_right(ctx: Context, bad, holds) -> sympy.Expr | None:
+    """The relation ``bad`` stands for where it writes a kinetic energy out term by term, ½ M v²
+    for each body's velocity v, with a term's mass or half wrong (``½ m v_A² + ½ m v_B² = ¼ m u²``
+    where B's mass is 9m), and holds once each such term is ½ m v² with its own body's mass: a
+    wrong formula of the energy, as teachers name it (``ke_formula``); None otherwise."""
+    if bad.raw is None:
+        return None
+    model, p = ctx.model, ctx.problem
+    nm, half = model.nm, sympy.Rational(1, 2)
+    bodies = [("A", model.m_A)] + ([] if p.fixed_B else [("B", model.m_B)])
+    mass = {s: m for b, m in bodies for k in "12" for a in "nt" if (s := getattr(nm, f"{b}{k}{a}", None)) is not None}
+    raw, changed = [], False
+    for side in bad.raw:
+        terms = []
+        for t in sympy.Add.make_args(sympy.expand(side)):
+            squared = [s for s in mass if t.has(s**2) and not (t / s**2).free_symbols & set(mass)]
+            if len(squared) == 1:
+                right = half * mass[squared[0]] * squared[0] ** 2
+                changed |= sympy.simplify(ctx.in_unknowns(t - right)) != 0
+                t = right
+            terms.append(t)
+        raw.append(sympy.Add(*terms))
+    if not changed:
+        return None
+    left, right = (ctx.in_unknowns(x) for x in raw)
+    return left - right if holds(replace(bad, left=left, right=right, raw=(raw[0], raw[1]))) else None

@@ -6,7 +6,9 @@ changed (``2(1 + e)² = 2 + 2e + 2e²``; ``(1 + e)² + (1 − e)² = 2 + 2e``; `
 have become numbers, so the checker's rules for a number worked wrongly would call it
 arithmetic; these functions look at the letters themselves. Terms collected or a bracket
 multiplied by a number with a number wrong (``2eu − 5eu = 3eu``; ``81e² + 9e² = 80e²``;
-``3(v + 5eu) = 3v + 5eu``) stay arithmetic, as teachers mark them.
+``3(v + 5eu) = 3v + 15eu`` written ``3v + 12eu``) stay arithmetic, as teachers mark them; a
+bracket's factor taken to some of its terms only (``3(v + 5eu) = 3v + 5eu``) is algebra
+(:mod:`.bracketfactors`).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import misread, slipnames, termsigns
+from derive.checking import bracketfactors, misread, slipnames, termsigns
 from derive.checking.worlds import Pair
 
 #: The kinetic energies a line may name.
@@ -33,7 +35,7 @@ def plain(bad: Pair, ctx=None) -> str:
     left, right = bad.left, bad.right
     if not (left.free_symbols | right.free_symbols) or left == 0 or right == 0 or bad.raw is None:
         return "arithmetic"
-    if ctx is not None and termsigns.sign_lost(ctx, bad):
+    if ctx is not None and (termsigns.sign_lost(ctx, bad) or bracketfactors.partly_multiplied(ctx, bad)):
         return "algebra"
     if not (_squares(bad.raw[0]) ^ _squares(bad.raw[1])):  # one side the square, the other multiplied out
         return "arithmetic"
@@ -61,6 +63,8 @@ def in_letters(trace, bad: Pair, name: str) -> str:
     factor; ``name`` else."""
     if name != "arithmetic" or trace.previous is None:
         return name
+    if bracketfactors.from_previous(trace, bad):  # a bracket multiplied out on some of its terms only
+        return "algebra"
     U = tuple(trace.U)
     F = _polynomial(bad.difference, U)
     if F is None:

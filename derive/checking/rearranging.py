@@ -28,7 +28,7 @@ def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     letter lost or gained in one term of what the unknown comes to; ``arithmetic`` where a
     whole number's division was not done (:func:`undivided`); "" otherwise."""
     tol = max(bad.tol, 1e-9)
-    if undivided(bad, held, U, pt):
+    if undivided(bad, held, U, pt) or divided_wrongly(bad, held, U, pt):
         return "arithmetic"
     for variant in _variants(held, bad, set(U)):
         if proportional(bad.difference, variant, U, [pt], tol):
@@ -52,6 +52,43 @@ def undivided(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
             continue
         return proportional(bad.difference, rest - other, U, [pt], max(bad.tol, 1e-9))
     return False
+
+
+def divided_wrongly(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
+    """Whether ``bad`` is ``held`` (``c x = k`` as typed: one term in the unknowns, one free of them) solved
+    by a division of numbers done wrongly: its sign lost (``v = 0.025`` from ``20 v = −0.5``),
+    multiplied instead (``sin²α = 0.4 × 7/16`` from ``(7/16) sin²α = 0.4``) or turned over
+    (``e = 5/4`` from ``4 = 5e``). Nothing is moved across in such a step, and the teachers of the
+    corpus call it arithmetic, as they call the division not done (:func:`undivided`); the unknown's
+    ½ dropped stays algebra (its coefficient lost, :func:`_variants`)."""
+    unknowns = set(U)
+    terms = sympy.Add.make_args(sympy.expand(held.difference))
+    inside = [t for t in terms if t.free_symbols & unknowns]
+    if len(terms) != 2 or len(inside) != 1 or written_terms(held.text) != 2:  # ``10 = 20v + 10.5``: three
+        return False
+    t, k = inside[0], next(x for x in terms if x is not inside[0])
+    c, rest = t.as_coeff_Mul()
+    if c in (0, 1, -1) or not k or rest.free_symbols - unknowns:
+        return False
+    tol = max(bad.tol, 1e-9)
+    wrong = (c * rest - k, rest + k * c, k * rest + c)  # the sign lost, multiplied, turned over
+    return any(proportional(bad.difference, w, U, [pt], tol) or _same_ratio(bad.difference, w, U, pt) for w in wrong)
+
+
+def _same_ratio(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict, tol: float = 1e-3) -> bool:
+    """Whether ``F`` is a number times ``G`` at two points of the unknowns (``sin²α − 0.175`` and
+    ``sin²α − 7/40``: not polynomials in α, so not :func:`proportional`'s)."""
+    ratios = []
+    for a in (0.3, 0.7):
+        at = {**pt, **{u: sympy.Float(a + i / 10) for i, u in enumerate(U)}}
+        try:
+            f, g = complex(F.xreplace(at).evalf()), complex(G.xreplace(at).evalf())
+        except (TypeError, ValueError):
+            return False  # a letter left: not a number
+        if abs(g) < 1e-12:
+            return False
+        ratios.append(f / g)
+    return abs(ratios[0]) > 1e-12 and abs(ratios[0] - ratios[1]) <= tol * abs(ratios[0])
 
 
 def _variants(held: Pair, bad: Pair, unknowns: set) -> list[sympy.Expr]:

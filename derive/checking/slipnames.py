@@ -219,6 +219,9 @@ def solving_slip(
     failing = [p for p in pairs if p.difference.free_symbols & unknowns and not holds(p)]
     if not failing or not all(holds(p) for p in plain):
         return ""
+    held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
+    if len(line_u) == 1 and held and rearranging.divided_wrongly(failing[0], held[-1], U, pt):
+        return "arithmetic"  # ``c x = k`` divided wrongly: nothing moved across
     # algebra: the rearranged expression shown is not the relation's, its own arithmetic right
     shown = [s for s in line_sides[1:] if not NUMBER_SIDE.match(student(s.strip())) and not _has_letters(s)]
     numbers = set(re.findall(r"\d+\.?\d*", prev_text))
@@ -226,7 +229,6 @@ def solving_slip(
         return "algebra"
     # arithmetic: the relation before, its terms in the unknown as they were (up to a factor),
     # and only its number worked wrongly (``v = 5`` from ``10 = 4 + v``; 100 x 1/2 written 25)
-    held = [p for p in prev_pairs if p.difference.free_symbols & unknowns]
     shows = replace(failing[0], text=" = ".join(line_sides))  # ``v = 10 + 4 = 14``: the 4 moved, on the line
     if len(line_u) == 1 and held and (how := rearranging.kind(shows, held[-1], U, pt)):  # a sign, a factor, a letter
         return how

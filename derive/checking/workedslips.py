@@ -231,3 +231,13 @@ def worked_on(trace, pairs: list[Pair], name: str, world: list) -> bool:
     its first side = its last (``x = u(3 + 3e)/2``), the other unknowns as they had them, as a
     teacher marks the lines after it."""
     return name in ("arithmetic", "algebra") and len(pairs) > 1 and trace.holds([pairs[0]], world)
+
+
+def works_on_previous(trace, bad: Pair) -> bool:
+    """Whether ``bad`` is in the unknowns of the relation just before it, which held (``x = u/3 −
+    y`` after ``y − x = u/3``): a step from it, named by that step, not by a mistake's other form."""
+    if trace.previous is None:
+        return False
+    unknowns = set(trace.U)
+    before = set().union(*(p.difference.free_symbols for p in trace.previous[1])) & unknowns
+    return bool(before) and before == bad.difference.free_symbols & unknowns
