@@ -18,6 +18,7 @@ import sympy
 from derive.checking import (
     carried,
     cofunctions,
+    firstwritten,
     freshslips,
     labelled,
     letterslips,
@@ -81,7 +82,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
-    return merged([i for i in items if i is not None]), notes
+    return merged([i for i in firstwritten.moved_back(trace, lines, items) if i is not None]), notes
 
 
 class Trace(Carrying):
