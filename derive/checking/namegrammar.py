@@ -273,8 +273,9 @@ def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, symp
 def _by_word(name: str, bodies: dict[str, str]) -> bool:
     """Whether ``name`` is ``u`` or ``v`` with a body's word from the statement after it and nothing
     else (``v_red``, ``u_car``), or the statement's letter for it (``u_S``, ``v_T`` for spheres S and
-    T): the habit's letters, u before and v after, for that body."""
-    m = re.fullmatch(r"([uv])_?([a-z]{3,}|(?![AB])[A-Z])", name)
+    T): the habit's letters, u before and v after, for that body. The exam's P and Q (and A, B) are
+    left to the relations, which read their time and sign as before."""
+    m = re.fullmatch(r"([uv])_?([a-z]{3,}|(?![ABPQ])[A-Z])", name)
     return m is not None and m.group(2) in bodies
 
 
