@@ -50,7 +50,8 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
         moved = wrote and reworld.moved(trace, pairs, written_wrong=True) and trace._moved(pairs)  # values it moves
         return reworld.nearer_the_slip(trace, line, pairs) or moved or exact_in_world(trace, pairs)
     m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
-    if not m or m.group(3):
+    givens = {g.symbol for g in trace.ctx.problem.givens}
+    if not m or m.group(3) or any(x in givens for x in line.exprs or ()):  # "since e = 1": the data, stated
         return False
     written = Decimal(m.group(1) + m.group(2))
     d = trace.ctx.derived()

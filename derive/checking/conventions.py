@@ -117,3 +117,19 @@ def plus_said(line: str) -> int:
             if sign:
                 return sign
     return 0
+
+
+#: The first axis laid along the line of centres (or impact) with its sense from A toward B:
+#: "n along the line of impact (from A to B)", "x-axis along the line of centres (from A towards B)",
+#: "Line of impact = x (A toward B)", "**i** along the line of centres from A to B".
+_AXIS = re.compile(
+    r"(?:\b(?:n|x|i)\b|\\(?:imath|hat\{?\\?[inx])|mathbf\{i\}|\*\*[ix]\*\*|line\s+of\s+(?:centres|centers|impact))",
+)
+_A_TO_B = re.compile(r"(?:\bfrom\s+(?-i:A)\s+|\(\s*(?-i:A)\s+)(?:to|towards?)\s+(?-i:B)\b", re.I)
+
+
+def axis_sense(line: str) -> int:
+    """+1 where ``line`` lays the line of centres' axis from A toward B without saying "positive":
+    the axis's sense is the student's positive along it, declared, as ``positive: from A toward B``
+    is (a reading the values would infer the other way round is not the student's); 0 otherwise."""
+    return 1 if _A_TO_B.search(line) and _AXIS.search(line) else 0

@@ -1,13 +1,11 @@
 """A typed derivation judged line by line: true, the first slip, carried, or a further slip.
 
-Each relation :mod:`.derivation` reads is put to the problem's true values (every
-given, and the velocities after the impact): true lines are correct. The first
-false line is the slip; the mistake that explains it is named (the rules of
-:mod:`.equation`, or the number judge for ``v_A2n = -1.11``), and the equations
-are solved again with that line in place of the one it stands for (the closest of
-(1)-(4)). A later line that is false for the problem but true in that world is a carried
-error, not a new mistake; one false in both is a further slip, which joins the first in the
-world. A slip with no unknowns (``79.2 - 59.5 = 29.7``) carries its wrong number instead.
+Each relation is put to the problem's true values: true lines are correct. The first false line
+is the slip; the mistake that explains it is named (the rules of :mod:`.equation`, or the number
+judge for ``v_A2n = -1.11``), and the equations are solved again with that line in place of the
+one it stands for. A later line false for the problem but true in that world is carried; one
+false in both is a further slip, which joins the first in the world. A slip with no unknowns
+(``79.2 - 59.5 = 29.7``) carries its wrong number instead.
 """
 
 from __future__ import annotations
@@ -20,6 +18,7 @@ import sympy
 from derive.checking import (
     carried,
     cofunctions,
+    firstwritten,
     freshslips,
     labelled,
     letterslips,
@@ -31,6 +30,7 @@ from derive.checking import (
     slipnames,
     slipworld,
     termslips,
+    twobefore,
     words,
     workedslips,
 )
@@ -58,10 +58,8 @@ COPIED = slipnames.COPIED
 KEPT = 0
 
 
-#: The most relations of one derivation that are judged (the rest are reported as not checked).
-MAX_LINES = 200
-#: The slips of one derivation searched for a common mistake (the rest are named as further slips).
-MAX_SEARCHED = 12
+MAX_LINES = 200  # the most relations of one derivation that are judged (the rest are not checked)
+MAX_SEARCHED = 12  # the slips searched for a common mistake (the rest are named as further slips)
 Line = Read
 
 
@@ -83,7 +81,7 @@ def derivation_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     if len(lines) > MAX_LINES:
         rest = f"{len(lines) - MAX_LINES} more relations, from line {lines[MAX_LINES].number}, were not checked"
         items.append(Item("line", str(lines[MAX_LINES].number), "", "error", "", f"{rest} (at most {MAX_LINES})."))
-    return merged([i for i in items if i is not None]), notes
+    return merged([i for i in firstwritten.moved_back(trace, lines, items) if i is not None]), notes
 
 
 class Trace(Carrying):
@@ -386,6 +384,8 @@ class Trace(Carrying):
             self.world = [{u: out.post[u].xreplace(pt) for u in self.U} for pt in self.pts]
             self.equations = {j: F for j, F in out.equations.items() if j in self.equations}
             self.variant = variant or self.variant
+        elif not widen:  # a further slip in the values before, on the other body: both in the world
+            twobefore.with_both(self, variant, found[0])
         return tuple(d for m in found for d in self.ctx.diagnosis(slipnames.as_named(self.ctx, m)))
 
     def _rounded_early(self, line: Line, bad: Pair) -> str:

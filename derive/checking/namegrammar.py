@@ -240,7 +240,7 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
             time = "1"  # vAn beside vAn': before
         elif not time and kind == "v" and body and _only_before_marked(parsed, body, axis):
             time = "2"  # vAx beside vAx1 (and none marked after): after
-        elif not time and kind == "v" and body and _by_word(name, bodies):
+        elif not time and kind == "v" and body and _by_word(name, bodies) and not _said_speed(name, text):
             time = "1" if name[0] == "u" else "2"  # v_red, u_car: the habit's u before, v after
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
@@ -272,9 +272,22 @@ def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, symp
 
 def _by_word(name: str, bodies: dict[str, str]) -> bool:
     """Whether ``name`` is ``u`` or ``v`` with a body's word from the statement after it and nothing
-    else (``v_red``, ``u_car``): the habit's letters, u before and v after, for that body."""
-    m = re.fullmatch(r"([uv])_?([a-z]{3,})", name)
+    else (``v_red``, ``u_car``), or the statement's letter for it (``u_S``, ``v_T`` for spheres S and
+    T): the habit's letters, u before and v after, for that body. The exam's P and Q (and A, B) are
+    left to the relations, which read their time and sign as before."""
+    m = re.fullmatch(r"([uv])_?([a-z]{3,}|(?![ABPQ])[A-Z])", name)
     return m is not None and m.group(2) in bodies
+
+
+def _said_speed(name: str, text: str) -> bool:
+    """Whether the text calls ``name`` a speed in its sentence ("Speeds before: $u_P$ (P) and $u_Q$",
+    "$u_P$ and $u_Q$ are the **speeds** before"): a size, which the inference signs, not the habit's
+    velocity."""
+    m = re.fullmatch(r"([uv])_?([A-Z])", name)
+    if m is None:
+        return False
+    typed = rf"{m.group(1)}_?\{{?{m.group(2)}\}}?(?![A-Za-z])"
+    return re.search(rf"\bspeeds?\b[^.\n]*{typed}|{typed}[^.\n]*\bspeeds?\b", text, re.I) is not None
 
 
 def _only_before_marked(parsed: dict[str, tuple[str, str, str, str]], body: str, axis: str) -> bool:

@@ -30,7 +30,7 @@ from derive.checking.axisnames import letter_components
 from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
-from derive.checking.conventions import plus_said, sign_of
+from derive.checking.conventions import axis_sense, plus_said, sign_of
 from derive.checking.instants import one_body_instants
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
@@ -425,6 +425,8 @@ def declarations(
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
+        if not sign and not re.search(r"\bpositive\b|\+\s?ve\b", line, re.I):
+            sign = axis_sense(line)  # "n along the line of impact (from A to B)": the student's positive
         if placed is not None and placed(line):
             continue  # "ĵ out of the wall (positive away from it)": a unit vector's way, the reader placed it
         m = _POSITIVE.match(line)

@@ -34,7 +34,10 @@ def statement_bodies(ctx: Context) -> dict[str, str]:
     labels = set(getattr(ctx.problem, "labels", ("A", "B")))
     letters = [x for x in letters if x not in labels and x not in ("A", "B")]
     by_mass = _by_mass(ctx, statement, labels)
-    if by_mass:
+    if len(by_mass) == 1 and len(letters) == 2 and set(by_mass) <= set(letters):  # "S of mass m … T, mass km"
+        body, other = next(iter(by_mass.values())), next(x for x in letters if x not in by_mass)
+        by_mass[other] = "B" if body == "A" else "A"  # one letter placed by its mass: the other is the other body
+    if len(by_mass) == 2:
         return by_mass
     if len(letters) != 2:
         return {}
@@ -58,7 +61,7 @@ _MASS = re.compile(r"\b([A-Z])\s*(?:\(\s*|,\s*)?(?:(?:of|with|has)\s+)?(?:a\s+)?
 
 def _by_mass(ctx: Context, statement: str, labels: set[str]) -> dict[str, str]:
     """The statement's letters matched to A and B by the mass it gives each (``Particles P (mass 2m)
-    and Q (mass 3m)`` with m_A = 2m): {} unless both letters are found and the masses tell them apart."""
+    and Q (mass 3m)`` with m_A = 2m): those found where the masses tell them apart."""
     masses = {}
     for g in ctx.problem.givens:
         if g.name in ("m_A", "m_B"):
@@ -78,7 +81,7 @@ def _by_mass(ctx: Context, statement: str, labels: set[str]) -> dict[str, str]:
         body = next((b for b, x in masses.items() if x == said), None)
         if body is not None and letter not in out and body not in out.values():
             out[letter] = body
-    return out if len(out) == 2 else {}
+    return out  # one letter, or both: the caller completes one
 
 
 def at_rest_before(ctx: Context, body: str) -> bool:
