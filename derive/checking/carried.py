@@ -33,8 +33,7 @@ if TYPE_CHECKING:
 
 #: A slip named: the equation it takes the place of, the words of the verdict, its name.
 Found = tuple[int | None, str, str] | None
-#: The results whose value a line of numbers may come to.
-RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")
+RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")  # what a line of numbers may come to
 
 
 def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
