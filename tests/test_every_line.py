@@ -39,7 +39,7 @@ LINES_CHECKED: Counter[str] = Counter()
 #: Pages showing a known class of wrong line (KNOWN), by test, for the summary line.
 KNOWN_SEEN: Counter[str] = Counter()
 GENERATED = int(os.environ.get("DERIVE_VERIFY_GENERATED", "2000"))
-VARIANTS = 200
+VARIANTS = int(os.environ.get("DERIVE_VERIFY_VARIANTS", "200"))
 EXAMPLES = 4
 
 
@@ -178,8 +178,8 @@ def _chain_with_values(text: str, v: variants.Variant) -> str:
     return with_numbers(text, numbers)
 
 
-#: The [vary] tables drawn VARIANTS times: 4.C.11's and the generated ones (equal masses,
-#: e = 0 and 1, a wall, angles near 0° and 90°). Each other bundled table (issue 15) is
+#: The [vary] tables drawn VARIANTS times (DERIVE_VERIFY_VARIANTS, 100 in CI): 4.C.11's and the
+#: generated ones (equal masses, e = 0 and 1, a wall, angles near 0° and 90°). Each other bundled table (issue 15) is
 #: drawn FEW times, one test each, so that the slow run stays short.
 FULL = frozenset({"notes-4c11-two-spheres"} | {c.name for c in verify_corpus.VARY})
 FEW = 12
