@@ -56,7 +56,10 @@ def _xf08(g: dict) -> tuple[dict, dict]:
     m = g["m_A"]
     t1, t2 = 0.5 * m * g["v_A1"] ** 2, 0.5 * m * g["v_A2"] ** 2
     slipped = 0.5 * m * (2 * abs(g["v_A2"]))  # 2.40^2 worked as 2 x 2.40
-    return {"e": -g["v_A2"] / g["v_A1"], "T_1": t1, "T_2": t2, "T_lost": t1 - t2}, {"T_2": slipped, "T_lost": t1 - slipped}
+    return {"e": -g["v_A2"] / g["v_A1"], "T_1": t1, "T_2": t2, "T_lost": t1 - t2}, {
+        "T_2": slipped,
+        "T_lost": t1 - slipped,
+    }
 
 
 def _xf09(g: dict) -> tuple[dict, dict]:

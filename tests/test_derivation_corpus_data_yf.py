@@ -99,7 +99,7 @@ def _yf14(g: dict) -> tuple[dict, None]:
     # 2b = v0 (1 + e), b (1 + e) = 2 v_C  ->  b² = v0 v_C
     b = math.sqrt(g["v_0"] * g["v_C"])
     e = 2 * b / g["v_0"] - 1
-    first, second = _solve(1.0, 1.0, g["v_0"], e * g["v_0"])
+    _first, second = _solve(1.0, 1.0, g["v_0"], e * g["v_0"])
     assert second == pytest.approx(b)
     assert _solve(1.0, 1.0, b, e * b)[1] == pytest.approx(g["v_C"])
     return {"u_B": b, "e": e}, None
