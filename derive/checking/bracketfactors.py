@@ -83,7 +83,7 @@ def partly_multiplied(ctx, bad: Pair) -> bool:
     if bad.raw is None or len(sides) != 2:
         return False
     known = set(ctx.equation_names())
-    read = [termsigns._read(ctx, student(rewrite(s, known)).strip()) for s in sides]
+    read = [_reads(ctx, s, known) for s in sides]
     if any(x is None for x in read) or termsigns._same(read[0], read[1]):
         return False  # not read again as a false relation: nothing said
     for i in (0, 1):

@@ -179,7 +179,8 @@ class Depending:
     """The part of the trace that keeps what the student stated (:class:`Stated`) and asks
     whether a line holds with it put in."""
 
-    def _stated(self) -> Stated:
+    def stated_values(self) -> Stated:
+        """What the student stated so far for quantities (made when first asked)."""
         found = self.__dict__.get("_stated_values")
         if found is None:
             found = self.__dict__["_stated_values"] = Stated()
@@ -187,7 +188,7 @@ class Depending:
 
     def _note_stated(self, line: Read, status: str) -> None:
         trace: Any = self
-        note(trace, self._stated(), line, status)
+        note(trace, self.stated_values(), line, status)
 
     def _holds_with_stated(self, line: Read) -> bool:
         """Whether ``line``, false for the problem, holds with the student's values put in (a
@@ -196,4 +197,4 @@ class Depending:
         trace: Any = self
         if not line.exprs or trace.holds(trace.pairs(line), trace.truth):
             return False
-        return holds_with_own(trace, self._stated(), line)
+        return holds_with_own(trace, self.stated_values(), line)

@@ -32,7 +32,7 @@ _START = re.compile(r"(?:^|(?<=\s))[-(\d√]")
 def _wrong_values(trace: Trace) -> dict[sympy.Rational, float]:
     """The numbers the student stated for quantities and got wrong, each with its true value."""
     out: dict[sympy.Rational, float] = {}
-    stated = trace._stated().values  # type: ignore[attr-defined]
+    stated = trace.stated_values().values  # type: ignore[attr-defined]  (Depending, not in the protocol)
     for q, x in {**stated, **trace.own}.items():
         if not x.is_number or not x.is_real:
             continue
