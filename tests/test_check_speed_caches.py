@@ -13,27 +13,59 @@ x + y = 5 has (2, 3) and (3, 2).
 
 from __future__ import annotations
 
+import re
+
 import mpmath
 import pytest
 import sympy
 
 import derive
+from derive import resources
 from derive.checking import budget, relations
+from derive.checking.mistakes import model as mistakes_model
 from derive.checking.mistakes.equations import real_roots
 from derive.physics import impact
+from derive.problem import loads
+from derive.steps import solve
 
 x = sympy.Symbol("x_speed_cache", real=True)
 y = sympy.Symbol("y_speed_cache", real=True)
 m = sympy.Symbol("m_speed_cache", positive=True)
 
 
-def test_a_problem_is_set_up_once_and_a_problem_read_again_afresh() -> None:
+def test_a_problem_is_set_up_once_and_a_problem_read_again_found_by_value() -> None:
     p = derive.load("notes-4c11-two-spheres")
     first = impact.setup(p)
     assert impact.setup(p) is first
-    again = impact.setup(derive.load("notes-4c11-two-spheres"))
-    assert again is not first
-    assert again.closed == first.closed
+    q = derive.load("notes-4c11-two-spheres")  # a new object, equal to p: its set-up is p's
+    again = impact.setup(q)
+    assert again.problem is q and again.closed is first.closed
+
+
+def _notes_text() -> str:
+    return resources.bundled()["notes-4c11-two-spheres"].read_text(encoding="utf-8")
+
+
+def test_a_problem_read_again_shares_its_solution_and_its_mistakes() -> None:
+    first = solve(derive.load("notes-4c11-two-spheres"), steps=False)
+    again = solve(derive.load("notes-4c11-two-spheres"), steps=False)
+    assert again.problem is not first.problem and again.results is first.results
+    assert mistakes_model(again) is mistakes_model(first)
+
+
+def test_a_problem_changed_in_its_file_is_set_up_afresh() -> None:
+    text = _notes_text()
+    p = loads(text, path="spheres.toml")
+    first = impact.setup(p)
+    # m_A 20 kg -> 25 kg: v_B2n = (m_A v_A1n + m_B v_B1n + e m_A (v_A1n - v_B1n)) / (m_A + m_B) grows
+    heavier = loads(re.sub(r"(?m)^m_A = .*$", 'm_A = "25 kg"', text, count=1), path="spheres.toml")
+    assert heavier != p and impact.setup(heavier).closed is not first.closed
+    assert solve(heavier, steps=False).results["v_B2n"].value > solve(p, steps=False).results["v_B2n"].value
+    # a comment added: the same physics, but the lines its messages name may move: set up afresh
+    commented = impact.setup(loads("# a comment\n" + text, path="spheres.toml"))
+    assert commented is not first and commented.closed is not first.closed and commented.closed == first.closed
+    # the same text from another file: that file's own
+    assert impact.setup(loads(text, path="other.toml")).closed is not first.closed
 
 
 def test_the_roots_of_a_mistakes_system_are_real_and_kept() -> None:

@@ -10,6 +10,7 @@ statement does not settle it, nothing is read (the caller's default stays).
 
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy
@@ -66,7 +67,7 @@ def _by_mass(ctx: Context, statement: str, labels: set[str]) -> dict[str, str]:
     for g in ctx.problem.givens:
         if g.name in ("m_A", "m_B"):
             x = g.definition if g.definition is not None else g.value
-            masses[g.name[-1]] = str(sympy.nsimplify(x)) if x is not None else None
+            masses[g.name[-1]] = _simplest(x) if x is not None else None
     if len(masses) != 2 or None in masses.values() or masses["A"] == masses["B"]:
         return {}
     out: dict[str, str] = {}
@@ -75,13 +76,20 @@ def _by_mass(ctx: Context, statement: str, labels: set[str]) -> dict[str, str]:
         if letter in labels or letter in ("A", "B") or not text:
             continue
         try:
-            said = str(sympy.nsimplify(sympy.sympify(text)))
+            said = _simplest(text)
         except (sympy.SympifyError, TypeError, ValueError):
             continue
         body = next((b for b, x in masses.items() if x == said), None)
         if body is not None and letter not in out and body not in out.values():
             out[letter] = body
     return out  # one letter, or both: the caller completes one
+
+
+@functools.lru_cache(maxsize=256)
+def _simplest(x: object) -> str:
+    """A mass as the simplest number or formula it is (``0.5*m`` and ``m/2`` alike), by value:
+    a statement's masses are read for every name a derivation declares."""
+    return str(sympy.nsimplify(sympy.sympify(x)))
 
 
 def at_rest_before(ctx: Context, body: str) -> bool:

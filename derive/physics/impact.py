@@ -15,6 +15,7 @@ speeds, angles and kinetic energies; it formats nothing.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -24,6 +25,7 @@ import sympy
 from derive.errors import SolveError
 from derive.physics.forms import factored
 from derive.physics.periodic import periodic_roots
+from derive.physics.recent import Recent
 from derive.physics.roots import distinct, holds, known_angles, polar_roots, singular, tidy
 from derive.physics.roots import roots as _roots  # the cache tests read as impact._roots
 from derive.problem import Problem
@@ -104,23 +106,17 @@ def equation_numbers(problem: Problem) -> tuple[int, ...]:
     return tuple(nums)
 
 
-#: The impacts set up lately, by the problem object they were set up for (a check sets up its
-#: problem twice: for the worked solution and for the mistakes' model); bounded, each entry
-#: keeps its problem alive, so an id is not reused while its entry stands.
-_SET_UP: dict[int, Impact] = {}
+#: The impacts set up lately, found again by the problem's value (:mod:`.recent`): a check sets
+#: up its problem twice (for the worked solution and for the mistakes' model), and a problem
+#: loaded again from its file is set up once.
+_SET_UP: Recent[Impact] = Recent(8)
 
 
 def setup(problem: Problem) -> Impact:
     """Equations (1)-(4) for ``problem`` solved in closed form (:func:`_setup`), once per problem
-    object: the Impact is frozen and nothing changes its dictionaries."""
-    hit = _SET_UP.get(id(problem))
-    if hit is not None and hit.problem is problem:
-        return hit
-    imp = _setup(problem)
-    if len(_SET_UP) >= 8:
-        _SET_UP.pop(next(iter(_SET_UP)))
-    _SET_UP[id(problem)] = imp
-    return imp
+    value: the Impact is frozen and nothing changes its dictionaries."""
+    imp = _SET_UP.get(problem, lambda: _setup(problem))
+    return imp if imp.problem is problem else dataclasses.replace(imp, problem=problem)
 
 
 def _setup(problem: Problem) -> Impact:

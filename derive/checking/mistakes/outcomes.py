@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import itertools
-import weakref
 
 import sympy
 
@@ -18,7 +17,6 @@ class _Entry:
     """What is cached for one solution: its model, the correct outcome, the mistakes' outcomes."""
 
     def __init__(self, solution: Solution) -> None:
-        self.ref = weakref.ref(solution)
         self.model = Model(solution)
         self.base = self.model.outcome(self.model.base())
         self.found: list[Outcome] | None = None
@@ -83,17 +81,19 @@ class _Entry:
         return self.paired
 
 
-_CACHE: dict[int, _Entry] = {}
+#: The mistakes solved lately, by the results they were solved against: a solution of the same
+#: problem (loaded again, :mod:`derive.physics.recent`) shares its results, and its mistakes.
+_CACHE: list[_Entry] = []
 
 
 def _cached(solution: Solution) -> _Entry:
-    key = id(solution)
-    hit = _CACHE.get(key)
-    if hit is not None and hit.ref() is solution:
-        return hit
+    for entry in reversed(_CACHE):
+        if entry.model.results is solution.results:
+            return entry
     entry = _Entry(solution)
-    weakref.finalize(solution, _CACHE.pop, key, None)
-    _CACHE[key] = entry
+    _CACHE.append(entry)
+    if len(_CACHE) > 8:
+        _CACHE.pop(0)
     return entry
 
 
