@@ -34,9 +34,10 @@ m = sympy.Symbol("m_speed_cache", positive=True)
 
 
 def test_a_problem_is_set_up_once_and_a_problem_read_again_found_by_value() -> None:
+    impact.setup(derive.load("notes-4c11-two-spheres"))  # set up before, for an equal problem
     p = derive.load("notes-4c11-two-spheres")
     first = impact.setup(p)
-    assert impact.setup(p) is first
+    assert impact.setup(p) is first and first.problem is p  # the same object: the same set-up
     q = derive.load("notes-4c11-two-spheres")  # a new object, equal to p: its set-up is p's
     again = impact.setup(q)
     assert again.problem is q and again.closed is first.closed

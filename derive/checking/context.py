@@ -52,6 +52,7 @@ class Context:
         self._derived: dict[str, tuple[sympy.Symbol, sympy.Expr]] | None = None
         self.memo: dict[tuple, object] = {}  # what the judges work out once per check (rounded values)
         self.fixed: dict[sympy.Symbol, sympy.Rational] = {}  # givens a derivation puts a number for ("m = 1")
+        self._in_unknowns: dict[sympy.Expr, sympy.Expr] = {}
 
     @property
     def model(self) -> mistakes.Model:
@@ -230,12 +231,19 @@ class Context:
         return out
 
     def in_unknowns(self, expr: sympy.Expr) -> sympy.Expr:
-        """A user's ``lhs - rhs`` in the unknowns, with everything known put in."""
+        """A user's ``lhs - rhs`` in the unknowns, with everything known put in (kept for the check,
+        by value: a reading puts each candidate of each name in every mapping it tries)."""
+        key = expr if isinstance(expr, sympy.Basic) else None  # a Basic is immutable and hashable
+        hit = self._in_unknowns.get(key) if key is not None else None
+        if hit is not None:
+            return hit
         model = self.model
         derived = {sym: ex for sym, ex in self.derived().values()}
         x = expr.xreplace(derived).xreplace(self.unit_subs())
-        x = x.xreplace(model.zeros).xreplace(model.pre)
-        return self.num(x)
+        x = self.num(x.xreplace(model.zeros).xreplace(model.pre))
+        if key is not None and len(self._in_unknowns) < 4096:
+            self._in_unknowns[key] = x
+        return x
 
 
 def _data(p: Problem) -> set[sympy.Rational]:

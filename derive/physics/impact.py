@@ -115,8 +115,7 @@ _SET_UP: Recent[Impact] = Recent(8)
 def setup(problem: Problem) -> Impact:
     """Equations (1)-(4) for ``problem`` solved in closed form (:func:`_setup`), once per problem
     value: the Impact is frozen and nothing changes its dictionaries."""
-    imp = _SET_UP.get(problem, lambda: _setup(problem))
-    return imp if imp.problem is problem else dataclasses.replace(imp, problem=problem)
+    return _SET_UP.get(problem, lambda: _setup(problem), lambda imp: dataclasses.replace(imp, problem=problem))
 
 
 def _setup(problem: Problem) -> Impact:

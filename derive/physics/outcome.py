@@ -54,9 +54,11 @@ def solve_impact(problem: Problem) -> ImpactOutcome:
     >>> solve_impact(load("notes-4c11-two-spheres")).results["v_A2n"].value  # doctest: +SKIP
     -7*cos(47*pi/225)/5
     """
-    out = _SOLVED.get(problem, lambda: _solve_impact(problem))
-    if out.problem is problem:
-        return out
+    return _SOLVED.get(problem, lambda: _solve_impact(problem), lambda out: _adopted(out, problem))
+
+
+def _adopted(out: ImpactOutcome, problem: Problem) -> ImpactOutcome:
+    """``out``, solved for a problem equal to ``problem``, as ``problem``'s."""
     return replace(out, problem=problem, impact=replace(out.impact, problem=problem))
 
 

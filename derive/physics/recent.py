@@ -30,14 +30,19 @@ class Recent(Generic[V]):
         self.size = size
         self.entries: list[tuple[tuple[Any, ...], V]] = []
 
-    def get(self, problem: Any, work: Callable[[], V]) -> V:
-        """The value kept for a problem equal to ``problem``, else ``work()`` kept for it."""
+    def get(self, problem: Any, work: Callable[[], V], adopt: Callable[[V], V] | None = None) -> V:
+        """The value kept for a problem equal to ``problem``, else ``work()`` kept for it; a value
+        found for another object equal to it is ``adopt``-ed and kept for this one (so that the
+        same object finds the same value again)."""
         key = value_key(problem)
         for i in range(len(self.entries) - 1, -1, -1):
             k, value = self.entries[i]
             if k[1] is problem or k == key:
-                if i != len(self.entries) - 1:
-                    self.entries.append(self.entries.pop(i))
+                if k[1] is not problem and adopt is not None:
+                    value = adopt(value)
+                    k = key
+                self.entries.pop(i)
+                self.entries.append((k, value))
                 return value
         value = work()
         self.entries.append((key, value))
