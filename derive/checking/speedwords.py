@@ -20,14 +20,16 @@ import sympy
 from derive.checking.context import Context
 from derive.mathtext.reader import MATH_WORDS
 
-_NAME = r"([A-Za-z](?:_?\{?\w{1,2}\}?)?|\\[a-z]+)"
+_NAME = r"([A-Za-z](?:_?\{?[^\W¹²³]{1,2}\}?)?|\\[a-z]+)"
+#: The end of the name: no more of a word, but its square may follow (``speed after: V² = …``).
+_END = r"(?:(?=[²³^])|(?![\w'(]))"
 #: "After (speed V)", "afterwards speed V", "after the impact: speed V", "speed after V", "speed V
 #: afterwards", "rebounds with speed V".
 _AFTER_SPEED = (
-    re.compile(rf"\bafter(?:wards?)?\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
+    re.compile(rf"\bafter(?:wards?)?\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}{_END}", re.I),
     re.compile(
         rf"\bspeed\s+(?:just\s+)?after(?:wards?\b)?(?:\s+the\s+(?:impact|collision|bounce)(?:\s+(?:with|off|on|against)\s+(?:the\s+)?\w+(?!\w))?)?"
-        rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
+        rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}{_END}",
         re.I,
     ),
     re.compile(  # "let V be the speed after", "V is its speed after the impact", "V = the speed after"
@@ -39,7 +41,7 @@ _AFTER_SPEED = (
         rf"\bspeed\s+(?:is\s+|of\s+)?{_NAME}\s+(?:just\s+|immediately\s+)?after(?:wards?)?\b", re.I
     ),  # "speed V afterwards"
     re.compile(
-        rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}(?![\w'(])", re.I
+        rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}{_END}", re.I
     ),
 )
 #: Words that are never the name of a speed.
