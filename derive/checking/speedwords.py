@@ -40,9 +40,7 @@ _AFTER_SPEED = (
     re.compile(
         rf"\bspeed\s+(?:is\s+|of\s+)?{_NAME}\s+(?:just\s+|immediately\s+)?after(?:wards?)?\b", re.I
     ),  # "speed V afterwards"
-    re.compile(
-        rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}{_END}", re.I
-    ),
+    re.compile(rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}{_END}", re.I),
 )
 #: Words that are never the name of a speed.
 _NOT_NAMES = frozenset({"is", "of", "at", "in", "on", "to", "and", "the", "be", "so", "it", "an", "as"})
@@ -71,7 +69,25 @@ def one_speed_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     names = ctx.equation_names()
     if not ctx.problem.fixed_B or "v_A2" not in names:
         return {}
-    return {n: names["v_A2"][0] for n in _after_names(line) if n not in names}
+    said = _after_names(line) | _along_the_path_after(line, getattr(ctx.problem, "statement", "") or "")
+    return {n: names["v_A2"][0] for n in said if n not in names}
+
+
+#: The path the statement says the body takes after the impact, by its two points ("It rebounds
+#: from DC and moves along PQ"): a speed "along PQ" is the speed after.
+_PATH_AFTER = re.compile(r"\b(?:rebounds?|bounces?|leaves?|returns?)\b[^.]{0,60}?\balong\s+([A-Z]{2})\b")
+
+
+def _along_the_path_after(line: str, statement: str) -> set[str]:
+    """The name ``line`` gives the speed along the statement's path after the impact ("Let the
+    speed along PQ be V", "V = speed along PQ")."""
+    m = _PATH_AFTER.search(statement)
+    if m is None:
+        return set()
+    plain, path = re.sub(r"\$|\\[()]|[{}]", " ", line), m[1]
+    found = re.findall(rf"\bspeed\s+along\s+{path}\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}{_END}", plain)
+    found += re.findall(rf"(?<![\w\\]){_NAME}\s+(?:is|be|=|for)\s+(?:the\s+)?speed\s+along\s+{path}\b", plain)
+    return {n for n in found if n.lower() not in _NOT_NAMES and n not in MATH_WORDS}
 
 
 def looks_like_prose(text: str) -> bool:
