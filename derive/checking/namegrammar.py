@@ -287,9 +287,11 @@ def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, symp
 
 
 def _uv_twins(name: str, used: set[str], body: str | bool) -> bool:
-    """Whether ``name`` is ``u`` or ``v`` with a component's marks (and a body's, or at a wall) and
+    """Whether ``name`` is ``u`` or ``v`` with an axis's sign or word (and a body's, or at a wall) and
     the other letter is written with the same marks (``u_perp`` and ``v_perp``, ``u_{A,par}`` and
     ``v_{A,par}``): the habit's u before and v after, as a pair says it."""
+    if not re.search(r"par|perp|∥|⊥", name):  # u_x, v_x: x's axis and time are the frame's to say
+        return False
     return bool(body) and name[0] in "uv" and ("vu"[name[0] == "v"] + name[1:]) in used
 
 
