@@ -26,6 +26,8 @@ def sides(text: str) -> list[tuple[str, ...]]:
 
 
 MARKS = ["   (A.G.)", " (AG)", "  [AG]", "  A.G.", " (as req'd)", " (shown)", "  Q.E.D.", " ∎"]
+#: The mark schemes' star of a printed answer, and the words with no brackets (2026-11-29).
+MARKS += ["  *", " * as required", "   as required", "  shown", " hence shown."]
 
 
 @pytest.mark.parametrize("mark", MARKS)
@@ -33,7 +35,7 @@ def test_a_result_marked_as_the_answer_given_is_read(mark: str) -> None:
     assert worst_lines(PROBLEM, WORK.format(mark=mark))[3][0] == "correct"
 
 
-@pytest.mark.parametrize("mark", MARKS[:2])
+@pytest.mark.parametrize("mark", [*MARKS[:2], "  *", " * as required"])
 def test_a_wrong_result_marked_as_the_answer_given_is_wrong(mark: str) -> None:
     assert worst_lines(PROBLEM, WORK.format(mark=mark).replace("= 4/3 m u^2", "= 5/3 m u^2"))[3][0] == "wrong"
 

@@ -2,8 +2,10 @@
 u_1 = u\\sin 30°``, ``perp.: u_2 = u cos 30°``, ``u_x = U sin α (along wall)``, ``u_y = U cos α
 (into wall)``. The words name the axis (the line of centres, or across it); the body is the one
 whose given velocity the right side resolves, and the time is before, unless the line leads in
-with ``After:``. A name in another letter with the same subscript under ``After:`` (``v_x`` after
-``u_x``) is the same axis after the impact. The words win over the habits (``u_1``, ``u_2`` are
+with ``After:``. A subscript that names the axis (``u∥``, ``v_perp``) is as good as the words,
+where the time is said: under ``After:``, under ``Q b4:`` or ``Before:``, or by the habit's letter
+u. A name in another letter with the same subscript under ``After:`` (``v_x`` after ``u_x``) is
+the same axis after the impact. The words win over the habits (``u_1``, ``u_2`` are
 not A and B here).
 """
 
@@ -58,6 +60,19 @@ def _words_beside(r: Relation, name: str) -> str:
     return bracket.group(1) if bracket else ""
 
 
+#: A lead-in that says the time before (``Q b4:``, ``A before:``, ``Initially,``), phone-typed too.
+_BEFORE_LEAD = re.compile(r"\b(?:before|b4|initially|initial)\b", re.I)
+
+
+def _before_said(r: Relation, name: str) -> bool:
+    """Whether a component named by its axis in its subscript (``u∥``, ``v_perp``) is before the
+    impact: its line's lead-in says so (``Q b4: u∥ = u sin α``), or its letter is the habit's u."""
+    if name[0] == "u":
+        return True
+    at = r.written.find(name.split("_")[0])
+    return _BEFORE_LEAD.search(r.label or r.written[: max(at, 0)]) is not None
+
+
 def _body(side: str, ctx: Context) -> str:
     """The body whose given velocity before the impact the side resolves ("" where none or both)."""
     found = set()
@@ -70,7 +85,8 @@ def _body(side: str, ctx: Context) -> str:
         if isinstance(g.value, sympy.Number) and g.value != 0:  # a speed given as a number: as written
             spelled |= {str(g.value), f"{float(g.value):g}"}
         for word in spelled | {g.name}:
-            if re.search(rf"(?<![\w.]){re.escape(word)}(?![\w]|\.\d)", side):
+            end = r"(?![\d]|\.\d)" if word[0].isdigit() else r"(?![\w]|\.\d)"  # 5sin37.6: the 5 typed glued
+            if re.search(rf"(?<![\w.]){re.escape(word)}{end}", side):
                 found.add(m.group(1))
     return found.pop() if len(found) == 1 else ""
 
@@ -90,7 +106,8 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
             continue
         after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
         sub = name.split("_")[-1] if "_" in name else name[1:]
-        axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if after else "")  # v_perp: after
+        said = after or _before_said(r, name)  # v_perp under "After:"; u∥ under "Q b4:", or u's habit
+        axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if said else "")
         if not axis and after and sub in letters:
             axis = letters[sub]
         body = "A" if fixed else _body(r.sides[1], ctx)

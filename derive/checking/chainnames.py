@@ -20,6 +20,7 @@ import sympy
 from derive.checking import copiedsums
 from derive.checking.bodylists import written_out
 from derive.checking.context import Context
+from derive.checking.movenames import moves_after
 from derive.checking.naming import PREFIX, Open, read_side, rewrite
 from derive.checking.numeric import shown
 from derive.checking.report import Item
@@ -123,11 +124,12 @@ def declared(ctx: Context, lines: list[tuple[int, str]]) -> tuple[Declared, set[
     where: set[int] = set()
     last = 0
     for number, text in lines:
-        plain = re.sub(r"\$|\\[()]|[{}]", "", text)
+        plain = re.sub(r"\$|\\[()]|[{}]|\\[A-Za-z]+(?=\{)", "", text)  # \textbf{Second impact}: the words
         found = [((m[1], m[3]), (m[2], m[4]), m[5], "speed" in m[0]) for m in _PAIR.finditer(plain)]
         found += [((m[1], m[2]), None, m[3], "speed" in m[0]) for m in _ONE.finditer(plain)]
         found += [((m[4], m[1]), (m[5], m[2]), m[3], "speed" in m[0]) for m in _PAIR_BACK.finditer(plain)]
         found += [((m[5], m[1] or m[2]), None, m[4], "speed" in m[0]) for m in _ONE_BACK.finditer(plain)]
+        found += [((name, body), None, "after", speed) for name, body, speed in moves_after(plain)]
         if not found:
             continue
         bodies = {f[0][1] for f in found} | {f[1][1] for f in found if f[1]}

@@ -41,7 +41,18 @@ _TIMES = (
     ("initial", "1"), ("final", "2"), ("before", "1"), ("after", "2"), ("init", "1"), ("fin", "2"),
     ("i", "1"), ("f", "2"), ("0", "1"),
 )  # fmt: skip
-_AXES = (("par", "n"), ("perp", "t"), ("∥", "n"), ("⊥", "t"), ("n", "n"), ("t", "t"), ("x", "n"), ("y", "t"))
+_AXES = (
+    ("parallel", "n"),
+    ("perpendicular", "t"),
+    ("par", "n"),
+    ("perp", "t"),
+    ("∥", "n"),
+    ("⊥", "t"),
+    ("n", "n"),
+    ("t", "t"),
+    ("x", "n"),
+    ("y", "t"),
+)
 #: Prose that names the bodies by numbers: "ball 1", "car 2", "object 1", "puck (1)".
 _NUMBERED = re.compile(
     r"\b(?:ball|car|cart|object|body|mass|particle|sphere|puck|disc|disk|block|glider|trolley)\s*\(?[12]\b", re.I
@@ -242,6 +253,11 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
             time = "2"  # vAx beside vAx1 (and none marked after): after
         elif not time and kind == "v" and body and _by_word(name, bodies) and not _said_speed(name, text):
             time = "1" if name[0] == "u" else "2"  # v_red, u_car: the habit's u before, v after
+        elif not time and kind == "v" and axis and _uv_twins(name, used, body or ctx.problem.fixed_B):
+            time = "1" if name[0] == "u" else "2"  # u_perp beside v_perp: u before, v after
+        axis = _at_a_wall(name, axis, ctx.problem.fixed_B)  # v_perp at a wall: into it, n
+        if ctx.problem.fixed_B and (time, axis) == ("2", "n") and re.search(r"par|perp|∥|⊥", name):
+            continue  # the rebound named by its axis: a size or signed, as the words say (axisnames)
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
             out[name] = e / per if kind == "p" and (per := cancelled_mass(ctx, text)) is not None else e
@@ -268,6 +284,23 @@ def wall_words(ctx: Context, used: set[str], primed: set[str]) -> dict[str, symp
         if x is not None:
             out[name] = -x if stem != name and axis == "n" else x
     return out
+
+
+def _uv_twins(name: str, used: set[str], body: str | bool) -> bool:
+    """Whether ``name`` is ``u`` or ``v`` with an axis's sign or word (and a body's, or at a wall) and
+    the other letter is written with the same marks (``u_perp`` and ``v_perp``, ``u_{A,par}`` and
+    ``v_{A,par}``): the habit's u before and v after, as a pair says it."""
+    if not re.search(r"par|perp|∥|⊥", name):  # u_x, v_x: x's axis and time are the frame's to say
+        return False
+    return bool(body) and name[0] in "uv" and ("vu"[name[0] == "v"] + name[1:]) in used
+
+
+def _at_a_wall(name: str, axis: str, fixed: bool) -> str:
+    """The axis of a component named parallel or perpendicular (``v_par``, ``u_⊥``): at a wall
+    parallel is along it (t) and perpendicular into it (n), not the line of centres' reading."""
+    if fixed and axis in ("n", "t") and re.search(r"par|perp|∥|⊥", name):
+        return "t" if axis == "n" else "n"
+    return axis
 
 
 def _by_word(name: str, bodies: dict[str, str]) -> bool:

@@ -70,6 +70,7 @@ PHRASES = (
     (BODY_WHEN, body_when),  # "speed of A before", "initial velocity of B", "A's initial speed", "B final velocity"
     (r"(?:final\s+)?speed\s+of\s+([AB])(?![\w'])(?:\s+after)?", r"speed_\1"),  # not "speed of approach"
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+)?speed(?:\s+after)?", r"speed_\1"),  # "B's speed = 3.6"
+    (r"^\s*([AB])\s+(?:final\s+)?speed(?:\s+after)?\s*$", r"speed_\1"),  # a whole side "B speed", phone-typed
     (r"(?<![\w'])([AB])['’]s\s+(?:final\s+velocity|velocity\s+after)", lambda m: f"v_{m[1].upper()}2"),
     (r"(?<![\w'])([AB])['’]s\s+(?:initial\s+velocity|velocity\s+before)", lambda m: f"v_{m[1].upper()}1"),
     (r"\|\s*(?:v_?\(?([AB])2?\)?|([AB])_?p)\s*\|", r"speed_\1\2"),  # |v_A|, |v_(A2)|: A's speed after

@@ -20,14 +20,16 @@ import sympy
 from derive.checking.context import Context
 from derive.mathtext.reader import MATH_WORDS
 
-_NAME = r"([A-Za-z](?:_?\{?\w{1,2}\}?)?|\\[a-z]+)"
+_NAME = r"([A-Za-z](?:_?\{?[^\W¹²³]{1,2}\}?)?|\\[a-z]+)"
+#: The end of the name: no more of a word, but its square may follow (``speed after: V² = …``).
+_END = r"(?:(?=[²³^])|(?![\w'(]))"
 #: "After (speed V)", "afterwards speed V", "after the impact: speed V", "speed after V", "speed V
 #: afterwards", "rebounds with speed V".
 _AFTER_SPEED = (
-    re.compile(rf"\bafter(?:wards?)?\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}(?![\w'(])", re.I),
+    re.compile(rf"\bafter(?:wards?)?\b[^.;=]{{0,40}}?\bspeed\s+(?:is\s+|of\s+|=\s*)?{_NAME}{_END}", re.I),
     re.compile(
         rf"\bspeed\s+(?:just\s+)?after(?:wards?\b)?(?:\s+the\s+(?:impact|collision|bounce)(?:\s+(?:with|off|on|against)\s+(?:the\s+)?\w+(?!\w))?)?"
-        rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}(?![\w'(])",
+        rf"\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}{_END}",
         re.I,
     ),
     re.compile(  # "let V be the speed after", "V is its speed after the impact", "V = the speed after"
@@ -38,9 +40,7 @@ _AFTER_SPEED = (
     re.compile(
         rf"\bspeed\s+(?:is\s+|of\s+)?{_NAME}\s+(?:just\s+|immediately\s+)?after(?:wards?)?\b", re.I
     ),  # "speed V afterwards"
-    re.compile(
-        rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}(?![\w'(])", re.I
-    ),
+    re.compile(rf"\b(?:rebounds?|bounces?|moves?\s+off|leaves?)\b[^.;=]{{0,30}}?\bwith\s+speed\s+{_NAME}{_END}", re.I),
 )
 #: Words that are never the name of a speed.
 _NOT_NAMES = frozenset({"is", "of", "at", "in", "on", "to", "and", "the", "be", "so", "it", "an", "as"})
@@ -69,7 +69,25 @@ def one_speed_after(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     names = ctx.equation_names()
     if not ctx.problem.fixed_B or "v_A2" not in names:
         return {}
-    return {n: names["v_A2"][0] for n in _after_names(line) if n not in names}
+    said = _after_names(line) | _along_the_path_after(line, getattr(ctx.problem, "statement", "") or "")
+    return {n: names["v_A2"][0] for n in said if n not in names}
+
+
+#: The path the statement says the body takes after the impact, by its two points ("It rebounds
+#: from DC and moves along PQ"): a speed "along PQ" is the speed after.
+_PATH_AFTER = re.compile(r"\b(?:rebounds?|bounces?|leaves?|returns?)\b[^.]{0,60}?\balong\s+([A-Z]{2})\b")
+
+
+def _along_the_path_after(line: str, statement: str) -> set[str]:
+    """The name ``line`` gives the speed along the statement's path after the impact ("Let the
+    speed along PQ be V", "V = speed along PQ")."""
+    m = _PATH_AFTER.search(statement)
+    if m is None:
+        return set()
+    plain, path = re.sub(r"\$|\\[()]|[{}]", " ", line), m[1]
+    found = re.findall(rf"\bspeed\s+along\s+{path}\s*(?:is\s+|be\s+|=\s*|:\s*)?{_NAME}{_END}", plain)
+    found += re.findall(rf"(?<![\w\\]){_NAME}\s+(?:is|be|=|for)\s+(?:the\s+)?speed\s+along\s+{path}\b", plain)
+    return {n for n in found if n.lower() not in _NOT_NAMES and n not in MATH_WORDS}
 
 
 def looks_like_prose(text: str) -> bool:

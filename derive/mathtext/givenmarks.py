@@ -1,6 +1,6 @@
 """What a student writes around a result that is no part of its value, as a teacher reads it:
 the mark of an answer the question gave (``(A.G.)``, ``(AG)``, ``[AG]``, ``(answer given)``,
-``(as req'd)``, ``(shown)``, ``Q.E.D.``, ``∎``); the figures it is given to (``(to 3 s.f.)``,
+``(as req'd)``, ``(shown)``, ``Q.E.D.``, ``∎``, a star: ``* as required``); the figures it is given to (``(to 3 s.f.)``,
 ``(2 d.p.)``); a doubt after it (``e = 2.5 ??? supposed to be 0.8``), a remark after a dash
 (``… --- not the 5 - 3e in the question``) or in brackets of five words or more; words after a
 comma with no relation in them (``= 3.46 m/s, B at 5 m/s along the line of impact``); square
@@ -16,8 +16,13 @@ _BRACKETED = re.compile(
     r"|(?:hence\s+)?(?:shown|proved|proven)|Q\.?E\.?D\.?)\s*[)\]]\s*\.?\s*$",
     re.I,
 )
-#: The mark with no brackets, after a value (``= mu^2(1 - e^2)  A.G.``, ``… ∎``).
-_BARE = re.compile(r"(?<=[\w)°.²³])\s+(?:A\.G\.?|AG|Q\.E\.D\.?|QED)\s*$|(?<!\s)\s*[∎□■]\s*$")
+#: The mark with no brackets, after a value (``= mu^2(1 - e^2)  A.G.``, ``… ∎``), the mark schemes'
+#: star of a printed answer, alone or with words (``tan β = e tan α  *``, ``* as required``, ``shown``).
+_BARE = re.compile(
+    r"(?<=[\w)°.²³}])\s+(?:\*\s*)?(?:A\.G\.?|AG|Q\.E\.D\.?|QED|as\s+(?:req(?:uired|'?d|\.))|(?:hence\s+)?shown)"
+    r"\s*[.!]?\s*$|(?<=[\w)°.²³}])\s+\*\s*$|(?<!\s)\s*[∎□■]\s*$",
+    re.I,
+)
 #: The figures a value is given to, in brackets (``(to 3 s.f.)``, ``(3sf)``, ``(2 d.p.)``).
 _FIGURES = re.compile(
     r"(?<!\s)\s*\(\s*(?:(?:correct\s+)?to\s+)?\d\s*(?:s\.?\s?f\.?|d\.?\s?p\.?|sig\.?\s*figs?\.?|significant\s+figures"

@@ -2,12 +2,11 @@
 
 A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( … \\)``,
 ``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is read by the parser, as
-plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
-HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
-relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
-"and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag
-``(3)`` is taken off, a lead-in up to a colon (``CLM:``, ``CLM (i):``) and a unit after a number are
-dropped. Words stay: what a name means is the caller's business.
+plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept, HTML
+comments and TeX ``%`` comments dropped, HTML's ``&nbsp;`` a space. Each piece is split: at arrows
+(``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then", "and", and at a comma before
+another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag ``(3)`` is taken off, a lead-in up to a colon
+(``CLM:``, ``CLM (i):``) and a unit after a number are dropped; words stay (the caller's business).
 
 >>> [(r.line, r.sides) for r in read_relations("2x + y = 5\\nsubtract: 3x = -3  so x = -1, y = 7")]
 [(1, ('2x + y', '5')), (2, ('3x', '-3')), (2, ('x', '-1')), (2, ('y', '7'))]
@@ -25,6 +24,7 @@ from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition, without_convention
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.doing import said_doing
+from derive.mathtext.entities import decoded
 from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
@@ -214,7 +214,7 @@ _LONG_NUMBER = re.compile(r"\d{40,}")
 def pieces(text: str) -> Iterator[tuple[int, int, str, str]]:
     """(line, column, as written, plain text) of each line, and of each row of a display
     (a display that spans lines is one row until ``\\\\``, at the line where the row starts)."""
-    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = decoded(text.replace("\r\n", "\n").replace("\r", "\n"))  # &nbsp;, &times;: a space, ×
     text = _LONG_NUMBER.sub(lambda m: f"{m.group(0)[:12]}…(a number of {len(m.group(0))} digits)", text)
     text = _COMMENT.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
     lines = text.split("\n")

@@ -28,6 +28,7 @@ def ascii_subscripts(text: str) -> str:
         return m.group(1) + ("" if glued else "_") + marks
 
     text = _AXIS_SIGN.sub(lambda m: _AXIS_WORD[m.group(1).lstrip("\\")], text)  # "∥ = U cos α": parallel
+    text = axis_subscripts(text)  # u∥, v_\perp: u_parallel, v_perpendicular
     return _GREEK_DIGIT.sub(r"\1_\2", _BARE.sub(r"\1_\2", _RUN.sub(run, text)))
 
 
@@ -35,3 +36,28 @@ def ascii_subscripts(text: str) -> str:
 #: the words parallel and perpendicular, which the names' readers place (at a wall: t and n).
 _AXIS_SIGN = re.compile(r"(?<![\w_{^\\])(∥|⊥|\\parallel|\\perp)(?![A-Za-z0-9_}])(?=\s*=)")
 _AXIS_WORD = {"∥": "parallel", "⊥": "perpendicular", "parallel": "parallel", "perp": "perpendicular"}
+
+
+#: An axis's sign as a name's subscript: in LaTeX (``v_\perp``, ``v_{\parallel}``, ``v_{A,\perp}``),
+#: in Unicode after ``_`` or glued to the letter (``u⊥``, ``v_A∥``, phone-typed). Each is the
+#: subscript ``perpendicular`` or ``parallel`` the names' readers know (:mod:`derive.checking.namegrammar`;
+#: in full, as ``v_perp`` would end in the ``p`` of a prime).
+_SIGN_IN_SUB = re.compile(r"(_\{[^{}]*?)(\\perp|\\parallel|⊥|∥)(?![A-Za-z])\s*(?=[^{}]*\})")
+_SIGN_AFTER = re.compile(
+    r"(?<![A-Za-z\\])([A-Za-z](?:_[A-Za-z0-9]{1,2})?'?)(?:(_)\s*)?(\\perp|\\parallel|⊥|∥)(?![A-Za-z])"
+)
+_SIGN_SUB = {"\\perp": "perpendicular", "⊥": "perpendicular", "\\parallel": "parallel", "∥": "parallel"}
+
+
+def axis_subscripts(text: str) -> str:
+    r"""``text`` with an axis's sign after a name (``u∥``, ``v_\perp``, ``v_{A⊥}``) as the subscript
+    ``parallel`` or ``perpendicular`` (``u_parallel``, ``v_perpendicular``); a sign alone is left to :data:`_AXIS_SIGN`."""
+    text = _SIGN_IN_SUB.sub(lambda m: m.group(1) + _SIGN_SUB[m.group(2)], text)
+
+    def after(m: re.Match) -> str:
+        name, sign = m.group(1), _SIGN_SUB[m.group(3)]
+        if "_" in name:  # v_A⊥: one more mark of the subscript
+            return name + sign
+        return name + "_" + sign
+
+    return _SIGN_AFTER.sub(after, text)
