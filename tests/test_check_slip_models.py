@@ -93,3 +93,19 @@ y &= \frac{(10 - 15e)u}{5} + 5eu = \frac{(10 - 10e)u}{5}
     found = worst_lines(PQ, work)
     assert [found[n][0] for n in (3, 4, 5, 6)] == ["correct"] * 4
     assert found[7] == ("wrong", "algebra")
+
+
+#: Example 4.C.11: A at 5 m/s, 37.6° from the line of impact: n 5 cos 37.6° = 3.96, t 5 sin 37.6° = 3.05.
+NOTES = "notes-4c11-two-spheres"
+
+
+def test_labels_after_a_gap_lead_their_own_relation_and_the_swap_is_named() -> None:
+    # "n: … = 3.05   t: …": the t labels the next relation (not 3.05 t); sin and cos swapped
+    assert worst_lines(NOTES, "A before   n: 5sin37.6 = 3.05   t: 5cos37.6 = 3.96\n")[1] == ("wrong", "sin_cos_swapped")
+
+
+def test_a_one_word_label_after_a_value_starts_the_next_relation() -> None:
+    from derive.mathtext.splitting import split_relations
+
+    assert split_relations("x: 2cos60 = 1 y: 2sin60 = 1.73") == ["x: 2cos60 = 1", "y: 2sin60 = 1.73"]
+    assert split_relations("along: 6cos30 = 5.2   across: 6sin30 = 3") == ["along: 6cos30 = 5.2", "across: 6sin30 = 3"]
