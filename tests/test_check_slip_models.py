@@ -109,3 +109,25 @@ def test_a_one_word_label_after_a_value_starts_the_next_relation() -> None:
 
     assert split_relations("x: 2cos60 = 1 y: 2sin60 = 1.73") == ["x: 2cos60 = 1", "y: 2sin60 = 1.73"]
     assert split_relations("along: 6cos30 = 5.2   across: 6sin30 = 3") == ["along: 6cos30 = 5.2", "across: 6sin30 = 3"]
+
+
+#: OCR M3 2006 (problem ocr-m3-2006-oblique-a-across-centres): A (5 kg) at 4 m/s across the line of
+#: centres, B (2 kg) at 4 m/s along it toward A, e = 0.75: A keeps its 4 m/s across (no t force);
+#: e put on it gives 0.75 x 4 = 3.
+ACROSS = "ocr-m3-2006-oblique-a-across-centres"
+
+
+def test_a_component_with_its_axis_said_first_is_that_component() -> None:
+    # "⊥ cpt A after", "the perpendicular component of A after the impact": A's t component after,
+    # so 3 is e put on it (not A's n component after, which no mistake gives as 3)
+    for words in ("⊥ cpt A after", "the perpendicular component of A after the impact", "A's perp cpt after"):
+        found = worst_lines(
+            ACROSS, f"A 5kg perpendicular to loc at 4, B 2kg along loc at 4 towards A\n{words} = 0.75 x 4 = 3\n"
+        )
+        assert found[2] == ("wrong", "e_on_t"), words
+
+
+def test_a_component_along_the_line_said_first_is_that_component() -> None:
+    # B's component along the line of centres before is -4 (toward A): right as written
+    found = worst_lines(ACROSS, "B's along loc component before = -4\n")
+    assert found[1] == ("correct", "")
