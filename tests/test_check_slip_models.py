@@ -108,6 +108,7 @@ def test_a_one_word_label_after_a_value_starts_the_next_relation() -> None:
     from derive.mathtext.splitting import split_relations
 
     assert split_relations("x: 2cos60 = 1 y: 2sin60 = 1.73") == ["x: 2cos60 = 1", "y: 2sin60 = 1.73"]
+    assert split_relations("m = 0.5 kg: T = 2")[0] == "m = 0.5 kg"  # a unit stays its value's
     assert split_relations("along: 6cos30 = 5.2   across: 6sin30 = 3") == ["along: 6cos30 = 5.2", "across: 6sin30 = 3"]
 
 

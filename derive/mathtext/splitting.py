@@ -115,8 +115,11 @@ def _arrow_split(plain: str) -> list[str]:
 
 #: A lead-in after a comma at the end of a piece, before a colon (``…, y``, ``…, B after``), or a
 #: one-word label after a relation's value and a space (``n: 4sin30 = 2   t: 4cos30 = 3.46``: t
-#: leads in the next, not 2t).
-_LEAD_END = re.compile(r"(?:,\s*([A-Za-z][\w' ]{0,30}?)|(?<=[\d)])\s+([A-Za-z]\w{0,5}))\s*$")
+#: leads in the next, not 2t; a unit stays the value's, ``m = 0.5 kg: T = …``).
+_LEAD_END = re.compile(
+    r"(?:,\s*([A-Za-z][\w' ]{0,30}?)|(?<=[\d)])\s+(?!(?:kg|g|m|s|N|J|Ns|lb|ft|mph|deg|rad|km|cm|mm|slugs?)\s*$)"
+    r"([A-Za-z]\w{0,5}))\s*$"
+)
 
 
 def _colon_split(piece: str) -> list[str]:
