@@ -86,9 +86,29 @@ _LEAD_N = re.compile(rf"(?:along|parallel(?:\s+to)?|par\.?|∥){_LOC}|(?:common\
 _LEAD_T = re.compile(rf"(?:perp(?:\.|endicular)?|⊥|across){_LOC}|(?:common\s+)?tangent(?:ial)?", re.I)
 
 
+#: A body's component said in words with its axis first (``⊥ cpt A after``, ``perpendicular
+#: component of A after``, ``A's along-loc component before``, ``B's perp cpt after``).
+_AXIS = r"(?:(?P<n>along|parallel|par\.?|∥|normal)|(?P<t>perp(?:\.|endicular)?|⊥|across|tangential))" + _LOC
+_CPT = r"(?:component|compt?|cpt)\.?"
+_WHEN = r"(?P<when>before|after|initially|finally)(?:\s+(?:the\s+)?(?:impact|collision))?"
+_AXIS_FIRST = re.compile(
+    rf"(?<![\w'’])(?:the\s+)?(?:{_AXIS}[\s-]+{_CPT}(?:\s+of)?\s+(?P<body>[AB])(?:['’]s)?(?:\s+velocity)?"
+    rf"|(?P<owner>[AB])['’]s\s+{_AXIS.replace('P<n>', 'P<n2>').replace('P<t>', 'P<t2>')}[\s-]+{_CPT})\s+{_WHEN}(?![\w'’])",
+    re.I,
+)
+
+
+def _axis_first(m: re.Match) -> str:
+    axis = "n" if m["n"] or m["n2"] else "t"
+    time = "2" if m["when"].lower() in ("after", "finally") else "1"
+    return f"v_{(m['body'] or m['owner']).upper()}{time}{axis}"
+
+
 def component_words(text: str, label: str) -> str:
     """``A's component after`` under a lead-in naming the axis (``Perp:``, ``Along l.o.c.:``) as
-    derive's name of that component (``v_A2t``): along the line of centres n, across it t."""
+    derive's name of that component (``v_A2t``): along the line of centres n, across it t; so
+    too a component with its axis said before it (``⊥ cpt A after``: ``v_A2t``)."""
+    text = _AXIS_FIRST.sub(_axis_first, text)
     lead = label.strip().rstrip(":").strip()
     axis = "n" if _LEAD_N.fullmatch(lead) else "t" if _LEAD_T.fullmatch(lead) else ""
     if not axis:

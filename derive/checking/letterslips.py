@@ -17,7 +17,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking import bracketfactors, misread, slipnames, termsigns
+from derive.checking import bracketfactors, denominators, misread, slipnames, termsigns
 from derive.checking.worlds import Pair
 
 #: The kinetic energies a line may name.
@@ -36,6 +36,8 @@ def plain(bad: Pair, ctx=None) -> str:
     if not (left.free_symbols | right.free_symbols) or left == 0 or right == 0 or bad.raw is None:
         return "arithmetic"
     if ctx is not None and (termsigns.sign_lost(ctx, bad) or bracketfactors.partly_multiplied(ctx, bad)):
+        return "algebra"
+    if denominators.term_not_multiplied(bad):  # (11 − 7e)u/3 + 7eu written 11u/3
         return "algebra"
     if not (_squares(bad.raw[0]) ^ _squares(bad.raw[1])):  # one side the square, the other multiplied out
         return "arithmetic"

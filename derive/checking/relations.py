@@ -46,7 +46,9 @@ def cosine(a: dict, b: dict, keys: list) -> float:
 
 
 def proportional(a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...], pts: list[Point], tol: float) -> bool:
-    """Whether equations ``a = 0`` and ``b = 0`` are the same up to a nonzero factor."""
+    """Whether equations ``a = 0`` and ``b = 0`` are the same up to a nonzero factor (a function
+    of an unknown, ``sin(alpha)`` where α is asked, compared as a letter of its own)."""
+    a, b, U = functions_as_letters(a, b, U)
     for pt in pts:
         ca, cb = coefficients(a.xreplace(pt), U), coefficients(b.xreplace(pt), U)
         if not ca or not cb:
@@ -60,6 +62,20 @@ def proportional(a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...], pts:
             if abs(ca.get(m, 0) - c * cb.get(m, 0)) > max(tol, 1e-12) * abs(c) * scale:
                 return False
     return True
+
+
+def functions_as_letters(
+    a: sympy.Expr, b: sympy.Expr, U: tuple[sympy.Symbol, ...]
+) -> tuple[sympy.Expr, sympy.Expr, tuple[sympy.Symbol, ...]]:
+    """``a`` and ``b`` with each function of an unknown (``sin(alpha)``, ``cos(alpha)`` where α is
+    asked) put as a letter of its own, the same in both, and the unknowns with those letters: the
+    two are then polynomials to compare term by term (not a polynomial in α itself)."""
+    unknown = set(U)
+    found = {f for x in (a, b) for f in x.atoms(sympy.Function) if f.free_symbols & unknown}
+    if not found:
+        return a, b, U
+    letters = {f: sympy.Symbol(f"<{f}>") for f in sorted(found, key=str)}
+    return a.xreplace(letters), b.xreplace(letters), (*U, *letters.values())
 
 
 #: The systems solved so far (a slip is solved in its rules' turn, the same system more than once).

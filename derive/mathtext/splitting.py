@@ -113,8 +113,13 @@ def _arrow_split(plain: str) -> list[str]:
     return [*out, plain[start:]]
 
 
-#: A lead-in after a comma at the end of a piece, before a colon (``…, y``, ``…, B after``).
-_LEAD_END = re.compile(r",\s*([A-Za-z][\w' ]{0,30}?)\s*$")
+#: A lead-in after a comma at the end of a piece, before a colon (``…, y``, ``…, B after``), or a
+#: one-word label after a relation's value and a space (``n: 4sin30 = 2   t: 4cos30 = 3.46``: t
+#: leads in the next, not 2t; a unit stays the value's, ``m = 0.5 kg: T = …``).
+_LEAD_END = re.compile(
+    r"(?:,\s*([A-Za-z][\w' ]{0,30}?)|(?<=[\d)])\s+(?!(?:kg|g|m|s|N|J|Ns|lb|ft|mph|deg|rad|km|cm|mm|slugs?)\s*$)"
+    r"([A-Za-z]\w{0,5}))\s*$"
+)
 
 
 def _colon_split(piece: str) -> list[str]:
@@ -126,7 +131,7 @@ def _colon_split(piece: str) -> list[str]:
         if "=" in bit and "=" in out[-1] and out[-1].count("(") == out[-1].count(")"):
             lead = _LEAD_END.search(out[-1])  # "x: 2cos60 = 1, y: 2sin60 = 1.73": y leads in the next
             if lead and "=" in out[-1][: lead.start()]:
-                out[-1], bit = out[-1][: lead.start()], f"{lead.group(1)}:{bit}"
+                out[-1], bit = out[-1][: lead.start()], f"{lead.group(1) or lead.group(2)}:{bit}"
             out.append(bit)
         else:
             out[-1] += ":" + bit

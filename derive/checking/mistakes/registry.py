@@ -43,6 +43,7 @@ FORMS: dict[str, Callable[[Any, Variant], list[dict[int, sympy.Expr]]]] = {
     "restitution_reversed": restitution.upside_down,
     "weight_as_mass": masses.one_body,
     "energy_conserved": restitution.energy_for_momentum,
+    "e_on_t": tangential.moved,
 }
 
 # every kind registered itself when its module was imported; here they are put in report order

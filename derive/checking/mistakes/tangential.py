@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import sympy
+
 from derive.checking.mistakes.equations import Model
 from derive.checking.mistakes.records import Variant, mistake
 
@@ -20,6 +22,18 @@ def e_on_t(model: Model) -> Variant | None:
     if not model.problem.oblique:
         return None
     return Variant(t_factor=model.e)
+
+
+def moved(model: Model, v: Variant) -> list[dict[int, sympy.Expr]]:
+    """e moved from the n components to the t ones: (1), (2) with e times the t components before,
+    and the impact rule (4) without it, separation = approach (``v_par = (3/4) U cos(alpha),
+    v_perp = U sin(alpha)`` at a wall); numbers in. A teacher names it e on the t components."""
+    if v.t_factor is None or model.e in model.unknowns:
+        return []
+    eqs = model.equations(v)
+    if 4 not in eqs:
+        return []
+    return [model.numbered(v, {**eqs, 4: eqs[4].xreplace({model.e: sympy.Integer(1)})})]
 
 
 @mistake(
