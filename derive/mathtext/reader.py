@@ -4,7 +4,7 @@ A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( �
 ``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is read by the parser, as
 plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept,
 HTML comments and TeX ``%`` comments are dropped. Each piece is then split into its
-relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then",
+relations: at arrows (``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then", "but",
 "and", and at a comma before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag
 ``(3)`` is taken off, a lead-in up to a colon (``CLM:``, ``CLM (i):``) and a unit after a number are
 dropped. Words stay: what a name means is the caller's business.
