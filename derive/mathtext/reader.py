@@ -60,7 +60,7 @@ from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
-from derive.mathtext.units import UNIT, in_si
+from derive.mathtext.units import UNIT, in_si, letter_in_sum
 from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
@@ -138,7 +138,7 @@ _MOMENTUM_UNIT = re.compile(r"(?<=[\d.)\s])\s*kg\s*[·*]?\s*(?:m\s*/\s*s|m\s*s\s
 
 def without_unit(side: str) -> str:
     """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
-    return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
+    return side if letter_in_sum(side) else _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))  # 0.002 + 0.150 m: m a mass
 
 
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
