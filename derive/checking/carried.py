@@ -206,8 +206,8 @@ def made_again(trace: Trace, pairs: list[Pair]) -> tuple[int, str] | None:
     afresh the same wrong way (``u_2 = u cos 30°`` under ``u_1 = u sin 30°``: the t component
     with sin and cos swapped too) is that mistake again, not a carried error; None otherwise."""
     named = {name: n for n, names in trace.named.items() for name in names}
-    pre = set(trace.ctx.model.pre)
-    false = [p for p in pairs if not trace.holds([p], trace.truth)]
+    pre, own = set(trace.ctx.model.pre), trace.own  # vA1t = (rt3/2)u as stated wrongly before: said again, carried
+    false = [p for p in pairs if not trace.holds([p], trace.truth) and not (p.raw and own.get(p.raw[0]) == p.raw[1])]
     if not named or not false:
         return None
     for p in false:

@@ -38,9 +38,10 @@ if TYPE_CHECKING:
     from derive.checking.worlds import Pair
 
 #: A line that goes on from the one above: "=" first, after any markup that opens it (a list's
-#: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing).
+#: bullet, a quote's ``>``, ``$``, ``\(``, ``\[``, an ``align`` row's ``&``, TeX spacing), or
+#: after words of what the step does up to a colon (``times rt3(1-e) top and bottom: = …``).
 GOES_ON = re.compile(
-    r"\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)"
+    r"(?:[^=:\n]{1,80}:(?!=))?\s*(?:(?:[*>+$&-]|\\[(\[]|\\q?quad\b|\\[,;:!])\s*)*(?:=|≈|\\approx\b|~=)"
 )  # one $ a step: no backtracking
 
 

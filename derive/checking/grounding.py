@@ -119,7 +119,12 @@ def _swapped(a: Option, b: Option) -> bool:
     B's and y as A's): with one less the other in the impact rule that swap is the law written
     upside down, and from it on the later lines hold either way; only the first relation the
     names stand in (apart from that difference) may ground it, as a teacher reads x then y."""
-    return len(a) == 2 and a[0] == b[1] and a[1] == b[0] and a[0] != a[1]
+    return len(a) == 2 and a[0] != a[1] and (a[0], a[1]) in ((b[1], b[0]), (_turn(b[1]), _turn(b[0])))
+
+
+def _turn(c: tuple[str, sympy.Expr]) -> tuple[str, sympy.Expr]:
+    """A name's reading taken positive the other way (x as -B's too: swapped and turned at once)."""
+    return (c[0][1:] if c[0].startswith("-") else f"-{c[0]}", -c[1])
 
 
 def _lettered(ctx: Context, group: list[sympy.Symbol], reading: Option) -> bool:

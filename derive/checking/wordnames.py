@@ -1,7 +1,6 @@
 """Names a student declares in words, not with ``=``: "Let a and b be the velocities of A and B
 along the line of centres after" (an oblique impact's components), "let x, y be the speeds of P
 and Q after the collision", "x = velocity of A after" (a direct impact's velocities).
-
 :func:`in_words` is what :func:`.naming.declarations` asks of each line.
 """
 
@@ -11,6 +10,7 @@ import re
 
 import sympy
 
+from derive.checking.anglenames import velocities_in_words
 from derive.checking.context import Context
 from derive.checking.statementbodies import at_rest_before, said_by_letter, statement_bodies
 from derive.checking.towardwords import toward
@@ -374,7 +374,7 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     knows (the statement's P and Q), the one body that leaves off the line of centres."""
     if not ctx.problem.oblique:
         return {}
-    plain = re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line)
+    plain = velocities_in_words(re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line))  # the angle v_A makes with
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]

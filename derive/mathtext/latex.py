@@ -37,7 +37,8 @@ _BARE_UNIT = re.compile(
 #: Words after a relation that turn it down (``v_P = u is before the collision``, ``x = 3 (rejected)``).
 REJECTED = re.compile(
     r"\b(?:is|was|are|gives?)\s+(?:the\s+)?(?:before|initial|not\s+(?:possible|valid|physical|the\s+answer))"
-    r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b",
+    r"|\b(?:reject(?:ed)?|discard(?:ed)?|impossible|not\s+possible|not\s+valid|not\s+physical)\b"
+    r"|(?<=[\d\s(])no(?=\s*[)\]]?\s*[.!]?\s*$)",  # "(e = −9 no)", "e = −9 (no)": a root turned down
     re.I,
 )
 #: Words in ``\\text{}`` that name what the caller knows: a body's quantity (``speed of A after``,

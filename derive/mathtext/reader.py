@@ -4,8 +4,8 @@ A text is read line by line. Mathematics in ``$ … $``, ``$$ … $$``, ``\\( �
 ``\\[ … \\]`` or an ``align``/``equation``/``gather`` environment is read by the parser, as
 plain text (:mod:`.latex`; rows split at ``\\\\`` and at line ends), text around it is kept, HTML
 comments and TeX ``%`` comments dropped, HTML's ``&nbsp;`` a space. Each piece is split: at arrows
-(``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then", "and", and at a comma before
-another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag ``(3)`` is taken off, a lead-in up to a colon
+(``\\Rightarrow``, ``⇒``, ``→``), at ``;``, at "so", "hence", "then", "but", "and", and at a comma
+before another relation (``v_B1n = -6 m/s, v_B1t = 0``); a tag ``(3)`` is taken off, a lead-in up to a colon
 (``CLM:``, ``CLM (i):``) and a unit after a number are dropped; words stay (the caller's business).
 
 >>> [(r.line, r.sides) for r in read_relations("2x + y = 5\\nsubtract: 3x = -3  so x = -1, y = 7")]
@@ -60,7 +60,7 @@ from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
-from derive.mathtext.units import UNIT, in_si
+from derive.mathtext.units import UNIT, in_si, letter_in_sum
 from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
@@ -138,7 +138,7 @@ _MOMENTUM_UNIT = re.compile(r"(?<=[\d.)\s])\s*kg\s*[·*]?\s*(?:m\s*/\s*s|m\s*s\s
 
 def without_unit(side: str) -> str:
     """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
-    return _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))
+    return side if letter_in_sum(side) else _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))  # 0.002 + 0.150 m: m a mass
 
 
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.

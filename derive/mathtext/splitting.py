@@ -15,7 +15,7 @@ from derive.mathtext.percents import per_cent_of
 from derive.mathtext.sides import LONE_VALUE, html_marks
 
 _ARROW = re.compile(
-    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|or|at|"
+    r"⇔|⟺|<=>|⇒|⟹|→|=>|->|∴|\\(?:Rightarrow|Longrightarrow|Leftrightarrow|Longleftrightarrow|implies|rightarrow|to|therefore|iff)\b|(?<![\w.])(?:so|hence|thus|then|therefore|giving|gives|and|but|whereas|or|at|"
     + SO_ABROAD
     + r")(?![\w])",
     re.I,

@@ -60,3 +60,16 @@ def in_si(side: str) -> str | None:
         shifted = Decimal(m.group(1).replace("−", "-")).scaleb(-len(factor) + 2)
         return format(shifted, "f")
     return m.group(1) + factor
+
+
+#: A lone ``m`` or ``g`` after the number of a term added to others (``0.00020 + 0.150 m``,
+#: ``0.008 = 0.002 + 0.150\,m``): a mass (or g) times the number, as a momentum's term; a unit
+#: would be after the whole sum or after every term of it (``1.41 m``, ``2 m + 3 m``).
+_LETTER_IN_SUM = re.compile(r"(?<=[\w)}\]])\s*[-+−]\s*\d[\d.]*\s+[mg]\.?\s*$")
+
+
+def letter_in_sum(side: str) -> bool:
+    """Whether ``side`` ends in a term of a sum whose lone ``m`` or ``g`` is a name, not a unit
+    (no other term of the sum has a unit)."""
+    m = _LETTER_IN_SUM.search(side)
+    return m is not None and not re.search(r"\d\s*[mg]\s*[-+−]", side)
