@@ -31,6 +31,7 @@ from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
 from derive.checking.conventions import axis_sense, plus_said, sign_of
+from derive.checking.forwardway import forward_said, forward_sign
 from derive.checking.instants import one_body_instants
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
@@ -438,6 +439,8 @@ def declarations(
             sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
         elif not sign and (plus := plus_said(line)):
             sign = plus  # "(towards wall is +)", "(+ away from the wall)"
+        if not sign and forward_said(line):
+            sign = forward_sign(ctx)  # "Momentum (forward +)": the way the bodies go before the impact
     for said in wrapped_sentences(text):  # "let x and y be … along the" / "line of centres after"
         out.update({k: v for k, v in in_words(in_line_words(said, ctx), ctx).items() if k not in out})
     return out, sign
