@@ -48,6 +48,7 @@ from derive.checking.spellings import (
     subscript,
 )
 from derive.checking.tersenames import terse_names
+from derive.checking.vectorangles import vector_angles
 from derive.checking.wordnames import in_words, says_what
 from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
@@ -426,6 +427,7 @@ def declarations(
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
+        out.update({k: v for k, v in vector_angles(line, ctx).items() if k not in out})  # "β: the angle v_A makes with"
         if not sign and not re.search(r"\bpositive\b|\+\s?ve\b", line, re.I):
             sign = axis_sense(line)  # "n along the line of impact (from A to B)": the student's positive
         if placed is not None and placed(line):
