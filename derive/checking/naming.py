@@ -33,6 +33,7 @@ from derive.checking.context import Context
 from derive.checking.conventions import axis_sense, plus_said, sign_of
 from derive.checking.forwardway import forward_said, forward_sign
 from derive.checking.instants import one_body_instants
+from derive.checking.minusnames import minus_names
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
@@ -427,6 +428,7 @@ def declarations(
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
+        out.update({k: v for k, v in minus_names(line, ctx).items() if k not in out})  # "after it is -v"
         out.update({k: v for k, v in vector_angles(line, ctx).items() if k not in out})  # "β: the angle v_A makes with"
         if not sign and not re.search(r"\bpositive\b|\+\s?ve\b", line, re.I):
             sign = axis_sense(line)  # "n along the line of impact (from A to B)": the student's positive
