@@ -19,6 +19,7 @@ import sympy
 from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
+from derive.checking.chainhabits import habit_names
 from derive.checking.chainroots import worked_wrong
 from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
@@ -58,7 +59,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     names = chainletters.chain_names(ctx, values)  # e for e_floor; m beside a letter (ma + mb)
     read = _read(ctx, text, names)
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
-    said |= chainnames.velocities(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
+    said, read = habit_names(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
     said |= (
         impulse := impulse_said(ctx, read, said)
     )  # "impulse = m(v - u) = …": the impact's J, not a name it defines

@@ -65,7 +65,7 @@ def declared_in(ctx: Context, text: str, read: list) -> tuple[Declared, list]:
     is a name, not a relation to judge)."""
     said, lines = declared(ctx, list(enumerate(written_out(ctx, text).splitlines(), 1)))  # "After: A v1, B v2" too
     read = [x for x in read if not (x[0].line in lines and _declaring(x[2], said))]
-    read = [x for x in read if not _restated(ctx, x, read)]
+    read = [x for x in read if not restated(ctx, x, read, {})]
     return {**energies(ctx, read), **said}, read
 
 
@@ -82,13 +82,14 @@ _GIVEN_WORDS = re.compile(
 )
 
 
-def _restated(ctx: Context, x: tuple, read: list) -> bool:
+def restated(ctx: Context, x: tuple, read: list, said: Declared) -> bool:
     """Whether ``x`` (relation, sides, expressions) restates a given speed on a line of givens before the
     working (``Q5  m = 0.2 kg, u = 5 m/s down, h = 1.6 m``: all of its relations a name set to a
     number, this one with the given's unit or words) in a name the chain has for another quantity:
     its number is a given's (to the figures written, either sign) while the relation, read in the
     chain's names, is false (the chain's ``u`` is the velocity after the bounce). A teacher does not
-    mark it; the checker does not judge it. A bare ``v_1 = 5`` (the fall forgotten) is judged."""
+    mark it; the checker does not judge it. A bare ``v_1 = 5`` (the fall forgotten) is judged. ``said``:
+    the names known so far (``(v_B)_1 = 2 m/s ←``, B's velocity before, restates B's given speed)."""
     r, sides, exprs = x
     worked = [y[0].line for y in read if not stated(y[1])]
     if not stated(sides) or (worked and r.line >= min(worked)) or len(exprs) != 2:
@@ -107,7 +108,8 @@ def _restated(ctx: Context, x: tuple, read: list) -> bool:
     if not any(abs(abs(value) - v) <= half for v in values):
         return False
     chain = {str(k): v for k, v in ctx.solution.values.items()}
-    own = exprs[0].xreplace({s: chain[s.name] for s in exprs[0].free_symbols if s.name in chain})
+    own = exprs[0].xreplace(said)
+    own = own.xreplace({s: chain[s.name] for s in own.free_symbols if s.name in chain})
     try:
         return not own.free_symbols and abs(float(own) - float(exprs[1])) > half
     except (TypeError, ValueError):
@@ -257,12 +259,16 @@ _VELOCITIES = {
 
 
 def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
-    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
-    ``u_A`` before, ``v_A'``) where the chain has one impact and does not use those names: the
-    impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
-    they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
-    ``holds(sides, exprs, subs)``."""
+    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after, ``u_A`` before,
+    ``v_A'``) where the chain has one impact of A and B and does not use those names: the impact's own, where
+    a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else they are left to be inferred (a
+    ``vA`` for A's speed down the ramp, before the impact). ``holds(sides, exprs, subs)``."""
     impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    clash = any(s.name in _VELOCITIES for _r, _sides, exprs in read for x in exprs for s in x.free_symbols)
+    if len(impacts) > 1:  # A and B collide, then B strikes the wall: A and B's impact, where no name is the chain's
+        impacts = [st for st in impacts if tuple(st.part.problem.labels) == ("A", "B") and not clash]
+    if len(impacts) != 1:
+        return {}
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
     meant = {
         p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES

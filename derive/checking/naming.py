@@ -31,7 +31,9 @@ from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
 from derive.checking.conventions import axis_sense, plus_said, sign_of
+from derive.checking.forwardway import forward_said, forward_sign
 from derive.checking.instants import one_body_instants
+from derive.checking.minusnames import minus_names
 from derive.checking.namedlast import in_line_words, named_last, speed_along
 from derive.checking.saidwords import SAID_PHRASES, times_beside_words
 from derive.checking.saidwords import together as moving_off_together
@@ -47,6 +49,7 @@ from derive.checking.spellings import (
     subscript,
 )
 from derive.checking.tersenames import terse_names
+from derive.checking.vectorangles import vector_angles
 from derive.checking.wordnames import in_words, says_what
 from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
@@ -426,6 +429,8 @@ def declarations(
         out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
         out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
         out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
+        out.update({k: v for k, v in minus_names(line, ctx).items() if k not in out})  # "after it is -v"
+        out.update({k: v for k, v in vector_angles(line, ctx).items() if k not in out})  # "β: the angle v_A makes with"
         if not sign and not re.search(r"\bpositive\b|\+\s?ve\b", line, re.I):
             sign = axis_sense(line)  # "n along the line of impact (from A to B)": the student's positive
         if placed is not None and placed(line):
@@ -439,6 +444,8 @@ def declarations(
             sign = sign or sign_of(line)  # "x and y, both in the direction B was moving"
         elif not sign and (plus := plus_said(line)):
             sign = plus  # "(towards wall is +)", "(+ away from the wall)"
+        if not sign and forward_said(line):
+            sign = forward_sign(ctx)  # "Momentum (forward +)": the way the bodies go before the impact
     for said in wrapped_sentences(text):  # "let x and y be … along the" / "line of centres after"
         out.update({k: v for k, v in in_words(in_line_words(said, ctx), ctx).items() if k not in out})
     return out, sign

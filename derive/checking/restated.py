@@ -22,7 +22,7 @@ from derive.mathtext.reader import Relation
 from derive.problem.expr import ParseError, parse
 from derive.problem.units import VELOCITY
 
-_NAME = re.compile(r"[A-Za-z]\w{0,6}")
+_NAME = re.compile(r"[A-Za-z]\w{0,6}['′]{0,2}")  # e' for the wall's e too
 _NUMBER = re.compile(r"\s*[-+]?\s*(\d+)\.?(\d*)\s*")
 
 

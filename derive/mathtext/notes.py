@@ -1,7 +1,7 @@
 """What a student writes around a relation that is not part of it, as a teacher reads it.
 
 A note after a relation: an equation's tag (``...(1)``, ``--(2)``, ``[3]``, ``eqn 4``), the
-unrounded value in brackets (``V = 1.49 m/s (1.4925)``), a remark in square brackets
+unrounded value in brackets (``V = 1.49 m/s (1.4925)``, ``e = 0.172 (5/29)``), a remark in square brackets
 (``[w left, 2.9 right]``). A line the student withdraws (``<- no, wrong side``, ``(crossed
 out)``, ``no wait, …``, ``~~x = 3~~``): what it withdraws is never marked. A sentence that turns
 a root down in words (``if x = 5u/6 then y = u/3 < x, impossible``, ``… can't happen``): its
@@ -129,7 +129,7 @@ _PART_END = re.compile(
 #: A number in brackets after a value (its unrounded value, or more figures); a unit's words part at spaces only.
 _UNROUNDED = re.compile(
     r"(?<![\w.])(?P<value>[-+]?\d[\d.]*)(?P<unit>(?:\s?[A-Za-z/^\-·*°%⁻¹²](?:[A-Za-z/^\-·*°%⁻¹²1]|\s(?=[A-Za-z/^\-·*°%⁻¹²]))*)?)"
-    r"(?P<gap>\s+)\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*)[A-Za-z/^\-\s·*⁻¹°%]*\)\s*$"
+    r"(?P<gap>\s+)\(\s*[≈=~]?\s*(?P<more>[-+]?\d[\d.]*(?:\s*/\s*\d+(?:\.\d+)?)?)[A-Za-z/^\-\s·*⁻¹°%]*\)(?P<later>\s*[A-Za-z][A-Za-z/^\-·*⁻¹²1]*(?:\s[A-Za-z][A-Za-z/^\-·*⁻¹²1]*)?)?\s*$"
 )
 #: A remark in square brackets after a relation, with a word in it (``[w left, 2.9 right]``).
 _SQUARE = re.compile(r"\s+\[([^\[\]=^_]*)\]\s*$")
@@ -281,8 +281,8 @@ def _note(text: str, equals_before: bool) -> tuple[str, str]:
     if m and not after_operator and any(w.lower() not in _MATH for w in re.findall(r"[A-Za-z]{2,}", m.group(1))):
         text = text[: m.start()]  # "[w left, 2.9 right]"; "[(delta_0 + x)^2 - delta_0^2]" is mathematics
     m = _UNROUNDED.search(text)
-    if m and _is_more_figures(m):
-        text = text[: m.start("gap")]
+    if m and _is_more_figures(m):  # a unit after the brackets is the value's: "0.174 (4/23) m/s"
+        text = text[: m.start("gap")] + (f" {m['later'].strip()}" if m["later"] else "")
     text = _PART_END.sub("", text)
     m = _TAG.search(text)
     if m is None:
@@ -308,10 +308,24 @@ def _after_unit(text: str) -> bool:
     return m is not None and is_unit(m.group(1).strip())
 
 
+def _fraction_of(fraction: str, value: str) -> bool:
+    """Whether ``fraction`` (``5/29``) rounds to ``value`` (``0.172``, two figures or more, with a
+    decimal point) at the places ``value`` has: the exact value the decimal was rounded from."""
+    top, bottom = (float(x) for x in fraction.split("/"))
+    figures = len(value.replace(".", "").lstrip("0"))
+    if "." not in value or figures < 2 or not bottom:
+        return False
+    return abs(top / bottom - float(value)) <= 0.5 * 10 ** -len(value.split(".")[1]) + 1e-12
+
+
 def _is_more_figures(m: re.Match) -> bool:
     """Whether the bracketed number is the value before it to more figures, or a decimal after a
     unit or a wide gap (an aside): ``1.49 m/s (1.4925)``; ``0.2 (28)`` and ``2u (1.5)`` are products."""
     value, more, unit = m.group("value").lstrip("+-"), m.group("more").lstrip("+-"), m.group("unit").strip()
+    if m["later"] and (unit or not is_unit(m["later"].strip())):
+        return False  # "2 (3) x": not a unit after the brackets
+    if "/" in more:  # the exact fraction it was rounded from: 0.172 (5/29)
+        return _fraction_of(more, value) and (not unit or is_unit(unit))
     if "." not in more or (unit and not (is_unit(unit) or unit in ("%", "°"))):
         return False
     digits = value.replace(".", "").lstrip("0").rstrip("0") or "0"
