@@ -256,11 +256,13 @@ _VELOCITIES = {
 
 def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
     """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
-    ``u_A`` before, ``v_A'``) where the chain has one impact and does not use those names: the
+    ``u_A`` before, ``v_A'``) where the chain has one impact between two moving bodies (another, at
+    a wall, may follow) and does not use those names: the
     impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
     they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
     ``holds(sides, exprs, subs)``."""
     impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
+    impacts = [st for st in impacts if not st.part.problem.fixed_B] if len(impacts) > 1 else impacts
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
     meant = {
         p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES
