@@ -15,8 +15,9 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
-from derive.checking.context import DEG, Context
+from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
+from derive.checking.degreemode import in_degrees
 from derive.checking.frames import (
     axis_names,
     declared_axes,
@@ -242,24 +243,15 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             exprs[0] = sympy.sqrt(exprs[0] ** 2)  # "speed after: v = eu = 1.2": the size of v
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
+    sides, exprs = in_degrees(tuple(s for s in shown if s is not None), tuple(exprs))
     return Read(
         r.line,
         r.written,
-        tuple(s for s in shown if s is not None),
+        sides,
         r.tag,
-        _in_degrees(tuple(exprs)),
+        exprs,
         direction=r.direction,
     )
-
-
-def _in_degrees(exprs: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
-    """``90 - 1.27 = 88.7°``: where the last side is a number of degrees, the sides that are
-    plain numbers are degrees too (the student marks the answer's unit only)."""
-    last = exprs[-1] if exprs else None
-    if last is None or last.free_symbols != {DEG} or not (last / DEG).is_number:
-        return exprs
-    plain = [x.is_number and x != 0 and not x.atoms(sympy.Function) for x in exprs[:-1]]  # not tan^-1(3.266)
-    return (*(x * DEG if p else x for x, p in zip(exprs[:-1], plain, strict=True)), last)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
