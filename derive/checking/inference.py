@@ -132,7 +132,7 @@ def read_lines(
     either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
     signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
-    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded) for sg in signs}
+    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded, bool(sign)) for sg in signs}
     _, mapping, inferred, s = max(
         ((*found[sg], sg) for sg in signs),
         key=lambda c: c[0] + (0 if own or c[3] == -1 else 1),  # derive's names only: two more must hold
@@ -299,10 +299,12 @@ def _infer(
     pt: dict,
     known: tuple[dict, tuple[sympy.Expr, ...]],
     kinded: dict[str, Dim] | None = None,
+    declared: bool = False,
 ) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
     """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign; ``known``
     is the true velocities and the equations (1)-(4); ``kinded`` the names whose kind the text
-    states (a mass, an impulse): only a quantity of that kind is inferred for them."""
+    states (a mass, an impulse): only a quantity of that kind is inferred for them; ``declared``: the
+    positive way is said in words."""
     truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
@@ -337,7 +339,8 @@ def _infer(
             for c in combos(group, cands, raw, velocities_before(ctx))
             if not any(p in solved and e in known for p, (_w, e) in zip(group, c, strict=True))
             and all(of_kind(kind.get(p), w) for p, (w, _e) in zip(group, c, strict=True))
-        ]
+            and not (declared and len(group) > 1 and all(isinstance(-sign * e, sympy.Symbol) for _w, e in c))
+        ]  # with a positive way said, names met together are not all read the other way (its reverse)
         if not options:
             continue
         tried = [{**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}} for combo in options]
