@@ -259,21 +259,22 @@ _VELOCITIES = {
 
 
 def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
-    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after, ``u_A`` before,
-    ``v_A'``) where the chain has one impact of A and B and does not use those names: the impact's own, where
-    a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else they are left to be inferred (a
-    ``vA`` for A's speed down the ramp, before the impact). ``holds(sides, exprs, subs)``."""
+    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
+    ``u_A`` before, ``v_A'``) where the chain has one impact between two moving bodies (another, at
+    a wall, may follow) and does not use those names: the impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
+    they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
+    ``holds(sides, exprs, subs)``."""
     impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
     clash = any(s.name in _VELOCITIES for _r, _sides, exprs in read for x in exprs for s in x.free_symbols)
-    if len(impacts) > 1:  # A and B collide, then B strikes the wall: A and B's impact, where no name is the chain's
-        impacts = [st for st in impacts if tuple(st.part.problem.labels) == ("A", "B") and not clash]
+    if len(impacts) > 1:  # A and B collide, then B strikes the wall: the moving bodies' impact, where no name is the chain's
+        impacts = [st for st in impacts if not st.part.problem.fixed_B and not clash]
     if len(impacts) != 1:
         return {}
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
     meant = {
         p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES
     }
-    meant = {p: _plain(x) for p, x in meant.items() if x is not None} if len(impacts) == 1 else {}
+    meant = {p: _plain(x) for p, x in meant.items() if x is not None}
     if any(holds(sides, exprs, {**said, **meant}) for _r, sides, exprs in read if _has(exprs, meant)):
         return meant
     return {}

@@ -17,8 +17,11 @@ _GOES = (
     r"(?:(?:was\s+|is\s+|had\s+been\s+)?(?:mov|travell?|go|head|start|roll|slid|slide)(?:es|s|ed|ing)?\b"
     r"|(?:was\s+|is\s+)?(?:going|went|moved|travelled|traveled|initially)\b)"
 )
+#: An arrow between two bodies' letters: ``A→B``, ``A -> B``, ``A \\to B`` (from the first toward the second).
+_ARROW = r"(?:→|⟶|-{1,2}>|\\to\b|\\(?:long)?rightarrow\b)"
 _REVERSED = re.compile(
     rf"revers|opposite|negative|away\s+from\s+{_FIXED}|(?<!\w)from\s+b\s+to(?:wards?)?\s+a\b|-n\b"
+    rf"|(?<!\w)b\s*{_ARROW}\s*a\b"
     rf"|(?:out\s+)?from\s+{_FIXED}|out\s+of\s+{_FIXED}|rebound|bounces?\s+back|(?<!\w)to(?:wards?)?\s+(?-i:A)\b(?!['’])"
     r"|\bb['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)|(?:direction|motion)\s+of\s+b\b"
     rf"|(?:direction|way)\s+(?:that\s+|in\s+which\s+)?b\s+{_GOES}",
@@ -26,6 +29,7 @@ _REVERSED = re.compile(
 )
 _FORWARD = re.compile(
     rf"to(?:wards?)?\s+{_FIXED}|from\s+a\s+to(?:wards?)?\s+b\b|\ba['’]?s\s+(?:initial\s+|original\s+)?(?:direction|motion)"
+    rf"|(?<!\w)a\s*{_ARROW}\s*b\b"
     rf"|(?:direction|way)\s+(?:that\s+|in\s+which\s+)?a\s+{_GOES}"
     r"|direction\s+of\s+a\b|\+n\b|^\s*n\b|derive|(?<!\w)to(?:wards?)?\s+(?-i:B)\b(?!['’])|direction\s+of\s+approach"
     r"|(?<!['’]s\s)(?:initial|original)\s+direction(?:\s+of\s+(?:motion\s+of\s+)?(?:a|the\s+(?:ball|sphere|particle|puck)))?\b"

@@ -10,8 +10,14 @@ the line's slip.
 
 from __future__ import annotations
 
+import re
+
+import sympy
+
 from derive.checking import slipnames, stepnames
+from derive.checking.mistakes import REGISTRY
 from derive.checking.worlds import Pair
+from derive.problem.units import ANGLE
 
 #: What :meth:`~.lines.Trace._explain` returns: the mistakes, the equation, the words, the name.
 Explained = tuple
@@ -20,6 +26,7 @@ Explained = tuple
 def explained(trace, line, bad: Pair, pairs: list[Pair], answer) -> tuple[Pair, Explained]:
     """The relation of ``line`` its slip is named by, and its explanation (``trace._explain``)."""
     found = stepnames.step_first(trace, line, bad, trace._explain(line, bad, answer))
+    found = _angle_stated(trace, line, bad, found)
     if not _again(trace, {d.mistake for d in found[0]}):
         return bad, found
     world = trace.world if trace.world is not None else trace.truth
@@ -37,3 +44,28 @@ def explained(trace, line, bad: Pair, pairs: list[Pair], answer) -> tuple[Pair, 
 def _again(trace, made: set[str]) -> bool:
     """Whether the mistakes ``made`` are those named at an earlier slip (made again)."""
     return bool(made) and any(slipnames.same_mistake(names, made) for names in trace.named.values())
+
+
+def _angle_stated(trace, line, bad: Pair, found: Explained) -> Explained:
+    """A line that works out an angle (a side a number of degrees, ``cos θ = r/2r ⇒ θ = 60°``, not a
+    given angle restated) whose value is the one sin and cos swapped give: the angle taken from the
+    other axis (``angle_other_axis``), as a teacher names a wrong angle, and the components worked
+    from it are that mistake again (sin and cos swapped); components resolved with sin and cos
+    swapped (``5 sin 37.6° = 3.05``: no angle worked out) keep their name."""
+    if {d.mistake for d in found[0]} != {"sin_cos_swapped"} or "angle_other_axis" not in REGISTRY:
+        return found
+    given = {
+        float(g.value * 180 / sympy.pi) for g in trace.ctx.problem.givens if g.dim == ANGLE and g.value is not None
+    }
+    worked = [float(m[1]) for m in _ANGLE_WORKED.finditer(getattr(line, "written", ""))]
+    if not any(all(abs(a - b) > 1e-6 for b in given) for a in worked):
+        return found
+    other = trace.ctx.diagnosis(REGISTRY["angle_other_axis"])
+    said = str(found[2]).replace(REGISTRY["sin_cos_swapped"].phrase, REGISTRY["angle_other_axis"].phrase)
+    return ((*other, *found[0]), found[1], said, *found[3:]) if other else found  # the components swapped too
+
+
+#: An angle worked out to a number of degrees on a line as typed: ``θ = 60°``, ``\theta = 60^\circ``.
+_ANGLE_WORKED = re.compile(
+    r"(?:(?<![\w\\])[A-Za-z]\w*|\\[a-z]+|[αβγθφψ])(?:_\{?\w+\}?)?\s*&?\s*=\s*(\d+(?:\.\d+)?)\s*(?:°|\^\s*\{?\s*\\circ)"
+)

@@ -15,8 +15,9 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
-from derive.checking.context import DEG, Context
+from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
+from derive.checking.degreemode import in_degrees
 from derive.checking.frames import (
     axis_names,
     declared_axes,
@@ -131,7 +132,7 @@ def read_lines(
     either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
     signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
-    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded) for sg in signs}
+    found = {sg: _infer(ctx, ways[sg], meanings, defs, sg, pt, (truth, equations), kinded, bool(sign)) for sg in signs}
     _, mapping, inferred, s = max(
         ((*found[sg], sg) for sg in signs),
         key=lambda c: c[0] + (0 if own or c[3] == -1 else 1),  # derive's names only: two more must hold
@@ -242,24 +243,15 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
             exprs[0] = sympy.sqrt(exprs[0] ** 2)  # "speed after: v = eu = 1.2": the size of v
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
+    sides, exprs = in_degrees(tuple(s for s in shown if s is not None), tuple(exprs))
     return Read(
         r.line,
         r.written,
-        tuple(s for s in shown if s is not None),
+        sides,
         r.tag,
-        _in_degrees(tuple(exprs)),
+        exprs,
         direction=r.direction,
     )
-
-
-def _in_degrees(exprs: tuple[sympy.Expr, ...]) -> tuple[sympy.Expr, ...]:
-    """``90 - 1.27 = 88.7°``: where the last side is a number of degrees, the sides that are
-    plain numbers are degrees too (the student marks the answer's unit only)."""
-    last = exprs[-1] if exprs else None
-    if last is None or last.free_symbols != {DEG} or not (last / DEG).is_number:
-        return exprs
-    plain = [x.is_number and x != 0 and not x.atoms(sympy.Function) for x in exprs[:-1]]  # not tan^-1(3.266)
-    return (*(x * DEG if p else x for x, p in zip(exprs[:-1], plain, strict=True)), last)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
@@ -307,10 +299,12 @@ def _infer(
     pt: dict,
     known: tuple[dict, tuple[sympy.Expr, ...]],
     kinded: dict[str, Dim] | None = None,
+    declared: bool = False,
 ) -> tuple[float, dict[sympy.Symbol, sympy.Expr], dict[str, str]]:
     """(relations that hold, placeholder -> meaning, inferred name -> what) for one sign; ``known``
     is the true velocities and the equations (1)-(4); ``kinded`` the names whose kind the text
-    states (a mass, an impulse): only a quantity of that kind is inferred for them."""
+    states (a mass, an impulse): only a quantity of that kind is inferred for them; ``declared``: the
+    positive way is said in words."""
     truth, equations = known
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
@@ -345,7 +339,8 @@ def _infer(
             for c in combos(group, cands, raw, velocities_before(ctx))
             if not any(p in solved and e in known for p, (_w, e) in zip(group, c, strict=True))
             and all(of_kind(kind.get(p), w) for p, (w, _e) in zip(group, c, strict=True))
-        ]
+            and not (declared and len(group) > 1 and all(isinstance(-sign * e, sympy.Symbol) for _w, e in c))
+        ]  # with a positive way said, names met together are not all read the other way (its reverse)
         if not options:
             continue
         tried = [{**mapping, **{p: c[1] for p, c in zip(group, combo, strict=True)}} for combo in options]

@@ -26,6 +26,7 @@ from dataclasses import replace
 
 import sympy
 
+from derive.checking.beforeangles import described
 from derive.checking.cancelledmass import cancelled_mass
 from derive.checking.context import Context
 from derive.checking.naming import moving_together
@@ -407,4 +408,4 @@ def _shown(e: sympy.Expr) -> str:
         )
     if is_reduced_mass(e):
         return "the reduced mass m_A m_B/(m_A + m_B)"
-    return e.name if isinstance(e, sympy.Symbol) else words_for(e) or "the common velocity"
+    return e.name if isinstance(e, sympy.Symbol) else words_for(e) or described(e) or "the common velocity"

@@ -11,8 +11,9 @@ import re
 import sympy
 
 from derive.checking.anglenames import velocities_in_words
+from derive.checking.beforeangles import before_angles
 from derive.checking.context import Context
-from derive.checking.statementbodies import at_rest_before, said_by_letter, statement_bodies
+from derive.checking.statementbodies import said_by_letter, statement_bodies
 from derive.checking.towardwords import toward
 
 
@@ -377,21 +378,20 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     plain = velocities_in_words(re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line))  # the angle v_A makes with
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
+    given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
     found = [(m[1], m[2], m[3]) for m in _ANGLE_IS.finditer(plain)]
     found += [(m[2], m[1], m[3]) for m in _ANGLE_MAKES.finditer(plain) if m[2]]
     found += [(m[1], m[2] or m[5], m[3] or m[4]) for m in _ANGLE_BETWEEN.finditer(plain)]
     if not _THEN.search(plain):  # "θ is the angle between A's velocity and the l.o.c.": a moving A's, as it comes in
-        found = [f for f in found if not (_body(f[1], ctx) and not at_rest_before(ctx, _body(f[1], ctx)))]
+        out, found = before_angles(ctx, found, given, (lambda b: _body(b, ctx), _GREEK_LETTERS, plain))
     found += [(m[2], m[1], m[3]) for m in _ANGLE_LEAVES.finditer(plain)]
     found += [(m[1], m[2] or "", "deflection") for m in _DEFLECTION.finditer(plain)]
     found += [(m[2], m[1], "deflection") for m in _DEFLECTED.finditer(plain)]
-    given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
     for name, body, line_of in found:
         b = _leaving(_body(body, ctx), ctx) if line_of != "deflection" else _body(body, ctx) or "A"
         key = f"delta_{b}" if line_of == "deflection" else f"{'beta' if line_of[0] in 'lL' else 'theta'}_{b}2"
         if b and key in names:
-            name = name.lstrip("\\")
-            name = _GREEK_LETTERS.get(name, name)
+            name = _GREEK_LETTERS.get(name.lstrip("\\"), name.lstrip("\\"))
             if name not in given:
                 out.setdefault(name, -names[key][0] if _negative(ctx, key) else names[key][0])
     return out
