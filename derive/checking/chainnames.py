@@ -167,10 +167,10 @@ def _velocity(ctx: Context, stage, body: str, after: bool) -> sympy.Expr | None:
     labels = part.problem.labels
     if body not in labels:
         return None
-    return _result(ctx, stage, f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}")
+    return stage_result(ctx, stage, f"v_{'AB'[labels.index(body)]}{'2' if after else '1'}")
 
 
-def _result(ctx: Context, stage, key: str) -> sympy.Expr | None:
+def stage_result(ctx: Context, stage, key: str) -> sympy.Expr | None:
     """The chain's expression of an impact stage's result or given ``key`` (``v_A2``, ``T_1``)."""
     part = stage.part
     chain = {str(s): s for s in ctx.solution.values}
@@ -218,9 +218,9 @@ def energies(ctx: Context, read: list) -> Declared:
     out: Declared = {}
     for p in used if len(impacts) == 1 else ():
         key = _energy_key(p.name[len(PREFIX) :])
-        x = _chain_energy(ctx, key) or _result(ctx, impacts[0], key) if key else None
+        x = _chain_energy(ctx, key) or stage_result(ctx, impacts[0], key) if key else None
         if x is not None:
-            out[p] = _plain(x)
+            out[p] = plain(x)
     return out
 
 
@@ -252,41 +252,9 @@ def _chain_energy(ctx: Context, key: str) -> sympy.Symbol | None:
 
 
 #: The A-level habit (u before, v after; a prime after) in a chain's one impact.
-_VELOCITIES = {
-    **{f"v_{b}{w}": f"v_{b}2" for b in "AB" for w in ("", "2", "p", "f")},
-    **{f"{u}_{b}{w}": f"v_{b}1" for b in "AB" for u, w in (("u", ""), ("v", "1"), ("v", "i"))},
-}
-
-
-def velocities(ctx: Context, read: list, said: Declared, holds: Callable) -> Declared:
-    """The velocities before and after the impact named by the habit (``vA``, ``vB`` after,
-    ``u_A`` before, ``v_A'``) where the chain has one impact between two moving bodies (another, at
-    a wall, may follow) and does not use those names: the impact's own, where a relation in them then holds (``15(19.66) = 15 vA + 10 vB``); else
-    they are left to be inferred (a ``vA`` for A's speed down the ramp, before the impact).
-    ``holds(sides, exprs, subs)``."""
-    impacts = [st for st in getattr(ctx.solution, "stages", ()) if getattr(st, "part", None) is not None]
-    clash = any(s.name in _VELOCITIES for _r, _sides, exprs in read for x in exprs for s in x.free_symbols)
-    if len(impacts) > 1:  # A and B collide, then B strikes the wall: the moving bodies' impact, where no name is the chain's
-        impacts = [st for st in impacts if not st.part.problem.fixed_B and not clash]
-    if len(impacts) != 1:
-        return {}
-    used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
-    meant = {
-        p: _result(ctx, impacts[0], _VELOCITIES[p.name[1:]]) for p in used - set(said) if p.name[1:] in _VELOCITIES
-    }
-    meant = {p: _plain(x) for p, x in meant.items() if x is not None}
-    if any(holds(sides, exprs, {**said, **meant}) for _r, sides, exprs in read if _has(exprs, meant)):
-        return meant
-    return {}
-
-
-def _plain(x: sympy.Expr) -> sympy.Expr:
+def plain(x: sympy.Expr) -> sympy.Expr:
     """``x`` in symbols of the chain's names with no assumptions, as the chain's lines are read."""
     return x.xreplace({s: sympy.Symbol(s.name) for s in x.free_symbols})
-
-
-def _has(exprs: list[sympy.Expr], names: dict) -> bool:
-    return any(s in names for x in exprs for s in x.free_symbols)
 
 
 def at(x: sympy.Expr, values: dict) -> sympy.Expr:

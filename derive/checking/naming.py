@@ -134,6 +134,11 @@ class Open(Mapping):
         return len(self.known)
 
 
+#: The readers of names declared in words, in order (the first reading of a name stands).
+_WORD_READERS = (in_words, terse_names, named_last, speed_along, centre_names, one_speed_after)
+_WORD_READERS += (minus_names, vector_angles)
+
+
 def name_like(name: str) -> bool:
     """A name, not a word: ``x``, ``V``, ``u_A``, ``u1``, ``v_G`` (not ``of``, ``the``, ``KE``)."""
     if name in GREEK or (name.partition("_")[0] in GREEK and re.fullmatch(r"[A-Za-z]+_[A-Za-z0-9]{1,6}", name)):
@@ -423,14 +428,8 @@ def declarations(
         m = _DECLARE.match(line)
         if m and m.group(2) in names:
             out[m.group(1)] = names[m.group(2)][0]
-        out.update({k: v for k, v in in_words(line, ctx).items() if k not in out})
-        out.update({k: v for k, v in terse_names(line, ctx).items() if k not in out})  # "x = A after (along l.o.c.)"
-        out.update({k: v for k, v in named_last(line, ctx).items() if k not in out})  # "let B's velocity be v"
-        out.update({k: v for k, v in speed_along(line, ctx).items() if k not in out})  # "U the speed along XY"
-        out.update({k: v for k, v in centre_names(line, ctx).items() if k not in out})  # "centre of mass … V = 0"
-        out.update({k: v for k, v in one_speed_after(line, ctx).items() if k not in out})  # "After (speed V)"
-        out.update({k: v for k, v in minus_names(line, ctx).items() if k not in out})  # "after it is -v"
-        out.update({k: v for k, v in vector_angles(line, ctx).items() if k not in out})  # "β: the angle v_A makes with"
+        for reader in _WORD_READERS:  # "x = velocity of A after", "let B's velocity be v", "after it is -v", …
+            out.update({k: v for k, v in reader(line, ctx).items() if k not in out})
         if not sign and not re.search(r"\bpositive\b|\+\s?ve\b", line, re.I):
             sign = axis_sense(line)  # "n along the line of impact (from A to B)": the student's positive
         if placed is not None and placed(line):
