@@ -30,7 +30,7 @@ from derive.checking.frames import (
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.grounding import grounded, grounded_frame, the_speed
 from derive.checking.massletters import masses_put_in
-from derive.checking.namegrammar import energy_change, grammar_names, said_read
+from derive.checking.namegrammar import energy_change, grammar_names, in_order, said_read
 from derive.checking.naming import (
     GREEK,
     PREFIX,
@@ -110,7 +110,10 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
-    used = {w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s)}
+    written = list(
+        dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))
+    )
+    used = set(written)
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
@@ -121,6 +124,7 @@ def read_lines(
         **reduced,  # mu in ½ mu (1 - e²) u²
         **declared,
     }  # p_i: no impulse
+    meanings = in_order(meanings, written)  # as the names are first written: the same report every run
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     own_angles(ctx, raw, meanings)

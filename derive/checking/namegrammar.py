@@ -409,3 +409,10 @@ def _shown(e: sympy.Expr) -> str:
     if is_reduced_mass(e):
         return "the reduced mass m_A m_B/(m_A + m_B)"
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or described(e) or "the common velocity"
+
+
+def in_order(meanings: dict, written: list[str]) -> dict:
+    """``meanings`` in the order its names are first written (then by name): the readers find them
+    in sets, whose order changes from one run to the next with Python's string hashing."""
+    first = {w: i for i, w in enumerate(written)}
+    return dict(sorted(meanings.items(), key=lambda kv: (first.get(kv[0], len(first)), kv[0])))
