@@ -14,32 +14,10 @@ Values worked by hand:
 from __future__ import annotations
 
 import pytest
-from support.checked import worst_lines
+from support.checked import wall_30_lines, worst_lines
 
-import derive
 from derive.mathtext.reader import read_relations
 from derive.mathtext.subscripted import axis_subscripts
-
-WALL_30 = """title = "A ball strikes a smooth wall at 30 degrees"
-kind = "oblique"
-statement = "A ball of mass 0.5 kg hits a smooth wall at 10 m/s at 30 degrees to the wall; e = 0.5."
-question = "Find the velocity after the impact."
-
-[given]
-m_A = "0.5 kg"
-e = 0.5
-v_A1 = "10 m/s"
-alpha = "30 deg"
-
-[A]
-angle = "alpha"
-from = "+t"
-toward = "+n"
-
-[B]
-fixed = true
-name = "wall"
-"""
 
 
 @pytest.mark.parametrize(
@@ -63,13 +41,6 @@ def test_a_sign_between_names_is_no_subscript() -> None:
     assert [r.sides for r in read_relations("⊥ = 3.05")] == [("perpendicular", "3.05")]
 
 
-def _wall(tmp_path, work: str) -> list[str]:
-    path = tmp_path / "wall.toml"
-    path.write_text(WALL_30)
-    sol = derive.solve(derive.load(str(path)))
-    return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]
-
-
 def test_components_at_a_wall_in_latex_signs(tmp_path) -> None:
     work = (
         "Before: $u_\\parallel = 10\\cos 30^\\circ = 8.660$\n"
@@ -77,12 +48,12 @@ def test_components_at_a_wall_in_latex_signs(tmp_path) -> None:
         "After: $v_\\parallel = 8.660$\n"
         "After: $v_\\perp = 0.5 \\times 5 = 2.5$\n"
     )
-    assert _wall(tmp_path, work) == ["correct"] * 4
+    assert wall_30_lines(tmp_path, work) == ["correct"] * 4
 
 
 def test_components_at_a_wall_with_e_on_the_wrong_one(tmp_path) -> None:
     work = "Before: $u_\\perp = 10\\sin 30^\\circ = 5$\nAfter: $v_\\parallel = 0.5(10\\cos 30^\\circ) = 4.330$\n"
-    assert _wall(tmp_path, work) == ["correct", "wrong"]
+    assert wall_30_lines(tmp_path, work) == ["correct", "wrong"]
 
 
 def test_phone_typed_components_of_two_bodies() -> None:

@@ -6,6 +6,7 @@ comments), never from derive's output."""
 from __future__ import annotations
 
 import pytest
+from support.checked import WALL_30, solved_text
 
 import derive
 
@@ -131,36 +132,12 @@ def test_a_given_copied_with_a_digit_changed_is_no_rounding(tmp_path) -> None:
     assert right.items[0].status == "correct"
 
 
-WALL_30 = """title = "A ball strikes a smooth wall at 30 degrees"
-kind = "oblique"
-statement = "A ball of mass 0.5 kg hits a smooth wall at 10 m/s at 30 degrees to the wall; e = 0.5."
-question = "Find the velocity after the impact."
-
-[given]
-m_A = "0.5 kg"
-e = 0.5
-v_A1 = "10 m/s"
-alpha = "30 deg"
-
-[A]
-angle = "alpha"
-from = "+t"
-toward = "+n"
-
-[B]
-fixed = true
-name = "wall"
-"""
-
-
 @pytest.mark.parametrize(
     ("par", "perp"), [("v_par", "v_perp"), ("v_parallel", "v_perpendicular"), ("v_along", "v_across")]
 )
 def test_components_after_named_parallel_and_perpendicular_to_a_wall(tmp_path, par: str, perp: str) -> None:
     # along the wall 10 cos 30 = 8.660 is kept; into it 10 sin 30 = 5 becomes 0.5 x 5 = 2.5 away
-    path = tmp_path / "wall.toml"
-    path.write_text(WALL_30)
-    sol = derive.solve(derive.load(str(path)))
+    sol = solved_text(tmp_path, "wall.toml", WALL_30)
 
     def judged(work: str) -> list[str]:
         return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]

@@ -49,3 +49,32 @@ def statuses_of(solution: derive.Solution, work: str) -> dict[int, str]:
     """line number -> status, on a solution already made (a test's own problem)."""
     report = derive.check(solution, derivation=work)
     return {int(i.name): i.status for i in report.items if i.kind == "line" and i.name.isdigit()}
+
+
+#: A ball on a smooth wall at 30° to it (0.5 kg at 10 m/s, e = 0.5): a test's own oblique wall problem.
+WALL_30 = """title = "A ball strikes a smooth wall at 30 degrees"
+kind = "oblique"
+statement = "A ball of mass 0.5 kg hits a smooth wall at 10 m/s at 30 degrees to the wall; e = 0.5."
+question = "Find the velocity after the impact."
+
+[given]
+m_A = "0.5 kg"
+e = 0.5
+v_A1 = "10 m/s"
+alpha = "30 deg"
+
+[A]
+angle = "alpha"
+from = "+t"
+toward = "+n"
+
+[B]
+fixed = true
+name = "wall"
+"""
+
+
+def wall_30_lines(folder: Path, work: str) -> list[str]:
+    """The statuses of ``work``'s lines, in order, against :data:`WALL_30` (written into ``folder``)."""
+    sol = solved_text(folder, "wall.toml", WALL_30)
+    return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]
