@@ -7,7 +7,7 @@ By hand: a puck at 4 m/s, 30° to a smooth barrier, e = 0.5: along the barrier 4
 
 from __future__ import annotations
 
-import derive
+from support.checked import text_lines
 
 PUCK = """title = "A puck bounces off a barrier"
 kind = "oblique"
@@ -31,17 +31,10 @@ name = "barrier"
 """
 
 
-def _judged(tmp_path, work: str) -> list[str]:
-    path = tmp_path / "puck.toml"
-    path.write_text(PUCK)
-    sol = derive.solve(derive.load(str(path)))
-    return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]
-
-
 def test_the_speed_along_the_path_after_is_judged(tmp_path) -> None:
-    assert _judged(tmp_path, "Let the speed along YZ be $W$.\n$W^2 = 3.464^2 + 1^2 = 13$\n") == ["correct"]
-    assert _judged(tmp_path, "W = speed along YZ\nW^2 = 3.464^2 + 2^2 = 16\n")[-1] == "wrong"
+    assert text_lines(tmp_path, PUCK, "Let the speed along YZ be $W$.\n$W^2 = 3.464^2 + 1^2 = 13$\n") == ["correct"]
+    assert text_lines(tmp_path, PUCK, "W = speed along YZ\nW^2 = 3.464^2 + 2^2 = 16\n")[-1] == "wrong"
 
 
 def test_the_path_before_is_not_the_speed_after(tmp_path) -> None:
-    assert _judged(tmp_path, "Let the speed along XY be W.\nW = 3.606\n")[-1] != "correct"
+    assert text_lines(tmp_path, PUCK, "Let the speed along XY be W.\nW = 3.606\n")[-1] != "correct"

@@ -74,7 +74,13 @@ name = "wall"
 """
 
 
-def wall_30_lines(folder: Path, work: str) -> list[str]:
-    """The statuses of ``work``'s lines, in order, against :data:`WALL_30` (written into ``folder``)."""
-    sol = solved_text(folder, "wall.toml", WALL_30)
+def text_lines(folder: Path, toml: str, work: str) -> list[str]:
+    """The statuses of ``work``'s lines, in order, against a test's own problem ``toml`` (written
+    into ``folder``)."""
+    sol = solved_text(folder, "problem.toml", toml)
     return [i.status for i in derive.check(sol, derivation=work).items if i.kind == "line"]
+
+
+def wall_30_lines(folder: Path, work: str) -> list[str]:
+    """:func:`text_lines` against :data:`WALL_30`."""
+    return text_lines(folder, WALL_30, work)
