@@ -837,13 +837,12 @@ def test_a_wide_gap_before_a_note_is_read_in_bounded_time() -> None:
     assert time.process_time() - start < 5
 
 
-def test_many_goals_and_text_pieces_are_read_in_bounded_time() -> None:
-    import time
+def test_many_goals_and_text_pieces_are_read_in_time_growing_linearly() -> None:
+    # against 400 of each measured in the same run (an absolute limit fails on a busy machine)
+    from support.growth import grows_about_linearly
 
-    start = time.process_time()
-    sides("show that " * 4000 + "x = 1")
-    sides("$x = " + "\\text{a}" * 4000 + "$")
-    assert time.process_time() - start < 5
+    grows_about_linearly(lambda n: sides("show that " * n + "x = 1"), 400, 4000)
+    grows_about_linearly(lambda n: sides("$x = " + "\\text{a}" * n + "$"), 400, 4000)
 
 
 def test_a_long_relation_in_inline_maths_and_a_run_of_dollars_are_read_in_bounded_time() -> None:

@@ -51,7 +51,7 @@ _INEQUALITY = r"(?:[<>]=?|[≤≥⩽⩾]|=<|=>)"
 #: A condition in brackets at the end of a relation (``(e > 0)``, ``(since 0 <= e <= 1)``, ``(v > 0,
 #: so to the right)``): an inequality, and no ``=`` but an inequality's.
 _CONDITION = re.compile(
-    rf"\s*\(\s*(?:(?:since|as|because|for|with|taking|and|so|need|must\s+have)\s+)?"
+    rf"(?<!\s)\s*\(\s*(?:(?:since|as|because|for|with|taking|and|so|need|must\s+have)\s+)?"
     rf"(?=[^()]*{_INEQUALITY})(?:[^()=<>≤≥⩽⩾]|{_INEQUALITY})*\)\s*[.!]?\s*$",
     re.I,
 )
@@ -80,8 +80,9 @@ def without_condition(plain: str) -> str:
 
 #: A sign convention in brackets among a quantity's words (``impulse from ground (up +ve) = …``,
 #: ``momentum (taking left as positive) = …``, ``J (+ve upwards) = …``): said for the line, no part
-#: of the name.
-_CONVENTION = re.compile(r"\s*\(\s*(?=[^()=]*(?:\+\s?ve\b|\bpositive\b))[^()=]{1,60}\)(?=\s*$)", re.I)
+#: of the name. (Each pattern's leading gap starts after a character that is not a gap: searched
+#: from inside a run of thousands of spaces, it scanned the rest of the run from every one.)
+_CONVENTION = re.compile(r"(?<!\s)\s*\(\s*(?=[^()=]*(?:\+\s?ve\b|\bpositive\b))[^()=]{1,60}\)(?=\s*$)", re.I)
 
 
 def without_convention(plain: str) -> str:
