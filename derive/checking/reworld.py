@@ -92,7 +92,7 @@ def moved(trace: Trace, pairs: list[Pair], written_wrong: bool = False) -> bool:
     cf = coefficients(F.xreplace(trace.pts[0]), trace.U)
     for k in trace.equations:
         cg = coefficients(trace.equations[k].xreplace(trace.pts[0]), trace.U)
-        if k == j or not cf or not cg or alike(cf, cg) < 0.5:
+        if k == j or not cf or not cg or (alike(cf, cg) < 0.5 and not _eliminated_from(cf, cg, trace)):
             continue  # only an equation much like it in its unknowns (the momentum or the impact rule it was worked from)
         equations = {**trace.equations, j: before, k: F}
         world = solve_world(equations, trace.U, trace.pts, trace.world)
@@ -103,6 +103,21 @@ def moved(trace: Trace, pairs: list[Pair], written_wrong: bool = False) -> bool:
         trace.replaced[-1] = (n, k)
         return True
     return False
+
+
+def _linear(c: dict) -> set[int]:
+    """The unknowns (by index) a coefficient vector has a linear term in."""
+    return {m.index(1) for m, x in c.items() if sum(m) == 1 and abs(x) > 1e-12}
+
+
+def _eliminated_from(cf: dict, cg: dict, trace: Trace) -> bool:
+    """Whether a slip in fewer unknowns than the impact's equations hold (``12 v_A = 46`` after
+    putting ``v_B = v_A + 4`` into the momentum) may have been worked from the equation of
+    ``cg``: the slip has an unknown of it, and the one eliminated is in it too. Worked from the
+    two at once, it stands for either: the student finds the other velocity from whichever."""
+    mine, theirs = _linear(cf), _linear(cg)
+    every = set().union(*(_linear(coefficients(x.xreplace(trace.pts[0]), trace.U) or {}) for x in trace.equations.values()))
+    return bool(mine & theirs) and bool((theirs - mine) & (every - mine))
 
 
 def nearer_the_slip(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
