@@ -4,9 +4,10 @@ from __future__ import annotations
 
 import time
 
+from support.growth import grows_about_linearly
+
 import derive
 from derive.mathtext.notes import without_note
-from support.growth import grows_about_linearly
 
 SPHERES = "aqa-m3-2009-june-q6-m-at-5u-catches-7m-at-u"
 

@@ -6,7 +6,6 @@ and a value that follows from neither is a further slip."""
 from __future__ import annotations
 
 import pytest
-
 from support.checked import lines
 
 # CIE 9231 2019 June Q3: 2m at 2u meets 4m at u head-on; x, y the velocities after, in A's way.

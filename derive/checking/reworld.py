@@ -116,7 +116,9 @@ def _eliminated_from(cf: dict, cg: dict, trace: Trace) -> bool:
     ``cg``: the slip has an unknown of it, and the one eliminated is in it too. Worked from the
     two at once, it stands for either: the student finds the other velocity from whichever."""
     mine, theirs = _linear(cf), _linear(cg)
-    every = set().union(*(_linear(coefficients(x.xreplace(trace.pts[0]), trace.U) or {}) for x in trace.equations.values()))
+    every = set().union(
+        *(_linear(coefficients(x.xreplace(trace.pts[0]), trace.U) or {}) for x in trace.equations.values())
+    )
     return bool(mine & theirs) and bool((theirs - mine) & (every - mine))
 
 
