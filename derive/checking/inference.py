@@ -18,6 +18,7 @@ from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
 from derive.checking.degreemode import in_degrees
+from derive.checking.energyinstants import energy_at_labels
 from derive.checking.frames import (
     axis_names,
     declared_axes,
@@ -85,7 +86,7 @@ def read_lines(
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
     axes = declared_axes(text) if ctx.problem.oblique else {}
-    every = energy_change(directed(read_relations(text, axes, not ctx.problem.oblique), text))
+    every = energy_change(energy_at_labels(directed(read_relations(text, axes, not ctx.problem.oblique), text)))
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
