@@ -24,6 +24,7 @@ from derive.checking import (
     letterslips,
     misread,
     mistakes,
+    recopied,
     reworld,
     rounding,
     sidepairs,
@@ -51,8 +52,7 @@ from derive.mathtext.notation import student
 
 TRUE = "substituting the correct values"
 SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from the one before
-#: A line whose rule holds but whose working does not come to what it claims.
-WORKING = termslips.WORKING
+WORKING = termslips.WORKING  # a line whose rule holds but whose working does not come to what it claims
 COPIED = slipnames.COPIED
 #: The slip is in a result worked from the velocities, not in the equations: none is replaced.
 KEPT = 0
@@ -303,8 +303,8 @@ class Trace(Carrying):
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
         if not diags:
-            if workedslips.energy_masses_swapped(self, bad, lambda p: self.holds([p], self.world or self.truth)):
-                return (), KEPT, workedslips.SWAPPED, "masses_swapped"
+            if (first := recopied.named_first(self, line, bad)) is not None:  # masses swapped, a number copied
+                return (), *first
             early = self._rounded_early(line, bad)
             if early:
                 return diags, j, early, ""
