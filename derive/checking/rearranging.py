@@ -15,7 +15,7 @@ import re
 
 import sympy
 
-from derive.checking.relations import proportional
+from derive.checking.relations import coefficients, functions_as_letters, proportional
 from derive.checking.worlds import Pair
 
 #: The factors an unknown's term is taken with wrongly: its ½ dropped, or doubled.
@@ -31,11 +31,30 @@ def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     if undivided(bad, held, U, pt) or divided_wrongly(bad, held, U, pt):
         return "arithmetic"
     for variant in _variants(held, bad, set(U)):
-        if proportional(bad.difference, variant, U, [pt], tol):
+        if proportional(bad.difference, variant, U, [pt], tol) and termwise(bad.difference, variant, U, pt, tol):
             return "algebra"
     if _letter_lost(bad.difference, held.difference, U):
         return "algebra"
     return ""
+
+
+def termwise(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict, tol: float) -> bool:
+    """Whether ``F`` is a number times ``G`` term by term, each term within ``tol`` of its own size
+    (:func:`proportional` measures every term against the largest: ``0.0078 = 0.25 m`` is not
+    ``0.01 = 0.25 m``, the 0.002 added with its sign lost, though 0.0022 is small beside 0.25; a
+    product of numbers worked wrongly, ``0.0400 × 0.050 = 0.00020``, is that, arithmetic)."""
+    F, G, U = functions_as_letters(F, G, U)
+    cf, cg = coefficients(F.xreplace(pt), U), coefficients(G.xreplace(pt), U)
+    if not cf or not cg:
+        return True  # not a polynomial in the unknowns: as proportional found it
+    key = max(cg, key=lambda m: abs(cg[m]))
+    if not cf.get(key):
+        return False
+    c = cf[key] / cg[key]
+    return all(
+        abs(cf.get(m, 0) - c * cg.get(m, 0)) <= max(tol, 1e-9) * max(abs(cf.get(m, 0)), abs(c * cg.get(m, 0)))
+        for m in set(cf) | set(cg)
+    )
 
 
 def undivided(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
