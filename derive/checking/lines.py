@@ -18,6 +18,7 @@ import sympy
 from derive.checking import (
     carried,
     cofunctions,
+    eliminated,
     firstwritten,
     freshslips,
     labelled,
@@ -54,8 +55,7 @@ TRUE = "substituting the correct values"
 SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from the one before
 WORKING = termslips.WORKING  # a line whose rule holds but whose working does not come to what it claims
 COPIED = slipnames.COPIED
-#: The slip is in a result worked from the velocities, not in the equations: none is replaced.
-KEPT = 0
+KEPT = 0  # the slip is in a result worked from the velocities, not in the equations: none is replaced
 
 
 MAX_LINES = 200  # the most relations of one derivation that are judged (the rest are not checked)
@@ -325,7 +325,7 @@ class Trace(Carrying):
             found = None if name else carried.unnamed(self, line, bad, world, j)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
-            return diags, j, SOLVING.get(name, ". No common mistake reproduces it."), name
+            return diags, j, *eliminated.named(self, bad, name)  # or the step from two relations combined
         said = (" and " if together else " / ").join(mistakes.phrase(d.mistake) or d.title for d in diags)
         if j is None or answer is not None:
             return diags, j, f": it {said}.", ""
