@@ -316,3 +316,8 @@ def total_copied(trace: Trace, line: Read, bad: Pair) -> str:
         if any(x is not None and trace.holds([replace(bad, right=x, raw=(bad.raw[0], x))], world) for x in put):
             return f": a number is copied wrongly into it: {shown(v)}, not {shown(c)}."
     return ""
+
+
+#: For the modules that read a line's numbers as this one does (recopied.py): a side that is one
+#: number, a side of numbers' value, a pair of the line's first side against a number.
+bare, side_number, against = _bare, _number, _against

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking.misread import _against, _bare, _number
+from derive.checking.misread import against, bare, side_number
 from derive.checking.workedslips import SWAPPED, energy_masses_swapped
 from derive.checking.worlds import Pair
 
@@ -68,8 +68,8 @@ def _side_put_back(trace: Trace, line: Read, bad: Pair, token: str, e: str, held
     if first is None or bad.raw is None:
         return False
     at = re.compile(rf"(?<![\w.]){re.escape(token)}(?![\w.])")
-    put = [_number(at.sub(e, side)) for side in line.sides[1:] if at.search(side)]
-    return any(x is not None and held(_against(trace, bad, first, x)) for x in put)
+    put = [side_number(at.sub(e, side)) for side in line.sides[1:] if at.search(side)]
+    return any(x is not None and held(against(trace, bad, first, x)) for x in put)
 
 
 def recopied(trace: Trace, typed: list[str], line: Read, bad: Pair, held: Callable) -> str:
@@ -81,7 +81,7 @@ def recopied(trace: Trace, typed: list[str], line: Read, bad: Pair, held: Callab
         return ""
     earlier = list(dict.fromkeys(t for row in typed[: line.number - 1] for t in _DECIMAL.findall(row)))[-MAX_EARLIER:]
     data = set(trace.ctx.data)
-    for token in dict.fromkeys(t for side in line.sides if not _bare(side) for t in _DECIMAL.findall(side)):
+    for token in dict.fromkeys(t for side in line.sides if not bare(side) for t in _DECIMAL.findall(side)):
         if token in earlier or sympy.Rational(token) in data:
             continue
         for e in reversed(earlier):  # the nearest line first
