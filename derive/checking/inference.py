@@ -77,6 +77,7 @@ class Read:
     defines: str = ""
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
     direction: int = 0  # its last number's direction in words (:attr:`~.reader.Relation.direction`)
+    pending: tuple[sympy.Expr, ...] = ()  # not read for names not placed: its sides with them (:mod:`.byvalue`)
 
 
 def read_lines(
@@ -444,6 +445,6 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
     r, exprs = (replace(r, sides=r.sides[k:], exprs=r.exprs[k:]), exprs[k:]) if k else (r, exprs)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
-        return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
+        return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}", pending=exprs)
     own = any(_placeholders(e) for e in r.exprs)
     return replace(r, exprs=exprs, own_names=own)
