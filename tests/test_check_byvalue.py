@@ -60,3 +60,14 @@ def test_a_name_no_quantity_has_the_value_of_stays_not_read() -> None:
     work = "0.3(3) + 0.2(-2) = 0.7 z\n"
     got = worst_lines("aqa-m3-2007-spheres-approach-head-on", work)
     assert got[1][0] == "not read"
+
+
+def test_a_name_inside_sin_or_cos_is_read_as_the_angle_given() -> None:
+    # psi = 30 deg between A's path and the line of centres: sin 30° = 0.5, cos 30° = 0.866;
+    # tan 30° = 0.577, not 0.5: q can only be the angle given, and the line is false in it.
+    work = """sin q = 0.5
+u cos q = 0.866u
+tan q = 0.5
+"""
+    got = worst_lines("edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg", work)
+    assert [got[n][0] for n in (1, 2, 3)] == ["correct", "correct", "wrong"]

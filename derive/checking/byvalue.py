@@ -98,6 +98,14 @@ def _in_trig(p: sympy.Symbol, exprs: list[sympy.Expr]) -> bool:
     return any(p in f.free_symbols for e in exprs for f in e.atoms(sympy.sin, sympy.cos, sympy.tan))
 
 
+def _symbol_like(name: str) -> bool:
+    """A name a student gives a quantity: a letter, with a subscript, digits, a second letter or primes
+    (``x``, ``v_A``, ``u1``, ``vB'``, ``KE``); not a word (``mass``) nor a body's own letter (``A``)."""
+    if name in ("A", "B"):
+        return False
+    return re.fullmatch(r"[A-Za-z](?:_\{?\w{1,4}\}?|\d{1,2}|[A-Za-z]\d?)?'*", name) is not None
+
+
 def _body(name: str) -> str:
     """The body a name says it is of (``v_A``, ``vB``, ``u_{A}``), or "" where it says none."""
     m = re.fullmatch(r"[A-Za-z]+_?\{?([AB])\}?'*", name)
@@ -208,14 +216,16 @@ def _singles(words: list[str]) -> int:
 
 
 def _rank(combo: tuple, options: list) -> tuple:
-    """The natural reading first: names met together in order (A's, then B's), of the same instant;
-    a quantity its own way before its reverse; the earlier options (the quantities after) first."""
+    """The natural reading first: a quantity its own way before its reverse; names met together in
+    order (A's, then B's), of the same instant; the quantities after before those before; then the
+    earlier options."""
     words = [options[i][0] for i in combo]
     reversed_ = sum(w.startswith("-") for w in words)
     bodies = [("A" if "_A" in w else "B" if "_B" in w else "") for w in words]
     out_of_order = sum(1 for a, b in itertools.combinations(bodies, 2) if a == "B" and b == "A")
     times = {re.sub(r"[^0-9]", "", w.split("_")[-1])[:1] for w in words if "_" in w}
-    return (reversed_, out_of_order, len(times), sum(combo))
+    before = sum(1 for w in words if re.search(r"1[nt]?$", w))  # a name solved for is after, not before
+    return (reversed_, out_of_order, len(times), before, sum(combo))
 
 
 def _idle(trace: Any, exprs: list, p: sympy.Symbol, others: dict, values: list[dict]) -> bool:
@@ -251,11 +261,13 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     marks = sorted(set().union(*(_placeholders(e) for e in pending)), key=str)
     fixed = {p: memory[_key(p, pending)][1] for p in marks if _key(p, pending) in memory}
     free = [p for p in marks if p not in fixed]
+    if not all(_symbol_like(p.name[len(PREFIX) :]) for p in free):
+        return None  # "mass A = 0.8": words and a body's letter, not names of quantities
     said = [_said(p, memory[_key(p, pending)], line.number) for p in marks if p in fixed]
     if not free:
         return fixed, said
     exprs = [e.xreplace(fixed) for e in pending]
-    if len(free) > MAX_NAMES or len(exprs) < 2:
+    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not _linear(exprs, free)):
         return None
     options = _options(trace.ctx, trace.truth[0])
     allowed = [[i for i, o in enumerate(options) if o[2] == _kind(p, exprs)] for p in free]
@@ -265,10 +277,28 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
         if math.prod(sum(nums[i] is not None for i in a) for a in allowed) > MAX_READINGS:
             return None
         fits = [c for c in _fits(trace, exprs, free, allowed, (options, nums), values) if _natural(c, options)]
+        tier = min((_rank(c, options)[:4] for c in fits), default=())
+        if len({frozenset(_quantity(options, i) for i in c) for c in fits if _rank(c, options)[:4] == tier}) > 1:
+            return None  # the values fit two sets of quantities as naturally: no reading is the student's
         if fits:
             best = min(fits, key=lambda c: _rank(c, options))
             return _placed(trace, (line, exprs, free, best), options, (fixed, said), values)
     return None if ahead else _partial(trace, (line, exprs, free), options, (fixed, said))
+
+
+def _linear(exprs: list[sympy.Expr], free: list[sympy.Symbol]) -> bool:
+    """Whether every side is of the first degree in the names together (momentum, restitution:
+    ``2a + b``, ``a - b``); names multiplied together (``a b + c``) are read by value only alone."""
+    try:
+        return all(sympy.Poly(sympy.expand(e), *free).total_degree() <= 1 for e in exprs)
+    except sympy.PolynomialError:
+        return False
+
+
+def _quantity(options: list, i: int) -> sympy.Expr:
+    """The quantity of option ``i`` whichever way it is taken (v_A2n for -v_A2n)."""
+    c = options[i][1]
+    return -c if c.could_extract_minus_sign() else c
 
 
 def _natural(combo: tuple, options: list) -> bool:
@@ -320,17 +350,18 @@ def _partial(trace: Any, found: tuple, options: list, known: tuple) -> tuple[dic
     line, exprs, free = found
     fixed, said = known
     allowed = [_partly(p, _kind(p, exprs), options) for p in free]
-    if not all(allowed) or math.prod(len(a) for a in allowed) > MAX_READINGS or len(exprs) < 3:
+    if not all(allowed) or math.prod(len(a) for a in allowed) > MAX_READINGS:
         return None
     nums = _distinct(trace, options, trace.truth)
-    funcs = _sides(trace, exprs[1:], free, trace.truth)
-    if funcs is None:
-        return None
     combos = _combos([[i for i in a if nums[i] is not None] for a in allowed], options)
-    offs = _offs(funcs, combos, nums)
-    if not combos or min(offs) > LOOSE:
-        return None
-    best = combos[offs.index(min(offs))]
+    if len(combos) == 1:  # the one reading the names allow ("tan q = 0.5", q the one angle given)
+        best = combos[0]
+    else:
+        funcs = _sides(trace, exprs[1:], free, trace.truth) if len(exprs) >= 3 else None
+        offs = _offs(funcs, combos, nums) if funcs is not None else []
+        if not offs or min(offs) > LOOSE:
+            return None
+        best = combos[offs.index(min(offs))]
     memory = trace.__dict__["by_value"]
     mapping = {**fixed, **{p: options[i][1] for p, i in zip(free, best, strict=True)}}
     for p, i in zip(free, best, strict=True):
