@@ -71,3 +71,15 @@ tan q = 0.5
 """
     got = worst_lines("edexcel-m4-undated-q3-deflected-through-theta-line-at-30deg", work)
     assert [got[n][0] for n in (1, 2, 3)] == ["correct", "correct", "wrong"]
+
+
+def test_givens_typed_together_on_the_left_are_their_product() -> None:
+    # 2m at 2u meets m at -u: 3u = 2x + y and y - x = e(2u + u) = 3eu, so eu = (y - x)/3 holds
+    # (x = u(1 - e), y = u(1 + 2e)); "eu" on the left is e times u, not a word nor a name of the
+    # student's own; (y + x)/3 = u(2 + e)/3 is not eu.
+    work = """3u = 2x + y
+eu = (y - x)/3
+ue = (y + x)/3
+"""
+    got = worst_lines("edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u", work)
+    assert [got[n][0] for n in (1, 2, 3)] == ["correct", "correct", "wrong"]
