@@ -269,6 +269,8 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     exprs = [e.xreplace(fixed) for e in pending]
     if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not _linear(exprs, free)):
         return None
+    if all(e in free or not e.free_symbols for e in exprs):
+        return None  # "k = 4": a value alone says nothing of what it is the value of
     options = _options(trace.ctx, trace.truth[0])
     allowed = [[i for i, o in enumerate(options) if o[2] == _kind(p, exprs)] for p in free]
     worlds = [trace.truth] + ([trace.world] if trace.world is not None and not ahead else [])
