@@ -33,6 +33,7 @@ import sympy
 
 from derive.checking.naming import PREFIX
 from derive.checking.valuenames import candidates, quantities
+from derive.checking.words import meaning
 from derive.problem.units import ANGLE, MASS, VELOCITY
 
 MAX_NAMES = 3  # the most unplaced names one line is read by value for
@@ -263,7 +264,7 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     free = [p for p in marks if p not in fixed]
     if not all(_symbol_like(p.name[len(PREFIX) :]) for p in free):
         return None  # "mass A = 0.8": words and a body's letter, not names of quantities
-    said = [_said(p, memory[_key(p, pending)], line.number) for p in marks if p in fixed]
+    said = [_said(p, memory[_key(p, pending)], line.number, trace.ctx.problem) for p in marks if p in fixed]
     if not free:
         return fixed, said
     exprs = [e.xreplace(fixed) for e in pending]
@@ -322,13 +323,20 @@ def _placed(trace: Any, found: tuple, options: list, known: tuple, values: list[
             said.append(f"it holds whatever {p.name[len(PREFIX) :]} stands for")
             continue
         memory[_key(p, exprs)] = (options[i][0], options[i][1], line.number)
-        said.append(_said(p, memory[_key(p, exprs)], line.number))
+        said.append(_said(p, memory[_key(p, exprs)], line.number, trace.ctx.problem))
     return mapping, said
 
 
-def _said(p: sympy.Symbol, kept: tuple, number: int) -> str:
+def _said(p: sympy.Symbol, kept: tuple, number: int, problem: Any) -> str:
     where = "" if kept[2] == number else f" in line {kept[2]}"
-    return f"{p.name[len(PREFIX) :]} read as {kept[0]}, by its value{where}"
+    return f"{p.name[len(PREFIX) :]} read as {_in_words(kept[0], problem)}, by its value{where}"
+
+
+def _in_words(word: str, problem: Any) -> str:
+    """An option's name as the report says it: ``v_A2n`` as A's velocity after the impact, along the
+    line of centres; the total mass as it is."""
+    said = meaning(word, problem)
+    return word if said == f"the given {word}" and word.startswith("the ") else said
 
 
 def _partly(p: sympy.Symbol, kind: str, options: list) -> list[int]:
@@ -368,5 +376,7 @@ def _partial(trace: Any, found: tuple, options: list, known: tuple) -> tuple[dic
     mapping = {**fixed, **{p: options[i][1] for p, i in zip(free, best, strict=True)}}
     for p, i in zip(free, best, strict=True):
         memory[_key(p, exprs)] = (options[i][0], options[i][1], line.number)
-        said.append(f"{p.name[len(PREFIX) :]} read as {options[i][0]}, the one its working holds for")
+        said.append(
+            f"{p.name[len(PREFIX) :]} read as {_in_words(options[i][0], trace.ctx.problem)}, the one its working holds for"
+        )
     return mapping, said
