@@ -34,15 +34,17 @@ def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
     """A derivation's ``lines`` judged by ``trace`` (:class:`~.lines.Trace`) while the budget
     lasts, an angle line as the angle its words name (:mod:`.angles`) first."""
     from derive.checking.angles import judge as angle
+    from derive.checking.byvalue import item, placed_ahead
     from derive.checking.givensigns import named
     from derive.checking.otherroots import not_marked
 
     typed = text.splitlines()
+    placed_ahead(trace, list(lines))  # names read by their values: the first line they hold in
     return judged(
         lambda line: (
             None
             if not_marked(trace, line, lines, typed)
-            else angle(trace, line, typed) or named(trace, line, trace.item(line))
+            else angle(trace, line, typed) or named(trace, line, item(trace, line))
         ),
         lines,
         lambda line, why: trace._item(line, "not checked", why, ""),

@@ -78,6 +78,7 @@ class Read:
     defines: str = ""
     own_names: bool = False  # it uses names of the student's own (x, u_A, v_G)
     direction: int = 0  # its last number's direction in words (:attr:`~.reader.Relation.direction`)
+    pending: tuple[sympy.Expr, ...] = ()  # not read for names not placed: its sides with them (:mod:`.byvalue`)
 
 
 def read_lines(
@@ -92,7 +93,7 @@ def read_lines(
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
-    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
+    known |= {w for w in lefts if not (len(w) > 1 and all(c in problem for c in w)) or w in own}  # mu, eu: m u, e u
     known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
     declared, sign = declarations(text, ctx, declared_axes if ctx.problem.oblique else None)
     reserved = set(problem) | set(declared)
@@ -445,6 +446,6 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
     r, exprs = (replace(r, sides=r.sides[k:], exprs=r.exprs[k:]), exprs[k:]) if k else (r, exprs)
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
-        return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}")
+        return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}", pending=exprs)
     own = any(_placeholders(e) for e in r.exprs)
     return replace(r, exprs=exprs, own_names=own)

@@ -323,7 +323,8 @@ def candidates(ctx: Context, truth: dict, dims: set[Dim] = frozenset()) -> list[
     ]
     table = quantities(ctx)
     out += [c for d in dims & {MASS, ENERGY} for c in table[d] if c not in out]
-    return out
+    zero = {g.symbol for g in ctx.problem.givens if g.value is not None and g.value == 0}
+    return [(w, c) for w, c in out if c not in zero]  # B at rest: 0, which any product of it equals
 
 
 def _after_less_before(side: str) -> bool:

@@ -122,15 +122,18 @@ def typed_names(text: str) -> str:
 
 
 #: A unit after a number inside a side, before an operator or a closing bracket (``352 J − 288 J``,
-#: ``(12 m/s − 4 m/s)``).
+#: ``(12 m/s − 4 m/s)``, a mass's ``(20 Mg) v_A2``, a momentum's ``7200 kg·m/s + 6 m_B``; not g nor t,
+#: which are letters too: ``(2 g)``).
 _UNIT_MID = re.compile(
-    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?s|kg\s*m\s*/\s*s)(?=\s*(?:[-+−×*)]|$)(?!\s*$))"
+    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?[·.*]?\s?s|kg\s*[·.*]?\s*m\s*/\s*s|kg|(Mg|tonnes?))"
+    r"(?=\s*(?:[-+−×*](?!\s*$)|\)))"  # a side's last factor too, in brackets: (110 kg)(-0.120 m/s)
 )
 
 
 def units_inside(text: str) -> str:
-    """``text`` without the unit after a number that an operator or a bracket follows."""
-    return _UNIT_MID.sub("", text)
+    """``text`` without the unit after a number that an operator or a bracket follows (a
+    thousand kilograms, ``Mg`` or tonnes, written as the factor of the SI unit: ``20*1000``)."""
+    return _UNIT_MID.sub(lambda m: "*1000" if m[1] else "", text)
 
 
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).
