@@ -71,3 +71,12 @@ def test_an_angle_found_after_a_slip_in_the_velocity_after_is_carried() -> None:
     found = worst_lines(WALL, work)
     assert found[1][0] == "wrong"
     assert [found[n][0] for n in (2, 3, 4)] == ["carried"] * 3, found
+
+
+def test_the_asked_angle_resolved_from_the_other_axis_is_named_so_where_its_world_is_solved() -> None:
+    # U sin α along the wall and ¾U cos α off it (α taken from the normal): sin²α + (9/16)cos²α =
+    # 0.6, the asked angle from the other axis (angle_other_axis), though the world of sin and cos
+    # swapped in the velocity before makes it hold too.
+    found = worst_lines(WALL, "(U sin(alpha))^2 + ((3/4) U cos(alpha))^2 = 0.6 U^2\n")
+    assert found[1][0] == "wrong"
+    assert "angle_other_axis" in found[1][1].split(","), found
