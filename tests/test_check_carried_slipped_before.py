@@ -80,3 +80,22 @@ def test_the_asked_angle_resolved_from_the_other_axis_is_named_so_where_its_worl
     found = worst_lines(WALL, "(U sin(alpha))^2 + ((3/4) U cos(alpha))^2 = 0.6 U^2\n")
     assert found[1][0] == "wrong"
     assert "angle_other_axis" in found[1][1].split(","), found
+
+
+#: Byju's: a 4 kg ball at 12 m/s catches an 8 kg ball at 4 m/s (e = 0.5). True energy before:
+#: ½(4)(12²) + ½(8)(4²) = 288 + 64 = 352 J; with the masses swapped, ½(8)(12²) + ½(4)(4²) = 576 +
+#: 32 = 608 J.
+BALLS = "byjus-4kg-ball-catches-8kg-ball"
+
+
+def test_the_energy_before_with_the_masses_swapped_as_in_the_momentum_is_carried() -> None:
+    # The slip swaps the masses in the momentum; the energy before worked with them again is the
+    # student's own (608 J), carried, whether labelled in words or under a heading.
+    for energy in (
+        "Kinetic energy before: 0.5 x 8 x 144 + 0.5 x 4 x 16 = 576 + 32 = 608 J\n",
+        "\nKE check:\n- before: 1/2(8)(12)^2 + 1/2(4)(4)^2 = 608 J\n",
+        "KE\n* before = 0.5(8)(144) + 0.5(4)(16) = 608\n",
+    ):
+        found = worst_lines(BALLS, "Momentum: 8 x 12 + 4 x 4 = 112 = 8 v_A + 4 v_B\n" + energy)
+        assert found[1] == ("wrong", "masses_swapped")
+        assert [s for n, (s, _) in found.items() if n > 1] == ["carried"], (energy, found)

@@ -20,7 +20,7 @@ from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of, shown
 from derive.checking.report import Item
-from derive.checking.slipbefore import writes_slips_number
+from derive.checking.slipbefore import as_slipped, writes_slips_number
 from derive.checking.tracing import Trace
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
@@ -56,14 +56,14 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
     d = trace.ctx.derived()
     exprs = [d[n][1] for n in RESULTS if n in d] + list(trace.U)
 
-    def comes_to(values: Values) -> bool:
-        for x in exprs:
+    def comes_to(values: Values, slipped: bool = False) -> bool:  # slipped: the values before as the slip has them
+        for x in (as_slipped(trace, y) for y in exprs) if slipped else exprs:
             v = number_of(trace.ctx.in_unknowns(x).xreplace(trace.pts[0]).xreplace(values))
             if v is not None and abs(v.imag) < 1e-12 and written_right(written, sympy.Float(v.real, 15)):
                 return True
         return False
 
-    return comes_to(trace.world[0]) and not comes_to(trace.truth[0])
+    return (comes_to(trace.world[0]) or comes_to(trace.world[0], True)) and not comes_to(trace.truth[0])
 
 
 def sides(trace: Trace, line: Read, i: int, k: int) -> Pair:

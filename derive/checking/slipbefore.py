@@ -14,11 +14,15 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+import sympy
+
+from derive.checking.mistakes import REGISTRY
 from derive.checking.numeric import decimals
 
 if TYPE_CHECKING:
     from derive.checking.inference import Read
     from derive.checking.tracing import Trace
+    from derive.checking.worlds import Pair
 
 
 def holds_as_slipped(trace: Trace, line: Read) -> bool:
@@ -52,3 +56,37 @@ def writes_slips_number(trace: Trace, sides: tuple[str, ...] | list[str]) -> boo
     """Whether the working of ``sides`` (all but the last) writes a decimal a wrong or carried
     line came to (``5(0.99509)`` after ``cos37.6 = 0.99509``)."""
     return bool(decimals(list(sides[:-1])) & trace.wrong_values)
+
+
+def as_slipped(trace: Trace, x: sympy.Expr) -> sympy.Expr:
+    """``x`` (a result in the values before, the masses and the velocities after) with the values
+    before and the masses as the mistake of the slip's world has them: the student's kinetic
+    energy before after the masses swapped (``½(0.027)(3.5)²`` for ``½(0.022)(3.5)²``)."""
+    model, variant = trace.ctx.model, trace.variant
+    for name in sorted(set().union(*trace.named.values())) if trace.named else ():
+        m = REGISTRY.get(name)  # a mistake in the masses named by its equation (no variant kept): its masses
+        v = m.build(model) if m is not None and variant.masses is None else None
+        variant = replace(variant, masses=v.masses) if v is not None and v.masses is not None else variant
+    if variant.pre is None and not variant.values and variant.masses is None:
+        return x
+    under = model.under(variant)
+    put = {k: under.num(v) for k, v in under.pre.items()}
+    if variant.masses is not None:
+        put |= {model.m_A: variant.masses[0], model.m_B: variant.masses[1]}
+    derived = {sym: ex for sym, ex in trace.ctx.derived().values()}  # T_1 in the masses and the values before
+    return under.num(x.xreplace(derived).xreplace(put))
+
+
+def holds_slipped(trace: Trace, pairs: list[Pair]) -> bool:
+    """Whether ``pairs``, false for the problem, hold in the slip's world with the masses and the
+    values before as its mistake has them (``KE before: ½(8)(12)² + ½(4)(4)² = 608`` after the
+    masses were swapped in the momentum): the student's own energy, carried."""
+    if trace.world is None or not pairs or any(p.raw is None for p in pairs) or trace.holds(pairs, trace.truth):
+        return False
+    out = []
+    for p in pairs:
+        raw = tuple(as_slipped(trace, x) for x in p.raw)
+        if raw == p.raw:
+            return False
+        out.append(replace(p, left=trace.ctx.in_unknowns(raw[0]), right=trace.ctx.in_unknowns(raw[1]), raw=raw))
+    return trace.holds(out, trace.world)
