@@ -58,11 +58,13 @@ def _angle_stated(trace, line, bad: Pair, found: Explained) -> Explained:
         float(g.value * 180 / sympy.pi) for g in trace.ctx.problem.givens if g.dim == ANGLE and g.value is not None
     }
     worked = [float(m[1]) for m in _ANGLE_WORKED.finditer(getattr(line, "written", ""))]
-    if not any(all(abs(a - b) > 1e-6 for b in given) for a in worked) and not _in_asked_angle(trace, bad):
+    asked = not any(all(abs(a - b) > 1e-6 for b in given) for a in worked)  # else an angle worked out
+    if asked and not _in_asked_angle(trace, bad):
         return found
     other = trace.ctx.diagnosis(REGISTRY["angle_other_axis"])
     said = str(found[2]).replace(REGISTRY["sin_cos_swapped"].phrase, REGISTRY["angle_other_axis"].phrase)
-    return ((*other, *found[0]), found[1], said, *found[3:]) if other else found  # the components swapped too
+    both = other if asked else (*other, *found[0])  # an angle worked out: the components swapped too
+    return (both, found[1], said, *found[3:]) if other else found
 
 
 #: An angle worked out to a number of degrees on a line as typed: ``θ = 60°``, ``\theta = 60^\circ``.

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 import sympy
 
-from derive.checking.mistakes import REGISTRY
+from derive.checking.mistakes import REGISTRY, Variant
 from derive.checking.numeric import decimals
 
 if TYPE_CHECKING:
@@ -58,11 +58,12 @@ def writes_slips_number(trace: Trace, sides: tuple[str, ...] | list[str]) -> boo
     return bool(decimals(list(sides[:-1])) & trace.wrong_values)
 
 
-def as_slipped(trace: Trace, x: sympy.Expr) -> sympy.Expr:
+def as_slipped(trace: Trace, x: sympy.Expr, before: bool = True) -> sympy.Expr:
     """``x`` (a result in the values before, the masses and the velocities after) with the values
     before and the masses as the mistake of the slip's world has them: the student's kinetic
-    energy before after the masses swapped (``½(0.027)(3.5)²`` for ``½(0.022)(3.5)²``)."""
-    model, variant = trace.ctx.model, trace.variant
+    energy before after the masses swapped (``½(0.027)(3.5)²`` for ``½(0.022)(3.5)²``); the masses
+    only where not ``before``."""
+    model, variant = trace.ctx.model, trace.variant if before else Variant()
     for name in sorted(set().union(*trace.named.values())) if trace.named else ():
         m = REGISTRY.get(name)  # a mistake in the masses named by its equation (no variant kept): its masses
         v = m.build(model) if m is not None and variant.masses is None else None
@@ -78,14 +79,15 @@ def as_slipped(trace: Trace, x: sympy.Expr) -> sympy.Expr:
 
 
 def holds_slipped(trace: Trace, pairs: list[Pair]) -> bool:
-    """Whether ``pairs``, false for the problem, hold in the slip's world with the masses and the
-    values before as its mistake has them (``KE before: ½(8)(12)² + ½(4)(4)² = 608`` after the
-    masses were swapped in the momentum): the student's own energy, carried."""
+    """Whether ``pairs``, false for the problem, hold in the slip's world with the masses as its
+    mistake has them (``KE before: ½(8)(12)² + ½(4)(4)² = 608`` after the masses were swapped in the
+    momentum): the student's own energy, carried. (A value before resolved afresh the same wrong
+    way is the mistake again, not carried: :func:`holds_as_slipped` takes those from a number.)"""
     if trace.world is None or not pairs or any(p.raw is None for p in pairs) or trace.holds(pairs, trace.truth):
         return False
     out = []
     for p in pairs:
-        raw = tuple(as_slipped(trace, x) for x in p.raw)
+        raw = tuple(as_slipped(trace, x, before=False) for x in p.raw)  # a value before afresh: again
         if raw == p.raw:
             return False
         out.append(replace(p, left=trace.ctx.in_unknowns(raw[0]), right=trace.ctx.in_unknowns(raw[1]), raw=raw))
