@@ -55,22 +55,52 @@ def roots(eqs: list[sympy.Expr], U: tuple[sympy.Symbol, ...]) -> list[Values] | 
     if not angles:
         return None
     half = _halves(angles)
-    polys = []
+    ys = []
     for x in eqs:
         y = _in_halves(x, half)
         if y is None:
             return None
-        polys.append(sympy.N(sympy.numer(sympy.together(y)), 30))
-    V = tuple(half.get(u, u) for u in U)
+        ys.append(y)
+    ys, given = _velocities_out(ys, [u for u in U if u not in half])
+    polys = [sympy.N(sympy.numer(sympy.together(y)), 30) for y in ys]
+    V = tuple(half.get(u, u) for u in U if u not in given)
     found = polynomial_roots(polys, V)
     if found is None:
         return None
     out = []
     for r in found:
-        if any(abs(z.imag) > 1e-9 * max(1.0, abs(z)) for z in r.values()):
+        for u, x in reversed(given.items()):  # the velocities each equation gave in t, in turn
+            z = sympy.N(x.xreplace(r), 30)
+            r[u] = complex(z) if z.is_number and z.is_finite else complex("nan")
+        if any(z != z or abs(z.imag) > 1e-9 * max(1.0, abs(z)) for z in r.values()):
             continue  # a complex root: no angle, no velocity
         out.append({u: sympy.Float(2 * math.atan(r[half[u]].real) if u in half else r[u].real, 20) for u in U})
     return out
+
+
+def _velocities_out(
+    ys: list[sympy.Expr], velocities: list[sympy.Symbol]
+) -> tuple[list[sympy.Expr], dict[sympy.Symbol, sympy.Expr]]:
+    """The equations (in ``t = tan(α/2)``) with each velocity that one of them gives to the first
+    power (``(1 + t²) v_t = ¾U(1 - t²)``) put into the others as that fraction in t, the common
+    factors cancelled: their numerators taken at once would carry ``1 + t²`` as roots many times
+    over, where a polynomial's roots are not found. The velocities so given, in order."""
+    given: dict[sympy.Symbol, sympy.Expr] = {}
+    ys = list(ys)
+    for u in velocities:
+        for i, y in enumerate(ys):
+            top = sympy.expand(sympy.numer(sympy.together(y)))
+            if not top.has(u) or sympy.degree(top, u) != 1:
+                continue
+            a, b = top.coeff(u, 1), top.coeff(u, 0)
+            if a.has(u) or a.is_zero:
+                continue
+            x = sympy.cancel(-b / a)
+            given[u] = x
+            ys = [sympy.cancel(sympy.together(z.xreplace({u: x}))) for j, z in enumerate(ys) if j != i]
+            given = {k: v.xreplace({u: x}) for k, v in given.items()}
+            break
+    return ys, given
 
 
 def angle_coefficients(

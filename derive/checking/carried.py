@@ -1,7 +1,6 @@
-"""Where a typed derivation's line stands to a slip before it, beyond "it holds in the slip's
-world" (:mod:`.lines`): a line of numbers that comes to the slip's value of a result
-(carried, though it is right arithmetic), and a line whose rule holds while a step of its own
-working does not (an arithmetic slip inside the line, and what the student carries on)."""
+"""Where a line stands to a slip before it, beyond "it holds in the slip's world" (:mod:`.lines`): a line of numbers that
+comes to the slip's value of a result (carried, though right arithmetic), and a line whose rule holds while a step of its
+own working does not (an arithmetic slip inside the line, and what the student carries on)."""
 
 from __future__ import annotations
 
@@ -21,6 +20,7 @@ from derive.checking.mistakes.pairs import merge
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import decimals, number_of, shown
 from derive.checking.report import Item
+from derive.checking.slipbefore import as_slipped, writes_slips_number
 from derive.checking.tracing import Trace
 from derive.checking.worlds import NUMBER_SIDE, Pair, solve_world, written_right
 from derive.mathtext.notation import student
@@ -56,14 +56,14 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
     d = trace.ctx.derived()
     exprs = [d[n][1] for n in RESULTS if n in d] + list(trace.U)
 
-    def comes_to(values: Values) -> bool:
-        for x in exprs:
+    def comes_to(values: Values, slipped: bool = False) -> bool:  # slipped: the values before as the slip has them
+        for x in (as_slipped(trace, y) for y in exprs) if slipped else exprs:
             v = number_of(trace.ctx.in_unknowns(x).xreplace(trace.pts[0]).xreplace(values))
             if v is not None and abs(v.imag) < 1e-12 and written_right(written, sympy.Float(v.real, 15)):
                 return True
         return False
 
-    return comes_to(trace.world[0]) and not comes_to(trace.truth[0])
+    return (comes_to(trace.world[0]) or comes_to(trace.world[0], True)) and not comes_to(trace.truth[0])
 
 
 def sides(trace: Trace, line: Read, i: int, k: int) -> Pair:
@@ -86,16 +86,15 @@ def worked_wrongly(trace: Trace, line: Read, world: list[Values]) -> bool:
 
 
 def carried_on(trace: Trace, line: Read) -> tuple[Pair, Pair]:
-    """What a line with a slip in its working carries on, in order of preference: its first
-    side = its last (``v_B = (5 + 4e)u/3``), else its last step (``12v + 4 = 80``)."""
+    """What a line with a slip in its working carries on: its first side = its last (``v_B = (5 + 4e)u/3``), else its
+    last step (``12v + 4 = 80``)."""
     return sides(trace, line, 0, -1), sides(trace, line, -2, -1)
 
 
 def given_copied(trace: Trace, bad: Pair) -> str:
-    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number (not the
-    same with its sign turned: the student's own axis). The slip's world is then the problem
-    solved with the number as copied (the lines after, right with it, are carried); the words
-    of the verdict ("" where it is not such a line)."""
+    """``e = 0.6`` where the problem gives e = 0.4: a given replaced by another number (not the same with its sign
+    turned: the student's own axis). The slip's world is then the problem solved with the number as copied (the lines
+    after, right with it, are carried); the words of the verdict ("" where it is not such a line)."""
     if bad.raw is None or not isinstance(bad.raw[0], sympy.Symbol) or not bad.raw[1].is_Rational:
         return ""
     g = next((g for g in trace.ctx.problem.givens if g.symbol == bad.raw[0] and not g.unknown), None)
@@ -158,7 +157,8 @@ def unnamed(trace: Trace, line: Read, bad: Pair, world: list[Values], j: int | N
 def again_item(trace: Trace, line: Read, pairs: list[Pair]) -> Item | None:
     """The verdict on a line that makes a slip of the values before the impact again
     (:func:`made_again`); None where it does not."""
-    again = made_again(trace, pairs) or made_again_in_results(trace, line, pairs)
+    fresh = not writes_slips_number(trace, line.sides)  # 5(0.99509): the slip's number carried, not resolved again
+    again = (made_again(trace, pairs) if fresh else None) or made_again_in_results(trace, line, pairs)
     if again is None:
         return None
     said = f"False: the same mistake as in line {again[0]}, made again: it {phrase(again[1])}."

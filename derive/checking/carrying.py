@@ -349,8 +349,8 @@ class Carrying(Depending):
             self.wrong_number = (f"{right.real:.12g}", bad.left)  # the student's axes): the later side's value
 
     def _carries_number(self, line: Line) -> bool:
-        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right, or
-        says again one a slip before it wrote (``u_B = 55.00 i + 95.26 j`` has two)."""
+        """Whether ``line`` is true once the wrong number of an arithmetic slip is put right, or says again one a slip
+        before it wrote (``u_B = 55.00 i + 95.26 j`` has two); a number written with its sign is put right with it."""
         assert self.wrong_number is not None
         if not self._carries_one(line, *self.wrong_number) and not any(
             self._carries_one(line, *n, only_said=True) for n in self.earlier_numbers
@@ -369,10 +369,11 @@ class Carrying(Depending):
             return False
         if only_said:
             return self._restates(line, written, value.real)
-        exprs = tuple(x.xreplace({written: sympy.Float(value.real, 20)}) for x in line.exprs or ())
+        size = sympy.Float(-value.real if wrong.lstrip().startswith("-") else value.real, 20)  # -68.85: 68.85 is 69.85
+        exprs = tuple(x.xreplace({written: size, -written: -size}) for x in line.exprs or ())
         if exprs != line.exprs and self.holds(self.pairs(replace(line, exprs=exprs)), self.truth):
             return True
-        return self._worked_on(line, wrong.lstrip("+-"), value.real) or self._restates(line, written, value.real)
+        return self._worked_on(line, wrong.lstrip("+-"), float(size)) or self._restates(line, written, value.real)
 
     def _restates(self, line: Line, wrong: sympy.Rational, right: float) -> bool:
         """``J ≈ 0.238`` after ``0.060 × (-39.6) = -0.2376`` (2.376): the wrong number said again,

@@ -385,7 +385,8 @@ def _verdict(ctx, r: Relation, sides, exprs, values, true_defs, own_defs, slips:
         if _holds(ctx, sides[1:], own, [own_defs, values]):
             return item("carried", carried)
     if slips and exprs[0].is_Symbol and len(exprs) > 2 and _holds(ctx, sides[1:], exprs[1:], [true_defs, values]):
-        fixed = chainnames.put_right(sides[1], own_defs, values)  # ``v_2 = 0.7(7.53) = 5.27``, 7.53 the student's v_1
+        truth = {**values, **{k: v.xreplace(values) for k, v in true_defs.items()}}  # a name of their own (x) too
+        fixed = chainnames.put_right(sides[1], own_defs, truth)  # ``v_2 = 0.7(7.53) = 5.27``, 7.53 the student's v_1
         if fixed is not None and _holds(ctx, sides[:2], [exprs[0], fixed], [true_defs, values]):
             return item("carried", carried)
     first = not slips

@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import number_of
+from derive.checking.slipbefore import holds_as_slipped
 from derive.checking.worlds import NUMBER_SIDE
 from derive.mathtext.notation import student
 from derive.problem.expr import ParseError
@@ -198,4 +199,4 @@ class Depending:
         trace: Any = self
         if not line.exprs or trace.holds(trace.pairs(line), trace.truth):
             return False
-        return holds_with_own(trace, self.stated_values(), line)
+        return holds_with_own(trace, self.stated_values(), line) or holds_as_slipped(trace, line)

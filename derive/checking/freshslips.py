@@ -58,14 +58,27 @@ def _angle_stated(trace, line, bad: Pair, found: Explained) -> Explained:
         float(g.value * 180 / sympy.pi) for g in trace.ctx.problem.givens if g.dim == ANGLE and g.value is not None
     }
     worked = [float(m[1]) for m in _ANGLE_WORKED.finditer(getattr(line, "written", ""))]
-    if not any(all(abs(a - b) > 1e-6 for b in given) for a in worked):
+    asked = not any(all(abs(a - b) > 1e-6 for b in given) for a in worked)  # else an angle worked out
+    if asked and not _in_asked_angle(trace, bad):
         return found
     other = trace.ctx.diagnosis(REGISTRY["angle_other_axis"])
     said = str(found[2]).replace(REGISTRY["sin_cos_swapped"].phrase, REGISTRY["angle_other_axis"].phrase)
-    return ((*other, *found[0]), found[1], said, *found[3:]) if other else found  # the components swapped too
+    both = other if asked else (*other, *found[0])  # an angle worked out: the components swapped too
+    return (both, found[1], said, *found[3:]) if other else found
 
 
 #: An angle worked out to a number of degrees on a line as typed: ``θ = 60°``, ``\theta = 60^\circ``.
 _ANGLE_WORKED = re.compile(
     r"(?:(?<![\w\\])[A-Za-z]\w*|\\[a-z]+|[αβγθφψ])(?:_\{?\w+\}?)?\s*&?\s*=\s*(\d+(?:\.\d+)?)\s*(?:°|\^\s*\{?\s*\\circ)"
 )
+
+
+def _in_asked_angle(trace, bad: Pair) -> bool:
+    """Whether ``bad`` has the angle the problem asks for (α with the wall, a velocity's own angle)
+    inside a sine, cosine or tangent: sin and cos swapped there is that angle taken from the other
+    axis, as a teacher names it (``½m(U² sin²α + 9/16 U² cos²α) = 0.6(½mU²)``)."""
+    p = trace.ctx.problem
+    asked = {g.symbol for g in p.givens if g.unknown} & set(trace.U)
+    angles = {x.angle for x in (p.motion_A, p.motion_B) if x is not None and x.angle is not None} & asked
+    trig = set().union(*(x.atoms(sympy.sin, sympy.cos, sympy.tan) for x in bad.raw or ()))
+    return any(f.args[0].free_symbols & angles for f in trig)

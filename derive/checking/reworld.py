@@ -20,6 +20,7 @@ import sympy
 from derive.checking import workedslips
 from derive.checking.numeric import number_of
 from derive.checking.relations import coefficients
+from derive.checking.slipbefore import holds_slipped
 from derive.checking.tracing import Trace
 from derive.checking.worlds import NUMBER_SIDE, Pair, alike, solve_world
 from derive.mathtext.notation import student
@@ -36,7 +37,7 @@ def in_world(trace: Trace, pairs: list[Pair]) -> bool:
         return False
     if trace.holds(pairs, trace.world) or workedslips.speed_of_reversed(trace, pairs):
         return True
-    return unrounded(trace, pairs) or moved(trace, pairs) or stated(trace, pairs)
+    return unrounded(trace, pairs) or moved(trace, pairs) or stated(trace, pairs) or holds_slipped(trace, pairs)
 
 
 def stated(trace: Trace, pairs: list[Pair]) -> bool:

@@ -184,12 +184,12 @@ def numbers_written(
 
 
 def result_numbers(sides: tuple[str, ...], data: set) -> set[str]:
-    """The number a line came to (its last side a number alone, perhaps with a unit: ``y = 5 m/s``),
-    as :func:`numbers_written` has it (small whole numbers too; none of the problem's ``data``)."""
-    last = sides[-1] if sides else ""
-    if not (RESULT.fullmatch(last) or NUMBER_SIDE.match(student(last.strip()))):
-        return set()
-    return numbers_written([last], data, small=True)
+    """The numbers a line came to: its last side, and every side before it that is a number alone,
+    perhaps with a unit (``y = 5 m/s``; ``v = 6.378 = 6.38``: both, the value to more figures and
+    rounded), as :func:`numbers_written` has them (small whole numbers too; none of the problem's
+    ``data``)."""
+    alone = [s for s in sides[1:] if RESULT.fullmatch(s) or NUMBER_SIDE.match(student(s.strip()))]
+    return numbers_written(alone, data, small=True)
 
 
 def unnamed_number(ctx: Context, exprs: list, sides: tuple) -> bool:
