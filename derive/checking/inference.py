@@ -167,9 +167,8 @@ _MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){
 
 
 def _magnitude(ctx: Context, r: Read) -> Read:
-    """``v_B = sqrt(0.3^2 + 0.173^2)`` in an oblique impact: the student's ``v_B``, read
-    elsewhere as B's n component after (``m u_A + m u_B = m v_A + m v_B``), is here the
-    magnitude of its components, B's speed; so is ``|v_B'|`` (its size: US texts' bars)."""
+    """``v_B = sqrt(0.3^2 + 0.173^2)`` (oblique): the student's ``v_B``, read elsewhere as B's n component
+    after (``m u_A + m u_B = m v_A + m v_B``), is here B's speed; so is ``|v_B'|`` (US texts' bars)."""
     if not ctx.problem.oblique or not r.own_names or not r.exprs or len(r.sides) < 2:
         return r
     nm, speeds = ctx.model.nm, _speeds(ctx)
@@ -180,9 +179,8 @@ def _magnitude(ctx: Context, r: Read) -> Read:
 
 
 def _equated(raw: list[Read], meanings: dict, defs: dict, givens: set) -> dict[sympy.Symbol, sympy.Symbol]:
-    """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's
-    names of what is worked out, side by side in a relation, stands for it (not a given:
-    ``v_P = u`` is a root the student turns down, not a name for u)."""
+    """``v_t = 0.61 = v_A2t = v_B2t``: a name of the student's own set equal to one of derive's names of what
+    is worked out, side by side in a relation, stands for it (not a given: ``v_P = u`` is a root turned down)."""
     out: dict[sympy.Symbol, sympy.Symbol] = {}
     for r in raw:
         bare = [e for e in r.exprs or () if isinstance(e, sympy.Symbol)]
