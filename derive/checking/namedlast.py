@@ -28,10 +28,12 @@ _LAST = re.compile(
 )
 
 
-#: "A's speed before = U.": a body's quantity in words set equal to a name alone, as a clause.
+#: "A's speed before = U.", "A's speed before is v1 (unknown) and ...": a body's quantity in words
+#: set equal to a name alone, or said to be it, as a clause (a remark in brackets after the name).
 _EQUALS = re.compile(
-    rf"(?:^|[.;:,]\s)\s*((?:[A-Za-z]\w{{0,6}}['’]s\s+|the\s+)(?:final\s+|initial\s+|new\s+)?"
-    rf"(?:speed|velocity|component)\b[^=;.$]*?)\s*=\s*({_NAME})\s*(?:[.;,]|$)",
+    rf"(?:^|[.;:,]\s)\s*(?:and\s+)?((?:[A-Za-z]\w{{0,6}}['’]s\s+|the\s+)(?:final\s+|initial\s+|new\s+)?"
+    rf"(?:speed|velocity|component)\b[^=;.$]*?)\s*(?:=|\bis\b)\s*({_NAME})\s*(?:\([^()]*\)\s*)?"
+    r"(?=[.;,]|\band\b|$)",
     re.I,
 )
 

@@ -221,7 +221,7 @@ def _along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
 
 #: Names declared in words: "let x, y be the speeds of P and Q after the collision", "x and y are
 #: the velocities of A and B after", "x = velocity of A after".
-_NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
+_NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?|\d{1,2}(?![\w.]))?)"  # v_B, v1 (not 3.2)
 _WHAT = (
     r"(?:be|are|is|as|=|denote|represent|for)\s+(?:the\s+)?(?:final\s+)?(?:speeds?|velocit(?:y|ies)|vels?\.?)\s+of\s+"
 )
