@@ -34,6 +34,7 @@ def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
     """A derivation's ``lines`` judged by ``trace`` (:class:`~.lines.Trace`) while the budget
     lasts, an angle line as the angle its words name (:mod:`.angles`) first."""
     from derive.checking.angles import judge as angle
+    from derive.checking.givenlines import restated_item
     from derive.checking.givensigns import named
     from derive.checking.otherroots import not_marked
 
@@ -42,7 +43,9 @@ def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
         lambda line: (
             None
             if not_marked(trace, line, lines, typed)
-            else angle(trace, line, typed) or named(trace, line, trace.item(line))
+            else restated_item(trace, line, lines, typed)
+            or angle(trace, line, typed)
+            or named(trace, line, trace.item(line))
         ),
         lines,
         lambda line, why: trace._item(line, "not checked", why, ""),
