@@ -49,7 +49,6 @@ from derive.checking.spellings import (
     subscript,
 )
 from derive.checking.tersenames import terse_names
-from derive.checking.vectorangles import vector_angles
 from derive.checking.wordnames import in_words, says_what
 from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
@@ -136,7 +135,7 @@ class Open(Mapping):
 
 #: The readers of names declared in words, in order (the first reading of a name stands).
 _WORD_READERS = (in_words, terse_names, named_last, speed_along, centre_names, one_speed_after)
-_WORD_READERS += (minus_names, vector_angles)
+_WORD_READERS += (minus_names,)
 
 
 def name_like(name: str) -> bool:
