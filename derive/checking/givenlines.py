@@ -1,12 +1,11 @@
 """Givens restated: a line of givens, headed ``Given:``, ``Data:``, ``Known:`` (in Markdown's bold,
-LaTeX's ``\\textbf{}``, a heading), or a line before any working that only sets names to numbers
-(``Before: u_A = 3, u_B = -1.5. After: v_A = 2, v_B = 2.9.``). A teacher does not mark a given
-said again: whatever the checker makes of its names (``v_1 = v_2 = 28 m/s`` for the speeds before
-and after at a wall, ``(v_A)_2 = 2.40 m/s straight back`` in the student's own sign), a relation
-there that sets names to the value of a given of the same kind (to the figures written, either
-sign: the student's positive is their own) restates it, and is not marked. A number there that is
-no given's value of that kind (``(v_A)_1 = 5`` where A moves at 6 m/s) is a given copied wrongly,
-and is judged as any line is.
+LaTeX's ``\\textbf{}``, a heading). A teacher does not mark a given said again there: whatever the
+checker makes of its names (``v_1 = v_2 = 28 m/s`` for the speeds before and after at a wall,
+``(v_A)_2 = 2.40 m/s straight back`` in the student's own sign), a relation there that sets names
+to the value of a given of the same kind (to the figures written, either sign: the student's
+positive is their own) restates it, and is not marked. A number there that is no given's value of
+that kind (``(v_A)_1 = 5`` where A moves at 6 m/s) is a given copied wrongly, and is judged as any
+line is.
 """
 
 from __future__ import annotations
@@ -44,15 +43,13 @@ def restated_item(trace: Any, line: Any, lines: Sequence[Any], typed: list[str])
 
 
 def restates_givens(trace: Any, line: Any, lines: Sequence[Any], typed: list[str]) -> bool:
-    """Whether ``line`` (a :class:`~.inference.Read`) restates a given on a line of givens."""
+    """Whether ``line`` (a :class:`~.inference.Read`) restates a given on a line of givens. Only under
+    its header: a name set to a number elsewhere, against a way the student declared (``positive:
+    from A toward B``, then ``u = -4``), is a sign slip."""
     if line.exprs is None or line.defines or not 0 < line.number <= len(typed):
         return False
-    header = _HEADER.match(typed[line.number - 1]) is not None
-    if not header:
-        mine = [r for r in lines if r.number == line.number]
-        before = [r for r in lines if r.number < line.number]
-        if not all(_stated(r) for r in before) or not all(_given(trace.ctx, r) for r in mine):
-            return False  # after the working, a name set to a number is a result
+    if _HEADER.match(typed[line.number - 1]) is None:
+        return False  # elsewhere a name set to a number against a declared way is a sign slip ("u = -4")
     return _given(trace.ctx, line)
 
 
