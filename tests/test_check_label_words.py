@@ -61,3 +61,33 @@ def test_the_speed_of_approach_with_b_taken_the_wrong_way_is_the_slip_there() ->
 def test_a_kinetic_energy_said_before_its_working() -> None:
     work = "KE before 0.5(4)(12)^2 + 0.5(8)(4)^2 = 288 + 64 = 352 J\n"
     assert worst_lines(BYJUS, work)[1][0] == "correct"
+
+
+def test_a_one_word_label_before_a_colon_after_a_value_labels_the_next() -> None:
+    """``n: 5cos37.6 = 3.96   t: 5sin37.6 = 3.05``: t is the second's axis (across: 3.05 is right)."""
+    work = "x along the line of centres from A to B.\nA before: n: 5cos37.6 = 3.96   t: 5sin37.6 = 3.05\n"
+    assert worst_lines(SPHERES, work)[2][0] == "correct"
+    swapped = work.replace("n: 5cos37.6 = 3.96   t: 5sin37.6 = 3.05", "n: 5sin37.6 = 3.05   t: 5cos37.6 = 3.96")
+    assert worst_lines(SPHERES, swapped)[2][0] == "wrong"
+
+
+#: fisicalab-example-7-normal-at-20deg: the common normal at 20° from x; A moves at 45°, B at 120°,
+#: so from n A's direction is 45 - 20 = 25° and B's 120 - 20 = 100°.
+FISICALAB = "fisicalab-example-7-normal-at-20deg"
+
+
+def test_a_name_after_from_is_the_line_an_angle_is_measured_from_not_the_angle() -> None:
+    work = "Direction of A measured from n = 45 - 20 = 25°, and of B from n = 120 - 20 = 100°.\n"
+    assert worst_lines(FISICALAB, work)[1][0] == "correct"
+    assert worst_lines(FISICALAB, work.replace("= 100°", "= 110°"))[1][0] == "wrong"
+
+
+def test_a_law_and_its_letters_after_a_part_label_are_not_relations() -> None:
+    from derive.mathtext.reader import read_relations
+
+    for line in (
+        "(iii) Upwards positive: v^2 = u^2 + 2as with v = 0, u = 4.465, a = -9.8",
+        "(b) v = u + at with u = 2, a = 9.8",
+        "Q3 using s = ut + 1/2at^2 where u = 0, a = 9.8",
+    ):
+        assert not read_relations(line, {}, False), line

@@ -81,6 +81,8 @@ def label_of(line: Read) -> str:
     if at <= 0:
         return ""
     piece = re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
+    if re.match(r"[-+−]?\s*\d", piece) and line.written[:at].rstrip(" $&=\t").endswith(":"):
+        return re.sub(r"^[-+−]?\s*[\d.]+\s*", "", piece)  # "n: 4sin30 = 2   t: 4cos30": t labels the next
     if re.match(r"[-+−]?\s*\d", piece):  # "= 2 along x and 4 sin 60 = …": the words the relation before ends in
         parts = re.split(r"\b(?:and|while|whereas|but|then)\b", piece)
         piece = parts[-1].strip() if len(parts) > 1 else ""
