@@ -93,7 +93,7 @@ def read_lines(
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
-    known |= {w for w in lefts if not (w in GREEK and all(c in problem for c in w)) or w in own}  # mu = m u
+    known |= {w for w in lefts if not ((w in GREEK or 1 < len(w) < 4) and all(c in problem for c in w)) or w in own}
     known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
     declared, sign = as_read(*declarations(text, ctx, declared_axes if ctx.problem.oblique else None))  # v1: v_1
     reserved = set(problem) | set(declared)
