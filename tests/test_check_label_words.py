@@ -80,14 +80,3 @@ def test_a_name_after_from_is_the_line_an_angle_is_measured_from_not_the_angle()
     work = "Direction of A measured from n = 45 - 20 = 25°, and of B from n = 120 - 20 = 100°.\n"
     assert worst_lines(FISICALAB, work)[1][0] == "correct"
     assert worst_lines(FISICALAB, work.replace("= 100°", "= 110°"))[1][0] == "wrong"
-
-
-def test_a_law_and_its_letters_after_a_part_label_are_not_relations() -> None:
-    from derive.mathtext.reader import read_relations
-
-    for line in (
-        "(iii) Upwards positive: v^2 = u^2 + 2as with v = 0, u = 4.465, a = -9.8",
-        "(b) v = u + at with u = 2, a = 9.8",
-        "Q3 using s = ut + 1/2at^2 where u = 0, a = 9.8",
-    ):
-        assert not read_relations(line, {}, False), line

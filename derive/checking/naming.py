@@ -91,8 +91,8 @@ PHRASES = (
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
 PHRASES += SAID_PHRASES  # a wall's velocity and speed in words
-#: Words after which a name is their object, not the quantity a side is (``Angle of A from n``).
-_OBJECT_AFTER = frozenset({"from", "to", "of", "with", "along", "between", "and", "onto", "into", "towards", "toward"})
+#: Words after which a name is their object, not the quantity a side is (``Angle of A from n``; "speed of P" is P's).
+_OBJECT_AFTER = frozenset({"from", "to", "with", "along", "between", "onto", "into", "towards", "toward"})
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 #: Names let be quantities said in words (``let a, b = velocities along the line of centres after (A, B)``).

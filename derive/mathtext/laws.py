@@ -42,10 +42,7 @@ def quoted_law(sides: tuple[str, ...]) -> bool:
     before it is used."""
     if len(sides) != 2:
         return False
-    sides = (
-        re.sub(r"^\s*(?:(?:\(\w{1,4}\)|[A-Za-z][A-Za-z0-9]+[,:]?)\s+)+", "", sides[0]),
-        sides[1],
-    )  # "(iii) using v^2 = …"
+    sides = (re.sub(r"^\s*(?:[A-Za-z]{2,}[,:]?\s+)+", "", sides[0]), sides[1])  # "using v^2 = …": words before it
     plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
     return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
 
