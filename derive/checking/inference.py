@@ -89,9 +89,8 @@ def read_lines(
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
     axes = declared_axes(text) if ctx.problem.oblique else {}
-    every = valued_labels(
-        energy_change(energy_at_labels(directed(read_relations(text, axes, not ctx.problem.oblique), text)))
-    )
+    every = directed(read_relations(text, axes, not ctx.problem.oblique), text)
+    every = valued_labels(energy_change(energy_at_labels(every)))  # KE after: …; approach speed 2 - (-6) = 8
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
@@ -116,9 +115,7 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
-    written = list(
-        dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))
-    )
+    written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {
