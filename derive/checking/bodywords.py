@@ -13,9 +13,9 @@ from derive.checking.statementbodies import statement_bodies
 
 #: A body's quantity in words (``speed of Q after``, ``P's velocity``, ``Q after``), the label between.
 _BODY_PHRASE = (
-    (r"(\b(?i:speed|velocity|direction|momentum|KE|energy)\s+of\s+)", r"\b"),
+    (r"(\b(?i:speed|velocity|direction|momentum|KE|energy|component|cpt)\s+of\s+)", r"\b"),
     (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction|component))"),
-    (r"((?:^|[:*,;(]|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),
+    (r"((?:^|[:*,;(]|[⇒→⟹]|[=-]>|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),  # "⇒ Q after ⊥"
     # a sign convention: "positive in the direction P was moving"
     (
         r"(\b(?i:direction|way)\s+(?:(?i:that|in\s+which)\s+)?)",

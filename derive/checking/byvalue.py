@@ -40,6 +40,7 @@ MAX_NAMES = 3  # the most unplaced names one line is read by value for
 MAX_READINGS = 6000  # the most readings tried for one line
 MAX_LINES = 40  # the most lines of one derivation read by value (each pass)
 LOOSE = 0.02  # the relative slack a reading is picked with (the line is then judged at its figures)
+TIGHT = 0.002  # a reading that holds this closely (to three figures) is taken before those that hold loosely
 _MODULES = [{"Abs": abs}, "cmath"]  # the sides worked in complex numbers (a root of a negative)
 _ARBITRARY = (1.37, -2.91)  # two values no quantity of a problem is likely to have together
 
@@ -144,6 +145,7 @@ def _sides(trace: Any, exprs: list[sympy.Expr], free: list[sympy.Symbol], values
             x = sympy.expand(trace.ctx.in_unknowns(e).xreplace(pt).xreplace(vals))
             if x.free_symbols - set(free):
                 return None
+            x = x.xreplace({f: sympy.Rational(f) for f in x.atoms(sympy.Float)})  # cmath prints no Float
             row.append((sympy.lambdify(free, x, _MODULES), sympy.lambdify(free, _sizes(x), _MODULES)))
         out.append(row)
     return out
@@ -186,7 +188,9 @@ def _fits(trace: Any, exprs: list, free: list, allowed: list[list[int]], table: 
     combos = _combos([[i for i in a if nums[i] is not None] for a in allowed], options)
     if funcs is None or not combos:
         return []
-    return [c for c, off in zip(combos, _offs(funcs, combos, nums), strict=True) if off <= LOOSE]
+    offs = dict(zip(combos, _offs(funcs, combos, nums), strict=True))
+    tight = [c for c in combos if offs[c] <= TIGHT]  # those that hold to the figures written, where any do
+    return tight or [c for c in combos if offs[c] <= LOOSE]
 
 
 def _combos(allowed: list[list[int]], options: list) -> list[tuple]:

@@ -108,6 +108,9 @@ def component_words(text: str, label: str) -> str:
     """``A's component after`` under a lead-in naming the axis (``Perp:``, ``Along l.o.c.:``) as
     derive's name of that component (``v_A2t``): along the line of centres n, across it t; so
     too a component with its axis said before it (``⊥ cpt A after``: ``v_A2t``)."""
+    whole = said_component(text)
+    if whole:
+        return whole
     text = _AXIS_FIRST.sub(_axis_first, text)
     lead = label.strip().rstrip(":").strip()
     axis = "n" if _LEAD_N.fullmatch(lead) else "t" if _LEAD_T.fullmatch(lead) else ""
@@ -120,3 +123,59 @@ def component_words(text: str, label: str) -> str:
         return f"v_{m[1].upper()}{time}{axis}" if time else m[0]
 
     return _COMPONENT_WORDS.sub(named, text)
+
+
+#: The words of a body's component named in words, in whatever order the student says them: the
+#: body, the axis, the instant, and the words between (``Q's component perpendicular after``,
+#: ``A after ⊥``, ``after, B along the l.o.c.``, ``the velocity of B across the line of centres
+#: after``).
+_WORD = re.compile(r"[A-Za-z.]+(?:['’]s)?|[∥⊥]|[,:-]")
+_N_WORDS = {"along", "parallel", "par", "par.", "∥", "normal"}
+_T_WORDS = {"perp", "perp.", "perpendicular", "⊥", "across", "tangential", "tangent"}
+_TIMES = {"before": "1", "initially": "1", "initial": "1", "after": "2", "finally": "2", "final": "2"}
+_FILLERS = {
+    *[
+        "the",
+        "of",
+        "to",
+        "it",
+        "its",
+        "line",
+        "centres",
+        "centers",
+        "impact",
+        "collision",
+        "l.o.c.",
+        "l.o.c",
+        "loc",
+        "lc",
+        "component",
+        "compt",
+        "cpt",
+        "cpt.",
+    ],
+    *["velocity", "speed", "sphere", "ball", "particle", "disc", "puck", "body", ",", ":", "-"],
+}
+
+
+def said_component(side: str) -> str:
+    """Derive's name of the component a side names in words alone (``v_A2t`` for ``Q's component
+    perpendicular after``, the statement's Q already written A), whatever the order of its words:
+    exactly one body, one axis and one instant, and nothing but words between; else ""."""
+    words = _WORD.findall(side)
+    if "".join(words).replace(" ", "") != re.sub(r"\s+", "", side) or not 3 <= len(words) <= 12:
+        return ""
+    bodies, axes, times = [], [], []
+    for w in words:
+        low = w.lower()
+        if re.fullmatch(r"[AB](?:['’]s)?", w):
+            bodies.append(w[0])
+        elif low in _N_WORDS or low in _T_WORDS:
+            axes.append("n" if low in _N_WORDS else "t")
+        elif low in _TIMES:
+            times.append(_TIMES[low])
+        elif low not in _FILLERS:
+            return ""
+    if len(bodies) != 1 or len(axes) != 1 or len(times) != 1:
+        return ""
+    return f"v_{bodies[0]}{times[0]}{axes[0]}"

@@ -114,6 +114,14 @@ def spells_givens(name: str, right: sympy.Expr, given: frozenset[str], written: 
     )
 
 
+def lone_name(side: str) -> bool:
+    """Whether a relation's left side is written as a name alone (``w``, ``v_B'``, ``(v_B)_2``),
+    not as an equation the student goes on to solve that only simplifies to one: a difference
+    ``w - 0``, a multiple ``1 w``, a product or a quotient (the law of restitution's
+    ``b - 0 = 0.8(a - sqrt3)``, which a teacher marks as that law, not as naming b)."""
+    return re.search(r"[-+*/×÷−·]|^\s*\d|[\w')}]\s+[\w(\\]", side.strip()) is None
+
+
 def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr], given: dict | None = None) -> None:
     """``φ = 90° − θ`` after ``tan φ = e tan θ``: a name nothing else gave a meaning, set equal
     alone to an expression in known names, is the student's name for it on every line; one
@@ -128,6 +136,7 @@ def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr], given: dict 
         if (
             left.is_Symbol
             and left.name.startswith(PREFIX)
+            and lone_name(r.sides[0])
             and left not in mapping
             and right.free_symbols - {DEG}
             and not _placeholders(right)

@@ -14,8 +14,9 @@ import re
 #: An arrow after a value, where the relation ends (``= 1.6 m/s ←``, ``4 m/s (→)``, ``0.5 m/s ->,``): the
 #: direction it points, as words say it ("to the left"), not "so".
 _ARROW_DIRECTION = re.compile(
-    r"(?<=[\w/)°.²³¹])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|(↓|\\downarrow)|(↑|\\uparrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
-    r"[ \t]{0,3}\)?(?=\s*(?:$|[,;]|\.\s*$|\**\s*\(?\s*[Aa]ns\b\.?\s*\)?\s*\**\s*$))"  # "← **Ans.**" (a pointer "<- answer" is no direction)
+    r"(?<=[\w/)°.²³¹}])[ \t]{0,8}(?:\([ \t]{0,3})?(?:(←|⟵|<-{1,2}|\\(?:long)?leftarrow)|(↓|\\downarrow)|(↑|\\uparrow)|→|⟶|-{1,2}>|\\(?:long)?rightarrow)"
+    r"[ \t]{0,3}\)?(?=(?:\s|\\q?quad\b|\\[,;:! ])*(?:$|[,;]|\.\s*$|(?:\**|\\text(?:bf|it)?\{)\s*\(?\s*[Aa]ns\b\.?\s*\)?\s*[*}]*\s*(?:$|;)))"
+    # "← **Ans.**", "\leftarrow \qquad \textbf{Ans.}" (LaTeX's spacing between); a pointer "<- answer" is no direction
 )
 _ARROWS = r"→|⟶|-{1,2}>|←|⟵|<-{1,2}|↑|↓|\\(?:long)?(?:right|left)arrow|\\(?:up|down)arrow"
 #: A sign convention's mark before a relation, as engineering texts write it: ``(+→)``, ``(→+)``,
@@ -34,7 +35,7 @@ def _said(m: re.Match[str]) -> str:
     """The direction an arrow after a value points, in words (``↓``: downwards)."""
     said = " to the left" if m[1] else " downwards" if m[2] else " upwards" if m[3] else " to the right"
     after = m.string[m.end() : m.end() + 1]
-    said += " " if after and (after.isalnum() or after in "*(") else ""  # "← **Ans.**": a word apart
+    said += " " if after and (after.isalnum() or after in "*(\\") else ""  # "← **Ans.**": a word apart
     return said + ")" if m[0].rstrip().endswith(")") and "(" not in m[0] else said  # "(0.2 ←)": its bracket stays
 
 

@@ -425,7 +425,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
         tag, text = m.group(1), text[: m.start()]
     text = re.sub(r"\s\((?:[^()]*(?:=|[<>≤≥])[^()]*)\)\s*$", "", text)  # "(e = 1)", "(e > 0)" after it: a remark
     text = _without_remark(text)
-    text = re.sub(r"(=[^=<>≤≥]*?)\s*(?:[<>]|≤|≥)[^=]*$", r"\1", text)  # "w_B = 2.38 > 0": the relation
+    text = re.sub(r"(=[^=<>≤≥≠!]*?)\s*(?:[<>]|≤|≥|≠|\\neq?\b|!=)[^=]*$", r"\1", text)  # "= 2.38 > 0", "≠ 2tanα"
     if "=" not in text or re.search(r"≠|\\neq?\b|!=|[<>]=?|≤|≥", text) or REJECTED.search(text[text.rfind("=") :]):
         return None
     direction = direction_of(text[text.rfind("=") + 1 :])
