@@ -17,6 +17,7 @@ from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
+from derive.checking.declaredspeeds import MAGNITUDE, kept_speeds
 from derive.checking.degreemode import in_degrees
 from derive.checking.energyinstants import energy_at_labels
 from derive.checking.frames import (
@@ -149,6 +150,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
+    raw = kept_speeds(ctx, raw, mapping, _speeds(ctx))  # v_A = sqrt(…): A's speed on the lines after
     lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
     lines, axes_words = in_student_sense(ctx, lines, pt, truth, axes)  # t the other way round: a frame
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
@@ -162,10 +164,6 @@ def read_lines(
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
 
-#: A side that is the magnitude of a vector from its components: ``sqrt(0.3^2 + 0.173^2)``.
-_MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){2}).*\)\s*$")
-
-
 def _magnitude(ctx: Context, r: Read) -> Read:
     """``v_B = sqrt(0.3^2 + 0.173^2)`` (oblique): the student's ``v_B``, read elsewhere as B's n component
     after (``m u_A + m u_B = m v_A + m v_B``), is here B's speed; so is ``|v_B'|`` (US texts' bars)."""
@@ -173,7 +171,7 @@ def _magnitude(ctx: Context, r: Read) -> Read:
         return r
     nm, speeds = ctx.model.nm, _speeds(ctx)
     body = next((b for b in "AB" if r.exprs[0] in (n := getattr(nm, f"{b}2n"), -n, sympy.Abs(n))), None)
-    if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
+    if body is None or f"speed_{body}" not in speeds or not MAGNITUDE.match(student(r.sides[1])):
         return r
     return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
 
