@@ -47,3 +47,39 @@ def test_an_energy_with_the_n_component_is_wrong_after_the_declaration() -> None
 def test_momentum_checked_again_keeps_the_components() -> None:
     """A sum of the bare names to the first power is (3) again: 20(-1.109) + 5(8.398) = 19.81."""
     assert worst_lines(PROBLEM, PLAIN + "20*vA + 5*vB = 19.81\n")[7][0] == "correct"
+
+
+#: AQA M3 2007 Q6(a) by hand: A at speed u, 30° from the line of centres, hits an identical B at rest.
+#: Along n A has u cos 30° = (√3/2)u, across u sin 30° = u/2. Equal masses: v_A + v_B = (√3/2)u and
+#: v_B - v_A = e(√3/2)u, so B's speed after is (√3/4)(1 + e)u. A letter the student sets a bare
+#: velocity before equal to (``u_A = U``, ``v_1 = c``) is A's speed, u: the components are U cos 30°
+#: and U sin 30°. Read as the n component (the habit's bare u_A), U cos 30° would be (3/4)u.
+SHOW = "aqa-m3-2007-june-q6a-b-at-rest-line-at-30deg-show-speed-of-b"
+
+LETTER_LATEX = r"""Let $u_A = U$.
+$u_{An} = U\cos 30^\circ = \tfrac{\sqrt3}{2}U$, $u_{At} = U\sin 30^\circ = \tfrac12 U$
+$v_{An} + v_{Bn} = \tfrac{\sqrt3}{2}U$
+$v_{Bn} - v_{An} = e\tfrac{\sqrt3}{2}U$
+$v_{Bn} = \tfrac{\sqrt3}{4}(1 + e)U$
+"""
+
+LETTER_PLAIN = """A: uA = c
+uAn = c cos 30 = 0.866c
+uAt = c sin 30 = 0.5c
+"""
+
+
+def test_a_letter_set_equal_to_a_bare_velocity_before_is_the_speed() -> None:
+    got = worst_lines(SHOW, LETTER_LATEX)
+    assert [got[k][0] for k in (2, 3, 4, 5)] == ["correct"] * 4
+
+
+def test_a_letter_set_equal_phone_typed() -> None:
+    got = worst_lines(SHOW, LETTER_PLAIN)
+    assert got[2][0] == "correct" and got[3][0] == "correct"
+
+
+def test_the_components_swapped_are_still_the_slip() -> None:
+    """U sin 30° along the line of centres: sin and cos swapped, found at its line."""
+    work = LETTER_LATEX.replace(r"U\cos 30^\circ = \tfrac{\sqrt3}{2}U", r"U\sin 30^\circ = \tfrac12 U")
+    assert worst_lines(SHOW, work)[2][0] == "wrong"

@@ -67,24 +67,53 @@ def kept_speeds(ctx: Context, raw: list[Read], mapping: dict, speeds: dict[str, 
         return raw
     comps, declared, out = _components(ctx), {}, []
     for r in raw:
-        if r.exprs is not None and declared:
-            held = set().union(*(e.free_symbols for e in r.exprs))
-            others = {q for q in held if q not in declared}
-            component = any(
-                (q in comps)
-                or (q.name.startswith(PREFIX) and not _BARE.fullmatch(q.name[1:]) and _in(mapping, q, comps))
-                for q in others
-            )
-            velocities = [q for q in held if q.name.startswith(PREFIX) and _in(mapping, q, comps)]
-            swap = {p: speeds[f"speed_{b}"] for p, b in declared.items() if p in held}
-            summed = sum(_linear(r.exprs, q) for q in velocities) >= 2
-            if swap and not component and not summed:
-                r = replace(r, exprs=tuple(e.xreplace(swap) for e in r.exprs))
+        r = _as_speeds(r, {p: speeds[f"speed_{b}"] for p, b in declared.items()}, mapping, comps)
         found = _declared_body(ctx, r, mapping) if r.exprs is not None else None
         if found and f"speed_{found[1]}" in speeds:
             declared[found[0]] = found[1]
         out.append(r)
     return out
+
+
+def speeds_before(ctx: Context, raw: list[Read], meanings: dict, speeds: dict[str, sympy.Expr]) -> list[Read]:
+    """``raw`` with a bare name of a velocity before set equal to a letter alone (``with v1 = U``: A moves
+    at speed U) read as that body's speed before, on its line and the later lines without a component:
+    the letter is then the speed, not the n component the habit reads the bare name as."""
+    if not ctx.problem.oblique:
+        return raw
+    comps, nm = _components(ctx), ctx.model.nm
+    meant = {sympy.Symbol(PREFIX + k): v for k, v in meanings.items()}
+    declared: dict[sympy.Symbol, sympy.Expr] = {}
+    out = []
+    for r in raw:
+        exprs = r.exprs or ()
+        p = exprs[0] if len(exprs) == 2 and all(isinstance(e, sympy.Symbol) for e in exprs) else None
+        q = exprs[1] if p is not None else None
+        if p is not None and p.name.startswith(PREFIX) and _BARE.fullmatch(p.name[1:]) and q.name.startswith(PREFIX):
+            for b in "AB":
+                n = getattr(nm, f"{b}1n", None)
+                if n is not None and meant.get(p) in (n, -n) and q not in meant and f"speed_{b}1" in speeds:
+                    declared[p] = speeds[f"speed_{b}1"]
+        out.append(_as_speeds(r, declared, meant, comps))
+    return out
+
+
+def _as_speeds(r: Read, declared: dict, mapping: dict, comps: set[sympy.Symbol]) -> Read:
+    """``r`` with the names ``declared`` speeds put in as those speeds, where it does not work in components:
+    no name of a component beside them, no two velocity names added to the first power."""
+    if r.exprs is None or not declared:
+        return r
+    held = set().union(*(e.free_symbols for e in r.exprs))
+    component = any(
+        (q in comps) or (q.name.startswith(PREFIX) and not _BARE.fullmatch(q.name[1:]) and _in(mapping, q, comps))
+        for q in held - set(declared)
+    )
+    velocities = [q for q in held if q.name.startswith(PREFIX) and _in(mapping, q, comps)]
+    swap = {p: x for p, x in declared.items() if p in held}
+    summed = sum(_linear(r.exprs, q) for q in velocities) >= 2
+    if swap and not component and not summed:
+        return replace(r, exprs=tuple(e.xreplace(swap) for e in r.exprs))
+    return r
 
 
 def _in(mapping: dict, q: sympy.Symbol, comps: set[sympy.Symbol]) -> bool:

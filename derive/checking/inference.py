@@ -17,7 +17,7 @@ from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
-from derive.checking.declaredspeeds import MAGNITUDE, kept_speeds
+from derive.checking.declaredspeeds import MAGNITUDE, kept_speeds, speeds_before
 from derive.checking.degreemode import in_degrees
 from derive.checking.energyinstants import energy_at_labels
 from derive.checking.frames import (
@@ -130,6 +130,7 @@ def read_lines(
     meanings = in_order(meanings, written)  # as the names are first written: the same report every run
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
+    raw = speeds_before(ctx, raw, meanings, _speeds(ctx))  # with v1 = U: U is A's speed
     own_angles(ctx, raw, meanings)
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
