@@ -35,6 +35,7 @@ def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
     lasts, an angle line as the angle its words name (:mod:`.angles`) first."""
     from derive.checking.angles import judge as angle
     from derive.checking.byvalue import item, placed_ahead
+    from derive.checking.givenlines import restated_item
     from derive.checking.givensigns import named
     from derive.checking.otherroots import not_marked
 
@@ -44,7 +45,9 @@ def lines_judged(trace: Any, lines: Sequence[Any], text: str) -> list[Any]:
         lambda line: (
             None
             if not_marked(trace, line, lines, typed)
-            else angle(trace, line, typed) or named(trace, line, item(trace, line))
+            else restated_item(trace, line, lines, typed)
+            or angle(trace, line, typed)
+            or named(trace, line, item(trace, line))
         ),
         lines,
         lambda line, why: trace._item(line, "not checked", why, ""),

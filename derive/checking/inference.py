@@ -18,6 +18,7 @@ from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
 from derive.checking.declaredspeeds import MAGNITUDE, kept_speeds, speeds_before
+from derive.checking.declaredspellings import as_read
 from derive.checking.degreemode import in_degrees
 from derive.checking.energyinstants import energy_at_labels
 from derive.checking.frames import (
@@ -51,6 +52,7 @@ from derive.checking.saidagain import said_again
 from derive.checking.shapes import Shapes
 from derive.checking.spellings import shared_letters
 from derive.checking.tangentsense import in_student_sense
+from derive.checking.valuedlabels import valued_labels
 from derive.checking.valuenames import by_letter, by_value, candidates, kinds, of_kind
 from derive.checking.velocitywords import along_the_line
 from derive.checking.wordlabels import word_label
@@ -88,15 +90,16 @@ def read_lines(
     """The relations of ``text`` in the problem's symbols, and what was inferred (sentences);
     ``equations`` are (1)-(4), whose shape a relation may have with a slip in its numbers."""
     axes = declared_axes(text) if ctx.problem.oblique else {}
-    every = energy_change(energy_at_labels(directed(read_relations(text, axes, not ctx.problem.oblique), text)))
+    every = directed(read_relations(text, axes, not ctx.problem.oblique), text)
+    every = valued_labels(energy_change(energy_at_labels(every)))  # KE after: …; approach speed 2 - (-6) = 8
     relations = tuple(r for k, r in enumerate(every) if not declares(r, k == 0 or every[k - 1].line != r.line))
     problem = {n: s for n, (s, _d) in ctx.equation_names().items()}
     known = set(problem) | {"speed_A", "speed_B", "u", "v", "x", "y", "V", "w"} | set(habits(ctx, None))
     lefts = {r.sides[0].strip() for r in relations if re.fullmatch(r"[A-Za-z]\w*", r.sides[0].strip())}  # "mu = …"
     own = mass_named(ctx, relations)  # mu = 9m/10: a mass, the student's own name, not m times u
-    known |= {w for w in lefts if not (len(w) > 1 and all(c in problem for c in w)) or w in own}  # mu, eu: m u, e u
+    known |= {w for w in lefts if not ((w in GREEK or 1 < len(w) < 4) and all(c in problem for c in w)) or w in own}
     known |= set(reduced := reduced_mass(ctx, relations))  # "mu = (m)(9m)/(10m)": no m times u
-    declared, sign = declarations(text, ctx, declared_axes if ctx.problem.oblique else None)
+    declared, sign = as_read(*declarations(text, ctx, declared_axes if ctx.problem.oblique else None))  # v1: v_1
     reserved = set(problem) | set(declared)
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {
@@ -113,9 +116,7 @@ def read_lines(
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
-    written = list(
-        dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))
-    )
+    written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
     grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
     meanings: dict[str, sympy.Expr] = {
@@ -247,14 +248,7 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
     except (ParseError, ValueError, TypeError, RecursionError) as exc:
         return Read(r.line, r.written, r.sides, r.tag, None, str(exc))
     sides, exprs = in_degrees(tuple(s for s in shown if s is not None), tuple(exprs))
-    return Read(
-        r.line,
-        r.written,
-        sides,
-        r.tag,
-        exprs,
-        direction=r.direction,
-    )
+    return Read(r.line, r.written, sides, r.tag, exprs, direction=r.direction)
 
 
 def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:

@@ -80,7 +80,24 @@ def label_of(line: Read) -> str:
         at = found.start() if found else -1
     if at <= 0:
         return ""
-    return re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
+    piece = re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
+    if re.match(r"[-+−]?\s*\d", piece) and line.written[:at].rstrip(" $&=\t").endswith(":"):
+        return re.sub(r"^[-+−]?\s*[\d.]+\s*", "", piece)  # "n: 4sin30 = 2   t: 4cos30": t labels the next
+    if re.match(r"[-+−]?\s*\d", piece):  # "= 2 along x and 4 sin 60 = …": the words the relation before ends in
+        parts = re.split(r"\b(?:and|while|whereas|but|then)\b", piece)
+        piece = parts[-1].strip() if len(parts) > 1 else ""
+    return piece
+
+
+def words_after(line: Read) -> str:
+    """The words just after the line's relation, to the next ``,`` ``;`` ``=`` or "and" (``= 2 along
+    x and …``: "along x"), "" where a number or nothing follows it."""
+    last = line.sides[-1].strip() if line.sides else ""
+    end = line.written.find(last, max(line.written.find(line.sides[0].strip()), 0)) if last else -1
+    if end < 0:
+        return ""
+    tail = re.split(r"[,;=&$]|\band\b", line.written[end + len(last) :], maxsplit=1)[0].strip(" .")
+    return tail if re.fullmatch(r"[A-Za-z][A-Za-z .']*", tail) else ""
 
 
 def momentum_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> Pair | None:
@@ -149,6 +166,8 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     ):
         return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
     label = label_of(line)
+    if not (_ALONG.search(label) or _ACROSS.search(label) or _wall_axis(ctx, label)):
+        label = words_after(line) or label  # "4 sin 60 = 3.46 along y": the axis its value is said along
     if not re.search(r"(?i)(?<![a-z])(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
         return None
     across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names

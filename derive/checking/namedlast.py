@@ -28,22 +28,40 @@ _LAST = re.compile(
 )
 
 
-#: "A's speed before = U.": a body's quantity in words set equal to a name alone, as a clause.
+#: "A's speed before = U.", "A's speed before is v1 (unknown) and ...": a body's quantity in words
+#: set equal to a name alone, or said to be it, as a clause (a remark in brackets after the name).
 _EQUALS = re.compile(
-    rf"(?:^|[.;:,]\s)\s*((?:[A-Za-z]\w{{0,6}}['’]s\s+|the\s+)(?:final\s+|initial\s+|new\s+)?"
-    rf"(?:speed|velocity|component)\b[^=;.$]*?)\s*=\s*({_NAME})\s*(?:[.;,]|$)",
+    rf"(?:^|[.;:,]\s)\s*(?:and\s+)?((?:[A-Za-z]\w{{0,6}}['’]s\s+|the\s+)(?:final\s+|initial\s+|new\s+)?"
+    rf"(?:speed|velocity|component)\b[^=;.$]*?)\s*(?:=|\bis\b)\s*({_NAME})\s*(?:\([^()]*\)\s*)?"
+    r"(?=[.;,]|\band\b|$)",
     re.I,
 )
+
+
+#: "Let P move backwards with speed v and Q move forwards with speed w after the collision", "B moves
+#: off at speed x": a direct impact's name declared by how a body moves after, its way in words.
+_MOVES = re.compile(
+    rf"(?<![\w\\])([A-Z])\s+(?:then\s+|now\s+)?(?:moves?|travels?|goes|continues|rebounds?)"
+    r"((?:\s+(?:off|on|away|back|backwards?|forwards?|in\s+the\s+opposite\s+direction|the\s+other\s+way)){0,2})"
+    rf"\s+(?:at|with)\s+(?:a\s+|the\s+)?(speed|velocity)\s+(?:of\s+)?({_NAME})(?![\w'(^/*+-])"
+)
+_BACK = re.compile(r"\b(?:back|backwards|opposite|other\s+way)\b", re.I)
 
 
 def named_last(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     """The names ``line`` declares after the words for what they stand for, each with derive's
     name for it (read the other way round: "let v be B's velocity after")."""
     out: dict[str, sympy.Expr] = {}
-    for m in [*_LAST.finditer(line), *_EQUALS.finditer(line)]:
-        names = re.sub(r"[${}*]|__", "", m.group(2)).strip()
-        said = f"Let {names} be {m.group(1).strip()}"
-        for name, x in (in_words(said, ctx) or speed_along(said, ctx)).items():
+    said = [f"Let {re.sub(r'[${}*]|__', '', m[2]).strip()} be {m[1].strip()}" for m in _LAST.finditer(line)]
+    said += [f"Let {re.sub(r'[${}*]|__', '', m[2]).strip()} be {m[1].strip()}" for m in _EQUALS.finditer(line)]
+    if not ctx.problem.oblique:  # "P moves backwards with speed v": "let v be the speed of P after (P goes back)"
+        plain = re.sub(r"[${}]|\\[()]", "", line)
+        said += [
+            f"Let {m[4]} be the {m[3]} of {m[1]} after" + (f" ({m[1]} goes back)" if _BACK.search(m[2]) else "")
+            for m in _MOVES.finditer(plain)
+        ]
+    for words in said:
+        for name, x in (in_words(words, ctx) or speed_along(words, ctx)).items():
             out.setdefault(name, x)
     return out
 

@@ -49,7 +49,6 @@ from derive.checking.spellings import (
     subscript,
 )
 from derive.checking.tersenames import terse_names
-from derive.checking.vectorangles import vector_angles
 from derive.checking.wordnames import in_words, says_what
 from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
@@ -92,6 +91,8 @@ PHRASES = (
     (r"speed\s+of\s+separation|separation\s+speed", "speed_sep"),  # before or after?
 )
 PHRASES += SAID_PHRASES  # a wall's velocity and speed in words
+#: Words after which a name is their object, not the quantity a side is (``Angle of A from n``; "speed of P" is P's).
+_OBJECT_AFTER = frozenset({"from", "to", "with", "along", "between", "onto", "into", "towards", "toward"})
 _DECLARE = re.compile(r"^\s*(?:let|where|with|set)\s+([A-Za-z]\w*)\s*(?:=|:=|be)\s*([A-Za-z]\w*)\s*$", re.I)
 _POSITIVE = re.compile(r"^\s*positive\s*[:=]\s*(.+)$", re.I)
 #: Names let be quantities said in words (``let a, b = velocities along the line of centres after (A, B)``).
@@ -135,8 +136,7 @@ class Open(Mapping):
 
 
 #: The readers of names declared in words, in order (the first reading of a name stands).
-_WORD_READERS = (in_words, terse_names, named_last, speed_along, centre_names, one_speed_after)
-_WORD_READERS += (minus_names, vector_angles)
+_WORD_READERS = (in_words, terse_names, named_last, speed_along, centre_names, one_speed_after, minus_names)
 
 
 def name_like(name: str) -> bool:
@@ -286,8 +286,8 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
         if last and not first and not re.fullmatch(r"(?:[A-Za-z\s,.;:'’]|(?<=[A-Za-z])-(?=[A-Za-z]))+", " ".join(cut)):
             continue  # "(relative speed)^2": words inside the mathematics are not trimmed
         piece = " ".join(piece)
-        if piece.strip() in ("A", "B"):
-            continue  # "Impulse on B = …": the body, not a name
+        if piece.strip() in ("A", "B") or (first and cut[-1].lower() in _OBJECT_AFTER):
+            continue  # "Impulse on B = …": the body; "Angle of A from n = 25°": n is the angle's line, not it
         try:
             return parse(student(piece), names).expr
         except ParseError:

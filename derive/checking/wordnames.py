@@ -221,7 +221,7 @@ def _along(line: str, ctx: Context) -> dict[str, sympy.Expr]:
 
 #: Names declared in words: "let x, y be the speeds of P and Q after the collision", "x and y are
 #: the velocities of A and B after", "x = velocity of A after".
-_NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?)?)"
+_NAME_WORD = r"([A-Za-z](?:_\{?\w{1,3}\}?|\d{1,2}(?![\w.]))?)"  # v_B, v1 (not 3.2)
 _WHAT = (
     r"(?:be|are|is|as|=|denote|represent|for)\s+(?:the\s+)?(?:final\s+)?(?:speeds?|velocit(?:y|ies)|vels?\.?)\s+of\s+"
 )
@@ -375,7 +375,7 @@ def _angles(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     knows (the statement's P and Q), the one body that leaves off the line of centres."""
     if not ctx.problem.oblique:
         return {}
-    plain = velocities_in_words(re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line))  # the angle v_A makes with
+    plain = velocities_in_words(re.sub(r"\$|\\[()]|\*\*|[{}]", " ", line), ctx)  # the angle v_A makes with
     names = ctx.equation_names()
     out: dict[str, sympy.Expr] = {}
     given = {g.name for g in ctx.problem.givens}  # the problem's α stays the given
@@ -416,10 +416,10 @@ def _negative(ctx: Context, name: str) -> bool:
 
 
 def _leaving(body: str, ctx: Context) -> str:
-    """``body``, or where it is "" or moves on along the line of centres, the one body whose
-    velocity after has a component across it ("" where none or both)."""
+    """``body`` where the words name one derive knows (moving on along the line of centres too: angle 0);
+    where none, the one body whose velocity after has a component across it ("" where none or both)."""
     across = [b for b in "AB" if not _zero(ctx, f"v_{b}2t")]
-    if body in across:
+    if body in across or body in ("A", "B"):
         return body
     return across[0] if len(across) == 1 else ""
 

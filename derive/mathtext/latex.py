@@ -236,8 +236,8 @@ def _product(node: Mul, top: bool) -> str:
         text = _wrapped(factor, top, Add, Mul, Frac) if len(node.factors) > 1 else show(factor, top)
         if k and text and out:
             gap = {"*": " * ", "·": " * ", "×": " * "}.get(gaps[k - 1], gaps[k - 1])
-            if isinstance(factor, Vec) and factor.name in ("i", "j", "k"):
-                gap = gap or " "  # a\mathbf{i}: a times the unit vector i, not a name "ai"
+            if isinstance(factor, Hat) or (isinstance(factor, Vec) and factor.name in ("i", "j", "k")):
+                gap = gap or " "  # a\mathbf{i}, v_1\hat n: a times the unit vector, not a name "ai", "v_1n_hat"
             elif not gap and out[-1].isalnum() and text[0].isalnum():
                 gap = "" if out[-1].isdigit() and text[0].isalpha() and " " not in text else " "  # 5eu; 5 cos x
             out += gap
