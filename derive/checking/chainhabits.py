@@ -13,13 +13,14 @@ from collections.abc import Callable
 import sympy
 
 from derive.checking import chainnames
+from derive.checking.chainrestage import restaged
 from derive.checking.context import Context
 
 
 def habit_names(ctx: Context, read: list, said: chainnames.Declared, holds: Callable) -> tuple[dict, list]:
     """``said`` with the impact's velocities the habit names, and ``read`` without the givens
     restated in them."""
-    said = {**said, **velocities(ctx, read, said, holds)}
+    said, read = restaged(ctx, read, {**said, **velocities(ctx, read, said, holds)})  # vB = 5, then vB = -3.5: w_B
     return said, [x for x in read if not chainnames.restated(ctx, x, read, said)]
 
 

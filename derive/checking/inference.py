@@ -17,6 +17,7 @@ from derive.checking.axisnames import components
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
+from derive.checking.declaredspeeds import MAGNITUDE, kept_speeds, speeds_before
 from derive.checking.declaredspellings import as_read
 from derive.checking.degreemode import in_degrees
 from derive.checking.energyinstants import energy_at_labels
@@ -130,6 +131,7 @@ def read_lines(
     meanings = in_order(meanings, written)  # as the names are first written: the same report every run
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
+    raw = speeds_before(ctx, raw, meanings, _speeds(ctx))  # with v1 = U: U is A's speed
     own_angles(ctx, raw, meanings)
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
@@ -150,6 +152,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
+    raw = kept_speeds(ctx, raw, mapping, _speeds(ctx))  # v_A = sqrt(…): A's speed on the lines after
     lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
     lines, axes_words = in_student_sense(ctx, lines, pt, truth, axes)  # t the other way round: a frame
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
@@ -163,10 +166,6 @@ def read_lines(
     ) + (["Read " + ", ".join(f"{w} as {'*'.join(w)}" for w in split) + "."] if split else [])
 
 
-#: A side that is the magnitude of a vector from its components: ``sqrt(0.3^2 + 0.173^2)``.
-_MAGNITUDE = re.compile(r"^\s*sqrt\s*\((?=[^=]*\^\s*\(?2)(?=(?:[^=]*?\^\s*\(?2){2}).*\)\s*$")
-
-
 def _magnitude(ctx: Context, r: Read) -> Read:
     """``v_B = sqrt(0.3^2 + 0.173^2)`` (oblique): the student's ``v_B``, read elsewhere as B's n component
     after (``m u_A + m u_B = m v_A + m v_B``), is here B's speed; so is ``|v_B'|`` (US texts' bars)."""
@@ -174,7 +173,7 @@ def _magnitude(ctx: Context, r: Read) -> Read:
         return r
     nm, speeds = ctx.model.nm, _speeds(ctx)
     body = next((b for b in "AB" if r.exprs[0] in (n := getattr(nm, f"{b}2n"), -n, sympy.Abs(n))), None)
-    if body is None or f"speed_{body}" not in speeds or not _MAGNITUDE.match(student(r.sides[1])):
+    if body is None or f"speed_{body}" not in speeds or not MAGNITUDE.match(student(r.sides[1])):
         return r
     return replace(r, exprs=(speeds[f"speed_{body}"], *r.exprs[1:]))
 
