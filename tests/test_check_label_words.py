@@ -80,3 +80,16 @@ def test_a_name_after_from_is_the_line_an_angle_is_measured_from_not_the_angle()
     work = "Direction of A measured from n = 45 - 20 = 25°, and of B from n = 120 - 20 = 100°.\n"
     assert worst_lines(FISICALAB, work)[1][0] == "correct"
     assert worst_lines(FISICALAB, work.replace("= 100°", "= 110°"))[1][0] == "wrong"
+
+
+def test_a_label_after_the_bodys_bracket_and_colon_is_the_axis() -> None:
+    # OCR FM 2023: A at 4 m/s at 60° to the line of centres: along it 4 cos 60° = 2, across it
+    # 4 sin 60° = 3.46. Written "∥ = 4 sin60 = 3.46" after "A (…):", the ∥ labels the component
+    # along the line of centres: sin and cos swapped, at that line (the momentum after it carried).
+    work = (
+        "A (4 m/s, 60 deg to the line of centres): ∥ = 4 sin60 = 3.46, ⊥ = 4 cos60 = 2\n"
+        "momentum: 5(3.46) + 3(-6) = 5x + 3y, so 5x + 3y = -0.7\n"
+    )
+    found = worst_lines("ocr-fm-2023-oblique-discs-60deg", work)
+    assert found[1] == ("wrong", "sin_cos_swapped")
+    assert found[2][0] == "carried"

@@ -84,8 +84,9 @@ def label_of(line: Read) -> str:
     if re.match(r"[-+−]?\s*\d", piece) and line.written[:at].rstrip(" $&=\t").endswith(":"):
         return re.sub(r"^[-+−]?\s*[\d.]+\s*", "", piece)  # "n: 4sin30 = 2   t: 4cos30": t labels the next
     if re.match(r"[-+−]?\s*\d", piece):  # "= 2 along x and 4 sin 60 = …": the words the relation before ends in
+        after = re.split(r"[:)]", piece)[-1].strip()  # "(4 m/s, 60 deg to the line of centres): ∥ = …": the label ∥
         parts = re.split(r"\b(?:and|while|whereas|but|then)\b", piece)
-        piece = parts[-1].strip() if len(parts) > 1 else ""
+        piece = after if after != piece.strip() else parts[-1].strip() if len(parts) > 1 else ""
     return piece
 
 
@@ -131,9 +132,9 @@ def momentum_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) -> 
 #: The axis a label names: along the line of centres (n), or across it (t).
 _ALONG = re.compile(
     r"(?i)\balong\b|\bparallel\b|line of (?:centres|centers|impact)|\bnormal\b|(?<![A-Za-z])[xn](?![A-Za-z])"
-    r"|\bl\.?\s?o\.?\s?c\b"
+    r"|\bl\.?\s?o\.?\s?c\b|∥"  # ∥ alone: the word parallel
 )
-_ACROSS = re.compile(r"(?i)\bperp|\bacross\b|\btangent|plane of contact|(?<![A-Za-z])[yt](?![A-Za-z])")
+_ACROSS = re.compile(r"(?i)\bperp|⊥|\bacross\b|\btangent|plane of contact|(?<![A-Za-z])[yt](?![A-Za-z])")
 
 
 #: A fixed body's surface, and the axes a label names by it: along it (t), into it (n).
