@@ -68,6 +68,8 @@ def number_item(ctx: Context, e: Entry, r: Result, text: str, number: str, unit:
         notes=tuple(notes),
     )
     expected = ctx.shown(x, figures(u), unit)
+    if judge(u, x, ctx.tolerance) and sympy.Rational(str(u)) == x:  # 4 for 4: no figures' slack, nothing to add
+        return Item("answer", r.name, text, "correct", "", "Correct: exactly this problem's value.", **fields)
     if judge(u, x, ctx.tolerance):
         return Item("answer", r.name, text, "correct", expected, f"Correct {fields['method']}.", **fields)
     scale = work.factor / unit.factor
