@@ -91,9 +91,10 @@ def moved(trace: Trace, pairs: list[Pair], written_wrong: bool = False) -> bool:
         return False  # the slip's place was settled since: nothing to put back
     F = trace.equations[j]
     cf = coefficients(F.xreplace(trace.pts[0]), trace.U)
-    for k in trace.equations:
-        cg = coefficients(trace.equations[k].xreplace(trace.pts[0]), trace.U)
-        if k == j or not cf or not cg or (alike(cf, cg) < 0.5 and not _eliminated_from(cf, cg, trace)):
+    vectors = {k: coefficients(x.xreplace(trace.pts[0]), trace.U) for k, x in trace.equations.items()}
+    every = set().union(*(_linear(c or {}) for c in vectors.values()))  # the unknowns the equations hold
+    for k, cg in vectors.items():
+        if k == j or not cf or not cg or (alike(cf, cg) < 0.5 and not _eliminated_from(cf, cg, every)):
             continue  # only an equation much like it in its unknowns (the momentum or the impact rule it was worked from)
         equations = {**trace.equations, j: before, k: F}
         world = solve_world(equations, trace.U, trace.pts, trace.world)
@@ -111,15 +112,13 @@ def _linear(c: dict) -> set[int]:
     return {m.index(1) for m, x in c.items() if sum(m) == 1 and abs(x) > 1e-12}
 
 
-def _eliminated_from(cf: dict, cg: dict, trace: Trace) -> bool:
+def _eliminated_from(cf: dict, cg: dict, every: set[int]) -> bool:
     """Whether a slip in fewer unknowns than the impact's equations hold (``12 v_A = 46`` after
     putting ``v_B = v_A + 4`` into the momentum) may have been worked from the equation of
-    ``cg``: the slip has an unknown of it, and the one eliminated is in it too. Worked from the
-    two at once, it stands for either: the student finds the other velocity from whichever."""
+    ``cg`` (``every``: the unknowns the equations hold): the slip has an unknown of it, and the one
+    eliminated is in it too. Worked from the two at once, it stands for either: the student finds
+    the other velocity from whichever."""
     mine, theirs = _linear(cf), _linear(cg)
-    every = set().union(
-        *(_linear(coefficients(x.xreplace(trace.pts[0]), trace.U) or {}) for x in trace.equations.values())
-    )
     return bool(mine & theirs) and bool((theirs - mine) & (every - mine))
 
 
