@@ -113,17 +113,17 @@ HOSTILE = [
 
 @pytest.mark.parametrize("row", HOSTILE)
 def test_a_hostile_row_stays_cheap(row: str) -> None:
-    start = time.perf_counter()
+    start = time.process_time()
     assert latex_to_plain(row)
-    assert time.perf_counter() - start < 1.0
+    assert time.process_time() - start < 1.0
 
 
 @pytest.mark.parametrize("row", HOSTILE)
 def test_a_hostile_row_is_refused_with_a_latex_error(row: str) -> None:
-    start = time.perf_counter()
+    start = time.process_time()
     with pytest.raises(LatexError):  # not RecursionError
         parser.Parser(row, lenient=True).relations()
-    assert time.perf_counter() - start < 1.0
+    assert time.process_time() - start < 1.0
 
 
 @pytest.mark.parametrize(
