@@ -47,7 +47,7 @@ from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
 from derive.checking.speedwords import looks_like_prose
 from derive.checking.words import sides_unequal
-from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, solve_world, three_figures
+from derive.checking.worlds import NUMBER_SIDE, Pair, closest, holds_at, in_letters, solve_world, three_figures
 from derive.errors import InputError
 from derive.mathtext.notation import student
 
@@ -192,9 +192,9 @@ class Trace(Carrying):
     # verdicts ----------------------------------------------------------------
     def _correct(self, line: Line, pairs: list[Pair], answer: Item | None) -> Item:
         self.held += [p for p in pairs if p.difference.free_symbols & set(self.U)]
-        notes = ()
-        if self.world is not None and not self.holds(pairs, self.world):
-            notes = (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
+        follows = self.world is None or self.holds(pairs, self.world) or in_letters(pairs)  # a law in names
+        notes = () if follows else (f"It is right for the problem, but it does not follow from {self._slips_named()}.",)
+        if not follows:
             workedslips.into_world(self, line, pairs)
         if answer is not None:
             return self._item(line, "correct", answer.message, answer.method, notes=notes, expected=answer.expected)

@@ -45,6 +45,17 @@ class Pair:
         return self.left - self.right
 
 
+def in_letters(pairs: list[Pair]) -> bool:
+    """Whether every side of ``pairs`` is written in names only (a law such as
+    ``m_A v_A1n + m_B v_B1n = m_A v_A2n + m_B v_B2n``, ``½ m v²``): such a line states a law, it is
+    not worked from an earlier line's numbers, so it neither follows from a slip nor fails to."""
+    sides = [side for p in pairs if p.raw is not None for side in p.raw]
+    if len(sides) < 2 * len(pairs):
+        return False
+    numbers = [a for side in sides for a in side.atoms(sympy.Number)]
+    return all(isinstance(a, sympy.Rational) and abs(a.p) <= 2 and a.q <= 2 for a in numbers)
+
+
 def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Symbol, ...]) -> bool:
     for pt, vals in zip(pts, values, strict=True):
         sides = (p.left.xreplace(pt).xreplace(vals), p.right.xreplace(pt).xreplace(vals))
