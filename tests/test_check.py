@@ -466,7 +466,7 @@ def test_formula_units() -> None:
         ("4", "v_B2n - v_A2n = 9.5", "correct", "is the impact rule"),
         ("4", "e = (v_B2n - v_A2n)/(v_A1n - v_B1n)", "correct", "impact rule"),
         ("1", "v_A2t = 3.05", "correct", "t-momentum of A"),
-        ("4", "v_A2n - v_B2n = 9.5", "wrong", "has the relative velocities the wrong way round"),
+        ("4", "v_A2n - v_B2n = 9.5", "wrong", "has the impact rule the wrong way round"),
         (
             "3",
             "20*v_A2n + 5*v_B2n = 20*5*cos(37.6*deg) + 5*15*cos(37.6*deg)",

@@ -79,8 +79,15 @@ def signed_by_words(r: R, sign: int) -> R:
     m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
     if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols or _size_only(r.exprs[0]) or _impulse(r.exprs[0]):
         return r
-    if r.direction * sign > 0 or _OFF_A_SURFACE_AS_SPEED.search(getattr(r, "written", "")):
+    if _OFF_A_SURFACE_AS_SPEED.search(getattr(r, "written", "")):
         return r  # "Rebound speed: v = eu = 1.6 m/s (away from the wall)": a size, its way said
+    if len(r.exprs) == 2 and type(r.exprs[0]).__name__ == "Abs":  # "A: 0.6 m/s to the left": a size with
+        way = 1 if r.direction * sign > 0 else -1  # its way said is the velocity, signed by the way
+        return replace(
+            r, sides=(r.sides[0], f"{'-' if way < 0 else ''}{m.group(2)}"), exprs=(r.exprs[0].args[0], way * r.exprs[1])
+        )
+    if r.direction * sign > 0:
+        return r
     if len(r.exprs) >= 3 and r.exprs[0].is_Symbol and not any(x.is_number and x < 0 for x in r.exprs[1:-1]):
         # "v = eu = 0.4 x 4 = 1.6 m/s to the left": v's size is worked out, its way said after it
         return replace(r, exprs=(-r.exprs[0], *r.exprs[1:]))

@@ -125,7 +125,7 @@ class Trace(Carrying):
 
     def _judge(self, line: Line) -> Item | None:
         if line.exprs is None:
-            if looks_like_prose(" ".join(line.sides)):
+            if looks_like_prose(" = ".join(line.sides)):
                 return None  # prose with an "=" in it
             return self._item(
                 line, "not read", f"Not read: {words.not_read(line.error, line.sides, line.written)}.", ""

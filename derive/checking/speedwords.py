@@ -50,6 +50,8 @@ _PROSE = re.compile(r"[A-Za-z]{3,}\s+(?:[A-Za-z]+\s+)*[A-Za-z]{3,}")
 #: name's mark (``v_⊥``, ``v∥``): read as the words they stand for.
 _SAID = {"∥": "parallel", "⊥": "perpendicular"}
 _SYMBOL_WORD = re.compile(r"(?<![\w_{^])[∥⊥](?![\w_}])")
+#: A side that only says a sign: "+ve", "+", "positive (direction)", "-ve".
+_WAY_SIDE = re.compile(r"\s*\(?\s*(?:[+\-−]\s*(?:ve)?|positive|negative)(?:\s+(?:direction|way|sense))?\s*\)?\s*", re.I)
 
 
 def _after_names(line: str) -> set[str]:
@@ -93,6 +95,9 @@ def _along_the_path_after(line: str, statement: str) -> set[str]:
 def looks_like_prose(text: str) -> bool:
     """Whether ``text`` (a line's sides that could not be read) is prose with an "=" in it: words,
     not counting the names of functions, Greek letters and angle units, which are mathematics."""
+    if any(_WAY_SIDE.fullmatch(side) for side in text.split("=")):
+        return True  # "right = +ve", "+ve = away from wall": which way is positive, said
+    text = text.replace("=", " ")
     words = re.sub(r"[A-Za-z]+", lambda m: " " if m[0] in MATH_WORDS else m[0], text)
     words = _SYMBOL_WORD.sub(lambda m: f" {_SAID[m[0]]} ", words)  # "∥ cpt = ⊥ cpt": parallel, perpendicular
     return _PROSE.search(words) is not None

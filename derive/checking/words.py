@@ -10,6 +10,7 @@ at position 10") into one a student can act on ("derive could not read `\\lvert`
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
@@ -370,6 +371,9 @@ def unequal(left_text: str, left: float, right_text: str, right: float) -> str:
 
     value = format_number(left, 4)
     rt = right_text.strip()
+    angle = re.fullmatch(r"\(?([-+]?(?:\d+\.?\d*|\.\d+))\s*(?:°|\*\s*deg|\^\\circ)\)?", rt)
+    if angle:  # an angle written in degrees: the value in degrees too, not in radians
+        return f"{left_text} is {format_number(math.degrees(left), 4)}°, not {angle.group(1)}° (an arithmetic slip)."
     if re.fullmatch(r"[-+]?\(?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\)?", rt):
         return f"{left_text} is {value}, not {rt} (an arithmetic slip)."
     unit = _NUMBER_UNIT.match(rt)

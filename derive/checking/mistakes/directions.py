@@ -9,8 +9,9 @@ from derive.checking.mistakes.records import Variant, mistake
 @mistake(
     "angle_other_axis",
     "the direction after the impact from the other axis",
-    "The direction after the impact was measured from the other axis, tan⁻¹(v_t/v_n) instead of "
-    "θ = tan⁻¹(v_n/v_t) (θ is from +t toward +n, β from +n toward +t).",
+    "The direction after the impact was measured from the other axis: the angle found is the "
+    "complement (90° minus) of the one asked for. Which component goes on top of tan⁻¹ depends on "
+    "the axis the angle is measured from: the component across that axis over the one along it.",
     (),
     "the direction after the impact (stage 4)",
     "measures the direction from the other axis",

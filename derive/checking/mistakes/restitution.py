@@ -10,12 +10,13 @@ from derive.checking.mistakes.records import Variant, mistake
 
 @mistake(
     "restitution_reversed",
-    "restitution with the differences reversed",
-    "The impact rule was written with the relative velocities the wrong way round, "
-    "e (v_A1n − v_B1n) = v_A2n − v_B2n: separation is v_B2n − v_A2n, approach v_A1n − v_B1n.",
+    "restitution the wrong way round",
+    "The impact rule was written the wrong way round: its differences reversed, "
+    "e (v_A1n − v_B1n) = v_A2n − v_B2n, or its ratio upside down, e = approach ÷ separation. "
+    "The rule is separation = e × approach: v_B2n − v_A2n = e (v_A1n − v_B1n).",
     (4,),
     "the impact rule",
-    "has the relative velocities the wrong way round",
+    "has the impact rule the wrong way round",
 )
 def restitution_reversed(model: Model) -> Variant | None:
     """Separation written v_A2n − v_B2n."""
