@@ -41,7 +41,7 @@ def results_of(
                 res[g.name] = _quantity(known[g.symbol], known)
     if p.oblique:
         res.update(_oblique(p, nm, post, known, angles, num))
-        res.update(_acute(p, nm, pre, post, known))
+        res.update(_acute(p, nm, pre, post, known, angles))
     else:
         res["v_A2"] = _quantity(post[nm.A2n], known)
         if not p.fixed_B:
@@ -99,8 +99,10 @@ def _acute(
     pre: dict[sympy.Symbol, sympy.Expr],
     post: dict[sympy.Symbol, sympy.Expr],
     known: dict[sympy.Symbol, sympy.Expr],
+    angles: str = "atan2",
 ) -> dict[str, Quantity]:
-    """The acute angles with n (alpha) and t (gamma) after the impact, and the deflection (delta)."""
+    """The acute angles with n (alpha) and t (gamma) after the impact, and the deflection (delta);
+    ``angles`` "other_axis": each measured from the other axis (alpha is then the angle with t)."""
     res: dict[str, Quantity] = {}
     for b in "AB":
         if b == "B" and p.fixed_B:
@@ -112,6 +114,8 @@ def _acute(
         n1 = _float(pre[getattr(nm, f"{b}1n")])
         t1 = _float(pre[getattr(nm, f"{b}1t")]) if getattr(nm, f"{b}1t") is not None else sympy.Integer(0)
         pairs = {f"alpha_{b}2": (sympy.Abs(t), sympy.Abs(n)), f"gamma_{b}2": (sympy.Abs(n), sympy.Abs(t))}
+        if angles == "other_axis":
+            pairs = {f"alpha_{b}2": pairs[f"gamma_{b}2"], f"gamma_{b}2": pairs[f"alpha_{b}2"]}
         if not (n1 == 0 and t1 == 0):
             pairs[f"delta_{b}"] = (sympy.Abs(t1 * n - n1 * t), t1 * t + n1 * n)
         for name, (y, x) in pairs.items():
