@@ -212,6 +212,8 @@ class Context:
                 out[f"v_{b}2"] = (symbol(f"v_{b}2", "positive"), sympy.sqrt(n**2 + t**2))
                 out[f"theta_{b}2"] = (symbol(f"theta_{b}2"), sympy.atan2(n, t))
                 out[f"beta_{b}2"] = (symbol(f"beta_{b}2"), sympy.atan2(t, n))
+                out[f"alpha_{b}2"] = (symbol(f"alpha_{b}2"), sympy.atan2(abs(t), abs(n)))  # with n, acute
+                out[f"gamma_{b}2"] = (symbol(f"gamma_{b}2"), sympy.atan2(abs(n), abs(t)))  # with t, acute
                 n1, t1 = getattr(nm, f"{b}1n"), getattr(nm, f"{b}1t")
                 if n1 is not None and t1 is not None:  # the angle its velocity turns through
                     out[f"delta_{b}"] = (symbol(f"delta_{b}"), sympy.atan2(abs(n1 * t - t1 * n), n1 * n + t1 * t))
