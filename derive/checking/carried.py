@@ -244,7 +244,7 @@ def given_negated(trace: Trace, bad: Pair) -> bool:
             continue
         world = solve_world(equations, trace.U, trace.pts, trace.truth)
         held = world is not None and (trace.holds([bad], world) or _named_negated(trace, bad, g.symbol, -value, world))
-        if held and signslips.keeps_own(trace, world):
+        if held and signslips.keeps_own(trace, world, g.symbol):
             trace.variant, trace.world, trace.equations = variant, world, equations
             return True
     return False

@@ -30,6 +30,7 @@ from derive.checking import (
     rounding,
     sidepairs,
     slipnames,
+    slipquantity,
     slipworld,
     termslips,
     twobefore,
@@ -56,7 +57,6 @@ SOLVING = termslips.SOLVING  # algebra, arithmetic: a line worked wrongly from t
 WORKING = termslips.WORKING  # a line whose rule holds but whose working does not come to what it claims
 COPIED = slipnames.COPIED
 KEPT = 0  # the slip is in a result worked from the velocities, not in the equations: none is replaced
-
 
 MAX_LINES = 200  # the most relations of one derivation that are judged (the rest are not checked)
 MAX_SEARCHED = 12  # the slips searched for a common mistake (the rest are named as further slips)
@@ -322,7 +322,7 @@ class Trace(Carrying):
                     name = workedslips.sign_over_number(self, bad, name, held)  # a sign lost in letters
                     why = WORKING if name == "arithmetic" else slipnames.FLIPPED[name]
                 return diags, None, why, name
-            found = None if name else carried.unnamed(self, line, bad, world, j)
+            found = slipquantity.unnamed(self, line, bad, world, j, name)
             if found is not None:  # a given copied wrongly, a velocity's sign or a term's lost
                 return (diags, *found)
             return diags, j, *eliminated.named(self, bad, name)  # or the step from two relations combined

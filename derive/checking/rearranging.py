@@ -16,7 +16,8 @@ import re
 import sympy
 
 from derive.checking.relations import coefficients, functions_as_letters, proportional
-from derive.checking.worlds import Pair
+from derive.checking.worlds import NUMBER_SIDE, Pair
+from derive.mathtext.notation import student
 
 #: The factors an unknown's term is taken with wrongly: its ½ dropped, or doubled.
 FACTORS = (sympy.Integer(2), sympy.Rational(1, 2))
@@ -28,7 +29,7 @@ def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     letter lost or gained in one term of what the unknown comes to; ``arithmetic`` where a
     whole number's division was not done (:func:`undivided`); "" otherwise."""
     tol = max(bad.tol, 1e-9)
-    if undivided(bad, held, U, pt) or divided_wrongly(bad, held, U, pt):
+    if undivided(bad, held, U, pt) or divided_wrongly(bad, held, U, pt) or number_negated(bad, held, U, pt):
         return "arithmetic"
     for variant in _variants(held, bad, set(U)):
         if proportional(bad.difference, variant, U, [pt], tol) and termwise(bad.difference, variant, U, pt, tol):
@@ -36,6 +37,25 @@ def kind(bad: Pair, held: Pair, U: tuple, pt: dict) -> str:
     if _letter_lost(bad.difference, held.difference, U):
         return "algebra"
     return ""
+
+
+def number_negated(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
+    """Whether ``bad`` is ``held`` with its terms in the unknowns as they were and the number they
+    come to written as one number with its sign lost (``20 v = 0.5`` from ``10 = 20 v + 10.5``,
+    10 − 10.5 = −0.5): every term treated alike and a number worked wrongly, arithmetic, as the
+    teachers of the corpus name it (the same line is also the unknown's term with its sign lost,
+    a step no one takes who keeps that term where it was). Only where ``bad`` writes that side as
+    one number: the working shown (``20 v = 10.5 − 10``) is a step of its own."""
+    unknowns = set(U)
+    if not any(NUMBER_SIDE.match(student(s.strip(" $"))) for s in bad.text.split("=")):
+        return False
+    F = sympy.expand(held.difference.xreplace(pt))
+    terms = sympy.Add.make_args(F)
+    inside = sum((t for t in terms if t.free_symbols & unknowns), sympy.Integer(0))
+    k = F - inside
+    if not inside or not k or k.free_symbols or inside.free_symbols - unknowns:
+        return False
+    return proportional(bad.difference.xreplace(pt), inside - k, U, [pt], max(bad.tol, 1e-9))
 
 
 def termwise(F: sympy.Expr, G: sympy.Expr, U: tuple, pt: dict, tol: float) -> bool:

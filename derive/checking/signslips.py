@@ -48,9 +48,15 @@ def negated_in_one(trace: Trace, bad: Pair) -> int | None:
     return next(iter(found)) if len(found) == 1 else None
 
 
-def keeps_own(trace: Trace, world: list) -> bool:
+def keeps_own(trace: Trace, world: list, given=None) -> bool:
     """Whether the student's own relations that held so far (in the unknowns) hold in ``world``
     too: a velocity reversed in every equation that makes the student's laws just written false
     (``u = v_A + v_B``, ``v_B - v_A = eu``, then ``2v_A = eu - u`` from their difference) is not
-    the slip; the signs lost in combining them are (algebra)."""
-    return all(trace.holds([p], world) for p in trace.held[-12:])
+    the slip; the signs lost in combining them are (algebra). A relation that writes the given
+    taken the other way (``given``) by its name (``m_A v_A2 + m_B v_B2``) holds whatever its value
+    is: it is not put to ``world``."""
+
+    def named(p) -> bool:
+        return given is not None and p.raw is not None and any(given in x.free_symbols for x in p.raw)
+
+    return all(trace.holds([p], world) for p in trace.held[-12:] if not named(p))

@@ -5,8 +5,13 @@ student wrote, and looks nearest first: where the line works on the relation jus
 which holds (the physics written right) with its numbers in (no given's letter left to put
 in), and a slip of algebra in that step reproduces it (a number moved across with its sign
 kept, a sign, a factor or a letter lost: :func:`.slipnames.solving_slip`), the slip is that
-step's, ``algebra``, even where its result is also what a common mistake gives. (A number
-worked wrongly on the way is left to the mistakes: a given's sign lost there is ``b_sign``.)
+step's, ``algebra``, even where its result is also what a common mistake gives. A number
+worked wrongly on the way is left to the mistakes, but for a velocity's sign: where the line
+before wrote it with its sign right (``4(72.505) + 3(−19.101)``) and this line's number comes
+out as if it were not (``= 347.32``, the 57.30 added), the sign was lost in the working, not
+in taking the velocity, and the slip is ``arithmetic``, as the corpus's teachers name it
+(xh12; mb07, za11 worked on one line); a velocity first put in with its sign lost stays
+``b_sign``.
 In an elastic collision with B at rest, ``m_A(u − v) = m_B V`` worked as ``m_B V = m_A u +
 m_A v`` always gives m_B = m_A, the value of the masses swapped; the line before shows the
 masses where they belong. The order of preference is: the step from the
@@ -41,7 +46,8 @@ def step_first(trace, line, bad: Pair, found: Explained) -> Explained:
     if letters or not all(p.raw is not None and held(p) for p in previous):  # numbers put in: not a step
         return found
     name = slipnames.solving_slip(line.sides, trace.pairs(line), trace.previous, (trace.U, trace.pts[0]), held)
-    if name != "algebra":  # a given's sign lost on the way is b_sign, weights for masses weight_as_mass
+    signs = all(d.mistake == "b_sign" for d in found[0])  # the sign written right just before: not taken again
+    if name != "algebra" and not (name == "arithmetic" and signs):  # weights for masses: weight_as_mass
         return found
     j = found[1] if found[1] in trace.equations else trace._closest(bad.difference)  # not a mistake's world kept
     return (), j, SOLVING[name], name
