@@ -55,3 +55,31 @@ def test_givens_typed_tight_a_space_apart_are_separate_relations() -> None:
     assert [p.strip() for p in split_relations("masses mA=2 mB=1 e=0.5")] == ["masses mA=2", "mB=1", "e=0.5"]
     assert split_relations("v=2u=8") == ["v=2u=8"]
 
+
+def test_a_chains_data_before_the_working_is_not_marked_in_the_students_own_names() -> None:
+    # A at 3 m/s, B at 1.5 m/s toward A, after: A on at 2, B back at 2.9 (A's way positive):
+    # u_B is the chain's name of B's velocity after, but here the student's B before, -1.5.
+    # CLM: 3 m_A - 0.3 = 2 m_A + 0.58 -> m_A = 0.88 kg
+    work = (
+        "Take A's initial direction as positive.\n"
+        "Before the collision: u_A = 3, u_B = -1.5. After it: v_A = 2, v_B = 2.9.\n"
+        "3m_A + 0.2(-1.5) = 2m_A + 0.2(2.9)\nm_A = 0.88 kg\n"
+    )
+    assert _statuses("chain-ocr-m2-2011-find-e-mass-then-wall", work) == ["correct"] * 3
+
+
+def test_a_chains_given_with_its_sign_lost_on_a_data_line_is_still_the_slip() -> None:
+    # B moves toward A: with A's way positive B's velocity before is -1.5, not 1.5; and 2 is no B's
+    for number in ("1.5", "2"):
+        work = f"Take A's initial direction as positive.\nBefore the collision: u_A = 3, u_B = {number}.\n"
+        assert _statuses("chain-ocr-m2-2011-find-e-mass-then-wall", work)[0] == "wrong", number
+
+
+def test_a_law_quoted_after_a_label_and_colon_with_its_letters_is_not_marked() -> None:
+    # dropped from 2 m: v^2 = 2(9.8)(2) = 39.2, v = 6.261; it rises to 1.4 m: u^2 = 2(9.8)(1.4) =
+    # 27.44, u = 5.238, so 0 = 5.24^2 - 2(9.8)h gives h = 1.40 m
+    work = (
+        "Down +ve: u = 0, a = 9.8, s = 2\nv^2 = 0 + 2(9.8)(2) = 39.2\nv = 6.26 m/s\n"
+        "Part (b) Up +ve: v^2 = u^2 + 2as where v = 0, u = 5.24, a = -9.8\n0 = 5.24^2 - 2(9.8)h\nh = 1.40 m\n"
+    )
+    assert _statuses("chain-ocr-m2-2006-drop-rebound", work) == ["correct"] * 5
