@@ -83,3 +83,10 @@ def test_a_law_quoted_after_a_label_and_colon_with_its_letters_is_not_marked() -
         "Part (b) Up +ve: v^2 = u^2 + 2as where v = 0, u = 5.24, a = -9.8\n0 = 5.24^2 - 2(9.8)h\nh = 1.40 m\n"
     )
     assert _statuses("chain-ocr-m2-2006-drop-rebound", work) == ["correct"] * 5
+
+
+def test_a_result_stated_first_at_a_givens_value_is_judged() -> None:
+    # A 0.3 kg at 3 m/s, B 0.2 kg at 2 m/s toward A, e = 0.8: after, v_A = -0.6 and v_B = 3.4;
+    # B's -2 is its velocity before, and v_B2 names B's after: a result, wrong, not the data
+    work = "v_B2 = -2 m/s\n"
+    assert _statuses("aqa-m3-2007-spheres-approach-head-on", work) == ["wrong"]

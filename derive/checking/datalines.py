@@ -11,7 +11,9 @@ and is judged as any line is.
 velocity (the student's positive the other way) compares the givens turned round too. A name
 written with a component's mark (``u_{Bn}``, ``vAx``) in an oblique impact is compared with the
 components the problem gives, never with a speed (``u_{Bn} = 3`` for B at 3 m/s toward A is the
-sign slip). "Before the working": every relation on the lines before it states a value too.
+sign slip). "Before the working": every relation on the lines before it states a value too. A name read as an
+unknown of the problem (``v_B2 = 4 m/s`` first, where B's 4 m/s is its speed before) states a
+result, not the data, and is judged.
 """
 
 from __future__ import annotations
@@ -56,12 +58,15 @@ def _named(x: sympy.Expr) -> tuple[int, sympy.Symbol, bool] | None:
     return None
 
 
-def exact_given(ctx: Any, r: Any) -> bool:
+def exact_given(ctx: Any, r: Any, unknowns: set) -> bool:
     """Whether the relation's value is a given's, exactly (to the figures written), of the same
-    kind and body as each name is read, in the sign the name is read with."""
+    kind and body as each name is read, in the sign the name is read with. A name read as one of
+    the problem's ``unknowns`` (``v_B2 = 4`` where B's 4 m/s is before) claims a result: judged."""
     last = r.exprs[-1]
     if not last.is_number:  # a given's letter: of the names' kind
         return all(kind_of(ctx, _named(x)[1]) == kind_of(ctx, last) is not None for x in r.exprs[:-1])
+    if any(_named(x)[1] in unknowns for x in r.exprs[:-1]):
+        return False
     written = written_number(r.sides[-1].strip())
     value, half = written if written is not None else (float(last), 1e-9)
     return all(_matches(ctx, x, r.sides[i], value, half) for i, x in enumerate(r.exprs[:-1]))

@@ -50,7 +50,7 @@ def restates_givens(trace: Any, line: Any, lines: Sequence[Any], typed: list[str
     if line.exprs is None or line.defines or not 0 < line.number <= len(typed):
         return False
     if _HEADER.match(typed[line.number - 1]) is None:  # elsewhere only the data's exact value (datalines)
-        return data_line(trace.ctx, line, lines) and exact_given(trace.ctx, line)
+        return data_line(trace.ctx, line, lines) and exact_given(trace.ctx, line, set(trace.U))
     return _given(trace.ctx, line)
 
 
