@@ -19,6 +19,7 @@ import sympy
 from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
+from derive.checking.chaindata import given_said
 from derive.checking.chainhabits import habit_names
 from derive.checking.chainreadings import as_written
 from derive.checking.chainroots import worked_wrong
@@ -34,7 +35,6 @@ from derive.checking.report import Item, merged
 from derive.checking.slipnames import COPIED, copied_into_working
 from derive.checking.stageslips import (
     StageMistakes,
-    given_turned,
     named_arithmetic,
     numbers_written,
     own_root,
@@ -89,7 +89,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
             own.define(ctx, name, (sides, exprs), (true_defs, own_defs), values, _number)
             exprs, sides = own.defined_rest(name[0], (exprs, sides), (true_defs, slips), _number, own.from_givens(ctx))
         sides, exprs = _known_sides(sides, exprs, set(true_defs))
-        if stage_given(ctx, exprs) or given_turned(ctx, r.written, exprs, (true_defs, values)):  # e; a = -9.8, up +
+        if stage_given(ctx, exprs) or given_said(ctx, (r, read), exprs, (true_defs, values)):  # e; a = -9.8, up +
             items.append(
                 Item("line", str(r.line), r.written, "correct", "", "A given of a stage.", "the chain's values")
             )

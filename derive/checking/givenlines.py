@@ -6,6 +6,8 @@ to the value of a given of the same kind (to the figures written, either sign: t
 positive is their own) restates it, and is not marked. A number there that is no given's value of
 that kind (``(v_A)_1 = 5`` where A moves at 6 m/s) is a given copied wrongly, and is judged as any
 line is.
+Without a header, a line of data before the working is a restatement only at a given's exact value
+(:mod:`.datalines`).
 """
 
 from __future__ import annotations
@@ -15,10 +17,9 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
-import sympy
-
+from derive.checking.datalines import data_line, exact_given, kind_of
 from derive.checking.restated import written_number
-from derive.problem.units import ANGLE, VELOCITY
+from derive.problem.units import ANGLE
 
 #: A line that says it lists the givens.
 _HEADER = re.compile(
@@ -48,8 +49,8 @@ def restates_givens(trace: Any, line: Any, lines: Sequence[Any], typed: list[str
     from A toward B``, then ``u = -4``), is a sign slip."""
     if line.exprs is None or line.defines or not 0 < line.number <= len(typed):
         return False
-    if _HEADER.match(typed[line.number - 1]) is None:
-        return False  # elsewhere a name set to a number against a declared way is a sign slip ("u = -4")
+    if _HEADER.match(typed[line.number - 1]) is None:  # elsewhere only the data's exact value (datalines)
+        return data_line(trace.ctx, line, lines) and exact_given(trace.ctx, line, set(trace.U))
     return _given(trace.ctx, line)
 
 
@@ -68,7 +69,7 @@ def _given(ctx: Any, r: Any) -> bool:
     its first name is read as (a mass for a mass, a velocity for a velocity)."""
     if not _stated(r) or r.exprs is None:
         return False
-    kinds = {_kind(ctx, x) for x in r.exprs[:-1]}
+    kinds = {kind_of(ctx, x) for x in r.exprs[:-1]}
     if len(kinds) != 1 or None in kinds:
         return False
     kind = kinds.pop()
@@ -80,13 +81,3 @@ def _given(ctx: Any, r: Any) -> bool:
         if size and abs(abs(value) - size) <= half:
             return True
     return False
-
-
-def _kind(ctx: Any, x: sympy.Expr) -> Any:
-    """The kind (dimension) of the quantity ``x`` is read as: a given's own, a velocity's."""
-    if not isinstance(x, sympy.Symbol):
-        return None
-    for g in ctx.problem.givens:
-        if g.symbol == x:
-            return getattr(g, "dim", None)
-    return VELOCITY if re.fullmatch(r"v_[AB][12][nt]?|u_[AB]|v_[AB]", x.name) else None

@@ -38,11 +38,12 @@ _LAWS = frozenset(
 
 def quoted_law(sides: tuple[str, ...]) -> bool:
     """Whether a relation of two sides is a law of motion quoted in its textbook letters (either
-    side first), after words that lead to it or not (``using v^2 = u^2 + 2as``): a formula stated
-    before it is used."""
+    side first), after words that lead to it or not (``using v^2 = u^2 + 2as``), or after a label
+    and a colon (``(iii) Upwards positive: v^2 = u^2 + 2as``): a formula stated before it is used."""
     if len(sides) != 2:
         return False
-    sides = (re.sub(r"^\s*(?:[A-Za-z]{2,}[,:]?\s+)+", "", sides[0]), sides[1])  # "using v^2 = …": words before it
+    lead = re.sub(r"^[^=]*:\s*", "", sides[0])  # "(iii) Upwards positive: v^2 = …": a label before a colon
+    sides = (re.sub(r"^\s*(?:[A-Za-z]{2,}[,:]?\s+)+", "", lead), sides[1])  # "using v^2 = …": words before it
     plain = [re.sub(r"[\s*·×]", "", s).replace("²", "^2").replace("½", "1/2").replace("(1/2)", "1/2") for s in sides]
     return f"{plain[0]}={plain[1]}" in _LAWS or f"{plain[1]}={plain[0]}" in _LAWS
 

@@ -49,6 +49,7 @@ def split_relations(plain: str) -> list[str]:
     plain = UNIT_THEN_NAME.sub(_two_givens, plain)  # "m_p = 0.150kg v=35.0 m/s": two givens
     plain = _VERB_THEN_NAME.sub(" ; ", plain)  # "m_2 = 7500 kg has v_2i = 0": two givens, the verb dropped
     plain = GAP_THEN_NAME.sub(r"\1 ; ", plain)  # "x = 2      y = 3": side by side
+    plain = _TIGHT_THEN_NAME.sub(r"=\1 ; ", plain)  # "ma=5 mb=3 e=3/4": givens listed, a space apart
     plain = arrows_said(html_marks(plain))  # v<sub>A</sub>; "(+→)": a convention; "= 1.6 m/s ←": to the left
     for chunk in _arrow_split(plain):
         for piece in _top_level_split(chunk, ";"):
@@ -68,6 +69,12 @@ _VERB_THEN_NAME = re.compile(
     r"\s+(?=[A-Za-z]\w{0,5}\s*=(?!=))",
     re.I,
 )
+
+
+#: A name typed against its "=" and a number against it, a space, then another name against its
+#: "=" (``ma=5 mb=3 e=3/4``, phone-typed givens): two relations, not ``mb = 3e``; a product is typed
+#: with its factors together (``v=2u=8``).
+_TIGHT_THEN_NAME = re.compile(r"(?<=[\w)'])=([-+]?\d[\d.]*(?:/\d+)?)\s+(?=[A-Za-z]\w{0,5}'*=[^=\s])")
 
 
 def _remarks_apart(plain: str) -> str:
