@@ -19,9 +19,9 @@ import sympy
 from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
+from derive.checking.chaincarried import from_wrong
 from derive.checking.chainhabits import habit_names
 from derive.checking.chainreadings import as_written
-from derive.checking.chainroots import worked_wrong
 from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
@@ -103,8 +103,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
-        if item.status == "correct" and slips and worked_wrong(sides, wrong, (r.line, read, mapping, items)):
-            item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
+        if item.status == "correct" and from_wrong(ctx, (sides, exprs), (wrong, r.line, read, mapping), done, defs):
+            item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number; V = 1.50
         if item.status == "carried":  # 0 = v2^2 - 2(9.8)(30): the given copied wrongly again
             at, names_in = partial(_holds, ctx, subs=[true_defs, values]), partial(_names_in, read)
             item = copied_again(ctx, item, sides, items, reread, at, names_in)

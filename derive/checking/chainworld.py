@@ -207,3 +207,13 @@ def _conditions(ctx, values: dict, known: dict) -> list[sympy.Expr]:
         if eq.free_symbols and all(str(s) in by_name for s in eq.free_symbols):
             out.append(eq)
     return out
+
+
+def student_values(ctx, rels: list, values: dict, true_defs: dict) -> dict[sympy.Symbol, sympy.Expr]:
+    """The chain's unknowns as the student's relations ``rels`` (from the first slip on) fix them,
+    where they fix them one way only; {} otherwise."""
+    known = _known(ctx, values)
+    names = {str(k) for k in values if k not in known} | {str(p) for p in true_defs}
+    base = _conditions(ctx, values, known) + _aliases(true_defs, values, known)
+    worlds = _worlds(ctx, rels, base, known, names)
+    return worlds[0] if len(worlds) == 1 else {}
