@@ -46,7 +46,7 @@ from derive.checking.stageslips import (
     stage_mistakes,
     unnamed_number,
 )
-from derive.checking.suvat import fall_letters
+from derive.checking.stations import opening_letters
 from derive.checking.termslips import halved, term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
@@ -64,7 +64,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     said |= (
         impulse := impulse_said(ctx, read, said)
     )  # "impulse = m(v - u) = …": the impact's J, not a name it defines
-    read, notes = fall_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))  # u, v, s
+    read, notes = opening_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
