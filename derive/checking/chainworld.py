@@ -18,6 +18,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.chainnames import at
+from derive.checking.chainsteps import from_wrong_step, rounded_on
 from derive.checking.numeric import number_of
 from derive.checking.report import Item
 from derive.errors import InputError
@@ -37,6 +38,8 @@ def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple
     (sides, exprs), (holds, reread) = line, how
     items, written, slips = done
     values, true_defs, own_defs, _stages = defs
+    if item.status == "wrong" and slips and slips[-1] == item.name:  # d = 15.34^2/25.76, 15.34 for 15.3325
+        item = rounded_on(item, (sides, exprs), (values, _known(ctx, values), true_defs, own_defs), how, slips)
     if item.status != "wrong" or len(slips) < 2 or slips[-1] != item.name:
         return item
     first = next((k for k, it in enumerate(items) if it.status == "wrong"), None)
@@ -53,47 +56,12 @@ def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple
     later = later_stages(ctx, own_defs, values, known)  # h_2 from the student's V: the rise worked from it
     if later and holds(exprs, [{**later, **own_defs}, values]):
         return _carried(item, slips)
-    if _from_wrong_step(sides, exprs, written, (values, true_defs), (holds, reread)):  # sqrt(25 + 3.136)
+    if from_wrong_step(sides, exprs, written, (values, true_defs), (holds, reread)):  # sqrt(25 + 3.136)
         return _carried(item, slips)
     fixed = _put_right(sides, own_defs, values, reread)
     if fixed is not None and holds(fixed, [true_defs, values]):  # 900 = 4.02(9.81)h, 900 the student's KE after
         return _carried(item, slips)
     return item
-
-
-def _from_wrong_step(sides, exprs: list, written: list, defs: tuple, how: tuple) -> bool:
-    """``v_2 = sqrt(25 + 3.136) = sqrt(28.136) = 5.304`` after ``2 g h_0 = 2(9.8)(1.6) = 3.136`` (a
-    slip: 31.36): a value worked by the right rule from a step the student got wrong is carried.
-    The step is an earlier relation whose first side has no unknown and whose last number is not
-    its value; the rule holds with the step's true value put back in the first working side, and
-    the working as the student has it holds too."""
-    (values, true_defs), (holds, reread) = defs, how
-    if len(exprs) < 3 or any(x.free_symbols for x in exprs[1:]):
-        return False
-    steps = {}
-    for rel in written:
-        first = at(rel[0], values) if len(rel) >= 2 else None
-        theirs, true = (
-            number_of(rel[-1]) if first is not None else None,
-            number_of(first) if first is not None else None,
-        )
-        if theirs is not None and true is not None and abs(theirs - true) > 1e-3 * max(abs(true), 1e-9):
-            steps[theirs] = true
-
-    def true_of(m: re.Match) -> str:
-        x, half = float(m.group(0)), 0.5 * 10 ** -len(m.group(0).partition(".")[2])
-        hit = next((t for v, t in steps.items() if abs(v - x) <= half), None)
-        return m.group(0) if hit is None else f"({hit!r})"
-
-    fixed_text = _NUMBER.sub(true_of, sides[1])
-    if not steps or fixed_text == sides[1]:
-        return False
-    try:
-        fixed = reread(fixed_text)
-    except (ParseError, ValueError, TypeError, ArithmeticError):
-        return False
-    rule = [exprs[0]] + [fixed] * (len(exprs) - 1)
-    return bool(holds(rule, [true_defs, values])) and bool(holds([exprs[1], *exprs[1:]], [true_defs, values]))
 
 
 def later_stages(ctx, own_defs: dict, values: dict, known: dict) -> dict[sympy.Symbol, sympy.Expr]:
