@@ -38,7 +38,7 @@ def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple
     (sides, exprs), (holds, reread) = line, how
     items, written, slips = done
     values, true_defs, own_defs, _stages = defs
-    if item.status == "wrong" and slips and slips[-1] == item.name:  # d = 15.34^2/25.76, 15.34 for 15.3325
+    if item.status == "wrong" and slips == [item.name]:  # the first slip: d = 15.34^2/25.76, 15.34 for 15.3325
         item = rounded_on(item, (sides, exprs), (values, _known(ctx, values), true_defs, own_defs), how, slips)
     if item.status != "wrong" or len(slips) < 2 or slips[-1] != item.name:
         return item
