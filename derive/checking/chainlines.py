@@ -19,10 +19,10 @@ import sympy
 from derive.checking import chainfit, chainletters, chainnames, chainsolve, mistakes, principles, substitutions, words
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
+from derive.checking.chaincarried import from_wrong
 from derive.checking.chaindata import given_said
 from derive.checking.chainhabits import habit_names
 from derive.checking.chainreadings import as_written
-from derive.checking.chainroots import worked_wrong
 from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
@@ -46,7 +46,7 @@ from derive.checking.stageslips import (
     stage_mistakes,
     unnamed_number,
 )
-from derive.checking.suvat import fall_letters
+from derive.checking.stations import opening_letters
 from derive.checking.termslips import halved, term_slip
 from derive.checking.worlds import NUMBER_SIDE, number_at_figures
 from derive.mathtext.notation import student
@@ -64,7 +64,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     said |= (
         impulse := impulse_said(ctx, read, said)
     )  # "impulse = m(v - u) = …": the impact's J, not a name it defines
-    read, notes = fall_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))  # u, v, s
+    read, notes = opening_letters(ctx, read, names, said, partial(_holds_with, ctx, subs={}, values=values))
     mapping, later = _infer(ctx, read, values, said), own.solved_somewhere(read)  # later: F = 3010 a, then F = …
     mapping |= own.paired(read, mapping, values, partial(_holds_with, ctx, values=values), later | _introduced(read))
 
@@ -103,8 +103,8 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and len(slips) > 1 and numbers_written(sides, set()) & wrong:  # 8.92 = 39.44 h
             holds = partial(_holds, ctx, sides, subs=[true_defs, values])
             item = own.carried_on(item, sides, exprs, (true_defs, own_defs, values), holds, (slips, _carried, reread))
-        if item.status == "correct" and slips and worked_wrong(sides, wrong, (r.line, read, mapping, items)):
-            item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number
+        if item.status == "correct" and from_wrong(ctx, (sides, exprs), (wrong, r.line, read, mapping), done, defs):
+            item = replace(item, status="carried", message=_carried(slips))  # worked from a wrong number; V = 1.50
         if item.status == "carried":  # 0 = v2^2 - 2(9.8)(30): the given copied wrongly again
             at, names_in = partial(_holds, ctx, subs=[true_defs, values]), partial(_names_in, read)
             item = copied_again(ctx, item, sides, items, reread, at, names_in)

@@ -9,6 +9,8 @@ with it (``u = 13849/910 = 15.22``) is right only in the student's world: carrie
 
 from __future__ import annotations
 
+from decimal import ROUND_HALF_UP, Decimal, InvalidOperation
+
 import sympy
 
 from derive.checking.naming import PREFIX
@@ -20,7 +22,19 @@ def worked_wrong(sides: tuple[str, ...], wrong: set[str], where: tuple[int, list
     """Whether a chain's line right for the problem is worked from a number the student got wrong
     (``wrong``, written in its ``sides``) or uses a name solved from a wrong or carried relation
     (:func:`solved_from_wrong`, ``where`` = its line, the relations read, the names, the items)."""
-    return bool(numbers_written(sides, set(), working=True, small=True) & wrong) or solved_from_wrong(*where)
+    used = numbers_written(sides, set(), working=True, small=True)
+    return bool(used & wrong) or any(more_figures(x, w) for x in used for w in wrong) or solved_from_wrong(*where)
+
+
+def more_figures(x: str, w: str) -> bool:
+    """Whether ``x`` is the number ``w`` (of three figures or more) to more decimals: ``7.3756`` is
+    ``7.38`` unrounded, the student's note of the value they carry on."""
+    try:
+        a, b = Decimal(x), Decimal(w)
+    except InvalidOperation:
+        return False
+    places, figures = -b.as_tuple().exponent, len(w.replace(".", "").lstrip("-+0"))
+    return -a.as_tuple().exponent > places >= 0 and figures >= 3 and a.quantize(b, ROUND_HALF_UP) == b
 
 
 def solved_from_wrong(line: int, read: list, mapping: dict, items: list[Item]) -> bool:

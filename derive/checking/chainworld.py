@@ -18,6 +18,7 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.chainnames import at
+from derive.checking.chainsteps import from_wrong_step, rounded_on
 from derive.checking.numeric import number_of
 from derive.checking.report import Item
 from derive.errors import InputError
@@ -37,6 +38,8 @@ def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple
     (sides, exprs), (holds, reread) = line, how
     items, written, slips = done
     values, true_defs, own_defs, _stages = defs
+    if item.status == "wrong" and slips == [item.name]:  # the first slip: d = 15.34^2/25.76, 15.34 for 15.3325
+        item = rounded_on(item, (sides, exprs), (values, _known(ctx, values), true_defs, own_defs), how, slips)
     if item.status != "wrong" or len(slips) < 2 or slips[-1] != item.name:
         return item
     first = next((k for k, it in enumerate(items) if it.status == "wrong"), None)
@@ -52,6 +55,8 @@ def own_world(ctx, item: Item, line: tuple, done: tuple, defs: tuple, how: tuple
             return _carried(item, slips)
     later = later_stages(ctx, own_defs, values, known)  # h_2 from the student's V: the rise worked from it
     if later and holds(exprs, [{**later, **own_defs}, values]):
+        return _carried(item, slips)
+    if from_wrong_step(sides, exprs, written, (values, true_defs), (holds, reread)):  # sqrt(25 + 3.136)
         return _carried(item, slips)
     fixed = _put_right(sides, own_defs, values, reread)
     if fixed is not None and holds(fixed, [true_defs, values]):  # 900 = 4.02(9.81)h, 900 the student's KE after
@@ -207,3 +212,13 @@ def _conditions(ctx, values: dict, known: dict) -> list[sympy.Expr]:
         if eq.free_symbols and all(str(s) in by_name for s in eq.free_symbols):
             out.append(eq)
     return out
+
+
+def student_values(ctx, rels: list, values: dict, true_defs: dict) -> dict[sympy.Symbol, sympy.Expr]:
+    """The chain's unknowns as the student's relations ``rels`` (from the first slip on) fix them,
+    where they fix them one way only; {} otherwise."""
+    known = _known(ctx, values)
+    names = {str(k) for k in values if k not in known} | {str(p) for p in true_defs}
+    base = _conditions(ctx, values, known) + _aliases(true_defs, values, known)
+    worlds = _worlds(ctx, rels, base, known, names)
+    return worlds[0] if len(worlds) == 1 else {}

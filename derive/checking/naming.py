@@ -193,8 +193,9 @@ def rewrite(text: str, known: set[str]) -> str:
             return " ".join(letters)  # mv_Q: m times the student's own v_Q
         if re.fullmatch(r"\d[A-Z]", sub) and f"{head}_{sub[0]}" in known:  # e_1U: e_1 times U (not v_1i, v_1f)
             return f"{head}_{sub[0]} {sub[1]}"
-        if len(word) == 2 and word[0] in known and word[1].isdigit():  # e1: e_1, or the one e (not e times 1)
-            return f"{word[0]}_{word[1]}" if f"{word[0]}_{word[1]}" in known else word[0]
+        if len(word) == 2 and word[0] in known and word[1].isdigit():  # e1: e_1, or the one e; x0: x at the start
+            sub = f"{word[0]}_{word[1]}"
+            return sub if sub in known else word if word[1] == "0" else word[0]
         if len(word) == 2 and word[0] in known and not _SHORT_WORDS.fullmatch(word.lower()) and word not in GREEK:
             return " ".join(letters)  # gh: g times the student's own h
         return word
@@ -270,9 +271,8 @@ FUNCTION_WORDS = frozenset(
 
 
 def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
-    """One side of a relation in the problem's symbols (placeholders for unknown names); where
-    it does not read, the first side is read without its leading words and the last without
-    its trailing ones (prose around the mathematics)."""
+    """One side of a relation in the problem's symbols (placeholders for unknown names); where it does
+    not read, the first side without its leading words, the last without its trailing ones (prose)."""
     if last:  # "e = 3/4. α is the angle …": the sentence ends at the number
         text = re.split(r"(?<=\d)\.\s+(?=[^\d\s.])", text, maxsplit=1)[0]
     try:

@@ -165,7 +165,7 @@ def own_root(exprs: list[sympy.Expr], values: dict, own_defs: dict, given: set) 
 
 
 #: A side that is a number alone, perhaps with its unit (``5 m/s``): a line's result.
-RESULT = re.compile(r"\s*[-+]?\d+(?:\.\d+)?\s*[A-Za-z/ ]*")
+RESULT = re.compile(r"\s*[-+]?\d+(?:\.\d+)?\s*(?:[A-Za-z/ ]|\^\s*-?\d|[²³⁻¹])*")  # a unit with its powers: m^2/s^2
 
 
 def numbers_written(

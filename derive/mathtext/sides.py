@@ -11,6 +11,8 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from derive.mathtext.units import UNIT
+
 #: A subscript or power in braces typed in plain text (``v_{A2} = 4``, ``u^{2}``), as it is in LaTeX.
 _BRACED = re.compile(r"([_^])\{\s*([A-Za-z0-9]{1,6}|-?\d{1,3})\s*\}")
 
@@ -130,10 +132,21 @@ _UNIT_MID = re.compile(
 )
 
 
+#: A compound unit after a number inside a side (``2(9.8 m/s^2)(1.6 m)``): a line that writes its units.
+_COMPOUND_MID = re.compile(rf"(?<=\d)\s*(?:{UNIT.pattern})(?=\s*(?:[-+−×*](?!\s*$)|\)))")
+#: A length alone after a number closing a bracket (``(1.6 m)``), in a line that writes its units.
+_LENGTH_MID = re.compile(r"(?<=\d)\s+(?:m|ft)(?=\s*\))")
+
+
 def units_inside(text: str) -> str:
     """``text`` without the unit after a number that an operator or a bracket follows (a
-    thousand kilograms, ``Mg`` or tonnes, written as the factor of the SI unit: ``20*1000``)."""
-    return _UNIT_MID.sub(lambda m: "*1000" if m[1] else "", text)
+    thousand kilograms, ``Mg`` or tonnes, written as the factor of the SI unit: ``20*1000``);
+    in a line that writes a compound unit inside it (``(9.8 m/s^2)``), a length alone in brackets
+    after a number (``(1.6 m)``) is metres too, not a mass m."""
+    text = _UNIT_MID.sub(lambda m: "*1000" if m[1] else "", text)
+    if _COMPOUND_MID.search(text):
+        text = _LENGTH_MID.sub("", _COMPOUND_MID.sub("", text))
+    return text
 
 
 #: A direction in words after a number (``= 1.04 m/s to the left``, ``= 2 (backwards)``).

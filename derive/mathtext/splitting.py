@@ -185,7 +185,7 @@ def _comma_split(piece: str) -> list[str]:
 def _top_level_split(s: str, sep: str) -> list[str]:
     out, depth, start = [], 0, 0
     for i, c in enumerate(s):
-        depth += {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0)
+        depth = max(0, depth + {"(": 1, "[": 1, "{": 1, ")": -1, "]": -1, "}": -1}.get(c, 0))  # "3) k=…": a list's mark
         if c == sep and depth == 0:
             out.append(s[start:i])
             start = i + 1

@@ -2,7 +2,7 @@
 
 A speed ``m/s``, ``m s⁻¹``, ``ms^-1``, ``m s^(-1)``, ``ms-1``, ``m·s⁻¹``, ``km/h``, ``km h⁻¹``,
 ``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``kg m s⁻¹``,
-``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
+``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``; a speed squared ``m^2/s^2``; a stiffness ``N/m``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
 A unit of one atom (``J``, ``kg``, ``m``) is left to the caller, which knows whether a lone
 letter (``2 m``: metres, or two times m?) is a unit.
 
@@ -23,7 +23,11 @@ _INVERSE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−
 #: ``/s``, ``/s²``, ``/s^2``, or a time to the power -1 (-2).
 _PER_TIME = rf"(?:\s*/\s*{_TIME}(?:\s*\^\s*\{{?2\}}?|²)?|{_JOIN}{_TIME}{_INVERSE})"
 #: A speed (an acceleration), a momentum, an impulse.
-UNIT = re.compile(rf"(?:(?:kg|lb|slug){_JOIN})?{_LENGTH}{_PER_TIME}|(?:N|lbf?)(?:{_JOIN}|\s*-\s*)s|mph")
+UNIT = re.compile(
+    rf"(?:(?:kg|lb|slug){_JOIN})?{_LENGTH}{_PER_TIME}|(?:N|lbf?)(?:{_JOIN}|\s*-\s*)s|mph"
+    r"|(?:m|ft)(?:\s*\^\s*2|²)\s*/\s*s(?:\s*\^\s*2|²)"  # a speed squared, m^2/s^2 (2gh worked in its units)
+    r"|N\s*/\s*m(?![A-Za-z])"  # a spring's stiffness, N/m
+)
 #: One atom: a unit of its own where the caller says so (``J``, ``kg``, ``kJ``, ``g``).
 ATOM = re.compile(r"kg|Mg|g|kJ|J|N|m|s|km|cm|ft|lb|slug|deg|rad|W")
 #: LaTeX spacing and product signs inside a unit (``m\,s^{-1}``, ``\mathrm{kg}\cdot\mathrm{m}``).
