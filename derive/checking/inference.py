@@ -104,7 +104,7 @@ def read_lines(
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {
         **by_value(ctx, relations, kinded, (pt, truth)),
-        **components(relations, ctx, reserved),
+        **components(relations, ctx, reserved, sign),
         **restated(ctx, relations, reserved),
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
