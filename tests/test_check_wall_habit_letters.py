@@ -19,7 +19,6 @@ from support.checked import wall_30_lines, worst_lines
 
 from derive.checking.conventions import plus_said
 
-
 CUSHION = "edexcel-fm1-2023-june-q7a-cushion-show-tan-beta"
 
 

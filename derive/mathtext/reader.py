@@ -334,7 +334,9 @@ def words_after(text: str) -> str:
 
 
 #: A name in brackets with the instant or component after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_n'``).
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
+_BRACKETED_NAME = re.compile(
+    r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?![^\W¹²³]))"
+)
 
 
 #: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
