@@ -39,3 +39,21 @@ def test_energy_after_in_bracketed_names_squared() -> None:
 def test_energy_after_squared_wrongly_is_still_a_slip() -> None:
     work = "(v_A)_2 = -0.025 m/s\nT_2 = ½(20000)(v_A)_2² + ½(35000)(v_B)_2² = 1750 J\n"
     assert [s for s, _ in worst_lines(CARS, work).values()] == ["correct", "wrong"]
+
+
+#: A mass in a multiple of the SI unit typed in LaTeX's text inside a side, `(20\text{ Mg})`:
+#: 20 000 kg times what follows it, as the plain `(20 Mg)` is, never the product 20·M·g.
+@pytest.mark.parametrize(
+    "typed",
+    [
+        r"$(20\text{ Mg})(0.5\text{ m/s}) + 0 = (20\text{ Mg})(v_A)_2 + (35\text{ Mg})(0.3\text{ m/s})$",
+        r"$(20\,\mathrm{Mg})(0.5) = (20\mathrm{Mg})\,v_{A2} + (35\ \text{Mg})(0.3)$",
+    ],
+)
+def test_latex_megagrams_inside_a_side(typed: str) -> None:
+    assert worst_lines(CARS, typed) == {1: ("correct", "")}
+
+
+def test_latex_megagrams_with_a_slip_in_them() -> None:  # B's 35 Mg copied as 25: 10 000 ≠ −500 + 7500
+    got = worst_lines(CARS, r"$(20\text{ Mg})(0.5) = (20\text{ Mg})(-0.025) + (25\text{ Mg})(0.3)$")
+    assert got[1][0] == "wrong"
