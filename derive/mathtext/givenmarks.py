@@ -94,3 +94,10 @@ def _unless_taken_back(m: re.Match) -> str:
     says which way it points (``-- in the opposite direction to A``)."""
     remark = re.sub(r"^\s*(?:-+|—|–)", "", m.group(0))
     return m.group(0) if _TAKEN_BACK.search(remark) or _DASH_WAY.search(remark) else ""
+
+
+#: A remark after a value set off by an ellipsis or a dash (``… not what they want``, ``-- not 4``,
+#: ``— check``): words, a math word after a dash excepted (``u – sin θ`` typed with an en dash).
+ASIDE = re.compile(
+    r"\s*(?:…|\.{3})\s*(?=[A-Za-z]{2,}\b)|\s+(?:--|—|–)\s*(?!(?:sin|cos|tan|sqrt|pi)\b)(?=not\b|[A-Za-z]{3,}\b)"
+)
