@@ -44,3 +44,17 @@ def test_a_unit_letter_after_a_minus_is_a_quantity(tmp_path) -> None:
     assert wall_30_lines(tmp_path, work) == ["correct", "correct"]
     slipped = "J = 3.75\n0.5(5) - J = 0.5(2.5)\n"  # the rebound's sign lost
     assert wall_30_lines(tmp_path, slipped) == ["correct", "wrong"]
+
+
+#: A conclusion typed on a phone: a body's letter and its speed with no colon, then another result
+#: (``so B 1.5m/s e=0.1``): that body's speed and the other result, as a teacher reads a line of answers.
+@pytest.mark.parametrize(
+    ("line", "verdict"),
+    [
+        ("so A 0.025m/s e=0.65", "correct"),
+        ("ans: B 0.3 m/s, e = 0.65", "correct"),
+        ("so A 0.025 m/s e=0.6", "wrong"),
+    ],
+)
+def test_a_concluded_speed_without_a_colon(line: str, verdict: str) -> None:
+    assert worst_lines(CARS, line + "\n")[1][0] == verdict
