@@ -25,7 +25,7 @@ from derive.mathtext.asides import without_condition, without_convention
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.doing import said_doing
 from derive.mathtext.entities import decoded
-from derive.mathtext.givenmarks import ASIDE, without_doubt, without_given_mark
+from derive.mathtext.givenmarks import without_doubt, without_given_mark
 from derive.mathtext.inline import equals_in_brackets, without_into, words_end_it
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.laws import law_and_letters, quoted_law
@@ -319,7 +319,7 @@ def words_after(text: str) -> str:
     """A relation without the words after its last number (``= 111° anticlockwise from i``,
     ``= 3.45 N s upwards``, ``= 0.64, i.e. 64 %``): they say what the number is."""
     last = text.rfind("=")
-    rest = re.split(ASIDE, text[last + 1 :])[0]  # "= 2u … not what they want", "= 4/13 -- not 4, check?"
+    rest = re.split(r"\s*(?:…|\.{3})\s*(?=[A-Za-z]{2,}\b)", text[last + 1 :])[0]  # "= 2u … not what they want"
     text = text[: last + 1] + without_into(REMARK_END.sub("", rest))  # ", i.e. 64 %", ", into (1)"
     for m in _WORD.finditer(text, last + 1):
         if m.group(0) in MATH_WORDS:
