@@ -73,6 +73,17 @@ def _before_said(r: Relation, name: str) -> bool:
     return _BEFORE_LEAD.search(r.label or r.written[: max(at, 0)]) is not None
 
 
+def _after_by_letter(name: str, sub: str, relations: tuple[Relation, ...]) -> bool:
+    """Whether a component at a wall named by v (or w) and its axis's sign, with no time said
+    (``v_⊥ = ¾ U sin α``, ``v_perp = +14.71`` beside ``u_perp``), is after by the habit's letters:
+    u before, v after. Not where the same name is also written primed (``v_perp'``: the unprimed
+    one is then before) or with a time mark of its own."""
+    if name[0] not in "vwV" or not sub_axis(sub, True):
+        return False
+    primed = re.compile(rf"(?<![\w]){re.escape(name)}(?:_?p\b|')|(?<![\w]){re.escape(name[0])}'_?\{{?{re.escape(sub)}")
+    return not any(primed.search(s) for r in relations for s in r.sides)
+
+
 def _body(side: str, ctx: Context) -> str:
     """The body whose given velocity before the impact the side resolves ("" where none or both)."""
     found = set()
@@ -91,8 +102,12 @@ def _body(side: str, ctx: Context) -> str:
     return found.pop() if len(found) == 1 else ""
 
 
-def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]) -> dict[str, sympy.Expr]:
-    """The names declared as components by the words beside them -> derive's component."""
+def components(
+    relations: tuple[Relation, ...], ctx: Context, reserved: set[str], sign: int = 0
+) -> dict[str, sympy.Expr]:
+    """The names declared as components by the words beside them -> derive's component; ``sign`` the
+    way the text declares positive (0 where none): a rebound named by its axis is then signed in it,
+    not read as a size."""
     if not ctx.problem.oblique:
         return {}
     fixed = bool(ctx.problem.fixed_B)
@@ -106,7 +121,9 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
             continue
         after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
         sub = name.split("_")[-1] if "_" in name else name[1:]
-        said = after or _before_said(r, name)  # v_perp under "After:"; u∥ under "Q b4:", or u's habit
+        before = _before_said(r, name)  # u∥ under "Q b4:", or u's habit
+        after = after or (not before and fixed and _after_by_letter(name, sub, relations))
+        said = after or before  # v_perp under "After:", or v's habit at a wall
         axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if said else "")
         if not axis and after and sub in letters:
             axis = letters[sub]
@@ -117,7 +134,7 @@ def components(relations: tuple[Relation, ...], ctx: Context, reserved: set[str]
         if x is not None:
             if axis == "t" and not after and not r.sides[1].lstrip().startswith("-") and _negative(ctx, x):
                 flips[sub] = -1  # "perp.: w = 15 sin 37.6°": a size, the student's own way across
-            if axis == "n" and after and sub_axis(sub, fixed) and not r.sides[1].lstrip().startswith("-"):
+            if axis == "n" and after and sub_axis(sub, fixed) and not sign and not r.sides[1].lstrip().startswith("-"):
                 x = -x if _negative_after(ctx, x) else x  # "v_perp = eU sin α": the rebound's size
             out.setdefault(name, flips.get(sub, 1) * x if axis == "t" else x)
             letters.setdefault(sub, axis)

@@ -112,10 +112,13 @@ def _size_only(x: object) -> bool:
     return bool(getattr(x, "is_Symbol", False)) and re.fullmatch(r"(?:m|W)(?:_[A-Za-z0-9]+)?|mass", x.name) is not None
 
 
-#: A way declared positive by a bare plus: "(towards wall is +)", "towards the wall = +", "(+ away from the wall)".
+#: A way declared positive by a bare plus: "(towards wall is +)", "towards the wall = +", "(+ away from the wall)",
+#: "Take $+$ = out of the wall" (the plus in inline maths, after a verb of choosing).
 _PLUS_AFTER = re.compile(r"([A-Za-z][A-Za-z'’\s]*?)\s*(?:is|as|=|:)\s*\+(?:\s*ve)?\s*(?=\)|$|[,;.])", re.I)
 _PLUS_BEFORE = re.compile(
-    r"(?:^|[(\[,;])\s*\+(?:\s*ve)?\s*(?:is|=|:|->|→)?\s*((?:to|towards|away|from|in|out)\b[A-Za-z'’\s]*)", re.I
+    r"(?:^|[(\[,;]|\b(?:take|taking|let|choose|choosing|with)\b)\s*\$?\+(?:\s*ve)?\$?\s*(?:is|=|:|->|→|as)?\s*"
+    r"((?:to|towards|away|from|in|out)\b[A-Za-z'’\s]*)",
+    re.I,
 )
 
 

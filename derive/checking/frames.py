@@ -179,7 +179,8 @@ def axes_said(axes: dict[str, tuple[str, int]]) -> list[str]:
 def axis_names(ctx: Context, axes: dict[str, tuple[str, int]], used: set[str]) -> dict[str, sympy.Expr]:
     """With the axes placed in words, ``u_x``, ``v_y``, ``u_Ax`` (u before, v after; x and y the
     student's axes) are derive's components on them, with their signs (``y`` away from a wall:
-    ``u_y`` is -n before). Only the names ``used`` are given."""
+    ``u_y`` is -n before); ``v_x`` beside ``v_x'`` is before, the primed one after. Only the names
+    ``used`` are given."""
     if not axes or not ctx.problem.oblique:
         return {}
     nm = ctx.model.nm
@@ -196,6 +197,9 @@ def axis_names(ctx: Context, axes: dict[str, tuple[str, int]], used: set[str]) -
                 if len(bodies) == 1:
                     spelled |= {f"{base}_{letter}", f"{base}{letter}"}
                 out.update({n: sign * c for n in spelled & used})
+                before = getattr(nm, f"{body}1{axis}", None)
+                for n in spelled & {u[:-2] for u in used if u.endswith("_p")} if before is not None else ():
+                    out[n], out[f"{n}_p"] = sign * before, sign * c  # vx beside vx': before, and after
     return out
 
 

@@ -104,7 +104,7 @@ def read_lines(
     kinded = {**by_letter(relations, reserved), **kinds(relations, text, reserved)}
     valued = {
         **by_value(ctx, relations, kinded, (pt, truth)),
-        **components(relations, ctx, reserved),
+        **components(relations, ctx, reserved, sign),
         **restated(ctx, relations, reserved),
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
@@ -113,7 +113,7 @@ def read_lines(
     relations = tuple(split)
     rewritten: list[tuple[str, ...]] = []
     for r, lb in zip(relations, labels, strict=True):
-        seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b", s)}
+        seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b|\b[uvwV]_?[xy]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
@@ -306,6 +306,7 @@ def _infer(
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         turned = (_velocity(e) and not is_size(ctx, e)) or re.fullmatch(r"(?:impulse|dp)_[AB]", name)  # on a body
+        turned = turned and not (ctx.problem.fixed_B and _along_wall(ctx, e))  # out of a wall: t stays
         base[sympy.Symbol(PREFIX + name)] = sign * e if turned else e
     pairs = frame_pairs(ctx, raw, pt, truth)
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
@@ -419,6 +420,13 @@ def _symbol_name(e: sympy.Expr) -> str:
     """The name of ``e``, a symbol or its negative ("" for any other expression)."""
     e = -e if isinstance(-e, sympy.Symbol) else e
     return e.name if isinstance(e, sympy.Symbol) else ""
+
+
+def _along_wall(ctx: Context, e: sympy.Expr) -> bool:
+    """Whether ``e`` is the ball's component along a wall: the way out of the wall taken positive
+    turns the normal round, not the wall's own direction."""
+    nm = ctx.model.nm
+    return e in {c for c in (nm.A1t, nm.A2t) if c is not None}
 
 
 def _velocity(e: sympy.Expr) -> bool:

@@ -340,14 +340,18 @@ def _equal(ctx: Context, a: sympy.Expr, b: sympy.Expr) -> bool:
 
 def _primed_in(text: str, stem: str) -> bool:
     """Whether ``stem`` (a rewritten name) is written primed in ``text`` in another spelling
-    (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``), or with the prime on its base letter (``v'_{Ax}``)."""
+    (``v_{A}'``, ``v_A^{\\prime}``, ``v_A′``), or with the prime on its base letter (``v'_{Ax}``), or
+    under a lead-in ``After:`` (which primes it, ``Before: vx = …`` beside ``After: vx = …``)."""
     chars = stem.replace("_", "")
     loose = r"[_{}()]*".join(re.escape(c) for c in chars)
     prime = r"(?:'|′|’|\\prime|\^\{?\\prime\}?)"
     pattern = rf"(?<![\w])\(?{loose}[_{{}})]*\s*{prime}"
     rest = r"[_{}()]*".join(re.escape(c) for c in chars[1:])  # v'_{Ax}: the prime on the base letter
     on_letter = rf"(?<![\w\\]){re.escape(chars[:1])}\s*{prime}\s*[_{{(]+\s*{rest}[}})]*(?![\w'′’])"
-    return any(re.search(p, t) for t in (text, bracketed_names(text)) for p in (pattern, on_letter))  # (v_2')_t
+    if any(re.search(p, t) for t in (text, bracketed_names(text)) for p in (pattern, on_letter)):  # (v_2')_t
+        return True
+    under_after = rf"(?im)^[\s*>#-]*after(?:wards)?\s*:.*?(?<![\w']){re.escape(stem)}(?![\w'′’])"
+    return re.search(under_after, text) is not None  # "After: vx = …" beside "Before: vx = …": vx′
 
 
 #: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).

@@ -26,6 +26,7 @@ from collections.abc import Callable, Iterator, Mapping
 
 import sympy
 
+from derive.checking.afterlabels import after_label
 from derive.checking.axisnames import letter_components
 from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
@@ -181,9 +182,11 @@ def rewrite(text: str, known: set[str]) -> str:
 
     def split(m: re.Match) -> str:
         word = m.group(0)
-        if word in known or word in FUNCTION_WORDS or len(word.partition("_")[0]) > 3:
-            return word
         head, _, sub = word.partition("_")
+        if word in known or word in FUNCTION_WORDS or len(head) > 3:
+            return word
+        if _COMPONENT.fullmatch(word) and any(head[0] + a in known for a in "xyn"):
+            return word  # vy' where vx is a name: a component after, never v times y' (16ux stays u times x)
         letters = list(head)
         if sub:
             letters[-1] += "_" + sub
@@ -222,7 +225,7 @@ def of_the_body(
     (``keep``: a given speed u) stay as they are."""
     m = _BODY.match(label.strip())
     if not m:  # "Perp: A's component after": a component said in words under its axis
-        return _after_label(component_words(text, label), label, seen - set(keep))
+        return after_label(component_words(text, label), label, seen - set(keep))
     body, after = m.group(1).upper(), (m.group(2) or "").lower() in ("after", "finally")
 
     def own(k: re.Match, name: str) -> str:
@@ -245,24 +248,9 @@ def of_the_body(
     return text
 
 
-#: A lead-in that says the names under it are after the impact (``After: x = u cos θ``).
-_AFTER = re.compile(r"^(?:after(?:wards)?|finally|final|after\s+(?:the\s+)?(?:impact|collision|bounce))$", re.I)
-
-
-def _after_label(text: str, label: str, seen: set[str]) -> str:
-    """A side under ``After:`` with the one-letter names of the student's own used before it
-    primed (``x`` -> ``x'``): ``Before: x = u cos θ`` and ``After: x = u cos θ`` are two
-    quantities. Names with a time of their own (``u``, ``v``, ``V``, ``w``), ``e``, ``m``, ``g``
-    and ``i``, ``j`` are kept."""
-    if not _AFTER.match(label.strip()):
-        return text
-
-    def primed(m: re.Match) -> str:
-        return m.group(1) + ("'" if m.group(1) in seen else "")
-
-    return re.sub(r"(?<![A-Za-z_'.])([a-dfhk-lnoprstx-zA-LN-UX-Z])(?![\w'(])", primed, text)
-
-
+#: A velocity's letter glued to an axis's and primed (``vx'`` rewritten ``vx_p``): where the unprimed
+#: name is the student's, the component after, as students name it.
+_COMPONENT = re.compile(r"[uvwV][xyn]_p+")
 #: Words of two letters, never two names side by side.
 _SHORT_WORDS = re.compile(r"at|of|is|on|or|in|it|to|as|an|be|by|if|so|up|we|no|do|go|he|me|my|us|am|ok|ie|eg|re|vs")
 FUNCTION_WORDS = frozenset(

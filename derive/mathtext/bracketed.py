@@ -34,12 +34,15 @@ _INSIDE = (
     + _PRIMES_IN
     + r"\s*\)"
 )
+#: A character of a name (a letter, a digit, ``_``), not a power typed as a superscript (``²``):
+#: ``(v_B)_2²`` is ``v_B2`` squared.
+_NAME_CHAR = r"[^\W¹²³⁰⁴⁵⁶⁷⁸⁹]"
 #: The marks after the brackets: a subscript (``_2``, ``_{2x}``, ``_(2)``, ``_n``), or a time
 #: glued to them (``(vA)1``, ``(vB)2x``), then primes (``'``, ``^\\prime``, ``^{\\prime}``).
 _MARKS = (
     r"(?:_\s*(?:\{\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\}|\(\s*([A-Za-z0-9]{1,3}|[A-Za-z0-9]\s*,\s*[A-Za-z0-9])\s*\)"
-    r"|([A-Za-z0-9]{1,3})(?![\w(]))"
-    r"|([012][xyntXYNT]?|[xyntXYNT][012]?)(?![\w.(]))?"
+    rf"|([A-Za-z0-9]{{1,3}})(?!{_NAME_CHAR}|\())"
+    rf"|([012][xyntXYNT]?|[xyntXYNT][012]?)(?!{_NAME_CHAR}|[.(]))?"
     r"((?:'|’|\s*\^\s*\\prime|\s*\^\s*\{\s*\\prime\s*\})*)"
 )
 _BRACKETED = re.compile(_INSIDE + _MARKS)

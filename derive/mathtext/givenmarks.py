@@ -33,7 +33,10 @@ _FIGURES = re.compile(
 _DOUBT = re.compile(r"(?<=[\w)°%.])\s*\?{2,}\s*(?:[A-Za-z](?:[^=()]|\([^=()]*\))*)?$")
 #: A remark after a dash, words to the end with no relation in them (an expression in brackets among
 #: them, ``-- the question has (e + 3), must have a sign wrong``, is what the words talk about).
-_DASH = re.compile(r"(?<!\s)\s+(?:-{2,3}|—|–)\s+(?=[A-Za-z']{2,}\s+[A-Za-z']{2,})(?:[^=()]|\([^=()]*\))*$")
+_DASH = re.compile(
+    r"(?<!\s)\s+(?:-{2,3}|—|–)\s+(?=[A-Za-z']{2,}\s+[A-Za-z']{2,}"
+    r"|(?!(?:sin|cos|tan|sqrt|exp|log)\b)[A-Za-z']{3,}\b[^=]*?\b[A-Za-z']{2,})(?:[^=()]|\([^=()]*\))*$"
+)  # "-- not 4, check?": a number among the words too
 #: A remark in brackets at the end: five words or more, no relation (``(B only gets … but ok)``).
 _WORDY = re.compile(r"(?<!\s)\s+\((?=(?:[^()=]*?[A-Za-z']{2,}\b){5})[^()=]*\)\s*[.!?]*\s*$")
 #: Words after a comma that ends a relation's value, none of them a relation nor in brackets.

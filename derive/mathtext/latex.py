@@ -147,7 +147,7 @@ def _unit_piece(text: str, words: bool = False) -> str:
             return _unit_in_words(text) if words else text
         return _unit_piece(head) + " " + text[len(head) :]
     scaled = plain in SCALED or plain.startswith("km")  # the reader writes 20 Mg, 36 km/h in SI
-    return rf"\text{{{plain}}}" if scaled else " "
+    return rf"\,\text{{{plain}}}" if scaled else " "  # a space before it: "(20 Mg)", never a product "20Mg"
 
 
 def _unit_in_words(text: str) -> str:

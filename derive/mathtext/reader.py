@@ -127,7 +127,7 @@ _PART = re.compile(
 )
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:((?:[^=:()]*[A-Za-z]{2}\s?\([^=:()]{1,20}\))?[^=:()]*):\s*)?")
 _UNIT_END = re.compile(
-    rf"(?:(?<=[\d.)\s°])\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
+    rf"(?:(?<=[\d.)\s°])(?<![-+−*/×=]\s)\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
     r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
     r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
 )
@@ -334,7 +334,7 @@ def words_after(text: str) -> str:
 
 
 #: A name in brackets with the instant or component after them (``(v_B)_2``, ``(v_{A})_{1}``, ``(v_A)_n'``).
-_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*(?:\(([0-9nftixy])\)|([0-9nftixy])(?!\w))")
+_BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*\(?([0-9nftixy])\)?(?![^\W²³])")
 
 
 #: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
@@ -349,9 +349,7 @@ def _side(text: str) -> str:
     text = re.sub(r"Δ\s*", "Delta ", text)  # ΔKE as LaTeX's \Delta KE is read
     text = typed_names(text)  # v_{A2}, v_{A,2}, v'_A as a name is read
     text = decimal_commas(thousands(bracketed_names(text)))  # (v_A)', (vA)1, (v_B)_2x: one name each; 20 000
-    text = _BRACKETED_NAME.sub(
-        lambda m: f"{m[1]}_{m[2]}{m[3] or m[4]}", text
-    )  # (v_B)_2: v_B2, as the textbooks write it
+    text = _BRACKETED_NAME.sub(lambda m: f"{m[1]}_{m[2]}{m[3]}", text)  # (v_B)_2: v_B2, as the textbooks write it
     text = units_inside(text)  # "352 J − 288 J": the unit of each number, not a name
     return in_si(text) or without_unit(text).strip()
 

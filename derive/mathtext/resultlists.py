@@ -31,9 +31,21 @@ _BEFORE = re.compile(
 _SIGNED = re.compile(r"\s*[-+−]")
 
 
+#: A conclusion's one result typed on a phone, a body's letter and its speed with no colon, another
+#: relation after it: ``so B 1.5m/s e=0.1``, ``ans A 2 m/s, e = 0.5``.
+_CONCLUDED = re.compile(
+    rf"^(\s*(?:so|ans(?:wer)?s?|therefore|hence)\b[\s:]*)([A-Z])\s+([-+]?\d[\d.]*\s*{_SPEED})(?![\w/])\s*,?\s*(?=\S+\s*=)",
+    re.I,
+)
+
+
 def listed_speeds(plain: str) -> str:
     """``plain`` with each body's speed listed as ``X: 2.4 m/s`` written ``speed of X = 2.4 m/s``,
-    where it lists two bodies or more and is no line of givens; unchanged otherwise."""
+    where it lists two bodies or more and is no line of givens (or one body in a conclusion, ``so B
+    1.5m/s e=0.1``, before another relation); unchanged otherwise."""
+    concluded = _CONCLUDED.match(plain)
+    if concluded and not _BEFORE.search(plain):
+        return f"{concluded[1]}speed of {concluded[2]} = {concluded[3]}, " + plain[concluded.end() :]
     items = list(_ITEM.finditer(plain))
     if len({m[1] for m in items}) < 2 or _BEFORE.search(plain) or any(_SIGNED.match(plain, m.end()) for m in items):
         return plain
