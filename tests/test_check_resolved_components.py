@@ -63,3 +63,23 @@ def test_arithmetic_on_an_angle_a_carried_line_came_to_is_carried(tmp_path) -> N
     )
     assert text_lines(tmp_path, WALL_30, work) == ["wrong", "wrong", "carried", "carried", "carried"]
 
+
+def test_names_met_in_a_momentum_line_after_the_slip_are_read_by_its_shape() -> None:
+    # ocr-fm-2023-oblique-discs-60deg (5 kg A at 4 m/s, 60° to the line of centres; 3 kg B at -6; e = 3/4).
+    # Swapped: along 4 sin 60° = 3.46; 5(3.46) - 18 = -0.7 = 5p + 3q, q - p = 0.75(9.46) = 7.10, so
+    # 8p = -22.0, p = -2.75, q = 4.35. The truth: along 2; 5p + 3q = -8, q - p = 6: p = -3.25, q = 2.75,
+    # so p's carried -2.75 is minus B's true component: the momentum line, (3) in its shape with p A's
+    # and q B's, reads them, not that coincidence. Every line after the slip is carried.
+    work = (
+        "line of centres positive from A to B\n"
+        "A: 4 m/s at 60 deg to the line of centres, so par = 4 sin 60 = 3.46, perp = 4 cos 60 = 2\n"
+        "B: par -6, perp 0\n"
+        "momentum: 5(3.46) + 3(-6) = 5p + 3q, so 5p + 3q = -0.7\n"
+        "restitution: q - p = 0.75(3.46 + 6) = 7.10\n"
+        "so 5p + 3(p + 7.10) = -0.7, 8p = -22.0, p = -2.75\n"
+        "q = -2.75 + 7.10 = 4.35\n"
+        "|v_A| = sqrt(2.75^2 + 2^2) = 3.40, tan(theta) = 2/2.75 so theta = 36 deg with the line of centres\n"
+    )
+    found = worst_lines("ocr-fm-2023-oblique-discs-60deg", work)
+    assert found[2] == ("wrong", "sin_cos_swapped"), found
+    assert [found[n][0] for n in (4, 5, 6, 7, 8)] == ["carried"] * 5, found
