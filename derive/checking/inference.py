@@ -31,7 +31,7 @@ from derive.checking.frames import (
     uses_n_components,
 )
 from derive.checking.frames import pairs as frame_pairs
-from derive.checking.grounding import grounded, grounded_frame, the_speed
+from derive.checking.grounding import grounded, grounded_frame, natural_of, the_speed
 from derive.checking.massletters import masses_put_in
 from derive.checking.namegrammar import energy_change, grammar_names, in_order, said_read
 from derive.checking.naming import (
@@ -345,6 +345,9 @@ def _infer(
         fits = [score(pairs, t, ctx, pt, truth) + shapes.score(t) for t in tried]
         best = max(zip(options, fits, strict=True), key=lambda cf: cf[1] + _natural(group, cf[0]))[0]
         best = grounded(best, options, group, mapping, pairs, (ctx, pt, truth, sign))  # not a slip made right
+        ranked = {o: f + _natural(group, o) for o, f in zip(options, fits, strict=True)}  # by its first relation:
+        natural = [o for o in options if natural_of(o, options, sign) == o]  # A's then B's, each its own way
+        best = shapes.first_shaped(best, options, group, mapping, ranked.__getitem__, natural)
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
         floor = max(min(fits), score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping))  # what holds anyway

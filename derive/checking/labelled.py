@@ -80,8 +80,9 @@ def label_of(line: Read) -> str:
         at = found.start() if found else -1
     if at <= 0:
         return ""
-    piece = re.split(r"[,;=&$]", line.written[:at].rstrip(" $&=:\t"))[-1].strip()
-    if re.match(r"[-+−]?\s*\d", piece) and line.written[:at].rstrip(" $&=\t").endswith(":"):
+    before = re.sub(r"\\(?:[,;:! ]|q?quad\b)", " ", line.written[:at])  # LaTeX's spaces (``XY: \; 2\sin 60``)
+    piece = re.split(r"[,;=&$]", before.rstrip(" $&=:\t"))[-1].strip()
+    if re.match(r"[-+−]?\s*\d", piece) and before.rstrip(" $&=\t").endswith(":"):
         return re.sub(r"^[-+−]?\s*[\d.]+\s*", "", piece)  # "n: 4sin30 = 2   t: 4cos30": t labels the next
     if re.match(r"[-+−]?\s*\d", piece):  # "= 2 along x and 4 sin 60 = …": the words the relation before ends in
         after = re.split(r"[:)]", piece)[-1].strip()  # "(4 m/s, 60 deg to the line of centres): ∥ = …": the label ∥
@@ -159,25 +160,34 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
     1``), resolves a body's given speed with a common mistake (sin and cos swapped, the angle
     from the other axis); None otherwise."""
     exprs = line.exprs or ()
-    givens = {g.symbol for g in ctx.problem.givens}
-    if (
-        not getattr(ctx.problem, "oblique", False)
-        or len(exprs) < 2
-        or any(x.free_symbols - {DEG} - givens for x in exprs)
-    ):
-        return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
+    if not getattr(ctx.problem, "oblique", False) or len(exprs) < 2:
+        return None
     label = label_of(line)
     if not (_ALONG.search(label) or _ACROSS.search(label) or _wall_axis(ctx, label)):
         label = words_after(line) or label  # "4 sin 60 = 3.46 along y": the axis its value is said along
-    if not re.search(r"(?i)(?<![a-z])(?:sin|cos)(?![a-z])", line.sides[0]) or not label:  # sin30 too
+    if not label:
         return None
     across = _ACROSS.search(label) is not None  # "perp to l.o.c": across the line it names
     along = _ALONG.search(label) is not None and not across
     wall = _wall_axis(ctx, label)  # "along the wall": t; "into the wall": n
     if along == across and not wall:
         return None
-    names, axis = ctx.equation_names(), wall or ("n" if along else "t")
-    spaced = re.sub(r"(?i)(sin|cos|tan)", r" \1 ", line.sides[0])  # "2sin60": 2 and 60
+    return resolved(ctx, line.sides, exprs, wall or ("n" if along else "t"), (_bare(label), holds))
+
+
+def resolved(ctx: Context, sides, exprs, axis: str, said: tuple[str, Callable[[Pair], bool]]) -> Pair | None:
+    """The pair "a body's component before on ``axis`` = the first side" where that side resolves
+    one body's given speed (its number, or its letter, with sin or cos) and holds only with a
+    mistake in the values before; None otherwise (``said``: the quantity's words, and whether a
+    pair holds for the problem)."""
+    label, holds = said
+    givens = {g.symbol for g in ctx.problem.givens}
+    if any(x.free_symbols - {DEG} - givens for x in exprs):
+        return None  # numbers, and the problem's letters (``u sin 30 = u/2``, u A's speed)
+    if not re.search(r"(?i)(?<![a-z])(?:sin|cos)(?![a-z])", sides[0]):  # sin30 too
+        return None
+    names = ctx.equation_names()
+    spaced = re.sub(r"(?i)(sin|cos|tan)", r" \1 ", sides[0])  # "2sin60": 2 and 60
     written = {t for t in re.findall(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])", spaced)}
     bodies = []
     for b in "AB":
@@ -192,7 +202,7 @@ def component_before(ctx: Context, line: Read, holds: Callable[[Pair], bool]) ->
         return None
     sym = names[f"v_{bodies[0]}1{axis}"][0]
     first = ctx.in_unknowns(exprs[0])  # its degrees in
-    pair = Pair(f"{_bare(label)} = {line.sides[0]}", ctx.in_unknowns(sym), first, 1e-3, (sym, exprs[0]))
+    pair = Pair(f"{label} = {sides[0]}", ctx.in_unknowns(sym), first, 1e-3, (sym, exprs[0]))
     flipped = Pair(pair.text, -pair.left, first, 1e-3, (-sym, exprs[0]))  # a size where derive's axis points back
     if holds(pair) or holds(flipped):
         return None

@@ -12,10 +12,12 @@ from __future__ import annotations
 
 import re
 from dataclasses import replace
+from typing import Any
 
 import sympy
 
 from derive.checking import (
+    axisdefined,
     carried,
     cofunctions,
     eliminated,
@@ -130,9 +132,9 @@ class Trace(Carrying):
             return self._item(
                 line, "not read", f"Not read: {words.not_read(line.error, line.sides, line.written)}.", ""
             )
-        if (
-            line.defines and line.exprs and len(line.exprs) >= 3
-        ):  # J = m(u + v) = 0.8(5.2) = 4.16: the working is judged
+        if line.defines and (comp := axisdefined.of_trace(self, line)) is not None:  # v_perp = u cos θ: sin for cos
+            return self._carried(line) if reworld.in_world(self, [comp]) else self._slip(line, [comp], None)
+        if line.defines and line.exprs and len(line.exprs) >= 3:  # J = m(u + v) = 0.8(5.2) = 4.16: the working
             return self.item(replace(line, sides=line.sides[-len(line.exprs) + 1 :], exprs=line.exprs[1:], defines=""))
         if line.defines:
             return self._item(line, "correct", f"Defines {line.defines} for the lines after it.", "a definition")
@@ -203,6 +205,8 @@ class Trace(Carrying):
         return self._item(line, "correct", said, TRUE, notes=notes)
 
     def _carried(self, line: Line) -> Item:
+        if line.sides and line.number not in self.stated:  # its numbers wrong: tan⁻¹(1/11.09) = 5.15°, 60° − 5.15°
+            self._wrote_wrong(line)
         replaced = [f"line {n} in place of ({j})" for n, j in self.replaced]
         how = f"solving again with {listed(replaced)}" if replaced else "with the wrong number carried"
         msg = f"Right given {self._slips_named()}: a carried error, not a new mistake."
@@ -435,16 +439,7 @@ class Trace(Carrying):
         """``v_A2n = -1.11``: judged as an answer is (:func:`~.number.line_answer`)."""
         return line_answer(self.ctx, line.sides, line.exprs, line.written)
 
-    def _item(
-        self,
-        line: Line,
-        status: str,
-        message: str,
-        method: str,
-        notes: tuple[str, ...] = (),
-        diagnosis: tuple[Diagnosis, ...] = (),
-        expected: str = "",
-    ) -> Item:
-        return Item(
-            "line", str(line.number), line.written, status, expected, message, method, notes=notes, diagnosis=diagnosis
-        )
+    def _item(self, line: Line, status: str, message: str, method: str, **kw: Any) -> Item:
+        """The line's item; ``kw``: its ``notes``, ``diagnosis`` and ``expected`` value, if any."""
+        expected = kw.pop("expected", "")
+        return Item("line", str(line.number), line.written, status, expected, message, method, **kw)

@@ -47,6 +47,29 @@ class Shapes:
                 n += 1  # two unknowns or more: (3), (4)
         return self.WEIGHT * n
 
+    def first_shaped(self, best: tuple, options: list[tuple], group: list, mapping: dict, key, natural: list) -> tuple:
+        """A teacher reads names met together by the first relation they stand in: where it holds
+        with the problem's values under neither ``best`` nor another reading (a slip before it) and
+        has the shape of one of (1)-(4) under some reading but not under ``best``, that reading
+        (the best of them by ``key``): ``5(3.46) + 3(-6) = 5a + 3b`` after A's components were
+        swapped is (3), a A's and b B's, whatever number a later line's a comes to. Only a
+        ``natural`` reading (A's then B's, each its own way) is taken so: a shape that needs the
+        bodies swapped is the masses swapped, a slip, not the names' reading."""
+        first = next((d for d in self.diffs if placeholders(d) & set(group)), None)
+        if first is None or not self.targets:
+            return best
+
+        def reads(option: tuple) -> tuple[bool, bool]:  # (holds, has a shape)
+            m = {**mapping, **{p: e for p, (_w, e) in zip(group, option, strict=True)}}
+            d = first.xreplace({k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in m.items()})
+            c = linear_part(d, self.U)
+            return self._holds(d), bool(c and any(alike(c, t) for t in self.targets))
+
+        if any(reads(best)) or any(reads(o)[0] for o in options):
+            return best
+        shaped = [o for o in natural if reads(o)[1]]
+        return max(shaped, key=key) if shaped else best
+
     def _holds(self, d: sympy.Expr) -> bool:
         terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
         if any(t is None for t in terms):

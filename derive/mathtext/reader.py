@@ -193,7 +193,7 @@ def read_relations(
             r = replace(r, lead=lead) if r is not None and lead else r
             if r is not None and not r.label and out and out[-1].line == line and out[-1].label:
                 r = replace(r, label=out[-1].label)  # "A: u_x = 2, u_y = 3": both of A
-            split = split_vectors(r.sides, axes, head_on, vectors) if r is not None else []
+            split = split_vectors(r.sides, axes, head_on, vectors, r.label) if r is not None else []
             if r is not None and not r.aside and split != [r.sides]:
                 whole[line] = r.sides
             for sides in (e for v in split for e in each_body(v, text)):

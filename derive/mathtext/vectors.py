@@ -32,6 +32,9 @@ UNITS = {
 _UNIT = "|".join(sorted((re.escape(u) for u in UNITS), key=len, reverse=True))
 _TERM = re.compile(rf"^(.*?)({_UNIT})$")
 _NAME = re.compile(r"^([A-Za-z][A-Za-z0-9_]*)('*)(?:\s+(before|after))?$")
+#: A lead-in that names a body alone, before or after (``A before``, ``B'``, ``P after``): the name of
+#: a vector of numbers after it.
+_BODY_LABEL = re.compile(r"[A-Z]'*(?:\s+(?:before|after))?")
 AXES = ("n", "t")
 
 
@@ -40,6 +43,7 @@ def split_vectors(
     axes: dict[str, tuple[str, int]] | None = None,
     head_on: bool = False,
     vectors: set[str] | None = None,
+    label: str = "",
 ) -> list[tuple[str, ...]]:
     """The relations of ``sides``: one per component where it is a relation between vectors
     (and ``[sides]`` where it is not); ``axes``, where the student placed them in words, takes
@@ -47,7 +51,9 @@ def split_vectors(
     On a ``head_on`` impact a vector on one axis only (``u_A = 3 i``) is the velocity along the
     line of motion, the problem's one axis: one relation with the names as written (``u_A = 3``).
     ``vectors``: the names split into components so far (this call adds its own); a side written
-    in them (``J = m(v - u) = 0.06(39.6 i)``) has on each axis their components (``m(v_n - u_n)``)."""
+    in them (``J = m(v - u) = 0.06(39.6 i)``) has on each axis their components (``m(v_n - u_n)``);
+    ``label``: the words before it, a body's (``A before: 15 sin α i + 15 cos α j = 12i + 9j``) the
+    vector's name where every side is a vector of numbers: that body's velocity, ``A = …``."""
     vectors = VectorNames() if vectors is None else vectors
     hatted = tuple(hats(s) for s in sides)  # 3î + 4ĵ, u_A • n̂
     unit = declared(hatted, _vector)  # "n̂ = cos 20° i + sin 20° j": the student's frame, no relation
@@ -61,6 +67,8 @@ def split_vectors(
     if not any(p is not None for p in parts):
         return [sides]
     sides = dots
+    if all(p is not None for p in parts) and _BODY_LABEL.fullmatch(label.strip()):
+        sides, parts = (label.strip(), *sides), [None, *parts]  # "A before: 12i + 9j": A's velocity before
     # a lead-in in words before the first name ("After impact write v_A = a i + …"): the name
     first = re.sub(r"^(?:[A-Za-z]{2,}\s+)+(?=\S+$)", "", sides[0].strip()) if parts[0] is None else sides[0]
     sides = (first, *sides[1:]) if _NAME.match(first.strip()) else sides
