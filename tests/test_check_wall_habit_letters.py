@@ -28,8 +28,16 @@ def test_letters_only_components_after_by_the_habit() -> None:
 
 
 def test_letters_only_rebound_with_e_left_out_is_a_slip() -> None:
+    # u names the components before, so v's are after: v⊥ = U sin α has e_1 left out
+    got = worst_lines(CUSHION, "u∥ = U cos α\nu⊥ = U sin α\nv∥ = U cos α\nv⊥ = U sin α\n")
+    assert [got[n][0] for n in (1, 2, 3)] == ["correct"] * 3 and got[4][0] == "wrong"
+
+
+def test_v_resolved_alone_with_no_u_is_the_velocity_before() -> None:
+    # no u anywhere: "v⊥ = U sin α" resolves the velocity before (the student's v is the ball's
+    # velocity), as a teacher reads it; the habit's v-after needs the habit's u-before
     got = worst_lines(CUSHION, "v∥ = U cos α\nv⊥ = U sin α\n")
-    assert got[1][0] == "correct" and got[2][0] == "wrong"
+    assert [got[n][0] for n in (1, 2)] == ["correct", "correct"]
 
 
 def test_a_primed_twin_keeps_the_unprimed_name_before() -> None:

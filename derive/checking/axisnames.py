@@ -73,15 +73,26 @@ def _before_said(r: Relation, name: str) -> bool:
     return _BEFORE_LEAD.search(r.label or r.written[: max(at, 0)]) is not None
 
 
-def _after_by_letter(name: str, sub: str, relations: tuple[Relation, ...]) -> bool:
+def _after_by_letter(name: str, sub: str, relations: tuple[Relation, ...], side: str = "") -> bool:
     """Whether a component at a wall named by v (or w) and its axis's sign, with no time said
     (``v_⊥ = ¾ U sin α``, ``v_perp = +14.71`` beside ``u_perp``), is after by the habit's letters:
     u before, v after. Not where the same name is also written primed (``v_perp'``: the unprimed
-    one is then before) or with a time mark of its own."""
+    one is then before) or with a time mark of its own; and not where ``side`` is a speed resolved
+    and nothing more (``v_perp = 10 sin 30°``: the velocity before, resolved) unless the student
+    names the components before with u (``u_⊥``): the habit is then theirs."""
     if name[0] not in "vwV" or not sub_axis(sub, True):
+        return False
+    u_named = any(sub_axis(m[1], True) for r in relations for s in r.sides for m in _U_AXIS.finditer(s))
+    if not u_named and _RESOLVED_ALONE.fullmatch(side):
         return False
     primed = re.compile(rf"(?<![\w]){re.escape(name)}(?:_?p\b|')|(?<![\w]){re.escape(name[0])}'_?\{{?{re.escape(sub)}")
     return not any(primed.search(s) for r in relations for s in r.sides)
+
+
+#: A name of u and an axis's sign (``u_perp``, ``u⊥``, ``|u_\\perp|``); a side that is a speed resolved
+#: and nothing more (``10 sin 30°``, ``U\\cos\\alpha``, ``28cos(45)``).
+_U_AXIS = re.compile(r"(?<![A-Za-z])u_?\{?\\?([A-Za-z]{1,13}|⊥|∥)\}?")
+_RESOLVED_ALONE = re.compile(r"\s*\(?\s*(?:\d+\.?\d*|[A-Za-z]\w{0,3})\s*[*·×]?\s*\\?(?:sin|cos)\b[^=*/+]*?\)?\s*")
 
 
 def _body(side: str, ctx: Context) -> str:
@@ -122,7 +133,7 @@ def components(
         after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
         sub = name.split("_")[-1] if "_" in name else name[1:]
         before = _before_said(r, name)  # u∥ under "Q b4:", or u's habit
-        after = after or (not before and fixed and _after_by_letter(name, sub, relations))
+        after = after or (not before and fixed and _after_by_letter(name, sub, relations, r.sides[1]))
         said = after or before  # v_perp under "After:", or v's habit at a wall
         axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if said else "")
         if not axis and after and sub in letters:

@@ -34,6 +34,13 @@ def n_components(ctx: Context) -> dict[sympy.Symbol, sympy.Expr]:
     return out
 
 
+def along_wall(ctx: Context, e: sympy.Expr) -> bool:
+    """Whether ``e`` is the ball's component along a wall: the way out of the wall taken positive
+    turns the normal round, not the wall's own direction."""
+    nm = ctx.model.nm
+    return e in {c for c in (nm.A1t, nm.A2t) if c is not None}
+
+
 def uses_n_components(ctx: Context, raw: list) -> bool:
     """Whether a relation the student wrote has one of derive's n components in it."""
     ns = set(n_components(ctx))

@@ -22,6 +22,7 @@ from derive.checking.declaredspellings import as_read
 from derive.checking.degreemode import in_degrees
 from derive.checking.energyinstants import energy_at_labels
 from derive.checking.frames import (
+    along_wall,
     axis_names,
     declared_axes,
     flipped,
@@ -306,7 +307,7 @@ def _infer(
     base: dict[sympy.Symbol, sympy.Expr] = {}
     for name, e in meanings.items():
         turned = (_velocity(e) and not is_size(ctx, e)) or re.fullmatch(r"(?:impulse|dp)_[AB]", name)  # on a body
-        turned = turned and not (ctx.problem.fixed_B and _along_wall(ctx, e))  # out of a wall: t stays
+        turned = turned and not (ctx.problem.fixed_B and along_wall(ctx, e))  # out of a wall: t stays
         base[sympy.Symbol(PREFIX + name)] = sign * e if turned else e
     pairs = frame_pairs(ctx, raw, pt, truth)
     if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
@@ -423,13 +424,6 @@ def _symbol_name(e: sympy.Expr) -> str:
     """The name of ``e``, a symbol or its negative ("" for any other expression)."""
     e = -e if isinstance(-e, sympy.Symbol) else e
     return e.name if isinstance(e, sympy.Symbol) else ""
-
-
-def _along_wall(ctx: Context, e: sympy.Expr) -> bool:
-    """Whether ``e`` is the ball's component along a wall: the way out of the wall taken positive
-    turns the normal round, not the wall's own direction."""
-    nm = ctx.model.nm
-    return e in {c for c in (nm.A1t, nm.A2t) if c is not None}
 
 
 def _velocity(e: sympy.Expr) -> bool:
