@@ -80,10 +80,7 @@ def _after_by_letter(name: str, sub: str, relations: tuple[Relation, ...], side:
     one is then before) or with a time mark of its own; and not where ``side`` is a speed resolved
     and nothing more (``v_perp = 10 sin 30°``: the velocity before, resolved) unless the student
     names the components before with u (``u_⊥``): the habit is then theirs."""
-    if name[0] not in "vwV" or not sub_axis(sub, True):
-        return False
-    u_named = any(sub_axis(m[1], True) for r in relations for s in r.sides for m in _U_AXIS.finditer(s))
-    if not u_named and _RESOLVED_ALONE.fullmatch(side):
+    if name[0] not in "vwV" or not sub_axis(sub, True) or _resolved_before(relations, side):
         return False
     primed = re.compile(rf"(?<![\w]){re.escape(name)}(?:_?p\b|')|(?<![\w]){re.escape(name[0])}'_?\{{?{re.escape(sub)}")
     return not any(primed.search(s) for r in relations for s in r.sides)
@@ -93,6 +90,14 @@ def _after_by_letter(name: str, sub: str, relations: tuple[Relation, ...], side:
 #: and nothing more (``10 sin 30°``, ``U\\cos\\alpha``, ``28cos(45)``).
 _U_AXIS = re.compile(r"(?<![A-Za-z])u_?\{?\\?([A-Za-z]{1,13}|⊥|∥)\}?")
 _RESOLVED_ALONE = re.compile(r"\s*\(?\s*(?:\d+\.?\d*|[A-Za-z]\w{0,3})\s*[*·×]?\s*\\?(?:sin|cos)\b[^=*/+]*?\)?\s*")
+
+
+def _resolved_before(relations: tuple[Relation, ...], side: str) -> bool:
+    """Whether ``side`` is a speed resolved and nothing more where no name of u says an axis: the
+    velocity before, resolved (``v_perp = 10 sin 30°``), whatever its letter."""
+    if not _RESOLVED_ALONE.fullmatch(side):
+        return False
+    return not any(sub_axis(m[1], True) for r in relations for s in r.sides for m in _U_AXIS.finditer(s))
 
 
 def _body(side: str, ctx: Context) -> str:
@@ -132,7 +137,9 @@ def components(
             continue
         after = bool(_AFTER.match(r.label or "") or _AFTER.match(r.written))
         sub = name.split("_")[-1] if "_" in name else name[1:]
-        before = _before_said(r, name)  # u∥ under "Q b4:", or u's habit
+        before = _before_said(r, name) or (
+            fixed and sub_axis(sub, True) != "" and _resolved_before(relations, r.sides[1])
+        )
         after = after or (not before and fixed and _after_by_letter(name, sub, relations, r.sides[1]))
         said = after or before  # v_perp under "After:", or v's habit at a wall
         axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if said else "")
