@@ -25,7 +25,7 @@ import sympy
 
 from derive.checking.context import DEG
 from derive.checking.mistakes import REGISTRY, phrase
-from derive.checking.numeric import number_of
+from derive.checking.numeric import decimals, number_of
 from derive.checking.report import Diagnosis
 
 if TYPE_CHECKING:
@@ -199,6 +199,16 @@ def _worked_from_wrong(trace: Trace, line: Read) -> bool:
     return trace._uses_wrong_numbers(line, pairs) and trace.holds(pairs, trace.truth)
 
 
+#: The angles the checker derives from the velocities (context's ``derived``), by their names' stems.
+_ANGLES = ("theta_", "beta_", "alpha_", "gamma_", "delta_")
+
+
+def in_degrees(derived: dict[str, tuple[sympy.Symbol, sympy.Expr]]) -> list[sympy.Expr]:
+    """The directions the impact gives, in degrees: what a line of numbers ending in degrees
+    (``tan^-1(3.464/3) = 49.1deg``) may come to."""
+    return [x * 180 / sympy.pi for n, (_, x) in derived.items() if n.startswith(_ANGLES)]
+
+
 def _before(text: list[str], number: int) -> str:
     """The prose line just before line ``number`` (blank lines passed over; "" where the line
     before holds a relation, or there is none)."""
@@ -243,13 +253,19 @@ def _right(trace: Trace, line: Read, c: Claim, exact: bool = True) -> Item | Non
             value = number_of(x.xreplace({DEG: sympy.Integer(1)}))
         if value is None or not _near(value.real, c.value, c):
             return None
-    if (
-        not exact
-        and trace.slips
-        and set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(line.sides[:-1]))) & trace.wrong_values
-    ):
+    if trace.slips and ((not exact and decimals(line.sides[:-1]) & trace.wrong_values) or _the_slips(trace, c)):
         return trace._carried(line)  # within its figures, but worked from a number got wrong (or rounded early)
     return trace._item(line, "correct", "True for this problem: it is the angle its words name.", TRUE)
+
+
+def _the_slips(trace: Trace, c: Claim) -> bool:
+    """Whether the angle is, rounded to the figures written, the one the slip's world gives and
+    not the problem's (``80.1°`` from ``tan⁻¹(4/.696)``: the slip's 80.13°, the problem's 80.17°):
+    the student's own, carried."""
+    world = _velocities(trace, c, trace.world[0]) if trace.world is not None else None
+    rounded = replace(c, room=0.0, unit=c.unit / 2)
+    truth = _velocities(trace, c, trace.truth[0]) or []
+    return any(_is(rounded, v) for v in world or []) and not any(_is(rounded, v) for v in truth)
 
 
 def _slip(

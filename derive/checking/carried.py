@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 import sympy
 
 from derive.checking import cofunctions, energyforms, misread, reworld, signslips, slipnames, slipworld, workedslips
+from derive.checking.angles import in_degrees
 from derive.checking.dependency import exact_in_world
 from derive.checking.mistakes import REGISTRY, Mistake, Variant, phrase
 from derive.checking.mistakes.pairs import merge
@@ -37,12 +38,11 @@ RESULTS = ("T_1", "T_2", "T_lost", "J_n", "v_A2", "v_B2")  # what a line of numb
 
 
 def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
-    """A line of numbers only, right as arithmetic, that comes to what the slip makes of a
-    result and to no result of the problem (``½(2)(7²) + ½(1)(1²) = 49.5``: T_2 with the
-    velocities the swapped masses gave): carried, not correct; so is a velocity stated so
-    (:func:`~.reworld.nearer_the_slip`), or one worked from a number the student got wrong with the slip in
+    """A line of numbers only, right as arithmetic, that comes to what the slip makes of a result and to no result of
+    the problem (``½(2)(7²) + ½(1)(1²) = 49.5``: T_2 with the swapped masses' velocities): carried, not correct; so is a
+    velocity stated so (:func:`~.reworld.nearer_the_slip`), or one worked from a number the student got wrong with the slip in
     place of the other equation (:func:`~.reworld.moved`: ``v1f = 0.160 - 35.0 = -34.84`` after
-    ``v2f = 10.5/70.15 = 0.160``, near the true -34.85 too: the restitution kept)."""
+    ``v2f = 10.5/70.15 = 0.160``, near the true -34.85 too: the restitution kept); an angle in degrees so too."""
     U = set(trace.U)
     if trace.world is None or any(p.difference.free_symbols & U for p in pairs):
         wrote = bool(decimals(line.sides[:-1]) & trace.wrong_values) and trace.world is not None
@@ -50,11 +50,11 @@ def slips_result(trace: Trace, line: Read, pairs: list[Pair]) -> bool:
         return reworld.nearer_the_slip(trace, line, pairs) or moved or exact_in_world(trace, pairs)
     m = NUMBER_SIDE.match(student(line.sides[-1].strip()))
     givens = {g.symbol for g in trace.ctx.problem.givens}
-    if not m or m.group(3) or any(x in givens for x in line.exprs or ()):  # "since e = 1": the data, stated
+    if not m or m.group(3) == "rad" or any(x in givens for x in line.exprs or ()):  # "since e = 1": the data, stated
         return False
     written = Decimal(m.group(1) + m.group(2))
     d = trace.ctx.derived()
-    exprs = [d[n][1] for n in RESULTS if n in d] + list(trace.U)
+    exprs = in_degrees(d) if m.group(3) else [d[n][1] for n in RESULTS if n in d] + list(trace.U)
 
     def comes_to(values: Values, slipped: bool = False) -> bool:  # slipped: the values before as the slip has them
         for x in (as_slipped(trace, y) for y in exprs) if slipped else exprs:
