@@ -35,6 +35,11 @@ def test_a_letter_used_for_something_else_stays_itself() -> None:
     assert angle_initials("u cos t", {"theta_1", "theta_2"}) == "u cos t"  # which theta: not decided
 
 
+def test_a_given_angle_is_the_initial_s_angle_beside_a_result_of_its_letter() -> None:
+    # alpha given, alpha_A2 (A's angle with the line of centres after) a result: a is the given
+    assert angle_initials("u cos a", {"alpha", "alpha_A2", "gamma_A2"}) == "u cos alpha"
+
+
 def test_work_in_angle_initials_is_read() -> None:
     found = worst_lines(PROBLEM, WORK)
     assert {n: found.get(n, ("missing", ""))[0] for n in (2, 3, 4, 5, 6)} == dict.fromkeys((2, 3, 4, 5, 6), "correct")

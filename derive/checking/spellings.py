@@ -57,6 +57,8 @@ def angle_initials(text: str, known: set[str]) -> str:
         if m.group(2) in known:
             return m.group(0)
         angles = [k for k in known if _GREEK_ANGLE.fullmatch(k) and k.startswith(m.group(2))]
+        if len(angles) > 1:  # a given angle (alpha) before a result's (alpha_A2, the angle after)
+            angles = [k for k in angles if "_" not in k]
         return m.group(1) + angles[0] if len(angles) == 1 else m.group(0)
 
     return _TRIG_LETTER.sub(letter, text)
