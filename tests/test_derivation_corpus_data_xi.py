@@ -142,7 +142,7 @@ def _xi08(p: dict) -> tuple[dict, dict]:
     theta = math.asin(1 / 2)  # sin(theta) = r/2r
     c, s = big_u * math.cos(theta), big_u * math.sin(theta)
     a, b = _solve(1.0, 1.0, c, 0.5 * c)
-    slipped_b = (s + 0.5 * s)  # along U sin 30; 2 v_B = 3U/4 not halved
+    slipped_b = s + 0.5 * s  # along U sin 30; 2 v_B = 3U/4 not halved
     return (
         {"v_B2": b, "v_A2n": a},
         {"v_B2": slipped_b, "v_A2n": slipped_b - 0.5 * s},
