@@ -46,7 +46,7 @@ from derive.checking.naming import (
     read_side,
     rewrite,
 )
-from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
+from derive.checking.ownnames import combos, directed, named_later, own_readings, spells_givens, velocities_before
 from derive.checking.reducedmass import mass_named, reduced_mass
 from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
@@ -133,7 +133,7 @@ def read_lines(
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     raw = speeds_before(ctx, raw, meanings, _speeds(ctx))  # with v1 = U: U is A's speed
-    own_angles(ctx, raw, meanings)
+    own_readings(ctx, raw, meanings, truth, set(declared))  # θ worked out to another value; u_1 = v_1 - v_cm
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
