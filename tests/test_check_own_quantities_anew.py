@@ -46,3 +46,22 @@ e = I_R/I_D = 2.667/3.333 = 0.8
 """
     got = worst_lines("ocr-m2-2006-sphere-hits-sphere-at-rest-find-e", work)
     assert [got[n][0] for n in range(2, 6)] == ["correct"] * 4
+
+
+# Cars couple: 150000(0.300) + 110000(-0.120) = 31800 kg m/s, shared by 260000 kg: V = 0.1223 m/s,
+# and the kinetic energy after is p²/2M = 31800²/520000 = 1944.7 J (½(260000)(0.1223)² the same).
+COUPLED = """150000(0.300) + 110000(-0.120) = 260000 V
+V = 31800/260000 = 0.1223 m/s
+KE after = {ke}
+"""
+
+
+def test_the_kinetic_energy_from_the_momentum_and_the_total_mass() -> None:
+    got = worst_lines("openstax-cp-8-train-cars-couple", COUPLED.format(ke="P^2/(2M) = 31800^2/(2 × 260000) = 1945 J"))
+    assert [got[n][0] for n in (1, 2, 3)] == ["correct"] * 3
+
+
+def test_the_momentum_squared_over_the_mass_without_the_half_is_a_slip() -> None:
+    # p²/M = 3889 J, twice the energy after: a wrong formula, not read as other quantities.
+    got = worst_lines("openstax-cp-8-train-cars-couple", COUPLED.format(ke="p^2/M = 31800^2/260000 = 3889 J"))
+    assert got[3][0] == "wrong"
