@@ -119,7 +119,7 @@ def read_lines(
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
-    grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
+    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes)
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
