@@ -5,7 +5,9 @@ is the student's own angle; a name met first in a relation and set equal, alone,
 in known names later (``φ = 90° − θ``) stands for it on every line; where the text writes u for
 what comes before, a name in v (``v_P``, ``v1``) is not a velocity before the impact; a value
 with a direction opposite to the one the student takes as positive (``right positive``, then
-``v_A = 1.04 m/s to the left``) is negative.
+``v_A = 1.04 m/s to the left``) is negative; a habit's name for a quantity another name already
+stands for, defined alone by a relation false in that reading (``u_1 = v_1 - v_cm`` beside ``v_1``),
+is the student's own quantity, worth its defining line.
 """
 
 from __future__ import annotations
