@@ -65,3 +65,15 @@ def test_the_momentum_squared_over_the_mass_without_the_half_is_a_slip() -> None
     # p²/M = 3889 J, twice the energy after: a wrong formula, not read as other quantities.
     got = worst_lines("openstax-cp-8-train-cars-couple", COUPLED.format(ke="p^2/M = 31800^2/260000 = 3889 J"))
     assert got[3][0] == "wrong"
+
+
+def test_a_name_in_p_may_still_be_a_velocity() -> None:
+    # 4 kg at 12 m/s catches 8 kg at 4 m/s, e = 0.5: 80 = 4p + 8q and q - p = 0.5(8) = 4 give
+    # p = 4 and q = 8: p and q are the velocities after, not momenta.
+    work = """4(12) + 8(4) = 4p + 8q
+q - p = 0.5(12 - 4)
+12p = 80 - 32 = 48
+p = 4
+"""
+    got = worst_lines("byjus-4kg-ball-catches-8kg-ball", work)
+    assert [got[n][0] for n in (1, 2, 3, 4)] == ["correct"] * 4

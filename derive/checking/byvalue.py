@@ -113,6 +113,12 @@ def _kind(p: sympy.Symbol, exprs: list[sympy.Expr]) -> str:
     return "mass" if re.fullmatch(r"[mM](?:_?\{?[A-Za-z0-9]{0,3}\}?)?", name) else ""
 
 
+def _allows(kind: str, option: str) -> bool:
+    """Whether a name of ``kind`` may be read as an option of kind ``option``: a name in p as a
+    momentum or as any quantity a name says nothing of (``p``, ``q``: the velocities after)."""
+    return option == kind or (kind == "momentum" and not option)
+
+
 def _in_trig(p: sympy.Symbol, exprs: list[sympy.Expr]) -> bool:
     """Whether ``p`` is (in) the argument of a trigonometric function: an angle's name."""
     return any(p in f.free_symbols for e in exprs for f in e.atoms(sympy.sin, sympy.cos, sympy.tan))
@@ -290,13 +296,13 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     if not free:
         return fixed, said
     exprs = [e.xreplace(fixed) for e in pending]
-    kinded = all(_kind(p, exprs) for p in free)  # p²/2M: each name's readings few (a mass, a momentum)
-    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not (kinded or _linear(exprs, free))):
+    wide = sum(_kind(p, exprs) in ("", "momentum") for p in free)  # p²/2M: M's readings few (a mass)
+    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not (wide <= 1 or _linear(exprs, free))):
         return None
     if all(e in free or not e.free_symbols for e in exprs):
         return None  # "k = 4": a value alone says nothing of what it is the value of
     options = _options(trace.ctx, trace.truth[0])
-    allowed = [[i for i, o in enumerate(options) if o[2] == _kind(p, exprs)] for p in free]
+    allowed = [[i for i, o in enumerate(options) if _allows(_kind(p, exprs), o[2])] for p in free]
     worlds = [trace.truth] + ([trace.world] if trace.world is not None and not ahead else [])
     for values in worlds:
         nums = _distinct(trace, options, values)
