@@ -296,8 +296,8 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     if not free:
         return fixed, said
     exprs = [e.xreplace(fixed) for e in pending]
-    wide = sum(_kind(p, exprs) in ("", "momentum") for p in free)  # p²/2M: M's readings few (a mass)
-    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not (wide <= 1 or _linear(exprs, free))):
+    kinded = all(_kind(p, exprs) for p in free)  # p²/2M: each a name of a kind (a mass, a momentum)
+    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not (kinded or _linear(exprs, free))):
         return None
     if all(e in free or not e.free_symbols for e in exprs):
         return None  # "k = 4": a value alone says nothing of what it is the value of
