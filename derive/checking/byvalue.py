@@ -85,14 +85,38 @@ def _options(ctx: Any, truth: dict) -> list[tuple[str, sympy.Expr, str]]:
     masses = quantities(ctx)[MASS]
     out += [(w, c, "mass") for w, c in masses]
     out += [("the total mass", sympy.Add(*(c for _w, c in masses)), "mass")] if len(masses) == 2 else []
-    return out
+    return out + _momenta(ctx)
+
+
+def _momenta(ctx: Any) -> list[tuple[str, sympy.Expr, str]]:
+    """What a name in p may stand for: the bodies' total momentum (the same before and after), each
+    body's momentum before and after, along the line of centres."""
+    m, nm = ctx.model, ctx.model.nm
+    pairs = [("A", m.m_A, nm.A1n, nm.A2n)]
+    pairs += [] if ctx.problem.fixed_B or m.m_B is None else [("B", m.m_B, nm.B1n, nm.B2n)]
+    out = [("the momentum", sympy.Add(*(mass * u for _b, mass, u, _v in pairs if u is not None)), "momentum")]
+    return out + [
+        (f"{b}'s momentum {when}", mass * x, "momentum")
+        for b, mass, u, v in pairs
+        for x, when in ((u, "before"), (v, "after"))
+        if x is not None
+    ]
 
 
 def _kind(p: sympy.Symbol, exprs: list[sympy.Expr]) -> str:
     """What ``p`` may be: an angle inside sin, cos or tan; a mass where its letter is m; else the rest."""
     if _in_trig(p, exprs):
         return "angle"
-    return "mass" if re.fullmatch(r"[mM](?:_?\{?[A-Za-z0-9]{0,3}\}?)?", p.name[len(PREFIX) :]) else ""
+    name = p.name[len(PREFIX) :]
+    if re.fullmatch(r"[pP](?:_?\{?[A-Za-z0-9]{0,5}\}?)?", name):
+        return "momentum"  # p, p_i, P_tot: a momentum
+    return "mass" if re.fullmatch(r"[mM](?:_?\{?[A-Za-z0-9]{0,3}\}?)?", name) else ""
+
+
+def _allows(kind: str, option: str) -> bool:
+    """Whether a name of ``kind`` may be read as an option of kind ``option``: a name in p as a
+    momentum or as any quantity a name says nothing of (``p``, ``q``: the velocities after)."""
+    return option == kind or (kind == "momentum" and not option)
 
 
 def _in_trig(p: sympy.Symbol, exprs: list[sympy.Expr]) -> bool:
@@ -272,12 +296,13 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     if not free:
         return fixed, said
     exprs = [e.xreplace(fixed) for e in pending]
-    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not _linear(exprs, free)):
+    kinded = all(_kind(p, exprs) for p in free)  # p²/2M: each a name of a kind (a mass, a momentum)
+    if len(free) > MAX_NAMES or len(exprs) < 2 or (len(free) > 1 and not (kinded or _linear(exprs, free))):
         return None
     if all(e in free or not e.free_symbols for e in exprs):
         return None  # "k = 4": a value alone says nothing of what it is the value of
     options = _options(trace.ctx, trace.truth[0])
-    allowed = [[i for i, o in enumerate(options) if o[2] == _kind(p, exprs)] for p in free]
+    allowed = [[i for i, o in enumerate(options) if _allows(_kind(p, exprs), o[2])] for p in free]
     worlds = [trace.truth] + ([trace.world] if trace.world is not None and not ahead else [])
     for values in worlds:
         nums = _distinct(trace, options, values)

@@ -46,7 +46,7 @@ from derive.checking.naming import (
     read_side,
     rewrite,
 )
-from derive.checking.ownnames import combos, directed, named_later, own_angles, spells_givens, velocities_before
+from derive.checking.ownnames import combos, directed, named_later, own_readings, spells_givens, velocities_before
 from derive.checking.reducedmass import mass_named, reduced_mass
 from derive.checking.restated import is_size, restated
 from derive.checking.saidagain import said_again
@@ -119,7 +119,7 @@ def read_lines(
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
-    grammar = grammar_names(ctx, used, text, set(problem) | set(declared))
+    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes)
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
@@ -133,7 +133,7 @@ def read_lines(
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     raw = speeds_before(ctx, raw, meanings, _speeds(ctx))  # with v1 = U: U is A's speed
-    own_angles(ctx, raw, meanings)
+    own_readings(ctx, raw, meanings, truth, set(declared))  # θ worked out to another value; u_1 = v_1 - v_cm
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)

@@ -228,9 +228,12 @@ def meaning(ctx: Context, kind: str, body: str, time: str, axis: str) -> sympy.E
     return None
 
 
-def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> dict[str, sympy.Expr]:
+def grammar_names(
+    ctx: Context, used: set[str], text: str, skip: set[str], axes: dict | None = None
+) -> dict[str, sympy.Expr]:
     """The names of ``used`` (as rewritten) that the grammar places -> derive's expression;
-    ``skip`` are names with a meaning already (the problem's, declared ones)."""
+    ``skip`` are names with a meaning already (the problem's, declared ones); ``axes``: the
+    student's x and y placed in words (:func:`.frames.declared_axes`), the axes of x and y in a name."""
     bodies = body_marks(ctx)
     primed = {n[:-2] if n.endswith("_p") else n[:-1] for n in used if re.search(r"(?<=[A-Za-z0-9])_?p$", n)}
     primed = {n for n in primed if _primed_in(text, n)}
@@ -259,10 +262,21 @@ def grammar_names(ctx: Context, used: set[str], text: str, skip: set[str]) -> di
         axis = _at_a_wall(name, axis, ctx.problem.fixed_B)  # v_perp at a wall: into it, n
         if ctx.problem.fixed_B and (time, axis) == ("2", "n") and re.search(r"par|perp|∥|⊥", name):
             continue  # the rebound named by its axis: a size or signed, as the words say (axisnames)
+        axis, sign = _in_axes(name, axis, axes or {})  # y along the line of impact: (v_Ay)_1 is n
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
+            e = sign * e
             out[name] = e / per if kind == "p" and (per := cancelled_mass(ctx, text)) is not None else e
     return out
+
+
+def _in_axes(name: str, axis: str, axes: dict) -> tuple[str, int]:
+    """The axis (and its sign) of a name's x or y where the student's words place the axes
+    ("line of impact = y axis": ``v_Ay1`` is A's n component before); else as the grammar reads it."""
+    letter = {"n": "x", "t": "y"}.get(axis, "")
+    if not letter or axis not in axes or letter not in name[1:]:
+        return axis, 1
+    return axes[axis]
 
 
 #: A component named by its axis alone at a wall (``par = U cos α``, ``perp' = eU sin α``): parallel

@@ -5,7 +5,9 @@ is the student's own angle; a name met first in a relation and set equal, alone,
 in known names later (``φ = 90° − θ``) stands for it on every line; where the text writes u for
 what comes before, a name in v (``v_P``, ``v1``) is not a velocity before the impact; a value
 with a direction opposite to the one the student takes as positive (``right positive``, then
-``v_A = 1.04 m/s to the left``) is negative.
+``v_A = 1.04 m/s to the left``) is negative; a habit's name for a quantity another name already
+stands for, defined alone by a relation false in that reading (``u_1 = v_1 - v_cm`` beside ``v_1``),
+is the student's own quantity, worth its defining line.
 """
 
 from __future__ import annotations
@@ -207,3 +209,50 @@ def directed(relations: tuple, text: str) -> tuple:
             r = replace(r, sides=(*r.sides[:-1], f"-{last}"))
         out.append(replace(r, direction=0) if getattr(r, "direction", 0) else r)
     return tuple(out)
+
+
+def own_readings(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], truth: dict, kept: set[str]) -> None:
+    """The habits' readings the student's own lines overrule: angles (:func:`own_angles`) and
+    quantities defined anew (:func:`defined_anew`); ``meanings`` changed in place."""
+    own_angles(ctx, raw, meanings)
+    defined_anew(ctx, raw, meanings, truth, kept)
+
+
+def defined_anew(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], truth: dict, kept: set[str]) -> None:
+    """``u_1 = v_1 - v_cm`` beside ``v_1`` for A's velocity before; ``u = m_1 v_1/(m_1 + m_2)``, the
+    common velocity: a name the habits read as a quantity another name of the derivation already
+    stands for, met first alone on the left of a relation in other names that is false under that
+    reading, is a quantity of the student's own (a velocity relative to the centre of mass, the
+    velocity at the greatest compression), worth what its defining line says, not that quantity
+    written twice. ``kept``: names declared in words, never read anew (``meanings`` changed in place)."""
+    seen: set[sympy.Symbol] = set()
+    own: dict[sympy.Symbol, sympy.Expr] = {}  # names read anew -> their definitions in derive's names
+    for r in raw:
+        if not r.exprs or len(r.exprs) < 2:
+            continue
+        left, right = r.exprs[0], r.exprs[1]
+        name = left.name[len(PREFIX) :] if left.is_Symbol and left.name.startswith(PREFIX) else ""
+        if name in meanings and name not in kept and left not in seen and lone_name(r.sides[0]):
+            held = meanings[name]
+            if _placeholders(right) and _held_elsewhere(raw, meanings, name, held):
+                reading = {p: own.get(p, meanings.get(p.name[len(PREFIX) :], p)) for p in _placeholders(right) | {left}}
+                value = right.xreplace(reading)
+                if (
+                    not _placeholders(value)
+                    and _holds_at((ctx.num(held.xreplace(truth)), ctx.num(value.xreplace(truth))), {}) is False
+                ):
+                    del meanings[name]
+                    own[left] = value
+        for e in r.exprs:
+            seen |= _placeholders(e)
+
+
+def _held_elsewhere(raw: list, meanings: dict[str, sympy.Expr], name: str, held: sympy.Expr) -> bool:
+    """Whether a name of the derivation other than ``name`` stands for ``held`` (derive's own
+    name written, or another name read as it)."""
+    written = {s for r in raw if r.exprs for e in r.exprs for s in e.free_symbols}
+    return any(
+        s == held
+        or (s.name.startswith(PREFIX) and s.name[len(PREFIX) :] != name and meanings.get(s.name[len(PREFIX) :]) == held)
+        for s in written
+    )

@@ -159,12 +159,17 @@ def _vector(side: str, depth: int = 0) -> dict[str, str] | None:
     if not terms:
         return None
     out: dict[str, list[str]] = {}
+    bare: set[str] = set()  # the axes written as a bare n or t after a number
     for sign, term in terms:
         m = _TERM.match(term.strip())
         scaled = _scaled(term.strip(), depth) if m is None else None
         if scaled is not None:  # "15(cos a i + sin a j)": the number times each component
             for axis, c in scaled.items():
                 out.setdefault(axis, []).append(sign + c)
+            continue
+        if m is None and (nt := _BARE_NT.match(term.strip())):  # "-1.110 n + 3.051 t"
+            bare.add(nt.group(2))
+            out.setdefault(nt.group(2), []).append(sign + (nt.group(1) or "1"))
             continue
         if m is None:
             return None
@@ -173,7 +178,14 @@ def _vector(side: str, depth: int = 0) -> dict[str, str] | None:
             return None  # "2pi", "v_Ai", "sin": not a coefficient of i
         coef = coef.strip().rstrip("*").strip() or "1"
         out.setdefault(UNITS[m.group(2)], []).append(sign + coef)
+    if bare and set(out) != set(AXES):
+        return None  # "3 t" alone: a number times a time, not a component
     return {axis: _joined(bits) for axis, bits in out.items()}
+
+
+#: A number times a bare n or t (``1.110 n``, ``3.051t``): a component on the axis n or t, where a
+#: vector is written with both (the notes' n and t axes, their unit vectors typed as the letters).
+_BARE_NT = re.compile(r"^(\d+(?:\.\d+)?)?\s*\*?\s*([nt])$")
 
 
 def _scaled(term: str, nested: int = 0) -> dict[str, str] | None:
