@@ -25,7 +25,7 @@ import sympy
 
 from derive.checking.context import DEG
 from derive.checking.mistakes import REGISTRY, phrase
-from derive.checking.numeric import number_of
+from derive.checking.numeric import decimals, number_of
 from derive.checking.report import Diagnosis
 
 if TYPE_CHECKING:
@@ -243,11 +243,7 @@ def _right(trace: Trace, line: Read, c: Claim, exact: bool = True) -> Item | Non
             value = number_of(x.xreplace({DEG: sympy.Integer(1)}))
         if value is None or not _near(value.real, c.value, c):
             return None
-    if (
-        not exact
-        and trace.slips
-        and set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(line.sides[:-1]))) & trace.wrong_values
-    ):
+    if not exact and trace.slips and decimals(line.sides[:-1]) & trace.wrong_values:
         return trace._carried(line)  # within its figures, but worked from a number got wrong (or rounded early)
     return trace._item(line, "correct", "True for this problem: it is the angle its words name.", TRUE)
 
@@ -269,7 +265,7 @@ def _slip(
     message = f"{lead}{said}. It is not {what}{that}."
     trace.named[line.number] = {name} if name else set()
     trace.slips.append(line.number)
-    trace.wrong_values |= set(re.findall(r"(?<![\w.])\d+\.\d+", line.sides[-1]))
+    trace.wrong_values |= decimals(line.sides[-1:])
     item = trace._item(line, "wrong", message, TRUE, diagnosis=diags, expected=expected)
     return replace(item, slip=name, again=bool(again))
 

@@ -27,7 +27,7 @@ from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
 from derive.checking.copiedagain import copied_again
-from derive.checking.figures import literal_tolerance
+from derive.checking.figures import literal_tolerance, worked_early
 from derive.checking.impulseword import impulse_said, impulse_sign
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
@@ -349,7 +349,7 @@ def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
         far = abs(a - b) > 2 * tol * max(abs(a), abs(b), largest) + 1e-12  # 0 = 5.26^2 - 2(9.8)h: at 27.7
         if far and not (number_at_figures(sides[k], a) or number_at_figures(sides[i], b)):
             return False
-    return True
+    return not (ends and worked_early(sides, exprs, ctx, partial(_value, ctx, subs=subs)))  # 6.3 worked on
 
 
 def _value(ctx: Context, x: sympy.Expr, subs: list[dict]) -> complex | None:

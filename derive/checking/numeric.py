@@ -104,8 +104,10 @@ def listed(words: list[str]) -> str:
 
 
 def decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
-    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped."""
-    return set(re.findall(r"(?<![\w.])\d+\.\d+", " ".join(sides)))
+    """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped; one typed
+    without its leading zero (``.696``, ``8x.87``) with it (``0.696``)."""
+    found = re.findall(r"(?<![\w.])\d+\.\d+|(?<![\d.])\.\d+", " ".join(sides))
+    return {f"0{t}" if t.startswith(".") else t for t in found}
 
 
 def shown(x: sympy.Expr) -> str:
