@@ -27,7 +27,8 @@ from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
 from derive.checking.copiedagain import copied_again
-from derive.checking.figures import literal_tolerance, worked_early
+from derive.checking.earlyworking import worked_early
+from derive.checking.figures import literal_tolerance
 from derive.checking.impulseword import impulse_said, impulse_sign
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
 from derive.checking.numeric import number_of
@@ -333,9 +334,8 @@ def _number(text: str) -> bool:
 
 
 def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
-    """Whether each ``=`` holds, within the decimals written; where the line ends in a number
-    as written (``d = 1175/4 = 294``), each side is compared with it, at its figures (the
-    student's own rounded working between)."""
+    """Whether each ``=`` holds, within the decimals written; where the line ends in a number as written
+    (``d = 1175/4 = 294``), each side is compared with it, at its figures (rounded working between)."""
     ends = len(exprs) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
     for i in range(len(exprs) - 1):
         k = len(exprs) - 1 if ends else i + 1

@@ -203,24 +203,5 @@ def working_side(sides: tuple[str, ...], exprs: list, data: set, letters: set) -
     return None
 
 
-def worked_early(sides: tuple[str, ...], exprs: list, ctx, value: Callable) -> bool:
-    """Whether the line's working with a two-figure decimal (:func:`working_side`) misses the value
-    of the name it works out by more than two units in the last places of its other decimals
-    (:func:`side_slack` allows the two-figure ones none in working); ``value(expr)``: its value.
-    Where it does, ``ctx.memo`` keeps the line's sides, for the slip's name (``rounded_too_early``)."""
-    from derive.checking.dependency import side_value  # the reader of a side of numbers
-
-    data = ctx.data
-    j = working_side(sides, exprs, data, set())
-    name, worked = (value(exprs[k]) for k in (0, j)) if j is not None else (None, None)
-    if name is None or worked is None:
-        return False
-    slack = side_slack(sides[j], data, side_value)  # type: ignore[index]
-    missed = slack is not None and abs(name - worked) > 2 * slack + 1e-9 * max(abs(name), abs(worked))
-    if missed and abs(name - worked) <= 0.03 * max(abs(name), abs(worked)):  # by rounding, not a slip's size
-        ctx.memo[(EARLY, tuple(sides))] = two_figure(sides[j], data)  # type: ignore[index]
-    return missed
-
-
 #: The key of ``ctx.memo`` under which a line worked from a two-figure decimal keeps it.
 EARLY = "worked from two figures"

@@ -279,10 +279,9 @@ class Trace(Carrying):
             text = " = ".join(line.sides)
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
-            self._number_wrong(bad)  # its number, carried on
-            if early := self._rounded_early(line, bad):  # 8cos30 = 8 x .87: a number rounded to 2 figures
-                return (), None, early, ""
-            return (), None, ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
+            self._number_wrong(bad)  # its number, carried on; 8cos30 = 8 x .87: a decimal rounded to 2 figures
+            early = self._rounded_early(line, bad) if decimals(rounding.early_numbers(self.ctx, line.sides)) else ""
+            return (), None, early or ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
         label = labelled.notes_number(line.tag, bad.difference, self.base.equations, self.U, self.pts[0])
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
