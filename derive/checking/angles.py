@@ -285,7 +285,7 @@ def _slip(
     message = f"{lead}{said}. It is not {what}{that}."
     trace.named[line.number] = {name} if name else set()
     trace.slips.append(line.number)
-    trace.wrong_values |= set(re.findall(r"(?<![\w.])\d+\.\d+", line.sides[-1]))
+    trace.wrong_values |= decimals(line.sides[-1:])
     item = trace._item(line, "wrong", message, TRUE, diagnosis=diags, expected=expected)
     return replace(item, slip=name, again=bool(again))
 

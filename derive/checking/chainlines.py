@@ -27,6 +27,7 @@ from derive.checking.chainstages import in_stages
 from derive.checking.chainworld import own_world
 from derive.checking.context import Context
 from derive.checking.copiedagain import copied_again
+from derive.checking.earlyworking import worked_early
 from derive.checking.figures import literal_tolerance
 from derive.checking.impulseword import impulse_said, impulse_sign
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
@@ -333,9 +334,8 @@ def _number(text: str) -> bool:
 
 
 def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
-    """Whether each ``=`` holds, within the decimals written; where the line ends in a number
-    as written (``d = 1175/4 = 294``), each side is compared with it, at its figures (the
-    student's own rounded working between)."""
+    """Whether each ``=`` holds, within the decimals written; where the line ends in a number as written
+    (``d = 1175/4 = 294``), each side is compared with it, at its figures (rounded working between)."""
     ends = len(exprs) >= 3 and NUMBER_SIDE.match(student(sides[-1].strip())) is not None
     for i in range(len(exprs) - 1):
         k = len(exprs) - 1 if ends else i + 1
@@ -349,7 +349,7 @@ def _holds(ctx: Context, sides, exprs, subs: list[dict]) -> bool | None:
         far = abs(a - b) > 2 * tol * max(abs(a), abs(b), largest) + 1e-12  # 0 = 5.26^2 - 2(9.8)h: at 27.7
         if far and not (number_at_figures(sides[k], a) or number_at_figures(sides[i], b)):
             return False
-    return True
+    return not (ends and worked_early(sides, exprs, ctx, partial(_value, ctx, subs=subs)))  # 6.3 worked on
 
 
 def _value(ctx: Context, x: sympy.Expr, subs: list[dict]) -> complex | None:

@@ -200,9 +200,13 @@ _ENERGY_WORDS = re.compile(
 )
 
 
-def _energy_key(name: str) -> str | None:
+#: A kinetic energy's letter primed (``K'``, ``KE'``, ``E_k'``, read ``K_p``, ``E_kp``): the energy just after.
+_PRIMED = re.compile(r"(?:K_?E|K|E_?k)_?p")
+
+
+def energy_key(name: str) -> str | None:
     """derive's name of an impact's energy a student's name says (``T_2`` for ``KE just after``)."""
-    key = _ENERGIES.get(name)
+    key = "T_2" if _PRIMED.fullmatch(name) else _ENERGIES.get(name)
     m = _ENERGY_WORDS.fullmatch(name) if key is None else None
     if m is not None:
         key = "T_1" if m[1] else "T_2" if m[2] else "T_lost"
@@ -217,7 +221,7 @@ def energies(ctx: Context, read: list) -> Declared:
     used = {s for _r, _sides, exprs in read for x in exprs for s in x.free_symbols if s.name.startswith(PREFIX)}
     out: Declared = {}
     for p in used if len(impacts) == 1 else ():
-        key = _energy_key(p.name[len(PREFIX) :])
+        key = energy_key(p.name[len(PREFIX) :])
         x = _chain_energy(ctx, key) or stage_result(ctx, impacts[0], key) if key else None
         if x is not None:
             out[p] = plain(x)

@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from derive.checking.chainnames import at
+from derive.checking.figures import DECIMAL
 from derive.checking.numeric import number_of
 from derive.checking.report import Item
 from derive.problem.expr import ParseError
@@ -47,7 +48,8 @@ def from_wrong_step(sides, exprs: list, written: list, defs: tuple, how: tuple) 
 def rounded_on(item: Item, line: tuple, defs: tuple, how: tuple, slips: list[str]) -> Item:
     """``item`` (a first slip) as correct where its working's numbers are values the student stated
     before (``own``) that are the chain's results rounded (each of three figures or more, within
-    0.5 % of one of them) and the rule holds with those results put back (see the module's words).
+    0.5 % of one of them) and the rule holds with those results put back (see the module's words);
+    never where it works on a value the student stated at two figures (rounded too early).
     ``defs``: the chain's values, its givens, the declared names' true values, the student's own."""
     sides, exprs = line
     values, known, true_defs, own_defs = defs
@@ -60,6 +62,9 @@ def rounded_on(item: Item, line: tuple, defs: tuple, how: tuple, slips: list[str
         close = [t for t in results if abs(t - x) <= 0.005 * abs(t) and abs(t - x) > 1e-12]
         return min(close, key=lambda t: abs(t - x)) if close else None
 
+    early = [t for t in DECIMAL.findall(sides[1]) if len(t.replace(".", "").lstrip("0")) == 2]
+    if any(abs(float(t) - v) < 1e-9 for t in early for v in stated):  # 6.3 stated, worked on: rounded early
+        return item
     if _put_back(sides, exprs, near, (values, true_defs), how, figures=3):
         slips.pop()
         return replace(item, status="correct", message=ROUNDED)

@@ -45,7 +45,7 @@ from derive.checking.context import DEG, Context
 from derive.checking.equation import judge, relation
 from derive.checking.inference import Read, read_lines
 from derive.checking.number import line_answer
-from derive.checking.numeric import listed
+from derive.checking.numeric import decimals, listed
 from derive.checking.relations import Point, Values, shown
 from derive.checking.report import Diagnosis, Item, merged
 from derive.checking.speedwords import looks_like_prose
@@ -279,8 +279,9 @@ class Trace(Carrying):
             text = " = ".join(line.sides)
             if slipnames.copied_wrong(self.ctx, bad, lambda p: self.holds([p], self.world or self.truth), text):
                 return (), None, f": {COPIED}", "copied_wrong"
-            self._number_wrong(bad)
-            return (), None, ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
+            self._number_wrong(bad)  # its number, carried on; 8cos30 = 8 x .87: a decimal rounded to 2 figures
+            early = self._rounded_early(line, bad) if decimals(rounding.early_numbers(self.ctx, line.sides)) else ""
+            return (), None, early or ": " + sides_unequal(bad.text, bad.left, bad.right, self.pts[0]), ""
         label = labelled.notes_number(line.tag, bad.difference, self.base.equations, self.U, self.pts[0])
         v = judge(self.ctx, relation(self.ctx, bad.text, label, bad.difference))
         if (named := termslips.renamed(self, line, bad, v)) is not None:  # I = m(v - u), v a speed; algebra
@@ -399,7 +400,7 @@ class Trace(Carrying):
         words = rounding.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
         if words:  # named once: the lines after, worked from the same numbers, are carried
             self.early = line.number
-            self.wrong_values |= {t for t in rounding.early_numbers(self.ctx, line.sides) if "." in t}
+            self.wrong_values |= decimals(rounding.early_numbers(self.ctx, line.sides))
         return words
 
     # the world of the slips ------------------------------------------------

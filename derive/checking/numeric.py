@@ -105,9 +105,9 @@ def listed(words: list[str]) -> str:
 
 def decimals(sides: tuple[str, ...] | list[str]) -> set[str]:
     """The decimals written in ``sides`` (``12.2``, ``-0.852``), as written, sign dropped; one
-    typed without its leading zero (``.696``, phone-typed or American) is also the same number
-    with it (``0.696``), so that a line writing it either way is seen to use it."""
-    found = set(re.findall(r"(?<![\w.])\d*\.\d+", " ".join(sides)))
+    typed without its leading zero (``.696``, ``8x.87``, phone-typed or American) is also the same
+    number with it (``0.696``), so that a line writing it either way is seen to use it."""
+    found = set(re.findall(r"(?<![\w.])\d+\.\d+|(?<![\d.])\.\d+", " ".join(sides)))
     return found | {"0" + d for d in found if d.startswith(".")}
 
 

@@ -140,7 +140,7 @@ def early_numbers(ctx: Context, sides: tuple[str, ...]) -> list[str]:
     exact = data | {a * b for a in data for b in data}  # 0.1 = 0.5 x 0.2 (m_A times A's speed): not rounded
     return [
         t
-        for t in re.findall(r"(?<![\w.])\d+\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
+        for t in re.findall(r"(?<![\d.])\d*\.\d+|(?<![\w.])\d{2}(?![\w.])", " ".join(sides[:-1]))
         if figures(Decimal(t)) <= 2 and sympy.Rational(t) not in exact
     ]
 

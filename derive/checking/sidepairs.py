@@ -17,6 +17,7 @@ from __future__ import annotations
 import sympy
 
 from derive.checking.context import DEG
+from derive.checking.figures import working_side
 from derive.checking.worlds import Pair
 
 
@@ -29,4 +30,15 @@ def adjacent(trace, sides: tuple[str, ...], exprs: list[sympy.Expr], raw: list[s
             continue  # a side of numbers: its rounded decimals judged against the number it ends in
         tol = max(trace._tolerance(sides, raw, (i, i + 1), ""), 1e-9)
         out.append(Pair(f"{sides[i]} = {sides[i + 1]}", exprs[i], exprs[i + 1], tol, (raw[i], raw[i + 1]), True))
-    return out
+    return out + rounded_working(trace, sides, exprs, raw)
+
+
+def rounded_working(trace, sides: tuple[str, ...], exprs: list[sympy.Expr], raw: list[sympy.Expr]) -> list[Pair]:
+    """The name a line works out put to the first side of its working that uses a decimal rounded
+    to two figures (``J = 0.3(5.24 + 6.3) = 3.46`` is also J = 0.3(5.24 + 6.3)), at the slack of
+    its other decimals only: rounded too early (:func:`.figures.working_side`)."""
+    j = working_side(sides, raw, trace.ctx.data, {DEG})
+    if j is None:
+        return []
+    tol = max(trace._tolerance(sides, raw, (0, j), ""), 1e-9)
+    return [Pair(f"{sides[0]} = {sides[j]}", exprs[0], exprs[j], tol, (raw[0], raw[j]), True)]

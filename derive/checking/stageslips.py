@@ -12,6 +12,7 @@ import sympy
 
 from derive.checking import mistakes
 from derive.checking.context import Context
+from derive.checking.figures import EARLY
 from derive.checking.numeric import number_of
 from derive.checking.report import Item
 from derive.checking.worlds import NUMBER_SIDE
@@ -207,13 +208,17 @@ def unnamed_number(ctx: Context, exprs: list, sides: tuple) -> bool:
 
 def rule_named(ctx: Context, item: Item, line: tuple, reread: Callable[[str], sympy.Expr], holds: Callable) -> Item:
     """A chain's slip named by the rule it breaks: a weight used as the mass, or a rule of motion
-    with a factor 2 lost (``line``: the sides as written and as read)."""
+    with a factor 2 lost, or worked from a number rounded to two figures (``line``: the sides as
+    written and as read)."""
     sides, exprs = line
     lead = item.message.split(": ")[0]
     if not item.slip and weight_as_mass(ctx, sides, reread, holds):
         item = replace(item, slip="weight_as_mass", message=f"{lead}: it {mistakes.phrase('weight_as_mass')}.")
     if not item.slip and factor_lost(ctx, exprs, holds):
         item = replace(item, slip="algebra", message=f"{lead}{FACTOR_LOST}")
+    if not item.slip and (early := ctx.memo.get((EARLY, tuple(sides)))):  # J = 0.3(5.24 + 6.3) = 3.46
+        said = f"{lead}: rounded too early: worked from {', '.join(early[:3])}, rounded to 2 figures."
+        item = replace(item, slip="rounded_too_early", message=said)
     return item
 
 

@@ -17,6 +17,8 @@ import sympy
 
 from derive.checking import stepslips
 from derive.checking.carried import Trace, sides
+from derive.checking.chainnames import energy_key
+from derive.checking.naming import PREFIX
 from derive.checking.rearranging import FACTORS
 from derive.checking.slipnames import FLIPPED, Previous, sign_of_a_term, solving_slip
 from derive.checking.stepslips import halved  # noqa: F401  (chainlines' import)
@@ -86,9 +88,18 @@ def term_slip(
                 if holds([*exprs[:i], side + (k - 1) * t, *exprs[i + 1 :]]):
                     found.add("algebra" if abs(t / squares[0]) == 1 else "ke_formula")
     if len(found) != 1:
-        return stepslips.working_step(exprs, written, holds) if written else ("", "")
+        name, why = stepslips.working_step(exprs, written, holds) if written else ("", "")
+        return (
+            ("ke_formula", HALVED["ke_formula"]) if name == "algebra" and exprs and _energy(exprs[0]) else (name, why)
+        )
     name = found.pop()
     return name, HALVED[name]
+
+
+def _energy(x: sympy.Expr) -> bool:
+    """Whether ``x`` is a name the student gives an impact's kinetic energy (``K'``, ``KE after``):
+    a factor of 2 lost in its own formula is the ½ of ½ m v² dropped, ``ke_formula``."""
+    return isinstance(x, sympy.Symbol) and energy_key(x.name.removeprefix(PREFIX)) is not None
 
 
 #: What a report says of a line whose working puts a value in with its sign lost.
