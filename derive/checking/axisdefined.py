@@ -15,29 +15,16 @@ from __future__ import annotations
 
 import re
 
+from derive.checking.axisnames import AXIS_LETTERS, sub_axis
 from derive.checking.labelled import resolved
 from derive.checking.worlds import Pair
 
-#: An axis's word or letter in a name's subscript -> the axis (along the line of centres "n",
-#: across it "t"); at a wall parallel is along it (t) and perpendicular into it (n).
-_AXES = {
-    "n": "n",
-    "x": "n",
-    "par": "n",
-    "para": "n",
-    "parallel": "n",
-    "along": "n",
-    "normal": "n",
-    "t": "t",
-    "y": "t",
-    "perp": "t",
-    "perpendicular": "t",
-    "across": "t",
-    "tangent": "t",
-}
-#: At a wall: the wall's own words (x and y say nothing of the wall: the student's to place).
-_AT_A_WALL = {"par": "t", "para": "t", "parallel": "t", "along": "t", "perp": "n", "perpendicular": "n", "n": "n"}
-_AT_A_WALL |= {"normal": "n", "t": "t", "tangent": "t", "across": "n"}
+#: An axis's letter or word in a name's subscript other than parallel and perpendicular (those are
+#: :func:`.axisnames.sub_axis`'s): along the line of centres "n", across it "t"; at a wall n is into
+#: it and t along it, and x and y say nothing of the wall (the student's to place). Not i and j: in
+#: a name's subscript they are initial, or a body.
+_LETTERS = {k: v for k, v in AXIS_LETTERS.items() if k not in "ij"} | {"normal": "n", "tangent": "t"}
+_AT_A_WALL = {k: v for k, v in _LETTERS.items() if k not in "xy"}
 #: A velocity's letter and an axis in its subscript, with no body and no time (``v_perp``, ``ux``).
 _NAME = re.compile(r"(?i)[uvw]_?\{?([a-z]+)\}?")
 
@@ -49,7 +36,7 @@ def axis_of(name: str, wall: bool) -> str:
     if not m:
         return ""
     word = m.group(1).lower()
-    return (_AT_A_WALL if wall else _AXES).get(word, "")
+    return (_AT_A_WALL if wall else _LETTERS).get(word, "") or sub_axis(word, wall)
 
 
 def of_trace(trace, line) -> Pair | None:
