@@ -297,3 +297,23 @@ def letter_term(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
                 if proportional(bad.difference, held.difference - t + x, U, [pt], tol):
                     return True
     return False
+
+
+def sign_carried(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
+    """Whether ``bad`` is ``held`` with its terms in the unknowns as they were (up to a factor) and
+    its one term free of them, written as it was, on the wrong side of the sign: ``v_1 = v_2 +
+    u/2`` from ``v_2 − v_1 = u/2``. Nothing was worked out in that step, so nothing can be
+    arithmetic: the term was carried across with its sign kept, algebra. A number worked out
+    from several (``20 v = 0.5`` from ``10 = 20 v + 10.5``) is not this (:func:`number_negated`)."""
+    unknowns = set(U)
+    if held.raw is None:
+        return False
+    free = [t for side in held.raw for t in sympy.Add.make_args(sympy.expand(side)) if t and not t.free_symbols & unknowns]
+    if len(free) != 1:
+        return False
+    F = sympy.expand(held.difference.xreplace(pt))
+    inside = sum((t for t in sympy.Add.make_args(F) if t.free_symbols & unknowns), sympy.Integer(0))
+    k = F - inside
+    if not inside or not k or k.free_symbols:
+        return False
+    return proportional(bad.difference.xreplace(pt), inside - k, U, [pt], max(bad.tol, 1e-9))

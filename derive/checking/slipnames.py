@@ -235,7 +235,7 @@ def solving_slip(
     if held and rearranging.letter_term(failing[0], held[-1], U, pt):  # a mass divided out of all but one term
         return "algebra"
     if held and same_but_number(failing[0].difference, held[-1].difference, U, pt):
-        return "arithmetic"
+        return "algebra" if rearranging.sign_carried(failing[0], held[-1], U, pt) else "arithmetic"
     return ""
 
 

@@ -42,7 +42,8 @@ def step_first(trace, line, bad: Pair, found: Explained) -> Explained:
 
     previous = trace.previous[1]
     names = set().union(*(x.free_symbols for p in previous for x in p.raw or ()))
-    letters = [s for s in names if not trace.ctx.in_unknowns(s).free_symbols & set(trace.U)]  # a given's
+    symbolic = set(trace.pts[0])  # a symbolic given (u, m) has no number to put in: it is algebra's letter
+    letters = [s for s in names if s not in symbolic and not trace.ctx.in_unknowns(s).free_symbols & set(trace.U)]
     if letters or not all(p.raw is not None and held(p) for p in previous):  # numbers put in: not a step
         return found
     name = slipnames.solving_slip(line.sides, trace.pairs(line), trace.previous, (trace.U, trace.pts[0]), held)
