@@ -27,6 +27,8 @@ MAX_BRACKETS = 4
 MAX_TERMS = 4
 #: A factor written before a bracket: a number, with letters after it or not (``3*``, ``2*m*``).
 FACTOR = re.compile(r"(?<![\w.)])(\d+(?:\.\d+)?(?:\*[A-Za-z]\w*)*)\*?$")
+#: A minus alone before a bracket (``u - (u + e*u)/2``): the bracket times -1, not a function's.
+MINUS = re.compile(r"-\s*$")
 
 
 def _closing(text: str, start: int) -> int | None:
@@ -46,7 +48,9 @@ def _terms(inside: str) -> list[str]:
 
 def _times(factor: str, term: str) -> str:
     sign, body = (term[0], term[1:].strip()) if term[:1] in "+-" else ("+", term)
-    return f"{sign}{factor}*({body})"
+    if factor.startswith("-"):  # the minus before the bracket reaches the term: its sign turned
+        sign, factor = "-" if sign == "+" else "+", factor[1:]
+    return f"{sign}{factor}*({body})" if factor != "1" else f"{sign}({body})"
 
 
 def variants(text: str) -> list[str]:
@@ -54,22 +58,30 @@ def variants(text: str) -> list[str]:
     (``3*(x+4*e*u)`` → ``(3*(x)+4*e*u)``, ``(x+3*(4*e*u))``)."""
     out: list[str] = []
     for start in [i for i, ch in enumerate(text) if ch == "("][:MAX_BRACKETS]:
-        factor = FACTOR.search(text[:start])
-        end = _closing(text, start)
-        if factor is None or end is None:
+        factor, minus, end = FACTOR.search(text[:start]), MINUS.search(text[:start]), _closing(text, start)
+        if (factor is None and minus is None) or end is None:
             continue
         terms = _terms(text[start + 1 : end])
         if not 2 <= len(terms) <= MAX_TERMS:
             continue
-        head, tail = text[: factor.start()], text[end + 1 :]
+        head, tail = text[: (factor or minus).start()] + ("" if factor else "+"), text[end + 1 :]
+        ways = [(factor.group(1) if factor else "-1", "")]  # a minus alone before the bracket: -1
+        if factor and (signed := MINUS.search(text[: factor.start()])):  # ``- 3(x - 4)``: the minus
+            ways.append((f"-{factor.group(1)}", factor.group(1)))  # reaching some terms, the 3 all
+            signed_head = text[: signed.start()] + "+"
         for k in range(1, len(terms)):
             for chosen in combinations(range(len(terms)), k):
-                inside = " ".join(
-                    _times(factor.group(1), t) if i in chosen else (t if t[:1] in "+-" or i == 0 else "+" + t)
-                    for i, t in enumerate(terms)
-                )
-                out.append(f"{head}({inside}){tail}")
+                for by, rest in ways:
+                    inside = " ".join(
+                        _times(by, t) if i in chosen else _times(rest, t) if rest else _plain(t, i)
+                        for i, t in enumerate(terms)
+                    )
+                    out.append(f"{signed_head if rest else head}({inside}){tail}")
     return out
+
+
+def _plain(term: str, i: int) -> str:
+    return term if term[:1] in "+-" or i == 0 else "+" + term
 
 
 def _reads(ctx, text: str, known: set[str]) -> sympy.Expr | None:

@@ -308,7 +308,9 @@ def sign_carried(bad: Pair, held: Pair, U: tuple, pt: dict) -> bool:
     unknowns = set(U)
     if held.raw is None:
         return False
-    free = [t for side in held.raw for t in sympy.Add.make_args(sympy.expand(side)) if t and not t.free_symbols & unknowns]
+    free = [
+        t for side in held.raw for t in sympy.Add.make_args(sympy.expand(side)) if t and not t.free_symbols & unknowns
+    ]
     if len(free) != 1:
         return False
     F = sympy.expand(held.difference.xreplace(pt))
