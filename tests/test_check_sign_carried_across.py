@@ -35,12 +35,7 @@ def test_a_number_carried_across_with_its_sign_is_algebra() -> None:
 def test_a_term_in_the_symbolic_givens_carried_across_is_algebra() -> None:
     # The givens are letters (u, e, m): nothing is put in for them, so the step is still the
     # step. vA = vB + 3eu from vB - vA = 3eu: the 3eu kept its sign crossing over (phone-typed).
-    work = (
-        "A's way +ve. after: vA, vB\n"
-        "5mu - 2m(2u) = 5m vA + 2m vB\n"
-        "vB - vA = e(u + 2u) = 3eu\n"
-        "vA = vB + 3eu\n"
-    )
+    work = "A's way +ve. after: vA, vB\n5mu - 2m(2u) = 5m vA + 2m vB\nvB - vA = e(u + 2u) = 3eu\nvA = vB + 3eu\n"
     found = worst_lines(FIVE_M, work)
     assert found[2][0] == found[3][0] == "correct", found
     assert found[4] == ("wrong", "algebra"), found

@@ -21,6 +21,7 @@ from derive.checking import (
     carried,
     cofunctions,
     eliminated,
+    energyshown,
     firstwritten,
     freshslips,
     labelled,
@@ -359,6 +360,7 @@ class Trace(Carrying):
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
         world = self.world if self.world is not None else self.truth
         found = slipnames.under_results(self.ctx, bad, lambda p: self.holds([p], world))
+        found = energyshown.shown(self.ctx, bad, found, lambda p: self.holds([p], world))  # K = 3mu², no ½
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _with_slips_results(self, line: Line, pairs: list[Pair]) -> bool:
