@@ -272,6 +272,14 @@ Reread = Callable[[str], sympy.Expr]
 Holds = Callable[[tuple[str, ...], list[sympy.Expr]], bool]
 
 
+def _stated_as(name: str, n: sympy.Rational, givens: list, reread: Reread, holds: Holds):
+    """The one given whose value, written for ``n``, makes ``name = n`` hold: a name the habit reads
+    (``(v_B)_2 = 2.6`` for B's 2.9 m/s after, the chain's ``s_B``) set alone to a given's number
+    copied wrongly, the line stating data, not a value worked out; None where not exactly one."""
+    fits = [g for g in givens if n != abs(g.value) and holds((name, f"{float(g.value):.6f}"), [reread(name), g.value])]
+    return fits[0] if len(fits) == 1 and n * fits[0].value > 0 else None
+
+
 def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -> tuple[str, dict] | None:
     """A given copied wrongly into a line of working (a number that, put back as the given,
     makes the line hold; not the value a line works out, ``v = 9``): the words of the slip,
@@ -286,7 +294,7 @@ def copied(ctx: Context, sides: tuple[str, ...], reread: Reread, holds: Holds) -
             return None  # "down +ve, u = 21": a side that is not a quantity
         g = next(
             (g for g in givens if getattr(left, "name", None) == g.name and n != g.value and n * g.value > 0), None
-        )
+        ) or _stated_as(sides[0], n, givens, reread, holds)
         world = copiedsums.solved_with(chain, g.name, n) if g is not None else None
         if world is not None:
             return (

@@ -33,7 +33,7 @@ def copied_again(ctx: Context, item: Item, sides, items: list[Item], reread: Rer
     if found is None or not first.message.endswith(found[0]):
         return item
     token = found[0].rsplit("not ", 1)[-1].rstrip(".")
-    if re.search(rf"[A-Za-z]\w*\s*=\s*{re.escape(token)}(?![\d.])", first.written):
+    if re.search(rf"[A-Za-z][\w(){{}}\\^']*\s*=\s*{re.escape(token)}(?![\d.])", first.written):  # ``(v_B)_2 = 2.6``
         return item  # "e = 0.6" stated, then used: worked from the student's own e, carried
     said = f"False: the same mistake as in line {first.name}, made again{found[0]}"
     return replace(item, status="wrong", again=True, slip="copied_wrong", message=said)
