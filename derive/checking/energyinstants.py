@@ -13,8 +13,8 @@ from dataclasses import replace
 
 from derive.mathtext.reader import Relation
 
-#: A kinetic energy's bare name, as a side alone: KE, K.E., E_k, Ek, E_{k}, K.
-_BARE = re.compile(r"\s*(?:K\.?\s?E\.?|E_?\{?k\}?|K)\s*")
+#: A kinetic energy's bare name, as a side alone: KE, K.E., E_k, Ek, E_{k}, K; primed too (K', KE').
+_BARE = re.compile(r"\s*(?:K\.?\s?E\.?|E_?\{?k\}?|K)\s*['′]?\s*")
 #: The label names a kinetic energy ...
 _ENERGY = re.compile(r"(?i)(?<![A-Za-z])(?:K\.?\s?E\.?|E_?\{?k\}?|kinetic\s+energy|energy)(?![A-Za-z])")
 #: ... at one instant (the first that matches).
@@ -35,9 +35,16 @@ def instant_of(label: str) -> str:
 
 def energy_at_labels(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:
     """Each relation whose first side is a kinetic energy's bare name, led in by a label naming
-    the energy's instant, with that side named at the instant (``KE`` -> ``KE_after``)."""
-    out = []
+    the energy's instant, with that side named at the instant (``KE`` -> ``KE_after``), and the
+    same bare name written again in a later relation named so too (``KE before: K = 3mu²``,
+    ``KE after: K' = …``, then ``KE lost = K − K'``): a name the label gave keeps its meaning."""
+    out, named = [], {}
     for r in relations:
         at = instant_of(r.label) if r.sides and _BARE.fullmatch(r.sides[0]) else ""
-        out.append(replace(r, sides=(f"KE_{at}", *r.sides[1:])) if at else r)
+        sides = (f"KE_{at}", *r.sides[1:]) if at else r.sides
+        for bare, name in named.items():  # ``KE lost = K - K'``: each named as its label said
+            sides = tuple(re.sub(rf"(?<![\w'′]){re.escape(bare)}(?![\w'′])", name, x) for x in sides)
+        if at:
+            named[r.sides[0].strip()] = f"KE_{at}"  # the name keeps the label's meaning on later lines
+        out.append(replace(r, sides=sides) if sides != r.sides else r)
     return tuple(out)
