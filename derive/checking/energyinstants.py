@@ -42,8 +42,11 @@ def energy_at_labels(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:
     for r in relations:
         at = instant_of(r.label) if r.sides and _BARE.fullmatch(r.sides[0]) else ""
         sides = (f"KE_{at}", *r.sides[1:]) if at else r.sides
-        for bare, name in named.items():  # ``KE lost = K - K'``: each named as its label said
-            sides = tuple(re.sub(rf"(?<![\w'′]){re.escape(bare)}(?![\w'′])", name, x) for x in sides)
+        for bare, name in named.items():  # ``KE lost = K - K'``: each named as its label said, never
+            # a word of a longer name (``Delta KE``, ``KE lost``)
+            sides = tuple(
+                re.sub(rf"(?<![\w'′Δ])(?<![A-Za-z] ){re.escape(bare)}(?![\w'′]|\s*[A-Za-z])", name, x) for x in sides
+            )
         if at:
             named[r.sides[0].strip()] = f"KE_{at}"  # the name keeps the label's meaning on later lines
         out.append(replace(r, sides=sides) if sides != r.sides else r)
