@@ -24,11 +24,12 @@ HALF = re.compile(
 )
 
 
-def shown(ctx: Context, bad: Pair, found: list[Mistake], holds: Callable[[Pair], bool]) -> list[Mistake]:
+def shown(ctx: Context, bad: Pair, found: list[Mistake], holds: Callable[[Pair], bool], text: str) -> list[Mistake]:
     """``found`` (the mistakes whose value of a result makes ``bad`` hold) with the masses swapped
-    left out where ``bad`` writes no half and a kinetic energy's wrong formula explains it too."""
+    left out where the line (``text``, every side of it) writes no half and a kinetic energy's
+    wrong formula explains it too."""
     from derive.checking.slipnames import ke_formula  # slipnames imports this module's neighbours
 
-    if not found or any(m.name != "masses_swapped" for m in found) or HALF.search(bad.text):
+    if not found or any(m.name != "masses_swapped" for m in found) or HALF.search(text):
         return found
     return [] if ke_formula(ctx, bad, holds) == "ke_formula" else found

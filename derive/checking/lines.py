@@ -263,7 +263,7 @@ class Trace(Carrying):
         if len(set(self.slips)) >= MAX_SEARCHED:  # bounded: a long list of slips is not searched further
             return (), None, f" (not searched for a common mistake: more than {MAX_SEARCHED} slips).", ""
         if not bad.difference.free_symbols & set(self.U):
-            diags = self._before(bad) or self._in_results(bad)
+            diags = self._before(bad) or self._in_results(bad, line)
             if diags:
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, None, f": it {said}.", ""
@@ -304,7 +304,7 @@ class Trace(Carrying):
         if (combined := misread.misread(self, line, bad, diags) or carried.combined(self, bad, diags)) is not None:
             return ((), *combined)
         if not diags:  # a result's mistake keeps the velocities stated right: pinned or not
-            diags = self._in_results(bad) or (() if pinned else self._in_mistake_world(bad) or self._before(bad))
+            diags = self._in_results(bad, line) or (() if pinned else self._in_mistake_world(bad) or self._before(bad))
             if diags:  # a result worked wrongly, or the mistake's world is now the student's
                 said = " / ".join(mistakes.phrase(d.mistake) or d.title for d in diags)
                 return diags, KEPT, f": it {said}.", ""
@@ -356,11 +356,12 @@ class Trace(Carrying):
                 return self.ctx.diagnosis(o.mistake)
         return ()
 
-    def _in_results(self, bad: Pair) -> tuple[Diagnosis, ...]:
+    def _in_results(self, bad: Pair, line: Line | None = None) -> tuple[Diagnosis, ...]:
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
         world = self.world if self.world is not None else self.truth
         found = slipnames.under_results(self.ctx, bad, lambda p: self.holds([p], world))
-        found = energyshown.shown(self.ctx, bad, found, lambda p: self.holds([p], world))  # K = 3mu², no ½
+        text = " = ".join(line.sides) if line is not None else bad.text  # K = 3mu², no ½ on the whole line
+        found = energyshown.shown(self.ctx, bad, found, lambda p: self.holds([p], world), text)
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _with_slips_results(self, line: Line, pairs: list[Pair]) -> bool:
