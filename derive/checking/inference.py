@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 import sympy
 
 from derive.checking.axisnames import components
+from derive.checking.bodygivens import body_givens
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
@@ -119,7 +120,7 @@ def read_lines(
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
-    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes)
+    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes) | body_givens(ctx, used, problem)
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
