@@ -256,6 +256,17 @@ def grammar_names(
             for other, q in parsed.items()
         ):
             time = "1"  # vAn beside vAn': before; K beside K' (or K_f): the energy before
+        elif (
+            not time
+            and kind == "v"
+            and body
+            and axis
+            and any(
+                o[0] == name[0] and o.endswith("p") and q[1:3] == (body, "2") and q[3] not in ("", axis)
+                for o, q in parsed.items()
+            )
+        ):
+            time = "1"  # v2y beside v2x' (the body's other component primed): before, a prime its after
         elif not time and kind == "v" and body and _only_before_marked(parsed, body, axis):
             time = "2"  # vAx beside vAx1 (and none marked after): after
         elif not time and kind == "v" and body and _by_word(name, bodies) and not _said_speed(name, text):
