@@ -351,7 +351,7 @@ def _infer(
         natural = [o for o in options if natural_of(o, options, sign) == o]  # A's then B's, each its own way
         best = shapes.first_shaped(best, options, group, mapping, ranked.__getitem__, natural)
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
-        need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
+        need = 1 if _natural(group, best) or shown or shapes.grounds(best, group, mapping) else 2  # once: enough
         floor = max(min(fits), score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping))  # what holds anyway
         if fits[options.index(best)] < floor + need:
             best = the_speed(ctx, group, options)  # or "speed U": the problem's speed, renamed
