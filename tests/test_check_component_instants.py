@@ -48,3 +48,17 @@ def test_u_with_a_body_s_digit_and_an_axis_is_before(work: str) -> None:
 def test_u_with_a_body_s_digit_and_an_axis_is_judged() -> None:
     assert statuses(DISKS, "u_1n = 8 sin 30 = 4") == {1: "wrong"}  # along is 8 cos 30° = 6.93
     assert statuses(DISKS, "u2y = 4") == {1: "wrong"}  # B at rest
+
+
+@pytest.mark.parametrize(
+    ("work", "expected"),
+    [
+        ("along loc: A 8cos30=6.93\nperp: A 8sin30=4", {1: "correct", 2: "correct"}),
+        ("across: A 8 sin 30 = 4.00 ft/s", {1: "correct"}),
+        ("along: A 8sin30=4", {1: "wrong"}),  # along the line of centres is 8 cos 30° = 6.93
+        ("perp: A 8cos30=6.93", {1: "wrong"}),  # across is 8 sin 30° = 4
+    ],
+)
+def test_a_body_s_letter_before_its_value_under_an_axis_heading(work: str, expected: dict) -> None:
+    # phone-typed: the colon after the body's letter left out; the axis said before the line's colon
+    assert statuses(DISKS, work) == expected
