@@ -219,4 +219,7 @@ def letter_components(ctx: Context, used: set[str] | None = None) -> dict[str, s
             if letter in "xy":
                 out[f"u_{body}{letter}"] = getattr(nm, f"{body}1{c}")
                 out[f"v_{body}{letter}"] = getattr(nm, f"{body}2{c}")
+            if letter in "xynt":  # u_1x, u2y, (u_1)_x: u is before, whichever mark names the body
+                one = "1" if body == "A" else "2"
+                out[f"u_{one}{letter}"] = out[f"u{one}{letter}"] = getattr(nm, f"{body}1{c}")
     return out

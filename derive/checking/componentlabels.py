@@ -41,6 +41,7 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
     component just before."""
     out, labels, body = [], [], ""
     for r in relations:
+        r = _letter_lead(r)  # "perp: B 2sin60=1.732": B's lead-in, its colon left out
         m = COMPONENT_OF.match(r.sides[0])
         h = _HAS.match(r.sides[0]) if not r.label else None
         if m:
@@ -60,6 +61,24 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
             labels.append(r.label)
         out.append(r)
     return out, labels
+
+
+#: A body's letter before its value with the colon left out (``B 2cos60=1``, ``A 3(0.6)``): the
+#: body's lead-in, never a product (a body's letter is no quantity).
+_LETTER_LEAD = re.compile(r"^\s*([AB])\s+(?=[\d.(−-])(.+)$")
+#: The axis a line's words before its colon name (``alongXY:``, ``perp:``, ``across:``, ``⊥:``).
+_AXIS_HEAD = re.compile(r"^\s*(?:(along|par|∥)|(perp|across|⊥))[^:]{0,24}:", re.I)
+
+
+def _letter_lead(r: Relation) -> Relation:
+    """``B 2cos60 = 1`` -> ``B: 2cos60 = 1``; under an axis's heading (``alongXY: …, B 2cos60=1``,
+    ``perp: B 2sin60=1.732``) the body's component along that axis, ``B: along = 2cos60 = 1``."""
+    m = _LETTER_LEAD.match(r.sides[0]) if len(r.sides) > 1 else None
+    if m is None:
+        return r
+    head = _AXIS_HEAD.match(r.written)
+    axis = ("along" if head.group(1) else "across") if head else ""
+    return replace(r, sides=(*([axis] if axis else []), m.group(2), *r.sides[1:]), label=m.group(1))
 
 
 def _unsigned(words: str, value: str) -> str:

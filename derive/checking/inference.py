@@ -14,6 +14,7 @@ from dataclasses import dataclass, replace
 import sympy
 
 from derive.checking.axisnames import components
+from derive.checking.bodygivens import body_givens
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
@@ -119,7 +120,7 @@ def read_lines(
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)
-    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes)
+    grammar = grammar_names(ctx, used, text, set(problem) | set(declared), axes) | body_givens(ctx, used, problem)
     meanings: dict[str, sympy.Expr] = {
         **shared_letters(ctx, used, problem),
         **habits(ctx, used),
@@ -350,7 +351,7 @@ def _infer(
         natural = [o for o in options if natural_of(o, options, sign) == o]  # A's then B's, each its own way
         best = shapes.first_shaped(best, options, group, mapping, ranked.__getitem__, natural)
         shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
-        need = 1 if _natural(group, best) or shown else 2  # a name worked out on its line: once is enough
+        need = 1 if _natural(group, best) or shown or shapes.grounds(best, group, mapping) else 2  # once: enough
         floor = max(min(fits), score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping))  # what holds anyway
         if fits[options.index(best)] < floor + need:
             best = the_speed(ctx, group, options)  # or "speed U": the problem's speed, renamed

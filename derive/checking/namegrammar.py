@@ -143,7 +143,7 @@ def parse(
     "m" mass);
     ``primed``: the name was written with a prime (after)."""
     for base, k in _BASES:
-        if name.startswith(base) and name != base:
+        if name.startswith(base) and (name != base or k == "K"):  # K alone: an energy, its time from its twin
             kind, marks = k, name[len(base) :]
             break
     else:
@@ -157,7 +157,7 @@ def parse(
             kind, marks = "v", name[0].upper() + name[-1]
         else:
             return None
-    if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed):
+    if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed or kind == "K"):
         return None
     parts = _split(marks, bodies, digits_are_bodies, kind)
     if parts is None:
@@ -251,8 +251,22 @@ def grammar_names(
     if "m" in used and "m" not in skip and not ctx.problem.fixed_B and _equal(ctx, m.m_A, m.m_B):
         out["m"] = m.m_A  # two equal masses: m is each one's
     for name, (kind, body, time, axis) in parsed.items():
-        if not time and any(q[:2] == (kind, body) and q[2] == "2" and q[3] == axis for q in parsed.values()):
-            time = "1"  # vAn beside vAn': before
+        if not time and any(
+            q[:2] == (kind, body) and q[2] == "2" and q[3] == axis and (kind != "K" or body or other.startswith(name))
+            for other, q in parsed.items()
+        ):
+            time = "1"  # vAn beside vAn': before; K beside K' (or K_f): the energy before
+        elif (
+            not time
+            and kind == "v"
+            and body
+            and axis
+            and any(
+                o[0] == name[0] and o.endswith("p") and q[1:3] == (body, "2") and q[3] not in ("", axis)
+                for o, q in parsed.items()
+            )
+        ):
+            time = "1"  # v2y beside v2x' (the body's other component primed): before, a prime its after
         elif not time and kind == "v" and body and _only_before_marked(parsed, body, axis):
             time = "2"  # vAx beside vAx1 (and none marked after): after
         elif not time and kind == "v" and body and _by_word(name, bodies) and not _said_speed(name, text):
@@ -368,8 +382,8 @@ def _primed_in(text: str, stem: str) -> bool:
     return re.search(under_after, text) is not None  # "After: vx = …" beside "Before: vx = …": vx′
 
 
-#: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``).
-_CHANGE = re.compile(r"^\s*(?:\\?Delta|Δ)\s*(?:KE|K|E_?k|E|T)\s*$")
+#: A change of kinetic energy by its Greek capital (``ΔKE``, ``\Delta K``, ``ΔE_k``), or typed with a d (``dK``).
+_CHANGE = re.compile(r"^\s*(?:(?:\\?Delta|Δ)\s*(?:KE|K|E_?k|E|T)|d(?:KE|K|E_?k))\s*$")
 
 
 def energy_change(relations: tuple[Relation, ...]) -> tuple[Relation, ...]:

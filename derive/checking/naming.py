@@ -64,7 +64,8 @@ _EVENT = r"(?:\s+(?:the\s+)?(?:collision|impact|bounce|rebound|crash))?"  # "KE 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:(?:\\?Delta|Δ)\s*(?:KE|(?-i:T|E_?k|E|K))\b|KE[\s_]*lost|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|(?-i:T|E_?k|E|K))\b|(?<![A-Za-z\\])d(?-i:KE|K|E_?k)(?![\w'])"  # dK: ΔK typed
+        r"|(?<![A-Za-z])(?:KE|(?-i:K|E_?k))[\s_]*\(?(?:lost|loss)\b\)?|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
     ),

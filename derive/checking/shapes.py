@@ -59,16 +59,30 @@ class Shapes:
         if first is None or not self.targets:
             return best
 
-        def reads(option: tuple) -> tuple[bool, bool]:  # (holds, has a shape)
-            m = {**mapping, **{p: e for p, (_w, e) in zip(group, option, strict=True)}}
-            d = first.xreplace({k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in m.items()})
-            c = linear_part(d, self.U)
-            return self._holds(d), bool(c and any(alike(c, t) for t in self.targets))
+        def reads(option: tuple) -> tuple[bool, bool]:
+            return self._reads(first, option, group, mapping)
 
+        if not all(reads(best)) and (held := [o for o in natural if all(reads(o))]):
+            return max(held, key=key)  # it holds as (1)-(4) read so: the names' reading, whatever a slip after
         if any(reads(best)) or any(reads(o)[0] for o in options):
             return best
         shaped = [o for o in natural if reads(o)[1]]
         return max(shaped, key=key) if shaped else best
+
+    def grounds(self, option: tuple, group: list, mapping: dict) -> bool:
+        """Whether the first relation the names of ``group`` stand in holds under ``option`` and has
+        the shape of one of (1)-(4) there: ``3a + 5(1) = 3(0) + 5b``, each name beside its body's mass
+        on its instant's side, is (3) with a A's before and b B's after, one relation enough to read
+        them, as a teacher does, though a later line's slip leaves it the only one that holds."""
+        first = next((d for d in self.diffs if placeholders(d) & set(group)), None)
+        return first is not None and bool(self.targets) and all(self._reads(first, option, group, mapping))
+
+    def _reads(self, first: sympy.Expr, option: tuple, group: list, mapping: dict) -> tuple[bool, bool]:
+        """(holds, has a shape of (1)-(4)) of the relation ``first`` with ``group`` read as ``option``."""
+        m = {**mapping, **{p: e for p, (_w, e) in zip(group, option, strict=True)}}
+        d = first.xreplace({k: self.ctx.in_unknowns(v).xreplace(self.pt) for k, v in m.items()})
+        c = linear_part(d, self.U)
+        return self._holds(d), bool(c and any(alike(c, t) for t in self.targets))
 
     def _holds(self, d: sympy.Expr) -> bool:
         terms = [number_of(t.xreplace(self.truth)) for t in sympy.Add.make_args(sympy.expand(d))]
