@@ -62,3 +62,15 @@ def test_names_worked_on_other_lines_are_judged_before_a_working_in_numbers() ->
     assert found[1] == ("wrong", "sin_cos_swapped")
     assert found[3][0] == "carried"
     assert found[4] == ("wrong", "restitution_reversed")
+
+
+def test_a_name_no_reading_places_keeps_its_working_judged() -> None:
+    # OCR 2014: 2m at 4 m/s, 3m at -2 m/s, e = 0.4. The reduced mass is 2m·3m/5m = 6m/5 = 1.2m; the
+    # student's 1.5m is a number worked wrongly. M, written on both lines, is no quantity a reading
+    # by value places (the masses are 2m, 3m and 5m): its first line's working is judged, as for a
+    # name written once, and the energy lost from it, ½(1.5m)(1 - 0.16)(6²) = 22.68m (18.144m for
+    # the problem), is carried.
+    work = "M = 2m x 3m / 5m = 1.5m\nKE lost = 1/2 M (1 - e^2)(6)^2 = 1/2 (1.5m)(0.84)(36) = 22.68m\n"
+    found = worst_lines("ocr-m2-2014-particles-2m-3m-ke-lost", work)
+    assert found[1] == ("wrong", "arithmetic")
+    assert found[2][0] == "carried"

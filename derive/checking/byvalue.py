@@ -51,14 +51,17 @@ def item(trace: Any, line: Any) -> Any:
     if line.exprs is not None or not getattr(line, "pending", ()):
         return trace.item(line)
     tried = trace.__dict__["by_value_lines"] = trace.__dict__.get("by_value_lines", 0) + 1
-    if tried > MAX_LINES:
-        return trace.item(line)
     try:
-        reading = _reading(trace, line)
+        reading = _reading(trace, line) if tried <= MAX_LINES else None
     except (TypeError, ValueError, ZeroDivisionError, OverflowError, AttributeError):
         reading = None
-    if reading is None:
-        return trace.item(line)
+    if reading is None:  # μ = 3m·6m/9m = 3m, μ no quantity of the problem's: its working is judged
+        working = _worked_out(line.pending)
+        return trace.item(
+            replace(line, sides=line.sides[1:], exprs=line.pending[1:], error="", own_names=True, pending=())
+            if working
+            else line
+        )
     mapping, said = reading
     exprs = tuple(e.xreplace(mapping) for e in line.pending)
     out = trace.item(replace(line, exprs=exprs, error="", own_names=False, pending=()))
