@@ -154,8 +154,7 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
-    raw = kept_speeds(ctx, raw, mapping, _speeds(ctx))  # v_A = sqrt(…): A's speed on the lines after
-    shared = worked_names(raw, mapping)  # b - a = 0.7(92) = 64.4 after 235 = 4a + 3b: b - a kept
+    shared = worked_names(raw := kept_speeds(ctx, raw, mapping, _speeds(ctx)), mapping)  # v_A = sqrt(…); b - a = …
     lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping, shared)), s) for r in raw], s)
     lines, axes_words = in_student_sense(ctx, lines, pt, truth, axes)  # t the other way round: a frame
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]

@@ -13,7 +13,7 @@ student last stated it (:func:`adopt`), not the true equations with the one slip
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import sympy
 
@@ -21,14 +21,13 @@ from derive.checking.mistakes import Variant
 from derive.checking.numeric import number_of
 
 if TYPE_CHECKING:
-    from derive.checking.dependency import Stated
     from derive.checking.inference import Read
     from derive.checking.tracing import Trace
 
 
-def keep(trace: Trace, stated: Stated, line: Read) -> None:
+def keep(trace: Trace, stated: Any, line: Read) -> None:
     """``A_n = 80 cos 25 = 72.50 ≈ 73``: the number a component before the impact comes to on the
-    student's line, kept for :func:`adopt`."""
+    student's line, kept for :func:`adopt` in ``stated`` (:class:`~.dependency.Stated`)."""
     exprs = line.exprs or ()
     pre = trace.ctx.model.pre
     if len(exprs) < 2 or not isinstance(exprs[0], sympy.Symbol) or exprs[0] not in pre:
