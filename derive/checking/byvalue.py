@@ -51,14 +51,17 @@ def item(trace: Any, line: Any) -> Any:
     if line.exprs is not None or not getattr(line, "pending", ()):
         return trace.item(line)
     tried = trace.__dict__["by_value_lines"] = trace.__dict__.get("by_value_lines", 0) + 1
-    if tried > MAX_LINES:
-        return trace.item(line)
     try:
-        reading = _reading(trace, line)
+        reading = _reading(trace, line) if tried <= MAX_LINES else None
     except (TypeError, ValueError, ZeroDivisionError, OverflowError, AttributeError):
         reading = None
-    if reading is None:
-        return trace.item(line)
+    if reading is None:  # μ = 3m·6m/9m = 3m, μ no quantity of the problem's: its working is judged
+        working = _worked_out(line.pending)
+        return trace.item(
+            replace(line, sides=line.sides[1:], exprs=line.pending[1:], error="", own_names=True, pending=())
+            if working
+            else line
+        )
     mapping, said = reading
     exprs = tuple(e.xreplace(mapping) for e in line.pending)
     out = trace.item(replace(line, exprs=exprs, error="", own_names=False, pending=()))
@@ -266,11 +269,32 @@ def _idle(trace: Any, exprs: list, p: sympy.Symbol, others: dict, values: list[d
     return all(off <= LOOSE for off in _offs(funcs, [(0,), (1,)], arbitrary))
 
 
+def worked_names(raw: list, mapping: dict) -> frozenset:
+    """The names not placed that the derivation writes on more than one line: quantities it works
+    with, which :func:`item` places by value. A first side of them is a side to judge (``b - a =
+    0.7(92) = 64.4`` after ``235 = 4a + 3b``), not a label dropped before the working, as a name
+    written once is (``p = 0.150 x 35.0 = 5.25``)."""
+    seen: dict[sympy.Symbol, set[int]] = {}
+    for r in raw:
+        for p in set().union(*(_placeholders(e) for e in r.exprs or ())) - set(mapping):
+            seen.setdefault(p, set()).add(r.number)
+    return frozenset(p for p, numbers in seen.items() if len(numbers) > 1)
+
+
+def _worked_out(pending: tuple) -> bool:
+    """Whether a line sets its names to a working in numbers (``a - b = 0.6(3.05 + 11.9) = 8.97``):
+    a value that may fit an unnatural reading by chance (B's speed less A's), so it places no name
+    ahead of the lines judged before it."""
+    return len(pending) >= 3 and bool(_placeholders(pending[0])) and not any(map(_placeholders, pending[1:]))
+
+
 def placed_ahead(trace: Any, lines: list) -> None:
     """Before the lines are judged: each name not placed, read by its value on the first line that
     holds for the problem with it (a later line may place the name an earlier slip is made in:
     ``0.2 − 0.5196 = a + 0.1732`` before ``0.1732 − a = e(0.3 + 0.5196)``)."""
     for line in [x for x in lines if x.exprs is None and getattr(x, "pending", ())][:MAX_LINES]:
+        if _worked_out(line.pending):
+            continue  # b - a = 0.7(92) = 64.4: names its working's number, placed where judged (natural first)
         try:
             _reading(trace, line, ahead=True)
         except (TypeError, ValueError, ZeroDivisionError, OverflowError, AttributeError):

@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.naming import Open, read_side, rewrite
 from derive.checking.numeric import number_of
+from derive.checking.roundedworld import keep
 from derive.checking.slipbefore import holds_as_slipped
 from derive.checking.worlds import NUMBER_SIDE
 from derive.mathtext.notation import student
@@ -70,6 +71,7 @@ class Stated:
         self.written: dict[sympy.Expr, str] = {}  # a value stated as a number: the number as written
         self.head: sympy.Expr | None = None  # the head of the chain of "=" lines read last
         self.moved = False  # whether a wrong or carried line has stated a value yet
+        self.before: dict[sympy.Symbol, sympy.Expr] = {}  # the components before, as last stated (A_n ≈ 73)
 
 
 def _quantity(trace: Trace, x: sympy.Expr) -> bool:
@@ -90,6 +92,7 @@ def note(trace: Trace, stated: Stated, line: Read, status: str | None) -> None:
     if status not in ("correct", "carried", "wrong") or len(exprs) < 2:
         stated.head = None
         return
+    keep(trace, stated, line)  # A_n = 80 cos 25 = 72.50 ≈ 73: the world of a slip of rounding
     goes_on = GOES_ON.match(line.written) is not None and stated.head is not None
     head = stated.head if goes_on else exprs[0]
     if head is None or not _quantity(trace, head):

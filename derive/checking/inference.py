@@ -15,6 +15,7 @@ import sympy
 
 from derive.checking.axisnames import components
 from derive.checking.bodygivens import body_givens
+from derive.checking.byvalue import worked_names
 from derive.checking.componentlabels import body_labels
 from derive.checking.context import Context
 from derive.checking.conventions import signed_by_words
@@ -154,8 +155,8 @@ def read_lines(
     raw = ways[s]
     named_later(raw, mapping, problem)
     said_again(raw, mapping)  # "So J = 1.76" after "J = … = 1.76": that number again
-    raw = kept_speeds(ctx, raw, mapping, _speeds(ctx))  # v_A = sqrt(…): A's speed on the lines after
-    lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping)), s) for r in raw], s)
+    shared = worked_names(raw := kept_speeds(ctx, raw, mapping, _speeds(ctx)), mapping)  # v_A = sqrt(…); b - a = …
+    lines = in_said_way(ctx, [signed_by_words(_magnitude(ctx, _resolved(r, mapping, shared)), s) for r in raw], s)
     lines, axes_words = in_student_sense(ctx, lines, pt, truth, axes)  # t the other way round: a frame
     said = [f"{p.name[1:]} is {e.name.removeprefix(PREFIX)}" for p, e in equated.items()]
     greek = {w for r in relations for w in re.findall(r"\\([a-z]+)", r.written)} | {
@@ -431,12 +432,12 @@ def _velocity(e: sympy.Expr) -> bool:
     return any(s.name.startswith("v_") for s in e.free_symbols)
 
 
-def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr]) -> Read:
+def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr], shared: frozenset = frozenset()) -> Read:
     if r.exprs is None:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
     marks, k = [_placeholders(e) for e in exprs], 0
-    while (left := set().union(*marks[k:])) and len(exprs) - k >= 3 and not r.defines:  # a loop: x = x = … = x
+    while (left := set().union(*marks[k:])) and len(exprs) - k >= 3 and not r.defines and not marks[k] & shared:
         if set().union(*marks[k + 1 :]) and (left != marks[k] or not exprs[k].is_Symbol):
             break
         k += 1  # "tan φ = e tan θ = 3e": the rest; "p = 0.150 x 35.0 = 5.25": its first side unplaced

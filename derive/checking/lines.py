@@ -30,6 +30,7 @@ from derive.checking import (
     mistakes,
     recopied,
     reworld,
+    roundedworld,
     rounding,
     sidepairs,
     slipnames,
@@ -403,6 +404,7 @@ class Trace(Carrying):
         words = rounding.rounded_early(self.ctx, line.sides, bad, self.pts[0], self.truth[0])
         if words:  # named once: the lines after, worked from the same numbers, are carried
             self.early = line.number
+            roundedworld.adopt(self)  # in the world of the components before as the student rounded them
             self.wrong_values |= decimals(rounding.early_numbers(self.ctx, line.sides))
         return words
 
