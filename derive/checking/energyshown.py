@@ -24,11 +24,15 @@ HALF = re.compile(
 )
 
 
-def shown(ctx: Context, bad: Pair, found: list[Mistake], holds: Callable[[Pair], bool], text: str) -> list[Mistake]:
+def shown(
+    ctx: Context, bad: Pair, found: list[Mistake], holds: Callable[[Pair], bool], where: tuple[str, ...] | Pair
+) -> list[Mistake]:
     """``found`` (the mistakes whose value of a result makes ``bad`` hold) with the masses swapped
-    left out where the line (``text``, every side of it) writes no half and a kinetic energy's
-    wrong formula explains it too."""
+    left out where the line (``where``: every side of it, else the pair) writes no half and a kinetic
+    energy's wrong formula explains it too (``K = 3mu²``: no ½ on the whole line)."""
     from derive.checking.slipnames import ke_formula  # slipnames imports this module's neighbours
+
+    text = " = ".join(where) if isinstance(where, tuple) else where.text
 
     if not found or any(m.name != "masses_swapped" for m in found) or HALF.search(text):
         return found

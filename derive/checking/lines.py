@@ -361,8 +361,7 @@ class Trace(Carrying):
         """The mistakes whose value of a result named in ``bad`` (T_1, θ_A2) makes it hold."""
         world = self.world if self.world is not None else self.truth
         found = slipnames.under_results(self.ctx, bad, lambda p: self.holds([p], world))
-        text = " = ".join(line.sides) if line is not None else bad.text  # K = 3mu², no ½ on the whole line
-        found = energyshown.shown(self.ctx, bad, found, lambda p: self.holds([p], world), text)
+        found = energyshown.shown(self.ctx, bad, found, lambda p: self.holds([p], world), line.sides if line else bad)
         return tuple(d for m in found for d in self.ctx.diagnosis(m))
 
     def _with_slips_results(self, line: Line, pairs: list[Pair]) -> bool:
