@@ -60,7 +60,7 @@ from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
-from derive.mathtext.units import UNIT, in_si, letter_in_sum
+from derive.mathtext.units import UNIT, glued_units, in_si, letter_in_sum
 from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
@@ -430,7 +430,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(glued_marks(without_convention(text))))  # 2 vAx: a name, not words
-    sides = tuple(_side(s) for s in text.split("="))
+    sides = glued_units(tuple(_side(s) for s in text.split("=")))  # = 19.98/19.6 = 1.02m: metres
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     sides = per_cent_sides(sides)  # "64/352 × 100 = 18.2 %": the % a label of the number
     if quoted_law(sides):
