@@ -232,12 +232,12 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
     defined = _introduced(read) - _answers(read, values, given)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
         for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
-            alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
-            alone = [a for a in alone if a is not None]
+            alone = [a for a in (_only(sd, ex, p, found) for _r2, sd, ex in read) if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
-            best = chainfit.nearest(cands, score, alone, (found, p), (values, ctx.unit_subs()))
+            kinds = chainfit.of_kind(p, cands, ctx, score)  # (v_B)_3: a speed where one fits
+            best = chainfit.nearest(kinds, score, alone, (found, p), (values, ctx.unit_subs()))
             letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
-            mine = chainfit.of_letter(p, cands, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
+            mine = chainfit.of_letter(p, kinds, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
             near = chainfit.nearest(mine, score, alone, (found, p), (values, ctx.unit_subs())) if mine else None
             if near is not None and score[near]:
                 found[p] = near
