@@ -20,7 +20,7 @@ from derive.checking import chainfit, chainletters, chainnames, chainsolve, mist
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
 from derive.checking.chaincarried import from_wrong
-from derive.checking.chaindata import given_said
+from derive.checking.chaindata import given_said, shadowed
 from derive.checking.chainhabits import habit_names
 from derive.checking.chainreadings import as_written
 from derive.checking.chainstages import in_stages
@@ -59,7 +59,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
     names = chainletters.chain_names(ctx, values)  # e for e_floor; m beside a letter (ma + mb)
-    read = as_written(_read(ctx, text, names), values, _givens(ctx))  # vA = 1 after 0.3vA + 0.2vB: theirs
+    read = shadowed(ctx, as_written(_read(ctx, text, names), values, _givens(ctx)), values)  # vA = 1: theirs
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said, read = habit_names(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
     said |= (
