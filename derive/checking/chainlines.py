@@ -190,7 +190,7 @@ def _read(ctx: Context, text: str, names: Open) -> list[tuple[Relation, tuple[st
     """Each relation read: its sides and their expressions (a first side in words, ``velocity
     after = -5.24``, is a name of the student's own; ``After: B w1, C w2 = 4``: w2 = 4)."""
     out, lines = [], text.split("\n")
-    for r in read_relations(written_out(ctx, text)):
+    for r in read_relations(written_out(ctx, text), None, True):  # a chain is on one line: 4.97 j along it
         r = replace(r, written=lines[r.line - 1].strip()) if r.written not in lines[r.line - 1] else r
         if declaration(r.written):
             continue
