@@ -337,8 +337,10 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*\(?([0-9nftixy])\)?(?![^\W²³])")
 
 
-#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
-_INTEGRAL = re.compile(r"(?:\\int|∫)(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b")
+#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, ``Int F dt``, limits or none).
+_INTEGRAL = re.compile(
+    r"(?:\\int|∫|\b[Ii]nt(?:egral)?(?:\s+of)?(?=\s*F\b))(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b"
+)
 
 
 def _side(text: str) -> str:
