@@ -121,7 +121,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
             chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
         previous = exprs if item.status == "correct" else []
-        items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
+        items.append(named_arithmetic(item, exprs))  # 441 + 784 = 1125: arithmetic; 6 = 4.0 V: algebra
         if item.status == "correct" and slips and len(exprs) == 2:
             own_root(exprs, values, own_defs, _givens(ctx))
         if item.status == "correct" and slips:  # the stage's names as the student's relations make them
