@@ -92,3 +92,14 @@ def _is_speed(unit: str) -> bool:
         return bool(unit) and parse_unit(unit).dim == VELOCITY
     except (InputError, ValueError, KeyError):
         return False
+
+
+#: Letters a teacher reads as one quantity's: the impulse is I (OCR, Edexcel) or J (the notes).
+_SAME = {"I": "IJ", "J": "IJ"}
+
+
+def of_the_letter(v: sympy.Symbol, p: sympy.Symbol) -> bool:
+    """Whether the chain's value ``v`` is of the letter the student's own name ``p`` is (``h``: h_0,
+    h_2); the impulse's letters are one (``I`` where the chain has J)."""
+    mine = p.name[1:]
+    return v.name.partition("_")[0] in _SAME.get(mine, (mine,))

@@ -236,7 +236,7 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
             kinds = chainfit.of_kind(p, cands, ctx, score)  # (v_B)_3: a speed where one fits
             best = chainfit.nearest(kinds, score, alone, (found, p), (values, ctx.unit_subs()))
-            letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
+            letter = [v for v in values if chainfit.of_the_letter(v, p)]
             mine = chainfit.of_letter(p, kinds, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
             near = chainfit.nearest(mine, score, alone, (found, p), (values, ctx.unit_subs())) if mine else None
             if near is not None and score[near]:
@@ -277,8 +277,8 @@ def _answers(read: list, values: dict, given: set) -> set[sympy.Symbol]:
     judged as that result, not a quantity of the student's own."""
     uses = [p for _r, _sides, exprs in read for p in set().union(*(_own(x) for x in exprs))]
     one = {p for p in uses if uses.count(p) == 1 and "_" not in p.name}
-    return {p for p in one if len([v for v in values if v.name.partition("_")[0] == p.name[1:]]) == 1} - {
-        p for p in one for v in given if v.name.partition("_")[0] == p.name[1:]
+    return {p for p in one if len([v for v in values if chainfit.of_the_letter(v, p)]) == 1} - {
+        p for p in one for v in given if chainfit.of_the_letter(v, p)
     }
 
 
