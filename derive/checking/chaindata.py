@@ -13,9 +13,13 @@ from __future__ import annotations
 import re
 from typing import Any
 
+import sympy
+
 from derive.checking.context import Context
+from derive.checking.naming import PREFIX
 from derive.checking.restated import stated, written_number
 from derive.checking.stageslips import given_turned
+from derive.checking.worlds import number_at_figures
 
 #: A body's letter in a name as the student writes it (``u_B``, ``(v_A)_1``, ``vA``, ``m_{B}``).
 _BODY = re.compile(r"^\(?[A-Za-z](?:_\{?|\{)?([AB])(?![a-z])")
@@ -45,3 +49,23 @@ def _data(ctx: Context, r: Any, read: list) -> bool:
             if abs(float(g.value) - value) <= half:
                 return True
     return False
+
+
+def shadowed(ctx: Context, read: list, values: dict[sympy.Symbol, sympy.Expr]) -> list:
+    """``read`` (relation, sides, expressions) with each of the chain's names that a line of data
+    before the working sets to another value of the same body's (``After: $v_A = 2$`` where the
+    chain's v_A is A's 3 m/s before, and the impact gives A 2 m/s after) made the student's own
+    (:data:`PREFIX`), to be read by the habit (``u`` before, ``v`` after) on every line: the student
+    says what the name is. A name set to its value, or to it with the sign turned, stays the chain's."""
+    theirs: dict[sympy.Symbol, sympy.Symbol] = {}
+    for r, sides, exprs in read:
+        s = exprs[0] if len(exprs) == 2 else None
+        if s is None or not s.is_Symbol or s.name.startswith(PREFIX) or not values.get(s, s).is_number:
+            continue
+        if not exprs[1].is_number or any(number_at_figures(sides[1], complex(w)) for w in (values[s], -values[s])):
+            continue
+        if _data(ctx, r, read):
+            theirs[s] = sympy.Symbol(PREFIX + s.name)
+    if not theirs:
+        return read
+    return [(r, sides, [x.xreplace(theirs) for x in exprs]) for r, sides, exprs in read]

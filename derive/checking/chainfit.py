@@ -7,11 +7,14 @@ make the most relations hold, the nearest to what the relations say is taken."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Sequence
 
 import sympy
 
 from derive.checking.numeric import number_of
+from derive.errors import InputError
+from derive.problem.units import VELOCITY, parse_unit
 
 
 def nearest(
@@ -63,3 +66,40 @@ def one_result(letter: Sequence[sympy.Symbol], given: set[sympy.Symbol]) -> symp
     value of it makes a relation hold: the result the student is working out, wrongly."""
     results = [v for v in letter if v not in given]
     return results[0] if len(results) == 1 else None
+
+
+#: A velocity's letter, alone or with a body's or an instant's marks after it (``w``, ``v_B3``,
+#: ``(v_B)_3`` read as ``v_B3``, ``V``, ``u2``); never a word (``vel``) nor another quantity's letter.
+_VELOCITY_NAME = re.compile(r"^[vuwVUW](?:_?\{?[A-Za-z]?\d{0,2}'?\}?)?$")
+
+
+def of_kind(p: sympy.Symbol, cands: Sequence[sympy.Expr], ctx, score: dict[sympy.Expr, int]) -> list[sympy.Expr]:
+    """The candidates a name may stand for by its kind: a velocity's letter (``w``, ``v_B3``) a
+    velocity of the chain (a speed's unit) where one makes a relation hold (``score``), never an
+    impulse or a ratio that a slipped number happens to round to (``(v_B)_3 = -0.7`` for the wall's
+    0.68 N s, where B's velocity after the wall makes the impulse's relation hold); other names, and
+    a velocity's letter no speed fits, all of them."""
+    if not _VELOCITY_NAME.match(p.name[1:]):
+        return list(cands)
+    speeds = {sympy.Symbol(g.name) for g in getattr(ctx.problem, "givens", ()) if g.dim == VELOCITY}
+    speeds |= {sympy.Symbol(k) for k, r in ctx.solution.results.items() if _is_speed(r.unit)}
+    kinds = [c for c in cands if (c if c.is_Symbol else -c) in speeds]
+    return kinds if any(score.get(c) for c in kinds) else list(cands)
+
+
+def _is_speed(unit: str) -> bool:
+    try:
+        return bool(unit) and parse_unit(unit).dim == VELOCITY
+    except (InputError, ValueError, KeyError):
+        return False
+
+
+#: Letters a teacher reads as one quantity's: the impulse is I (OCR, Edexcel) or J (the notes).
+_SAME = {"I": "IJ", "J": "IJ"}
+
+
+def of_the_letter(v: sympy.Symbol, p: sympy.Symbol) -> bool:
+    """Whether the chain's value ``v`` is of the letter the student's own name ``p`` is (``h``: h_0,
+    h_2); the impulse's letters are one (``I`` where the chain has J)."""
+    mine = p.name[1:]
+    return v.name.partition("_")[0] in _SAME.get(mine, (mine,))

@@ -29,5 +29,7 @@ def given_letters(ctx: Context, values: dict[sympy.Symbol, sympy.Expr]) -> dict[
 
 
 def chain_names(ctx: Context, values: dict[sympy.Symbol, sympy.Expr]) -> Open:
-    """The names a chain's sides may use: its values' (``e`` for ``e_floor`` too) and its letters."""
-    return Open({**given_letters(ctx, values), **lone_restitution(values), **{s.name: s for s in values}})
+    """The names a chain's sides may use: its values' (``e`` for ``e_floor`` too) and its letters; the
+    word impulse (``∫F dt`` read so) inside a side, a name of the student's own, inferred by value."""
+    known = {**given_letters(ctx, values), **lone_restitution(values), **{s.name: s for s in values}}
+    return Open(known, {"impulse"})

@@ -20,7 +20,7 @@ from derive.checking import chainfit, chainletters, chainnames, chainsolve, mist
 from derive.checking import ownquantities as own
 from derive.checking.bodylists import written_out
 from derive.checking.chaincarried import from_wrong
-from derive.checking.chaindata import given_said
+from derive.checking.chaindata import given_said, shadowed
 from derive.checking.chainhabits import habit_names
 from derive.checking.chainreadings import as_written
 from derive.checking.chainstages import in_stages
@@ -59,7 +59,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
     """One item per relation of a chain's derivation, and what was read of its names."""
     values = {sympy.Symbol(str(k)): v for k, v in ctx.solution.values.items()}
     names = chainletters.chain_names(ctx, values)  # e for e_floor; m beside a letter (ma + mb)
-    read = as_written(_read(ctx, text, names), values, _givens(ctx))  # vA = 1 after 0.3vA + 0.2vB: theirs
+    read = shadowed(ctx, as_written(_read(ctx, text, names), values, _givens(ctx)), values)  # vA = 1: theirs
     said, read = chainnames.declared_in(ctx, text, read)  # "p = A after, q = B after": names, not relations
     said, read = habit_names(ctx, read, said, partial(_holds_with, ctx, values=values))  # vA, vB: the impact's
     said |= (
@@ -121,7 +121,7 @@ def chain_items(ctx: Context, text: str) -> tuple[list[Item], list[str]]:
         if item.status == "wrong" and said:  # the names declared in words, as the student's relations give them
             chainnames.own_solved(ctx, written, said, own_defs, (alias, values))
         previous = exprs if item.status == "correct" else []
-        items.append(named_arithmetic(item))  # 441 + 784 = 1125: arithmetic
+        items.append(named_arithmetic(item, exprs))  # 441 + 784 = 1125: arithmetic; 6 = 4.0 V: algebra
         if item.status == "correct" and slips and len(exprs) == 2:
             own_root(exprs, values, own_defs, _givens(ctx))
         if item.status == "correct" and slips:  # the stage's names as the student's relations make them
@@ -190,7 +190,7 @@ def _read(ctx: Context, text: str, names: Open) -> list[tuple[Relation, tuple[st
     """Each relation read: its sides and their expressions (a first side in words, ``velocity
     after = -5.24``, is a name of the student's own; ``After: B w1, C w2 = 4``: w2 = 4)."""
     out, lines = [], text.split("\n")
-    for r in read_relations(written_out(ctx, text)):
+    for r in read_relations(written_out(ctx, text), None, True):  # a chain is on one line: 4.97 j along it
         r = replace(r, written=lines[r.line - 1].strip()) if r.written not in lines[r.line - 1] else r
         if declaration(r.written):
             continue
@@ -232,12 +232,12 @@ def _infer(ctx: Context, read: list, values: dict, said: dict) -> dict[sympy.Sym
     defined = _introduced(read) - _answers(read, values, given)
     for _r, _sides, exprs in read + read:  # twice: a name found later leaves one unknown (p + q = 7)
         for p in sorted(set().union(*(_own(x) for x in exprs)) - set(found) - defined, key=str):
-            alone = [_only(sd, ex, p, found) for _r2, sd, ex in read]
-            alone = [a for a in alone if a is not None]
+            alone = [a for a in (_only(sd, ex, p, found) for _r2, sd, ex in read) if a is not None]
             score = {c: sum(bool(_holds_with(ctx, sd, ex, {**found, p: c}, values)) for sd, ex in alone) for c in cands}
-            best = chainfit.nearest(cands, score, alone, (found, p), (values, ctx.unit_subs()))
-            letter = [v for v in values if v.name.partition("_")[0] == p.name[1:]]
-            mine = chainfit.of_letter(p, cands, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
+            kinds = chainfit.of_kind(p, cands, ctx, score)  # (v_B)_3: a speed where one fits
+            best = chainfit.nearest(kinds, score, alone, (found, p), (values, ctx.unit_subs()))
+            letter = [v for v in values if chainfit.of_the_letter(v, p)]
+            mine = chainfit.of_letter(p, kinds, letter)  # "h": h_0 or h_2, never e = 0.7 that 0.702 rounds to
             near = chainfit.nearest(mine, score, alone, (found, p), (values, ctx.unit_subs())) if mine else None
             if near is not None and score[near]:
                 found[p] = near
@@ -277,8 +277,8 @@ def _answers(read: list, values: dict, given: set) -> set[sympy.Symbol]:
     judged as that result, not a quantity of the student's own."""
     uses = [p for _r, _sides, exprs in read for p in set().union(*(_own(x) for x in exprs))]
     one = {p for p in uses if uses.count(p) == 1 and "_" not in p.name}
-    return {p for p in one if len([v for v in values if v.name.partition("_")[0] == p.name[1:]]) == 1} - {
-        p for p in one for v in given if v.name.partition("_")[0] == p.name[1:]
+    return {p for p in one if len([v for v in values if chainfit.of_the_letter(v, p)]) == 1} - {
+        p for p in one for v in given if chainfit.of_the_letter(v, p)
     }
 
 

@@ -73,15 +73,23 @@ def define(
 ) -> None:
     """Keep the true and the student's value of a name the line defines (``name``: the name and
     its power on the left; ``line``: the sides and expressions). A power's root is the positive
-    one (``ω² = 500``: ω = √500). ``number`` says whether a side is a number as written."""
+    one (``ω² = 500``: ω = √500). ``number`` says whether a side is a number as written. A formula
+    in a name the student never defines (``ω² = k/M = 20000/40``, M the masses together) is known
+    by the first side after it in known names: its working in numbers, as a name defined by numbers
+    alone is (``d = (30)(9.81)/20000``)."""
     (p, n), (sides, exprs), (true_defs, own_defs) = name, line, defs
-    true = exprs[1].xreplace(true_defs).xreplace(values)
+    known = [x for x in exprs[1:] if not _unknown(x.xreplace(true_defs))]
+    true = (known[0] if known else exprs[1]).xreplace(true_defs).xreplace(values)
     own = sympy.Rational(sides[-1]) if number(sides[-1]) else exprs[-1].xreplace(own_defs)
     true_defs[p], own_defs[p] = (true, own) if n == 1 else (true ** (1 / n), own ** (1 / n))
     used = set().union(*(x.free_symbols for x in exprs[1:]))
     rounding = literal_tolerance(" = ".join(sides[1:]), ctx.data) + slack_of(true_defs, used)
     if rounding and hasattr(true_defs, "slack"):
         true_defs.slack[p] = float(rounding / n)
+
+
+def _unknown(x: sympy.Expr) -> set[sympy.Symbol]:
+    return {s for s in x.free_symbols if s.name.startswith(PREFIX)}
 
 
 def defined_rest(p: sympy.Symbol, line: tuple, state: tuple, number: Callable, worked: list) -> tuple[list, tuple]:

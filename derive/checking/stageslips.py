@@ -110,12 +110,20 @@ def given_turned(ctx: Context, written: str, exprs, subs: tuple[dict, dict]) -> 
     return any(v is not None and abs(abs(v) - abs(x)) <= 1e-9 * abs(x) for v in given)
 
 
-def named_arithmetic(item: Item) -> Item:
+def named_arithmetic(item: Item, exprs: list[sympy.Expr] = ()) -> Item:
     """A stage's line found false with no mistake named, where a side of numbers is not what the
-    student wrote it comes to (``441 + 784 = 1125``): an arithmetic slip, named so."""
-    if item.status != "wrong" or item.slip or item.again or not item.message.endswith("(an arithmetic slip)."):
+    student wrote it comes to (``441 + 784 = 1125``): an arithmetic slip, named so. Where its sides
+    are unequal and a name stands in working (``(0.020)(300) = (4.0) V``, ``2y = 7 + e``), not only
+    alone on the left set to a number: an algebra slip, a term or factor lost in the relation
+    (``exprs``: its sides read)."""
+    if item.status != "wrong" or item.slip or item.again:
         return item
-    return replace(item, slip="arithmetic")
+    if item.message.endswith("(an arithmetic slip)."):
+        return replace(item, slip="arithmetic")
+    worked = [x for k, x in enumerate(exprs) if k or not x.is_Symbol]
+    if item.message.endswith("(an arithmetic or algebra slip).") and any(x.free_symbols for x in worked):
+        return replace(item, slip="algebra")
+    return item
 
 
 def own_value(own: dict, left: sympy.Expr, line: tuple, status: str, number: Callable[[str], bool]) -> None:

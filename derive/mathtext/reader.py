@@ -60,7 +60,7 @@ from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
-from derive.mathtext.units import UNIT, in_si, letter_in_sum
+from derive.mathtext.units import UNIT, glued_units, in_si, letter_in_sum
 from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
@@ -337,8 +337,10 @@ def words_after(text: str) -> str:
 _BRACKETED_NAME = re.compile(r"\(\s*([A-Za-z])_\(?(\w{1,2})\)?\s*\)\s*_\s*\(?([0-9nftixy])\)?(?![^\W²³])")
 
 
-#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, limits or none).
-_INTEGRAL = re.compile(r"(?:\\int|∫)(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b")
+#: The impulse as the integral of the force over the time (``\\int F\\,dt``, ``∫F dt``, ``Int F dt``, limits or none).
+_INTEGRAL = re.compile(
+    r"(?:\\int|∫|\b[Ii]nt(?:egral)?(?:\s+of)?(?=\s*F\b))(?:_\{?[^\s{}]*\}?)?(?:\^\{?[^\s{}]*\}?)?\s*F(?:\s*\(t\))?\s*\*?\s*d\s*t\b"
+)
 
 
 def _side(text: str) -> str:
@@ -430,7 +432,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     if direction:  # the words said, the number is left: "= 1.04 m/s in the opposite direction"
         text = without_direction(text)
     text = _UNIT_BRACKET.sub("", words_after(glued_marks(without_convention(text))))  # 2 vAx: a name, not words
-    sides = tuple(_side(s) for s in text.split("="))
+    sides = glued_units(tuple(_side(s) for s in text.split("=")))  # = 19.98/19.6 = 1.02m: metres
     sides = (body_after(sides[0], name_after_words(sides[0], MATH_WORDS | _LEAD_WORDS), label), *sides[1:])
     sides = per_cent_sides(sides)  # "64/352 × 100 = 18.2 %": the % a label of the number
     if quoted_law(sides):

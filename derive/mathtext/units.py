@@ -2,7 +2,8 @@
 
 A speed ``m/s``, ``m s⁻¹``, ``ms^-1``, ``m s^(-1)``, ``ms-1``, ``m·s⁻¹``, ``km/h``, ``km h⁻¹``,
 ``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``kg m s⁻¹``,
-``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``; a speed squared ``m^2/s^2``; a stiffness ``N/m``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
+``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``; a speed squared ``m^2/s^2``; a stiffness ``N/m``; an angular
+frequency (its square) ``s⁻¹``, ``s^-2``, ``rad/s``, ``Hz``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
 A unit of one atom (``J``, ``kg``, ``m``) is left to the caller, which knows whether a lone
 letter (``2 m``: metres, or two times m?) is a unit.
 
@@ -20,6 +21,8 @@ _TIME = r"(?:secs?|s|hr|h|min)"
 _JOIN = r"(?:\s*[·*.⋅]\s*|\s+|)"
 #: A power -1 or -2 of a time: ``s^-1``, ``s^{-1}``, ``s^(-1)``, ``s⁻¹``, ``s-1``.
 _INVERSE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−]\s*[12])|⁻[¹²]|\s*[-−–][12](?!\d))"
+#: A time's power -1 or -2 written as a power (``s^-2``, ``s^{-1}``, ``s⁻²``), never ``s-1`` (s minus 1).
+_RATE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−]\s*[12])|⁻[¹²])"
 #: ``/s``, ``/s²``, ``/s^2``, or a time to the power -1 (-2).
 _PER_TIME = rf"(?:\s*/\s*{_TIME}(?:\s*\^\s*\{{?2\}}?|²)?|{_JOIN}{_TIME}{_INVERSE})"
 #: A speed (an acceleration), a momentum, an impulse.
@@ -27,6 +30,7 @@ UNIT = re.compile(
     rf"(?:(?:kg|lb|slug){_JOIN})?{_LENGTH}{_PER_TIME}|(?:N|lbf?)(?:{_JOIN}|\s*-\s*)s|mph"
     r"|(?:m|ft)(?:\s*\^\s*2|²)\s*/\s*s(?:\s*\^\s*2|²)"  # a speed squared, m^2/s^2 (2gh worked in its units)
     r"|N\s*/\s*m(?![A-Za-z])"  # a spring's stiffness, N/m
+    rf"|(?:rad{_JOIN})?s{_RATE}|rad\s*/\s*s(?:\s*\^\s*\{{?2\}}?|²)?|Hz"  # ω (ω²) of a stage: s⁻¹, s^-2, rad/s, Hz
 )
 #: One atom: a unit of its own where the caller says so (``J``, ``kg``, ``kJ``, ``g``).
 ATOM = re.compile(r"kg|Mg|g|kJ|J|N|m|s|km|cm|ft|lb|slug|deg|rad|W")
@@ -77,3 +81,18 @@ def letter_in_sum(side: str) -> bool:
     (no other term of the sum has a unit)."""
     m = _LETTER_IN_SUM.search(side)
     return m is not None and not re.search(r"\d\s*[mg]\s*[-+−]", side)
+
+
+#: A side of numbers only: digits, signs, brackets, powers and the functions of a calculator.
+_NUMBERS_ONLY = re.compile(r"(?:[\d.\s+\-−*/×·^()\[\]²³√]|sqrt|sin|cos|tan|ln|log|exp|pi|π)+")
+#: A number's last letter glued to it at the end of a side: ``1.02m``, ``6.3s``, ``19.6N``.
+_GLUED = re.compile(r"(?<=\d)(?<!\^\d)([mNs])\.?$")
+
+
+def glued_units(sides: tuple[str, ...]) -> tuple[str, ...]:
+    """``sides`` without a unit's letter glued to the last side's number where a side before it
+    (not the first) is numbers only: ``h = 19.98/19.6 = 1.02m`` is 1.02 metres, for a number worked
+    out is no number times a mass (``p = 1.2m`` alone stays 1.2 times m: the letter may be a name)."""
+    if len(sides) < 3 or not any(_NUMBERS_ONLY.fullmatch(s.strip()) for s in sides[1:-1]):
+        return sides
+    return (*sides[:-1], _GLUED.sub("", sides[-1].strip()))
