@@ -17,7 +17,7 @@ from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
 from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied
-from derive.checking.wholesides import exact_whole
+from derive.checking.wholesides import exact_decimal, exact_whole
 from derive.mathtext.notation import student
 from derive.numbers import to_decimal
 
@@ -63,6 +63,10 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
+        if exact_decimal(p, U, sides):  # 2v = 6.8 where 2v is 6.9 exactly: no slack for rounding
+            if abs(left - right) > 1e-9 * max(scale, 1.0):
+                return identity(p)
+            continue
         tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
         far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
         loose = not p.own_figures and at_figures(p, left, right) and not exact_whole(p, U, sides)
