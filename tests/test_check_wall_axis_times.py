@@ -52,3 +52,24 @@ def test_the_rebound_named_by_its_axis_may_be_a_size() -> None:
     work = "(v_t)_1 = u cos(theta)\n(v_n)_1 = u sin(theta)\n(v_t)_2 = u cos(theta)\n(v_n)_2 = e u sin(theta)\n"
     got = _statuses(PREU, work)
     assert all(s == "correct" for s, _ in got.values()), got
+
+
+def test_e_moved_off_the_rebound_is_the_same_mistake_again() -> None:
+    # By hand (M4, e = 3/4): along the wall U cos α stays; the rebound is (3/4) U sin α. Writing
+    # (3/4) U cos α along and U sin α for the rebound moves e from one to the other: one mistake,
+    # made on the first line and again on the second.
+    work = "v_{t1} = U cos(alpha)\nv_{n1} = U sin(alpha)\nv_{t2} = (3/4) U cos(alpha)\nv_{n2} = U sin(alpha)\n"
+    got = _statuses(M4, work)
+    assert got["3"] == ("wrong", "e_on_t"), got
+    assert got["4"][0] == "wrong" and got["4"][1] in ("", "e_on_t"), got
+    report = derive.check(derive.load(M4), derivation=work)
+    assert next(i for i in report.items if i.name == "4").again
+
+
+@pytest.mark.parametrize("rebound", ["e u sin(theta)", "-e u sin(theta)"])
+def test_the_rebound_is_a_size_or_signed_into_the_wall(rebound: str) -> None:
+    # Pre-U: the rebound away from the wall is e u sin θ; derive's n points into the wall, so a
+    # student who signs it in that way writes -e u sin θ: both are right.
+    work = f"v_{{t1}} = u cos(theta)\nv_{{n1}} = u sin(theta)\nv_{{t2}} = u cos(theta)\nv_{{n2}} = {rebound}\n"
+    got = _statuses(PREU, work)
+    assert all(s == "correct" for s, _ in got.values()), got
