@@ -41,16 +41,19 @@ def exact_whole(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, sym
 
 def exact_decimal(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, sympy.Expr]) -> bool:
     """Whether ``p`` sets a decimal as written (``6.8``) against an expression in the unknowns with
-    no decimal written in it (``2v``) whose value ``at`` the point judged is a decimal of no more
-    places than written (6.9): exact arithmetic from exact data, so the number is that value or a
-    slip; the ±1 in its last digit is the slack of rounded intermediates, and there are none."""
+    no decimal written in it (``2v``) whose value ``at`` the point judged is a decimal of exactly the
+    places written (6.9): exact arithmetic from exact data, so the number is that value or a slip;
+    the ±1 in its last digit is the slack of rounded intermediates, and there are none. A number
+    written to more places than its exact value has (``0.0499`` for 0.05) was worked from rounded
+    decimals: it keeps its slack."""
     texts = p.text.split(" = ", 1)
     if len(texts) != 2 or len(at) != 2:
         return False
     for text, other, written, value in zip(texts, (p.right, p.left), reversed(texts), reversed(at), strict=True):
         d = _DECIMAL.match(student(text.strip()))
-        if d is not None and _terminates(value, len(d.group(1).split(".")[1])):
-            return _whole_letters(written, other, unknowns, value)
+        places = len(d.group(1).split(".")[1]) if d is not None else 0
+        if places and _terminates(value, places) and not _terminates(value, places - 1):
+            return _whole_letters(written, other, unknowns, value)  # 6.8 for 6.9; not 0.0499 for 0.05
     return False
 
 
