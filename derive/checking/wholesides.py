@@ -43,7 +43,8 @@ def exact_decimal(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, s
     """Whether ``p`` sets a decimal as written (``6.8``) against an expression in the unknowns with
     no decimal written in it (``2v``) whose value ``at`` the point judged is a decimal of exactly the
     places written (6.9): exact arithmetic from exact data, so the number is that value or a slip;
-    the ±1 in its last digit is the slack of rounded intermediates, and there are none. A number
+    the ±1 in its last digit is the slack of rounded intermediates, and there are none (a chain of
+    working that ends in it, ``v = 6.9/2 = 3.44``, keeps the slack of its steps: not this). A number
     written to more places than its exact value has (``0.0499`` for 0.05) was worked from rounded
     decimals: it keeps its slack."""
     texts = p.text.split(" = ", 1)

@@ -39,6 +39,7 @@ class Pair:
     tol: float
     raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
     own_figures: bool = False  # judged at ``tol`` only, not at the figures of a side of one number
+    worked: bool = False  # a side compared with the number a chain of working ends in (``v = 6.9/2 = 3.44``)
 
     @property
     def difference(self) -> sympy.Expr:
@@ -63,7 +64,7 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
-        if exact_decimal(p, U, sides):  # 2v = 6.8 where 2v is 6.9 exactly: no slack for rounding
+        if not p.worked and exact_decimal(p, U, sides):  # 2v = 6.8 where 2v is 6.9 exactly: no slack for rounding
             if abs(left - right) > 1e-9 * max(scale, 1.0):
                 return identity(p)
             continue
