@@ -16,6 +16,7 @@ import re
 import sympy
 
 from derive.checking.context import Context
+from derive.checking.wallnames import typed_at_wall, wall_timed
 from derive.mathtext.reader import Relation
 
 #: Words that name the line of centres (derive's n) or the axis across it (t), for two bodies.
@@ -141,8 +142,12 @@ def components(
             fixed and sub_axis(sub, True) != "" and _resolved_before(relations, r.sides[1])
         )
         after = after or (not before and fixed and _after_by_letter(name, sub, relations, r.sides[1]))
+        rebound = fixed and wall_timed(sub) == ("", "2", "n") and typed_at_wall(name, r.written)  # v_n2: as v_perp
+        after = after or rebound
         said = after or before  # v_perp under "After:", or v's habit at a wall
-        axis = _axis(_words_beside(r, name), fixed) or (sub_axis(sub, fixed) if said else "")
+        axis = _axis(_words_beside(r, name), fixed) or (
+            sub_axis(sub, fixed) or ("n" if rebound else "") if said else ""
+        )
         if not axis and after and sub in letters:
             axis = letters[sub]
         body = "A" if fixed else _body(r.sides[1], ctx)
@@ -152,7 +157,8 @@ def components(
         if x is not None:
             if axis == "t" and not after and not r.sides[1].lstrip().startswith("-") and _negative(ctx, x):
                 flips[sub] = -1  # "perp.: w = 15 sin 37.6°": a size, the student's own way across
-            if axis == "n" and after and sub_axis(sub, fixed) and not sign and not r.sides[1].lstrip().startswith("-"):
+            named = sub_axis(sub, fixed) or rebound
+            if axis == "n" and after and named and not sign and not r.sides[1].lstrip().startswith("-"):
                 x = -x if _negative_after(ctx, x) else x  # "v_perp = eU sin α": the rebound's size
             out.setdefault(name, flips.get(sub, 1) * x if axis == "t" else x)
             letters.setdefault(sub, axis)

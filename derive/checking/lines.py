@@ -185,7 +185,7 @@ class Trace(Carrying):
             k = len(sides) - 1 if ends else i + 1
             text = f"{sides[i]} = {sides[k]}"
             tol = max(self._tolerance(sides, raw, (i, k), worked), 1e-9)
-            out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k])))
+            out.append(Pair(text, exprs[i], exprs[k], tol, (raw[i], raw[k]), worked=ends))
         return out[:-1] + sidepairs.adjacent(self, sides, exprs, raw) + out[-1:] if ends else out  # last stays last
 
     def holds(self, pairs: list[Pair], values: list[Values]) -> bool:

@@ -32,6 +32,7 @@ from derive.checking.context import Context
 from derive.checking.naming import moving_together
 from derive.checking.reducedmass import is_reduced_mass
 from derive.checking.statementbodies import statement_bodies, told_apart
+from derive.checking.wallnames import typed_at_wall, wall_rebound, wall_timed
 from derive.mathtext.bracketed import bracketed_names
 from derive.mathtext.reader import Relation
 
@@ -100,11 +101,16 @@ def body_marks(ctx: Context) -> dict[str, str]:
     return out
 
 
-def _split(marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: str) -> tuple[str, str, str] | None:
+def _split(
+    marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: str, wall: bool = False
+) -> tuple[str, str, str] | None:
     """(body, time, axis) of a name's marks (each "" where not said); None where the marks are not
     all body, time and component marks (a word, a name of something else). A digit is a body
     where digits are (``v_{1i}``), else a time after a body's letter (``v_A1``) or in a
-    momentum or an energy (``K_1``); else None (``v_1``: the habits')."""
+    momentum or an energy (``K_1``), or beside an axis at a wall (``wall``: one body moves, so
+    ``(v_t)_2``, ``v_{n1}`` are its components); else None (``v_1``: the habits')."""
+    if wall and kind == "v" and not digits_are_bodies and (timed := wall_timed(marks)):
+        return timed  # v_t2, v_{1n}: the one moving body's component at that time
     body = time = axis = ""
     rest = marks.replace("_", "").replace(",", "")
     long = sorted(
@@ -137,7 +143,7 @@ def _split(marks: str, bodies: dict[str, str], digits_are_bodies: bool, kind: st
 
 
 def parse(
-    name: str, bodies: dict[str, str], digits_are_bodies: bool, primed: bool = False
+    name: str, bodies: dict[str, str], digits_are_bodies: bool, primed: bool = False, wall: bool = False
 ) -> tuple[str, str, str, str] | None:
     """(kind, body, time, axis) of a student's name (kind "v" velocity, "p" momentum, "K" energy,
     "m" mass);
@@ -159,7 +165,7 @@ def parse(
             return None
     if not re.fullmatch(r"[A-Za-z0-9_,∥⊥]*", marks) or not (marks or primed or kind == "K"):
         return None
-    parts = _split(marks, bodies, digits_are_bodies, kind)
+    parts = _split(marks, bodies, digits_are_bodies, kind, wall)
     if parts is None:
         return None
     body, time, axis = parts
@@ -243,7 +249,8 @@ def grammar_names(
         if name in skip:
             continue
         stem = name[:-2] if name.endswith("_p") else name[:-1] if name.endswith("p") else ""
-        got = parse(stem, bodies, digits, primed=True) if stem in primed else parse(name, bodies, digits)
+        wall = bool(ctx.problem.fixed_B and ctx.problem.oblique) and typed_at_wall(name, text)
+        got = parse(stem, bodies, digits, True, wall) if stem in primed else parse(name, bodies, digits, wall=wall)
         if got is not None:
             parsed[name] = got
     out: dict[str, sympy.Expr] = wall_words(ctx, used - skip, primed)  # par, perp: a wall's components
@@ -274,7 +281,7 @@ def grammar_names(
         elif not time and kind == "v" and axis and _uv_twins(name, used, body or ctx.problem.fixed_B):
             time = "1" if name[0] == "u" else "2"  # u_perp beside v_perp: u before, v after
         axis = _at_a_wall(name, axis, ctx.problem.fixed_B)  # v_perp at a wall: into it, n
-        if ctx.problem.fixed_B and (time, axis) == ("2", "n") and re.search(r"par|perp|∥|⊥", name):
+        if ctx.problem.fixed_B and (time, axis) == ("2", "n") and wall_rebound(name):
             continue  # the rebound named by its axis: a size or signed, as the words say (axisnames)
         axis, sign = _in_axes(name, axis, axes or {})  # y along the line of impact: (v_Ay)_1 is n
         e = meaning(ctx, kind, body, time, axis)

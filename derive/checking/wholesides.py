@@ -1,4 +1,5 @@
-"""A whole number written against an equation still to be solved is exact, not rounded.
+"""A whole number written against an equation still to be solved is exact, not rounded; so is a
+decimal against exact algebra whose value ends at the places written (``2v = 6.8`` where 2v is 6.9).
 
 ``7 = 0.01 + 2v`` (from ``0.5(6) + 2(2) = 0.5(0.2) + 2v``): the 7 is the known side worked
 out, exactly, and the line is an equation in ``v`` with a number term of its own. Rounding
@@ -36,6 +37,35 @@ def exact_whole(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, sym
             continue
         return _solving(other, unknowns) or _whole_letters(written, other, unknowns, value)
     return False
+
+
+def exact_decimal(p, unknowns: tuple[sympy.Symbol, ...], at: tuple[sympy.Expr, sympy.Expr]) -> bool:
+    """Whether ``p`` sets a decimal as written (``6.8``) against an expression in the unknowns with
+    no decimal written in it (``2v``) whose value ``at`` the point judged is a decimal of exactly the
+    places written (6.9): exact arithmetic from exact data, so the number is that value or a slip;
+    the ±1 in its last digit is the slack of rounded intermediates, and there are none (a chain of
+    working that ends in it, ``v = 6.9/2 = 3.44``, keeps the slack of its steps: not this). A number
+    written to more places than its exact value has (``0.0499`` for 0.05) was worked from rounded
+    decimals: it keeps its slack."""
+    texts = p.text.split(" = ", 1)
+    if len(texts) != 2 or len(at) != 2:
+        return False
+    for text, other, written, value in zip(texts, (p.right, p.left), reversed(texts), reversed(at), strict=True):
+        d = _DECIMAL.match(student(text.strip()))
+        places = len(d.group(1).split(".")[1]) if d is not None else 0
+        if places and _terminates(value, places) and not _terminates(value, places - 1):
+            return _whole_letters(written, other, unknowns, value)  # 6.8 for 6.9; not 0.0499 for 0.05
+    return False
+
+
+#: A decimal as written alone on a side (``6.8``, ``(3.45)``).
+_DECIMAL = re.compile(r"^[-+]?\(?(\d+\.\d+)\)?$")
+
+
+def _terminates(value: sympy.Expr | None, places: int) -> bool:
+    """Whether ``value`` is a fraction that is a decimal of at most ``places`` places (6.9, 3.45):
+    written to those places it is exact, so a number there is it or a slip, never a rounding."""
+    return isinstance(value, sympy.Rational) and (value * 10**places).is_integer
 
 
 def _whole_letters(written: str, x: sympy.Expr, unknowns: tuple[sympy.Symbol, ...], value: sympy.Expr | None) -> bool:

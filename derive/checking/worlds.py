@@ -17,7 +17,7 @@ from derive.checking.figures import figures, round_figures
 from derive.checking.figures import judge as at_figures_written
 from derive.checking.numeric import number_of
 from derive.checking.relations import Point, Values, coefficients, linear_roots, satisfied
-from derive.checking.wholesides import exact_whole
+from derive.checking.wholesides import exact_decimal, exact_whole
 from derive.mathtext.notation import student
 from derive.numbers import to_decimal
 
@@ -39,6 +39,7 @@ class Pair:
     tol: float
     raw: tuple[sympy.Expr, sympy.Expr] | None = None  # the sides before anything known is put in
     own_figures: bool = False  # judged at ``tol`` only, not at the figures of a side of one number
+    worked: bool = False  # a side compared with the number a chain of working ends in (``v = 6.9/2 = 3.44``)
 
     @property
     def difference(self) -> sympy.Expr:
@@ -63,6 +64,10 @@ def holds_at(p: Pair, values: list[Values], pts: list[Point], U: tuple[sympy.Sym
         if left is None or right is None:
             return False
         scale = max(abs(left), abs(right))
+        if not p.worked and exact_decimal(p, U, sides):  # 2v = 6.8 where 2v is 6.9 exactly: no slack for rounding
+            if abs(left - right) > 1e-9 * max(scale, 1.0):
+                return identity(p)
+            continue
         tol = p.tol * _written_scale(p, left, right, scale) / scale if scale else p.tol
         far = abs(left - right) > 2 * tol * scale * BOUNDARY  # two units in the last place is not the value
         loose = not p.own_figures and at_figures(p, left, right) and not exact_whole(p, U, sides)

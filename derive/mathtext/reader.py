@@ -133,7 +133,9 @@ _UNIT_END = re.compile(
 )
 
 #: A momentum's unit after a number: ``60 kg m/s``, ``12 kg m s^-1``, ``3 kg·m/s``.
-_MOMENTUM_UNIT = re.compile(r"(?<=[\d.)\s])\s*kg\s*[·*]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$")
+_MOMENTUM_UNIT = re.compile(
+    r"(?<=[\d.)\s])\s*kg\s*[·*×⋅-]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$"
+)
 
 
 def without_unit(side: str) -> str:

@@ -124,10 +124,11 @@ def typed_names(text: str) -> str:
 
 
 #: A unit after a number inside a side, before an operator or a closing bracket (``352 J − 288 J``,
-#: ``(12 m/s − 4 m/s)``, a mass's ``(20 Mg) v_A2``, a momentum's ``7200 kg·m/s + 6 m_B``; not g nor t,
+#: ``(12 m/s − 4 m/s)``, a mass's ``(20 Mg) v_A2``, a momentum's ``7200 kg·m/s + 6 m_B``, its product sign
+#: no operator (``0.58 kg*m/s − 0.3 kg*m/s``, ``kg×m/s``, ``kg-m/s``); not g nor t,
 #: which are letters too: ``(2 g)``).
 _UNIT_MID = re.compile(
-    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?[·.*]?\s?s|kg\s*[·.*]?\s*m\s*/\s*s|kg|(Mg|tonnes?))"
+    r"(?<=\d)\s+(?:kJ|J|m\s*/\s*s|m\s*s\^-1|ms\^-1|N\s?[·.*]?\s?s|kg\s*[·.*×⋅-]?\s*m\s*/\s*s|kg(?!\s*[·.*×⋅-]\s*m\s*/)|(Mg|tonnes?))"
     r"(?=\s*(?:[-+−×*](?!\s*$)|\)))"  # a side's last factor too, in brackets: (110 kg)(-0.120 m/s)
 )
 
