@@ -115,7 +115,7 @@ def _xk01(p: dict) -> tuple[dict, None]:
 def _equal_30(p: dict, halve: float, across_e: bool) -> dict:
     u, e = p["u"], p["e"]
     along = u * math.cos(_deg(30))
-    a, b = _solve(1.0, 1.0, along, e * along)
+    a, _b = _solve(1.0, 1.0, along, e * along)
     true_a = a
     a = a * halve  # the student's 2 not divided out: halve = 2
     t = u * math.sin(_deg(30)) * (e if across_e else 1.0)
