@@ -37,11 +37,19 @@ def _xk02(g: dict) -> tuple[dict, dict]:
         b = g["e"] * (a - along)
         assert g["m_A"] * a + g["m_B"] * along == pytest.approx(g["m_B"] * b)
         beta = math.degrees(math.atan2(across, b))
-        return {"v_A1n": a, "v_B2n": b, "v_B2t": across, "v_B2": math.hypot(b, across), "beta_B2": beta,
-                "delta_B": 60 - beta}
+        return {
+            "v_A1n": a,
+            "v_B2n": b,
+            "v_B2t": across,
+            "v_B2": math.hypot(b, across),
+            "beta_B2": beta,
+            "delta_B": 60 - beta,
+        }
 
     v = g["v_B1"]
-    return worked(v * math.cos(_deg(60)), v * math.sin(_deg(60))), worked(v * math.sin(_deg(60)), v * math.cos(_deg(60)))
+    return worked(v * math.cos(_deg(60)), v * math.sin(_deg(60))), worked(
+        v * math.sin(_deg(60)), v * math.cos(_deg(60))
+    )
 
 
 def _xk03(g: dict) -> tuple[dict, None]:
