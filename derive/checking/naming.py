@@ -182,6 +182,7 @@ def rewrite(text: str, known: set[str], twins: frozenset[str] = frozenset()) -> 
     text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
+    text = re.sub(r"\b(\d*[mM])([uvVw])([A-Z12])(\d?[nt]?)\b", r"\1 \2_\3\4", text)  # mvA, 2mvQ: m times v_A
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
     text = re.sub(  # vb: v_B (not the bullet's v_b1 beside the block's v_B1: ``twins``, :func:`twin_letters`)
         r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: m[0] if m[2] in twins else f"{m[1]}_{m[2].upper()}{m[3]}", text
