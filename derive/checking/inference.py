@@ -111,10 +111,9 @@ def read_lines(
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
     known |= {"m"} if "m_A" in problem else set()  # m for the masses (m_A = m_B = m): ma + mb is m a + m b
-    split, labels = body_labels(list(relations))
+    (split, labels), twins = body_labels(list(relations)), twin_letters(text)  # twins: the bullet's v_b1, block's v_B1
     relations = tuple(split)
     rewritten: list[tuple[str, ...]] = []
-    twins = twin_letters(text)  # the bullet's v_b1 beside the block's v_B1
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b|\b[uvwV]_?[xy]\b", s)}
         sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known, twins) for s in r.sides)
