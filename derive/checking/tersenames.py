@@ -22,7 +22,8 @@ TERSE = re.compile(
 )
 #: The same the other way round, phone-typed: ``A after=x B after=y``, ``B's before = u``.
 TERSE_AFTER = re.compile(
-    r"(?<![\w\\'])(?:the\s+)?([A-Z])(?:['’]s)?\s+(?:just\s+)?(after|before)\s*=\s*([A-Za-z](?:_?\w{1,2})?)"
+    r"(?<![\w\\'])(?<!\bof\s)(?<!\bof\sthe\s)(?:the\s+)?([A-Z])(?:['’]s)?\s+(?:just\s+)?(after|before)\s*=\s*"
+    r"([A-Za-z](?:_?\w{1,2})?)"
     r"(?![\w('])(?!\s*[-+*/^=])"
 )
 #: A time said in a label, then bodies' letters set to names: ``vel after: A=a B=b``, ``After impact: P = x, Q = y``.
@@ -51,20 +52,23 @@ def terse_names(line: str, ctx: Context) -> dict[str, sympy.Expr]:
     a, b = ctx.problem.labels
     letters = {a: "A", b: "B", "A": "A", "B": "B", **statement_bodies(ctx)}  # "Particles P (mass 2m) and Q"
     out: dict[str, sympy.Expr] = {}
+    givens = {g.name for g in ctx.problem.givens}
     for name, letter, time in found:
         body = letters.get(letter, "")
         when = "2" if time == "after" else "1"
         x = getattr(nm, f"{body}{when}{axis or 'n'}", None) if body else None
-        if x is not None and name not in letters:
+        if x is not None and name not in letters and name not in givens:  # "speed of Q after = u": u given
             out.setdefault(name, x)
     return out
 
 
 def terse_only(text: str) -> bool:
-    """Whether every ``=`` of ``text`` is in a terse declaration (``A after=x B after=y``): a line of
-    names, not a relation to judge."""
-    rest = TERSE_AFTER.sub(" ", TERSE.sub(" ", text))
+    """Whether every ``=`` of ``text`` is in a terse declaration (``A after=x B after=y``, two or more
+    the other way round, or under a label of time): a line of names, not a relation to judge."""
+    rest, pairs = TERSE_AFTER.subn(" ", TERSE.sub(" ", text))
     label = _TIME_LABEL.search(rest)
     if label:
         rest = rest[: label.start(2)] + _LETTER_NAME.sub(" ", label[2])
+    elif pairs == 1:  # "Q after = u" alone: an answer in words as often as a name
+        return False
     return rest != text and "=" not in rest
