@@ -35,6 +35,7 @@ P_Q = "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u"
         (P_Q, "vel after: P=x Q=y", {"x": "v_A2", "y": "v_B2"}),  # the time in a label, the bodies set to names
         (DIRECT, "Before impact: A = p, B = q", {"p": "v_A1", "q": "v_B1"}),
         (DIRECT, "after: A = 2, B = 3", {}),  # numbers, not names
+        (P_Q, "Speed of Q after = u", {}),  # an answer: u is given
     ],
 )
 def test_a_name_set_to_a_body_and_a_time_is_declared(problem: str, text: str, expected: dict) -> None:
