@@ -17,6 +17,7 @@ from derive.checking.naming import declarations
 
 OBLIQUE = "pre-u-9795-2-specimen-q2-equal-balls-line-at-30deg"
 DIRECT = "byjus-4kg-ball-catches-8kg-ball"
+P_Q = "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u"
 
 
 @pytest.mark.parametrize(
@@ -27,6 +28,14 @@ DIRECT = "byjus-4kg-ball-catches-8kg-ball"
         (OBLIQUE, "p = A after, q = B after (perpendicular to the line of centres)", {"p": "v_A2t", "q": "v_B2t"}),
         (OBLIQUE, "p = A after, q = B after", {}),  # which component: not said
         (DIRECT, "x = A after, y = B after", {"x": "v_A2", "y": "v_B2"}),
+        (DIRECT, "A after=x B after=y", {"x": "v_A2", "y": "v_B2"}),  # the other way round, phone-typed
+        (OBLIQUE, "along loc: A after = p, B after = q", {"p": "v_A2n", "q": "v_B2n"}),
+        (P_Q, "P hits Q, P->Q +ve, P after=x Q after=y", {"x": "v_A2", "y": "v_B2"}),  # the statement's letters
+        (P_Q, "P after = x + y", {}),  # a relation, not a name
+        (P_Q, "vel after: P=x Q=y", {"x": "v_A2", "y": "v_B2"}),  # the time in a label, the bodies set to names
+        (DIRECT, "Before impact: A = p, B = q", {"p": "v_A1", "q": "v_B1"}),
+        (DIRECT, "after: A = 2, B = 3", {}),  # numbers, not names
+        (P_Q, "Speed of Q after = u", {}),  # an answer: u is given
     ],
 )
 def test_a_name_set_to_a_body_and_a_time_is_declared(problem: str, text: str, expected: dict) -> None:
@@ -40,3 +49,24 @@ def test_the_lines_after_a_slip_are_carried_with_the_terse_names() -> None:
     found = lines(OBLIQUE, work)
     assert found[1][0] == "wrong", found
     assert [found[n][0] for n in (3, 4, 5)] == ["carried"] * 3, found
+
+
+def test_a_line_of_names_the_other_way_round_is_not_judged() -> None:
+    """Edexcel M2 2010 Q2 by hand: 2m(2u) - mu = 2mx + my and y - x = 3eu give x = u(1 - e),
+    y = u(1 + 2e); the declaration line itself is not a relation to mark."""
+    work = "P hits Q, P->Q +ve, P after=x Q after=y\nclm: 2m(2u) - mu = 2mx + my\nnel: y - x = 3eu\n"
+    work += "x = u(1-e)\ny = u + 2eu\n"
+    found = lines(P_Q, work)
+    assert 1 not in found, found
+    assert [found[n][0] for n in (2, 3, 4, 5)] == ["correct"] * 4, found
+
+
+def test_names_set_to_bodies_under_a_label_of_time_make_a_slip_found() -> None:
+    """Edexcel M2 2010 Q2: restitution is y - x = e(2u + u) = 3eu; written e(2u - u) = eu it has Q's
+    velocity before with its sign lost, and the lines solved from it are carried (names unplaced, they
+    were taken as definitions and every line passed)."""
+    work = "P 2m at 2u ->, Q m at u <-\nvel after: P=x Q=y\nclm: 4mu - mu = 2mx + my\nnel: y - x = e(2u - u) = eu\n"
+    work += "3x = 3u - eu\nx = u - eu/3\n"
+    found = lines(P_Q, work)
+    assert found[3][0] == "correct" and found[4][0] == "wrong", found
+    assert [found[n][0] for n in (5, 6)] == ["carried"] * 2, found

@@ -100,7 +100,7 @@ def claim(line: Read, before: str = "") -> Claim | None:
     after = (m.group(3) or "").strip() or _after(line.written, m.group(2))
     named = _reference(re.sub(r"[.,;:!)]+$", "", after.lower()), after=True) if after else None
     if named is None and not after:
-        lead = line.written.split("=")[0]
+        lead = _own_lead(line.written, m.group(2))
         named = _reference(_words(lead), after=False) or (_reference(_words(before), after=False) if before else None)
     if named is None:
         return None
@@ -113,6 +113,15 @@ def claim(line: Read, before: str = "") -> Claim | None:
     letter = re.fullmatch(r"\+?[a-z]", ref) is not None  # "to i", "from n": a direction from a vector
     directed = (prep == "from" and bool(_DIRECTED.match(ref))) or (prep == "to" and letter)
     return Claim(value, unit, axis, directed, ratio)
+
+
+def _own_lead(written: str, number: str) -> str:
+    """The words before the relation whose value is ``number`` on a line of several (``angle from n =
+    … = 57.17° -> from x: 57.17 + 20 = 77.17°``: the second's are "from x: 57.17 + 20", not the first's)."""
+    for part in re.split(r"->|→|⇒|=>|\\Rightarrow|\\implies|;", written):
+        if re.search(rf"=\s*-?\s*{re.escape(number)}(?![\d])", part):
+            return part.split("=")[0]
+    return written.split("=")[0]
 
 
 def _after(written: str, number: str) -> str:

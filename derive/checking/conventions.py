@@ -77,7 +77,11 @@ def signed_by_words(r: R, sign: int) -> R:
     derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
     already signed stays as written."""
     m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
-    if m is None or m.group(1) == "-" or r.exprs[-1].free_symbols or _size_only(r.exprs[0]) or _impulse(r.exprs[0]):
+    if m is None and r.direction and r.exprs and _letters_size(r.exprs[-1], r.sides[-1]):
+        m = re.match(r"^\s*()(.*?)\s*$", f"({r.sides[-1].strip()})")  # "v ←", "3u/2 to the left": a size in letters
+    elif m is not None and r.exprs[-1].free_symbols:
+        m = None
+    if m is None or m.group(1) == "-" or _size_only(r.exprs[0]) or _impulse(r.exprs[0]):
         return r
     if _OFF_A_SURFACE_AS_SPEED.search(getattr(r, "written", "")):
         return r  # "Rebound speed: v = eu = 1.6 m/s (away from the wall)": a size, its way said
@@ -98,6 +102,13 @@ def signed_by_words(r: R, sign: int) -> R:
 _OFF_A_SURFACE_AS_SPEED = re.compile(
     r"\bspeed\b[^=]*=.*\b(?:away\s+from|off)\s+the\s+(?:wall|cushion|barrier|ground|floor)", re.I
 )
+
+
+def _letters_size(x: object, side: str) -> bool:
+    """A size written in the problem's letters (``v``, ``3u/2``, ``e u``): positive by the letters'
+    own sign (a given letter is a size), typed without a sign of its own."""
+    symbols = getattr(x, "free_symbols", ())
+    return bool(symbols) and getattr(x, "is_positive", False) is True and not side.lstrip().startswith(("-", "+"))
 
 
 def _impulse(x: object) -> bool:

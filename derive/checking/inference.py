@@ -47,6 +47,7 @@ from derive.checking.naming import (
     of_the_body,
     read_side,
     rewrite,
+    twin_letters,
 )
 from derive.checking.ownnames import combos, directed, named_later, own_readings, spells_givens, velocities_before
 from derive.checking.reducedmass import mass_named, reduced_mass
@@ -112,12 +113,12 @@ def read_lines(
     }
     known |= set(declared) | set(kinded)  # "let a and b be …": ma + mb is m a + m b
     known |= {"m"} if "m_A" in problem else set()  # m for the masses (m_A = m_B = m): ma + mb is m a + m b
-    split, labels = body_labels(list(relations))
+    (split, labels), twins = body_labels(list(relations)), twin_letters(text)  # twins: the bullet's v_b1, block's v_B1
     relations = tuple(split)
     rewritten: list[tuple[str, ...]] = []
     for r, lb in zip(relations, labels, strict=True):
         seen = {w for sides in rewritten for s in sides for w in re.findall(r"\b[A-Za-z]\b|\b[uvwV]_?[xy]\b", s)}
-        sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known) for s in r.sides)
+        sides = tuple(rewrite(of_the_body(s, lb, seen, lb == r.label, set(problem)), known, twins) for s in r.sides)
         rewritten.append(along_the_line(ctx, r, masses_put_in(ctx, sides)))  # ½(0.020)(300)²: the bullet's m
     written = [*dict.fromkeys(w for sides in rewritten for s in sides for w in re.findall(r"[A-Za-z][A-Za-z0-9_]*", s))]
     used = set(written)

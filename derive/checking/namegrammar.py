@@ -29,6 +29,7 @@ import sympy
 from derive.checking.beforeangles import described
 from derive.checking.cancelledmass import cancelled_mass
 from derive.checking.context import Context
+from derive.checking.fixedbody import fixed_marks, names_fixed
 from derive.checking.naming import moving_together
 from derive.checking.reducedmass import is_reduced_mass
 from derive.checking.statementbodies import statement_bodies, told_apart
@@ -98,6 +99,8 @@ def body_marks(ctx: Context) -> dict[str, str]:
                 out.setdefault(word[0], body)
     for word, body in told_apart(statement).items():
         out.setdefault(word, body)
+    for mark, body in fixed_marks(statement).items() if p.fixed_B else ():  # (v_C)_1 = 0: the surface's
+        out.setdefault(mark, body)
     return out
 
 
@@ -284,6 +287,9 @@ def grammar_names(
         if ctx.problem.fixed_B and (time, axis) == ("2", "n") and wall_rebound(name):
             continue  # the rebound named by its axis: a size or signed, as the words say (axisnames)
         axis, sign = _in_axes(name, axis, axes or {})  # y along the line of impact: (v_Ay)_1 is n
+        if kind == "v" and body == "B" and time and ctx.problem.fixed_B and names_fixed(name, bodies):
+            out[name] = sympy.S.Zero  # (v_C)_1 = 0, v_W2: the wall's velocity, which does not move
+            continue
         e = meaning(ctx, kind, body, time, axis)
         if e is not None:
             e = sign * e
@@ -445,6 +451,8 @@ def _shown(e: sympy.Expr) -> str:
         return (
             f"-{(-e).name}"  # -J_n (the impulse on A), a component on an axis turned round, a speed declared backwards
         )
+    if e == 0:
+        return "the fixed velocity"  # (v_C)_1: the wall's, which does not move
     if is_reduced_mass(e):
         return "the reduced mass m_A m_B/(m_A + m_B)"
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or described(e) or "the common velocity"

@@ -49,7 +49,7 @@ from derive.checking.spellings import (
     notes_names,
     subscript,
 )
-from derive.checking.tersenames import terse_names
+from derive.checking.tersenames import terse_names, terse_only
 from derive.checking.wordnames import in_words, says_what
 from derive.checking.wrapped import wrapped_sentences
 from derive.mathtext.notation import glued_times, student
@@ -156,7 +156,15 @@ GREEK = frozenset(
 )
 
 
-def rewrite(text: str, known: set[str]) -> str:
+def twin_letters(text: str) -> frozenset[str]:
+    """The lowercase body letters a derivation writes beside their capitals in velocities' names (the
+    bullet's ``v_b1`` beside the block's ``v_B1``): two bodies, so ``v_b`` is not B's."""
+    return frozenset(
+        c for c in "ab" if all(re.search(rf"(?<![A-Za-z\\])[uvVw]_?[({{]?{x}(?![a-z])", text) for x in (c, c.upper()))
+    )
+
+
+def rewrite(text: str, known: set[str], twins: frozenset[str] = frozenset()) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
     text = impulse_name(text) or text  # "impulse on the ball": one name
     text = marked_names(re.sub(r"(?<![A-Za-z_])([A-Za-z][A-Za-z0-9_]*)([₀-₉]+)", subscript, text))  # v₁ -> v_1
@@ -175,8 +183,11 @@ def rewrite(text: str, known: set[str]) -> str:
     text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
+    text = re.sub(r"\b(\d*[mM])([uvVw])([A-Z12])(\d?[nt]?)\b", r"\1 \2_\3\4", text)  # mvA, 2mvQ: m times v_A
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
-    text = re.sub(r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: f"{m[1]}_{m[2].upper()}{m[3]}", text)  # vb: v_B
+    text = re.sub(  # vb: v_B (not the bullet's v_b1 beside the block's v_B1: ``twins``, :func:`twin_letters`)
+        r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: m[0] if m[2] in twins else f"{m[1]}_{m[2].upper()}{m[3]}", text
+    )
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
     text = angle_sum_in_degrees(text)  # θ = α − 30, 90 − θ
     text = re.sub(r"\b(sin|cos|tan)\s+(\d+\.?\d*)(?![\d.°]|\s*(?:°|deg|rad))", r"\1(\2°)", text)
@@ -393,7 +404,7 @@ def _post(ctx: Context, body: str) -> sympy.Expr | None:
 def declaration(line: str) -> bool:
     """Whether ``line`` is a declaration (``let x = v_A2``, ``positive: …``), not a relation to judge."""
     line = re.sub(r"^\s*(?:#|%|//|<!--)\s*|\s*-->\s*$", "", line)
-    return bool(_DECLARE.match(line) or _POSITIVE.match(line) or says_what(line))
+    return bool(_DECLARE.match(line) or _POSITIVE.match(line) or says_what(line) or terse_only(line))
 
 
 def declares(r: Relation, first: bool) -> bool:

@@ -107,6 +107,7 @@ def meaning(name: str, problem: Any) -> str:
         "T_lost": "the kinetic energy lost",
         "J_n": "the impulse on B along the line of impact",
         "the common velocity": "the common velocity, the velocity of the centre of mass",
+        "the fixed velocity": "the velocity of the fixed surface (0: it does not move)",
     }
     if name in fixed:
         return fixed[name]
@@ -122,6 +123,7 @@ def glossary(solution: Any, names: Any = ()) -> dict[str, str]:
     p = solution.problem
     out = {str(n): meaning(str(n), p) for n in names}
     out["the common velocity"] = meaning("the common velocity", p)
+    out["the fixed velocity"] = meaning("the fixed velocity", p)
     out.update({f"v_{b}{k}v": meaning(f"v_{b}{k}v", p) for b in "AB" for k in "12"})  # a vector (_vectors)
     stages = [st for st in getattr(solution, "stages", ()) or () if getattr(st, "values", None) is not None]
     for k, st in enumerate(stages if len(stages) > 1 else ()):  # a chain's stages (a single impact has one)

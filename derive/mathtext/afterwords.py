@@ -63,3 +63,16 @@ def before_on_line(r: Any, lead: str) -> Any:
         # it on the line (not "u = -4 m/s before the impact, v = 0.3(4)": that v is the rebound's)
         return r
     return replace(r, sides=(f"{m[1]}_{m[2]}1{m[3]}" if m else "v_i", *r.sides[1:]))
+
+
+#: A body's letter said before a name, as a lead-in: ``B has u = -2``, ``(so Q has v = 3)``, ``for Q, v = 3``.
+_BODY_HAS = re.compile(
+    r"^\s*\(?\s*(?:(?:so|and|then|while|whereas)\s+)?(?:for\s+([A-Z])\s*,|([A-Z])\s+has)\s+(?=[A-Za-z][\w{}]{0,5}'*\s*=)"
+)
+
+
+def body_lead(text: str) -> tuple[str, str]:
+    """(the body's letter as a lead-in, the rest) where ``text`` opens by saying whose the name is
+    (``B has u = -2``); ("", ``text``) where it does not."""
+    m = _BODY_HAS.match(text)
+    return (m.group(1) or m.group(2), text[m.end() :]) if m else ("", text)

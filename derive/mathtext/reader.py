@@ -18,7 +18,7 @@ import re
 from collections.abc import Iterator
 from dataclasses import dataclass, replace
 
-from derive.mathtext.afterwords import after_on_line, before_on_line, body_after
+from derive.mathtext.afterwords import after_on_line, before_on_line, body_after, body_lead
 from derive.mathtext.anglevectors import angle_vectors
 from derive.mathtext.arrows import starts_with_so
 from derive.mathtext.asides import without_condition, without_convention
@@ -422,6 +422,7 @@ def relation(line: int, column: int, written: str, text: str) -> Relation | None
     m = _WORD_LEAD.match(text) if not label else None
     if m and m.group(1).lower() not in MATH_WORDS and "=" not in m.group(1):
         label, text = m.group(1), text[m.end() :]
+    label, text = (label, text) if label else body_lead(text)  # "so B has u = -2": B's, as "B: u = -2"
     m = _TAG_END.search(text)
     if m:
         tag, text = m.group(1), text[: m.start()]
