@@ -1,5 +1,4 @@
-"""A derivation's relations read in the student's names (:mod:`.naming`): each side in the
-problem's symbols, with what was declared, habitual, introduced and inferred said in words.
+"""A derivation's relations read in the student's names (:mod:`.naming`): each side in the problem's symbols.
 
 Every student name that is not derive's is read first as a placeholder; the placeholders are then given their meaning
 all at once. The sign convention and the meaning of the names no declaration or habit settles are chosen to make the
@@ -36,7 +35,8 @@ from derive.checking.frames import (
 from derive.checking.frames import pairs as frame_pairs
 from derive.checking.grounding import grounded, grounded_frame, natural_of, the_speed
 from derive.checking.massletters import masses_put_in
-from derive.checking.namegrammar import energy_change, grammar_names, in_order, said_read
+from derive.checking.namegrammar import energy_change, grammar_names
+from derive.checking.namenotes import in_order, said_read
 from derive.checking.naming import (
     GREEK,
     PREFIX,

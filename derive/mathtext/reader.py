@@ -60,7 +60,7 @@ from derive.mathtext.splitting import split_relations
 from derive.mathtext.subscripted import ascii_subscripts
 from derive.mathtext.tables import headed, table_cells
 from derive.mathtext.texwords import tex_comment, tex_row_ends, tex_text
-from derive.mathtext.units import UNIT, glued_units, in_si, letter_in_sum
+from derive.mathtext.units import UNIT_END, glued_units, in_si, without_unit
 from derive.mathtext.vectors import VectorNames, split_vectors
 from derive.mathtext.whereclause import went_on_from
 
@@ -126,23 +126,6 @@ _PART = re.compile(
     re.I,
 )
 _LEAD = re.compile(r"^\s*(?:(?:[-*+•]|\d{1,2}[.)])\s+)?(?:((?:[^=:()]*[A-Za-z]{2}\s?\([^=:()]{1,20}\))?[^=:()]*):\s*)?")
-_UNIT_END = re.compile(
-    rf"(?:(?<=[\d.)\s°])(?<![-+−*/×=]\s)\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
-    r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
-    r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
-)
-
-#: A momentum's unit after a number: ``60 kg m/s``, ``12 kg m s^-1``, ``3 kg·m/s``.
-_MOMENTUM_UNIT = re.compile(
-    r"(?<=[\d.)\s])\s*kg\s*[·*×⋅-]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$"
-)
-
-
-def without_unit(side: str) -> str:
-    """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
-    return side if letter_in_sum(side) else _UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))  # 0.002 + 0.150 m: m a mass
-
-
 #: A unit in brackets after a relation: ``(m/s)``, ``(m s^(-1))``, ``(J)``.
 _UNIT_BRACKET = re.compile(
     r"\s*\((?=[^()]*[A-Za-z])(?:[\s/*^·.-]|\(\s*-\s*1\s*\)|-?1\b|m|s|kg|N|J|ft|lb|slug)+\)\s*\.?\s*$"
@@ -327,7 +310,7 @@ def words_after(text: str) -> str:
         if m.group(0) in MATH_WORDS:
             continue
         before = text[last + 1 : m.start()].rstrip(" ,;:?!…")  # "= -0.91 J ?? gained", "= 1.69 … not 4"
-        unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", _UNIT_END.sub("", before).rstrip(" ,;:."))
+        unitless = re.sub(r"\s*(?:deg(?:rees?)?|rad(?:ians?)?)$", "", UNIT_END.sub("", before).rstrip(" ,;:."))
         after_comma = re.search(r"[\w²³)'′]\s*,\s*$", text[last + 1 : m.start()])  # "(3010)V², cancel 3010"
         if after_comma or (re.search(r"\d", before) and re.search(r"[\d°)%]$", unitless.rstrip(" ie."))):
             return text[: last + 1] + re.sub(r",?\s*(?:i\.\s?e\.?)?\s*$", "", before)

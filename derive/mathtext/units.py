@@ -96,3 +96,21 @@ def glued_units(sides: tuple[str, ...]) -> tuple[str, ...]:
     if len(sides) < 3 or not any(_NUMBERS_ONLY.fullmatch(s.strip()) for s in sides[1:-1]):
         return sides
     return (*sides[:-1], _GLUED.sub("", sides[-1].strip()))
+
+
+#: A unit after the number a side ends in: ``1.41 m``, ``3 m/s``, ``2 N s``, ``4 J ✓``.
+UNIT_END = re.compile(
+    rf"(?:(?<=[\d.)\s°])(?<![-+−*/×=]\s)\s*(?:{UNIT.pattern}|mi/h|N[·*\s.\-]?s|Ns|lbf?\s?[·*.\-]?\s?s(?:ec)?|kg|kJ|J|ft[·*\s.\-]?lbf?|slugs?|ft|lbf?)"
+    r"|(?<=[\d.)°])\s+(?:m|s|N|g))"  # 1.41 m, not 1.2m (1.2 times m), nor mu g (mu times g)
+    r"\.?(?:\s*(?:✓|✔|\\checkmark))?\s*$"
+)
+
+#: A momentum's unit after a number: ``60 kg m/s``, ``12 kg m s^-1``, ``3 kg·m/s``.
+_MOMENTUM_UNIT = re.compile(
+    r"(?<=[\d.)\s])\s*kg\s*[·*×⋅-]?\s*(?:m\s*/\s*s|m\s*s\s*\^\s*\(?\s*-\s*1\s*\)?|ms\^?-1)\.?\s*$"
+)
+
+
+def without_unit(side: str) -> str:
+    """``side`` with the unit after its number taken off, a momentum's too (``60 kg m/s``)."""
+    return side if letter_in_sum(side) else UNIT_END.sub("", _MOMENTUM_UNIT.sub("", side))  # 0.002 + 0.150 m: m a mass
