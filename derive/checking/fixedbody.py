@@ -26,4 +26,5 @@ def fixed_marks(statement: str) -> dict[str, str]:
 def names_fixed(name: str, bodies: dict[str, str]) -> bool:
     """Whether ``name``'s marks say the fixed body by its word or capital (``v_C1``, ``v_wall2``), not
     by B's letter or a digit (``bodies``: the marks the caller has, the fixed ones among them)."""
-    return any(bodies.get(k) == "B" and k in name[1:] for k in fixed_marks("cushion barrier buffer"))
+    marks = set(_FIXED_WORDS) | {w[0].upper() for w in _FIXED_WORDS} - {"A", "B"}
+    return any(bodies.get(k) == "B" and k in name[1:] for k in marks)

@@ -1,7 +1,8 @@
 """Names declared tersely, a body's letter and a time: ``x = A after, y = B after (along
-l.o.c.)``, ``p = P before``, or the other way round (``A after=x B after=y``). Each is that body's velocity then; in an oblique impact, its
-component along the line of centres where the line says so (across it where it says that), and
-nothing where it says neither.
+l.o.c.)``, ``p = P before``, the other way round (``A after=x B after=y``) or under a label of time
+(``vel after: A=a B=b``). Each is that body's velocity then; in an oblique impact, its component along
+the line of centres where the line says so (across it where it says that), and nothing where it says
+neither.
 
 >>> [m.groups() for m in TERSE.finditer("x = A after, y = B after (along l.o.c.)")]
 [('x', 'A', 'after'), ('y', 'B', 'after')]
@@ -28,7 +29,9 @@ TERSE_AFTER = re.compile(
 )
 #: A time said in a label, then bodies' letters set to names: ``vel after: A=a B=b``, ``After impact: P = x, Q = y``.
 _TIME_LABEL = re.compile(r"\b(after|before)\b[^:=]{0,30}:\s*(.*)$", re.I)
-_LETTER_NAME = re.compile(r"(?<![\w\\'])([A-Z])\s*=\s*([A-Za-z](?:_?\w{1,2})?)(?![\w('])(?!\s*[-+*/^=])")
+_LETTER_NAME = re.compile(  # a body's letter, not a quantity's (V, U, J, K, T, E, F, ...): "After: V = u" is judged
+    r"(?<![\w\\'])((?![EFGHIJKMNTUVW])[A-Z])\s*=\s*([A-Za-z](?:_?\w{1,2})?)(?![\w('])(?!\s*[-+*/^=])"
+)
 _ALONG = re.compile(r"\balong\s+(?:the\s+)?(?:line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\b)", re.I)
 _ACROSS = re.compile(r"\b(?:across|perp(?:endicular)?|tangent(?:ial)?)\b", re.I)
 
