@@ -39,7 +39,13 @@ def test_a_body_said_before_a_name_is_its_body(work: str, expected: list[str]) -
 
 @pytest.mark.parametrize(
     ("text", "label"),
-    [("so B has u = -2", "B"), ("(for Q, v = 3)", "Q"), ("u = -2", ""), ("Then A has mass 2", "")],
+    [
+        ("so B has u = -2", "B"),
+        ("(for Q, v = 3)", "Q"),
+        ("For Q, v = 3", "Q"),
+        ("u = -2", ""),
+        ("A has mass m = 2", ""),
+    ],
 )
 def test_the_body_is_read_as_the_relations_lead_in(text: str, label: str) -> None:
     found = read_relations(text)

@@ -5,6 +5,7 @@ is ``masses_swapped``. Every number is worked by hand from the problem file's gi
 
 from __future__ import annotations
 
+import pytest
 from support.checked import worst_lines
 
 #: Edexcel M2 2015: P (m) at 3u hits Q (2m) at rest. By hand: the energy before is
@@ -30,3 +31,20 @@ def test_the_half_and_qs_mass_written_stays_masses_swapped() -> None:
     work = "P's way positive.\nKE before = 1/2 (2m)(3u)^2 = 9mu^2\n"
     found = worst_lines(P_REVERSES, work)
     assert found[2] == ("wrong", "masses_swapped"), found
+
+
+@pytest.mark.parametrize(
+    ("text", "half"),
+    [
+        ("3/2", False),
+        ("\\frac{1}{25}", False),
+        ("\\frac{12}{5}", False),
+        ("0.50 m v^2", True),
+        ("mv^2/2", True),
+        ("½mv²", True),
+    ],
+)
+def test_a_half_is_a_half(text: str, half: bool) -> None:
+    from derive.checking.energyshown import HALF
+
+    assert bool(HALF.search(text)) is half

@@ -71,6 +71,7 @@ def test_the_fixed_surface_is_said_in_the_report() -> None:
         ("Take → positive. After: $(v_P)_2 = u(1-e) \\rightarrow$, $(v_Q)_2 = u(1+2e) \\leftarrow$.", ["wrong"]),
         ("(+->) before: (v_P)_1 = 2u ->, (v_Q)_1 = u <-", ["correct"]),
         ("(+->) before: (v_P)_1 = 2u ->, (v_Q)_1 = u ->", ["wrong"]),
+        ("(+->) before: (v_P)_1 = 2u ->, (v_Q)_1 = 1u <-", ["correct"]),  # a size in letters led by a digit
     ],
 )
 def test_a_size_in_letters_is_signed_by_its_arrow(work: str, expected: list[str]) -> None:

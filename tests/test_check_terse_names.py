@@ -36,6 +36,7 @@ P_Q = "edexcel-m2-2010-january-q2-2m-at-2u-meets-m-at-u"
         (DIRECT, "Before impact: A = p, B = q", {"p": "v_A1", "q": "v_B1"}),
         (DIRECT, "after: A = 2, B = 3", {}),  # numbers, not names
         (P_Q, "Speed of Q after = u", {}),  # an answer: u is given
+        (P_Q, "After: Q = eu", {}),  # a claim, e times u: not a name
     ],
 )
 def test_a_name_set_to_a_body_and_a_time_is_declared(problem: str, text: str, expected: dict) -> None:

@@ -119,7 +119,7 @@ def _own_lead(written: str, number: str) -> str:
     """The words before the relation whose value is ``number`` on a line of several (``angle from n =
     … = 57.17° -> from x: 57.17 + 20 = 77.17°``: the second's are "from x: 57.17 + 20", not the first's)."""
     for part in re.split(r"->|→|⇒|=>|\\Rightarrow|\\implies|;", written):
-        if re.search(rf"=\s*-?\s*{re.escape(number)}(?![\d])", part):
+        if re.search(rf"=\s*-?\s*{re.escape(number)}(?!\.?\d)", part):
             return part.split("=")[0]
     return written.split("=")[0]
 

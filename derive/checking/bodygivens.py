@@ -31,6 +31,6 @@ def body_givens(ctx: Context, used: set[str], problem: dict[str, sympy.Expr]) ->
         if m is None or m.group(1) in _LEFT_TO_OTHERS or m.group(2) not in marks:
             continue
         given = f"{m.group(1)}_{marks[m.group(2)]}"
-        if given in problem and given != name and given not in speeds:
+        if given in problem and given not in speeds:
             out[name] = problem[given]
     return out

@@ -16,7 +16,8 @@ its own way before its reverse); several names are placed by one relation only w
 has no sibling in it (A's beside B's); a name the line holds for whatever it stands for (``v sin
 45° = 0.7071v``) is not placed by it. Where no reading fits and every name is partly placed (a
 mass, an angle, a body's ``v_A``), the reading its working holds for (the sides after its label)
-is judged: a slip. Where nothing is placed, the line stays not read. The readings are bounded (at
+is judged: a slip. Where nothing is placed, a line whose first side is names and whose working after
+it is in numbers has that working judged; any other line stays not read. The readings are bounded (at
 most three names, at most :data:`MAX_READINGS` readings; numbers, not algebra, pick the reading),
 and the item says what was assumed: "a read as v_A2n, by its value".
 """

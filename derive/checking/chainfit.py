@@ -95,7 +95,7 @@ def _is_speed(unit: str) -> bool:
 
 
 #: Letters a teacher reads as one quantity's: the impulse is I (OCR, Edexcel) or J (the notes).
-_SAME = {"I": "IJ", "J": "IJ"}
+_SAME = {"I": ("I", "J"), "J": ("I", "J")}
 
 
 def of_the_letter(v: sympy.Symbol, p: sympy.Symbol) -> bool:

@@ -67,7 +67,7 @@ def body_labels(relations: list[Relation]) -> tuple[list[Relation], list[str]]:
 #: body's lead-in, never a product (a body's letter is no quantity).
 _LETTER_LEAD = re.compile(r"^\s*([AB])\s+(?=[\d.(−-])(.+)$")
 #: The axis a line's words before its colon name (``alongXY:``, ``perp:``, ``across:``, ``⊥:``).
-_AXIS_HEAD = re.compile(r"^\s*(?:(along|par|∥)|(perp|across|⊥))[^:]{0,24}:", re.I)
+_AXIS_HEAD = re.compile(r"^\s*(?:(along|par(?:a|allel)?\b|∥)|(perp|across|⊥))[^:]{0,24}:", re.I)  # not "Part (a):"
 
 
 def _letter_lead(r: Relation) -> Relation:

@@ -77,10 +77,11 @@ def signed_by_words(r: R, sign: int) -> R:
     derive's (right along +n, from A toward B), in the student's frame (``sign``); a number
     already signed stays as written."""
     m = re.match(r"^\s*([-+]?)\s*(\d[\d.]*)", r.sides[-1]) if r.direction and r.exprs else None
-    if m is None and r.direction and r.exprs and _letters_size(r.exprs[-1], r.sides[-1]):
-        m = re.match(r"^\s*()(.*?)\s*$", f"({r.sides[-1].strip()})")  # "v ←", "3u/2 to the left": a size in letters
-    elif m is not None and r.exprs[-1].free_symbols:
-        m = None
+    if m is not None and r.exprs[-1].free_symbols:  # "v ←", "9v/2 to the left": a size in letters, or no size
+        sized = _letters_size(r.exprs[-1], r.sides[-1])
+        m = re.match(r"^\s*()(.*?)\s*$", f"({r.sides[-1].strip()})") if sized else None
+    elif m is None and r.direction and r.exprs and _letters_size(r.exprs[-1], r.sides[-1]):
+        m = re.match(r"^\s*()(.*?)\s*$", f"({r.sides[-1].strip()})")
     if m is None or m.group(1) == "-" or _size_only(r.exprs[0]) or _impulse(r.exprs[0]):
         return r
     if _OFF_A_SURFACE_AS_SPEED.search(getattr(r, "written", "")):

@@ -20,7 +20,8 @@ from derive.checking.worlds import Pair
 
 #: A half as students type it: ½, 1/2, 0.5, .5, \frac12, \tfrac{1}{2}, ``/2`` after a product.
 HALF = re.compile(
-    r"½|(?<![\d.])1\s*/\s*2(?![\d.])|(?<![\d.])0?\.5(?!\d)|\\[dt]?frac\s*\{?\s*1\s*\}?\s*\{?\s*2|/\s*2(?![\d.])"
+    r"½|(?<![\d.])1\s*/\s*2(?![\d.])|(?<![\d.])0?\.50*(?!\d)|\\[dt]?frac\s*\{\s*1\s*\}\s*\{\s*2\s*\}|\\[dt]?frac\s*12(?!\d)"
+    r"|(?:(?<![\d.\s])|(?<=\^2))/\s*2(?![\d.])"  # m v²/2, (mv^2)/2, mv^2/2: not 3/2
 )
 
 

@@ -33,6 +33,7 @@ from derive.checking.frames import (
     uses_n_components,
 )
 from derive.checking.frames import pairs as frame_pairs
+from derive.checking.gluednames import twin_letters
 from derive.checking.grounding import grounded, grounded_frame, natural_of, the_speed
 from derive.checking.massletters import masses_put_in
 from derive.checking.namegrammar import energy_change, grammar_names
@@ -47,7 +48,6 @@ from derive.checking.naming import (
     of_the_body,
     read_side,
     rewrite,
-    twin_letters,
 )
 from derive.checking.ownnames import combos, directed, named_later, own_readings, spells_givens, velocities_before
 from derive.checking.reducedmass import mass_named, reduced_mass

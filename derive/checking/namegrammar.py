@@ -16,7 +16,11 @@ Digits are decided from the whole derivation: where any name has a time mark (``
 a prime, ``0``) or the prose names the bodies by numbers (``ball 1``, ``car 2``), digits are
 bodies; otherwise a digit alone is left to the habits (``u_1``, ``v_1``: A before, after). A name
 with no time mark is before where the same name is also written with one for after (``vAn`` beside
-``vAn'``), and otherwise not read here (habits and the inference from relations decide it).
+``vAn'``), and otherwise not read here (habits and the inference from relations decide it). At a
+wall a digit beside an axis (``v_t2``) is a time, and a velocity named by the fixed surface's word or
+capital (``(v_W)_1``) is 0 (:mod:`.fixedbody`); an energy's letter alone (``K``, ``E_k``, ``T``) beside its
+primed twin is the energy before, and a component unprimed beside the same body's primed one
+(``v2y`` beside ``v2x'``) is before.
 """
 
 from __future__ import annotations

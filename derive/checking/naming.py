@@ -33,6 +33,7 @@ from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
 from derive.checking.conventions import axis_sense, plus_said, sign_of
 from derive.checking.forwardway import forward_said, forward_sign
+from derive.checking.gluednames import GLUED_MASS
 from derive.checking.instants import one_body_instants
 from derive.checking.minusnames import minus_names
 from derive.checking.namedlast import in_line_words, named_last, speed_along
@@ -64,7 +65,7 @@ _EVENT = r"(?:\s+(?:the\s+)?(?:collision|impact|bounce|rebound|crash))?"  # "KE 
 #: Phrases for the energies and speeds, rewritten as names before reading.
 PHRASES = (
     (
-        r"(?:(?:\\?Delta|Δ)\s*(?:KE|(?-i:T|E_?k|E|K))\b|(?<![A-Za-z\\])d(?-i:KE|K|E_?k)(?![\w'])"  # dK: ΔK typed
+        r"(?:(?:\\?Delta|Δ)\s*(?:KE|(?-i:T|E_?k|E|K))\b|(?<![A-Za-z\\])(?-i:d(?:KE|K|E_?k))(?![\w'])"  # dK: ΔK typed
         r"|(?<![A-Za-z])(?:KE|(?-i:K|E_?k))[\s_]*\(?(?:lost|loss)\b\)?|loss\s+(?:of|in)\s+(?:KE|kinetic\s+energy|energy)|KE\s+loss"
         r"|lost\s+KE|T_?\(?lost\)?|(?:kinetic\s+)?energy\s+lost|^\s*loss\s*$)",
         "T_lost",
@@ -156,14 +157,6 @@ GREEK = frozenset(
 )
 
 
-def twin_letters(text: str) -> frozenset[str]:
-    """The lowercase body letters a derivation writes beside their capitals in velocities' names (the
-    bullet's ``v_b1`` beside the block's ``v_B1``): two bodies, so ``v_b`` is not B's."""
-    return frozenset(
-        c for c in "ab" if all(re.search(rf"(?<![A-Za-z\\])[uvVw]_?[({{]?{x}(?![a-z])", text) for x in (c, c.upper()))
-    )
-
-
 def rewrite(text: str, known: set[str], twins: frozenset[str] = frozenset()) -> str:
     """A side with the phrases named and names written side by side split (``3eu``, ``5mv_A``)."""
     text = impulse_name(text) or text  # "impulse on the ball": one name
@@ -183,10 +176,12 @@ def rewrite(text: str, known: set[str], twins: frozenset[str] = frozenset()) -> 
     text = glued_times(text)  # 0.5x0.8x1.2^2, before a number and the letters after it are spaced apart
     text = re.sub(r"(?<![\w.])(\d+\.?\d*)(?=[A-Za-z])(?![eE][-+]?\d+(?![\w.]))", r"\1 ", text)  # 3eu: 3 eu; 6.4E1
     text = re.sub(r"(?<![A-Za-z])(a?(?:sin|cos|tan))(?=\d)", r"\1 ", text)  # cos37.6 -> cos 37.6
-    text = re.sub(r"\b(\d*[mM])([uvVw])([A-Z12])(\d?[nt]?)\b", r"\1 \2_\3\4", text)  # mvA, 2mvQ: m times v_A
+    text = GLUED_MASS.sub(r"\1 \2_\3\4", text)  # mvA, 2mvQ: m times v_A (mu1 stays μ₁)
     text = re.sub(r"\b([uvVw])([AB12])(\d?[nt]?)\b", r"\1_\2\3", text)  # vA1n -> v_A1n
-    text = re.sub(  # vb: v_B (not the bullet's v_b1 beside the block's v_B1: ``twins``, :func:`twin_letters`)
-        r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: m[0] if m[2] in twins else f"{m[1]}_{m[2].upper()}{m[3]}", text
+    text = (
+        re.sub(  # vb: v_B (not the bullet's v_b1 beside the block's v_B1: ``twins``, :func:`.gluednames.twin_letters`)
+            r"\b([uvVw])_?([ab])(\d?[nt]?)\b", lambda m: m[0] if m[2] in twins else f"{m[1]}_{m[2].upper()}{m[3]}", text
+        )
     )
     text = re.sub(r"\b(sin|cos|tan)\s*\(\s*(\d+\.?\d*)\s*\)", r"\1(\2°)", text)  # a bare angle: degrees
     text = angle_sum_in_degrees(text)  # θ = α − 30, 90 − θ

@@ -48,8 +48,10 @@ class Shapes:
         return self.WEIGHT * n
 
     def first_shaped(self, best: tuple, options: list[tuple], group: list, mapping: dict, key, natural: list) -> tuple:
-        """A teacher reads names met together by the first relation they stand in: where it holds
-        with the problem's values under neither ``best`` nor another reading (a slip before it) and
+        """A teacher reads names met together by the first relation they stand in: where it holds and
+        has the shape of one of (1)-(4) under a natural reading, that reading, ahead of ``best`` (one
+        such relation is enough, though a slip on the next line leaves it the only one that holds);
+        where it holds with the problem's values under neither ``best`` nor another reading (a slip before it) and
         has the shape of one of (1)-(4) under some reading but not under ``best``, that reading
         (the best of them by ``key``): ``5(3.46) + 3(-6) = 5a + 3b`` after A's components were
         swapped is (3), a A's and b B's, whatever number a later line's a comes to. Only a

@@ -24,13 +24,13 @@ TERSE = re.compile(
 #: The same the other way round, phone-typed: ``A after=x B after=y``, ``B's before = u``.
 TERSE_AFTER = re.compile(
     r"(?<![\w\\'])(?<!\bof\s)(?<!\bof\sthe\s)(?:the\s+)?([A-Z])(?:['’]s)?\s+(?:just\s+)?(after|before)\s*=\s*"
-    r"([A-Za-z](?:_?\w{1,2})?)"
+    r"([A-Za-z](?:_?\d|_\w{1,2})?)"  # x, v1, x_A: a name, not a product of letters (eu)
     r"(?![\w('])(?!\s*[-+*/^=])"
 )
 #: A time said in a label, then bodies' letters set to names: ``vel after: A=a B=b``, ``After impact: P = x, Q = y``.
 _TIME_LABEL = re.compile(r"\b(after|before)\b[^:=]{0,30}:\s*(.*)$", re.I)
 _LETTER_NAME = re.compile(  # a body's letter, not a quantity's (V, U, J, K, T, E, F, ...): "After: V = u" is judged
-    r"(?<![\w\\'])((?![EFGHIJKMNTUVW])[A-Z])\s*=\s*([A-Za-z](?:_?\w{1,2})?)(?![\w('])(?!\s*[-+*/^=])"
+    r"(?<![\w\\'])((?![EFGHIJKMNTUVW])[A-Z])\s*=\s*([A-Za-z](?:_?\d|_\w{1,2})?)(?![\w('])(?!\s*[-+*/^=])"
 )
 _ALONG = re.compile(r"\balong\s+(?:the\s+)?(?:line\s+of\s+(?:centres|centers|impact)|l\.?\s?o\.?\s?c\b)", re.I)
 _ACROSS = re.compile(r"\b(?:across|perp(?:endicular)?|tangent(?:ial)?)\b", re.I)

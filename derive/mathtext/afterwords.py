@@ -67,7 +67,7 @@ def before_on_line(r: Any, lead: str) -> Any:
 
 #: A body's letter said before a name, as a lead-in: ``B has u = -2``, ``(so Q has v = 3)``, ``for Q, v = 3``.
 _BODY_HAS = re.compile(
-    r"^\s*\(?\s*(?:(?:so|and|then|while|whereas)\s+)?(?:for\s+([A-Z])\s*,|([A-Z])\s+has)\s+(?=[A-Za-z][\w{}]{0,5}'*\s*=)"
+    r"^\s*\(?\s*(?:(?:so|and|then|while|whereas)\s+)?(?:[Ff]or\s+([A-Z])\s*,|([A-Z])\s+has)\s+(?=[A-Za-z][\w{}]{0,5}'*\s*=)"
 )
 
 

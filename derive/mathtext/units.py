@@ -4,8 +4,9 @@ A speed ``m/s``, ``m s⁻¹``, ``ms^-1``, ``m s^(-1)``, ``ms-1``, ``m·s⁻¹``,
 ``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``kg m s⁻¹``,
 ``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``; a speed squared ``m^2/s^2``; a stiffness ``N/m``; an angular
 frequency (its square) ``s⁻¹``, ``s^-2``, ``rad/s``, ``Hz``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
-A unit of one atom (``J``, ``kg``, ``m``) is left to the caller, which knows whether a lone
-letter (``2 m``: metres, or two times m?) is a unit.
+A unit of one atom (``J``, ``kg``, `` m``) is taken off a side's last number only where it cannot be a
+factor (:data:`UNIT_END`, :func:`without_unit`: ``2 m`` metres, ``0.002 + 0.150 m`` a mass in a sum);
+:func:`glued_units` takes a letter glued to the number a line of arithmetic ends in (``= 1.02m``).
 
 >>> [bool(UNIT.fullmatch(u)) for u in ("m s⁻¹", "ms-1", "kg m/s", "N s", "g h", "m u")]
 [True, True, True, True, False, False]
