@@ -10,12 +10,18 @@ from dataclasses import replace
 from derive.checking.context import Context
 from derive.checking.inference import Read
 from derive.checking.statementbodies import statement_bodies
+from derive.mathtext.bodysides import WHEN
+
+_WHEN = f"(?i:{WHEN})"
 
 #: A body's quantity in words (``speed of Q after``, ``P's velocity``, ``Q after``), the label between.
 _BODY_PHRASE = (
     (r"(\b(?i:speed|velocity|direction|momentum|KE|energy|component|cpt)\s+of\s+)", r"\b"),
     (r"(\b)", r"(?=['’]s\s+(?i:final\s+|initial\s+)?(?i:speed|velocity|momentum|KE|energy|direction|component))"),
     (r"((?:^|[:*,;(]|[⇒→⟹]|[=-]>|\b(?i:so|and|then))\s*)", r"(?=\s+(?i:after|before)\b)"),  # "⇒ Q after ⊥"
+    # a whole side, phone-typed: "speed Q = 3U/4", "vel P after = 2", "Q spd = 1.5" (saidwords.BODY_WORD_SIDE)
+    (rf"((?:^|[:;,])\s*(?:{_WHEN}\s+)?(?i:speed|spd|velocity|vel\.?)\s+(?:of\s+)?)", rf"(?=(?:\s+{_WHEN})?\s*[=≈])"),
+    (r"((?:^|[:;,])\s*)", rf"(?=\s+(?i:speed|spd|velocity|vel\.?)(?:\s+{_WHEN})?\s*[=≈])"),
     # a sign convention: "positive in the direction P was moving"
     (
         r"(\b(?i:direction|way)\s+(?:(?i:that|in\s+which)\s+)?)",

@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import re
 
+from derive.mathtext.bodysides import BODY_WORD_SIDE, named
+
 #: A kinetic energy's name as students write it at home and abroad (E_k, E_kin, E_c: énergie cinétique).
 _ENERGY = r"E_?(?:k|c|kin|cin)|KE|Ekin"
 #: The energy lost, in German, French, Spanish and Italian.
@@ -17,6 +19,7 @@ _LOST = (
 #: Quantities said in words, as names (:func:`.naming.rewrite`; a wall's speeds and velocities valued in
 #: ``inference._speeds`` where B is fixed): a speed before, a velocity before or after.
 SAID_PHRASES = (
+    (BODY_WORD_SIDE.pattern, lambda m: named(m) or m[0]),  # "speed B = 3U/4", phone-typed: B's speed after
     (r"(?<=speed_[AB])\s+(?:the\s+)?(?:collision|impact)\b", ""),  # "speed of B after the collision"
     (rf"(?:{_ENERGY})[\s_,]*(?:before|initial|vorher|avant|antes|prima|iniziale|initiale?)\b", "T_1"),
     (rf"(?:{_ENERGY})[\s_,]*(?:after|final|nachher|apr[eè]s|despu[eé]s|dopo|finale)(?!\w)", "T_2"),

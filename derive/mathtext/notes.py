@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 
 from derive.mathtext.asides import case_before, named_after
+from derive.mathtext.bodysides import body_side
 from derive.mathtext.latex import REJECTED
 from derive.mathtext.notation import FUNCTIONS
 from derive.mathtext.parser import GREEK
@@ -366,7 +367,10 @@ _ON_BODY = re.compile(r"^\s*(?:on|for)\s+(?-i:[A-Z])\s+(?=[\d.(])", re.I)
 
 def name_after_words(side: str, math_words: frozenset[str]) -> str:
     """A first side that is words and then a name (``CoM velocity V``) as the name alone; a clause
-    of words before a comma (``Energy lost, using ΔKE``) dropped."""
+    of words before a comma (``Energy lost, using ΔKE``) dropped; a body's letter beside the word
+    speed or velocity (``speed B``) is one quantity, kept whole."""
+    if body_side(side):
+        return side
     side = _BODY_HAS.sub("", side, count=1)  # "A has 15 cos α i + 15 sin α j = 9i + 12j": A's, as vectors
     m = _CLAUSE_HEAD.match(side)
     if m and side[m.end() :].strip() and all(w.lower() not in math_words for w in re.findall(r"\w+", m.group(0))):
