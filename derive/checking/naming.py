@@ -289,11 +289,19 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
         piece = " ".join(piece)
         if piece.strip() in ("A", "B") or (first and cut[-1].lower() in _OBJECT_AFTER):
             continue  # "Impulse on B = …": the body; "Angle of A from n = 25°": n is the angle's line, not it
+        if first and _word_before(piece):
+            continue  # "… multiplied by e = 1/2": the word by, not a name b_y times e
         try:
             return parse(student(piece), names).expr
         except ParseError:
             continue
     raise ParseError(f"could not read {text!r}")
+
+
+def _word_before(piece: str) -> bool:
+    """Whether prose trimmed to ``piece`` still opens with a short word before a name (``by e``)."""
+    words = piece.split()
+    return len(words) > 1 and _SHORT_WORDS.fullmatch(words[0]) is not None and words[1][:1].isalpha()
 
 
 def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
