@@ -9,7 +9,9 @@ after. The rule: once the centre of mass's velocity is written, a name met first
 left of a relation, which the habits read as a body's velocity (or its component along the
 line of centres) and which is false in that reading but holds as that velocity minus the centre
 of mass's, is that relative velocity on every line. The centre of mass's velocity is the same
-before and after the impact, so the reading holds for both instants. A name set to 0 keeps the
+before and after the impact, so the reading holds for both instants. A name of the centre's own
+letter (``v_i' = v_cm - v_i`` beside ``v_cm``) is the laboratory's: the student's letter for the
+velocities the centre's is one of (there, a slip of the rule 2v_cm - v_i). A name set to 0 keeps the
 habit (a body at rest in the laboratory, or a slip: never excused as the centre's own velocity).
 """
 
@@ -37,7 +39,7 @@ def relative_to_centre(
     if _value(ctx, centre, {}, at) in (None, 0) or not bodies:
         return  # a centre at rest: each relative velocity is the laboratory's
     seen: set[sympy.Symbol] = set()
-    centred = False  # the centre of mass's velocity written on a line before
+    centred = ""  # the letter of the name the centre of mass's velocity was written under ("v" for v_cm)
     own: dict[sympy.Symbol, sympy.Expr] = {}  # a name of the student's own set alone to a value: V = 2u
     for r in raw:
         if not r.exprs or len(r.exprs) < 2:
@@ -46,7 +48,14 @@ def relative_to_centre(
         name = left.name[len(PREFIX) :] if left.is_Symbol and left.name.startswith(PREFIX) else ""
         held = meanings.get(name)
         values = [_value(ctx, e.xreplace(own), meanings, at) for e in r.exprs[1:]]
-        if centred and held in bodies and name not in kept and left not in seen and lone_name(r.sides[0]):
+        if (
+            centred
+            and held in bodies
+            and name[:1].lower() != centred
+            and name not in kept
+            and left not in seen
+            and lone_name(r.sides[0])
+        ):
             lab, frame = _value(ctx, held, {}, at), _value(ctx, held - centre, {}, at)
             if (
                 None not in (lab, frame, *values)
@@ -59,7 +68,8 @@ def relative_to_centre(
             own[left] = r.exprs[-1]
         for e in r.exprs:
             seen |= {s for s in e.free_symbols if s.name.startswith(PREFIX)}
-        centred = centred or (None not in values and _near(_value(ctx, centre, {}, at), values))
+        if not centred and None not in values and _near(_value(ctx, centre, {}, at), values):
+            centred = name[:1].lower() or "?"  # a number alone: no letter
 
 
 def _velocities(ctx: Context) -> set[sympy.Expr]:
