@@ -154,7 +154,14 @@ def declared_axes(text: str) -> dict[str, tuple[str, int]]:
     (0 where the words give none). Empty where no axis is placed, or where it is derive's own."""
     if declares_frame(text):  # "n̂ = cos 20° i + sin 20° j": i and j are the student's x and y
         return {}
-    plain = _STYLED.sub(r"\1", text).replace("$", " ").replace("î", "i").replace("ĵ", "j")
+    plain = (
+        _STYLED.sub(r"\1", text)
+        .replace("$", " ")
+        .replace("î", "i")
+        .replace("ĵ", "j")
+        .replace("ŷ", "y")
+        .replace("\u0302", "")
+    )  # x̂: a hat typed as a combining accent
     found: dict[str, tuple[str, int]] = {}
     last = ""  # the unit a clause without one goes on placing ("j perpendicular to it, away from …")
     wall = re.search(rf"\b{_WALL}", plain, re.I) and not re.search(rf"\b{_LINE}(?![a-z])", plain, re.I)  # "j … it"

@@ -136,7 +136,7 @@ def read_lines(
     names = Open({**problem, **_speeds(ctx)}, set(meanings))
     raw = [_parse(r, sides, names) for r, sides in zip(relations, rewritten, strict=True)]
     raw = speeds_before(ctx, raw, meanings, _speeds(ctx))  # with v1 = U: U is A's speed
-    own_readings(ctx, raw, meanings, truth, set(declared))  # θ worked out to another value; u_1 = v_1 - v_cm
+    own_readings(ctx, raw, meanings, (pt, truth), set(declared))  # θ worked out to another value; u_1 = v_1 - v_cm
     defs = _definitions(raw, meanings, [r.aside for r in relations], frozenset(problem))
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)

@@ -31,9 +31,9 @@ from dataclasses import replace
 import sympy
 
 from derive.checking.cancelledmass import cancelled_mass
+from derive.checking.centremass import moving_together
 from derive.checking.context import Context
 from derive.checking.fixedbody import fixed_marks, names_fixed
-from derive.checking.naming import moving_together
 from derive.checking.statementbodies import statement_bodies, told_apart
 from derive.checking.wallnames import typed_at_wall, wall_rebound, wall_timed
 from derive.mathtext.bracketed import bracketed_names

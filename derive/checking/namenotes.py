@@ -57,7 +57,20 @@ def _shown(e: sympy.Expr) -> str:
         return "the fixed velocity"  # (v_C)_1: the wall's, which does not move
     if is_reduced_mass(e):
         return "the reduced mass m_A m_B/(m_A + m_B)"
+    if e.is_Add and (body := _relative(e)):
+        return f"{body} relative to the centre of mass"  # v_A1 - v_cm (:mod:`.cmframe`)
     return e.name if isinstance(e, sympy.Symbol) else words_for(e) or described(e) or "the common velocity"
+
+
+def _relative(e: sympy.Expr) -> str:
+    """``v_A1n`` for v_A1n - (m_A v_A1n + m_B v_B1n)/(m_A + m_B): a velocity less the centre of
+    mass's (the velocity whose removal leaves the simplest remainder over m_A + m_B)."""
+    found = []
+    for s in e.free_symbols:
+        rest = sympy.together(s - e)
+        if re.fullmatch(r"v_[AB][12]n?", s.name) and {str(x) for x in sympy.denom(rest).free_symbols} == {"m_A", "m_B"}:
+            found.append((sympy.count_ops(rest), s.name))
+    return min(found)[1] if found else ""
 
 
 def in_order(meanings: dict, written: list[str]) -> dict:

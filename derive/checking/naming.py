@@ -28,6 +28,7 @@ import sympy
 
 from derive.checking.afterlabels import after_label
 from derive.checking.axisnames import letter_components
+from derive.checking.centremass import common_velocity, moving_together
 from derive.checking.centrenames import centre_names
 from derive.checking.componentlabels import COMPONENT_OF, SIZE, component_words
 from derive.checking.context import Context
@@ -283,6 +284,8 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
         piece = " ".join(piece)
         if piece.strip() in ("A", "B") or (first and cut[-1].lower() in _OBJECT_AFTER):
             continue  # "Impulse on B = …": the body; "Angle of A from n = 25°": n is the angle's line, not it
+        if first and _word_before(piece):
+            continue  # "… multiplied by e = 1/2": the word by, not a name b_y times e
         try:
             return parse(student(piece), names).expr
         except ParseError:
@@ -290,12 +293,10 @@ def read_side(text: str, names: Open, first: bool, last: bool) -> sympy.Expr:
     raise ParseError(f"could not read {text!r}")
 
 
-def common_velocity(ctx: Context) -> sympy.Expr:
-    """(m_A v_A1 + m_B v_B1)/(m_A + m_B) in the problem's symbols (the velocity of the centre of mass)."""
-    m, nm = ctx.model, ctx.model.nm
-    a1 = nm.A1n
-    b1 = nm.B1n if nm.B1n is not None else 0
-    return (m.m_A * a1 + m.m_B * b1) / (m.m_A + m.m_B)
+def _word_before(piece: str) -> bool:
+    """Whether prose trimmed to ``piece`` still opens with a short word before a name (``by e``)."""
+    words = piece.split()
+    return len(words) > 1 and _SHORT_WORDS.fullmatch(words[0]) is not None and words[1][:1].isalpha()
 
 
 def habits(ctx: Context, used: set[str] | None) -> dict[str, sympy.Expr]:
@@ -379,16 +380,6 @@ def _lone(ctx: Context, after: dict[str, sympy.Expr | None], u_used: bool, both:
         if not any(str(s) == "m" for g in p.givens for x in (g.value, g.definition) if x for s in x.free_symbols):
             out["m"] = masses[0]
     return out
-
-
-def moving_together(ctx: Context, a: sympy.Expr | None, b: sympy.Expr | None) -> sympy.Expr | None:
-    """The one velocity of two bodies that move off together (e = 0): the velocity of their
-    centre of mass after the impact, (m_A v_A2 + m_B v_B2)/(m_A + m_B), which is each one's
-    when they do; so ``(m_A + m_B) V = m_A u_A + m_B u_B`` is (3) itself, whatever the slip."""
-    if ctx.problem.fixed_B or a is None or b is None or a == b:
-        return a
-    m = ctx.model
-    return (m.m_A * a + m.m_B * b) / (m.m_A + m.m_B)
 
 
 def _post(ctx: Context, body: str) -> sympy.Expr | None:

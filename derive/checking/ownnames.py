@@ -19,7 +19,9 @@ from typing import Any
 
 import sympy
 
+from derive.checking.cmframe import relative_to_centre
 from derive.checking.context import DEG, Context
+from derive.checking.lonenames import lone_name
 from derive.checking.naming import GREEK, PREFIX
 from derive.checking.numeric import number_of
 from derive.problem.units import ANGLE, VELOCITY
@@ -116,14 +118,6 @@ def spells_givens(name: str, right: sympy.Expr, given: frozenset[str], written: 
     )
 
 
-def lone_name(side: str) -> bool:
-    """Whether a relation's left side is written as a name alone (``w``, ``v_B'``, ``(v_B)_2``),
-    not as an equation the student goes on to solve that only simplifies to one: a difference
-    ``w - 0``, a multiple ``1 w``, a product or a quotient (the law of restitution's
-    ``b - 0 = 0.8(a - sqrt3)``, which a teacher marks as that law, not as naming b)."""
-    return re.search(r"[-+*/×÷−·]|^\s*\d|[\w')}]\s+[\w(\\]", side.strip()) is None
-
-
 def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr], given: dict | None = None) -> None:
     """``φ = 90° − θ`` after ``tan φ = e tan θ``: a name nothing else gave a meaning, set equal
     alone to an expression in known names, is the student's name for it on every line; one
@@ -211,10 +205,16 @@ def directed(relations: tuple, text: str) -> tuple:
     return tuple(out)
 
 
-def own_readings(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], truth: dict, kept: set[str]) -> None:
+def own_readings(
+    ctx: Context, raw: list, meanings: dict[str, sympy.Expr], at: tuple[dict, dict], kept: set[str]
+) -> None:
     """The habits' readings the student's own lines overrule: angles (:func:`own_angles`) and
-    quantities defined anew (:func:`defined_anew`); ``meanings`` changed in place."""
+    quantities defined anew (:func:`defined_anew`), velocities relative to the centre of mass
+    (:mod:`.cmframe`); ``at``: the givens' sample point and the unknowns' values there;
+    ``meanings`` changed in place."""
+    pt, truth = at
     own_angles(ctx, raw, meanings)
+    relative_to_centre(ctx, raw, meanings, (pt, truth), kept)  # u_A = 12 - 20/3 after v_cm = 20/3
     defined_anew(ctx, raw, meanings, truth, kept)
 
 

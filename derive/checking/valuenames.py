@@ -16,8 +16,8 @@ import re
 
 import sympy
 
+from derive.checking.centremass import common_velocity, moving_together
 from derive.checking.context import Context
-from derive.checking.naming import common_velocity, moving_together
 from derive.checking.numeric import number_of
 from derive.checking.spellings import impulse_name
 from derive.mathtext.notation import student

@@ -71,6 +71,10 @@ def _axis(problem: Any, axis: str | None) -> str:
     return f"the {axis} axis" if axis else "its axis"
 
 
+#: After a velocity read in the centre of mass's frame (:mod:`.namenotes`).
+_RELATIVE = " relative to the centre of mass"
+
+
 def meaning(name: str, problem: Any) -> str:
     """derive's name ``name`` (``v_A2n``, ``theta_A1``, ``-v_B2``, ``T_lost``) in words,
     with the problem's labels for the bodies; a name it does not know is given as written."""
@@ -78,6 +82,8 @@ def meaning(name: str, problem: Any) -> str:
         return "the impulse on A along the line of impact"  # B's impulse turned round: A's (n from A toward B)
     if name.startswith("-"):
         return meaning(name[1:], problem) + ", taken positive the other way"
+    if name.endswith(_RELATIVE):  # a velocity in the centre of mass's frame (:mod:`.cmframe`)
+        return meaning(name.removesuffix(_RELATIVE), problem) + _RELATIVE
     when = {"1": "before the impact", "2": "after the impact"}
     m = re.fullmatch(r"v_([AB])([12])([ntv]?)", name)  # v: the vector of both components
     if m:
@@ -125,6 +131,14 @@ def glossary(solution: Any, names: Any = ()) -> dict[str, str]:
     out["the common velocity"] = meaning("the common velocity", p)
     out["the fixed velocity"] = meaning("the fixed velocity", p)
     out.update({f"v_{b}{k}v": meaning(f"v_{b}{k}v", p) for b in "AB" for k in "12"})  # a vector (_vectors)
+    out.update(
+        {
+            f"v_{b}{k}{c}{_RELATIVE}": meaning(f"v_{b}{k}{c}{_RELATIVE}", p)
+            for b in "AB"
+            for k in "12"
+            for c in ("", "n")
+        }
+    )
     stages = [st for st in getattr(solution, "stages", ()) or () if getattr(st, "values", None) is not None]
     for k, st in enumerate(stages if len(stages) > 1 else ()):  # a chain's stages (a single impact has one)
         before = {str(n) for n in st.values}

@@ -411,8 +411,13 @@ GAP_THEN_NAME = re.compile(r"(=[^=]*?\S)(?:[ ]{3,}|\t+)(?=(?:\([A-Za-z]\w{0,3}\)
 #: not ``(v_Abefore - v_Bbefore)``, whose words are marks of names, nor ``(u - lambda u)``, whose
 #: only words are a Greek letter's or a function's names: mathematics).
 _MATH_NAME = "|".join(sorted(GREEK | FUNCTIONS | {"sqrt", "sec", "cosec", "cot"}, key=len, reverse=True))
+#: Terms joined by operators, ``(1 - lam)``, ``(u - lam u)``: mathematics whatever its names' letters
+#: (a term a number or a short name, a one-letter name after it a product: ``lam u``; never a
+#: word, ``(B - forwards)``).
+_TERM = r"(?:\d[\d.]*|[A-Za-z]{1,3}\d?(?:_\w{1,4})?'*)(?:(?:\s+|\s*\*\s*)[A-Za-z](?![\w']))?"
+_ALGEBRA = rf"\s*[-+−]?\s*{_TERM}(?:\s*[-+*/×−]\s*{_TERM})+\s*\)"
 REMARK_END = re.compile(
-    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*"
+    rf"(?:,\s*|\s+)(?:i\.\s?e\..*|\((?!{_ALGEBRA})(?=[^()]*(?<![\w])(?!(?:{_MATH_NAME})(?![A-Za-z]))[A-Za-z]{{3}})[^()]*\)\s*[.:;]?\s*"
     r"|\(\s*up\s*\)\s*[.:;]?\s*)$"  # "28 m/s (up)": a way in words of two letters, as "(down)" is
 )
 

@@ -1,7 +1,7 @@
 """Units as students type them after a number, recognised so that they can be taken off.
 
 A speed ``m/s``, ``m s⁻¹``, ``ms^-1``, ``m s^(-1)``, ``ms-1``, ``m·s⁻¹``, ``km/h``, ``km h⁻¹``,
-``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``kg m s⁻¹``,
+``ft/s``; an acceleration ``m/s²``, ``m s^-2``; a momentum or impulse ``kg m/s``, ``g m/s`` (masses in grams), ``kg m s⁻¹``,
 ``N s``, ``Ns``, ``N·s``, ``N-s``, ``lb·s``, ``lbf s``, ``lb ft/s``, ``slug ft/s``; a speed squared ``m^2/s^2``; a stiffness ``N/m``; an angular
 frequency (its square) ``s⁻¹``, ``s^-2``, ``rad/s``, ``Hz``. Only these shapes: ``2 g h`` (two times g times h) is not a unit.
 A unit of one atom (``J``, ``kg``, `` m``) is taken off a side's last number only where it cannot be a
@@ -28,7 +28,7 @@ _RATE = r"(?:\s*\^\s*(?:\{\s*[-−]\s*[12]\s*\}|\(\s*[-−]\s*[12]\s*\)|[-−]\s
 _PER_TIME = rf"(?:\s*/\s*{_TIME}(?:\s*\^\s*\{{?2\}}?|²)?|{_JOIN}{_TIME}{_INVERSE})"
 #: A speed (an acceleration), a momentum, an impulse.
 UNIT = re.compile(
-    rf"(?:(?:kg|lb|slug){_JOIN})?{_LENGTH}{_PER_TIME}|(?:N|lbf?)(?:{_JOIN}|\s*-\s*)s|mph"
+    rf"(?:(?:kg|g|lb|slug){_JOIN})?{_LENGTH}{_PER_TIME}|(?:N|lbf?)(?:{_JOIN}|\s*-\s*)s|mph"
     r"|(?:m|ft)(?:\s*\^\s*2|²)\s*/\s*s(?:\s*\^\s*2|²)"  # a speed squared, m^2/s^2 (2gh worked in its units)
     r"|N\s*/\s*m(?![A-Za-z])"  # a spring's stiffness, N/m
     rf"|(?:rad{_JOIN})?s{_RATE}|rad\s*/\s*s(?:\s*\^\s*\{{?2\}}?|²)?|Hz"  # ω (ω²) of a stage: s⁻¹, s^-2, rad/s, Hz
