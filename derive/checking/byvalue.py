@@ -32,7 +32,7 @@ from typing import Any
 
 import sympy
 
-from derive.checking.naming import PREFIX
+from derive.checking.naming import PREFIX, placeholders
 from derive.checking.valuenames import candidates, quantities
 from derive.checking.words import meaning
 from derive.problem.units import ANGLE, MASS, VELOCITY
@@ -69,10 +69,6 @@ def item(trace: Any, line: Any) -> Any:
     if out is None or not said:
         return out
     return replace(out, notes=(*out.notes, f"Read by value: {'; '.join(said)}."))
-
-
-def _placeholders(e: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in e.free_symbols if s.name.startswith(PREFIX)}
 
 
 def _options(ctx: Any, truth: dict) -> list[tuple[str, sympy.Expr, str]]:
@@ -277,7 +273,7 @@ def worked_names(raw: list, mapping: dict) -> frozenset:
     written once is (``p = 0.150 x 35.0 = 5.25``)."""
     seen: dict[sympy.Symbol, set[int]] = {}
     for r in raw:
-        for p in set().union(*(_placeholders(e) for e in r.exprs or ())) - set(mapping):
+        for p in set().union(*(placeholders(e) for e in r.exprs or ())) - set(mapping):
             seen.setdefault(p, set()).add(r.number)
     return frozenset(p for p, numbers in seen.items() if len(numbers) > 1)
 
@@ -286,7 +282,7 @@ def _worked_out(pending: tuple) -> bool:
     """Whether a line sets its names to a working in numbers (``a - b = 0.6(3.05 + 11.9) = 8.97``):
     a value that may fit an unnatural reading by chance (B's speed less A's), so it places no name
     ahead of the lines judged before it."""
-    return len(pending) >= 3 and bool(_placeholders(pending[0])) and not any(map(_placeholders, pending[1:]))
+    return len(pending) >= 3 and bool(placeholders(pending[0])) and not any(map(placeholders, pending[1:]))
 
 
 def placed_ahead(trace: Any, lines: list) -> None:
@@ -312,7 +308,7 @@ def _reading(trace: Any, line: Any, ahead: bool = False) -> tuple[dict, list[str
     the problem's values only, before any line is judged."""
     memory: dict = trace.__dict__.setdefault("by_value", {})
     pending = list(line.pending)
-    marks = sorted(set().union(*(_placeholders(e) for e in pending)), key=str)
+    marks = sorted(set().union(*(placeholders(e) for e in pending)), key=str)
     fixed = {p: memory[_key(p, pending)][1] for p in marks if _key(p, pending) in memory}
     free = [p for p in marks if p not in fixed]
     if not all(_symbol_like(p.name[len(PREFIX) :]) for p in free):

@@ -31,6 +31,7 @@ from derive.checking.earlyworking import worked_early
 from derive.checking.figures import literal_tolerance
 from derive.checking.impulseword import impulse_said, impulse_sign
 from derive.checking.naming import PREFIX, Open, declaration, read_side, rewrite
+from derive.checking.naming import placeholders as _own  # the student's names not yet placed
 from derive.checking.numeric import number_of
 from derive.checking.report import Item, merged
 from derive.checking.slipnames import COPIED, copied_into_working
@@ -298,10 +299,6 @@ def _solved(difference: sympy.Expr, p: sympy.Symbol) -> sympy.Expr | None:
     """The one root of a relation linear in ``p`` (None where it is not)."""
     a, b = difference.diff(p), difference.subs(p, 0)
     return None if a.has(p) or a == 0 else -b / a
-
-
-def _own(x: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in x.free_symbols if s.name.startswith(PREFIX)}
 
 
 def _known_sides(sides, exprs: list[sympy.Expr], defined: set) -> tuple[tuple[str, ...], list[sympy.Expr]]:

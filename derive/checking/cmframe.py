@@ -22,7 +22,7 @@ import sympy
 from derive.checking.centremass import common_velocity
 from derive.checking.context import Context
 from derive.checking.lonenames import lone_name
-from derive.checking.naming import PREFIX
+from derive.checking.naming import PREFIX, placeholders
 from derive.checking.numeric import number_of
 
 
@@ -67,7 +67,7 @@ def relative_to_centre(
         elif name and name not in meanings and left not in seen and lone_name(r.sides[0]) and None not in values:
             own[left] = r.exprs[-1]
         for e in r.exprs:
-            seen |= {s for s in e.free_symbols if s.name.startswith(PREFIX)}
+            seen |= placeholders(e)
         if not centred and None not in values and _near(_value(ctx, centre, {}, at), values):
             centred = name[:1].lower() or "?"  # a number alone: no letter
 

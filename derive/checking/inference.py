@@ -46,6 +46,7 @@ from derive.checking.naming import (
     declares,
     habits,
     of_the_body,
+    placeholders,
     read_side,
     rewrite,
 )
@@ -141,7 +142,7 @@ def read_lines(
     equated = _equated(raw, meanings, defs, {g.symbol for g in ctx.problem.givens})
     defs.update(equated)
     on_body = {n for n in meanings if re.fullmatch(r"(?:impulse|dp)_[AB]", n)}  # their sign is the frame's
-    own = any(p.name[1:] not in on_body for r in raw if r.exprs for e in r.exprs for p in _placeholders(e))
+    own = any(p.name[1:] not in on_body for r in raw if r.exprs for e in r.exprs for p in placeholders(e))
     either = own or (uses_n_components(ctx, raw) and reversal_said(ctx, raw, pt, truth))
     signs = (sign,) if sign else (1, -1) if either else (1,)
     ways = {sg: flipped(ctx, raw, sg) for sg in signs}  # derive's n components in the student's frame
@@ -255,10 +256,6 @@ def _parse(r: Relation, sides: tuple[str, ...], names: Open) -> Read:
     return Read(r.line, r.written, sides, r.tag, exprs, direction=r.direction)
 
 
-def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
-
-
 #: A trigonometric function of an angle the student names, and its inverse.
 _INVERSE = {sympy.tan: sympy.atan, sympy.sin: sympy.asin, sympy.cos: sympy.acos}
 
@@ -282,12 +279,12 @@ def _definitions(
             if spells_givens(left.name[1:], right, given, r.written):
                 continue  # mu = 9m v_A + m v_B, m and u given: m × u, not a name
             right = right.xreplace(defs)
-            open_ = {p for p in _placeholders(right) if p.name[1:] not in meanings}
+            open_ = {p for p in placeholders(right) if p.name[1:] not in meanings}
             if (right.free_symbols or asides[i] or left.name[1:] in GREEK) and not open_:
                 defs[left] = right
                 raw[i] = Read(r.number, r.written, r.sides, r.tag, r.exprs, defines=left.name[1:])
         for e in r.exprs:
-            seen |= _placeholders(e)
+            seen |= placeholders(e)
     return defs
 
 
@@ -313,7 +310,7 @@ def _infer(
         turned = turned and not (ctx.problem.fixed_B and along_wall(ctx, e))  # out of a wall: t stays
         base[sympy.Symbol(PREFIX + name)] = sign * e if turned else e
     pairs = frame_pairs(ctx, raw, pt, truth)
-    if not meanings and not any(_placeholders(e) for r in raw if r.exprs for e in r.exprs):
+    if not meanings and not any(placeholders(e) for r in raw if r.exprs for e in r.exprs):
         return score(pairs, {}, ctx, pt, truth) + (0.5 if sign == 1 else 0), {}, {}
     shapes = Shapes(ctx, raw, pt, truth, equations)
     mapping = {**base, **{k: v.xreplace(base) for k, v in defs.items()}}
@@ -321,7 +318,7 @@ def _infer(
     together: list[sympy.Symbol] = []  # the first names met in one relation: inferred together
     for pairs_of_line in pairs:
         for _t, (left, right), _m in pairs_of_line:
-            found = sorted(_placeholders(left) | _placeholders(right), key=str)
+            found = sorted(placeholders(left) | placeholders(right), key=str)
             new = [p for p in found if p not in mapping and p not in unknown]  # met first here
             unknown += [p for p in new if p not in unknown]
             if len(new) >= 2 and not together:
@@ -352,7 +349,7 @@ def _infer(
         ranked = {o: f + _natural(group, o) for o, f in zip(options, fits, strict=True)}  # by its first relation:
         natural = [o for o in options if natural_of(o, options, sign) == o]  # A's then B's, each its own way
         best = shapes.first_shaped(best, options, group, mapping, ranked.__getitem__, natural)
-        shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & _placeholders(e) for e in r.exprs))
+        shown = all(len(r.sides) >= 3 for r in raw if r.exprs and any(set(group) & placeholders(e) for e in r.exprs))
         need = 1 if _natural(group, best) or shown or shapes.grounds(best, group, mapping) else 2  # once: enough
         floor = max(min(fits), score(pairs, mapping, ctx, pt, truth) + shapes.score(mapping))  # what holds anyway
         if fits[options.index(best)] < floor + need:
@@ -377,11 +374,11 @@ def _solved_for(raw: list[Read]) -> set[sympy.Symbol]:
         if r.exprs is None:
             continue
         first = r.exprs[0]
-        if first in seen and len(r.exprs) >= 2 and not _placeholders(r.exprs[-1]) and first.is_Symbol:
+        if first in seen and len(r.exprs) >= 2 and not placeholders(r.exprs[-1]) and first.is_Symbol:
             out.add(first)
-        alone = first.is_Symbol and len(r.exprs) >= 2 and not any(_placeholders(e) for e in r.exprs[1:])
+        alone = first.is_Symbol and len(r.exprs) >= 2 and not any(placeholders(e) for e in r.exprs[1:])
         if not alone:
-            seen |= set().union(*(_placeholders(e) for e in r.exprs))
+            seen |= set().union(*(placeholders(e) for e in r.exprs))
     return out
 
 
@@ -437,7 +434,7 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr], shared: frozense
     if r.exprs is None:
         return r
     exprs = tuple(e.xreplace(mapping) for e in r.exprs)
-    marks, k = [_placeholders(e) for e in exprs], 0
+    marks, k = [placeholders(e) for e in exprs], 0
     while (left := set().union(*marks[k:])) and len(exprs) - k >= 3 and not r.defines and not marks[k] & shared:
         if set().union(*marks[k + 1 :]) and (left != marks[k] or not exprs[k].is_Symbol):
             break
@@ -446,5 +443,5 @@ def _resolved(r: Read, mapping: dict[sympy.Symbol, sympy.Expr], shared: frozense
     if left and not r.defines:
         names = ", ".join(sorted(p.name[1:] for p in left))
         return Read(r.number, r.written, r.sides, r.tag, None, f"unknown name {names}", pending=exprs)
-    own = any(_placeholders(e) for e in r.exprs)
+    own = any(placeholders(e) for e in r.exprs)
     return replace(r, exprs=exprs, own_names=own)

@@ -111,6 +111,11 @@ COMMON = ("v_G", "v_g", "v_cm", "v_CM", "v_c", "u_G", "V_G", "V_cm", "V_CM", "v_
 PREFIX = "?"
 
 
+def placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
+    """The student's names in ``expr`` not yet given a meaning (written with :data:`PREFIX`)."""
+    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
+
+
 class Open(Mapping):
     """The names a side may use: the problem's, the student's known ones, and a placeholder
     symbol for every other name that looks like one (a letter with a subscript, a single

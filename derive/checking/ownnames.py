@@ -22,7 +22,7 @@ import sympy
 from derive.checking.cmframe import relative_to_centre
 from derive.checking.context import DEG, Context
 from derive.checking.lonenames import lone_name
-from derive.checking.naming import GREEK, PREFIX
+from derive.checking.naming import GREEK, PREFIX, placeholders
 from derive.checking.numeric import number_of
 from derive.problem.units import ANGLE, VELOCITY
 
@@ -135,7 +135,7 @@ def named_later(raw: list, mapping: dict[sympy.Symbol, sympy.Expr], given: dict 
             and lone_name(r.sides[0])
             and left not in mapping
             and right.free_symbols - {DEG}
-            and not _placeholders(right)
+            and not placeholders(right)
         ):
             mapping[left] = right
             raw[i] = replace(r, defines=left.name[1:])
@@ -159,10 +159,6 @@ def combos(group: list[sympy.Symbol], cands: list, raw: list, before: set[sympy.
         return cands
 
     return list(itertools.product(*(allowed(p) for p in group)))
-
-
-def _placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
 
 
 _DIRECTIONS = {"left": "right", "right": "left", "up": "down", "down": "up"}
@@ -234,17 +230,17 @@ def defined_anew(ctx: Context, raw: list, meanings: dict[str, sympy.Expr], truth
         name = left.name[len(PREFIX) :] if left.is_Symbol and left.name.startswith(PREFIX) else ""
         if name in meanings and name not in kept and left not in seen and lone_name(r.sides[0]):
             held = meanings[name]
-            if _placeholders(right) and _held_elsewhere(raw, meanings, name, held):
-                reading = {p: own.get(p, meanings.get(p.name[len(PREFIX) :], p)) for p in _placeholders(right) | {left}}
+            if placeholders(right) and _held_elsewhere(raw, meanings, name, held):
+                reading = {p: own.get(p, meanings.get(p.name[len(PREFIX) :], p)) for p in placeholders(right) | {left}}
                 value = right.xreplace(reading)
                 if (
-                    not _placeholders(value)
+                    not placeholders(value)
                     and _holds_at((ctx.num(held.xreplace(truth)), ctx.num(value.xreplace(truth))), {}) is False
                 ):
                     del meanings[name]
                     own[left] = value
         for e in r.exprs:
-            seen |= _placeholders(e)
+            seen |= placeholders(e)
 
 
 def _held_elsewhere(raw: list, meanings: dict[str, sympy.Expr], name: str, held: sympy.Expr) -> bool:

@@ -17,7 +17,7 @@ import sympy
 
 from derive.checking import chainnames
 from derive.checking.figures import literal_tolerance
-from derive.checking.naming import PREFIX
+from derive.checking.naming import PREFIX, placeholders
 from derive.checking.report import Item
 from derive.checking.stageslips import numbers_written
 from derive.checking.worlds import number_at_figures
@@ -56,7 +56,7 @@ def solved_somewhere(read: list) -> set[sympy.Symbol]:
     out: set[sympy.Symbol] = set()
     for _r, _sides, exprs in read + read:  # twice: a name defined after the line that uses it
         name = defined(exprs[0], {}) if len(exprs) > 1 else None
-        if name and {s for s in exprs[1].free_symbols if s.name.startswith(PREFIX)} <= out:
+        if name and placeholders(exprs[1]) <= out:
             out.add(name[0])
     return out
 
@@ -64,7 +64,7 @@ def solved_somewhere(read: list) -> set[sympy.Symbol]:
 def provisional(name: tuple[sympy.Symbol, sympy.Expr], exprs: list, known: dict, later: set) -> bool:
     """Whether a line that seems to define ``name`` only relates it to names not yet known that
     another line defines (see :func:`solved_somewhere`)."""
-    unknown = {s for s in exprs[1].free_symbols if s.name.startswith(PREFIX)} - set(known)
+    unknown = placeholders(exprs[1]) - set(known)
     return bool(unknown) and name[0] in later
 
 
@@ -78,7 +78,7 @@ def define(
     by the first side after it in known names: its working in numbers, as a name defined by numbers
     alone is (``d = (30)(9.81)/20000``)."""
     (p, n), (sides, exprs), (true_defs, own_defs) = name, line, defs
-    known = [x for x in exprs[1:] if not _unknown(x.xreplace(true_defs))]
+    known = [x for x in exprs[1:] if not placeholders(x.xreplace(true_defs))]
     true = (known[0] if known else exprs[1]).xreplace(true_defs).xreplace(values)
     own = sympy.Rational(sides[-1]) if number(sides[-1]) else exprs[-1].xreplace(own_defs)
     true_defs[p], own_defs[p] = (true, own) if n == 1 else (true ** (1 / n), own ** (1 / n))
@@ -86,10 +86,6 @@ def define(
     rounding = literal_tolerance(" = ".join(sides[1:]), ctx.data) + slack_of(true_defs, used)
     if rounding and hasattr(true_defs, "slack"):
         true_defs.slack[p] = float(rounding / n)
-
-
-def _unknown(x: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in x.free_symbols if s.name.startswith(PREFIX)}
 
 
 def defined_rest(p: sympy.Symbol, line: tuple, state: tuple, number: Callable, worked: list) -> tuple[list, tuple]:

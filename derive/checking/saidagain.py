@@ -11,7 +11,7 @@ from dataclasses import replace
 
 import sympy
 
-from derive.checking.naming import PREFIX
+from derive.checking.naming import PREFIX, placeholders
 
 
 def said_again(raw: list, mapping: dict[sympy.Symbol, sympy.Expr]) -> None:
@@ -23,7 +23,7 @@ def said_again(raw: list, mapping: dict[sympy.Symbol, sympy.Expr]) -> None:
         if exprs is None or r.defines or not _own(exprs[0], mapping):
             continue
         rest = exprs[1:]
-        if any(_placeholders(e) or e.free_symbols for e in rest):
+        if any(placeholders(e) or e.free_symbols for e in rest):
             continue
         if len(exprs) >= 3 and exprs[0] not in worked:
             worked[exprs[0]] = rest[-1]
@@ -33,7 +33,3 @@ def said_again(raw: list, mapping: dict[sympy.Symbol, sympy.Expr]) -> None:
 
 def _own(e: sympy.Expr, mapping: dict) -> bool:
     return isinstance(e, sympy.Symbol) and e.name.startswith(PREFIX) and e not in mapping
-
-
-def _placeholders(e: sympy.Expr) -> set[sympy.Symbol]:
-    return {s for s in e.free_symbols if s.name.startswith(PREFIX)}

@@ -8,13 +8,8 @@ from __future__ import annotations
 import sympy
 
 from derive.checking.context import Context
-from derive.checking.naming import PREFIX
+from derive.checking.naming import placeholders
 from derive.checking.numeric import number_of
-
-
-def placeholders(expr: sympy.Expr) -> set[sympy.Symbol]:
-    """The student's names in ``expr`` not yet given a meaning."""
-    return {s for s in expr.free_symbols if s.name.startswith(PREFIX)}
 
 
 class Shapes:
